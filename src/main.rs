@@ -1,0 +1,45 @@
+//! `ergocell`: the robot-cell controller's command line.
+//!
+//! The binary is the only place that reads files, the clock and the network; the library crates do the
+//! work. Each subcommand lives in its own module under `commands/`.
+
+mod commands;
+
+use clap::{Parser, Subcommand};
+
+/// ergocell: protects the people who work beside industrial robots.
+#[derive(Debug, Parser)]
+#[command(name = "ergocell", version, about, long_about = None)]
+struct Cli {
+    /// Log filter (tracing `EnvFilter` syntax), e.g. `info` or `ergocell=debug`.
+    #[arg(long, global = true, default_value = "warn")]
+    log: String,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Triangulate and fuse 2D detections from calibrated cameras into 3D landmarks.
+    Triangulate(commands::triangulate::Args),
+}
+
+fn main() -> std::process::ExitCode {
+    let cli = Cli::parse();
+    let filter = tracing_subscriber::EnvFilter::try_new(&cli.log)
+        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("warn"));
+    tracing_subscriber::fmt()
+        .with_env_filter(filter)
+        .with_writer(std::io::stderr)
+        .init();
+    let result = match cli.command {
+        Command::Triangulate(args) => commands::triangulate::run(&args),
+    };
+    match result {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(err) => {
+            eprintln!("error: {err:#}");
+            std::process::ExitCode::from(commands::exit_code(&err))
+        }
+    }
+}
