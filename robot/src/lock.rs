@@ -1,0 +1,516 @@
+//! Lock files, approvals and their verification — the review workflow of the safety engineer.
+//!
+//! * A **lock file** (`trajectories/locks/<class>.lock.toml`) holds the validated joint trajectory, the
+//!   SHA-256 of every input (trajectory file, URDF, cell config, versions), a summary of the checks, and
+//!   `lock_sha256`: the SHA-256 of the canonical JSON of everything else in the file. Editing any byte of
+//!   the content changes that hash; editing an input changes an input hash.
+//! * An **approvals file** (`trajectories/approvals/<class>.toml`) is append-only: each `[[approval]]`
+//!   records who signed off which `lock_sha256`, and when (UTC, RFC 3339, taken by the binary).
+//! * [`verify`] checks the lock's own hash, every input hash against the current files, the locked samples
+//!   against the current URDF's limits, and that an approval names exactly this lock hash. Only then does
+//!   it hand out an [`ApprovedTrajectory`], the only thing the controller may send.
+//! * A [`SessionLock`] holds one approved trajectory for a session; a request for another class is refused
+//!   and recorded until the session ends (operator gone and robot at home).
+//!
+//! The lock is a software guarantee on top of the robot's own safety controller, not a replacement.
+
+use std::fmt;
+
+use serde::{Deserialize, Serialize};
+
+use crate::config::TrajectoryClass;
+use crate::model::RobotModel;
+use crate::validate::{sha256_hex, InputHashes, LockedTrajectory, SAFETY_NOTE};
+use crate::RobotError;
+
+/// Version tag of the lock format.
+pub const LOCK_FORMAT: &str = "ergocell-trajectory-lock/1";
+
+/// Headline numbers of the validation, kept in the lock for the reviewer.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LockSummary {
+    pub qp_status: String,
+    pub qp_iterations: u32,
+    pub min_position_margin_deg: f64,
+    pub peak_tcp_speed_in_zone_m_s: f64,
+    pub tcp_speed_limit_m_s: f64,
+    pub min_separation_m: f64,
+    pub required_separation_m: f64,
+    pub min_singular_value: f64,
+    pub handover_station_m: [f64; 3],
+}
+
+/// One knot of the locked trajectory.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LockPoint {
+    pub time_s: f64,
+    pub positions_rad: Vec<f64>,
+    pub velocities_rad_s: Vec<f64>,
+    pub accelerations_rad_s2: Vec<f64>,
+}
+
+/// The locked joint trajectory (controller joint names; `time_from_start` per point).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LockTrajectory {
+    pub joint_names: Vec<String>,
+    pub dt_s: f64,
+    pub point: Vec<LockPoint>,
+}
+
+/// A lock file as stored.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LockFile {
+    pub format: String,
+    pub class: TrajectoryClass,
+    /// SHA-256 of the canonical JSON of all other fields (see [`LockFile::content_sha256`]).
+    pub lock_sha256: String,
+    pub note: String,
+    pub inputs: InputHashes,
+    pub summary: LockSummary,
+    pub trajectory: LockTrajectory,
+}
+
+#[derive(Serialize)]
+struct LockContent<'a> {
+    format: &'a str,
+    class: TrajectoryClass,
+    note: &'a str,
+    inputs: &'a InputHashes,
+    summary: &'a LockSummary,
+    trajectory: &'a LockTrajectory,
+}
+
+impl LockFile {
+    /// Build the lock of a validated trajectory.
+    pub fn from_locked(locked: &LockedTrajectory) -> Self {
+        let r = locked.report();
+        let point = locked
+            .time_s()
+            .iter()
+            .enumerate()
+            .map(|(k, &t)| LockPoint {
+                time_s: t,
+                positions_rad: locked.positions_rad()[k].clone(),
+                velocities_rad_s: locked.velocities_rad_s()[k].clone(),
+                accelerations_rad_s2: locked.accelerations_rad_s2()[k].clone(),
+            })
+            .collect();
+        let mut lock = Self {
+            format: LOCK_FORMAT.to_owned(),
+            class: locked.class(),
+            lock_sha256: String::new(),
+            note: SAFETY_NOTE.to_owned(),
+            inputs: locked.inputs().clone(),
+            summary: LockSummary {
+                qp_status: r.qp.status.to_string(),
+                qp_iterations: r.qp.iterations,
+                min_position_margin_deg: r
+                    .joints
+                    .iter()
+                    .map(|j| j.position_margin_rad.to_degrees())
+                    .fold(f64::INFINITY, f64::min),
+                peak_tcp_speed_in_zone_m_s: r.tcp_speed.peak_in_zone_m_s,
+                tcp_speed_limit_m_s: r.tcp_speed.limit_in_zone_m_s,
+                min_separation_m: r.separation.min_separation_m,
+                required_separation_m: r.separation.required_m,
+                min_singular_value: r.singularity.min_singular_value,
+                handover_station_m: r.handover.target_station_m,
+            },
+            trajectory: LockTrajectory {
+                joint_names: locked.joint_names().to_vec(),
+                dt_s: locked.dt_s(),
+                point,
+            },
+        };
+        lock.lock_sha256 = lock.content_sha256();
+        lock
+    }
+
+    /// SHA-256 of the canonical (compact JSON, field order as declared) content without `lock_sha256`.
+    pub fn content_sha256(&self) -> String {
+        let content = LockContent {
+            format: &self.format,
+            class: self.class,
+            note: &self.note,
+            inputs: &self.inputs,
+            summary: &self.summary,
+            trajectory: &self.trajectory,
+        };
+        sha256_hex(&serde_json::to_vec(&content).unwrap_or_default())
+    }
+
+    /// Serialise as TOML with an explanatory header.
+    pub fn to_toml(&self) -> Result<String, RobotError> {
+        let body = toml::to_string(self).map_err(|e| RobotError::LockCorrupt {
+            class: self.class.to_string(),
+            reason: format!("cannot serialise: {e}"),
+        })?;
+        Ok(format!(
+            "# ergocell trajectory lock for class {} — written by `ergocell trajectories lock`.\n\
+             # Do not edit: `ergocell trajectories verify` recomputes lock_sha256 over this content and the\n\
+             # input hashes over the current files. Approve with `ergocell trajectories approve --class {} --by <name>`.\n\
+             # Units: radians, rad/s, rad/s², seconds, metres.\n\n{body}",
+            self.class, self.class
+        ))
+    }
+
+    /// Parse a lock file and check its format, class and own hash.
+    pub fn from_toml_str(class: TrajectoryClass, text: &str) -> Result<Self, RobotError> {
+        let corrupt = |reason: String| RobotError::LockCorrupt {
+            class: class.to_string(),
+            reason,
+        };
+        let lock: Self =
+            toml::from_str(text).map_err(|e| corrupt(format!("does not parse: {e}")))?;
+        if lock.format != LOCK_FORMAT {
+            return Err(corrupt(format!(
+                "format `{}`, expected `{LOCK_FORMAT}`",
+                lock.format
+            )));
+        }
+        if lock.class != class {
+            return Err(corrupt(format!("file is for class {}", lock.class)));
+        }
+        let actual = lock.content_sha256();
+        if actual != lock.lock_sha256 {
+            return Err(corrupt(format!(
+                "content was edited: recorded lock_sha256 {}, content hashes to {actual}",
+                lock.lock_sha256
+            )));
+        }
+        Ok(lock)
+    }
+}
+
+/// One sign-off.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Approval {
+    pub class: TrajectoryClass,
+    pub lock_sha256: String,
+    pub approved_by: String,
+    /// RFC 3339 UTC, taken from the clock by the binary.
+    pub approved_at_utc: String,
+}
+
+/// An append-only approvals file.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct ApprovalsFile {
+    #[serde(default)]
+    pub approval: Vec<Approval>,
+}
+
+impl ApprovalsFile {
+    pub fn from_toml_str(text: &str) -> Result<Self, RobotError> {
+        toml::from_str(text).map_err(|e| RobotError::Config {
+            reason: format!("approvals file does not parse: {e}"),
+        })
+    }
+
+    pub fn to_toml(&self) -> Result<String, RobotError> {
+        let body = toml::to_string(self).map_err(|e| RobotError::Config {
+            reason: format!("cannot serialise approvals: {e}"),
+        })?;
+        Ok(format!(
+            "# ergocell trajectory approvals — append-only, written by `ergocell trajectories approve`.\n\
+             # Each entry signs off exactly one lock_sha256 of trajectories/locks/<class>.lock.toml.\n\n{body}"
+        ))
+    }
+
+    /// Append a sign-off of `lock` (which must have passed [`verify_integrity`]).
+    pub fn approve(
+        &mut self,
+        lock: &LockFile,
+        approved_by: &str,
+        approved_at_utc: &str,
+    ) -> Result<&Approval, RobotError> {
+        let name = approved_by.trim();
+        if name.is_empty() {
+            return Err(RobotError::Config {
+                reason: "an approval needs the approver's name (--by)".to_owned(),
+            });
+        }
+        self.approval.push(Approval {
+            class: lock.class,
+            lock_sha256: lock.lock_sha256.clone(),
+            approved_by: name.to_owned(),
+            approved_at_utc: approved_at_utc.to_owned(),
+        });
+        Ok(&self.approval[self.approval.len() - 1])
+    }
+}
+
+/// Everything [`verify`] compares. The caller reads the files and hashes the current inputs with
+/// [`InputHashes::new`].
+#[derive(Debug, Clone, Copy)]
+pub struct VerifyInputs<'a> {
+    pub class: TrajectoryClass,
+    pub lock_toml: &'a str,
+    pub current_inputs: &'a InputHashes,
+    /// The model from the current URDF: the locked samples are re-checked against its limits.
+    pub model: &'a RobotModel,
+    /// The approvals file's text, `None` if it does not exist.
+    pub approvals_toml: Option<&'a str>,
+}
+
+/// Every problem found for one class.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VerifyFailure {
+    pub class: TrajectoryClass,
+    pub problems: Vec<RobotError>,
+}
+
+impl fmt::Display for VerifyFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "class {} failed verification:", self.class)?;
+        for p in &self.problems {
+            write!(f, "\n  - {p}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for VerifyFailure {}
+
+/// A locked, approved and verified trajectory: only [`verify`] builds one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ApprovedTrajectory {
+    lock: LockFile,
+    approvals: Vec<Approval>,
+}
+
+impl ApprovedTrajectory {
+    pub fn class(&self) -> TrajectoryClass {
+        self.lock.class
+    }
+    pub fn lock(&self) -> &LockFile {
+        &self.lock
+    }
+    /// The approvals that name this lock's hash.
+    pub fn approvals(&self) -> &[Approval] {
+        &self.approvals
+    }
+    pub fn joint_names(&self) -> &[String] {
+        &self.lock.trajectory.joint_names
+    }
+    pub fn points(&self) -> &[LockPoint] {
+        &self.lock.trajectory.point
+    }
+}
+
+/// Check the lock's own hash, the input hashes and the samples against the limits (no approval needed).
+pub fn verify_integrity(inputs: &VerifyInputs<'_>) -> Result<LockFile, VerifyFailure> {
+    let class = inputs.class;
+    let fail = |problems| VerifyFailure { class, problems };
+    let lock = LockFile::from_toml_str(class, inputs.lock_toml).map_err(|e| fail(vec![e]))?;
+    let mut problems = Vec::new();
+    let (l, c) = (&lock.inputs, inputs.current_inputs);
+    for (what, locked, current) in [
+        (
+            format!("trajectory file trajectories/{class}.toml"),
+            &l.trajectory_sha256,
+            &c.trajectory_sha256,
+        ),
+        ("URDF".to_owned(), &l.urdf_sha256, &c.urdf_sha256),
+        (
+            "cell config ([robot]/[station])".to_owned(),
+            &l.cell_sha256,
+            &c.cell_sha256,
+        ),
+        (
+            "ergocell version".to_owned(),
+            &l.ergocell_version,
+            &c.ergocell_version,
+        ),
+        (
+            "planner version".to_owned(),
+            &l.planner_version,
+            &c.planner_version,
+        ),
+    ] {
+        if locked != current {
+            problems.push(RobotError::LockMismatch {
+                class: class.to_string(),
+                what,
+                locked_sha256: locked.clone(),
+                current_sha256: current.clone(),
+            });
+        }
+    }
+    problems.extend(check_samples(class, &lock, inputs.model));
+    if problems.is_empty() {
+        Ok(lock)
+    } else {
+        Err(fail(problems))
+    }
+}
+
+/// Re-check the stored samples against the model's limits and the rest conditions.
+fn check_samples(class: TrajectoryClass, lock: &LockFile, model: &RobotModel) -> Vec<RobotError> {
+    let mut problems = Vec::new();
+    let dof = model.dof();
+    let t = &lock.trajectory;
+    let corrupt = |reason: String| RobotError::LockCorrupt {
+        class: class.to_string(),
+        reason,
+    };
+    if t.joint_names.len() != dof {
+        problems.push(RobotError::DofMismatch {
+            what: "locked joint names".to_owned(),
+            expected: dof,
+            got: t.joint_names.len(),
+        });
+        return problems;
+    }
+    if t.point.len() < 2 {
+        problems.push(corrupt("fewer than two points".to_owned()));
+        return problems;
+    }
+    for (k, p) in t.point.iter().enumerate() {
+        if p.positions_rad.len() != dof
+            || p.velocities_rad_s.len() != dof
+            || p.accelerations_rad_s2.len() != dof
+        {
+            problems.push(corrupt(format!(
+                "point {k} does not have {dof} values per field"
+            )));
+            return problems;
+        }
+        if k > 0 && !(p.time_s > t.point[k - 1].time_s) {
+            problems.push(corrupt(format!(
+                "time_s not strictly increasing at point {k}"
+            )));
+        }
+        if let Err(e) = model.check_positions(&p.positions_rad) {
+            problems.push(e);
+        }
+        for (j, lim) in model.joints().iter().enumerate() {
+            if !(p.velocities_rad_s[j].abs() <= lim.velocity_rad_s) {
+                problems.push(corrupt(format!(
+                    "point {k}: {} velocity {:.4} rad/s over URDF limit {:.4}",
+                    lim.name, p.velocities_rad_s[j], lim.velocity_rad_s
+                )));
+            }
+        }
+    }
+    for (label, p) in [
+        ("first", &t.point[0]),
+        ("last", &t.point[t.point.len() - 1]),
+    ] {
+        if p.velocities_rad_s
+            .iter()
+            .chain(&p.accelerations_rad_s2)
+            .any(|x| *x != 0.0)
+        {
+            problems.push(corrupt(format!("{label} point is not at rest")));
+        }
+    }
+    problems
+}
+
+/// Full verification: integrity plus an approval of exactly this lock hash.
+pub fn verify(inputs: &VerifyInputs<'_>) -> Result<ApprovedTrajectory, VerifyFailure> {
+    let class = inputs.class;
+    let lock = verify_integrity(inputs)?;
+    let not_approved = |detail: String| VerifyFailure {
+        class,
+        problems: vec![RobotError::NotApproved {
+            class: class.to_string(),
+            lock_sha256: lock.lock_sha256.clone(),
+            detail,
+        }],
+    };
+    let Some(text) = inputs.approvals_toml else {
+        return Err(not_approved(format!(
+            "no approvals file trajectories/approvals/{class}.toml; a safety engineer runs \
+             `ergocell trajectories approve --class {class} --by <name>` after reviewing the lock"
+        )));
+    };
+    let file = ApprovalsFile::from_toml_str(text).map_err(|e| VerifyFailure {
+        class,
+        problems: vec![e],
+    })?;
+    let approvals: Vec<Approval> = file
+        .approval
+        .iter()
+        .filter(|a| a.class == class && a.lock_sha256 == lock.lock_sha256)
+        .cloned()
+        .collect();
+    if approvals.is_empty() {
+        return Err(not_approved(format!(
+            "the approvals file has {} entries, none for this hash (an approval of an earlier lock does not carry over)",
+            file.approval.len()
+        )));
+    }
+    Ok(ApprovedTrajectory { lock, approvals })
+}
+
+/// A refused request to change the session's trajectory.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RefusedChange {
+    pub requested: TrajectoryClass,
+}
+
+/// The trajectory of one operator session: locked from start to end.
+#[derive(Debug, Clone)]
+pub struct SessionLock {
+    trajectory: ApprovedTrajectory,
+    refused: Vec<RefusedChange>,
+}
+
+impl SessionLock {
+    pub fn start(trajectory: ApprovedTrajectory) -> Self {
+        Self {
+            trajectory,
+            refused: Vec::new(),
+        }
+    }
+    pub fn trajectory(&self) -> &ApprovedTrajectory {
+        &self.trajectory
+    }
+    /// A request for a class: the locked trajectory if it is the same class, otherwise refused and recorded.
+    pub fn request(
+        &mut self,
+        requested: TrajectoryClass,
+    ) -> Result<&ApprovedTrajectory, RobotError> {
+        if requested == self.trajectory.class() {
+            Ok(&self.trajectory)
+        } else {
+            self.refused.push(RefusedChange { requested });
+            Err(RobotError::SessionLocked {
+                locked_class: self.trajectory.class().to_string(),
+                requested_class: requested.to_string(),
+            })
+        }
+    }
+    /// Requests refused so far (for the binary's log).
+    pub fn refused(&self) -> &[RefusedChange] {
+        &self.refused
+    }
+    /// End the session: only when the operator has gone and the robot is at home.
+    pub fn end(
+        self,
+        operator_gone: bool,
+        robot_at_home: bool,
+    ) -> Result<Vec<RefusedChange>, (Box<Self>, RobotError)> {
+        if operator_gone && robot_at_home {
+            Ok(self.refused)
+        } else {
+            let class = self.trajectory.class().to_string();
+            Err((
+                Box::new(self),
+                RobotError::SessionLocked {
+                    locked_class: class,
+                    requested_class: format!(
+                        "session end (operator gone: {operator_gone}, robot at home: {robot_at_home})"
+                    ),
+                },
+            ))
+        }
+    }
+}
