@@ -1,1 +1,33 @@
 //! Perception: from calibrated cameras and 2D body landmarks to one fused 3D skeleton.
+//!
+//! The seed paper's steps II.A (calibration files, per-pair DLT) and II.B (multi-camera fusion) live
+//! here, plus what a real cell needs around them:
+//!
+//! - [`camera`]: pinhole + Brown–Conrady camera model, projection, iterative undistortion.
+//! - [`rig`]: M cameras in one world frame, grouped into stereo pairs.
+//! - [`rig_file`]: ergocell's rig TOML, Anipose/Pose2Sim and caliscope calibration import.
+//! - [`detections`], [`import`]: 2D keypoints (BlazePose-33 order), OpenPose JSON and caliscope CSV.
+//! - [`triangulation`]: the paper's DLT (SVD) and the robust N-view triangulator.
+//! - [`fusion`]: the paper's graph-Laplacian fusion (baseline) and ergocell's default fusion.
+//! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter.
+//! - [`metrics`], [`landmarks_file`]: bone-length consistency and the 3D output formats.
+//!
+//! No I/O: callers pass file contents and get text back. Knows nothing of ROS or the robot.
+
+pub mod camera;
+pub mod detections;
+pub mod error;
+pub mod fusion;
+pub mod import;
+pub mod landmarks_file;
+pub mod metrics;
+pub mod rig;
+pub mod rig_file;
+pub mod temporal;
+pub mod triangulation;
+
+pub use camera::{Camera, CameraId, Distortion, Intrinsics};
+pub use detections::{Frame2, Keypoint2, KeypointFormat, View2};
+pub use error::PerceptionError;
+pub use fusion::{FusedFrame, FusionEngine, FusionMethod};
+pub use rig::{CameraIndex, CameraRig, StereoPair};

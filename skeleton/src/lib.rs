@@ -118,6 +118,7 @@ impl Landmark {
     }
 
     /// The same landmark on the other side of the body (`Nose` maps to itself).
+    #[must_use]
     pub const fn mirrored(self) -> Landmark {
         use Landmark as L;
         match self {

@@ -1,0 +1,627 @@
+//! Multi-camera fusion: all cameras' 2D views of one instant → one 3D skeleton.
+//!
+//! Two methods, chosen by [`FusionMethod`]:
+//!
+//! - [`FusionMethod::Paper`] — the seed paper's scheme (Sec. II.B), kept as the baseline, exactly as
+//!   written: each stereo pair `S_j` triangulates every landmark it sees by DLT; a graph is built with
+//!   the `N` observed landmarks and the `M` cameras as nodes and an edge between landmark `i` and camera
+//!   `k` when `k`'s pair estimated `i` (no camera–camera or landmark–landmark edges); `L` is the binary
+//!   (unweighted) graph Laplacian in its normalized form `L = I − D⁻¹A`, so that row `i` of `L·p̂` is
+//!   `p̂_i − (1/|Ψ_i|) Σ_{j∈Ψ_i} p̂_j` as in the paper's Eq. for `δ`. Anchors `a` are the mean of the
+//!   per-pair estimates (landmark rows) and the known camera centres (camera rows). The differential
+//!   coordinates `δ` are formed from the relative measurements along the edges — each camera's own
+//!   pair estimate relative to that camera, `δ_i = mean_k (p_i^(k) − c_k)`, `δ_k = mean_i (c_k − p_i^(k))`
+//!   — (computing `δ = L·a` from the anchors themselves would make the least squares return the anchors
+//!   unchanged). The result is `p̂ = (L̃ᵀL̃)⁻¹L̃ᵀ b` with `L̃ = [L; I]`, `b = [δ; a]`; the constant
+//!   `(L̃ᵀL̃)⁻¹L̃ᵀ` is computed once per graph topology and cached, as the paper prescribes.
+//! - [`FusionMethod::Default`] — ours: every camera's view directly (no pairing), confidence-weighted,
+//!   refined on pixel reprojection error with robust weights and outlier-view rejection
+//!   ([`RobustTriangulator`]). It uses all the information the pairs see, weights each view by what its
+//!   geometry and detector say it is worth, and throws out the gross detector errors that averaging would
+//!   smear into every estimate.
+
+use std::collections::HashMap;
+
+use ergocell_skeleton::{Landmark, LandmarkEstimate, Skeleton3, LANDMARK_COUNT};
+use nalgebra::{DMatrix, Matrix3, Matrix3x4, Point2, Point3, Vector2, Vector3};
+
+use crate::detections::Frame2;
+use crate::error::{PerceptionError, Result};
+use crate::rig::CameraRig;
+use crate::triangulation::{
+    iter_mask, DltAccumulator, NormalizedView, RobustTriangulator, MAX_VIEWS,
+};
+
+/// Which fusion to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FusionMethod {
+    /// The seed paper's per-pair DLT + graph-Laplacian fusion (baseline).
+    Paper,
+    /// ergocell's robust, confidence-weighted N-view fusion.
+    #[default]
+    Default,
+}
+
+impl FusionMethod {
+    /// Parses `paper` / `default`.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "paper" => Some(Self::Paper),
+            "default" => Some(Self::Default),
+            _ => None,
+        }
+    }
+}
+
+/// The fused skeleton of one frame and what fusion had to leave out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FusedFrame {
+    pub skeleton: Skeleton3,
+    /// Views dropped as outliers or behind their camera, over all landmarks.
+    pub rejected_views: usize,
+    /// Keypoints that could not be undistorted (far outside the lens model) and were left out.
+    pub undistortion_failures: usize,
+    /// Bit `k` set: camera `k` contributed a view to this frame.
+    pub cameras_present: u64,
+}
+
+#[derive(Debug, Clone)]
+struct CameraCache {
+    R_camera_world: Matrix3<f64>,
+    t_camera_world: Vector3<f64>,
+    /// `[R|t]`: the projection matrix in normalized coordinates.
+    pose: Matrix3x4<f64>,
+    focal_px: Vector2<f64>,
+    centre_world: Point3<f64>,
+}
+
+/// Observation of one landmark by one camera, undistorted.
+#[derive(Debug, Clone, Copy)]
+struct Obs {
+    camera: usize,
+    normalized: Vector2<f64>,
+    confidence: f64,
+}
+
+/// Turns time-aligned multi-camera frames into fused skeletons. Holds the rig and per-rig caches;
+/// one engine per session.
+#[derive(Debug, Clone)]
+pub struct FusionEngine {
+    rig: CameraRig,
+    cameras: Vec<CameraCache>,
+    method: FusionMethod,
+    triangulator: RobustTriangulator,
+    paper_cache: HashMap<Vec<u64>, DMatrix<f64>>,
+}
+
+/// Undistorted observations of every landmark in a frame.
+type FrameObs = [Vec<Obs>; LANDMARK_COUNT];
+
+impl FusionEngine {
+    /// An engine for this rig (at most [`MAX_VIEWS`] cameras).
+    pub fn new(rig: CameraRig, method: FusionMethod) -> Result<Self> {
+        if rig.len() > MAX_VIEWS {
+            return Err(PerceptionError::Unsupported(format!(
+                "{} cameras (at most {MAX_VIEWS})",
+                rig.len()
+            )));
+        }
+        let cameras = rig
+            .cameras()
+            .iter()
+            .map(|c| {
+                let r = *c.T_camera_world.rotation.to_rotation_matrix().matrix();
+                CameraCache {
+                    R_camera_world: r,
+                    t_camera_world: c.T_camera_world.translation.vector,
+                    pose: c.pose_matrix(),
+                    focal_px: Vector2::new(c.intrinsics.fx, c.intrinsics.fy),
+                    centre_world: c.position_world(),
+                }
+            })
+            .collect();
+        Ok(Self {
+            rig,
+            cameras,
+            method,
+            triangulator: RobustTriangulator::default(),
+            paper_cache: HashMap::new(),
+        })
+    }
+
+    /// Replaces the default triangulator settings.
+    #[must_use]
+    pub fn with_triangulator(mut self, triangulator: RobustTriangulator) -> Self {
+        self.triangulator = triangulator;
+        self
+    }
+
+    /// The rig.
+    pub fn rig(&self) -> &CameraRig {
+        &self.rig
+    }
+
+    /// The fusion method.
+    pub fn method(&self) -> FusionMethod {
+        self.method
+    }
+
+    /// Fuses one frame. Landmarks seen by fewer than two usable views are "not observed" (`None`);
+    /// errors only for a frame that is malformed as a whole (unknown camera, a camera twice).
+    pub fn fuse(&mut self, frame: &Frame2) -> Result<FusedFrame> {
+        let (obs, undistortion_failures, cameras_present) = self.observations(frame)?;
+        let mut skeleton = Skeleton3::empty(frame.stamp_nanos);
+        let mut rejected_views = 0;
+        match self.method {
+            FusionMethod::Default => {
+                let mut views = Vec::with_capacity(self.cameras.len());
+                for lm in Landmark::ALL {
+                    let o = &obs[lm.index()];
+                    views.clear();
+                    views.extend(o.iter().map(|ob| {
+                        let c = &self.cameras[ob.camera];
+                        NormalizedView {
+                            R_camera_world: c.R_camera_world,
+                            t_camera_world: c.t_camera_world,
+                            normalized: ob.normalized,
+                            focal_px: c.focal_px,
+                            confidence: ob.confidence,
+                        }
+                    }));
+                    let Ok(t) = self.triangulator.triangulate(&views) else {
+                        continue;
+                    };
+                    rejected_views += views.len() - t.views_used() as usize;
+                    let used: Vec<Obs> = iter_mask(t.used_mask).map(|i| o[i]).collect();
+                    self.set(&mut skeleton, lm, t.point, &used, frame)?;
+                }
+            }
+            FusionMethod::Paper => {
+                let per_pair = self.pair_estimates(&obs);
+                if let Some(points) = self.paper_fuse(&per_pair) {
+                    for lm in Landmark::ALL {
+                        if let Some(p) = points[lm.index()] {
+                            let o = &obs[lm.index()];
+                            self.set(&mut skeleton, lm, p, o, frame)?;
+                        }
+                    }
+                }
+            }
+        }
+        Ok(FusedFrame {
+            skeleton,
+            rejected_views,
+            undistortion_failures,
+            cameras_present,
+        })
+    }
+
+    /// Each stereo pair's own DLT estimate of every landmark (the paper's `S_j` rows of Table 1).
+    pub fn pair_estimates_of(
+        &self,
+        frame: &Frame2,
+    ) -> Result<Vec<[Option<Point3<f64>>; LANDMARK_COUNT]>> {
+        let (obs, _, _) = self.observations(frame)?;
+        Ok(self.pair_estimates(&obs))
+    }
+
+    /// Plain N-view DLT over every camera that sees each landmark, with unit weights, on the raw
+    /// (distorted) pixels with `P = K[R|t]` — caliscope's own triangulation, for comparison.
+    pub fn raw_pixel_dlt(&self, frame: &Frame2) -> Result<[Option<Point3<f64>>; LANDMARK_COUNT]> {
+        self.check_frame(frame)?;
+        let projections: Vec<Matrix3x4<f64>> = self
+            .rig
+            .cameras()
+            .iter()
+            .map(crate::camera::Camera::projection_matrix)
+            .collect();
+        let mut out = [None; LANDMARK_COUNT];
+        for lm in Landmark::ALL {
+            let mut acc = DltAccumulator::default();
+            for view in &frame.views {
+                if let Some(k) = view.get(lm) {
+                    acc.add_view(&projections[view.camera], &k.pixel(), 1.0);
+                }
+            }
+            out[lm.index()] = acc.solve().ok();
+        }
+        Ok(out)
+    }
+
+    /// Confidence-weighted N-view DLT on undistorted normalized coordinates (no robust refinement).
+    pub fn weighted_dlt(&self, frame: &Frame2) -> Result<[Option<Point3<f64>>; LANDMARK_COUNT]> {
+        let (obs, _, _) = self.observations(frame)?;
+        let mut out = [None; LANDMARK_COUNT];
+        for lm in Landmark::ALL {
+            let mut acc = DltAccumulator::default();
+            for o in &obs[lm.index()] {
+                acc.add_view(
+                    &self.cameras[o.camera].pose,
+                    &Point2::from(o.normalized),
+                    o.confidence,
+                );
+            }
+            out[lm.index()] = acc.solve().ok();
+        }
+        Ok(out)
+    }
+
+    fn check_frame(&self, frame: &Frame2) -> Result<u64> {
+        let mut present: u64 = 0;
+        for view in &frame.views {
+            if view.camera >= self.cameras.len() {
+                return Err(PerceptionError::UnknownCamera(format!(
+                    "camera index {}",
+                    view.camera
+                )));
+            }
+            if present & (1 << view.camera) != 0 {
+                return Err(PerceptionError::DuplicateCamera(
+                    self.rig.cameras()[view.camera].id.clone(),
+                ));
+            }
+            present |= 1 << view.camera;
+        }
+        Ok(present)
+    }
+
+    fn observations(&self, frame: &Frame2) -> Result<(FrameObs, usize, u64)> {
+        let present = self.check_frame(frame)?;
+        let mut obs: FrameObs = std::array::from_fn(|_| Vec::new());
+        let mut failures = 0;
+        for view in &frame.views {
+            let camera = &self.rig.cameras()[view.camera];
+            for (i, k) in view.keypoints().iter().enumerate() {
+                let Some(k) = k else { continue };
+                match camera.pixel_to_normalized(&k.pixel()) {
+                    Ok(n) => obs[i].push(Obs {
+                        camera: view.camera,
+                        normalized: n,
+                        confidence: k.confidence(),
+                    }),
+                    Err(_) => failures += 1,
+                }
+            }
+        }
+        Ok((obs, failures, present))
+    }
+
+    fn pair_estimates(&self, obs: &FrameObs) -> Vec<[Option<Point3<f64>>; LANDMARK_COUNT]> {
+        self.rig
+            .pairs()
+            .iter()
+            .map(|pair| {
+                std::array::from_fn(|i| {
+                    let l = obs[i].iter().find(|o| o.camera == pair.left)?;
+                    let r = obs[i].iter().find(|o| o.camera == pair.right)?;
+                    let mut acc = DltAccumulator::default();
+                    acc.add_view(
+                        &self.cameras[l.camera].pose,
+                        &Point2::from(l.normalized),
+                        1.0,
+                    );
+                    acc.add_view(
+                        &self.cameras[r.camera].pose,
+                        &Point2::from(r.normalized),
+                        1.0,
+                    );
+                    let p = acc.solve().ok()?;
+                    // a pair estimate behind either camera is no estimate
+                    let in_front = [l.camera, r.camera].iter().all(|&c| {
+                        let cam = &self.cameras[c];
+                        (cam.R_camera_world.row(2) * p.coords)[0] + cam.t_camera_world.z > 0.0
+                    });
+                    in_front.then_some(p)
+                })
+            })
+            .collect()
+    }
+
+    /// The paper's graph-Laplacian fusion of the per-pair estimates.
+    fn paper_fuse(
+        &mut self,
+        per_pair: &[[Option<Point3<f64>>; LANDMARK_COUNT]],
+    ) -> Option<[Option<Point3<f64>>; LANDMARK_COUNT]> {
+        let m = self.cameras.len();
+        // camera k's estimate of landmark i: its pair's estimate
+        let camera_estimate =
+            |k: usize, i: usize| -> Option<Point3<f64>> { per_pair[self.rig.pair_of(k)?][i] };
+        // topology: for each landmark, the mask of connected cameras
+        let edges: Vec<u64> = (0..LANDMARK_COUNT)
+            .map(|i| {
+                (0..m)
+                    .filter(|&k| camera_estimate(k, i).is_some())
+                    .fold(0u64, |acc, k| acc | (1 << k))
+            })
+            .collect();
+        let landmarks: Vec<usize> = (0..LANDMARK_COUNT).filter(|&i| edges[i] != 0).collect();
+        if landmarks.is_empty() {
+            return None;
+        }
+        let n = landmarks.len();
+        let size = n + m;
+        let solver = self
+            .paper_cache
+            .entry(edges.clone())
+            .or_insert_with(|| paper_solver(&edges, &landmarks, m));
+        // b = [δ; a]
+        let mut b = DMatrix::zeros(2 * size, 3);
+        for (row, &i) in landmarks.iter().enumerate() {
+            let cams: Vec<usize> = iter_mask(edges[i]).collect();
+            let mut anchor = Vector3::zeros();
+            let mut pairs_seen = 0.0;
+            for est in per_pair.iter().filter_map(|pp| pp[i]) {
+                anchor += est.coords;
+                pairs_seen += 1.0;
+            }
+            anchor /= pairs_seen;
+            let mut delta = Vector3::zeros();
+            for &k in &cams {
+                let est = camera_estimate(k, i)?;
+                delta += est.coords - self.cameras[k].centre_world.coords;
+            }
+            delta /= cams.len() as f64;
+            b.fixed_slice_mut::<1, 3>(row, 0)
+                .copy_from(&delta.transpose());
+            b.fixed_slice_mut::<1, 3>(size + row, 0)
+                .copy_from(&anchor.transpose());
+        }
+        for k in 0..m {
+            let c = self.cameras[k].centre_world.coords;
+            let connected: Vec<usize> = landmarks
+                .iter()
+                .copied()
+                .filter(|&i| edges[i] & (1 << k) != 0)
+                .collect();
+            let mut delta = Vector3::zeros();
+            for &i in &connected {
+                delta += c - camera_estimate(k, i)?.coords;
+            }
+            if !connected.is_empty() {
+                delta /= connected.len() as f64;
+            }
+            b.fixed_slice_mut::<1, 3>(n + k, 0)
+                .copy_from(&delta.transpose());
+            b.fixed_slice_mut::<1, 3>(size + n + k, 0)
+                .copy_from(&c.transpose());
+        }
+        let p = &*solver * b;
+        let mut out = [None; LANDMARK_COUNT];
+        for (row, &i) in landmarks.iter().enumerate() {
+            let q = Point3::new(p[(row, 0)], p[(row, 1)], p[(row, 2)]);
+            if q.coords.iter().all(|x| x.is_finite()) {
+                out[i] = Some(q);
+            }
+        }
+        if self.paper_cache.len() > 256 {
+            self.paper_cache.clear();
+        }
+        Some(out)
+    }
+
+    fn set(
+        &self,
+        skeleton: &mut Skeleton3,
+        lm: Landmark,
+        p: Point3<f64>,
+        used: &[Obs],
+        frame: &Frame2,
+    ) -> Result<()> {
+        // Exact reprojection error through the full (distorted) camera model.
+        let mut sq = 0.0;
+        let mut n = 0u32;
+        let mut conf = 0.0;
+        for o in used {
+            let Some(view) = frame.views.iter().find(|v| v.camera == o.camera) else {
+                continue;
+            };
+            let Some(k) = view.get(lm) else { continue };
+            if let Ok(px) = self.rig.cameras()[o.camera].project(&p) {
+                sq += (px - k.pixel()).norm_squared();
+                n += 1;
+                conf += o.confidence;
+            }
+        }
+        if n == 0 {
+            return Ok(());
+        }
+        let estimate = LandmarkEstimate {
+            position_m: p,
+            confidence: (conf / f64::from(n)).clamp(0.0, 1.0),
+            reprojection_error_px: Some((sq / f64::from(n)).sqrt()),
+            views: n,
+        };
+        skeleton
+            .set(lm, Some(estimate))
+            .map_err(|e| PerceptionError::Unsupported(format!("fused landmark rejected: {e}")))
+    }
+}
+
+/// `(L̃ᵀL̃)⁻¹L̃ᵀ` for one topology: rows are the `n` observed landmarks then the `m` cameras.
+fn paper_solver(edges: &[u64], landmarks: &[usize], m: usize) -> DMatrix<f64> {
+    let n = landmarks.len();
+    let size = n + m;
+    let mut l = DMatrix::<f64>::identity(size, size);
+    for (row, &i) in landmarks.iter().enumerate() {
+        let cams: Vec<usize> = iter_mask(edges[i]).collect();
+        let deg = cams.len() as f64;
+        for k in cams {
+            l[(row, n + k)] = -1.0 / deg;
+        }
+    }
+    for k in 0..m {
+        let rows: Vec<usize> = landmarks
+            .iter()
+            .enumerate()
+            .filter(|(_, &i)| edges[i] & (1 << k) != 0)
+            .map(|(r, _)| r)
+            .collect();
+        if rows.is_empty() {
+            // an isolated camera has no neighbours: its differential coordinate is zero by definition
+            l[(n + k, n + k)] = 0.0;
+            continue;
+        }
+        let deg = rows.len() as f64;
+        for r in rows {
+            l[(n + k, r)] = -1.0 / deg;
+        }
+    }
+    let mut lt = DMatrix::zeros(2 * size, size);
+    lt.slice_mut((0, 0), (size, size)).copy_from(&l);
+    lt.slice_mut((size, 0), (size, size)).fill_with_identity();
+    let normal = lt.transpose() * &lt;
+    // LᵀL + I is symmetric positive definite, so the inverse always exists.
+    let inv = normal
+        .clone()
+        .cholesky()
+        .map_or_else(|| DMatrix::identity(size, size), |c| c.inverse());
+    inv * lt.transpose()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::{Camera, CameraId, Distortion, Intrinsics};
+    use crate::detections::{Keypoint2, View2};
+    use approx::assert_relative_eq;
+    use nalgebra::Rotation3;
+
+    pub(crate) fn ring_rig(n: usize) -> CameraRig {
+        let cams = (0..n)
+            .map(|k| {
+                let angle = (k / 2) as f64 * 2.1 + if k % 2 == 1 { 0.04 } else { 0.0 };
+                let eye = Point3::new(
+                    3.0 * angle.cos(),
+                    3.0 * angle.sin(),
+                    1.4 + 0.1 * (k % 3) as f64,
+                );
+                let target = Point3::new(0.0, 0.0, 1.0);
+                let z = (target - eye).normalize();
+                let x = z.cross(&Vector3::z()).normalize();
+                let y = z.cross(&x);
+                let r = Matrix3::from_columns(&[x, y, z]).transpose();
+                Camera::new(
+                    CameraId::new(format!("cam_{k}")).unwrap(),
+                    Intrinsics {
+                        fx: 900.0,
+                        fy: 900.0,
+                        cx: 640.0,
+                        cy: 360.0,
+                        skew: 0.0,
+                        width_px: 1280,
+                        height_px: 720,
+                    },
+                    Distortion {
+                        k1: -0.05,
+                        k2: 0.01,
+                        p1: 0.0005,
+                        p2: -0.0003,
+                        k3: 0.0,
+                    },
+                    Rotation3::from_matrix_unchecked(r),
+                    -(r * eye.coords),
+                )
+                .unwrap()
+            })
+            .collect();
+        CameraRig::new(cams, &[], None).unwrap()
+    }
+
+    fn frame_of(rig: &CameraRig, points: &[Point3<f64>; LANDMARK_COUNT]) -> Frame2 {
+        let views = rig
+            .cameras()
+            .iter()
+            .enumerate()
+            .map(|(k, cam)| {
+                let mut v = View2::empty(k, 0);
+                for lm in Landmark::ALL {
+                    let px = cam.project(&points[lm.index()]).unwrap();
+                    v.set(lm, Some(Keypoint2::new(px.x, px.y, 0.9).unwrap()));
+                }
+                v
+            })
+            .collect();
+        Frame2 {
+            stamp_nanos: 0,
+            views,
+        }
+    }
+
+    fn body() -> [Point3<f64>; LANDMARK_COUNT] {
+        std::array::from_fn(|i| {
+            Point3::new(
+                0.1 * ((i * 7) % 5) as f64 - 0.2,
+                0.05 * ((i * 3) % 4) as f64 - 0.1,
+                0.2 + 1.6 * i as f64 / 33.0,
+            )
+        })
+    }
+
+    #[test]
+    fn both_fusions_are_exact_on_noise_free_data() {
+        let rig = ring_rig(6);
+        let pts = body();
+        let frame = frame_of(&rig, &pts);
+        for method in [FusionMethod::Default, FusionMethod::Paper] {
+            let mut engine = FusionEngine::new(rig.clone(), method).unwrap();
+            let fused = engine.fuse(&frame).unwrap();
+            for lm in Landmark::ALL {
+                let e = fused.skeleton.get(lm).unwrap();
+                let tol = if method == FusionMethod::Default {
+                    1e-9
+                } else {
+                    1e-6
+                };
+                assert_relative_eq!(e.position_m, pts[lm.index()], epsilon = tol);
+                assert!(e.reprojection_error_px.unwrap() < 1e-4);
+            }
+        }
+    }
+
+    #[test]
+    fn paper_laplacian_has_zero_row_sums_and_the_cached_solver_is_reused() {
+        let rig = ring_rig(6);
+        let frame = frame_of(&rig, &body());
+        let mut engine = FusionEngine::new(rig, FusionMethod::Paper).unwrap();
+        engine.fuse(&frame).unwrap();
+        engine.fuse(&frame).unwrap();
+        assert_eq!(engine.paper_cache.len(), 1);
+        // The solver reproduces any configuration that is consistent with its own anchors.
+        let edges = vec![0b11u64, 0b1100, 0b11_0000];
+        let s = paper_solver(&edges, &[0, 1, 2], 6);
+        assert_eq!(s.shape(), (9, 18));
+    }
+
+    #[test]
+    fn frames_with_unknown_or_repeated_cameras_are_errors() {
+        let rig = ring_rig(4);
+        let mut frame = frame_of(&rig, &body());
+        let mut engine = FusionEngine::new(rig, FusionMethod::Default).unwrap();
+        frame.views[1].camera = 0;
+        assert!(matches!(
+            engine.fuse(&frame),
+            Err(PerceptionError::DuplicateCamera(_))
+        ));
+        frame.views[1].camera = 9;
+        assert!(matches!(
+            engine.fuse(&frame),
+            Err(PerceptionError::UnknownCamera(_))
+        ));
+    }
+
+    #[test]
+    fn a_missing_camera_degrades_but_does_not_block() {
+        let rig = ring_rig(6);
+        let pts = body();
+        let mut frame = frame_of(&rig, &pts);
+        frame.views.retain(|v| v.camera != 3 && v.camera != 4);
+        let mut engine = FusionEngine::new(rig, FusionMethod::Default).unwrap();
+        let fused = engine.fuse(&frame).unwrap();
+        assert_eq!(fused.cameras_present, 0b10_0111);
+        assert_eq!(fused.skeleton.observed_count(), LANDMARK_COUNT);
+        // one camera only: nothing can be triangulated, and nothing is made up
+        frame.views.truncate(1);
+        let fused = engine.fuse(&frame).unwrap();
+        assert_eq!(fused.skeleton.observed_count(), 0);
+    }
+}

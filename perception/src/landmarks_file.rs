@@ -1,0 +1,308 @@
+//! 3D landmark files: what `ergocell triangulate` writes and `ergocell rula track` / `height` read.
+//!
+//! | extension | layout |
+//! |---|---|
+//! | `.json` | a JSON array of [`Skeleton3`] (stamp, and per landmark position, confidence, reprojection error, views) |
+//! | `.csv` | long format: `frame, time_s, landmark, x_m, y_m, z_m, confidence, reprojection_error_px, views` |
+//! | `.trc` | OpenSim's marker file as Pose2Sim writes it (metres; unobserved markers left empty) |
+//!
+//! Positions are metres in the calibration's world frame. No I/O here: text in, text out.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+use ergocell_skeleton::{Landmark, LandmarkEstimate, Skeleton3};
+use nalgebra::Point3;
+use serde::{Deserialize, Serialize};
+
+use crate::error::{parse_err, PerceptionError, Result};
+
+/// The supported 3D landmark file formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LandmarksFormat {
+    Json,
+    Csv,
+    Trc,
+}
+
+impl LandmarksFormat {
+    /// The format of a file name, from its extension.
+    pub fn from_path(path: &std::path::Path) -> Result<Self> {
+        match path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .as_deref()
+        {
+            Some("json") => Ok(Self::Json),
+            Some("csv") => Ok(Self::Csv),
+            Some("trc") => Ok(Self::Trc),
+            _ => Err(PerceptionError::Unsupported(format!(
+                "{}: expected a .json, .csv or .trc file",
+                path.display()
+            ))),
+        }
+    }
+}
+
+/// Writes a recording of skeletons. `rate_hz` is written into TRC headers.
+pub fn write_landmarks(
+    frames: &[Skeleton3],
+    format: LandmarksFormat,
+    name: &str,
+    rate_hz: f64,
+) -> String {
+    match format {
+        LandmarksFormat::Json => serde_json::to_string(frames).unwrap_or_else(|_| "[]".to_owned()),
+        LandmarksFormat::Csv => write_csv(frames),
+        LandmarksFormat::Trc => write_trc(frames, name, rate_hz),
+    }
+}
+
+/// Reads a recording of skeletons.
+pub fn read_landmarks(
+    text: &str,
+    format: LandmarksFormat,
+    source_name: &str,
+) -> Result<Vec<Skeleton3>> {
+    match format {
+        LandmarksFormat::Json => {
+            serde_json::from_str(text).map_err(|e| parse_err(source_name, "(file)", e))
+        }
+        LandmarksFormat::Csv => read_csv(text, source_name),
+        LandmarksFormat::Trc => read_trc(text, source_name),
+    }
+}
+
+#[derive(Debug, Serialize, Deserialize)]
+struct CsvRow {
+    frame: usize,
+    time_s: f64,
+    landmark: String,
+    x_m: f64,
+    y_m: f64,
+    z_m: f64,
+    confidence: f64,
+    reprojection_error_px: Option<f64>,
+    views: u32,
+}
+
+fn write_csv(frames: &[Skeleton3]) -> String {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let t0 = frames.first().map_or(0, |f| f.stamp_nanos);
+    for (i, s) in frames.iter().enumerate() {
+        for lm in Landmark::ALL {
+            if let Some(e) = s.get(lm) {
+                let _ = w.serialize(CsvRow {
+                    frame: i,
+                    time_s: (s.stamp_nanos - t0) as f64 * 1e-9,
+                    landmark: lm.name().to_owned(),
+                    x_m: e.position_m.x,
+                    y_m: e.position_m.y,
+                    z_m: e.position_m.z,
+                    confidence: e.confidence,
+                    reprojection_error_px: e.reprojection_error_px,
+                    views: e.views,
+                });
+            }
+        }
+    }
+    String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
+}
+
+fn read_csv(text: &str, source_name: &str) -> Result<Vec<Skeleton3>> {
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let mut frames: BTreeMap<usize, Skeleton3> = BTreeMap::new();
+    for (line, row) in reader.deserialize::<CsvRow>().enumerate() {
+        let row = row.map_err(|e| parse_err(source_name, format!("row {}", line + 2), e))?;
+        let lm = Landmark::from_name(&row.landmark).ok_or_else(|| {
+            parse_err(
+                source_name,
+                format!("row {}: landmark", line + 2),
+                format!("unknown landmark `{}`", row.landmark),
+            )
+        })?;
+        let stamp = (row.time_s * 1e9).round() as i64;
+        let skeleton = frames
+            .entry(row.frame)
+            .or_insert_with(|| Skeleton3::empty(stamp));
+        let e = LandmarkEstimate {
+            position_m: Point3::new(row.x_m, row.y_m, row.z_m),
+            confidence: row.confidence,
+            reprojection_error_px: row.reprojection_error_px,
+            views: row.views,
+        };
+        skeleton
+            .set(lm, Some(e))
+            .map_err(|err| parse_err(source_name, format!("row {}", line + 2), err))?;
+    }
+    Ok(frames.into_values().collect())
+}
+
+fn write_trc(frames: &[Skeleton3], name: &str, rate_hz: f64) -> String {
+    let mut out = String::new();
+    let n = frames.len();
+    let _ = writeln!(out, "PathFileType\t4\t(X/Y/Z)\t{name}");
+    let _ = writeln!(out, "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames");
+    let _ = writeln!(
+        out,
+        "{rate_hz:.2}\t{rate_hz:.2}\t{n}\t{}\tm\t{rate_hz:.2}\t1\t{n}",
+        Landmark::ALL.len()
+    );
+    out.push_str("Frame#\tTime");
+    for lm in Landmark::ALL {
+        let _ = write!(out, "\t{}\t\t", lm.name());
+    }
+    out.push_str("\n\t");
+    for i in 1..=Landmark::ALL.len() {
+        let _ = write!(out, "\tX{i}\tY{i}\tZ{i}");
+    }
+    out.push_str("\n\n");
+    let t0 = frames.first().map_or(0, |f| f.stamp_nanos);
+    for (i, s) in frames.iter().enumerate() {
+        let _ = write!(out, "{}\t{:.6}", i + 1, (s.stamp_nanos - t0) as f64 * 1e-9);
+        for lm in Landmark::ALL {
+            match s.position(lm) {
+                Some(p) => {
+                    let _ = write!(out, "\t{:.6}\t{:.6}\t{:.6}", p.x, p.y, p.z);
+                }
+                None => out.push_str("\t\t\t"),
+            }
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn read_trc(text: &str, source_name: &str) -> Result<Vec<Skeleton3>> {
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.by_ref().take(5).collect();
+    if header.len() < 5 || !header[0].starts_with("PathFileType") {
+        return Err(parse_err(source_name, "(header)", "not a TRC file"));
+    }
+    let units = header[2].split('\t').nth(4).unwrap_or("m").trim();
+    let scale = match units {
+        "m" => 1.0,
+        "mm" => 0.001,
+        other => {
+            return Err(parse_err(
+                source_name,
+                "Units",
+                format!("unsupported unit `{other}`"),
+            ))
+        }
+    };
+    let names: Vec<Option<Landmark>> = header[3]
+        .split('\t')
+        .skip(2)
+        .filter(|s| !s.trim().is_empty())
+        .map(|s| Landmark::from_name(s.trim()))
+        .collect();
+    let mut frames = Vec::new();
+    for (line_no, line) in lines.enumerate().filter(|(_, l)| !l.trim().is_empty()) {
+        let cols: Vec<&str> = line.split('\t').collect();
+        let field = |c: usize| cols.get(c).map_or("", |s| s.trim());
+        let time: f64 = field(1).parse().map_err(|_| {
+            parse_err(
+                source_name,
+                format!("line {}: Time", line_no + 6),
+                format!("`{}`", field(1)),
+            )
+        })?;
+        let mut s = Skeleton3::empty((time * 1e9).round() as i64);
+        for (m, lm) in names.iter().enumerate() {
+            let Some(lm) = lm else { continue };
+            let xyz: Vec<&str> = (0..3).map(|a| field(2 + 3 * m + a)).collect();
+            if xyz
+                .iter()
+                .any(|v| v.is_empty() || v.eq_ignore_ascii_case("nan"))
+            {
+                continue;
+            }
+            let mut p = [0.0; 3];
+            for (a, v) in xyz.iter().enumerate() {
+                p[a] = v.parse::<f64>().map_err(|_| {
+                    parse_err(
+                        source_name,
+                        format!("line {}: {}", line_no + 6, lm.name()),
+                        format!("`{v}`"),
+                    )
+                })? * scale;
+            }
+            let e = LandmarkEstimate {
+                position_m: Point3::from(p),
+                confidence: 1.0,
+                reprojection_error_px: None,
+                views: 0,
+            };
+            s.set(*lm, Some(e))
+                .map_err(|err| parse_err(source_name, format!("line {}", line_no + 6), err))?;
+        }
+        frames.push(s);
+    }
+    Ok(frames)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn recording() -> Vec<Skeleton3> {
+        (0..3)
+            .map(|k| {
+                let mut s = Skeleton3::empty(k * 100_000_000);
+                for (i, lm) in Landmark::ALL
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| !(i + k as usize).is_multiple_of(4))
+                {
+                    let e = LandmarkEstimate {
+                        position_m: Point3::new(i as f64 * 0.01, -0.5 + k as f64 * 0.1, 1.25),
+                        confidence: 0.75,
+                        reprojection_error_px: Some(1.5),
+                        views: 3,
+                    };
+                    s.set(*lm, Some(e)).unwrap();
+                }
+                s
+            })
+            .collect()
+    }
+
+    #[test]
+    fn every_format_round_trips_positions_and_gaps() {
+        let rec = recording();
+        for format in [
+            LandmarksFormat::Json,
+            LandmarksFormat::Csv,
+            LandmarksFormat::Trc,
+        ] {
+            let text = write_landmarks(&rec, format, "rec.trc", 10.0);
+            let back = read_landmarks(&text, format, "rec").unwrap();
+            assert_eq!(back.len(), rec.len(), "{format:?}");
+            for (a, b) in rec.iter().zip(&back) {
+                assert_eq!(a.stamp_nanos, b.stamp_nanos, "{format:?}");
+                for lm in Landmark::ALL {
+                    match (a.position(lm), b.position(lm)) {
+                        (Some(p), Some(q)) => assert!((p - q).norm() < 2e-6, "{format:?} {lm}"),
+                        (None, None) => {}
+                        other => panic!("{format:?} {lm}: {other:?}"),
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn malformed_files_name_the_place() {
+        let err = read_landmarks("frame,time_s\n1,2\n", LandmarksFormat::Csv, "x.csv")
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("x.csv") && err.contains("row 2"), "{err}");
+        let err = read_landmarks("hello", LandmarksFormat::Trc, "x.trc")
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("not a TRC"), "{err}");
+        assert!(LandmarksFormat::from_path(std::path::Path::new("a.txt")).is_err());
+    }
+}

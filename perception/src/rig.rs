@@ -1,0 +1,213 @@
+//! A rig of M calibrated cameras in one world frame, grouped into stereo pairs.
+//!
+//! The seed paper (Sec. II.A) uses 3 stereo pairs; each pair's own DLT gives one estimate per landmark,
+//! and fusion combines them. Our default fusion uses every camera directly (N-view), but the pairs are
+//! kept because the paper's baseline and the per-pair diagnostics need them.
+
+use nalgebra::Vector3;
+
+use crate::camera::{Camera, CameraId};
+use crate::error::{PerceptionError, Result};
+
+/// Index of a camera inside its rig (position in [`CameraRig::cameras`]): cheap to copy, used on the
+/// per-frame hot path. [`CameraId`] is the name people and files use.
+pub type CameraIndex = usize;
+
+/// Two cameras triangulated together, as in the seed paper's `S_j`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StereoPair {
+    pub name: String,
+    pub left: CameraIndex,
+    pub right: CameraIndex,
+}
+
+/// A validated set of cameras: unique ids, valid parameters, pairs that reference real cameras.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CameraRig {
+    cameras: Vec<Camera>,
+    pairs: Vec<StereoPair>,
+    /// The world's "up" direction (unit), if the calibration states it. The world frame is whatever the
+    /// calibration chose (the paper: the first camera's frame), so "up" cannot be assumed.
+    up: Option<Vector3<f64>>,
+}
+
+impl CameraRig {
+    /// Builds a rig. `pairs` are `(name, left id, right id)`; with no pairs given, consecutive cameras
+    /// are paired (0–1, 2–3, …) when the count is even.
+    pub fn new(
+        cameras: Vec<Camera>,
+        pairs: &[(String, String, String)],
+        up: Option<Vector3<f64>>,
+    ) -> Result<Self> {
+        if cameras.is_empty() {
+            return Err(PerceptionError::EmptyRig);
+        }
+        for (i, c) in cameras.iter().enumerate() {
+            if cameras[..i].iter().any(|other| other.id == c.id) {
+                return Err(PerceptionError::DuplicateCamera(c.id.clone()));
+            }
+        }
+        let mut rig = Self {
+            cameras,
+            pairs: Vec::new(),
+            up: None,
+        };
+        if let Some(u) = up {
+            let n = u.norm();
+            if !n.is_finite() || n < 1e-9 {
+                return Err(PerceptionError::Parse {
+                    source_name: "rig".into(),
+                    field: "up".into(),
+                    message: format!("up vector {u:?} is not a direction"),
+                });
+            }
+            rig.up = Some(u / n);
+        }
+        if pairs.is_empty() {
+            if rig.cameras.len().is_multiple_of(2) {
+                rig.pairs = (0..rig.cameras.len() / 2)
+                    .map(|j| StereoPair {
+                        name: format!("S{}", j + 1),
+                        left: 2 * j,
+                        right: 2 * j + 1,
+                    })
+                    .collect();
+            }
+        } else {
+            for (name, left, right) in pairs {
+                let l = rig
+                    .index_of_name(left)
+                    .ok_or_else(|| PerceptionError::UnknownCamera(left.clone()))?;
+                let r = rig
+                    .index_of_name(right)
+                    .ok_or_else(|| PerceptionError::UnknownCamera(right.clone()))?;
+                if l == r {
+                    return Err(PerceptionError::DegeneratePair(name.clone()));
+                }
+                rig.pairs.push(StereoPair {
+                    name: name.clone(),
+                    left: l,
+                    right: r,
+                });
+            }
+        }
+        Ok(rig)
+    }
+
+    /// The cameras, in rig order.
+    pub fn cameras(&self) -> &[Camera] {
+        &self.cameras
+    }
+
+    /// The stereo pairs.
+    pub fn pairs(&self) -> &[StereoPair] {
+        &self.pairs
+    }
+
+    /// The world's up direction, if the calibration states it.
+    pub fn up(&self) -> Option<Vector3<f64>> {
+        self.up
+    }
+
+    /// Number of cameras.
+    pub fn len(&self) -> usize {
+        self.cameras.len()
+    }
+
+    /// Always false: a rig has at least one camera.
+    pub fn is_empty(&self) -> bool {
+        self.cameras.is_empty()
+    }
+
+    /// The camera at `index`.
+    pub fn camera(&self, index: CameraIndex) -> Option<&Camera> {
+        self.cameras.get(index)
+    }
+
+    /// The index of the camera with this id.
+    pub fn index_of(&self, id: &CameraId) -> Option<CameraIndex> {
+        self.cameras.iter().position(|c| &c.id == id)
+    }
+
+    /// The index of the camera with this name.
+    pub fn index_of_name(&self, name: &str) -> Option<CameraIndex> {
+        self.cameras
+            .iter()
+            .position(|c| c.id.as_str() == name.trim())
+    }
+
+    /// The pair a camera belongs to, if any.
+    pub fn pair_of(&self, camera: CameraIndex) -> Option<usize> {
+        self.pairs
+            .iter()
+            .position(|p| p.left == camera || p.right == camera)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::{Distortion, Intrinsics};
+    use nalgebra::Rotation3;
+
+    fn cam(name: &str) -> Camera {
+        Camera::new(
+            CameraId::new(name).unwrap(),
+            Intrinsics {
+                fx: 800.0,
+                fy: 800.0,
+                cx: 320.0,
+                cy: 240.0,
+                skew: 0.0,
+                width_px: 640,
+                height_px: 480,
+            },
+            Distortion::default(),
+            Rotation3::identity(),
+            Vector3::zeros(),
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn duplicate_ids_are_rejected() {
+        let err = CameraRig::new(vec![cam("a"), cam("b"), cam("a")], &[], None).unwrap_err();
+        assert_eq!(
+            err,
+            PerceptionError::DuplicateCamera(CameraId::new("a").unwrap())
+        );
+    }
+
+    #[test]
+    fn default_pairs_are_consecutive_and_named_pairs_resolve() {
+        let rig = CameraRig::new(vec![cam("a"), cam("b"), cam("c"), cam("d")], &[], None).unwrap();
+        assert_eq!(rig.pairs().len(), 2);
+        assert_eq!((rig.pairs()[1].left, rig.pairs()[1].right), (2, 3));
+        let pairs = [("front".to_owned(), "d".to_owned(), "a".to_owned())];
+        let rig =
+            CameraRig::new(vec![cam("a"), cam("b"), cam("c"), cam("d")], &pairs, None).unwrap();
+        assert_eq!((rig.pairs()[0].left, rig.pairs()[0].right), (3, 0));
+        assert_eq!(rig.pair_of(1), None);
+        let bad = [("x".to_owned(), "a".to_owned(), "zz".to_owned())];
+        assert!(matches!(
+            CameraRig::new(vec![cam("a")], &bad, None),
+            Err(PerceptionError::UnknownCamera(_))
+        ));
+        let same = [("x".to_owned(), "a".to_owned(), "a".to_owned())];
+        assert!(matches!(
+            CameraRig::new(vec![cam("a")], &same, None),
+            Err(PerceptionError::DegeneratePair(_))
+        ));
+        assert!(matches!(
+            CameraRig::new(vec![], &[], None),
+            Err(PerceptionError::EmptyRig)
+        ));
+    }
+
+    #[test]
+    fn up_is_normalised_and_zero_up_rejected() {
+        let rig = CameraRig::new(vec![cam("a")], &[], Some(Vector3::new(0.0, 0.0, 2.0))).unwrap();
+        assert_eq!(rig.up(), Some(Vector3::z()));
+        assert!(CameraRig::new(vec![cam("a")], &[], Some(Vector3::zeros())).is_err());
+    }
+}

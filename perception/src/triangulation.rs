@@ -1,0 +1,659 @@
+//! Triangulation of one landmark from two or more calibrated views.
+//!
+//! Two methods:
+//!
+//! 1. [`dlt`]: the seed paper's Direct Linear Transform (Sec. II.A.3). Each view with projection matrix
+//!    `P` (rows `k1 k2 k3`) and pixel `(u, v)` adds the rows `u·k3 − k1` and `v·k3 − k2` to `A`, scaled by
+//!    the view's weight; the homogeneous point is the right singular vector of `A` for its smallest
+//!    singular value. `A` (2n×4) is reduced to a 4×4 triangular factor by Givens rotations as rows arrive
+//!    (QR, backward stable, no allocation) and the SVD is taken of that factor, which has the same
+//!    singular values and right singular vectors as `A`. With `P = K[R|t]`, raw pixels and unit weights
+//!    this is exactly caliscope's triangulation.
+//! 2. [`RobustTriangulator`]: ergocell's default. A weighted linear estimate in undistorted normalized
+//!    coordinates, refined by Gauss–Newton on the **pixel reprojection error** with Huber weights, then
+//!    greedy outlier-view rejection (drop the worst view while its error exceeds a threshold and ≥ 2
+//!    views remain, re-refining each time: O(n²) in the number of views, never the 2ⁿ camera subsets
+//!    that stall Pose2Sim at 10–16 cameras). Minimising pixel error is the maximum-likelihood estimate
+//!    under isotropic pixel noise: each view is automatically weighted by its geometry — a far camera's
+//!    pixel constrains depth less, which is where a stereo pair's depth error growing with distance²
+//!    comes from — and each view is additionally weighted by the detector's confidence. Points must end
+//!    up in front of every camera they use (cheirality); a view that puts the point behind it is dropped.
+
+use nalgebra::{
+    Cholesky, Matrix3, Matrix3x4, Matrix4, Point2, Point3, RowVector4, Vector2, Vector3, Vector4,
+};
+
+use crate::error::{PerceptionError, Result};
+
+/// The seed paper's DLT for views given as `(P, pixel, weight)`; `P` maps homogeneous world points to
+/// the same image coordinates as `pixel` (pixels with `K[R|t]`, or normalized coordinates with `[R|t]`).
+pub fn dlt(views: &[(Matrix3x4<f64>, Point2<f64>, f64)]) -> Result<Point3<f64>> {
+    let mut acc = DltAccumulator::default();
+    for (p, px, w) in views {
+        acc.add_view(p, px, *w);
+    }
+    acc.solve()
+}
+
+/// Incremental QR of the DLT matrix `A`: rows are rotated into a 4×4 upper-triangular factor.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct DltAccumulator {
+    r: Matrix4<f64>,
+    views: usize,
+}
+
+impl DltAccumulator {
+    /// Adds one view's two rows.
+    pub fn add_view(&mut self, p: &Matrix3x4<f64>, pixel: &Point2<f64>, weight: f64) {
+        if weight <= 0.0 || !weight.is_finite() {
+            return;
+        }
+        let k1 = p.row(0);
+        let k2 = p.row(1);
+        let k3 = p.row(2);
+        self.add_row((k3 * pixel.x - k1) * weight);
+        self.add_row((k3 * pixel.y - k2) * weight);
+        self.views += 1;
+    }
+
+    fn add_row(&mut self, row: RowVector4<f64>) {
+        let mut row = row;
+        for i in 0..4 {
+            let a = self.r[(i, i)];
+            let b = row[i];
+            if b == 0.0 {
+                continue;
+            }
+            let h = a.hypot(b);
+            let (c, s) = (a / h, b / h);
+            for j in i..4 {
+                let rij = self.r[(i, j)];
+                let xj = row[j];
+                self.r[(i, j)] = c * rij + s * xj;
+                row[j] = -s * rij + c * xj;
+            }
+        }
+    }
+
+    /// Number of views added.
+    pub fn views(&self) -> usize {
+        self.views
+    }
+
+    /// The least-squares point.
+    pub fn solve(&self) -> Result<Point3<f64>> {
+        if self.views < 2 {
+            return Err(PerceptionError::TooFewViews { views: self.views });
+        }
+        let h = smallest_right_singular_vector(&self.r);
+        let scale = h.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        if h[3].abs() <= 1e-12 * scale || h[3].is_nan() {
+            return Err(PerceptionError::Degenerate);
+        }
+        let p = Point3::new(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
+        if p.coords.iter().all(|x| x.is_finite()) {
+            Ok(p)
+        } else {
+            Err(PerceptionError::Degenerate)
+        }
+    }
+}
+
+/// The right singular vector of a 4×4 matrix for its smallest singular value, by one-sided Jacobi
+/// (Hestenes) SVD: columns are rotated pairwise until orthogonal; the rotations accumulate into `V`
+/// and the column norms are the singular values. Accurate to high relative precision.
+///
+/// Written out rather than calling nalgebra's `svd`: nalgebra 0.30 (the version `k` pins for the
+/// whole workspace) returns wrong singular values for some well-conditioned DLT matrices of real
+/// data (found on caliscope's recording: σ_max reported below the norm of a single row).
+pub fn smallest_right_singular_vector(m: &Matrix4<f64>) -> Vector4<f64> {
+    let mut u = *m;
+    let mut v = Matrix4::<f64>::identity();
+    for _sweep in 0..60 {
+        let mut rotated = false;
+        for p in 0..3 {
+            for q in (p + 1)..4 {
+                let alpha = u.column(p).norm_squared();
+                let beta = u.column(q).norm_squared();
+                let gamma = u.column(p).dot(&u.column(q));
+                if alpha == 0.0 || beta == 0.0 || gamma.abs() <= 1e-15 * (alpha * beta).sqrt() {
+                    continue;
+                }
+                rotated = true;
+                let zeta = (beta - alpha) / (2.0 * gamma);
+                let t = zeta.signum() / (zeta.abs() + (1.0 + zeta * zeta).sqrt());
+                let c = 1.0 / (1.0 + t * t).sqrt();
+                let s = c * t;
+                for i in 0..4 {
+                    let (up, uq) = (u[(i, p)], u[(i, q)]);
+                    u[(i, p)] = c * up - s * uq;
+                    u[(i, q)] = s * up + c * uq;
+                    let (vp, vq) = (v[(i, p)], v[(i, q)]);
+                    v[(i, p)] = c * vp - s * vq;
+                    v[(i, q)] = s * vp + c * vq;
+                }
+            }
+        }
+        if !rotated {
+            break;
+        }
+    }
+    let imin = (0..4)
+        .min_by(|&a, &b| {
+            u.column(a)
+                .norm_squared()
+                .total_cmp(&u.column(b).norm_squared())
+        })
+        .unwrap_or(3);
+    v.column(imin).into_owned()
+}
+
+/// One view of a landmark prepared for [`RobustTriangulator`].
+#[derive(Debug, Clone, Copy)]
+pub struct NormalizedView {
+    /// World→camera rotation and translation.
+    pub R_camera_world: Matrix3<f64>,
+    pub t_camera_world: Vector3<f64>,
+    /// Undistorted normalized image coordinates of the observation.
+    pub normalized: Vector2<f64>,
+    /// Focal lengths (pixels per normalized unit), to express residuals in pixels.
+    pub focal_px: Vector2<f64>,
+    /// Detector confidence in `0..=1` (the view's weight).
+    pub confidence: f64,
+}
+
+/// The result of triangulating one landmark.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Triangulated {
+    pub point: Point3<f64>,
+    /// RMS pixel reprojection error over the views kept (undistorted pinhole model).
+    pub rms_px: f64,
+    /// Bit `i` set: view `i` of the input was kept.
+    pub used_mask: u64,
+    /// Mean detector confidence of the kept views.
+    pub mean_confidence: f64,
+}
+
+impl Triangulated {
+    /// Number of views kept.
+    pub fn views_used(&self) -> u32 {
+        self.used_mask.count_ones()
+    }
+}
+
+/// ergocell's default triangulator (see the module docs).
+///
+/// Noise model: a detector's error on a body landmark has two parts, a pixel floor (quantisation,
+/// blur) and a part proportional to the body's apparent size in the image — the detector is wrong by
+/// a roughly constant fraction of the body, i.e. by roughly constant **metres at the body**. So the
+/// standard deviation of a view's error perpendicular to its ray, at depth `Z` with focal length `f`,
+/// is `σ = sqrt((σ_px·Z/f)² + σ_body²)` metres. Each view is weighted by `confidence / σ²`: a far
+/// camera (large `Z/f`) counts less because its pixel floor is worth more metres — the stereo
+/// depth-error-grows-with-distance² effect — while the body part of the error is the same for every
+/// view. With `σ_body = 0` this is pixel-space maximum likelihood; with `σ_px = 0` it is the
+/// object-space (linear DLT-like) estimate.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RobustTriangulator {
+    /// Pixel noise floor of the detector (pixels).
+    pub pixel_noise_px: f64,
+    /// Detector noise that scales with the body's size in the image, expressed at the body (metres).
+    pub body_noise_m: f64,
+    /// Huber threshold of the robust refinement, in standard deviations of the noise model.
+    pub huber_sigmas: f64,
+    /// A view whose error exceeds this many standard deviations is dropped while ≥ 2 views remain.
+    pub outlier_sigmas: f64,
+    /// Gauss–Newton iterations per refinement.
+    pub iterations: usize,
+    /// Observations below this detector confidence are not used.
+    pub min_confidence: f64,
+}
+
+impl Default for RobustTriangulator {
+    /// Defaults for MediaPipe-class detectors: a 2 px floor and 2 cm at the body; robust beyond
+    /// 2 σ, outlier beyond 6 σ (chosen on caliscope's real 4-camera recording, see the crate tests).
+    fn default() -> Self {
+        Self {
+            pixel_noise_px: 2.0,
+            body_noise_m: 0.02,
+            huber_sigmas: 2.0,
+            outlier_sigmas: 6.0,
+            iterations: 5,
+            min_confidence: 0.05,
+        }
+    }
+}
+
+/// Maximum number of views one landmark can use (the mask is a `u64`).
+pub const MAX_VIEWS: usize = 64;
+
+impl RobustTriangulator {
+    /// Triangulates one landmark from its views (at most [`MAX_VIEWS`]).
+    pub fn triangulate(&self, views: &[NormalizedView]) -> Result<Triangulated> {
+        let mut mask: u64 = 0;
+        for (i, v) in views.iter().enumerate().take(MAX_VIEWS) {
+            if v.confidence >= self.min_confidence
+                && v.confidence > 0.0
+                && v.normalized.iter().all(|x| x.is_finite())
+            {
+                mask |= 1 << i;
+            }
+        }
+        if mask.count_ones() < 2 {
+            return Err(PerceptionError::TooFewViews {
+                views: mask.count_ones() as usize,
+            });
+        }
+        let mut point = self.linear_estimate(views, mask)?;
+        point = self.refine(views, mask, point)?;
+        // Cheirality: a view that puts the point behind its camera is dropped.
+        loop {
+            let behind = iter_mask(mask).find(|&i| depth(&views[i], &point) <= 0.0);
+            let Some(i) = behind else { break };
+            mask &= !(1 << i);
+            if mask.count_ones() < 2 {
+                return Err(PerceptionError::TooFewViews {
+                    views: mask.count_ones() as usize,
+                });
+            }
+            point = self.linear_estimate(views, mask)?;
+            point = self.refine(views, mask, point)?;
+        }
+        // Greedy outlier-view rejection.
+        while mask.count_ones() > 2 {
+            let (worst, err) = iter_mask(mask)
+                .map(|i| {
+                    (
+                        i,
+                        self.whitened(&views[i], &point)
+                            .map_or(f64::INFINITY, |r| r.norm()),
+                    )
+                })
+                .fold(
+                    (usize::MAX, -1.0),
+                    |best, x| if x.1 > best.1 { x } else { best },
+                );
+            if err <= self.outlier_sigmas {
+                break;
+            }
+            mask &= !(1 << worst);
+            point = self.refine(views, mask, point)?;
+        }
+        let (mut sq, mut conf) = (0.0, 0.0);
+        for i in iter_mask(mask) {
+            let r = residual_px(&views[i], &point).ok_or(PerceptionError::Degenerate)?;
+            sq += r.norm_squared();
+            conf += views[i].confidence;
+        }
+        let n = f64::from(mask.count_ones());
+        Ok(Triangulated {
+            point,
+            rms_px: (sq / n).sqrt(),
+            used_mask: mask,
+            mean_confidence: conf / n,
+        })
+    }
+
+    /// Per-axis standard deviation of a view's error in normalized image units at depth `z`.
+    fn sigma_normalized(&self, v: &NormalizedView, z: f64) -> Vector2<f64> {
+        let body = self.body_noise_m / z;
+        Vector2::new(
+            ((self.pixel_noise_px / v.focal_px.x).powi(2) + body * body).sqrt(),
+            ((self.pixel_noise_px / v.focal_px.y).powi(2) + body * body).sqrt(),
+        )
+    }
+
+    /// A view's residual in standard deviations of the noise model; `None` behind the camera.
+    fn whitened(&self, v: &NormalizedView, p: &Point3<f64>) -> Option<Vector2<f64>> {
+        let pc = v.R_camera_world * p.coords + v.t_camera_world;
+        (pc.z > 1e-9).then(|| {
+            let s = self.sigma_normalized(v, pc.z);
+            Vector2::new(
+                (pc.x / pc.z - v.normalized.x) / s.x,
+                (pc.y / pc.z - v.normalized.y) / s.y,
+            )
+        })
+    }
+
+    /// Iteratively reweighted Gauss–Newton on the whitened, confidence-weighted, Huber-robust error.
+    fn refine(
+        &self,
+        views: &[NormalizedView],
+        mask: u64,
+        start: Point3<f64>,
+    ) -> Result<Point3<f64>> {
+        let mut x = start;
+        for _ in 0..self.iterations {
+            let mut h = Matrix3::zeros();
+            let mut g = Vector3::zeros();
+            for i in iter_mask(mask) {
+                let v = &views[i];
+                let pc = v.R_camera_world * x.coords + v.t_camera_world;
+                if pc.z <= 1e-9 {
+                    continue;
+                }
+                let inv_z = 1.0 / pc.z;
+                let s = self.sigma_normalized(v, pc.z);
+                let r = Vector2::new(
+                    (pc.x * inv_z - v.normalized.x) / s.x,
+                    (pc.y * inv_z - v.normalized.y) / s.y,
+                );
+                let norm = r.norm();
+                let huber = if norm > self.huber_sigmas {
+                    self.huber_sigmas / norm
+                } else {
+                    1.0
+                };
+                let w = v.confidence * huber;
+                // d(whitened residual)/d(p_camera); σ is held fixed within an iteration (IRLS)
+                let jp = nalgebra::Matrix2x3::new(
+                    inv_z / s.x,
+                    0.0,
+                    -pc.x * inv_z * inv_z / s.x,
+                    0.0,
+                    inv_z / s.y,
+                    -pc.y * inv_z * inv_z / s.y,
+                );
+                let j = jp * v.R_camera_world;
+                h += j.transpose() * j * w;
+                g += j.transpose() * r * w;
+            }
+            let chol = well_conditioned_cholesky(h)?;
+            let step = chol.solve(&g);
+            x -= step;
+            if !x.coords.iter().all(|c| c.is_finite()) {
+                return Err(PerceptionError::Degenerate);
+            }
+            if step.norm() < 1e-10 {
+                break;
+            }
+        }
+        Ok(x)
+    }
+
+    /// Weighted linear least squares in normalized coordinates (inhomogeneous DLT): each view's rows
+    /// are its error in metres at the point's depth, divided by the noise model's σ there. The first
+    /// round knows no depth and uses the body term only; the second uses the first round's depths.
+    fn linear_estimate(&self, views: &[NormalizedView], mask: u64) -> Result<Point3<f64>> {
+        let mut point: Option<Point3<f64>> = None;
+        for _round in 0..2 {
+            let mut ata = Matrix3::zeros();
+            let mut atb = Vector3::zeros();
+            for i in iter_mask(mask) {
+                let v = &views[i];
+                let r = &v.R_camera_world;
+                let t = &v.t_camera_world;
+                let z = point
+                    .map(|p| (r.row(2) * p.coords)[0] + t.z)
+                    .filter(|z| *z > 1e-6);
+                let f = 0.5 * (v.focal_px.x + v.focal_px.y);
+                let sigma_m = match z {
+                    Some(z) => {
+                        ((self.pixel_noise_px * z / f).powi(2) + self.body_noise_m.powi(2)).sqrt()
+                    }
+                    None => self.body_noise_m.max(1e-3),
+                };
+                let w = v.confidence.sqrt() / sigma_m;
+                for (c, axis) in [(v.normalized.x, 0usize), (v.normalized.y, 1usize)] {
+                    // (c·r3 − r_axis)·X = −(c·t3 − t_axis): the error c·Z − X_axis, metres at the point
+                    let row = (r.row(2) * c - r.row(axis)) * w;
+                    let rhs = -(c * t.z - t[axis]) * w;
+                    ata += row.transpose() * row;
+                    atb += row.transpose() * rhs;
+                }
+            }
+            let chol = well_conditioned_cholesky(ata)?;
+            let p = Point3::from(chol.solve(&atb));
+            if !p.coords.iter().all(|x| x.is_finite()) {
+                return Err(PerceptionError::Degenerate);
+            }
+            point = Some(p);
+        }
+        point.ok_or(PerceptionError::Degenerate)
+    }
+}
+
+/// Cholesky of a 3×3 normal matrix, refusing a (numerically) rank-deficient one: parallel rays or a
+/// single camera position give no depth, and a solve would return garbage instead of an error.
+fn well_conditioned_cholesky(m: Matrix3<f64>) -> Result<Cholesky<f64, nalgebra::U3>> {
+    let chol = Cholesky::new(m).ok_or(PerceptionError::Degenerate)?;
+    let d = chol.l_dirty().diagonal();
+    let (lo, hi) = d.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), x| {
+        (lo.min(x.abs()), hi.max(x.abs()))
+    });
+    // pivots are squares of the diagonal: a pivot ratio below 1e-12 means condition number > 1e12
+    if lo * lo < 1e-12 * hi * hi {
+        return Err(PerceptionError::Degenerate);
+    }
+    Ok(chol)
+}
+
+fn depth(v: &NormalizedView, p: &Point3<f64>) -> f64 {
+    (v.R_camera_world.row(2) * p.coords)[0] + v.t_camera_world.z
+}
+
+/// Pixel residual of one view (undistorted pinhole model); `None` when the point is behind it.
+fn residual_px(v: &NormalizedView, p: &Point3<f64>) -> Option<Vector2<f64>> {
+    let pc = v.R_camera_world * p.coords + v.t_camera_world;
+    (pc.z > 1e-9).then(|| {
+        Vector2::new(
+            (pc.x / pc.z - v.normalized.x) * v.focal_px.x,
+            (pc.y / pc.z - v.normalized.y) * v.focal_px.y,
+        )
+    })
+}
+
+/// Indices of the set bits of `mask`.
+pub fn iter_mask(mask: u64) -> impl Iterator<Item = usize> {
+    let mut m = mask;
+    std::iter::from_fn(move || {
+        if m == 0 {
+            None
+        } else {
+            let i = m.trailing_zeros() as usize;
+            m &= m - 1;
+            Some(i)
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use nalgebra::{Rotation3, UnitQuaternion};
+
+    fn look_at(eye: Point3<f64>, target: Point3<f64>) -> (Matrix3<f64>, Vector3<f64>) {
+        // camera z towards the target, y roughly down (world z up)
+        let z = (target - eye).normalize();
+        let x = z.cross(&Vector3::z()).normalize();
+        let y = z.cross(&x);
+        let r_world_camera = Matrix3::from_columns(&[x, y, z]);
+        let r = r_world_camera.transpose();
+        (r, -(r * eye.coords))
+    }
+
+    fn views_of(p: &Point3<f64>, eyes: &[Point3<f64>]) -> Vec<NormalizedView> {
+        eyes.iter()
+            .map(|eye| {
+                let (r, t) = look_at(*eye, Point3::new(0.0, 0.0, 1.0));
+                let pc = r * p.coords + t;
+                NormalizedView {
+                    R_camera_world: r,
+                    t_camera_world: t,
+                    normalized: Vector2::new(pc.x / pc.z, pc.y / pc.z),
+                    focal_px: Vector2::new(900.0, 900.0),
+                    confidence: 1.0,
+                }
+            })
+            .collect()
+    }
+
+    fn eyes() -> Vec<Point3<f64>> {
+        vec![
+            Point3::new(3.0, 0.0, 1.5),
+            Point3::new(3.0, 0.12, 1.5),
+            Point3::new(-1.5, 2.6, 1.4),
+            Point3::new(-1.6, 2.5, 1.4),
+            Point3::new(-1.5, -2.6, 1.6),
+        ]
+    }
+
+    #[test]
+    fn dlt_recovers_an_exact_point() {
+        let p = Point3::new(0.2, -0.1, 1.3);
+        let views: Vec<_> = views_of(&p, &eyes())
+            .iter()
+            .map(|v| {
+                let mut m = Matrix3x4::zeros();
+                m.fixed_slice_mut::<3, 3>(0, 0).copy_from(&v.R_camera_world);
+                m.fixed_slice_mut::<3, 1>(0, 3).copy_from(&v.t_camera_world);
+                (m, Point2::from(v.normalized), 1.0)
+            })
+            .collect();
+        assert_relative_eq!(dlt(&views).unwrap(), p, epsilon = 1e-10);
+        assert_relative_eq!(dlt(&views[..2]).unwrap(), p, epsilon = 1e-8);
+        assert!(matches!(
+            dlt(&views[..1]),
+            Err(PerceptionError::TooFewViews { views: 1 })
+        ));
+    }
+
+    #[test]
+    fn dlt_minimises_the_algebraic_error_on_real_data() {
+        // Three views of caliscope's recording (sync 52, point 21): P = K[R|t] and raw pixels.
+        let p = [
+            Matrix3x4::new(
+                104.295_676_998_402_2,
+                -1_085.674_814_668_402_4,
+                2.286_841_858_559_228,
+                331.026_417_096_382_5,
+                -843.677_107_238_725_7,
+                -289.487_803_646_834_4,
+                -373.256_171_633_313_95,
+                760.175_084_665_286_2,
+                0.126_347_520_311_210_7,
+                -0.564_349_390_479_059,
+                -0.815_810_069_548_741_8,
+                1.451_538_316_839_271_5,
+            ),
+            Matrix3x4::new(
+                704.472_882_788_796_9,
+                0.479_745_623_001_395_2,
+                625.425_925_546_476_7,
+                1.924_529_037_893_884_2,
+                -1.870_052_704_903_588,
+                705.296_442_170_214,
+                350.752_232_893_075_3,
+                -0.504_434_557_401_312_8,
+                0.000_827_956_039_493_433_9,
+                -0.002_673_685_678_261_217_5,
+                0.999_996_082_939_173_9,
+                0.002_586_533_725_961_536_3,
+            ),
+            Matrix3x4::new(
+                -607.373_246_193_982_3,
+                -564.960_995_262_921_9,
+                -387.550_275_474_289_44,
+                1_022.518_994_091_361_7,
+                -27.323_493_806_754_854,
+                91.216_701_934_049_75,
+                -731.686_952_459_668_4,
+                1_000.321_934_842_665_8,
+                0.042_276_993_302_244_21,
+                -0.786_252_676_038_872,
+                -0.616_457_123_617_721_2,
+                1.518_360_243_991_087_3,
+            ),
+        ];
+        let px = [
+            Point2::new(432.0, 546.0),
+            Point2::new(680.0, 423.0),
+            Point2::new(682.0, 347.0),
+        ];
+        let views: Vec<_> = p.iter().zip(px).map(|(p, px)| (*p, px, 1.0)).collect();
+        let got = dlt(&views).unwrap();
+        // numpy.linalg.svd (LAPACK) on the same 6×4 matrix gives this point:
+        assert_relative_eq!(
+            got,
+            Point3::new(0.049_468_45, 0.084_522_49, 0.986_845_73),
+            epsilon = 1e-8
+        );
+        // and it is the minimiser of |A h| over unit h: no random direction does better.
+        let mut a = nalgebra::DMatrix::zeros(6, 4);
+        for (i, (m, px, _)) in views.iter().enumerate() {
+            a.set_row(2 * i, &(m.row(2) * px.x - m.row(0)));
+            a.set_row(2 * i + 1, &(m.row(2) * px.y - m.row(1)));
+        }
+        let h = got.to_homogeneous().normalize();
+        let best = (&a * nalgebra::DVector::from_column_slice(h.as_slice())).norm();
+        let mut seed = 12345u64;
+        for _ in 0..2000 {
+            let mut r = [0.0; 4];
+            for x in &mut r {
+                seed = seed
+                    .wrapping_mul(6_364_136_223_846_793_005)
+                    .wrapping_add(1_442_695_040_888_963_407);
+                *x = (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            }
+            let u = nalgebra::DVector::from_column_slice(&r).normalize();
+            assert!((&a * u).norm() >= best - 1e-9);
+        }
+    }
+
+    #[test]
+    fn jacobi_svd_finds_the_null_vector_of_a_rank_deficient_matrix() {
+        let m = Matrix4::new(
+            1.0, 2.0, 3.0, 6.0, 0.5, -1.0, 2.0, 1.5, 3.0, 0.0, 1.0, 4.0, 2.0, 2.0, 2.0, 6.0,
+        );
+        // column 4 = col1 + col2 + col3 → null vector (1, 1, 1, −1)/2
+        let v = smallest_right_singular_vector(&m);
+        assert!((m * v).norm() < 1e-12);
+        assert_relative_eq!(v.norm(), 1.0, epsilon = 1e-12);
+    }
+
+    #[test]
+    fn robust_triangulation_is_exact_without_noise_and_rejects_an_outlier() {
+        let p = Point3::new(-0.3, 0.25, 1.1);
+        let mut views = views_of(&p, &eyes());
+        let t = RobustTriangulator::default().triangulate(&views).unwrap();
+        assert_relative_eq!(t.point, p, epsilon = 1e-9);
+        assert_eq!(t.views_used(), 5);
+        // One gross outlier (≈ 90 px) is dropped, the rest still give the exact point.
+        views[2].normalized.x += 0.1;
+        let t = RobustTriangulator::default().triangulate(&views).unwrap();
+        assert_eq!(t.used_mask & (1 << 2), 0);
+        assert_relative_eq!(t.point, p, epsilon = 1e-6);
+    }
+
+    #[test]
+    fn a_view_behind_the_point_is_dropped_and_two_views_are_required() {
+        let p = Point3::new(0.0, 0.0, 1.0);
+        let mut views = views_of(&p, &eyes()[..3]);
+        // Turn camera 2 around: the point is now behind it.
+        let flip = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), std::f64::consts::PI);
+        let r = Rotation3::from(flip).matrix() * views[2].R_camera_world;
+        views[2].R_camera_world = r;
+        views[2].t_camera_world = Rotation3::from(flip).matrix() * views[2].t_camera_world;
+        let t = RobustTriangulator::default().triangulate(&views).unwrap();
+        assert_eq!(t.views_used(), 2);
+        assert_relative_eq!(t.point, p, epsilon = 1e-8);
+        assert!(matches!(
+            RobustTriangulator::default().triangulate(&views[..1]),
+            Err(PerceptionError::TooFewViews { .. })
+        ));
+    }
+
+    #[test]
+    fn parallel_rays_are_degenerate_not_garbage() {
+        let p = Point3::new(0.0, 0.0, 1.0);
+        let eye = Point3::new(3.0, 0.0, 1.5);
+        let views = views_of(&p, &[eye, eye]);
+        assert!(RobustTriangulator::default().triangulate(&views).is_err());
+    }
+
+    #[test]
+    fn mask_iteration_lists_set_bits() {
+        assert_eq!(iter_mask(0b1011_0001).collect::<Vec<_>>(), vec![0, 4, 5, 7]);
+        assert_eq!(iter_mask(0).count(), 0);
+    }
+}

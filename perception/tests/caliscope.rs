@@ -1,0 +1,137 @@
+//! Real data: caliscope's 4-camera MediaPipe recording (`../shared/data/caliscope-4cam`, see its
+//! SOURCE.md). The recording tool's own 3D output is the known answer for plain N-view DLT, and the
+//! bone lengths measure how consistent each fusion is.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // test helpers outside #[test] fns
+
+use std::path::PathBuf;
+
+use ergocell_perception::detections::ImportStats;
+use ergocell_perception::fusion::{FusionEngine, FusionMethod};
+use ergocell_perception::import::parse_caliscope_xy;
+use ergocell_perception::metrics::bone_length_variation_percent;
+use ergocell_perception::rig_file::{parse_rig, RigFormat};
+use ergocell_perception::{CameraRig, Frame2};
+use ergocell_skeleton::{Landmark, LandmarkEstimate, Skeleton3};
+
+fn data_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/caliscope-4cam")
+}
+
+fn read(name: &str) -> String {
+    let path = data_dir().join(name);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e} (the shared data must sit beside the repo)",
+            path.display()
+        )
+    })
+}
+
+fn load() -> (CameraRig, Vec<Frame2>) {
+    let (rig, format) = parse_rig(&read("config.toml"), "config.toml").unwrap();
+    assert_eq!(format, RigFormat::Caliscope);
+    assert_eq!(rig.len(), 4);
+    let mut stats = ImportStats::default();
+    let frames =
+        parse_caliscope_xy(&read("xy_pose33.csv"), "xy_pose33.csv", &rig, &mut stats).unwrap();
+    (rig, frames)
+}
+
+#[test]
+fn unweighted_nview_dlt_reproduces_caliscopes_own_3d_output() {
+    let (rig, frames) = load();
+    let engine = FusionEngine::new(rig, FusionMethod::Default).unwrap();
+    // xyz_pose33.csv: index, sync_index, point_id, x, y, z
+    let text = read("xyz_pose33.csv");
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let mut expected = std::collections::HashMap::new();
+    for row in reader.records() {
+        let row = row.unwrap();
+        let sync: usize = row[1].parse().unwrap();
+        let point: usize = row[2].parse().unwrap();
+        let p: Vec<f64> = (3..6).map(|i| row[i].parse().unwrap()).collect();
+        expected.insert((sync, point), p);
+    }
+    assert!(expected.len() > 7000);
+    let mut worst: f64 = 0.0;
+    let mut compared = 0;
+    // sync indices are consecutive from 0 in this recording, so frame k is sync index k
+    for (sync, frame) in frames.iter().enumerate() {
+        let ours = engine.raw_pixel_dlt(frame).unwrap();
+        for (point, p) in ours.iter().enumerate() {
+            if let Some(e) = expected.get(&(sync, point)) {
+                let p = p.unwrap_or_else(|| panic!("sync {sync} point {point}: we found no point"));
+                let d = ((p.x - e[0]).powi(2) + (p.y - e[1]).powi(2) + (p.z - e[2]).powi(2)).sqrt();
+
+                worst = worst.max(d);
+                compared += 1;
+            }
+        }
+    }
+    assert_eq!(
+        compared,
+        expected.len(),
+        "every point caliscope triangulated, we triangulated"
+    );
+    assert!(worst < 1e-6, "worst difference {worst} m");
+}
+
+fn skeletons(points: &[[Option<nalgebra::Point3<f64>>; 33]]) -> Vec<Skeleton3> {
+    points
+        .iter()
+        .enumerate()
+        .map(|(k, pts)| {
+            let mut s = Skeleton3::empty(k as i64);
+            for lm in Landmark::ALL {
+                if let Some(p) = pts[lm.index()] {
+                    let e = LandmarkEstimate {
+                        position_m: p,
+                        confidence: 1.0,
+                        reprojection_error_px: None,
+                        views: 2,
+                    };
+                    s.set(lm, Some(e)).unwrap();
+                }
+            }
+            s
+        })
+        .collect()
+}
+
+#[test]
+fn default_fusion_has_less_bone_length_variation_than_the_papers_and_plain_dlt() {
+    let (rig, frames) = load();
+    let mut paper = FusionEngine::new(rig.clone(), FusionMethod::Paper).unwrap();
+    let mut default = FusionEngine::new(rig, FusionMethod::Default).unwrap();
+    let paper_frames: Vec<Skeleton3> = frames
+        .iter()
+        .map(|f| paper.fuse(f).unwrap().skeleton)
+        .collect();
+    let default_frames: Vec<Skeleton3> = frames
+        .iter()
+        .map(|f| default.fuse(f).unwrap().skeleton)
+        .collect();
+    let dlt: Vec<_> = frames
+        .iter()
+        .map(|f| default.raw_pixel_dlt(f).unwrap())
+        .collect();
+    let weighted: Vec<_> = frames
+        .iter()
+        .map(|f| default.weighted_dlt(f).unwrap())
+        .collect();
+    let cv_paper = bone_length_variation_percent(&paper_frames).unwrap();
+    let cv_default = bone_length_variation_percent(&default_frames).unwrap();
+    let cv_dlt = bone_length_variation_percent(&skeletons(&dlt)).unwrap();
+    let cv_weighted = bone_length_variation_percent(&skeletons(&weighted)).unwrap();
+    eprintln!("bone-length variation: paper {cv_paper:.2}%  raw DLT {cv_dlt:.2}%  undistorted DLT {cv_weighted:.2}%  default {cv_default:.2}%");
+    assert!(
+        cv_default < cv_paper,
+        "default {cv_default} vs paper {cv_paper}"
+    );
+    assert!(cv_default < cv_dlt, "default {cv_default} vs DLT {cv_dlt}");
+    assert!(
+        cv_default < cv_weighted,
+        "default {cv_default} vs undistorted DLT {cv_weighted}"
+    );
+}
