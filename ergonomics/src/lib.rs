@@ -1,6 +1,96 @@
 //! Ergonomics: what the fused 3D skeleton means for the operator's body.
 //!
-//! Will hold (issue "Ergonomics"): the complete RULA worksheet for both sides, joint angles from
-//! BlazePose-33 landmarks, stature estimation and the height class at session start, and posture
-//! warnings with hysteresis. Depends only on [`ergocell_skeleton`]; knows nothing of cameras, ROS or
-//! the robot.
+//! - [`rula`]: the complete RULA worksheet (McAtamney & Corlett 1993) for one side, with the lookup
+//!   tables kept as data ([`tables`]) and ergocell's written band-edge convention.
+//! - [`angles`]: joint angles from BlazePose-33 landmarks in a body frame built from the hips and
+//!   shoulders, with the world's "up" taken from the cell config (never assumed).
+//! - [`assess`]: a frame-by-frame RULA assessor for both sides: angles + task config + a time-series
+//!   muscle-use tracker → a breakdown that says which inputs were observed and which configured, and
+//!   marks low-confidence scores "uncertain" (never lower).
+//! - [`height`]: stature from upright frames with two anthropometric estimators, and the height class
+//!   decision at session start.
+//! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.
+//! - [`pose`]: synthetic skeletons posed to known angles, for tests and benchmarks.
+//!
+//! Depends only on [`ergocell_skeleton`]; knows nothing of cameras, ROS or the robot, and does no I/O:
+//! the binary reads files and passes text or values in. Time comes in as `stamp_nanos` on each frame.
+//! Angles are radians in code; degrees appear only in the RULA worksheet (the method is written in
+//! degrees) and in human-readable messages.
+
+pub mod angles;
+pub mod assess;
+pub mod height;
+pub mod pose;
+pub mod rula;
+pub mod tables;
+pub mod warnings;
+
+pub use angles::{BodyAngles, SideAngles, UpVector};
+pub use assess::{AssessmentConfig, FrameAssessment, RulaAssessor, SideAssessment, TaskConfig};
+pub use height::{HeightClass, HeightConfig, HeightDecision, HeightEstimator, HeightStatus};
+pub use rula::{score_worksheet, RulaInput, RulaScores, WristTwist};
+pub use warnings::{WarningConfig, WarningEvent, WarningTracker};
+
+/// Which side of the body (the person's own left and right).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Side {
+    Left,
+    Right,
+}
+
+impl Side {
+    /// Both sides, left first.
+    pub const BOTH: [Side; 2] = [Side::Left, Side::Right];
+
+    /// "left" / "right".
+    pub const fn name(self) -> &'static str {
+        match self {
+            Side::Left => "left",
+            Side::Right => "right",
+        }
+    }
+}
+
+/// Everything that can go wrong in this crate. Outcomes (an undecided height class, an uncertain
+/// score) are not errors; they are values.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ErgonomicsError {
+    /// The embedded RULA tables do not have the published shape.
+    #[error("RULA table {table} is malformed: expected {expected}")]
+    TableShape {
+        table: &'static str,
+        expected: &'static str,
+    },
+    /// A worksheet entry of `rula score` input is malformed.
+    #[error("worksheet entry {index}: field `{field}`: {reason}")]
+    Worksheet {
+        index: usize,
+        field: String,
+        reason: String,
+    },
+    /// The worksheet input is not a JSON array.
+    #[error("worksheet input: {reason}")]
+    WorksheetJson { reason: String },
+    /// A number is outside its allowed range.
+    #[error("{field} = {value} is outside {min}..={max}")]
+    OutOfRange {
+        field: &'static str,
+        value: f64,
+        min: f64,
+        max: f64,
+    },
+    /// A number is NaN or infinite.
+    #[error("{field} is not finite ({value})")]
+    NonFinite { field: &'static str, value: f64 },
+    /// The configured up vector has no direction.
+    #[error("up vector ({x}, {y}, {z}) has zero or non-finite length")]
+    DegenerateUp { x: f64, y: f64, z: f64 },
+    /// Frames must come in time order.
+    #[error("frame at {got} ns arrived after a frame at {previous} ns: time went backwards")]
+    TimeWentBackwards { previous: i64, got: i64 },
+    /// Height class thresholds must be ordered.
+    #[error("height class thresholds must satisfy 0 < c1_below_m ({c1_below_m}) <= c2_up_to_m ({c2_up_to_m})")]
+    BadClassThresholds { c1_below_m: f64, c2_up_to_m: f64 },
+}

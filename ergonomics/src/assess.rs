@@ -1,0 +1,819 @@
+//! Frame-by-frame RULA for both sides, from the fused skeleton.
+//!
+//! [`RulaAssessor::assess`] takes one [`Skeleton3`] at a time (in time order) and returns a
+//! [`FrameAssessment`]: the angles, and per side the worksheet that was scored, its breakdown, where
+//! every input came from ([`InputSource`]) and whether the score is uncertain.
+//!
+//! - **Observed** inputs come from the landmarks of this frame ([`crate::angles`]); thresholds that turn
+//!   angles into the worksheet's yes/no adjustments are in [`Thresholds`] (RULA gives none; ours are
+//!   documented there).
+//! - **Configured** inputs come from [`TaskConfig`]: force/load, wrist twist (cameras cannot see
+//!   pronation), arm supported/leaning and seated-and-supported.
+//! - **Time-series** input: muscle use, from [`MuscleUseTracker`] (posture held > 1 min, or an action
+//!   repeated ≥ 4 times a minute), driven by the frames' `stamp_nanos` — never by a wall clock.
+//! - **Held**: when a landmark is missing in this frame, the last observed value is used and the score
+//!   is marked uncertain. With nothing to hold, that side is not scored (`None`): "no score" is never
+//!   presented as "safe".
+//! - Low tracking confidence (any landmark used below [`AssessmentConfig::min_confidence`]) marks the
+//!   score **uncertain**; it never changes (and so never lowers) the score.
+
+use std::collections::VecDeque;
+
+use ergocell_skeleton::{Landmark, Skeleton3};
+use serde::{Deserialize, Serialize};
+
+use crate::angles::{
+    arm_landmarks, body_angles, BodyAngles, LegsObservation, SideAngles, UpVector,
+};
+use crate::rula::{
+    lower_arm_band, neck_band, score_worksheet, trunk_band, upper_arm_band, RulaInput, RulaScores,
+    ScoringNote, WristTwist,
+};
+use crate::{ErgonomicsError, Side};
+
+/// What the task is, as far as the cameras cannot tell.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct TaskConfig {
+    /// RULA step 7, 0..=3.
+    pub force_load_score_arm_wrist: u8,
+    /// RULA step 13, 0..=3.
+    pub force_load_score_neck_trunk_legs: u8,
+    pub wrist_twist: WristTwist,
+    pub arm_supported_or_leaning: bool,
+    pub seated_well_supported: bool,
+}
+
+impl Default for TaskConfig {
+    fn default() -> Self {
+        Self {
+            force_load_score_arm_wrist: 0,
+            force_load_score_neck_trunk_legs: 0,
+            wrist_twist: WristTwist::MidRange,
+            arm_supported_or_leaning: false,
+            seated_well_supported: false,
+        }
+    }
+}
+
+/// Thresholds that turn measured angles into the worksheet's yes/no adjustments. RULA states none;
+/// these defaults are ergocell's, chosen at about half a RULA band so that noise of a few degrees does
+/// not toggle them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Thresholds {
+    /// Upper arm abducted when its abduction exceeds this (default 20°).
+    pub abduction_rad: f64,
+    /// Shoulder raised when the shoulder-to-ear distance over the shoulder width falls below this
+    /// (default 0.48; neutral adults are near 0.55 on Drillis & Contini geometry, a 5 cm shrug ≈ 0.47).
+    pub shoulder_raise_ratio_below: f64,
+    /// Lower arm out to the side when the wrist is this many shoulder widths outside the shoulder
+    /// (default 0.5).
+    pub out_to_side_shoulder_widths: f64,
+    /// Wrist bent from the midline when |deviation| exceeds this (default 10°).
+    pub wrist_deviation_rad: f64,
+    /// Neck twisted when |twist| exceeds this (default 10°).
+    pub neck_twist_rad: f64,
+    /// Neck side-bending when the side bend exceeds this (default 10°).
+    pub neck_side_bend_rad: f64,
+    /// Trunk twisted when |twist| exceeds this (default 10°).
+    pub trunk_twist_rad: f64,
+    /// Trunk side-bending when |side bend| exceeds this (default 10°).
+    pub trunk_side_bend_rad: f64,
+    /// A foot is on the floor when its lowest point is within this of the floor (default 0.05 m).
+    pub foot_on_floor_m: f64,
+    /// Weight balanced when the hips are within this weight offset (0 centred, 1 over one foot;
+    /// default 0.5).
+    pub weight_offset_max: f64,
+}
+
+impl Default for Thresholds {
+    fn default() -> Self {
+        Self {
+            abduction_rad: 20f64.to_radians(),
+            shoulder_raise_ratio_below: 0.48,
+            out_to_side_shoulder_widths: 0.5,
+            wrist_deviation_rad: 10f64.to_radians(),
+            neck_twist_rad: 10f64.to_radians(),
+            neck_side_bend_rad: 10f64.to_radians(),
+            trunk_twist_rad: 10f64.to_radians(),
+            trunk_side_bend_rad: 10f64.to_radians(),
+            foot_on_floor_m: 0.05,
+            weight_offset_max: 0.5,
+        }
+    }
+}
+
+/// How muscle use is derived from the time series (RULA step 6/13).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MuscleUseConfig {
+    /// A non-relaxed posture held (same bands) longer than this is static (default 60 s).
+    pub hold_nanos: i64,
+    /// Window over which repetitions are counted (default 60 s).
+    pub window_nanos: i64,
+    /// Repetitions within the window that count as repeated (default 4).
+    pub min_repetitions: usize,
+    /// An excursion out of the relaxed posture counts once it lasted this long (default 0.3 s), so
+    /// that noise at a band edge is not counted as repetitions.
+    pub min_excursion_nanos: i64,
+}
+
+impl Default for MuscleUseConfig {
+    fn default() -> Self {
+        Self {
+            hold_nanos: 60_000_000_000,
+            window_nanos: 60_000_000_000,
+            min_repetitions: 4,
+            min_excursion_nanos: 300_000_000,
+        }
+    }
+}
+
+/// Everything the assessor needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AssessmentConfig {
+    /// The world's up (from the cell config).
+    pub up: UpVector,
+    /// Floor height along `up`, metres; `None` = use the lowest foot landmark of each frame.
+    pub floor_height_m: Option<f64>,
+    /// Landmarks below this confidence make a score uncertain (default 0.5).
+    pub min_confidence: f64,
+    pub thresholds: Thresholds,
+    pub task: TaskConfig,
+    pub muscle: MuscleUseConfig,
+}
+
+impl AssessmentConfig {
+    /// Defaults for everything but the up vector, which must always be given.
+    pub fn new(up: UpVector) -> Self {
+        Self {
+            up,
+            floor_height_m: None,
+            min_confidence: 0.5,
+            thresholds: Thresholds::default(),
+            task: TaskConfig::default(),
+            muscle: MuscleUseConfig::default(),
+        }
+    }
+}
+
+/// Muscle use from the time series: static (a non-relaxed posture held longer than the hold time)
+/// or repeated (at least `min_repetitions` excursions out of the relaxed posture within the window).
+///
+/// A relaxed posture held still (arm within 20° of hanging; neck and trunk within 20° of upright) is
+/// not counted as static loading.
+#[derive(Debug, Clone)]
+pub struct MuscleUseTracker {
+    config: MuscleUseConfig,
+    last_stamp: Option<i64>,
+    key: Option<u32>,
+    key_since: i64,
+    excursion_since: Option<i64>,
+    excursion_counted: bool,
+    onsets: VecDeque<i64>,
+}
+
+/// The tracker's verdict for one frame.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct MuscleUse {
+    pub static_hold: bool,
+    pub repeated: bool,
+    /// Excursions counted in the current window.
+    pub repetitions_in_window: usize,
+}
+
+impl MuscleUse {
+    /// RULA's +1.
+    pub fn applies(&self) -> bool {
+        self.static_hold || self.repeated
+    }
+}
+
+impl MuscleUseTracker {
+    pub fn new(config: MuscleUseConfig) -> Self {
+        Self {
+            config,
+            last_stamp: None,
+            key: None,
+            key_since: 0,
+            excursion_since: None,
+            excursion_counted: false,
+            onsets: VecDeque::new(),
+        }
+    }
+
+    /// Feeds one frame: `posture_key` identifies the posture (its bands), `relaxed` says whether it is
+    /// the relaxed posture.
+    pub fn update(
+        &mut self,
+        stamp_nanos: i64,
+        posture_key: u32,
+        relaxed: bool,
+    ) -> Result<MuscleUse, ErgonomicsError> {
+        if let Some(previous) = self.last_stamp {
+            if stamp_nanos < previous {
+                return Err(ErgonomicsError::TimeWentBackwards {
+                    previous,
+                    got: stamp_nanos,
+                });
+            }
+        }
+        self.last_stamp = Some(stamp_nanos);
+        if self.key != Some(posture_key) {
+            self.key = Some(posture_key);
+            self.key_since = stamp_nanos;
+        }
+        let static_hold =
+            !relaxed && stamp_nanos.saturating_sub(self.key_since) > self.config.hold_nanos;
+        if relaxed {
+            self.excursion_since = None;
+            self.excursion_counted = false;
+        } else {
+            let since = *self.excursion_since.get_or_insert(stamp_nanos);
+            if !self.excursion_counted
+                && stamp_nanos.saturating_sub(since) >= self.config.min_excursion_nanos
+            {
+                self.onsets.push_back(since);
+                self.excursion_counted = true;
+            }
+        }
+        let oldest = stamp_nanos.saturating_sub(self.config.window_nanos);
+        while self.onsets.front().is_some_and(|&t| t < oldest) {
+            self.onsets.pop_front();
+        }
+        let n = self.onsets.len();
+        Ok(MuscleUse {
+            static_hold,
+            repeated: n >= self.config.min_repetitions,
+            repetitions_in_window: n,
+        })
+    }
+}
+
+/// Where a worksheet input came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum InputSource {
+    /// Measured from this frame's landmarks.
+    Observed,
+    /// Measured earlier; this frame lacked the landmarks.
+    Held,
+    /// Never observed; scored as "not present" (the score is uncertain).
+    NotObserved,
+    /// From the task config.
+    Configured,
+    /// From the time series of frames (muscle use).
+    TimeSeries,
+}
+
+/// The source of each worksheet input, in [`RulaInput::FIELDS`] order.
+pub type InputSources = [(&'static str, InputSource); 21];
+
+/// One side's result for one frame.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SideAssessment {
+    pub side: Side,
+    /// The worksheet that was scored.
+    pub input: RulaInput,
+    pub scores: RulaScores,
+    pub notes: Vec<ScoringNote>,
+    pub sources: InputSources,
+    pub muscle_use_arm_wrist: MuscleUse,
+    pub muscle_use_neck_trunk_legs: MuscleUse,
+    /// True when tracking confidence was low or inputs were held / not observed. The score is still
+    /// the full score: uncertain never means lower.
+    pub uncertain: bool,
+    pub uncertain_reasons: Vec<String>,
+}
+
+/// Both sides of one frame.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrameAssessment {
+    pub stamp_nanos: i64,
+    pub angles: BodyAngles,
+    /// `None` when the side could not be scored at all (the reason is in `unscored_reasons`).
+    pub left: Option<SideAssessment>,
+    pub right: Option<SideAssessment>,
+    pub unscored_reasons: Vec<String>,
+}
+
+impl FrameAssessment {
+    /// One side.
+    pub fn side(&self, side: Side) -> Option<&SideAssessment> {
+        match side {
+            Side::Left => self.left.as_ref(),
+            Side::Right => self.right.as_ref(),
+        }
+    }
+
+    /// The worse side (higher grand score; ties go to the uncertain one, then the right), the
+    /// headline of the frame.
+    pub fn headline(&self) -> Option<&SideAssessment> {
+        match (&self.left, &self.right) {
+            (Some(l), Some(r)) => {
+                let key = |s: &SideAssessment| (s.scores.final_score, s.uncertain);
+                Some(if key(l) > key(r) { l } else { r })
+            }
+            (Some(l), None) => Some(l),
+            (None, r) => r.as_ref(),
+        }
+    }
+}
+
+/// Frame-by-frame RULA for both sides. Keeps the last observed angles (to hold over short gaps) and
+/// the muscle-use trackers.
+#[derive(Debug, Clone)]
+pub struct RulaAssessor {
+    config: AssessmentConfig,
+    held: BodyAngles,
+    muscle_a: [MuscleUseTracker; 2],
+    muscle_b: MuscleUseTracker,
+    last_stamp: Option<i64>,
+}
+
+const TRUNK_LANDMARKS: [Landmark; 4] = [
+    Landmark::LeftHip,
+    Landmark::RightHip,
+    Landmark::LeftShoulder,
+    Landmark::RightShoulder,
+];
+const HEAD_LANDMARKS: [Landmark; 3] = [Landmark::LeftEar, Landmark::RightEar, Landmark::Nose];
+const FOOT_LANDMARKS: [Landmark; 6] = [
+    Landmark::LeftAnkle,
+    Landmark::RightAnkle,
+    Landmark::LeftHeel,
+    Landmark::RightHeel,
+    Landmark::LeftFootIndex,
+    Landmark::RightFootIndex,
+];
+
+fn merge(held: Option<f64>, now: Option<f64>) -> (Option<f64>, InputSource) {
+    match (now, held) {
+        (Some(v), _) => (Some(v), InputSource::Observed),
+        (None, Some(v)) => (Some(v), InputSource::Held),
+        (None, None) => (None, InputSource::NotObserved),
+    }
+}
+
+impl RulaAssessor {
+    pub fn new(config: AssessmentConfig) -> Result<Self, ErgonomicsError> {
+        for (field, v) in [
+            (
+                "task.force_load_score_arm_wrist",
+                config.task.force_load_score_arm_wrist,
+            ),
+            (
+                "task.force_load_score_neck_trunk_legs",
+                config.task.force_load_score_neck_trunk_legs,
+            ),
+        ] {
+            if v > 3 {
+                return Err(ErgonomicsError::OutOfRange {
+                    field,
+                    value: f64::from(v),
+                    min: 0.0,
+                    max: 3.0,
+                });
+            }
+        }
+        if !(0.0..=1.0).contains(&config.min_confidence) {
+            return Err(ErgonomicsError::OutOfRange {
+                field: "min_confidence",
+                value: config.min_confidence,
+                min: 0.0,
+                max: 1.0,
+            });
+        }
+        Ok(Self {
+            config,
+            held: BodyAngles::default(),
+            muscle_a: [
+                MuscleUseTracker::new(config.muscle),
+                MuscleUseTracker::new(config.muscle),
+            ],
+            muscle_b: MuscleUseTracker::new(config.muscle),
+            last_stamp: None,
+        })
+    }
+
+    pub fn config(&self) -> &AssessmentConfig {
+        &self.config
+    }
+
+    /// Scores one frame. Frames must come in time order.
+    pub fn assess(&mut self, skeleton: &Skeleton3) -> Result<FrameAssessment, ErgonomicsError> {
+        let stamp = skeleton.stamp_nanos;
+        if let Some(previous) = self.last_stamp {
+            if stamp < previous {
+                return Err(ErgonomicsError::TimeWentBackwards {
+                    previous,
+                    got: stamp,
+                });
+            }
+        }
+        self.last_stamp = Some(stamp);
+        let angles = body_angles(skeleton, &self.config.up, self.config.floor_height_m);
+        let th = self.config.thresholds;
+        let task = self.config.task;
+
+        // Group B (shared by both sides).
+        let (trunk, trunk_src) = merge(self.held.trunk_flexion_rad, angles.trunk_flexion_rad);
+        let (trunk_tw, trunk_tw_src) = merge(self.held.trunk_twist_rad, angles.trunk_twist_rad);
+        let (trunk_sb, trunk_sb_src) =
+            merge(self.held.trunk_side_bend_rad, angles.trunk_side_bend_rad);
+        let (neck, neck_src) = merge(self.held.neck_flexion_rad, angles.neck_flexion_rad);
+        let (neck_tw, neck_tw_src) = merge(self.held.neck_twist_rad, angles.neck_twist_rad);
+        let (neck_sb, neck_sb_src) = merge(self.held.neck_side_bend_rad, angles.neck_side_bend_rad);
+        let (legs, legs_src) = match (angles.legs, self.held.legs) {
+            (Some(l), _) => (Some(l), InputSource::Observed),
+            (None, Some(l)) => (Some(l), InputSource::Held),
+            (None, None) => (None, InputSource::NotObserved),
+        };
+
+        let mut unscored_reasons = Vec::new();
+        let group_b = trunk
+            .zip(neck)
+            .map(|(t, n)| (t.to_degrees(), n.to_degrees()));
+        if group_b.is_none() {
+            unscored_reasons.push(format!(
+                "{} never observed (needs hips, shoulders and both ears)",
+                if trunk.is_none() { "trunk" } else { "neck" }
+            ));
+        }
+        let muscle_b = match group_b {
+            Some((t_deg, n_deg)) => {
+                let nb = neck_band(n_deg);
+                let tb = trunk_band(t_deg, task.seated_well_supported);
+                let relaxed = nb <= 2 && tb <= 2;
+                Some(
+                    self.muscle_b
+                        .update(stamp, u32::from(nb) * 10 + u32::from(tb), relaxed)?,
+                )
+            }
+            None => None,
+        };
+
+        let legs_ok = legs.is_some_and(|l: LegsObservation| {
+            l.left_foot_lift_m <= th.foot_on_floor_m
+                && l.right_foot_lift_m <= th.foot_on_floor_m
+                && l.weight_offset <= th.weight_offset_max
+        });
+
+        let mut out = FrameAssessment {
+            stamp_nanos: stamp,
+            angles,
+            left: None,
+            right: None,
+            unscored_reasons: Vec::new(),
+        };
+        for side in Side::BOTH {
+            let now = *angles.side(side);
+            let held = *self.held.side(side);
+            let (ua, ua_src) = merge(held.upper_arm_flexion_rad, now.upper_arm_flexion_rad);
+            let (abd, abd_src) = merge(held.upper_arm_abduction_rad, now.upper_arm_abduction_rad);
+            let (raise, raise_src) = merge(held.shoulder_raise_ratio, now.shoulder_raise_ratio);
+            let (el, el_src) = merge(held.elbow_flexion_rad, now.elbow_flexion_rad);
+            let (lat, lat_src) = merge(held.wrist_lateral_offset_m, now.wrist_lateral_offset_m);
+            let (wf, wf_src) = merge(held.wrist_flexion_rad, now.wrist_flexion_rad);
+            let (wd, wd_src) = merge(held.wrist_deviation_rad, now.wrist_deviation_rad);
+            let (Some((t_deg, n_deg)), Some(ua), Some(el), Some(wf), Some(mb)) =
+                (group_b, ua, el, wf, muscle_b)
+            else {
+                if group_b.is_some() {
+                    unscored_reasons.push(format!(
+                        "{} arm never observed (needs shoulder, elbow, wrist, index and pinky)",
+                        side.name()
+                    ));
+                }
+                continue;
+            };
+            let shoulder_width = angles
+                .shoulder_width_m
+                .or(self.held.shoulder_width_m)
+                .unwrap_or(0.0);
+            let out_limit = shoulder_width * (0.5 + th.out_to_side_shoulder_widths);
+            let across_or_out = lat.is_some_and(|x| x < 0.0 || x > out_limit);
+            let ua_deg = ua.to_degrees();
+            let el_deg = el.to_degrees();
+            let wf_deg = wf.to_degrees();
+            let relaxed_a = upper_arm_band(ua_deg) == 1;
+            let key_a = u32::from(upper_arm_band(ua_deg)) * 100
+                + u32::from(lower_arm_band(el_deg)) * 10
+                + u32::from(crate::rula::wrist_band(wf_deg));
+            let i = match side {
+                Side::Left => 0,
+                Side::Right => 1,
+            };
+            let ma = self.muscle_a[i].update(stamp, key_a, relaxed_a)?;
+            let input = RulaInput {
+                upper_arm_flexion_deg: ua_deg,
+                shoulder_raised: raise.is_some_and(|r| r < th.shoulder_raise_ratio_below),
+                upper_arm_abducted: abd.is_some_and(|a| a > th.abduction_rad),
+                arm_supported_or_leaning: task.arm_supported_or_leaning,
+                lower_arm_flexion_deg: el_deg,
+                lower_arm_across_midline_or_out_to_side: across_or_out,
+                wrist_flexion_deg: wf_deg,
+                wrist_bent_from_midline: wd.is_some_and(|d| d.abs() > th.wrist_deviation_rad),
+                wrist_twist: task.wrist_twist,
+                muscle_use_arm_wrist: ma.applies(),
+                force_load_score_arm_wrist: task.force_load_score_arm_wrist,
+                neck_flexion_deg: n_deg,
+                neck_twisted: neck_tw.is_some_and(|x| x.abs() > th.neck_twist_rad),
+                neck_side_bending: neck_sb.is_some_and(|x| x > th.neck_side_bend_rad),
+                trunk_flexion_deg: t_deg,
+                trunk_seated_well_supported: task.seated_well_supported,
+                trunk_twisted: trunk_tw.is_some_and(|x| x.abs() > th.trunk_twist_rad),
+                trunk_side_bending: trunk_sb.is_some_and(|x| x.abs() > th.trunk_side_bend_rad),
+                legs_supported_and_balanced: legs_ok,
+                muscle_use_neck_trunk_legs: mb.applies(),
+                force_load_score_neck_trunk_legs: task.force_load_score_neck_trunk_legs,
+            };
+            let result = score_worksheet(&input)?;
+            let cfg = InputSource::Configured;
+            let ts = InputSource::TimeSeries;
+            let sources: InputSources = [
+                ("upper_arm_flexion_deg", ua_src),
+                ("shoulder_raised", raise_src),
+                ("upper_arm_abducted", abd_src),
+                ("arm_supported_or_leaning", cfg),
+                ("lower_arm_flexion_deg", el_src),
+                ("lower_arm_across_midline_or_out_to_side", lat_src),
+                ("wrist_flexion_deg", wf_src),
+                ("wrist_bent_from_midline", wd_src),
+                ("wrist_twist", cfg),
+                ("muscle_use_arm_wrist", ts),
+                ("force_load_score_arm_wrist", cfg),
+                ("neck_flexion_deg", neck_src),
+                ("neck_twisted", neck_tw_src),
+                ("neck_side_bending", neck_sb_src),
+                ("trunk_flexion_deg", trunk_src),
+                ("trunk_seated_well_supported", cfg),
+                ("trunk_twisted", trunk_tw_src),
+                ("trunk_side_bending", trunk_sb_src),
+                ("legs_supported_and_balanced", legs_src),
+                ("muscle_use_neck_trunk_legs", ts),
+                ("force_load_score_neck_trunk_legs", cfg),
+            ];
+            let mut reasons: Vec<String> = sources
+                .iter()
+                .filter_map(|(name, src)| match src {
+                    InputSource::Held => {
+                        Some(format!("{name}: landmarks missing, last value held"))
+                    }
+                    InputSource::NotObserved => {
+                        Some(format!("{name}: never observed, scored as not present"))
+                    }
+                    _ => None,
+                })
+                .collect();
+            let arm = arm_landmarks(side);
+            let used = TRUNK_LANDMARKS
+                .iter()
+                .chain(&HEAD_LANDMARKS)
+                .chain(&FOOT_LANDMARKS)
+                .chain(&arm);
+            for lm in used {
+                if let Some(e) = skeleton.get(*lm) {
+                    if e.confidence < self.config.min_confidence {
+                        reasons.push(format!(
+                            "{lm} confidence {:.2} below {:.2}",
+                            e.confidence, self.config.min_confidence
+                        ));
+                    }
+                }
+            }
+            let assessment = SideAssessment {
+                side,
+                input,
+                scores: result.scores,
+                notes: result.notes,
+                sources,
+                muscle_use_arm_wrist: ma,
+                muscle_use_neck_trunk_legs: mb,
+                uncertain: !reasons.is_empty(),
+                uncertain_reasons: reasons,
+            };
+            match side {
+                Side::Left => out.left = Some(assessment),
+                Side::Right => out.right = Some(assessment),
+            }
+        }
+        out.unscored_reasons = unscored_reasons;
+        self.remember(&angles);
+        Ok(out)
+    }
+
+    fn remember(&mut self, now: &BodyAngles) {
+        fn keep(held: &mut Option<f64>, now: Option<f64>) {
+            if now.is_some() {
+                *held = now;
+            }
+        }
+        fn keep_side(held: &mut SideAngles, now: &SideAngles) {
+            keep(&mut held.upper_arm_flexion_rad, now.upper_arm_flexion_rad);
+            keep(
+                &mut held.upper_arm_abduction_rad,
+                now.upper_arm_abduction_rad,
+            );
+            keep(&mut held.shoulder_raise_ratio, now.shoulder_raise_ratio);
+            keep(&mut held.elbow_flexion_rad, now.elbow_flexion_rad);
+            keep(&mut held.wrist_flexion_rad, now.wrist_flexion_rad);
+            keep(&mut held.wrist_deviation_rad, now.wrist_deviation_rad);
+            keep(&mut held.wrist_lateral_offset_m, now.wrist_lateral_offset_m);
+        }
+        let h = &mut self.held;
+        keep(&mut h.trunk_flexion_rad, now.trunk_flexion_rad);
+        keep(&mut h.trunk_side_bend_rad, now.trunk_side_bend_rad);
+        keep(&mut h.trunk_twist_rad, now.trunk_twist_rad);
+        keep(&mut h.neck_flexion_rad, now.neck_flexion_rad);
+        keep(&mut h.neck_side_bend_rad, now.neck_side_bend_rad);
+        keep(&mut h.neck_twist_rad, now.neck_twist_rad);
+        keep(&mut h.shoulder_width_m, now.shoulder_width_m);
+        if now.legs.is_some() {
+            h.legs = now.legs;
+        }
+        keep_side(&mut h.left, &now.left);
+        keep_side(&mut h.right, &now.right);
+    }
+}
+
+/// A body region for summaries and warnings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BodyRegion {
+    UpperArm,
+    LowerArm,
+    Wrist,
+    Neck,
+    Trunk,
+    Legs,
+}
+
+impl BodyRegion {
+    pub const ALL: [BodyRegion; 6] = [
+        BodyRegion::UpperArm,
+        BodyRegion::LowerArm,
+        BodyRegion::Wrist,
+        BodyRegion::Neck,
+        BodyRegion::Trunk,
+        BodyRegion::Legs,
+    ];
+
+    /// Snake-case name.
+    pub const fn name(self) -> &'static str {
+        match self {
+            BodyRegion::UpperArm => "upper_arm",
+            BodyRegion::LowerArm => "lower_arm",
+            BodyRegion::Wrist => "wrist",
+            BodyRegion::Neck => "neck",
+            BodyRegion::Trunk => "trunk",
+            BodyRegion::Legs => "legs",
+        }
+    }
+
+    /// Whether the region is scored per side.
+    pub const fn is_sided(self) -> bool {
+        matches!(
+            self,
+            BodyRegion::UpperArm | BodyRegion::LowerArm | BodyRegion::Wrist
+        )
+    }
+
+    /// The region's score (after adjustments) in a breakdown.
+    pub fn score(self, s: &RulaScores) -> u8 {
+        match self {
+            BodyRegion::UpperArm => s.upper_arm_score,
+            BodyRegion::LowerArm => s.lower_arm_score,
+            BodyRegion::Wrist => s.wrist_score,
+            BodyRegion::Neck => s.neck_score,
+            BodyRegion::Trunk => s.trunk_score,
+            BodyRegion::Legs => s.legs_score,
+        }
+    }
+}
+
+/// Time shares of one region's scores.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RegionShare {
+    pub region: BodyRegion,
+    pub side: Option<Side>,
+    /// `(score, share of scored time)`, by ascending score.
+    pub share_by_score: Vec<(u8, f64)>,
+}
+
+/// Summary of a session: time share per action level (of the headline side) and per region score.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SessionSummary {
+    pub frames: usize,
+    pub scored_frames: usize,
+    pub uncertain_frames: usize,
+    pub duration_secs: f64,
+    /// Share of scored time at action level 1..=4.
+    pub action_level_share: [f64; 4],
+    /// Share of the whole time with no score.
+    pub unscored_share: f64,
+    pub regions: Vec<RegionShare>,
+}
+
+/// Accumulates a [`SessionSummary`]. Each frame stands for the time until the next frame (capped at
+/// `max_frame_nanos`, so a gap in the recording is not attributed to the frame before it); the last
+/// frame stands for the median frame interval.
+#[derive(Debug, Clone)]
+pub struct SummaryBuilder {
+    max_frame_nanos: i64,
+    entries: Vec<SummaryEntry>,
+}
+
+/// One frame in a summary: stamp, headline (action level, uncertain), region scores.
+type SummaryEntry = (i64, Option<(u8, bool)>, Vec<(BodyRegion, Option<Side>, u8)>);
+
+impl SummaryBuilder {
+    pub fn new(max_frame_nanos: i64) -> Self {
+        Self {
+            max_frame_nanos,
+            entries: Vec::new(),
+        }
+    }
+
+    pub fn add(&mut self, frame: &FrameAssessment) {
+        let head = frame
+            .headline()
+            .map(|h| (h.scores.action_level, h.uncertain));
+        let mut regions = Vec::new();
+        for region in BodyRegion::ALL {
+            if region.is_sided() {
+                for side in Side::BOTH {
+                    if let Some(s) = frame.side(side) {
+                        regions.push((region, Some(side), region.score(&s.scores)));
+                    }
+                }
+            } else if let Some(h) = frame.headline() {
+                regions.push((region, None, region.score(&h.scores)));
+            }
+        }
+        self.entries.push((frame.stamp_nanos, head, regions));
+    }
+
+    pub fn finish(&self) -> SessionSummary {
+        let n = self.entries.len();
+        let mut gaps: Vec<i64> = self
+            .entries
+            .windows(2)
+            .map(|w| (w[1].0 - w[0].0).clamp(0, self.max_frame_nanos))
+            .collect();
+        let mut sorted = gaps.clone();
+        sorted.sort_unstable();
+        let last = sorted.get(sorted.len() / 2).copied().unwrap_or(1).max(1);
+        gaps.push(last);
+        let total: f64 = gaps.iter().map(|&g| g as f64).sum();
+        let mut level = [0.0; 4];
+        let mut scored = 0.0;
+        let mut unscored = 0.0;
+        let mut region_time: std::collections::BTreeMap<
+            (BodyRegion, Option<Side>),
+            std::collections::BTreeMap<u8, f64>,
+        > = std::collections::BTreeMap::new();
+        let mut scored_frames = 0;
+        let mut uncertain_frames = 0;
+        for ((_, head, regions), &dt) in self.entries.iter().zip(&gaps) {
+            let dt = dt as f64;
+            match head {
+                Some((al, uncertain)) => {
+                    scored_frames += 1;
+                    uncertain_frames += usize::from(*uncertain);
+                    scored += dt;
+                    level[usize::from(al.clamp(&1, &4) - 1)] += dt;
+                }
+                None => unscored += dt,
+            }
+            for (region, side, score) in regions {
+                *region_time
+                    .entry((*region, *side))
+                    .or_default()
+                    .entry(*score)
+                    .or_default() += dt;
+            }
+        }
+        let share = |x: f64, of: f64| if of > 0.0 { x / of } else { 0.0 };
+        SessionSummary {
+            frames: n,
+            scored_frames,
+            uncertain_frames,
+            duration_secs: total * 1e-9,
+            action_level_share: level.map(|x| share(x, scored)),
+            unscored_share: share(unscored, total),
+            regions: region_time
+                .into_iter()
+                .map(|((region, side), by)| {
+                    let sum: f64 = by.values().sum();
+                    RegionShare {
+                        region,
+                        side,
+                        share_by_score: by.into_iter().map(|(s, t)| (s, share(t, sum))).collect(),
+                    }
+                })
+                .collect(),
+        }
+    }
+}

@@ -1,0 +1,361 @@
+//! Posture warnings an operator can trust: per body region, with hysteresis and a minimum dwell time.
+//!
+//! RULA's band edges are sharp (neck 19.9° scores 2, 20° scores 3) while measured angles jitter by a
+//! few degrees. The scorer does not bend the method; this module keeps the *warnings* from
+//! flickering:
+//!
+//! - Each region (upper arm, lower arm and wrist per side; neck, trunk, legs) has a reported score
+//!   `L`. Every frame gives two candidate scores: `hi`, the region's RULA score as measured, and
+//!   `lo`, the score with the region's angle moved *away* from its reference angle by the hysteresis
+//!   margin (default 5°; reference: 0° for upper arm, wrist, neck and trunk, 80° for the elbow).
+//!   `lo ≥ hi`: a posture has to be the margin inside a lower band before the level may fall, e.g. a
+//!   neck warning raised at 20° clears only below 15°.
+//! - `L` rises only after `hi > L` has held continuously for the dwell time (default 2 s), to the
+//!   smallest `hi` seen meanwhile; it falls only after `lo < L` has held for the dwell time, to the
+//!   largest `lo` seen meanwhile. A value that dithers around an edge moves neither way: each
+//!   excursion restarts the dwell clock.
+//! - A region warns while `L` reaches its threshold ([`WarningConfig::warn_at`]). Events are emitted
+//!   when a warning is raised, changes level or clears, in plain words with the angle, the advice and
+//!   the frame's RULA action level. Wrist warnings say that wrist scores are the least reliable part
+//!   of RULA (raters agree poorly, weighted κ ≈ 0.15–0.17).
+//!
+//! Time comes from the frames' `stamp_nanos`; nothing here reads a clock. The tracker knows nothing
+//! of the robot, so warnings keep running after a trajectory is locked.
+
+use std::collections::BTreeMap;
+
+use serde::{Deserialize, Serialize};
+
+use crate::assess::{BodyRegion, FrameAssessment};
+use crate::rula::{
+    action_level_meaning, legs_score, lower_arm_score, neck_score, trunk_score, upper_arm_score,
+    wrist_score, RulaInput,
+};
+use crate::Side;
+
+/// Warning behaviour.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct WarningConfig {
+    /// How far inside a lower band a posture must be before a warning falls (default 5°).
+    pub hysteresis_rad: f64,
+    /// How long a change must hold before it is reported (default 2 s).
+    pub dwell_nanos: i64,
+    /// Region score at which each region warns, in [`BodyRegion::ALL`] order
+    /// (default: upper arm 3, lower arm 3, wrist 3, neck 3, trunk 3, legs 2).
+    pub warn_at: [u8; 6],
+}
+
+impl Default for WarningConfig {
+    fn default() -> Self {
+        Self {
+            hysteresis_rad: 5f64.to_radians(),
+            dwell_nanos: 2_000_000_000,
+            warn_at: [3, 3, 3, 3, 3, 2],
+        }
+    }
+}
+
+/// What happened to a warning.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WarningKind {
+    Raised,
+    Changed,
+    Cleared,
+}
+
+/// One warning event.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WarningEvent {
+    pub stamp_nanos: i64,
+    pub kind: WarningKind,
+    pub region: BodyRegion,
+    pub side: Option<Side>,
+    /// The reported region score after the event.
+    pub region_score: u8,
+    /// The region's angle at the event, degrees (none for the legs).
+    pub angle_deg: Option<f64>,
+    /// RULA action level of the frame's headline side.
+    pub action_level: u8,
+    /// Whether the frame's score was uncertain (low confidence or held inputs).
+    pub uncertain: bool,
+    pub message: String,
+}
+
+#[derive(Debug, Clone, Copy, Default)]
+struct RegionState {
+    level: u8,
+    up: Option<(i64, u8)>,
+    down: Option<(i64, u8)>,
+}
+
+/// Turns the per-frame assessments into warning events.
+#[derive(Debug, Clone)]
+pub struct WarningTracker {
+    config: WarningConfig,
+    states: BTreeMap<(BodyRegion, Option<Side>), RegionState>,
+}
+
+/// `x` moved `margin` further from `reference`, on the side it is on.
+fn away(x: f64, reference: f64, margin: f64) -> f64 {
+    if x >= reference {
+        x + margin
+    } else {
+        x - margin
+    }
+}
+
+/// The region's score for an input, the score with the angle moved `margin_deg` away from the
+/// reference (for falling), and the angle.
+fn region_scores(region: BodyRegion, i: &RulaInput, margin_deg: f64) -> (u8, u8, Option<f64>) {
+    match region {
+        BodyRegion::UpperArm => {
+            let f = |a| {
+                upper_arm_score(
+                    a,
+                    i.shoulder_raised,
+                    i.upper_arm_abducted,
+                    i.arm_supported_or_leaning,
+                )
+            };
+            let a = i.upper_arm_flexion_deg;
+            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
+        }
+        BodyRegion::LowerArm => {
+            let f = |a| lower_arm_score(a, i.lower_arm_across_midline_or_out_to_side);
+            let a = i.lower_arm_flexion_deg;
+            (f(a), f(away(a, 80.0, margin_deg)), Some(a))
+        }
+        BodyRegion::Wrist => {
+            let f = |a| wrist_score(a, i.wrist_bent_from_midline);
+            let a = i.wrist_flexion_deg;
+            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
+        }
+        BodyRegion::Neck => {
+            let f = |a| neck_score(a, i.neck_twisted, i.neck_side_bending);
+            let a = i.neck_flexion_deg;
+            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
+        }
+        BodyRegion::Trunk => {
+            let f = |a| {
+                trunk_score(
+                    a,
+                    i.trunk_seated_well_supported,
+                    i.trunk_twisted,
+                    i.trunk_side_bending,
+                )
+            };
+            let a = i.trunk_flexion_deg;
+            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
+        }
+        BodyRegion::Legs => {
+            let s = legs_score(i.legs_supported_and_balanced);
+            (s, s, None)
+        }
+    }
+}
+
+/// Plain-words description and advice for a region in a posture.
+pub fn describe(region: BodyRegion, side: Option<Side>, i: &RulaInput) -> String {
+    let who = |part: &str| match side {
+        Some(s) => format!("{} {part}", capitalise(s.name())),
+        None => capitalise(part),
+    };
+    match region {
+        BodyRegion::UpperArm => {
+            let a = i.upper_arm_flexion_deg;
+            if a < 0.0 {
+                format!(
+                    "{} reaching back {:.0}° — bring the work in front of you",
+                    who("upper arm"),
+                    -a
+                )
+            } else if i.shoulder_raised {
+                format!(
+                    "{} raised {a:.0}° with the shoulder lifted — lower the work piece and relax the shoulder",
+                    who("upper arm")
+                )
+            } else {
+                format!(
+                    "{} raised {a:.0}° — lower the work piece or bring it closer",
+                    who("upper arm")
+                )
+            }
+        }
+        BodyRegion::LowerArm => {
+            let a = i.lower_arm_flexion_deg;
+            if i.lower_arm_across_midline_or_out_to_side {
+                format!(
+                    "{} working across the body or out to the side (elbow {a:.0}°) — bring the work in front of you",
+                    who("forearm")
+                )
+            } else {
+                format!(
+                    "{} at {a:.0}° — keep the elbow between 60° and 100°: bring the work closer",
+                    who("elbow")
+                )
+            }
+        }
+        BodyRegion::Wrist => format!(
+            "{} bent {:.0}°{} — straighten the wrist: change the grip or the tool angle (wrist scores are the least reliable part of RULA)",
+            who("wrist"),
+            i.wrist_flexion_deg.abs(),
+            if i.wrist_bent_from_midline {
+                " and to the side"
+            } else {
+                ""
+            }
+        ),
+        BodyRegion::Neck => {
+            let a = i.neck_flexion_deg;
+            let extra = match (i.neck_twisted, i.neck_side_bending) {
+                (true, true) => ", twisted and tilted",
+                (true, false) => ", twisted",
+                (false, true) => ", tilted to the side",
+                (false, false) => "",
+            };
+            if a < 0.0 {
+                format!(
+                    "Neck bent back {:.0}°{extra} — lower the work piece or bring it in front of you",
+                    -a
+                )
+            } else {
+                format!("Neck bent forward {a:.0}°{extra} — raise the work piece")
+            }
+        }
+        BodyRegion::Trunk => {
+            let a = i.trunk_flexion_deg.max(0.0);
+            let extra = match (i.trunk_twisted, i.trunk_side_bending) {
+                (true, true) => ", twisted and leaning sideways",
+                (true, false) => ", twisted — turn your feet towards the work",
+                (false, true) => ", leaning sideways",
+                (false, false) => "",
+            };
+            format!("Trunk bent forward {a:.0}°{extra} — raise the work or bring it closer")
+        }
+        BodyRegion::Legs => {
+            "Weight on one leg or a foot off the floor — stand on both feet".to_owned()
+        }
+    }
+}
+
+fn capitalise(s: &str) -> String {
+    let mut c = s.chars();
+    match c.next() {
+        Some(f) => f.to_uppercase().chain(c).collect(),
+        None => String::new(),
+    }
+}
+
+impl WarningTracker {
+    pub fn new(config: WarningConfig) -> Self {
+        Self {
+            config,
+            states: BTreeMap::new(),
+        }
+    }
+
+    /// The currently reported score of a region (1 before anything was reported).
+    pub fn level(&self, region: BodyRegion, side: Option<Side>) -> u8 {
+        self.states
+            .get(&(region, side))
+            .map_or(1, |s| s.level.max(1))
+    }
+
+    /// Feeds one frame; returns the events it caused.
+    pub fn update(&mut self, frame: &FrameAssessment) -> Vec<WarningEvent> {
+        let mut events = Vec::new();
+        let Some(head) = frame.headline() else {
+            return events;
+        };
+        let action_level = head.scores.action_level;
+        let margin_deg = self.config.hysteresis_rad.to_degrees();
+        for (ri, region) in BodyRegion::ALL.iter().enumerate() {
+            let sides: Vec<(Option<Side>, &crate::assess::SideAssessment)> = if region.is_sided() {
+                Side::BOTH
+                    .iter()
+                    .filter_map(|s| frame.side(*s).map(|a| (Some(*s), a)))
+                    .collect()
+            } else {
+                vec![(None, head)]
+            };
+            for (side, assessment) in sides {
+                let (hi, lo, angle) = region_scores(*region, &assessment.input, margin_deg);
+                let warn_at = self.config.warn_at[ri];
+                let state = self.states.entry((*region, side)).or_default();
+                let before = state.level.max(1);
+                step(state, frame.stamp_nanos, hi, lo, self.config.dwell_nanos);
+                let after = state.level.max(1);
+                let (was, is) = (before >= warn_at, after >= warn_at);
+                let kind = match (was, is) {
+                    (false, true) => Some(WarningKind::Raised),
+                    (true, false) => Some(WarningKind::Cleared),
+                    (true, true) if before != after => Some(WarningKind::Changed),
+                    _ => None,
+                };
+                if let Some(kind) = kind {
+                    let message = match kind {
+                        WarningKind::Cleared => format!(
+                            "{} back within limits",
+                            match side {
+                                Some(s) => format!(
+                                    "{} {}",
+                                    capitalise(s.name()),
+                                    region.name().replace('_', " ")
+                                ),
+                                None => capitalise(&region.name().replace('_', " ")),
+                            }
+                        ),
+                        _ => format!(
+                            "{} (action level {action_level}: {})",
+                            describe(*region, side, &assessment.input),
+                            action_level_meaning(action_level)
+                        ),
+                    };
+                    events.push(WarningEvent {
+                        stamp_nanos: frame.stamp_nanos,
+                        kind,
+                        region: *region,
+                        side,
+                        region_score: after,
+                        angle_deg: angle,
+                        action_level,
+                        uncertain: assessment.uncertain,
+                        message,
+                    });
+                }
+            }
+        }
+        events
+    }
+}
+
+/// One step of the hysteresis/dwell state machine (see the module docs).
+fn step(state: &mut RegionState, stamp: i64, hi: u8, lo: u8, dwell_nanos: i64) {
+    let level = state.level.max(1);
+    if hi > level {
+        let (since, min_seen) = state.up.map_or((stamp, hi), |(s, m)| (s, m.min(hi)));
+        if stamp.saturating_sub(since) >= dwell_nanos {
+            state.level = min_seen;
+            state.up = None;
+            state.down = None;
+            return;
+        }
+        state.up = Some((since, min_seen));
+    } else {
+        state.up = None;
+    }
+    if lo < level {
+        let (since, max_seen) = state.down.map_or((stamp, lo), |(s, m)| (s, m.max(lo)));
+        if stamp.saturating_sub(since) >= dwell_nanos {
+            state.level = max_seen;
+            state.up = None;
+            state.down = None;
+            return;
+        }
+        state.down = Some((since, max_seen));
+    } else {
+        state.down = None;
+    }
+}

@@ -1,0 +1,386 @@
+//! Frame-by-frame assessment (both sides, provenance, uncertainty, muscle use from the time series)
+//! and the warning stream (hysteresis, dwell, plain words).
+
+// Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use ergocell_ergonomics::assess::{
+    BodyRegion, InputSource, MuscleUseConfig, MuscleUseTracker, SummaryBuilder,
+};
+use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
+use ergocell_ergonomics::warnings::WarningKind;
+use ergocell_ergonomics::{
+    AssessmentConfig, ErgonomicsError, FrameAssessment, RulaAssessor, Side, TaskConfig, UpVector,
+    WarningConfig, WarningTracker, WristTwist,
+};
+use ergocell_skeleton::{Landmark, Skeleton3};
+use nalgebra::{Rotation3, Vector3};
+
+const SEC: i64 = 1_000_000_000;
+const FRAME: i64 = SEC / 10;
+
+fn assessor_for(spec: &PoseSpec) -> RulaAssessor {
+    RulaAssessor::new(AssessmentConfig::new(UpVector::new(spec.up()).unwrap())).unwrap()
+}
+
+fn at(spec: &PoseSpec, stamp_nanos: i64) -> Skeleton3 {
+    PoseSpec {
+        stamp_nanos,
+        ..spec.clone()
+    }
+    .skeleton()
+}
+
+fn reaching() -> PoseSpec {
+    PoseSpec {
+        trunk_flexion_rad: 30f64.to_radians(),
+        neck_flexion_rad: 25f64.to_radians(),
+        right_arm: ArmPose {
+            flexion_rad: 100f64.to_radians(),
+            elbow_flexion_rad: 20f64.to_radians(),
+            wrist_flexion_rad: 25f64.to_radians(),
+            ..ArmPose::default()
+        },
+        world_rotation: Rotation3::from_euler_angles(1.2, 0.3, -0.7),
+        world_translation: Vector3::new(0.5, 0.5, 2.0),
+        ..PoseSpec::default()
+    }
+}
+
+#[test]
+fn both_sides_are_scored_and_the_worse_is_the_headline() {
+    let spec = reaching();
+    let f = assessor_for(&spec).assess(&spec.skeleton()).unwrap();
+    let (l, r) = (f.left.as_ref().unwrap(), f.right.as_ref().unwrap());
+    assert_eq!(r.scores.upper_arm_score, 4, "100° flexion");
+    assert_eq!(l.scores.upper_arm_score, 1, "hanging");
+    assert_eq!(r.scores.lower_arm_score, 2, "20° elbow");
+    assert_eq!(r.scores.wrist_score, 3, "25° wrist");
+    assert_eq!(r.scores.neck_score, 3, "25° neck");
+    assert_eq!(r.scores.trunk_score, 3, "30° trunk");
+    assert_eq!(l.scores.neck_score, r.scores.neck_score);
+    assert!(r.scores.score_c_wrist_arm > l.scores.score_c_wrist_arm);
+    assert!(r.scores.final_score >= l.scores.final_score);
+    assert_eq!(f.headline().unwrap().side, Side::Right);
+    assert!(!r.uncertain, "{:?}", r.uncertain_reasons);
+
+    // Upright, the left arm reaching: the left side is worse and is the headline.
+    let left_reach = PoseSpec {
+        left_arm: spec.right_arm,
+        right_arm: PoseSpec::default().right_arm,
+        trunk_flexion_rad: 0.0,
+        neck_flexion_rad: 0.0,
+        ..spec
+    };
+    let f = assessor_for(&left_reach)
+        .assess(&left_reach.skeleton())
+        .unwrap();
+    let (l, r) = (f.left.as_ref().unwrap(), f.right.as_ref().unwrap());
+    assert_eq!((l.scores.final_score, r.scores.final_score), (3, 2));
+    assert_eq!(f.headline().unwrap().side, Side::Left);
+}
+
+#[test]
+fn the_breakdown_says_what_was_observed_and_what_configured() {
+    let spec = PoseSpec::default();
+    let mut config = AssessmentConfig::new(UpVector::new(spec.up()).unwrap());
+    config.task = TaskConfig {
+        force_load_score_arm_wrist: 2,
+        force_load_score_neck_trunk_legs: 1,
+        wrist_twist: WristTwist::EndOfRange,
+        arm_supported_or_leaning: false,
+        seated_well_supported: false,
+    };
+    let f = RulaAssessor::new(config)
+        .unwrap()
+        .assess(&spec.skeleton())
+        .unwrap();
+    let r = f.right.unwrap();
+    assert_eq!(r.input.force_load_score_arm_wrist, 2);
+    assert_eq!(r.input.force_load_score_neck_trunk_legs, 1);
+    assert_eq!(r.scores.wrist_twist_score, 2);
+    let source = |name: &str| r.sources.iter().find(|(n, _)| *n == name).unwrap().1;
+    assert_eq!(source("upper_arm_flexion_deg"), InputSource::Observed);
+    assert_eq!(source("neck_flexion_deg"), InputSource::Observed);
+    assert_eq!(source("legs_supported_and_balanced"), InputSource::Observed);
+    assert_eq!(source("wrist_twist"), InputSource::Configured);
+    assert_eq!(
+        source("force_load_score_arm_wrist"),
+        InputSource::Configured
+    );
+    assert_eq!(source("muscle_use_arm_wrist"), InputSource::TimeSeries);
+    assert!(r.input.legs_supported_and_balanced);
+    let names: Vec<&str> = r.sources.iter().map(|(n, _)| *n).collect();
+    assert_eq!(names, ergocell_ergonomics::RulaInput::FIELDS);
+}
+
+#[test]
+fn out_of_range_task_config_is_rejected() {
+    let mut config = AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap());
+    config.task.force_load_score_arm_wrist = 4;
+    assert!(matches!(
+        RulaAssessor::new(config),
+        Err(ErgonomicsError::OutOfRange {
+            field: "task.force_load_score_arm_wrist",
+            ..
+        })
+    ));
+}
+
+fn with_confidence(s: &Skeleton3, lm: Landmark, confidence: f64) -> Skeleton3 {
+    let mut s = s.clone();
+    let mut e = *s.get(lm).unwrap();
+    e.confidence = confidence;
+    s.set(lm, Some(e)).unwrap();
+    s
+}
+
+#[test]
+fn low_confidence_makes_the_score_uncertain_never_lower() {
+    let spec = reaching();
+    let sure = assessor_for(&spec).assess(&spec.skeleton()).unwrap();
+    let shaky = with_confidence(&spec.skeleton(), Landmark::RightWrist, 0.2);
+    let unsure = assessor_for(&spec).assess(&shaky).unwrap();
+    let (a, b) = (sure.right.unwrap(), unsure.right.unwrap());
+    assert!(!a.uncertain);
+    assert!(b.uncertain);
+    assert!(
+        b.uncertain_reasons
+            .iter()
+            .any(|r| r.contains("right_wrist")),
+        "{:?}",
+        b.uncertain_reasons
+    );
+    assert_eq!(a.scores, b.scores, "the score is unchanged");
+    assert!(
+        !unsure.left.unwrap().uncertain,
+        "the left side did not use the right wrist"
+    );
+}
+
+#[test]
+fn missing_landmarks_are_held_or_leave_the_side_unscored() {
+    let spec = reaching();
+    let mut assessor = assessor_for(&spec);
+    let mut first = at(&spec, 0);
+    first.set(Landmark::RightElbow, None).unwrap();
+    let f = assessor.assess(&first).unwrap();
+    assert!(
+        f.right.is_none(),
+        "never observed: no score, not a safe score"
+    );
+    assert!(f.left.is_some());
+    assert!(f.unscored_reasons.iter().any(|r| r.contains("right arm")));
+
+    assessor.assess(&at(&spec, FRAME)).unwrap();
+    let mut gap = at(&spec, 2 * FRAME);
+    gap.set(Landmark::RightElbow, None).unwrap();
+    let f = assessor.assess(&gap).unwrap();
+    let r = f.right.unwrap();
+    assert!(r.uncertain);
+    assert_eq!(r.scores.upper_arm_score, 4, "held from the previous frame");
+    let source = r
+        .sources
+        .iter()
+        .find(|(n, _)| *n == "upper_arm_flexion_deg")
+        .unwrap()
+        .1;
+    assert_eq!(source, InputSource::Held);
+}
+
+#[test]
+fn time_going_backwards_is_an_error() {
+    let spec = PoseSpec::default();
+    let mut assessor = assessor_for(&spec);
+    assessor.assess(&at(&spec, 5 * SEC)).unwrap();
+    assert_eq!(
+        assessor.assess(&at(&spec, 4 * SEC)).unwrap_err(),
+        ErgonomicsError::TimeWentBackwards {
+            previous: 5 * SEC,
+            got: 4 * SEC
+        }
+    );
+}
+
+#[test]
+fn muscle_use_from_a_posture_held_over_a_minute() {
+    let spec = PoseSpec {
+        right_arm: ArmPose {
+            flexion_rad: 60f64.to_radians(),
+            elbow_flexion_rad: 80f64.to_radians(),
+            ..ArmPose::default()
+        },
+        ..PoseSpec::default()
+    };
+    let mut assessor = assessor_for(&spec);
+    let mut last = None;
+    for k in 0..=610 {
+        let f = assessor.assess(&at(&spec, k * FRAME)).unwrap();
+        let r = f.right.unwrap();
+        if k * FRAME <= 60 * SEC {
+            assert!(!r.input.muscle_use_arm_wrist, "not yet static at frame {k}");
+        }
+        assert!(
+            !f.left.unwrap().input.muscle_use_arm_wrist,
+            "relaxed arm is not static load"
+        );
+        last = Some(r);
+    }
+    let r = last.unwrap();
+    assert!(r.muscle_use_arm_wrist.static_hold);
+    assert!(r.input.muscle_use_arm_wrist);
+}
+
+fn repetitions(per_minute: i64) -> bool {
+    let mut t = MuscleUseTracker::new(MuscleUseConfig::default());
+    let period = 60 * SEC / per_minute;
+    let mut repeated = false;
+    let mut stamp = 0;
+    while stamp < 120 * SEC {
+        // One second reaching out (non-relaxed), the rest relaxed.
+        let reaching = stamp % period < SEC;
+        let key = if reaching { 300 } else { 100 };
+        repeated = t.update(stamp, key, !reaching).unwrap().repeated;
+        stamp += FRAME;
+    }
+    repeated
+}
+
+#[test]
+fn muscle_use_from_repetitions_four_a_minute() {
+    assert!(repetitions(4));
+    assert!(repetitions(10));
+    assert!(!repetitions(3));
+}
+
+#[test]
+fn band_edge_noise_is_not_counted_as_repetitions() {
+    let mut t = MuscleUseTracker::new(MuscleUseConfig::default());
+    let mut last = None;
+    for k in 0..600 {
+        // Alternates every frame: never 0.3 s outside the relaxed posture.
+        last = Some(
+            t.update(k * FRAME, if k % 2 == 0 { 100 } else { 200 }, k % 2 == 0)
+                .unwrap(),
+        );
+    }
+    assert_eq!(last.unwrap().repetitions_in_window, 0);
+}
+
+fn neck_pose(deg: f64, stamp_nanos: i64) -> Skeleton3 {
+    PoseSpec {
+        neck_flexion_rad: deg.to_radians(),
+        stamp_nanos,
+        ..PoseSpec::default()
+    }
+    .skeleton()
+}
+
+fn run_warnings(angles_deg: &[(i64, f64)]) -> Vec<ergocell_ergonomics::WarningEvent> {
+    let mut assessor = assessor_for(&PoseSpec::default());
+    let mut warnings = WarningTracker::new(WarningConfig::default());
+    let mut events = Vec::new();
+    for &(stamp, deg) in angles_deg {
+        let f: FrameAssessment = assessor.assess(&neck_pose(deg, stamp)).unwrap();
+        events.extend(warnings.update(&f));
+    }
+    events
+}
+
+#[test]
+fn a_sustained_bent_neck_warns_in_plain_words_after_the_dwell_time() {
+    let frames: Vec<(i64, f64)> = (0..50).map(|k| (k * FRAME, 35.0)).collect();
+    let events = run_warnings(&frames);
+    let neck: Vec<_> = events
+        .iter()
+        .filter(|e| e.region == BodyRegion::Neck)
+        .collect();
+    assert_eq!(neck.len(), 1, "{events:?}");
+    let e = neck[0];
+    assert_eq!(e.kind, WarningKind::Raised);
+    assert_eq!(e.stamp_nanos, 2 * SEC, "after exactly the 2 s dwell");
+    assert_eq!(e.region_score, 3);
+    assert!(
+        e.message
+            .starts_with("Neck bent forward 35° — raise the work piece"),
+        "{}",
+        e.message
+    );
+    assert!(e.message.contains("action level"), "{}", e.message);
+}
+
+#[test]
+fn no_flicker_at_a_band_edge() {
+    // Raised, then the neck dithers around the 20° edge: the warning stays up.
+    let mut frames: Vec<(i64, f64)> = (0..30).map(|k| (k * FRAME, 30.0)).collect();
+    frames.extend((30..200).map(|k| (k * FRAME, if k % 2 == 0 { 19.0 } else { 21.0 })));
+    let events = run_warnings(&frames);
+    let neck: Vec<_> = events
+        .iter()
+        .filter(|e| e.region == BodyRegion::Neck)
+        .collect();
+    assert_eq!(neck.len(), 1, "only the first raise: {neck:?}");
+
+    // Dithering from the start never raises a warning.
+    let frames: Vec<(i64, f64)> = (0..200)
+        .map(|k| (k * FRAME, if k % 3 == 0 { 19.5 } else { 20.5 }))
+        .collect();
+    let events = run_warnings(&frames);
+    assert!(
+        events.iter().all(|e| e.region != BodyRegion::Neck),
+        "{events:?}"
+    );
+}
+
+#[test]
+fn a_warning_clears_only_inside_the_margin_and_after_the_dwell() {
+    let mut frames: Vec<(i64, f64)> = (0..30).map(|k| (k * FRAME, 30.0)).collect();
+    // 17°: below the 20° edge but within the 5° margin → stays.
+    frames.extend((30..80).map(|k| (k * FRAME, 17.0)));
+    // 12°: 8° inside → clears after 2 s.
+    frames.extend((80..130).map(|k| (k * FRAME, 12.0)));
+    let events = run_warnings(&frames);
+    let neck: Vec<_> = events
+        .iter()
+        .filter(|e| e.region == BodyRegion::Neck)
+        .collect();
+    assert_eq!(neck.len(), 2, "{neck:?}");
+    assert_eq!(neck[1].kind, WarningKind::Cleared);
+    assert_eq!(neck[1].stamp_nanos, 100 * FRAME);
+}
+
+#[test]
+fn session_summary_shares_add_up() {
+    let spec = reaching();
+    let mut assessor = assessor_for(&spec);
+    let mut summary = SummaryBuilder::new(SEC);
+    for k in 0..20 {
+        let relaxed = PoseSpec {
+            world_rotation: spec.world_rotation,
+            world_translation: spec.world_translation,
+            ..PoseSpec::default()
+        };
+        let s = at(if k < 10 { &relaxed } else { &spec }, k * FRAME);
+        summary.add(&assessor.assess(&s).unwrap());
+    }
+    let s = summary.finish();
+    assert_eq!(s.frames, 20);
+    assert!((s.action_level_share.iter().sum::<f64>() - 1.0).abs() < 1e-9);
+    assert!((s.duration_secs - 2.0).abs() < 1e-9);
+    for r in &s.regions {
+        let total: f64 = r.share_by_score.iter().map(|(_, x)| x).sum();
+        assert!((total - 1.0).abs() < 1e-9, "{r:?}");
+    }
+    // Half the time standing relaxed (grand score 2, level 1), half reaching (grand score 4, level 2).
+    assert!(
+        (s.action_level_share[0] - 0.5).abs() < 1e-9,
+        "{:?}",
+        s.action_level_share
+    );
+    assert!(
+        (s.action_level_share[1] - 0.5).abs() < 1e-9,
+        "{:?}",
+        s.action_level_share
+    );
+    assert_eq!(s.unscored_share, 0.0);
+}

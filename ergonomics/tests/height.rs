@@ -1,0 +1,188 @@
+//! Stature estimation and the height class decision on synthetic operators.
+
+// Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use ergocell_ergonomics::height::{ClassThresholds, DecisionBasis};
+use ergocell_ergonomics::pose::PoseSpec;
+use ergocell_ergonomics::{
+    ErgonomicsError, HeightClass, HeightConfig, HeightEstimator, HeightStatus, UpVector,
+};
+use ergocell_skeleton::{Landmark, Skeleton3};
+use nalgebra::{Point3, Rotation3, Vector3};
+
+fn spec(stature_m: f64) -> PoseSpec {
+    PoseSpec {
+        stature_m,
+        world_rotation: Rotation3::from_euler_angles(-1.4, 0.2, 0.9),
+        world_translation: Vector3::new(1.0, -2.0, 0.7),
+        ..PoseSpec::default()
+    }
+}
+
+fn estimator(spec: &PoseSpec) -> HeightEstimator {
+    HeightEstimator::new(HeightConfig::new(UpVector::new(spec.up()).unwrap()))
+}
+
+fn frame(spec: &PoseSpec, k: i64) -> Skeleton3 {
+    PoseSpec {
+        stamp_nanos: k * 33_000_000,
+        ..spec.clone()
+    }
+    .skeleton()
+}
+
+#[test]
+fn class_edges_c2_is_inclusive_at_both_ends() {
+    let t = ClassThresholds::default();
+    assert_eq!(HeightClass::of(1.679_999, &t), HeightClass::C1);
+    assert_eq!(HeightClass::of(1.68, &t), HeightClass::C2);
+    assert_eq!(HeightClass::of(1.82, &t), HeightClass::C2);
+    assert_eq!(HeightClass::of(1.820_001, &t), HeightClass::C3);
+    assert!(matches!(
+        ClassThresholds::new(1.9, 1.8),
+        Err(ErgonomicsError::BadClassThresholds { .. })
+    ));
+    assert!(ClassThresholds::new(f64::NAN, 1.8).is_err());
+}
+
+#[test]
+fn both_estimators_recover_the_stature_and_decide_the_class() {
+    for (stature, class) in [
+        (1.55, HeightClass::C1),
+        (1.75, HeightClass::C2),
+        (1.95, HeightClass::C3),
+    ] {
+        let s = spec(stature);
+        let mut est = estimator(&s);
+        let mut decision = None;
+        for k in 0..40 {
+            if let Some(d) = est.push(&frame(&s, k)) {
+                assert!(decision.is_none(), "the decision is emitted once");
+                decision = Some((k, d));
+            }
+        }
+        let (k, d) = decision.expect("decided");
+        assert_eq!(k, 14, "after the 15 frames the config asks for");
+        assert_eq!(d.class, class);
+        assert_eq!(d.estimate.frames_used, 15);
+        assert!((d.estimate.height_m - stature).abs() < 0.005, "{d:?}");
+        assert!(d.estimate.uncertainty_m > 0.0 && d.estimate.uncertainty_m < 0.05);
+        assert_eq!(d.estimate.estimators.len(), 2);
+        for e in &d.estimate.estimators {
+            assert!((e.height_m - stature).abs() < 0.005, "{e:?}");
+        }
+        assert!(matches!(d.basis, DecisionBasis::Interval { .. }));
+        assert!(matches!(est.status(), HeightStatus::Decided(_)));
+    }
+}
+
+#[test]
+fn near_a_boundary_it_keeps_measuring_then_decides_by_agreement() {
+    let s = spec(1.69);
+    let mut est = estimator(&s);
+    for k in 0..89 {
+        assert!(est.push(&frame(&s, k)).is_none(), "frame {k}");
+    }
+    match est.status() {
+        HeightStatus::Measuring {
+            why,
+            upright_frames,
+            estimate,
+            ..
+        } => {
+            assert_eq!(upright_frames, 89);
+            assert!(why.contains("straddles"), "{why}");
+            assert!((estimate.unwrap().height_m - 1.69).abs() < 0.005);
+        }
+        HeightStatus::Decided(d) => panic!("decided too early: {d:?}"),
+    }
+    let d = est.push(&frame(&s, 89)).expect("decided by agreement");
+    assert_eq!(d.class, HeightClass::C2);
+    assert!(matches!(d.basis, DecisionBasis::FrameAgreement { fraction } if fraction == 1.0));
+}
+
+#[test]
+fn frames_that_are_not_upright_are_not_used() {
+    for bent in [
+        PoseSpec {
+            trunk_flexion_rad: 45f64.to_radians(),
+            ..spec(1.75)
+        },
+        PoseSpec {
+            knee_flexion_rad: 40f64.to_radians(),
+            ..spec(1.75)
+        },
+    ] {
+        let mut est = estimator(&bent);
+        assert_eq!(est.is_upright(&bent.skeleton()), Some(false));
+        for k in 0..30 {
+            assert!(est.push(&frame(&bent, k)).is_none());
+        }
+        match est.status() {
+            HeightStatus::Measuring {
+                upright_frames,
+                frames_seen,
+                why,
+                ..
+            } => {
+                assert_eq!((upright_frames, frames_seen), (0, 30));
+                assert!(why.contains("upright"), "{why}");
+            }
+            HeightStatus::Decided(d) => panic!("{d:?}"),
+        }
+    }
+}
+
+#[test]
+fn outlier_frames_do_not_move_the_median() {
+    let s = spec(1.80);
+    let mut est = estimator(&s);
+    let up = s.up();
+    for k in 0..50 {
+        let mut sk = frame(&s, k);
+        if k % 5 == 0 {
+            // A bad triangulation: both eyes 30 cm too high.
+            for lm in [Landmark::LeftEye, Landmark::RightEye] {
+                let mut e = *sk.get(lm).unwrap();
+                e.position_m = Point3::from(e.position_m.coords + up * 0.3);
+                sk.set(lm, Some(e)).unwrap();
+            }
+        }
+        est.push(&sk);
+    }
+    let e = est.estimate().unwrap();
+    assert!((e.height_m - 1.80).abs() < 0.01, "{e:?}");
+}
+
+#[test]
+fn a_configured_floor_is_used_when_known() {
+    let s = PoseSpec {
+        world_rotation: Rotation3::identity(),
+        world_translation: Vector3::new(0.0, 0.0, 0.25),
+        ..spec(1.70)
+    };
+    let mut config = HeightConfig::new(UpVector::new(Vector3::z()).unwrap());
+    config.floor_height_m = Some(0.25);
+    let mut est = HeightEstimator::new(config);
+    // Feet hidden: only the configured floor gives the eye estimator its reference.
+    for k in 0..20 {
+        let mut sk = frame(&s, k);
+        for lm in [
+            Landmark::LeftHeel,
+            Landmark::RightHeel,
+            Landmark::LeftFootIndex,
+            Landmark::RightFootIndex,
+        ] {
+            sk.set(lm, None).unwrap();
+        }
+        est.push(&sk);
+    }
+    let e = est.estimate().unwrap();
+    let eye = e
+        .estimators
+        .iter()
+        .find(|x| x.name == "floor_to_eye")
+        .unwrap();
+    assert!((eye.height_m - 1.70).abs() < 0.005, "{eye:?}");
+}
