@@ -22,6 +22,10 @@ struct Cli {
 enum Command {
     /// Triangulate and fuse 2D detections from calibrated cameras into 3D landmarks.
     Triangulate(commands::triangulate::Args),
+    /// RULA: score worksheets (`score`) or every frame of a 3D landmark recording (`track`).
+    Rula(commands::rula::Args),
+    /// Estimate the operator's stature and height class from a 3D landmark recording.
+    Height(commands::height::Args),
 }
 
 fn main() -> std::process::ExitCode {
@@ -34,6 +38,8 @@ fn main() -> std::process::ExitCode {
         .init();
     let result = match cli.command {
         Command::Triangulate(args) => commands::triangulate::run(&args),
+        Command::Rula(args) => commands::rula::run(&args),
+        Command::Height(args) => commands::height::run(&args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

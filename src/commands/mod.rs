@@ -1,5 +1,7 @@
 //! One module per subcommand. Each exposes `Args` (clap) and `run(&Args) -> anyhow::Result<()>`.
 
+pub mod height;
+pub mod rula;
 pub mod triangulate;
 
 /// Bad input from the user (a malformed file, a wrong flag value): exit code 2, as `clap` does.

@@ -1,0 +1,132 @@
+//! `ergocell height`: the operator's stature and height class from a 3D landmark recording.
+//!
+//! ```text
+//! ergocell height --landmarks frames.json [--up 0,0,1] [--floor-height-m 0] [--c1-below-m 1.68]
+//!                 [--c2-up-to-m 1.82] [--json]
+//! ```
+//!
+//! Prints the estimate with its uncertainty (1σ), each estimator, and the class with the frame it was
+//! decided at, or "undecided" and why.
+
+use std::path::PathBuf;
+
+use ergocell_ergonomics::height::{ClassThresholds, DecisionBasis, HeightEstimate};
+use ergocell_ergonomics::{HeightConfig, HeightEstimator, HeightStatus, UpVector};
+
+use super::rula::{parse_up, read_skeletons};
+use super::UsageError;
+
+/// Arguments of `ergocell height`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// 3D landmark file from `ergocell triangulate` (.json, .csv or .trc).
+    #[arg(long)]
+    pub landmarks: PathBuf,
+    /// The world's up vector in the file's frame, `x,y,z` (default: the cell frame's z-up).
+    #[arg(long, value_parser = parse_up, default_value = "0,0,1", allow_hyphen_values = true)]
+    pub up: UpVector,
+    /// Floor height along up, metres (default: the lowest foot landmark of each frame).
+    #[arg(long, allow_hyphen_values = true)]
+    pub floor_height_m: Option<f64>,
+    /// Class c1 is below this stature, metres.
+    #[arg(long, default_value_t = 1.68)]
+    pub c1_below_m: f64,
+    /// Class c2 reaches up to and including this stature, metres; c3 is above.
+    #[arg(long, default_value_t = 1.82)]
+    pub c2_up_to_m: f64,
+    /// Print the status as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn print_estimate(e: &HeightEstimate) {
+    println!(
+        "stature: {:.3} m ± {:.3} m (1σ), from {} upright frames",
+        e.height_m, e.uncertainty_m, e.frames_used
+    );
+    for x in &e.estimators {
+        println!(
+            "  {:<14} {:.3} m ± {:.3} m ({} frames)",
+            x.name, x.height_m, x.sigma_m, x.frames
+        );
+    }
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let frames = read_skeletons(&args.landmarks)?;
+    let mut config = HeightConfig::new(args.up);
+    config.floor_height_m = args.floor_height_m;
+    config.thresholds = ClassThresholds::new(args.c1_below_m, args.c2_up_to_m)
+        .map_err(|e| UsageError(e.to_string()))?;
+    let mut estimator = HeightEstimator::new(config);
+    let mut decided_at = None;
+    for (i, f) in frames.iter().enumerate() {
+        if estimator.push(f).is_some() {
+            decided_at = Some(i);
+        }
+    }
+    let status = estimator.status();
+    let segments = estimator.segment_estimate();
+    if args.json {
+        let doc = serde_json::json!({
+            "status": status,
+            "segment_lengths_any_posture": segments,
+            "decided_at_frame": decided_at,
+            "final_estimate": estimator.estimate(),
+            "frames": frames.len(),
+        });
+        println!("{}", serde_json::to_string_pretty(&doc)?);
+        return Ok(());
+    }
+    println!(
+        "{} frames read from {}",
+        frames.len(),
+        args.landmarks.display()
+    );
+    match &status {
+        HeightStatus::Decided(d) => {
+            print_estimate(&d.estimate);
+            let basis = match d.basis {
+                DecisionBasis::Interval { sigmas } => {
+                    format!("the ±{sigmas}σ interval lies inside the class")
+                }
+                DecisionBasis::FrameAgreement { fraction } => {
+                    format!("{:.0}% of upright frames agree", fraction * 100.0)
+                }
+            };
+            println!(
+                "class: {} (decided at frame {}: {basis})",
+                d.class.name(),
+                decided_at.map_or_else(|| "?".to_owned(), |i| i.to_string())
+            );
+            if let Some(now) = estimator.estimate() {
+                if now.frames_used > d.estimate.frames_used {
+                    println!(
+                        "over the whole recording: {:.3} m ± {:.3} m from {} upright frames",
+                        now.height_m, now.uncertainty_m, now.frames_used
+                    );
+                }
+            }
+        }
+        HeightStatus::Measuring {
+            estimate,
+            why,
+            frames_seen,
+            upright_frames,
+        } => {
+            if let Some(e) = estimate {
+                print_estimate(e);
+            }
+            println!(
+                "class: undecided — still measuring ({upright_frames} upright of {frames_seen} frames): {why}"
+            );
+        }
+    }
+    if let Some(seg) = segments {
+        println!(
+            "segment lengths (any posture, never decides the class): {:.3} m ± {:.3} m (1σ) over {} frames",
+            seg.height_m, seg.sigma_m, seg.frames
+        );
+    }
+    Ok(())
+}

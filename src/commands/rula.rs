@@ -1,0 +1,261 @@
+//! `ergocell rula`: RULA worksheets and RULA over a 3D landmark recording.
+//!
+//! ```text
+//! ergocell rula score --input cases.json       JSON array of single-side worksheets → JSON array of breakdowns
+//! ergocell rula track --landmarks frames.json  per-frame scores for both sides, warnings and a summary
+//!                     [--up 0,0,1] [--floor-height-m 0] [--task task.json] [--json]
+//! ```
+//!
+//! The landmark file is what `ergocell triangulate` writes (`.json` array of skeletons; `.csv` and
+//! `.trc` are read too). `--up` is the world's up in the file's frame: the cell frame of
+//! `config/cell.toml` is z-up with the floor at z = 0, hence the default; other calibrations (e.g. a
+//! caliscope board frame) need it given.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Context as _;
+use ergocell_ergonomics::assess::{BodyRegion, SideAssessment, SummaryBuilder};
+use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_worksheet};
+use ergocell_ergonomics::{
+    AssessmentConfig, RulaAssessor, RulaScores, Side, TaskConfig, UpVector, WarningConfig,
+    WarningTracker,
+};
+use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
+use ergocell_skeleton::Skeleton3;
+use nalgebra::Vector3;
+
+use super::UsageError;
+
+/// Arguments of `ergocell rula`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    #[command(subcommand)]
+    pub command: Sub,
+}
+
+#[derive(Debug, clap::Subcommand)]
+pub enum Sub {
+    /// Score single-side worksheets: reads a JSON array, prints a JSON array of breakdowns in order.
+    Score {
+        /// JSON array of worksheets (fields as in the RULA worksheet, angles in degrees).
+        #[arg(long)]
+        input: PathBuf,
+    },
+    /// Score every frame of a 3D landmark recording, both sides, with warnings and a summary.
+    Track(TrackArgs),
+}
+
+/// Arguments of `ergocell rula track`.
+#[derive(Debug, clap::Args)]
+pub struct TrackArgs {
+    /// 3D landmark file from `ergocell triangulate` (.json, .csv or .trc).
+    #[arg(long)]
+    pub landmarks: PathBuf,
+    /// The world's up vector in the file's frame, `x,y,z` (default: the cell frame's z-up).
+    #[arg(long, value_parser = parse_up, default_value = "0,0,1", allow_hyphen_values = true)]
+    pub up: UpVector,
+    /// Floor height along up, metres (default: the lowest foot landmark of each frame).
+    #[arg(long, allow_hyphen_values = true)]
+    pub floor_height_m: Option<f64>,
+    /// Task config as JSON: force/load scores, wrist twist, arm support, seated (what cameras cannot see).
+    #[arg(long)]
+    pub task: Option<PathBuf>,
+    /// Landmark confidence below which a score is marked uncertain.
+    #[arg(long, default_value_t = 0.5)]
+    pub min_confidence: f64,
+    /// Print frames, warnings and summary as one JSON document instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Parses `x,y,z` into a normalised up vector.
+pub fn parse_up(s: &str) -> Result<UpVector, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let [x, y, z] = parts.as_slice() else {
+        return Err(format!("expected x,y,z, got {s:?}"));
+    };
+    let num = |t: &str| {
+        t.parse::<f64>()
+            .map_err(|e| format!("{t:?} is not a number: {e}"))
+    };
+    UpVector::new(Vector3::new(num(x)?, num(y)?, num(z)?)).map_err(|e| e.to_string())
+}
+
+/// Reads a 3D landmark recording; a malformed file is a usage error.
+pub fn read_skeletons(path: &Path) -> anyhow::Result<Vec<Skeleton3>> {
+    let format = LandmarksFormat::from_path(path).map_err(|e| UsageError(e.to_string()))?;
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let frames = read_landmarks(&text, format, &path.display().to_string())
+        .map_err(|e| UsageError(e.to_string()))?;
+    if frames.is_empty() {
+        return Err(UsageError(format!("{}: no frames", path.display())).into());
+    }
+    Ok(frames)
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    match &args.command {
+        Sub::Score { input } => score(input),
+        Sub::Track(track_args) => track(track_args),
+    }
+}
+
+fn score(input: &Path) -> anyhow::Result<()> {
+    let text =
+        std::fs::read_to_string(input).with_context(|| format!("reading {}", input.display()))?;
+    let worksheets =
+        parse_worksheets(&text).map_err(|e| UsageError(format!("{}: {e}", input.display())))?;
+    let mut out: Vec<RulaScores> = Vec::with_capacity(worksheets.len());
+    for (index, w) in worksheets.iter().enumerate() {
+        let result = score_worksheet(w)
+            .map_err(|e| UsageError(format!("{}: entry {index}: {e}", input.display())))?;
+        for note in &result.notes {
+            eprintln!("entry {index}: {}", serde_json::to_string(note)?);
+        }
+        out.push(result.scores);
+    }
+    println!("{}", serde_json::to_string_pretty(&out)?);
+    Ok(())
+}
+
+fn side_text(s: Option<&SideAssessment>) -> String {
+    match s {
+        None => "not scored".to_owned(),
+        Some(a) => {
+            let c = &a.scores;
+            format!(
+                "{} AL{} (UA{} LA{} WR{} TW{} A{} C{} | N{} T{} L{} B{} D{}){}",
+                c.final_score,
+                c.action_level,
+                c.upper_arm_score,
+                c.lower_arm_score,
+                c.wrist_score,
+                c.wrist_twist_score,
+                c.posture_score_a,
+                c.score_c_wrist_arm,
+                c.neck_score,
+                c.trunk_score,
+                c.legs_score,
+                c.posture_score_b,
+                c.score_d_neck_trunk_legs,
+                if a.uncertain { " uncertain" } else { "" }
+            )
+        }
+    }
+}
+
+fn track(args: &TrackArgs) -> anyhow::Result<()> {
+    let frames = read_skeletons(&args.landmarks)?;
+    let task: TaskConfig = match &args.task {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("reading {}", path.display()))?;
+            serde_json::from_str(&text)
+                .map_err(|e| UsageError(format!("{}: {e}", path.display())))?
+        }
+        None => TaskConfig::default(),
+    };
+    let mut config = AssessmentConfig::new(args.up);
+    config.floor_height_m = args.floor_height_m;
+    config.min_confidence = args.min_confidence;
+    config.task = task;
+    let mut assessor = RulaAssessor::new(config).map_err(|e| UsageError(e.to_string()))?;
+    let mut warnings = WarningTracker::new(WarningConfig::default());
+    let mut summary = SummaryBuilder::new(1_000_000_000);
+    let t0 = frames[0].stamp_nanos;
+    let mut frame_docs = Vec::new();
+    let mut events = Vec::new();
+    if !args.json {
+        println!("# time_s  left: final AL (regions) | right: ... ; UA upper arm, LA lower arm, WR wrist, TW twist, N neck, T trunk, L legs");
+    }
+    for (i, skeleton) in frames.iter().enumerate() {
+        let frame = assessor
+            .assess(skeleton)
+            .map_err(|e| UsageError(format!("{}: frame {i}: {e}", args.landmarks.display())))?;
+        summary.add(&frame);
+        let new_events = warnings.update(&frame);
+        let t = (frame.stamp_nanos - t0) as f64 * 1e-9;
+        if args.json {
+            frame_docs.push(serde_json::json!({
+                "stamp_nanos": frame.stamp_nanos,
+                "left": frame.left.as_ref().map(|s| serde_json::json!({"scores": s.scores, "uncertain": s.uncertain, "notes": s.notes})),
+                "right": frame.right.as_ref().map(|s| serde_json::json!({"scores": s.scores, "uncertain": s.uncertain, "notes": s.notes})),
+                "headline": frame.headline().map(|h| h.side),
+            }));
+        } else {
+            let head = frame.headline().map_or("-", |h| h.side.name());
+            println!(
+                "{t:8.3}  left: {}  right: {}  worse: {head}",
+                side_text(frame.left.as_ref()),
+                side_text(frame.right.as_ref())
+            );
+            for e in &new_events {
+                println!(
+                    "{t:8.3}  WARNING {:?}: {}{}",
+                    e.kind,
+                    e.message,
+                    if e.uncertain {
+                        " [uncertain tracking]"
+                    } else {
+                        ""
+                    }
+                );
+            }
+        }
+        events.extend(new_events);
+    }
+    let s = summary.finish();
+    if args.json {
+        let doc = serde_json::json!({ "frames": frame_docs, "warnings": events, "summary": s });
+        println!("{}", serde_json::to_string_pretty(&doc)?);
+        return Ok(());
+    }
+    println!();
+    println!(
+        "summary: {} frames over {:.2} s, {} scored, {} uncertain, unscored {:.1}% of the time",
+        s.frames,
+        s.duration_secs,
+        s.scored_frames,
+        s.uncertain_frames,
+        s.unscored_share * 100.0
+    );
+    println!("time share per action level (worse side):");
+    for (k, share) in s.action_level_share.iter().enumerate() {
+        let level = k as u8 + 1;
+        println!(
+            "  level {level} ({:<34}) {:5.1}%",
+            action_level_meaning(level),
+            share * 100.0
+        );
+    }
+    println!("time share per body region score:");
+    for r in &s.regions {
+        let name = match r.side {
+            Some(Side::Left) => format!("left {}", r.region.name()),
+            Some(Side::Right) => format!("right {}", r.region.name()),
+            None => r.region.name().to_owned(),
+        };
+        let shares: Vec<String> = r
+            .share_by_score
+            .iter()
+            .map(|(score, share)| format!("{score}: {:.1}%", share * 100.0))
+            .collect();
+        println!("  {name:<16} {}", shares.join("  "));
+    }
+    let raised: Vec<String> = BodyRegion::ALL
+        .iter()
+        .map(|region| {
+            let n = events
+                .iter()
+                .filter(|e| {
+                    e.region == *region
+                        && e.kind == ergocell_ergonomics::warnings::WarningKind::Raised
+                })
+                .count();
+            format!("{} {n}", region.name())
+        })
+        .collect();
+    println!("warnings raised per region: {}", raised.join(", "));
+    Ok(())
+}
