@@ -19,6 +19,14 @@
 //!   segment the mean of the sides seen. The three "verify" ratios of `robot.md` check out: they are
 //!   the differences of the tabulated heights (0.530 − 0.285, 0.285 − 0.039, 0.818 − 0.530).
 //!
+//! A third, **posture-independent** estimator runs on every frame, upright or not: each limb and
+//! trunk segment length divided by its ratio (upper arm 0.186 H, forearm 0.146 H, thigh 0.245 H,
+//! shank 0.246 H, shoulder-to-hip per side 0.288 H), the median over the segments seen in a frame,
+//! then the median over frames ([`HeightEstimator::segment_estimate`]). Shoulder and hip *widths* are
+//! left out: BlazePose's shoulder and hip landmarks are joint centres, narrower than the biacromial
+//! and bi-trochanteric breadths the ratios describe. It is reported (e.g. for a seated operator) but
+//! never decides a class: the class is decided from upright frames only.
+//!
 //! The ratios are 1966 population means. We assume their person-to-person spread is 1.5 % of H for
 //! the floor-to-eye ratio and 2.5 % for the segment chain (a chain of four ratios, and BlazePose's hip
 //! landmark is not the greater trochanter); those are the estimators' model uncertainties.
@@ -54,6 +62,23 @@ pub const CHAIN_RATIO: f64 = 0.246 + 0.245 + 0.288 + (0.936 - 0.818);
 pub const EYE_MODEL_REL_SIGMA: f64 = 0.015;
 /// Assumed relative spread of the chain ratio between people.
 pub const CHAIN_MODEL_REL_SIGMA: f64 = 0.025;
+/// Assumed relative spread of a single segment's ratio between people.
+pub const SEGMENT_MODEL_REL_SIGMA: f64 = 0.04;
+
+/// Segments of the posture-independent estimator and their lengths as fractions of stature
+/// (Drillis & Contini 1966).
+pub const SEGMENT_RATIOS: [(Landmark, Landmark, f64); 10] = [
+    (Landmark::LeftShoulder, Landmark::LeftElbow, 0.186),
+    (Landmark::RightShoulder, Landmark::RightElbow, 0.186),
+    (Landmark::LeftElbow, Landmark::LeftWrist, 0.146),
+    (Landmark::RightElbow, Landmark::RightWrist, 0.146),
+    (Landmark::LeftHip, Landmark::LeftKnee, 0.245),
+    (Landmark::RightHip, Landmark::RightKnee, 0.245),
+    (Landmark::LeftKnee, Landmark::LeftAnkle, 0.246),
+    (Landmark::RightKnee, Landmark::RightAnkle, 0.246),
+    (Landmark::LeftShoulder, Landmark::LeftHip, 0.288),
+    (Landmark::RightShoulder, Landmark::RightHip, 0.288),
+];
 
 /// Height class thresholds, validated.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -249,6 +274,10 @@ pub struct HeightEstimator {
     frames_seen: usize,
     window: VecDeque<FrameEstimate>,
     decision: Option<HeightDecision>,
+    /// Per frame (any posture): the median of the segment-based statures.
+    segment_frames: VecDeque<f64>,
+    /// Per segment of [`SEGMENT_RATIOS`]: its stature estimates over the window.
+    segment_values: Vec<VecDeque<f64>>,
 }
 
 fn mid(a: Point3<f64>, b: Point3<f64>) -> Point3<f64> {
@@ -294,7 +323,57 @@ impl HeightEstimator {
             frames_seen: 0,
             window: VecDeque::new(),
             decision: None,
+            segment_frames: VecDeque::new(),
+            segment_values: vec![VecDeque::new(); SEGMENT_RATIOS.len()],
         }
+    }
+
+    fn push_segments(&mut self, s: &Skeleton3) {
+        let cap = self.config.window_frames.max(1);
+        let mut this_frame = Vec::new();
+        for (k, (a, b, ratio)) in SEGMENT_RATIOS.iter().enumerate() {
+            if let Some(len) = s.bone_length_m(*a, *b).filter(|l| *l > 0.0) {
+                let h = len / ratio;
+                this_frame.push(h);
+                let v = &mut self.segment_values[k];
+                v.push_back(h);
+                while v.len() > cap {
+                    v.pop_front();
+                }
+            }
+        }
+        if let Some(m) = median(&mut this_frame) {
+            self.segment_frames.push_back(m);
+            while self.segment_frames.len() > cap {
+                self.segment_frames.pop_front();
+            }
+        }
+    }
+
+    /// The posture-independent segment-length estimate over the window (any posture). Its σ combines
+    /// the statistical error over frames, the disagreement between segments (MAD of the per-segment
+    /// medians over √segments) and the model spread of one segment ratio.
+    pub fn segment_estimate(&self) -> Option<EstimatorResult> {
+        let frames: Vec<f64> = self.segment_frames.iter().copied().collect();
+        let (h, se) = robust_location(&frames)?;
+        let mut per_segment: Vec<f64> = self
+            .segment_values
+            .iter()
+            .filter_map(|v| {
+                let mut v: Vec<f64> = v.iter().copied().collect();
+                median(&mut v)
+            })
+            .collect();
+        let k = per_segment.len() as f64;
+        let m = median(&mut per_segment)?;
+        let mut dev: Vec<f64> = per_segment.iter().map(|x| (x - m).abs()).collect();
+        let dispersion = 1.4826 * median(&mut dev)? / k.sqrt();
+        Some(EstimatorResult {
+            name: "segment_lengths",
+            height_m: h,
+            sigma_m: se.hypot(dispersion).hypot(SEGMENT_MODEL_REL_SIGMA * h),
+            frames: frames.len(),
+        })
     }
 
     /// Whether a frame shows the operator standing upright (see the module docs). `None` when the
@@ -397,6 +476,7 @@ impl HeightEstimator {
     /// Feeds one frame. Returns the class decision the first time it is made.
     pub fn push(&mut self, s: &Skeleton3) -> Option<HeightDecision> {
         self.frames_seen += 1;
+        self.push_segments(s);
         if self.is_upright(s) == Some(true) {
             let e = self.frame_estimate(s);
             if e.combined().is_some() {

@@ -186,3 +186,31 @@ fn a_configured_floor_is_used_when_known() {
         .unwrap();
     assert!((eye.height_m - 1.70).abs() < 0.005, "{eye:?}");
 }
+
+#[test]
+fn a_seated_operator_gets_a_segment_length_estimate_but_no_class() {
+    let seated = PoseSpec {
+        knee_flexion_rad: 90f64.to_radians(),
+        ..spec(1.72)
+    };
+    let mut est = estimator(&seated);
+    for k in 0..60 {
+        assert!(est.push(&frame(&seated, k)).is_none());
+    }
+    assert!(matches!(
+        est.status(),
+        HeightStatus::Measuring {
+            upright_frames: 0,
+            ..
+        }
+    ));
+    assert!(est.estimate().is_none());
+    let seg = est.segment_estimate().unwrap();
+    assert_eq!(seg.name, "segment_lengths");
+    assert_eq!(seg.frames, 60);
+    assert!((seg.height_m - 1.72).abs() < 0.02, "{seg:?}");
+    assert!(
+        seg.sigma_m >= 0.04 * seg.height_m,
+        "includes the model spread: {seg:?}"
+    );
+}
