@@ -66,7 +66,7 @@ impl FrameAssembler {
                 && p.views.iter().all(|v| v.camera != view.camera)
         });
         if let Some(p) = slot {
-            p.views.push(view)
+            p.views.push(view);
         } else {
             let at = self
                 .pending
