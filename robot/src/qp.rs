@@ -165,7 +165,8 @@ pub fn solve(p: &QpProblem) -> Result<QpSolution, RobotError> {
     }
     let dt = p.dt_s;
     let n_var = 3 * n * n_j;
-    let idx = |j: usize, kind: usize, k: usize| j * 3 * n + kind * n + k;
+    // Knot-major ordering (all joints, q v a, of knot k together) keeps the KKT matrix banded.
+    let idx = |j: usize, kind: usize, k: usize| k * 3 * n_j + kind * n_j + j;
 
     // P: ∫ a² over an interval with linear a = dt/3 (a_k² + a_k a_{k+1} + a_{k+1}²);
     // ∫ w j² = w (a_{k+1} − a_k)² / dt. Written as ½ xᵀ P x, so P = 2 × the quadratic form (upper triangle).

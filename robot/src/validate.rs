@@ -201,6 +201,8 @@ pub struct ValidationReport {
     pub boundary: BoundaryCheck,
     pub qp: QpSummary,
     pub ik: Vec<IkSummary>,
+    /// False when the QP was not solved: the check values below are then not a trajectory's.
+    pub checks_run: bool,
     pub dense_samples_per_interval: usize,
     pub inputs: InputHashes,
     pub note: String,
@@ -551,6 +553,10 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
     if !finite {
         reasons.push("QP returned non-finite values".to_owned());
     }
+    // The checks below only mean something on a solved QP (otherwise x is a certificate, not a
+    // trajectory); they still run so the report shows numbers, but only a solved QP adds reasons.
+    let checks_run = sol.status == QpStatus::Solved && finite;
+    let mut check_reasons = Vec::new();
 
     // Boundary and integration consistency.
     let start_equals_home = q[0] == home;
@@ -571,18 +577,18 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
     }
     let time_strictly_increasing = time_s.windows(2).all(|w| w[1] > w[0]);
     if !start_equals_home {
-        reasons.push("first point differs from the home pose".to_owned());
+        check_reasons.push("first point differs from the home pose".to_owned());
     }
     if !end_at_rest {
-        reasons.push("trajectory does not start and end at rest".to_owned());
+        check_reasons.push("trajectory does not start and end at rest".to_owned());
     }
     if !(residual <= 1e-6) {
-        reasons.push(format!(
+        check_reasons.push(format!(
             "stored samples inconsistent with the cubic model (residual {residual:.2e} rad)"
         ));
     }
     if !time_strictly_increasing {
-        reasons.push("time_from_start not strictly increasing".to_owned());
+        check_reasons.push("time_from_start not strictly increasing".to_owned());
     }
 
     // Dense joint-limit re-check.
@@ -621,7 +627,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
             } else {
                 (qmax, lim.upper_rad)
             };
-            reasons.push(format!(
+            check_reasons.push(format!(
                 "{}: position {:.2}° outside limit {:.2}°",
                 lim.name,
                 pos.to_degrees(),
@@ -629,7 +635,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
             ));
         }
         if !(m.velocity_margin_rad_s >= 0.0) {
-            reasons.push(format!(
+            check_reasons.push(format!(
                 "{}: velocity {:.2}°/s over limit {:.2}°/s",
                 lim.name,
                 vpk.to_degrees(),
@@ -637,7 +643,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
             ));
         }
         if !(m.acceleration_margin_rad_s2 >= 0.0) {
-            reasons.push(format!(
+            check_reasons.push(format!(
                 "{}: acceleration {:.2}°/s² over limit {:.2}°/s²",
                 lim.name,
                 apk.to_degrees(),
@@ -673,7 +679,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
     };
     let mut qs = vec![0.0; dof];
     let mut qds = vec![0.0; dof];
-    if finite {
+    if checks_run {
         for k in 0..n - 1 {
             let last = k == n - 2;
             let samples = CARTESIAN_SAMPLES_PER_INTERVAL + usize::from(last);
@@ -730,19 +736,19 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
         }
     }
     if !(tcp.peak_in_zone_m_s <= tcp.limit_in_zone_m_s) {
-        reasons.push(format!(
+        check_reasons.push(format!(
             "TCP speed {:.3} m/s in the collaborative zone exceeds {:.3} m/s",
             tcp.peak_in_zone_m_s, tcp.limit_in_zone_m_s
         ));
     }
     if !(sep.min_separation_m >= sep.required_m) {
-        reasons.push(format!(
+        check_reasons.push(format!(
             "separation {:.3} m between {} and the operator's {} at t = {:.2} s is below {:.3} m",
             sep.min_separation_m, sep.arm_segment, sep.body_part, sep.at_time_s, sep.required_m
         ));
     }
     if !(sing.min_singular_value >= sing.required) {
-        reasons.push(format!(
+        check_reasons.push(format!(
             "Jacobian's smallest singular value {:.4} at t = {:.2} s is below {:.4} (near a singularity)",
             sing.min_singular_value, sing.at_time_s, sing.required
         ));
@@ -765,7 +771,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
     let T_base_end = model.fk_flange_unchecked(&q[n - 1]) * T_flange_tcp;
     let (fk_dp, fk_dr) = pose_error(&T_base_end, &T_base_handover);
     if !inside_band {
-        reasons.push(format!(
+        check_reasons.push(format!(
             "handover (forward {:.3}, lateral {:.3}, height {:.3}) m is outside the class band: height {:.3}–{:.3} m, \
              forward {:.3}–{:.3} m, |lateral| ≤ {:.3} m",
             h.forward_m,
@@ -779,10 +785,14 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
         ));
     }
     if !(fk_dp <= 1e-3 && fk_dr <= 1e-2) {
-        reasons.push(format!(
+        check_reasons.push(format!(
             "final point misses the handover target by {fk_dp:.4} m / {:.2}°",
             fk_dr.to_degrees()
         ));
+    }
+
+    if checks_run {
+        reasons.extend(check_reasons);
     }
 
     let report = ValidationReport {
@@ -824,6 +834,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
             duration_s: duration,
         },
         ik,
+        checks_run,
         dense_samples_per_interval: JOINT_SAMPLES_PER_INTERVAL,
         inputs: hashes.clone(),
         note: SAFETY_NOTE.to_owned(),
@@ -872,6 +883,12 @@ impl fmt::Display for ValidationReport {
         )?;
         for r in &self.reasons {
             writeln!(f, "  REJECTED because: {r}")?;
+        }
+        if !self.checks_run {
+            writeln!(
+                f,
+                "  (QP not solved: the check values below describe the solver's last iterate, not a trajectory)"
+            )?;
         }
         let q = &self.qp;
         writeln!(

@@ -1,0 +1,258 @@
+//! Lock files, approvals and verification: any edited byte is caught, approvals bind to one hash, and the
+//! session lock refuses changes until the session ends.
+
+// Test and bench helpers panic on purpose: a panic is the failure report.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+mod common;
+
+use std::path::PathBuf;
+
+use ergocell_robot::lock::{self, ApprovalsFile, LockFile, SessionLock, VerifyInputs};
+use ergocell_robot::{
+    plan_and_validate, InputHashes, PlanInputs, RobotError, RobotModel, TrajectoryClass,
+    TrajectorySpec,
+};
+
+const CLASS: TrajectoryClass = TrajectoryClass::C2;
+
+fn lock_for(s: &common::Shipped, text: &str) -> LockFile {
+    let spec = TrajectorySpec::from_toml_str(text).unwrap();
+    let hashes = common::hashes(s, text);
+    let locked = plan_and_validate(&PlanInputs {
+        model: &s.model,
+        cell: &s.cell,
+        spec: &spec,
+        hashes: &hashes,
+    })
+    .unwrap()
+    .into_locked()
+    .unwrap();
+    LockFile::from_locked(&locked)
+}
+
+fn inputs<'a>(
+    lock_toml: &'a str,
+    current: &'a InputHashes,
+    model: &'a RobotModel,
+    approvals: Option<&'a str>,
+) -> VerifyInputs<'a> {
+    VerifyInputs {
+        class: CLASS,
+        lock_toml,
+        current_inputs: current,
+        model,
+        approvals_toml: approvals,
+    }
+}
+
+/// A fresh directory under the system temp dir (no wall clock: pid + test name).
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("ergocell_robot_{}_{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_lock_round_trips_through_toml_with_the_same_hash() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let lock = lock_for(&s, &text);
+    let toml = lock.to_toml().unwrap();
+    let parsed = LockFile::from_toml_str(CLASS, &toml).unwrap();
+    assert_eq!(parsed, lock);
+    assert_eq!(parsed.content_sha256(), lock.lock_sha256);
+    assert!(toml.contains("lock_sha256 = \""));
+}
+
+#[test]
+fn verify_without_an_approval_fails_naming_what_is_missing() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let lock = lock_for(&s, &text);
+    let toml = lock.to_toml().unwrap();
+    let current = common::hashes(&s, &text);
+    lock::verify_integrity(&inputs(&toml, &current, &s.model, None)).unwrap();
+    let failure = lock::verify(&inputs(&toml, &current, &s.model, None)).unwrap_err();
+    assert_eq!(failure.problems.len(), 1);
+    let msg = failure.to_string();
+    assert!(
+        msg.contains(&lock.lock_sha256)
+            && msg.contains("approvals/c2.toml")
+            && msg.contains("approve"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn an_approval_in_a_temp_dir_verifies_and_binds_to_exactly_that_hash() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let lock = lock_for(&s, &text);
+    let toml = lock.to_toml().unwrap();
+    let current = common::hashes(&s, &text);
+
+    let dir = temp_dir("approval");
+    let path = dir.join("c2.toml");
+    let mut approvals = ApprovalsFile::default();
+    approvals
+        .approve(&lock, "Test Engineer", "2026-01-01T00:00:00Z")
+        .unwrap();
+    std::fs::write(&path, approvals.to_toml().unwrap()).unwrap();
+    let approvals_text = std::fs::read_to_string(&path).unwrap();
+
+    let approved = lock::verify(&inputs(&toml, &current, &s.model, Some(&approvals_text))).unwrap();
+    assert_eq!(approved.class(), CLASS);
+    assert_eq!(approved.approvals()[0].approved_by, "Test Engineer");
+    assert_eq!(approved.points().len(), 100);
+
+    // An approval of another hash does not carry over.
+    let other = approvals_text.replace(&lock.lock_sha256, &"0".repeat(64));
+    let failure = lock::verify(&inputs(&toml, &current, &s.model, Some(&other))).unwrap_err();
+    assert!(
+        matches!(failure.problems[0], RobotError::NotApproved { .. }),
+        "{failure}"
+    );
+
+    // An empty name is refused.
+    assert!(ApprovalsFile::default()
+        .approve(&lock, "  ", "2026-01-01T00:00:00Z")
+        .is_err());
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn editing_one_byte_of_the_trajectory_file_makes_verify_fail() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let lock = lock_for(&s, &text);
+    let toml = lock.to_toml().unwrap();
+    let mut approvals = ApprovalsFile::default();
+    approvals
+        .approve(&lock, "Test Engineer", "2026-01-01T00:00:00Z")
+        .unwrap();
+    let approvals_text = approvals.to_toml().unwrap();
+
+    // Change one byte: `height_m = 1.055` → `height_m = 1.056`. Even a comment byte would do.
+    let mut bytes = text.clone().into_bytes();
+    let at = text.find("height_m = 1.055").unwrap() + "height_m = 1.05".len();
+    bytes[at] = b'6';
+    let edited = String::from_utf8(bytes).unwrap();
+    assert_eq!(edited.len(), text.len());
+    let current = common::hashes(&s, &edited);
+    let failure =
+        lock::verify(&inputs(&toml, &current, &s.model, Some(&approvals_text))).unwrap_err();
+    match &failure.problems[0] {
+        RobotError::LockMismatch { what, .. } => {
+            assert!(what.contains("trajectory file"), "{failure}");
+        }
+        other => panic!("expected LockMismatch, got {other:?}"),
+    }
+
+    // A one-byte edit inside the header comment also fails.
+    let mut c = text.clone().into_bytes();
+    assert!(c[0] == b'#' && c[2].is_ascii_alphabetic());
+    c[2] ^= 0x20; // `H` → `h`
+    let current = common::hashes(&s, &String::from_utf8(c).unwrap());
+    assert!(lock::verify(&inputs(&toml, &current, &s.model, Some(&approvals_text))).is_err());
+}
+
+#[test]
+fn editing_one_byte_of_the_lock_file_makes_verify_fail() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let lock = lock_for(&s, &text);
+    let toml = lock.to_toml().unwrap();
+    let current = common::hashes(&s, &text);
+    // Change a digit inside the trajectory samples.
+    let at = toml.find("positions_rad = [0.0, 0.3").unwrap() + "positions_rad = [0.0, 0.".len();
+    let mut bytes = toml.into_bytes();
+    bytes[at] = b'4';
+    let edited = String::from_utf8(bytes).unwrap();
+    let failure = lock::verify_integrity(&inputs(&edited, &current, &s.model, None)).unwrap_err();
+    assert!(
+        matches!(failure.problems[0], RobotError::LockCorrupt { .. }),
+        "{failure}"
+    );
+    assert!(failure.to_string().contains("content was edited"));
+}
+
+#[test]
+fn a_changed_urdf_or_cell_config_makes_verify_fail() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let lock = lock_for(&s, &text);
+    let toml = lock.to_toml().unwrap();
+    let urdf = s.urdf.replacen("effort=\"320\"", "effort=\"321\"", 1);
+    let current = InputHashes::new(text.as_bytes(), urdf.as_bytes(), &s.cell, "test");
+    let failure = lock::verify_integrity(&inputs(&toml, &current, &s.model, None)).unwrap_err();
+    assert!(failure.to_string().contains("URDF changed"), "{failure}");
+
+    let mut cell = s.cell.clone();
+    cell.robot.base_xyz_m[0] += 0.001;
+    let current = InputHashes::new(text.as_bytes(), s.urdf.as_bytes(), &cell, "test");
+    let failure = lock::verify_integrity(&inputs(&toml, &current, &s.model, None)).unwrap_err();
+    assert!(failure.to_string().contains("cell config"), "{failure}");
+}
+
+#[test]
+fn a_lock_for_another_class_is_refused() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let toml = lock_for(&s, &text).to_toml().unwrap();
+    let err = LockFile::from_toml_str(TrajectoryClass::C1, &toml).unwrap_err();
+    assert!(err.to_string().contains("file is for class c2"), "{err}");
+}
+
+#[test]
+fn the_session_lock_refuses_changes_until_the_session_ends() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let lock = lock_for(&s, &text);
+    let toml = lock.to_toml().unwrap();
+    let current = common::hashes(&s, &text);
+    let mut approvals = ApprovalsFile::default();
+    approvals
+        .approve(&lock, "Test Engineer", "2026-01-01T00:00:00Z")
+        .unwrap();
+    let approvals_text = approvals.to_toml().unwrap();
+    let approved = lock::verify(&inputs(&toml, &current, &s.model, Some(&approvals_text))).unwrap();
+
+    let mut session = SessionLock::start(approved);
+    assert!(session.request(TrajectoryClass::C2).is_ok());
+    let err = session.request(TrajectoryClass::C3).unwrap_err();
+    assert!(matches!(err, RobotError::SessionLocked { .. }), "{err}");
+    assert_eq!(session.refused().len(), 1);
+    let (session, err) = session.end(true, false).unwrap_err();
+    assert!(err.to_string().contains("robot at home: false"));
+    let refused = session.end(true, true).unwrap();
+    assert_eq!(refused.len(), 1);
+}
+
+#[test]
+fn the_committed_locks_match_the_committed_inputs() {
+    // The shipped locks (trajectories/locks/) must stay in step with the trajectory files, URDF and
+    // cell config: edit an input, and this test tells you to re-run `ergocell trajectories lock`.
+    let s = common::shipped();
+    for class in TrajectoryClass::ALL {
+        let text = common::spec_text(class);
+        let current = InputHashes::new(
+            text.as_bytes(),
+            s.urdf.as_bytes(),
+            &s.cell,
+            env!("CARGO_PKG_VERSION"),
+        );
+        let lock_text = common::read(&format!("trajectories/locks/{class}.lock.toml"));
+        let inputs = VerifyInputs {
+            class,
+            lock_toml: &lock_text,
+            current_inputs: &current,
+            model: &s.model,
+            approvals_toml: None,
+        };
+        if let Err(f) = lock::verify_integrity(&inputs) {
+            panic!("{f}\nre-run `ergocell trajectories lock` and have the locks re-approved");
+        }
+    }
+}

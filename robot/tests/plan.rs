@@ -1,0 +1,270 @@
+//! Planning and validation: the shipped classes lock; infeasible targets and too-short durations are
+//! rejected with the right reason; every locked trajectory respects every limit at every sample.
+
+// Test and bench helpers panic on purpose: a panic is the failure report.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+mod common;
+
+use ergocell_robot::config::{ControllerJointNames, JointNaming};
+use ergocell_robot::qp::QpStatus;
+use ergocell_robot::{
+    plan_and_validate, LockedTrajectory, PlanInputs, RobotError, TrajectoryClass, TrajectorySpec,
+};
+use proptest::prelude::*;
+
+fn plan(
+    s: &common::Shipped,
+    spec: &TrajectorySpec,
+) -> Result<ergocell_robot::Validation, RobotError> {
+    let text = toml::to_string(spec).unwrap();
+    let hashes = common::hashes(s, &text);
+    plan_and_validate(&PlanInputs {
+        model: &s.model,
+        cell: &s.cell,
+        spec,
+        hashes: &hashes,
+    })
+}
+
+/// Every stored knot and `samples` points between knots (the cubic with constant jerk) inside the limits.
+fn assert_within_limits(
+    s: &common::Shipped,
+    spec: &TrajectorySpec,
+    locked: &LockedTrajectory,
+    samples: usize,
+) {
+    let q = locked.positions_rad();
+    let v = locked.velocities_rad_s();
+    let a = locked.accelerations_rad_s2();
+    let dt = locked.dt_s();
+    for (j, lim) in s.model.joints().iter().enumerate() {
+        let v_lim = spec.limits.velocity_scale * lim.velocity_rad_s;
+        let a_lim = spec.limits.acceleration_scale * s.cell.robot.max_acceleration_rad_s2[j];
+        for k in 0..q.len() - 1 {
+            let jerk = (a[k + 1][j] - a[k][j]) / dt;
+            for i in 0..=samples {
+                let t = dt * i as f64 / samples as f64;
+                let pos = q[k][j] + v[k][j] * t + 0.5 * a[k][j] * t * t + jerk * t * t * t / 6.0;
+                let vel = v[k][j] + a[k][j] * t + 0.5 * jerk * t * t;
+                let acc = a[k][j] + jerk * t;
+                assert!(
+                    pos >= lim.lower_rad && pos <= lim.upper_rad,
+                    "{} at knot {k}+{i}: {pos}",
+                    lim.name
+                );
+                assert!(vel.abs() <= v_lim, "{} velocity {vel} > {v_lim}", lim.name);
+                assert!(
+                    acc.abs() <= a_lim + 1e-12,
+                    "{} acceleration {acc} > {a_lim}",
+                    lim.name
+                );
+            }
+        }
+    }
+    let last = q.len() - 1;
+    assert!(v[0]
+        .iter()
+        .chain(&a[0])
+        .chain(&v[last])
+        .chain(&a[last])
+        .all(|x| *x == 0.0));
+    assert_eq!(q[0], spec.home.positions_rad);
+}
+
+#[test]
+fn the_three_shipped_classes_validate_and_lock() {
+    let s = common::shipped();
+    for class in TrajectoryClass::ALL {
+        let text = common::spec_text(class);
+        let spec = TrajectorySpec::from_toml_str(&text).unwrap();
+        assert_eq!(spec.class, class);
+        let hashes = common::hashes(&s, &text);
+        let v = plan_and_validate(&PlanInputs {
+            model: &s.model,
+            cell: &s.cell,
+            spec: &spec,
+            hashes: &hashes,
+        })
+        .unwrap();
+        assert!(v.report.accepted, "{}", v.report);
+        assert_eq!(v.report.qp.status, QpStatus::Solved);
+        assert!(v.report.tcp_speed.peak_in_zone_m_s <= 0.25);
+        assert!(v.report.separation.min_separation_m >= spec.envelope.min_separation_m);
+        assert!(v.report.handover.inside_band);
+        let text_report = v.report.to_string();
+        assert!(
+            text_report.contains("ACCEPTED") && text_report.contains(&hashes.trajectory_sha256)
+        );
+        assert!(text_report.contains("does not replace") || text_report.contains("do not replace"));
+        let locked = v.into_locked().unwrap();
+        assert_eq!(locked.joint_names()[0], "joint_1");
+        assert_within_limits(&s, &spec, &locked, 16);
+    }
+}
+
+#[test]
+fn a_too_short_duration_is_rejected_by_the_qp() {
+    let s = common::shipped();
+    let mut spec = common::spec(TrajectoryClass::C2);
+    spec.timing.duration_s = 0.6;
+    spec.via[0].time_s = 0.3;
+    let v = plan(&s, &spec).unwrap();
+    assert!(!v.report.accepted);
+    assert_eq!(
+        v.report.qp.status,
+        QpStatus::PrimalInfeasible,
+        "{}",
+        v.report
+    );
+    assert_eq!(v.report.reasons.len(), 1, "{:?}", v.report.reasons);
+    assert!(
+        v.report.reasons[0].contains("PrimalInfeasible"),
+        "{:?}",
+        v.report.reasons
+    );
+    assert!(!v.report.checks_run);
+    assert!(v.locked().is_none());
+    match v.into_locked() {
+        Err(RobotError::Rejected { class, reasons }) => {
+            assert_eq!(class, "c2");
+            assert!(reasons
+                .iter()
+                .any(|r| r.contains("cannot be met in this duration")));
+        }
+        other => panic!("expected Rejected, got {other:?}"),
+    }
+}
+
+#[test]
+fn an_unreachable_handover_is_rejected_with_target_and_closest_pose() {
+    let s = common::shipped();
+    let mut spec = common::spec(TrajectoryClass::C2);
+    // 0.6 m behind the operator's shoulders: 1.95 m from the robot base.
+    spec.handover.forward_m = -0.6;
+    let err = plan(&s, &spec).unwrap_err();
+    assert!(matches!(err, RobotError::Unreachable { .. }), "{err}");
+    assert!(err.to_string().contains("closest reachable"));
+}
+
+#[test]
+fn a_handover_outside_the_class_band_is_rejected() {
+    let s = common::shipped();
+    let mut spec = common::spec(TrajectoryClass::C2);
+    spec.handover.height_m = 1.15; // c3's height, too high for c2
+    let v = plan(&s, &spec).unwrap();
+    assert!(!v.report.accepted);
+    assert!(
+        v.report
+            .reasons
+            .iter()
+            .any(|r| r.contains("outside the class band")),
+        "{:?}",
+        v.report.reasons
+    );
+}
+
+#[test]
+fn a_tcp_too_fast_in_the_collaborative_zone_is_rejected() {
+    let mut s = common::shipped();
+    s.cell.robot.collaborative_tcp_speed_max_m_s = 0.1;
+    let spec = common::spec(TrajectoryClass::C2);
+    let v = plan(&s, &spec).unwrap();
+    assert!(!v.report.accepted, "{}", v.report);
+    assert_eq!(v.report.qp.status, QpStatus::Solved);
+    assert!(
+        v.report
+            .reasons
+            .iter()
+            .any(|r| r.contains("collaborative zone")),
+        "{:?}",
+        v.report.reasons
+    );
+}
+
+#[test]
+fn a_required_separation_larger_than_achieved_is_rejected() {
+    let s = common::shipped();
+    let mut spec = common::spec(TrajectoryClass::C2);
+    spec.envelope.min_separation_m = 0.5;
+    let v = plan(&s, &spec).unwrap();
+    assert!(
+        v.report.reasons.iter().any(|r| r.contains("separation")),
+        "{:?}",
+        v.report.reasons
+    );
+}
+
+#[test]
+fn a_home_pose_outside_the_limits_is_an_out_of_limit_error() {
+    let s = common::shipped();
+    let mut spec = common::spec(TrajectoryClass::C1);
+    spec.home.positions_rad[3] = -2.2;
+    let err = plan(&s, &spec).unwrap_err();
+    assert!(
+        matches!(err, RobotError::OutOfLimit { ref joint, position_rad, .. } if joint == "joint_4" && position_rad == -2.2),
+        "{err}"
+    );
+}
+
+#[test]
+fn planning_is_deterministic() {
+    let s = common::shipped();
+    let spec = common::spec(TrajectoryClass::C3);
+    let a = plan(&s, &spec).unwrap().into_locked().unwrap();
+    let b = plan(&s, &spec).unwrap().into_locked().unwrap();
+    assert_eq!(a.positions_rad(), b.positions_rad());
+}
+
+#[test]
+fn lbr_fri_joint_names_are_used_when_configured() {
+    let mut s = common::shipped();
+    s.cell.robot.controller_joint_names =
+        ControllerJointNames::Convention(JointNaming::LbrFriRos2Stack);
+    let spec = common::spec(TrajectoryClass::C2);
+    let locked = plan(&s, &spec).unwrap().into_locked().unwrap();
+    assert_eq!(locked.joint_names()[6], "lbr_A7");
+    assert_eq!(locked.report().joints[0].controller_name, "lbr_A1");
+}
+
+#[test]
+fn the_json_report_carries_margins_and_hashes() {
+    let s = common::shipped();
+    let spec = common::spec(TrajectoryClass::C1);
+    let v = plan(&s, &spec).unwrap();
+    let json = serde_json::to_value(&v.report).unwrap();
+    assert_eq!(json["qp"]["status"], "Solved");
+    assert_eq!(json["joints"].as_array().unwrap().len(), 7);
+    assert!(json["joints"][0]["velocity_margin_rad_s"].as_f64().unwrap() > 0.0);
+    assert_eq!(json["inputs"]["urdf_sha256"].as_str().unwrap().len(), 64);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 12, .. ProptestConfig::default() })]
+
+    /// Property: for random feasible handover targets, every locked trajectory respects every joint limit
+    /// at every sample (knots and densely between them).
+    #[test]
+    fn every_locked_trajectory_respects_every_joint_limit(
+        height in 0.95f64..1.16,
+        lateral in -0.15f64..0.05,
+        back_off in 0.08f64..0.2,
+        duration in 4.5f64..7.0,
+    ) {
+        let s = common::shipped();
+        let mut spec = common::spec(TrajectoryClass::C2);
+        // Stature bounds that put (forward, height) inside the class band: see validate.rs.
+        spec.stature.min_m = height / 0.63;
+        spec.stature.max_m = height / 0.575;
+        spec.handover.height_m = height;
+        spec.handover.forward_m = 0.39 * height;
+        spec.handover.lateral_m = lateral;
+        spec.via[0].offset_m = [back_off, 0.0, 0.0];
+        spec.timing.duration_s = duration;
+        spec.via[0].time_s = duration - 2.0;
+        let v = plan(&s, &spec).unwrap();
+        prop_assert!(v.report.accepted, "{}", v.report);
+        let locked = v.into_locked().unwrap();
+        assert_within_limits(&s, &spec, &locked, 16);
+    }
+}
