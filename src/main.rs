@@ -26,6 +26,8 @@ enum Command {
     Rula(commands::rula::Args),
     /// Estimate the operator's stature and height class from a 3D landmark recording.
     Height(commands::height::Args),
+    /// Validate, lock, approve and verify the class handover trajectories (safety engineer's review).
+    Trajectories(commands::trajectories::Args),
 }
 
 fn main() -> std::process::ExitCode {
@@ -40,6 +42,7 @@ fn main() -> std::process::ExitCode {
         Command::Triangulate(args) => commands::triangulate::run(&args),
         Command::Rula(args) => commands::rula::run(&args),
         Command::Height(args) => commands::height::run(&args),
+        Command::Trajectories(args) => commands::trajectories::run(&args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

@@ -2,6 +2,7 @@
 
 pub mod height;
 pub mod rula;
+pub mod trajectories;
 pub mod triangulate;
 
 /// Bad input from the user (a malformed file, a wrong flag value): exit code 2, as `clap` does.

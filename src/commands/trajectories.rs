@@ -1,0 +1,380 @@
+//! `ergocell trajectories`: the safety engineer's review workflow for the class handover trajectories.
+//!
+//! ```text
+//! ergocell trajectories validate [--class c2] [--json]   plan + check, print the report; non-zero on rejection
+//! ergocell trajectories lock [--class c2]                write trajectories/locks/<class>.lock.toml
+//! ergocell trajectories approve --class c2 --by <name>   append a sign-off of the lock's hash to
+//!                                                        trajectories/approvals/<class>.toml
+//! ergocell trajectories verify [--class c2] [--allow-unapproved]
+//!                                                        lock hash, input hashes, limits, approvals agree
+//! ```
+//!
+//! Paths default to `trajectories/` and `config/cell.toml` under the current directory. The lock is a
+//! software guarantee on top of the robot's own safety controller, not a replacement for it.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context as _};
+use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
+use ergocell_robot::{
+    plan_and_validate, CellConfig, InputHashes, PlanInputs, RobotModel, TrajectoryClass,
+    TrajectorySpec,
+};
+
+use super::UsageError;
+
+/// Arguments of `ergocell trajectories`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    #[command(subcommand)]
+    pub command: Sub,
+    /// Directory of the trajectory files (`c1.toml`…); locks go to `<dir>/locks`, approvals to `<dir>/approvals`.
+    #[arg(long, global = true, default_value = "trajectories")]
+    pub trajectories_dir: PathBuf,
+    /// Cell configuration (its `[robot]` and `[station]` tables; the URDF path is relative to this file).
+    #[arg(long, global = true, default_value = "config/cell.toml")]
+    pub cell: PathBuf,
+}
+
+#[derive(Debug, clap::Subcommand)]
+pub enum Sub {
+    /// Plan and validate (IK + QP + checks) and print the report; exits non-zero on any rejection.
+    Validate {
+        /// Only this class (c1, c2, c3); default all.
+        #[arg(long, value_parser = parse_class)]
+        class: Option<TrajectoryClass>,
+        /// Print the reports as JSON (SI units) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Validate and write the lock file of each accepted class.
+    Lock {
+        #[arg(long, value_parser = parse_class)]
+        class: Option<TrajectoryClass>,
+    },
+    /// Record a safety engineer's sign-off of the current lock's hash (after an integrity check).
+    Approve {
+        #[arg(long, value_parser = parse_class)]
+        class: TrajectoryClass,
+        /// The approver's name.
+        #[arg(long)]
+        by: String,
+    },
+    /// Check that lock files, input hashes, limits and approvals agree; exits non-zero on any problem.
+    Verify {
+        #[arg(long, value_parser = parse_class)]
+        class: Option<TrajectoryClass>,
+        /// Check integrity only and report missing approvals without failing (CI before sign-off).
+        #[arg(long)]
+        allow_unapproved: bool,
+    },
+}
+
+fn parse_class(s: &str) -> Result<TrajectoryClass, String> {
+    s.parse()
+        .map_err(|e: ergocell_robot::RobotError| e.to_string())
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let ctx = Context::load(args)?;
+    match &args.command {
+        Sub::Validate { class, json } => validate(&ctx, *class, *json),
+        Sub::Lock { class } => lock_classes(&ctx, *class),
+        Sub::Approve { class, by } => approve(&ctx, *class, by),
+        Sub::Verify {
+            class,
+            allow_unapproved,
+        } => verify(&ctx, *class, *allow_unapproved),
+    }
+}
+
+/// The cell, the robot and the paths, read once.
+struct Context {
+    dir: PathBuf,
+    cell: CellConfig,
+    urdf_text: String,
+    model: RobotModel,
+}
+
+impl Context {
+    fn load(args: &Args) -> anyhow::Result<Self> {
+        let cell_text = read(&args.cell)?;
+        let cell = CellConfig::from_toml_str(&cell_text)
+            .map_err(|e| UsageError(format!("{}: {e}", args.cell.display())))?;
+        let urdf_path = args
+            .cell
+            .parent()
+            .unwrap_or_else(|| Path::new("."))
+            .join(&cell.robot.urdf);
+        let urdf_text = read(&urdf_path)?;
+        let model =
+            RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
+                .map_err(|e| UsageError(format!("{}: {e}", urdf_path.display())))?;
+        Ok(Self {
+            dir: args.trajectories_dir.clone(),
+            cell,
+            urdf_text,
+            model,
+        })
+    }
+
+    fn spec_path(&self, class: TrajectoryClass) -> PathBuf {
+        self.dir.join(format!("{class}.toml"))
+    }
+    fn lock_path(&self, class: TrajectoryClass) -> PathBuf {
+        self.dir.join("locks").join(format!("{class}.lock.toml"))
+    }
+    fn approvals_path(&self, class: TrajectoryClass) -> PathBuf {
+        self.dir.join("approvals").join(format!("{class}.toml"))
+    }
+
+    /// The class's trajectory file (its text and parsed spec) and the current input hashes.
+    fn spec(&self, class: TrajectoryClass) -> anyhow::Result<(TrajectorySpec, InputHashes)> {
+        let path = self.spec_path(class);
+        let text = read(&path)?;
+        let spec = TrajectorySpec::from_toml_str(&text)
+            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+        if spec.class != class {
+            return Err(UsageError(format!(
+                "{}: file declares class {}, expected {class}",
+                path.display(),
+                spec.class
+            ))
+            .into());
+        }
+        let hashes = InputHashes::new(
+            text.as_bytes(),
+            self.urdf_text.as_bytes(),
+            &self.cell,
+            env!("CARGO_PKG_VERSION"),
+        );
+        Ok((spec, hashes))
+    }
+}
+
+fn read(path: &Path) -> anyhow::Result<String> {
+    fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))
+}
+
+fn classes(class: Option<TrajectoryClass>) -> Vec<TrajectoryClass> {
+    class.map_or_else(|| TrajectoryClass::ALL.to_vec(), |c| vec![c])
+}
+
+fn validate(ctx: &Context, class: Option<TrajectoryClass>, json: bool) -> anyhow::Result<()> {
+    let mut failed = Vec::new();
+    let mut json_out = Vec::new();
+    for class in classes(class) {
+        let (spec, hashes) = ctx.spec(class)?;
+        let inputs = PlanInputs {
+            model: &ctx.model,
+            cell: &ctx.cell,
+            spec: &spec,
+            hashes: &hashes,
+        };
+        match plan_and_validate(&inputs) {
+            Ok(v) => {
+                if !v.report.accepted {
+                    failed.push(class);
+                }
+                if json {
+                    json_out.push(serde_json::json!({ "class": class, "report": v.report }));
+                } else {
+                    println!("{}", v.report);
+                }
+            }
+            Err(e) => {
+                failed.push(class);
+                if json {
+                    json_out.push(serde_json::json!({ "class": class, "error": e.to_string() }));
+                } else {
+                    println!("Trajectory validation — class {class} — REJECTED\n  {e}\n");
+                }
+            }
+        }
+    }
+    if json {
+        println!("{}", serde_json::to_string_pretty(&json_out)?);
+    }
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        bail!("rejected: {}", list(&failed))
+    }
+}
+
+fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result<()> {
+    let mut failed = Vec::new();
+    for class in classes(class) {
+        let (spec, hashes) = ctx.spec(class)?;
+        let inputs = PlanInputs {
+            model: &ctx.model,
+            cell: &ctx.cell,
+            spec: &spec,
+            hashes: &hashes,
+        };
+        let locked =
+            match plan_and_validate(&inputs).and_then(ergocell_robot::Validation::into_locked) {
+                Ok(l) => l,
+                Err(e) => {
+                    eprintln!("{class}: not locked: {e}");
+                    failed.push(class);
+                    continue;
+                }
+            };
+        let lock = LockFile::from_locked(&locked);
+        let path = ctx.lock_path(class);
+        write(&path, &lock.to_toml()?)?;
+        println!(
+            "{class}: locked {} (lock_sha256 {})",
+            path.display(),
+            lock.lock_sha256
+        );
+        println!("    review it, then: ergocell trajectories approve --class {class} --by <name>");
+    }
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        bail!("not locked: {}", list(&failed))
+    }
+}
+
+fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()> {
+    let (_, current) = ctx.spec(class)?;
+    let lock_path = ctx.lock_path(class);
+    let lock_text = read(&lock_path)
+        .with_context(|| format!("run `ergocell trajectories lock --class {class}` first"))?;
+    let inputs = VerifyInputs {
+        class,
+        lock_toml: &lock_text,
+        current_inputs: &current,
+        model: &ctx.model,
+        approvals_toml: None,
+    };
+    let lock =
+        lock::verify_integrity(&inputs).map_err(|f| anyhow::anyhow!("{f}\nrefusing to approve"))?;
+    let approvals_path = ctx.approvals_path(class);
+    let mut file = if approvals_path.exists() {
+        ApprovalsFile::from_toml_str(&read(&approvals_path)?)
+            .map_err(|e| UsageError(format!("{}: {e}", approvals_path.display())))?
+    } else {
+        ApprovalsFile::default()
+    };
+    let approval = file.approve(&lock, by, &now_rfc3339())?.clone();
+    write(&approvals_path, &file.to_toml()?)?;
+    println!(
+        "{class}: approved by {} at {} — lock_sha256 {} — recorded in {}",
+        approval.approved_by,
+        approval.approved_at_utc,
+        approval.lock_sha256,
+        approvals_path.display()
+    );
+    Ok(())
+}
+
+fn verify(
+    ctx: &Context,
+    class: Option<TrajectoryClass>,
+    allow_unapproved: bool,
+) -> anyhow::Result<()> {
+    let mut failed = Vec::new();
+    for class in classes(class) {
+        let (_, current) = ctx.spec(class)?;
+        let lock_path = ctx.lock_path(class);
+        let Ok(lock_text) = fs::read_to_string(&lock_path) else {
+            println!(
+                "{class}: FAIL\n  - no lock file {} (run `ergocell trajectories lock --class {class}`)",
+                lock_path.display()
+            );
+            failed.push(class);
+            continue;
+        };
+        let approvals_path = ctx.approvals_path(class);
+        let approvals_text = fs::read_to_string(&approvals_path).ok();
+        let inputs = VerifyInputs {
+            class,
+            lock_toml: &lock_text,
+            current_inputs: &current,
+            model: &ctx.model,
+            approvals_toml: approvals_text.as_deref(),
+        };
+        match lock::verify(&inputs) {
+            Ok(approved) => {
+                let names: Vec<String> = approved
+                    .approvals()
+                    .iter()
+                    .map(|a| format!("{} at {}", a.approved_by, a.approved_at_utc))
+                    .collect();
+                println!(
+                    "{class}: OK — lock_sha256 {} — approved by {}",
+                    approved.lock().lock_sha256,
+                    names.join(", ")
+                );
+            }
+            Err(failure) => {
+                let only_unapproved = failure
+                    .problems
+                    .iter()
+                    .all(|p| matches!(p, ergocell_robot::RobotError::NotApproved { .. }));
+                if allow_unapproved && only_unapproved {
+                    println!("{class}: INTEGRITY OK, NOT APPROVED — the controller will refuse to run it");
+                    for p in &failure.problems {
+                        println!("  - {p}");
+                    }
+                } else {
+                    println!("{class}: FAIL");
+                    for p in &failure.problems {
+                        println!("  - {p}");
+                    }
+                    failed.push(class);
+                }
+            }
+        }
+    }
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        bail!("verification failed: {}", list(&failed))
+    }
+}
+
+fn list(classes: &[TrajectoryClass]) -> String {
+    classes
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn write(path: &Path, text: &str) -> anyhow::Result<()> {
+    if let Some(dir) = path.parent() {
+        fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    }
+    fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// Current UTC time as RFC 3339 (the binary is the only place that reads the clock).
+#[allow(clippy::disallowed_methods)]
+fn now_rfc3339() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let days = (secs / 86_400) as i64;
+    let rem = secs % 86_400;
+    // Civil from days (Howard Hinnant's algorithm).
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!(
+        "{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z",
+        rem / 3600,
+        (rem % 3600) / 60,
+        rem % 60
+    )
+}
