@@ -4,8 +4,10 @@
 //! Only frames where the operator stands upright are used: both knees within
 //! [`HeightConfig::upright_max_knee_flexion_rad`] of straight (angle between thigh `knee − hip` and
 //! shank `ankle − knee`), both hips within [`HeightConfig::upright_max_hip_flexion_rad`] of straight
-//! (angle between the trunk axis `shoulder mid − hip mid` and `hip − knee`), and the trunk axis within
-//! [`HeightConfig::upright_max_trunk_tilt_rad`] of the world's up.
+//! (angle between the trunk axis `shoulder mid − hip mid` and `hip − knee`), the trunk axis within
+//! [`HeightConfig::upright_max_trunk_tilt_rad`] of the world's up, and the head held up: the vector
+//! from the shoulder midpoint to the ear midpoint within [`HeightConfig::upright_max_neck_flexion_rad`]
+//! of the trunk axis (a bowed head lowers the eyes and biases both estimators low).
 //!
 //! # Two estimators (Drillis & Contini 1966, as tabulated by Winter, *Biomechanics and Motor Control
 //! of Human Movement*; fractions of stature H)
@@ -166,6 +168,8 @@ pub struct HeightConfig {
     pub upright_max_hip_flexion_rad: f64,
     /// Default 10°.
     pub upright_max_trunk_tilt_rad: f64,
+    /// Default 15° (checked when both ears are seen).
+    pub upright_max_neck_flexion_rad: f64,
     /// Upright frames needed before any decision (default 15).
     pub min_frames: usize,
     /// Half-width of the decision interval in σ (default 2).
@@ -188,6 +192,7 @@ impl HeightConfig {
             upright_max_knee_flexion_rad: 20f64.to_radians(),
             upright_max_hip_flexion_rad: 20f64.to_radians(),
             upright_max_trunk_tilt_rad: 10f64.to_radians(),
+            upright_max_neck_flexion_rad: 15f64.to_radians(),
             min_frames: 15,
             decision_sigmas: 2.0,
             agree_frames: 90,
@@ -391,6 +396,14 @@ impl HeightEstimator {
         let trunk = shoulders - hips;
         if angle(trunk, c.up.vector())? > c.upright_max_trunk_tilt_rad {
             return Some(false);
+        }
+        if let (Some(el), Some(er)) = (
+            s.position(Landmark::LeftEar),
+            s.position(Landmark::RightEar),
+        ) {
+            if angle(mid(el, er) - shoulders, trunk)? > c.upright_max_neck_flexion_rad {
+                return Some(false);
+            }
         }
         for (hip, knee, ankle) in [
             (Landmark::LeftHip, Landmark::LeftKnee, Landmark::LeftAnkle),

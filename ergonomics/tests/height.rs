@@ -113,6 +113,10 @@ fn frames_that_are_not_upright_are_not_used() {
             knee_flexion_rad: 40f64.to_radians(),
             ..spec(1.75)
         },
+        PoseSpec {
+            neck_flexion_rad: 30f64.to_radians(),
+            ..spec(1.75)
+        },
     ] {
         let mut est = estimator(&bent);
         assert_eq!(est.is_upright(&bent.skeleton()), Some(false));
