@@ -112,7 +112,7 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
     // One byte of the trajectory file: verify fails and names the file.
     let path = dir.join("trajectories/c2.toml");
     let mut bytes = std::fs::read(&path).unwrap();
-    let at = bytes.iter().position(|b| b.is_ascii_digit()).unwrap();
+    let at = bytes.iter().position(u8::is_ascii_digit).unwrap();
     bytes[at] = if bytes[at] == b'9' {
         b'8'
     } else {
