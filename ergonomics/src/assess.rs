@@ -454,10 +454,12 @@ impl RulaAssessor {
             None => None,
         };
 
+        // Standing: both feet on the floor and the hips over the feet. Seated (task config): the seat
+        // carries the weight, so both feet on the floor is what "supported and balanced" asks.
         let legs_ok = legs.is_some_and(|l: LegsObservation| {
             l.left_foot_lift_m <= th.foot_on_floor_m
                 && l.right_foot_lift_m <= th.foot_on_floor_m
-                && l.weight_offset <= th.weight_offset_max
+                && (task.seated_well_supported || l.weight_offset <= th.weight_offset_max)
         });
 
         let mut out = FrameAssessment {

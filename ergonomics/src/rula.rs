@@ -12,7 +12,7 @@
 //! twisted, +1 side-bending, max 6), trunk (same adjustments, max 6), legs, Table B, + muscle use,
 //! + force/load → Score D.
 //!
-//! Grand score = Table C[min(C,8)][min(D,7)]; action level from the grand score (1–2 → 1, 3–4 → 2,
+//! Grand score = `Table C[min(C,8)][min(D,7)]`; action level from the grand score (1–2 → 1, 3–4 → 2,
 //! 5–6 → 3, 7 → 4).
 //!
 //! # Band edges — the convention ergocell adopts (normative, `shared/reference/rula.md`)

@@ -384,3 +384,113 @@ fn session_summary_shares_add_up() {
     );
     assert_eq!(s.unscored_share, 0.0);
 }
+
+#[test]
+fn legs_need_both_feet_down_and_standing_needs_the_hips_over_the_feet() {
+    let spec = PoseSpec::default();
+    let up = UpVector::new(spec.up()).unwrap();
+    let legs = |s: &Skeleton3, seated: bool| {
+        let mut config = AssessmentConfig::new(up);
+        config.task.seated_well_supported = seated;
+        let f = RulaAssessor::new(config).unwrap().assess(s).unwrap();
+        f.right.unwrap().scores.legs_score
+    };
+    let standing = spec.skeleton();
+    assert_eq!(legs(&standing, false), 1);
+
+    // Hips 0.4 m behind the ankles (sitting back on a stool).
+    let mut back = standing.clone();
+    for lm in [Landmark::LeftHip, Landmark::RightHip] {
+        let mut e = *back.get(lm).unwrap();
+        e.position_m.y -= 0.4;
+        back.set(lm, Some(e)).unwrap();
+    }
+    assert_eq!(
+        legs(&back, false),
+        2,
+        "standing with the weight off the feet"
+    );
+    assert_eq!(legs(&back, true), 1, "seated: the seat carries the weight");
+
+    // One foot lifted 10 cm.
+    let mut lifted = standing.clone();
+    for lm in [
+        Landmark::LeftAnkle,
+        Landmark::LeftHeel,
+        Landmark::LeftFootIndex,
+    ] {
+        let mut e = *lifted.get(lm).unwrap();
+        e.position_m.z += 0.10;
+        lifted.set(lm, Some(e)).unwrap();
+    }
+    assert_eq!(legs(&lifted, false), 2);
+    assert_eq!(legs(&lifted, true), 2);
+}
+
+#[test]
+fn an_empty_skeleton_is_unscored_not_safe() {
+    let mut assessor = assessor_for(&PoseSpec::default());
+    let f = assessor.assess(&Skeleton3::empty(0)).unwrap();
+    assert!(f.left.is_none() && f.right.is_none() && f.headline().is_none());
+    assert!(!f.unscored_reasons.is_empty());
+    let mut warnings = WarningTracker::new(WarningConfig::default());
+    assert!(warnings.update(&f).is_empty());
+    let mut summary = SummaryBuilder::new(SEC);
+    summary.add(&f);
+    assert_eq!(summary.finish().unscored_share, 1.0);
+}
+
+mod arbitrary_skeletons {
+    use super::*;
+    use ergocell_ergonomics::{HeightConfig, HeightEstimator};
+    use ergocell_skeleton::{LandmarkEstimate, LANDMARK_COUNT};
+    use nalgebra::Point3;
+    use proptest::prelude::*;
+
+    fn arb_skeleton() -> impl Strategy<Value = Skeleton3> {
+        proptest::collection::vec(
+            proptest::option::of(((-3.0..3.0f64, -3.0..3.0f64, -3.0..3.0f64), 0.0..=1.0f64)),
+            LANDMARK_COUNT,
+        )
+        .prop_map(|slots| {
+            let slots = slots
+                .into_iter()
+                .map(|s| {
+                    s.map(|((x, y, z), c)| LandmarkEstimate {
+                        position_m: Point3::new(x, y, z),
+                        confidence: c,
+                        reprojection_error_px: None,
+                        views: 2,
+                    })
+                })
+                .collect();
+            Skeleton3::try_from_slots(0, slots).unwrap()
+        })
+    }
+
+    proptest! {
+        /// Any skeleton, however implausible or incomplete: no panic, scores in range, and a scored
+        /// side always carries the full 1..=7 grand score.
+        #[test]
+        fn any_skeleton_scores_in_range_or_not_at_all(skeletons in proptest::collection::vec(arb_skeleton(), 1..4)) {
+            let up = UpVector::new(Vector3::z()).unwrap();
+            let mut assessor = RulaAssessor::new(AssessmentConfig::new(up)).unwrap();
+            let mut height = HeightEstimator::new(HeightConfig::new(up));
+            let mut warnings = WarningTracker::new(WarningConfig::default());
+            for (k, s) in skeletons.iter().enumerate() {
+                let mut s = s.clone();
+                s.stamp_nanos = k as i64 * FRAME;
+                let f = assessor.assess(&s).unwrap();
+                for side in [f.left.as_ref(), f.right.as_ref()].into_iter().flatten() {
+                    prop_assert!((1..=7).contains(&side.scores.final_score));
+                    prop_assert!((1..=4).contains(&side.scores.action_level));
+                }
+                warnings.update(&f);
+                height.push(&s);
+            }
+            if let Some(e) = height.estimate() {
+                prop_assert!(e.height_m.is_finite() && e.uncertainty_m.is_finite());
+            }
+        }
+    }
+}
