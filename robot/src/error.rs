@@ -74,6 +74,13 @@ pub enum RobotError {
         lock_sha256: String,
         detail: String,
     },
+    /// The robot is not where the trajectory starts.
+    #[error("joint `{joint}` is at {current_rad:.4} rad but the trajectory starts at {start_rad:.4} rad")]
+    StartMismatch {
+        joint: String,
+        current_rad: f64,
+        start_rad: f64,
+    },
     /// The session's trajectory is locked; a change was requested.
     #[error(
         "session trajectory is locked to {locked_class}; request for {requested_class} refused until the \

@@ -301,6 +301,38 @@ impl ApprovedTrajectory {
     pub fn points(&self) -> &[LockPoint] {
         &self.lock.trajectory.point
     }
+
+    /// Check that the trajectory starts where the robot is (`/joint_states`, mapped to the controller's
+    /// joint order by name by the caller): every joint within `tolerance_rad`.
+    pub fn check_start(
+        &self,
+        current_positions_rad: &[f64],
+        tolerance_rad: f64,
+    ) -> Result<(), RobotError> {
+        let start = &self.lock.trajectory.point[0].positions_rad;
+        if current_positions_rad.len() != start.len() {
+            return Err(RobotError::DofMismatch {
+                what: "current joint positions".to_owned(),
+                expected: start.len(),
+                got: current_positions_rad.len(),
+            });
+        }
+        for ((name, &current), &first) in self
+            .joint_names()
+            .iter()
+            .zip(current_positions_rad)
+            .zip(start)
+        {
+            if !((current - first).abs() <= tolerance_rad) {
+                return Err(RobotError::StartMismatch {
+                    joint: name.clone(),
+                    current_rad: current,
+                    start_rad: first,
+                });
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Check the lock's own hash, the input hashes and the samples against the limits (no approval needed).

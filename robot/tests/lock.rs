@@ -219,6 +219,16 @@ fn the_session_lock_refuses_changes_until_the_session_ends() {
     let approvals_text = approvals.to_toml().unwrap();
     let approved = lock::verify(&inputs(&toml, &current, &s.model, Some(&approvals_text))).unwrap();
 
+    let start = approved.points()[0].positions_rad.clone();
+    approved.check_start(&start, 1e-3).unwrap();
+    let mut elsewhere = start.clone();
+    elsewhere[1] += 0.01;
+    let err = approved.check_start(&elsewhere, 1e-3).unwrap_err();
+    assert!(
+        matches!(err, RobotError::StartMismatch { ref joint, .. } if joint == "joint_2"),
+        "{err}"
+    );
+
     let mut session = SessionLock::start(approved);
     assert!(session.request(TrajectoryClass::C2).is_ok());
     let err = session.request(TrajectoryClass::C3).unwrap_err();
