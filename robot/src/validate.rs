@@ -771,7 +771,8 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
     let T_base_end = model.fk_flange_unchecked(&q[n - 1]) * T_flange_tcp;
     let (fk_dp, fk_dr) = pose_error(&T_base_end, &T_base_handover);
     if !inside_band {
-        check_reasons.push(format!(
+        // An input check: reported whether or not the QP solved.
+        reasons.push(format!(
             "handover (forward {:.3}, lateral {:.3}, height {:.3}) m is outside the class band: height {:.3}–{:.3} m, \
              forward {:.3}–{:.3} m, |lateral| ≤ {:.3} m",
             h.forward_m,
