@@ -5,11 +5,11 @@
 //! flickering:
 //!
 //! - Each region (upper arm, lower arm and wrist per side; neck, trunk, legs) has a reported score
-//!   `L`. Every frame gives two candidate scores: `hi`, the region's RULA score as measured, and
-//!   `lo`, the score with the region's angle moved *away* from its reference angle by the hysteresis
-//!   margin (default 5°; reference: 0° for upper arm, wrist, neck and trunk, 80° for the elbow).
-//!   `lo ≥ hi`: a posture has to be the margin inside a lower band before the level may fall, e.g. a
-//!   neck warning raised at 20° clears only below 15°.
+//!   `L`, and the angle `a_L` at which `L` was last set. Every frame gives two candidate scores:
+//!   `hi`, the region's RULA score at the measured angle `x`, and `lo`, the score at `x` moved towards
+//!   `a_L` by the hysteresis margin (default 5°, never past `a_L`). So a posture has to be the margin
+//!   inside a lower band before the level may fall: a neck warning raised at 35° clears only below
+//!   15°, an extension warning only from +5°. Regions without an angle (legs) have `lo = hi`.
 //! - `L` rises only after `hi > L` has held continuously for the dwell time (default 2 s), to the
 //!   smallest `hi` seen meanwhile; it falls only after `lo < L` has held for the dwell time, to the
 //!   largest `lo` seen meanwhile. A value that dithers around an edge moves neither way: each
@@ -86,6 +86,8 @@ pub struct WarningEvent {
 #[derive(Debug, Clone, Copy, Default)]
 struct RegionState {
     level: u8,
+    /// The angle at which `level` was last set.
+    level_angle: Option<f64>,
     up: Option<(i64, u8)>,
     down: Option<(i64, u8)>,
 }
@@ -97,62 +99,47 @@ pub struct WarningTracker {
     states: BTreeMap<(BodyRegion, Option<Side>), RegionState>,
 }
 
-/// `x` moved `margin` further from `reference`, on the side it is on.
-fn away(x: f64, reference: f64, margin: f64) -> f64 {
-    if x >= reference {
-        x + margin
+/// `x` moved `margin` towards `anchor`, never past it.
+fn toward(x: f64, anchor: f64, margin: f64) -> f64 {
+    if anchor >= x {
+        (x + margin).min(anchor)
     } else {
-        x - margin
+        (x - margin).max(anchor)
     }
 }
 
-/// The region's score for an input, the score with the angle moved `margin_deg` away from the
-/// reference (for falling), and the angle.
-fn region_scores(region: BodyRegion, i: &RulaInput, margin_deg: f64) -> (u8, u8, Option<f64>) {
+/// The region's angle in a worksheet (none for the legs).
+fn region_angle(region: BodyRegion, i: &RulaInput) -> Option<f64> {
     match region {
-        BodyRegion::UpperArm => {
-            let f = |a| {
-                upper_arm_score(
-                    a,
-                    i.shoulder_raised,
-                    i.upper_arm_abducted,
-                    i.arm_supported_or_leaning,
-                )
-            };
-            let a = i.upper_arm_flexion_deg;
-            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
-        }
-        BodyRegion::LowerArm => {
-            let f = |a| lower_arm_score(a, i.lower_arm_across_midline_or_out_to_side);
-            let a = i.lower_arm_flexion_deg;
-            (f(a), f(away(a, 80.0, margin_deg)), Some(a))
-        }
-        BodyRegion::Wrist => {
-            let f = |a| wrist_score(a, i.wrist_bent_from_midline);
-            let a = i.wrist_flexion_deg;
-            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
-        }
-        BodyRegion::Neck => {
-            let f = |a| neck_score(a, i.neck_twisted, i.neck_side_bending);
-            let a = i.neck_flexion_deg;
-            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
-        }
-        BodyRegion::Trunk => {
-            let f = |a| {
-                trunk_score(
-                    a,
-                    i.trunk_seated_well_supported,
-                    i.trunk_twisted,
-                    i.trunk_side_bending,
-                )
-            };
-            let a = i.trunk_flexion_deg;
-            (f(a), f(away(a, 0.0, margin_deg)), Some(a))
-        }
-        BodyRegion::Legs => {
-            let s = legs_score(i.legs_supported_and_balanced);
-            (s, s, None)
-        }
+        BodyRegion::UpperArm => Some(i.upper_arm_flexion_deg),
+        BodyRegion::LowerArm => Some(i.lower_arm_flexion_deg),
+        BodyRegion::Wrist => Some(i.wrist_flexion_deg),
+        BodyRegion::Neck => Some(i.neck_flexion_deg),
+        BodyRegion::Trunk => Some(i.trunk_flexion_deg),
+        BodyRegion::Legs => None,
+    }
+}
+
+/// The region's RULA score (with the worksheet's adjustments) with its angle replaced by `angle`.
+fn region_score_at(region: BodyRegion, i: &RulaInput, angle: Option<f64>) -> u8 {
+    let a = angle.or_else(|| region_angle(region, i)).unwrap_or(0.0);
+    match region {
+        BodyRegion::UpperArm => upper_arm_score(
+            a,
+            i.shoulder_raised,
+            i.upper_arm_abducted,
+            i.arm_supported_or_leaning,
+        ),
+        BodyRegion::LowerArm => lower_arm_score(a, i.lower_arm_across_midline_or_out_to_side),
+        BodyRegion::Wrist => wrist_score(a, i.wrist_bent_from_midline),
+        BodyRegion::Neck => neck_score(a, i.neck_twisted, i.neck_side_bending),
+        BodyRegion::Trunk => trunk_score(
+            a,
+            i.trunk_seated_well_supported,
+            i.trunk_twisted,
+            i.trunk_side_bending,
+        ),
+        BodyRegion::Legs => legs_score(i.legs_supported_and_balanced),
     }
 }
 
@@ -281,11 +268,26 @@ impl WarningTracker {
                 vec![(None, head)]
             };
             for (side, assessment) in sides {
-                let (hi, lo, angle) = region_scores(*region, &assessment.input, margin_deg);
+                let input = &assessment.input;
+                let angle = region_angle(*region, input);
                 let warn_at = self.config.warn_at[ri];
                 let state = self.states.entry((*region, side)).or_default();
+                let hi = region_score_at(*region, input, angle);
+                let lo = match (angle, state.level_angle) {
+                    (Some(x), Some(anchor)) => {
+                        region_score_at(*region, input, Some(toward(x, anchor, margin_deg)))
+                    }
+                    _ => hi,
+                };
                 let before = state.level.max(1);
-                step(state, frame.stamp_nanos, hi, lo, self.config.dwell_nanos);
+                step(
+                    state,
+                    frame.stamp_nanos,
+                    hi,
+                    lo,
+                    angle,
+                    self.config.dwell_nanos,
+                );
                 let after = state.level.max(1);
                 let (was, is) = (before >= warn_at, after >= warn_at);
                 let kind = match (was, is) {
@@ -332,12 +334,13 @@ impl WarningTracker {
 }
 
 /// One step of the hysteresis/dwell state machine (see the module docs).
-fn step(state: &mut RegionState, stamp: i64, hi: u8, lo: u8, dwell_nanos: i64) {
+fn step(state: &mut RegionState, stamp: i64, hi: u8, lo: u8, angle: Option<f64>, dwell_nanos: i64) {
     let level = state.level.max(1);
     if hi > level {
         let (since, min_seen) = state.up.map_or((stamp, hi), |(s, m)| (s, m.min(hi)));
         if stamp.saturating_sub(since) >= dwell_nanos {
             state.level = min_seen;
+            state.level_angle = angle;
             state.up = None;
             state.down = None;
             return;
@@ -350,6 +353,7 @@ fn step(state: &mut RegionState, stamp: i64, hi: u8, lo: u8, dwell_nanos: i64) {
         let (since, max_seen) = state.down.map_or((stamp, lo), |(s, m)| (s, m.max(lo)));
         if stamp.saturating_sub(since) >= dwell_nanos {
             state.level = max_seen;
+            state.level_angle = angle;
             state.up = None;
             state.down = None;
             return;

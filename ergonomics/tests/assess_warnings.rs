@@ -494,3 +494,99 @@ mod arbitrary_skeletons {
         }
     }
 }
+
+#[test]
+fn messages_are_plain_words_with_the_angle_and_the_advice() {
+    use ergocell_ergonomics::warnings::describe;
+    use ergocell_ergonomics::RulaInput;
+    let i = RulaInput {
+        upper_arm_flexion_deg: 95.4,
+        lower_arm_flexion_deg: 130.0,
+        wrist_flexion_deg: -22.0,
+        wrist_bent_from_midline: true,
+        neck_flexion_deg: -12.0,
+        neck_twisted: true,
+        trunk_flexion_deg: 45.0,
+        ..RulaInput::neutral()
+    };
+    let cases = [
+        (
+            BodyRegion::UpperArm,
+            Some(Side::Right),
+            "Right upper arm raised 95° — lower the work piece or bring it closer",
+        ),
+        (
+            BodyRegion::LowerArm,
+            Some(Side::Left),
+            "Left elbow at 130° — keep the elbow between 60° and 100°: bring the work closer",
+        ),
+        (
+            BodyRegion::Wrist,
+            Some(Side::Right),
+            "Right wrist bent 22° and to the side — straighten the wrist: change the grip or the tool angle (wrist scores are the least reliable part of RULA)",
+        ),
+        (
+            BodyRegion::Neck,
+            None,
+            "Neck bent back 12°, twisted — lower the work piece or bring it in front of you",
+        ),
+        (
+            BodyRegion::Trunk,
+            None,
+            "Trunk bent forward 45° — raise the work or bring it closer",
+        ),
+    ];
+    for (region, side, want) in cases {
+        assert_eq!(describe(region, side, &i), want);
+    }
+}
+
+mod no_flicker {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+        /// Noise smaller than the hysteresis margin around any steady neck angle: at most one event
+        /// (the first raise), never a clear.
+        #[test]
+        fn noise_within_the_margin_never_flickers(
+            base in -30.0..60.0f64,
+            noise in proptest::collection::vec(-2.0..2.0f64, 150),
+        ) {
+            let frames: Vec<(i64, f64)> = noise
+                .iter()
+                .enumerate()
+                .map(|(k, n)| (k as i64 * FRAME, base + n))
+                .collect();
+            let events = run_warnings(&frames);
+            let neck: Vec<_> = events.iter().filter(|e| e.region == BodyRegion::Neck).collect();
+            prop_assert!(neck.len() <= 1, "{:?}", neck);
+            prop_assert!(neck.iter().all(|e| e.kind == WarningKind::Raised));
+        }
+    }
+}
+
+#[test]
+fn an_extension_warning_clears_only_the_margin_past_upright() {
+    let mut frames: Vec<(i64, f64)> = (0..30).map(|k| (k * FRAME, -6.0)).collect();
+    // +3°: flexed, but within 5° of extension → stays.
+    frames.extend((30..80).map(|k| (k * FRAME, 3.0)));
+    // +8°: clears after the dwell.
+    frames.extend((80..130).map(|k| (k * FRAME, 8.0)));
+    let events = run_warnings(&frames);
+    let neck: Vec<_> = events
+        .iter()
+        .filter(|e| e.region == BodyRegion::Neck)
+        .collect();
+    assert_eq!(neck.len(), 2, "{neck:?}");
+    assert_eq!(neck[0].kind, WarningKind::Raised);
+    assert_eq!(neck[0].region_score, 4);
+    assert!(
+        neck[0].message.starts_with("Neck bent back 6°"),
+        "{}",
+        neck[0].message
+    );
+    assert_eq!(neck[1].kind, WarningKind::Cleared);
+    assert_eq!(neck[1].stamp_nanos, 100 * FRAME);
+}
