@@ -5,7 +5,9 @@
 //!   `lock_sha256`: the SHA-256 of the canonical JSON of everything else in the file. Editing any byte of
 //!   the content changes that hash; editing an input changes an input hash.
 //! * An **approvals file** (`trajectories/approvals/<class>.toml`) is append-only: each `[[approval]]`
-//!   records who signed off which `lock_sha256`, and when (UTC, RFC 3339, taken by the binary).
+//!   records who signed off which `lock_sha256`, and when (UTC, RFC 3339, taken by the binary), and the
+//!   SHA-256 of the previous entry, so the file is a hash chain and an edited or removed entry is caught.
+//!   (A signature with a key the engineer holds would be stronger; not implemented yet.)
 //! * [`verify`] checks the lock's own hash, every input hash against the current files, the locked samples
 //!   against the current URDF's limits, and that an approval names exactly this lock hash. Only then does
 //!   it hand out an [`ApprovedTrajectory`], the only thing the controller may send.
@@ -195,7 +197,19 @@ pub struct Approval {
     pub approved_by: String,
     /// RFC 3339 UTC, taken from the clock by the binary.
     pub approved_at_utc: String,
+    /// SHA-256 of the previous entry (canonical JSON), 64 zeros for the first: the file is a hash chain,
+    /// so an edited or removed earlier entry is detected.
+    pub previous_sha256: String,
 }
+
+impl Approval {
+    /// SHA-256 of this entry's canonical JSON (what the next entry's `previous_sha256` records).
+    pub fn entry_sha256(&self) -> String {
+        sha256_hex(&serde_json::to_vec(self).unwrap_or_default())
+    }
+}
+
+const CHAIN_START: &str = "0000000000000000000000000000000000000000000000000000000000000000";
 
 /// An append-only approvals file.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -222,6 +236,23 @@ impl ApprovalsFile {
         ))
     }
 
+    /// Check the hash chain: entry i records the SHA-256 of entry i − 1.
+    pub fn check_chain(&self) -> Result<(), RobotError> {
+        let mut previous = CHAIN_START.to_owned();
+        for (i, entry) in self.approval.iter().enumerate() {
+            if entry.previous_sha256 != previous {
+                return Err(RobotError::Config {
+                    reason: format!(
+                        "approvals hash chain broken at entry {i} (approved by {}): an earlier entry was edited or removed",
+                        entry.approved_by
+                    ),
+                });
+            }
+            previous = entry.entry_sha256();
+        }
+        Ok(())
+    }
+
     /// Append a sign-off of `lock` (which must have passed [`verify_integrity`]).
     pub fn approve(
         &mut self,
@@ -235,11 +266,17 @@ impl ApprovalsFile {
                 reason: "an approval needs the approver's name (--by)".to_owned(),
             });
         }
+        self.check_chain()?;
+        let previous_sha256 = self
+            .approval
+            .last()
+            .map_or_else(|| CHAIN_START.to_owned(), Approval::entry_sha256);
         self.approval.push(Approval {
             class: lock.class,
             lock_sha256: lock.lock_sha256.clone(),
             approved_by: name.to_owned(),
             approved_at_utc: approved_at_utc.to_owned(),
+            previous_sha256,
         });
         Ok(&self.approval[self.approval.len() - 1])
     }
@@ -463,10 +500,12 @@ pub fn verify(inputs: &VerifyInputs<'_>) -> Result<ApprovedTrajectory, VerifyFai
              `ergocell trajectories approve --class {class} --by <name>` after reviewing the lock"
         )));
     };
-    let file = ApprovalsFile::from_toml_str(text).map_err(|e| VerifyFailure {
-        class,
-        problems: vec![e],
-    })?;
+    let file = ApprovalsFile::from_toml_str(text)
+        .and_then(|f| f.check_chain().map(|()| f))
+        .map_err(|e| VerifyFailure {
+            class,
+            problems: vec![e],
+        })?;
     let approvals: Vec<Approval> = file
         .approval
         .iter()

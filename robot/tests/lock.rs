@@ -115,6 +115,19 @@ fn an_approval_in_a_temp_dir_verifies_and_binds_to_exactly_that_hash() {
         "{failure}"
     );
 
+    // A second approval chains to the first; editing the first breaks the chain.
+    approvals
+        .approve(&lock, "Second Engineer", "2026-01-02T00:00:00Z")
+        .unwrap();
+    let chained = approvals.to_toml().unwrap();
+    lock::verify(&inputs(&toml, &current, &s.model, Some(&chained))).unwrap();
+    let forged = chained.replacen("Test Engineer", "Other Person", 1);
+    let failure = lock::verify(&inputs(&toml, &current, &s.model, Some(&forged))).unwrap_err();
+    assert!(
+        failure.to_string().contains("hash chain broken at entry 1"),
+        "{failure}"
+    );
+
     // An empty name is refused.
     assert!(ApprovalsFile::default()
         .approve(&lock, "  ", "2026-01-01T00:00:00Z")
