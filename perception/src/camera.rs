@@ -135,10 +135,24 @@ impl Distortion {
         if self.is_zero() {
             return Some(d);
         }
-        let mut p = d;
+        // Start from OpenCV's first fixed-point iterate (remove tangential part, divide by radial
+        // factor at the distorted point); Newton then converges in two or three steps.
+        let mut p = {
+            let (x, y) = (d.x, d.y);
+            let r2 = x * x + y * y;
+            let radial = 1.0 + r2 * (self.k1 + r2 * (self.k2 + r2 * self.k3));
+            let dx = 2.0 * self.p1 * x * y + self.p2 * (r2 + 2.0 * x * x);
+            let dy = self.p1 * (r2 + 2.0 * y * y) + 2.0 * self.p2 * x * y;
+            if radial.abs() > 1e-6 {
+                Vector2::new((x - dx) / radial, (y - dy) / radial)
+            } else {
+                d
+            }
+        };
         for _ in 0..50 {
             let residual = self.distort(p) - d;
-            if residual.norm() < 1e-12 {
+            // 1e-11 in normalized units is ~1e-8 px for any real lens
+            if residual.norm_squared() < 1e-22 {
                 return Some(p);
             }
             let step = self.distort_jacobian(p).try_inverse()? * residual;

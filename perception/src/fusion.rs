@@ -92,6 +92,9 @@ pub struct FusionEngine {
     method: FusionMethod,
     triangulator: RobustTriangulator,
     paper_cache: HashMap<Vec<u64>, DMatrix<f64>>,
+    /// Per-frame buffers reused across frames (no allocation on the hot path once warm).
+    scratch_obs: FrameObs,
+    scratch_views: Vec<NormalizedView>,
 }
 
 /// Undistorted observations of every landmark in a frame.
@@ -126,6 +129,8 @@ impl FusionEngine {
             method,
             triangulator: RobustTriangulator::default(),
             paper_cache: HashMap::new(),
+            scratch_obs: std::array::from_fn(|_| Vec::new()),
+            scratch_views: Vec::new(),
         })
     }
 
@@ -149,12 +154,23 @@ impl FusionEngine {
     /// Fuses one frame. Landmarks seen by fewer than two usable views are "not observed" (`None`);
     /// errors only for a frame that is malformed as a whole (unknown camera, a camera twice).
     pub fn fuse(&mut self, frame: &Frame2) -> Result<FusedFrame> {
-        let (obs, undistortion_failures, cameras_present) = self.observations(frame)?;
+        let mut obs = std::mem::replace(&mut self.scratch_obs, std::array::from_fn(|_| Vec::new()));
+        let result = self.fuse_with(frame, &mut obs);
+        self.scratch_obs = obs;
+        result
+    }
+
+    fn fuse_with(&mut self, frame: &Frame2, obs: &mut FrameObs) -> Result<FusedFrame> {
+        let (undistortion_failures, cameras_present) = self.observations_into(frame, obs)?;
+        let mut view_of_camera = [usize::MAX; MAX_VIEWS];
+        for (i, v) in frame.views.iter().enumerate() {
+            view_of_camera[v.camera] = i;
+        }
         let mut skeleton = Skeleton3::empty(frame.stamp_nanos);
         let mut rejected_views = 0;
         match self.method {
             FusionMethod::Default => {
-                let mut views = Vec::with_capacity(self.cameras.len());
+                let mut views = std::mem::take(&mut self.scratch_views);
                 for lm in Landmark::ALL {
                     let o = &obs[lm.index()];
                     views.clear();
@@ -172,17 +188,34 @@ impl FusionEngine {
                         continue;
                     };
                     rejected_views += views.len() - t.views_used() as usize;
-                    let used: Vec<Obs> = iter_mask(t.used_mask).map(|i| o[i]).collect();
-                    self.set(&mut skeleton, lm, t.point, &used, frame)?;
+                    let used = Used {
+                        obs: o,
+                        mask: t.used_mask,
+                        frame,
+                        view_of_camera: &view_of_camera,
+                    };
+                    self.set(&mut skeleton, lm, t.point, &used)?;
                 }
+                self.scratch_views = views;
             }
             FusionMethod::Paper => {
-                let per_pair = self.pair_estimates(&obs);
+                let per_pair = self.pair_estimates(obs);
                 if let Some(points) = self.paper_fuse(&per_pair) {
                     for lm in Landmark::ALL {
                         if let Some(p) = points[lm.index()] {
                             let o = &obs[lm.index()];
-                            self.set(&mut skeleton, lm, p, o, frame)?;
+                            let mask = if o.len() >= 64 {
+                                u64::MAX
+                            } else {
+                                (1u64 << o.len()) - 1
+                            };
+                            let used = Used {
+                                obs: o,
+                                mask,
+                                frame,
+                                view_of_camera: &view_of_camera,
+                            };
+                            self.set(&mut skeleton, lm, p, &used)?;
                         }
                     }
                 }
@@ -266,8 +299,18 @@ impl FusionEngine {
     }
 
     fn observations(&self, frame: &Frame2) -> Result<(FrameObs, usize, u64)> {
-        let present = self.check_frame(frame)?;
         let mut obs: FrameObs = std::array::from_fn(|_| Vec::new());
+        let (failures, present) = self.observations_into(frame, &mut obs)?;
+        Ok((obs, failures, present))
+    }
+
+    /// Undistorts every keypoint of the frame into `obs` (cleared first); returns the number of
+    /// keypoints that could not be undistorted and the mask of cameras present.
+    fn observations_into(&self, frame: &Frame2, obs: &mut FrameObs) -> Result<(usize, u64)> {
+        let present = self.check_frame(frame)?;
+        for o in obs.iter_mut() {
+            o.clear();
+        }
         let mut failures = 0;
         for view in &frame.views {
             let camera = &self.rig.cameras()[view.camera];
@@ -283,7 +326,7 @@ impl FusionEngine {
                 }
             }
         }
-        Ok((obs, failures, present))
+        Ok((failures, present))
     }
 
     fn pair_estimates(&self, obs: &FrameObs) -> Vec<[Option<Point3<f64>>; LANDMARK_COUNT]> {
@@ -399,20 +442,20 @@ impl FusionEngine {
         Some(out)
     }
 
+    /// Stores a fused landmark with its exact reprojection error through the full (distorted) camera
+    /// model, over the observations that were used.
     fn set(
         &self,
         skeleton: &mut Skeleton3,
         lm: Landmark,
         p: Point3<f64>,
-        used: &[Obs],
-        frame: &Frame2,
+        used: &Used<'_>,
     ) -> Result<()> {
-        // Exact reprojection error through the full (distorted) camera model.
         let mut sq = 0.0;
         let mut n = 0u32;
         let mut conf = 0.0;
-        for o in used {
-            let Some(view) = frame.views.iter().find(|v| v.camera == o.camera) else {
+        for o in iter_mask(used.mask).filter_map(|i| used.obs.get(i)) {
+            let Some(view) = used.frame.views.get(used.view_of_camera[o.camera]) else {
                 continue;
             };
             let Some(k) = view.get(lm) else { continue };
@@ -435,6 +478,16 @@ impl FusionEngine {
             .set(lm, Some(estimate))
             .map_err(|e| PerceptionError::Unsupported(format!("fused landmark rejected: {e}")))
     }
+}
+
+/// The observations of one landmark that a fused estimate used.
+struct Used<'a> {
+    obs: &'a [Obs],
+    /// Bit `i`: `obs[i]` was used.
+    mask: u64,
+    frame: &'a Frame2,
+    /// Index into `frame.views` of each camera's view.
+    view_of_camera: &'a [usize; MAX_VIEWS],
 }
 
 /// `(L̃ᵀL̃)⁻¹L̃ᵀ` for one topology: rows are the `n` observed landmarks then the `m` cameras.

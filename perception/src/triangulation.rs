@@ -20,7 +20,7 @@
 //!    up in front of every camera they use (cheirality); a view that puts the point behind it is dropped.
 
 use nalgebra::{
-    Cholesky, Matrix3, Matrix3x4, Matrix4, Point2, Point3, RowVector4, Vector2, Vector3, Vector4,
+    Matrix3, Matrix3x4, Matrix4, Point2, Point3, RowVector4, Vector2, Vector3, Vector4,
 };
 
 use crate::error::{PerceptionError, Result};
@@ -321,6 +321,13 @@ impl RobustTriangulator {
         mask: u64,
         start: Point3<f64>,
     ) -> Result<Point3<f64>> {
+        // σ of each view at the starting depth (depths change by millimetres during refinement, σ by
+        // far less than its own uncertainty): computed once, not per iteration.
+        let mut sigma = [Vector2::zeros(); MAX_VIEWS];
+        for i in iter_mask(mask) {
+            let z = depth(&views[i], &start);
+            sigma[i] = self.sigma_normalized(&views[i], if z > 1e-9 { z } else { 1.0 });
+        }
         let mut x = start;
         for _ in 0..self.iterations {
             let mut h = Matrix3::zeros();
@@ -332,38 +339,39 @@ impl RobustTriangulator {
                     continue;
                 }
                 let inv_z = 1.0 / pc.z;
-                let s = self.sigma_normalized(v, pc.z);
+                let (sx, sy) = (1.0 / sigma[i].x, 1.0 / sigma[i].y);
                 let r = Vector2::new(
-                    (pc.x * inv_z - v.normalized.x) / s.x,
-                    (pc.y * inv_z - v.normalized.y) / s.y,
+                    (pc.x * inv_z - v.normalized.x) * sx,
+                    (pc.y * inv_z - v.normalized.y) * sy,
                 );
-                let norm = r.norm();
-                let huber = if norm > self.huber_sigmas {
-                    self.huber_sigmas / norm
+                let norm2 = r.norm_squared();
+                let huber = if norm2 > self.huber_sigmas * self.huber_sigmas {
+                    self.huber_sigmas / norm2.sqrt()
                 } else {
                     1.0
                 };
                 let w = v.confidence * huber;
-                // d(whitened residual)/d(p_camera); σ is held fixed within an iteration (IRLS)
+                // d(whitened residual)/d(p_camera)
                 let jp = nalgebra::Matrix2x3::new(
-                    inv_z / s.x,
+                    inv_z * sx,
                     0.0,
-                    -pc.x * inv_z * inv_z / s.x,
+                    -pc.x * inv_z * inv_z * sx,
                     0.0,
-                    inv_z / s.y,
-                    -pc.y * inv_z * inv_z / s.y,
+                    inv_z * sy,
+                    -pc.y * inv_z * inv_z * sy,
                 );
                 let j = jp * v.R_camera_world;
-                h += j.transpose() * j * w;
-                g += j.transpose() * r * w;
+                let jw = j.transpose() * w;
+                h += jw * j;
+                g += jw * r;
             }
-            let chol = well_conditioned_cholesky(h)?;
-            let step = chol.solve(&g);
+            let step = solve_normal3(&h, &g)?;
             x -= step;
             if !x.coords.iter().all(|c| c.is_finite()) {
                 return Err(PerceptionError::Degenerate);
             }
-            if step.norm() < 1e-10 {
+            // 1 µm: three orders of magnitude below any body landmark's accuracy
+            if step.norm_squared() < 1e-12 {
                 break;
             }
         }
@@ -401,8 +409,7 @@ impl RobustTriangulator {
                     atb += row.transpose() * rhs;
                 }
             }
-            let chol = well_conditioned_cholesky(ata)?;
-            let p = Point3::from(chol.solve(&atb));
+            let p = Point3::from(solve_normal3(&ata, &atb)?);
             if !p.coords.iter().all(|x| x.is_finite()) {
                 return Err(PerceptionError::Degenerate);
             }
@@ -412,19 +419,33 @@ impl RobustTriangulator {
     }
 }
 
-/// Cholesky of a 3×3 normal matrix, refusing a (numerically) rank-deficient one: parallel rays or a
-/// single camera position give no depth, and a solve would return garbage instead of an error.
-fn well_conditioned_cholesky(m: Matrix3<f64>) -> Result<Cholesky<f64, nalgebra::U3>> {
-    let chol = Cholesky::new(m).ok_or(PerceptionError::Degenerate)?;
-    let d = chol.l_dirty().diagonal();
-    let (lo, hi) = d.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), x| {
-        (lo.min(x.abs()), hi.max(x.abs()))
-    });
-    // pivots are squares of the diagonal: a pivot ratio below 1e-12 means condition number > 1e12
-    if lo * lo < 1e-12 * hi * hi {
+/// Solves `m x = b` for a symmetric positive semi-definite 3×3 normal matrix by its adjugate,
+/// refusing a (numerically) rank-deficient one: parallel rays or a single camera position give no
+/// depth, and a solve would return garbage instead of an error.
+fn solve_normal3(m: &Matrix3<f64>, b: &Vector3<f64>) -> Result<Vector3<f64>> {
+    let (a, bb, c, d, e, f) = (
+        m[(0, 0)],
+        m[(0, 1)],
+        m[(0, 2)],
+        m[(1, 1)],
+        m[(1, 2)],
+        m[(2, 2)],
+    );
+    // cofactors of the symmetric matrix [a bb c; bb d e; c e f]
+    let c00 = d * f - e * e;
+    let c01 = c * e - bb * f;
+    let c02 = bb * e - c * d;
+    let c11 = a * f - c * c;
+    let c12 = bb * c - a * e;
+    let c22 = a * d - bb * bb;
+    let det = a * c00 + bb * c01 + c * c02;
+    // det / (product of the diagonal) ≤ 1 for a PSD matrix; tiny means (near) singular
+    let scale = a * d * f;
+    if !(det.is_finite() && scale.is_finite()) || scale <= 0.0 || det <= 1e-12 * scale {
         return Err(PerceptionError::Degenerate);
     }
-    Ok(chol)
+    let inv = Matrix3::new(c00, c01, c02, c01, c11, c12, c02, c12, c22) / det;
+    Ok(inv * b)
 }
 
 fn depth(v: &NormalizedView, p: &Point3<f64>) -> f64 {

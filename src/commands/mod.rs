@@ -12,7 +12,7 @@ pub struct UsageError(pub String);
 
 /// Exit code for an error: 2 for bad input, 1 for everything else.
 pub fn exit_code(err: &anyhow::Error) -> u8 {
-    if err.chain().any(|e| e.is::<UsageError>()) {
+    if err.chain().any(<dyn std::error::Error>::is::<UsageError>) {
         2
     } else {
         1
