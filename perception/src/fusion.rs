@@ -25,6 +25,7 @@ use std::collections::HashMap;
 use ergocell_skeleton::{Landmark, LandmarkEstimate, Skeleton3, LANDMARK_COUNT};
 use nalgebra::{DMatrix, Matrix3, Matrix3x4, Point2, Point3, Vector2, Vector3};
 
+use crate::body_prior::{BonePrior, BonePriorParams};
 use crate::detections::Frame2;
 use crate::error::{PerceptionError, Result};
 use crate::rig::CameraRig;
@@ -95,6 +96,8 @@ pub struct FusionEngine {
     /// Per-frame buffers reused across frames (no allocation on the hot path once warm).
     scratch_obs: FrameObs,
     scratch_views: Vec<NormalizedView>,
+    /// The learned-bone-length prior of the default fusion (`None`: per-frame geometry only).
+    bone_prior: Option<BonePrior>,
 }
 
 /// Undistorted observations of every landmark in a frame.
@@ -131,6 +134,7 @@ impl FusionEngine {
             paper_cache: HashMap::new(),
             scratch_obs: std::array::from_fn(|_| Vec::new()),
             scratch_views: Vec::new(),
+            bone_prior: Some(BonePrior::new(BonePriorParams::default())),
         })
     }
 
@@ -139,6 +143,20 @@ impl FusionEngine {
     pub fn with_triangulator(mut self, triangulator: RobustTriangulator) -> Self {
         self.triangulator = triangulator;
         self
+    }
+
+    /// Sets (or with `None` removes) the default fusion's bone-length prior; starts it afresh.
+    #[must_use]
+    pub fn with_bone_prior(mut self, params: Option<BonePriorParams>) -> Self {
+        self.bone_prior = params.map(BonePrior::new);
+        self
+    }
+
+    /// Forgets what was learned about the current operator (a new session).
+    pub fn reset_operator(&mut self) {
+        if let Some(p) = self.bone_prior.as_mut() {
+            p.reset();
+        }
     }
 
     /// The rig.
@@ -171,6 +189,9 @@ impl FusionEngine {
         match self.method {
             FusionMethod::Default => {
                 let mut views = std::mem::take(&mut self.scratch_views);
+                let mut points = [None; LANDMARK_COUNT];
+                let mut information = [Matrix3::zeros(); LANDMARK_COUNT];
+                let mut masks = [0u64; LANDMARK_COUNT];
                 for lm in Landmark::ALL {
                     let o = &obs[lm.index()];
                     views.clear();
@@ -188,13 +209,25 @@ impl FusionEngine {
                         continue;
                     };
                     rejected_views += views.len() - t.views_used() as usize;
+                    points[lm.index()] = Some(t.point);
+                    information[lm.index()] = t.information;
+                    masks[lm.index()] = t.used_mask;
+                }
+                if let Some(prior) = self.bone_prior.as_mut() {
+                    prior.observe(&points);
+                    prior.refine(&mut points, &information);
+                }
+                for lm in Landmark::ALL {
+                    let Some(p) = points[lm.index()] else {
+                        continue;
+                    };
                     let used = Used {
-                        obs: o,
-                        mask: t.used_mask,
+                        obs: &obs[lm.index()],
+                        mask: masks[lm.index()],
                         frame,
                         view_of_camera: &view_of_camera,
                     };
-                    self.set(&mut skeleton, lm, t.point, &used)?;
+                    self.set(&mut skeleton, lm, p, &used)?;
                 }
                 self.scratch_views = views;
             }

@@ -8,12 +8,14 @@
 //! - [`rig_file`]: ergocell's rig TOML, Anipose/Pose2Sim and caliscope calibration import.
 //! - [`detections`], [`import`]: 2D keypoints (BlazePose-33 order), OpenPose JSON and caliscope CSV.
 //! - [`triangulation`]: the paper's DLT (SVD) and the robust N-view triangulator.
-//! - [`fusion`]: the paper's graph-Laplacian fusion (baseline) and ergocell's default fusion.
+//! - [`fusion`]: the paper's graph-Laplacian fusion (baseline) and ergocell's default fusion;
+//!   [`body_prior`]: the learned-bone-length prior the default fusion adds.
 //! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter.
 //! - [`metrics`], [`landmarks_file`]: bone-length consistency and the 3D output formats.
 //!
 //! No I/O: callers pass file contents and get text back. Knows nothing of ROS or the robot.
 
+pub mod body_prior;
 pub mod camera;
 pub mod detections;
 pub mod error;

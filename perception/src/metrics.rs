@@ -18,6 +18,9 @@ pub struct BoneStats {
     pub cv_percent: f64,
 }
 
+/// A bone: its two end landmarks.
+pub type Bone = (Landmark, Landmark);
+
 /// Length statistics of every bone (bones seen in fewer than 2 frames are left out).
 pub fn bone_stats(frames: &[Skeleton3]) -> Vec<BoneStats> {
     BONES
@@ -49,6 +52,36 @@ pub fn bone_length_variation_percent(frames: &[Skeleton3]) -> Option<f64> {
     let stats = bone_stats(frames);
     (!stats.is_empty())
         .then(|| stats.iter().map(|s| s.cv_percent).sum::<f64>() / stats.len() as f64)
+}
+
+/// Bone-length variation of several reconstructions of the same recording, compared fairly: the
+/// mean is taken over the bones that **every** reconstruction observed (a method that never sees
+/// the lower legs must not look better for leaving out the hardest bones). Returns the bones used and
+/// one mean per reconstruction (`None` when no bone is common to all).
+pub fn common_bone_variation_percent(
+    recordings: &[&[Skeleton3]],
+) -> Option<(Vec<Bone>, Vec<f64>)> {
+    let stats: Vec<Vec<BoneStats>> = recordings.iter().map(|r| bone_stats(r)).collect();
+    let common: Vec<Bone> = BONES
+        .iter()
+        .copied()
+        .filter(|bone| stats.iter().all(|st| st.iter().any(|b| b.bone == *bone)))
+        .collect();
+    if common.is_empty() {
+        return None;
+    }
+    let means = stats
+        .iter()
+        .map(|st| {
+            let used: Vec<f64> = st
+                .iter()
+                .filter(|b| common.contains(&b.bone))
+                .map(|b| b.cv_percent)
+                .collect();
+            used.iter().sum::<f64>() / used.len() as f64
+        })
+        .collect();
+    Some((common, means))
 }
 
 /// Median of a list (`None` when empty); NaNs are ignored.

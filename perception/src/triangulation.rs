@@ -172,6 +172,10 @@ pub struct Triangulated {
     pub used_mask: u64,
     /// Mean detector confidence of the kept views.
     pub mean_confidence: f64,
+    /// Information matrix of `point` (inverse covariance, m⁻²) under the noise model: `JᵀWJ` of the
+    /// last Gauss–Newton step. Depth along narrow-baseline rays is weakly constrained; this says how
+    /// weakly, per direction.
+    pub information: Matrix3<f64>,
 }
 
 impl Triangulated {
@@ -244,7 +248,8 @@ impl RobustTriangulator {
             });
         }
         let mut point = self.linear_estimate(views, mask)?;
-        point = self.refine(views, mask, point)?;
+        let mut information;
+        (point, information) = self.refine(views, mask, point)?;
         // Cheirality: a view that puts the point behind its camera is dropped.
         loop {
             let behind = iter_mask(mask).find(|&i| depth(&views[i], &point) <= 0.0);
@@ -256,7 +261,7 @@ impl RobustTriangulator {
                 });
             }
             point = self.linear_estimate(views, mask)?;
-            point = self.refine(views, mask, point)?;
+            (point, information) = self.refine(views, mask, point)?;
         }
         // Greedy outlier-view rejection.
         while mask.count_ones() > 2 {
@@ -276,7 +281,7 @@ impl RobustTriangulator {
                 break;
             }
             mask &= !(1 << worst);
-            point = self.refine(views, mask, point)?;
+            (point, information) = self.refine(views, mask, point)?;
         }
         let (mut sq, mut conf) = (0.0, 0.0);
         for i in iter_mask(mask) {
@@ -290,6 +295,7 @@ impl RobustTriangulator {
             rms_px: (sq / n).sqrt(),
             used_mask: mask,
             mean_confidence: conf / n,
+            information,
         })
     }
 
@@ -320,7 +326,7 @@ impl RobustTriangulator {
         views: &[NormalizedView],
         mask: u64,
         start: Point3<f64>,
-    ) -> Result<Point3<f64>> {
+    ) -> Result<(Point3<f64>, Matrix3<f64>)> {
         // σ of each view at the starting depth (depths change by millimetres during refinement, σ by
         // far less than its own uncertainty): computed once, not per iteration.
         let mut sigma = [Vector2::zeros(); MAX_VIEWS];
@@ -329,6 +335,7 @@ impl RobustTriangulator {
             sigma[i] = self.sigma_normalized(&views[i], if z > 1e-9 { z } else { 1.0 });
         }
         let mut x = start;
+        let mut information = Matrix3::zeros();
         for _ in 0..self.iterations {
             let mut h = Matrix3::zeros();
             let mut g = Vector3::zeros();
@@ -366,6 +373,7 @@ impl RobustTriangulator {
                 g += jw * r;
             }
             let step = solve_normal3(&h, &g)?;
+            information = h;
             x -= step;
             if !x.coords.iter().all(|c| c.is_finite()) {
                 return Err(PerceptionError::Degenerate);
@@ -375,7 +383,7 @@ impl RobustTriangulator {
                 break;
             }
         }
-        Ok(x)
+        Ok((x, information))
     }
 
     /// Weighted linear least squares in normalized coordinates (inhomogeneous DLT): each view's rows

@@ -126,3 +126,23 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, .. ProptestConfig::default() })]
+
+    /// With the bone-length prior active (after its warm-up), exact data stays exact: a rigid body
+    /// moving through the cell has every bone at its learned length, so nothing is pulled.
+    #[test]
+    fn default_fusion_stays_exact_once_the_bone_prior_is_active(rig in rig_strategy(), points in skeleton_strategy()) {
+        let mut engine = FusionEngine::new(rig.clone(), FusionMethod::Default).unwrap();
+        for k in 0..15 {
+            let shift = Vector3::new(0.01 * f64::from(k), -0.005 * f64::from(k), 0.0);
+            let moved: [Point3<f64>; LANDMARK_COUNT] = std::array::from_fn(|i| points[i] + shift);
+            let fused = engine.fuse(&project_all(&rig, &moved)).unwrap();
+            for lm in Landmark::ALL {
+                let p = fused.skeleton.position(lm).unwrap();
+                prop_assert!((p - moved[lm.index()]).norm() < 1e-8, "frame {k} {lm}: error {}", (p - moved[lm.index()]).norm());
+            }
+        }
+    }
+}

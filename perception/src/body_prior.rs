@@ -1,0 +1,250 @@
+//! A body-model prior for fusion: the operator's bones do not change length during a session.
+//!
+//! Each landmark triangulated by the [`crate::triangulation::RobustTriangulator`] comes with an
+//! information matrix `Λ` that says how well the cameras pin it down in each direction — for a point
+//! seen along nearly parallel rays, depth is poorly known. The skeleton knows more: the distance
+//! between shoulder and elbow is the same in every frame. This module learns each rigid bone's length
+//! causally (the median of the lengths triangulated so far in the session, before any correction) and
+//! then, per frame, solves
+//!
+//! `min Σ_i (x_i − x̂_i)ᵀ Λ_i (x_i − x̂_i) + Σ_bones (‖x_a − x_b‖ − L_ab)² / σ_L²`
+//!
+//! by block Gauss–Seidel (each landmark's 3×3 Gauss–Newton step with its neighbours fixed, a few
+//! sweeps). Directions the cameras measure well hardly move; poorly measured directions are pulled
+//! to a configuration with consistent bone lengths. With exact measurements every bone already has its
+//! learned length and nothing moves. Causal (uses only past and present frames) and deterministic.
+//!
+//! This is the anthropometric-model step that marker-less motion capture pipelines perform offline
+//! (scaled rigid-segment models in OpenSim inverse kinematics), done online and softly.
+
+use std::collections::VecDeque;
+
+use ergocell_skeleton::{BONES, LANDMARK_COUNT};
+use nalgebra::{Matrix3, Point3, Vector3};
+
+/// Settings of the bone-length prior.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BonePriorParams {
+    /// Standard deviation of a bone's length about its learned value, metres (how much the joint
+    /// centres a detector reports may wander along the bone).
+    pub sigma_m: f64,
+    /// Lengths needed before a bone's prior is used.
+    pub min_samples: usize,
+    /// Most recent lengths kept per bone (the median is over these).
+    pub window: usize,
+    /// Gauss–Seidel sweeps per frame.
+    pub sweeps: usize,
+}
+
+impl Default for BonePriorParams {
+    /// 1.5 cm about the median of the last 600 frames (20 s at 30 Hz), used from the 10th frame on.
+    fn default() -> Self {
+        Self {
+            sigma_m: 0.015,
+            min_samples: 10,
+            window: 600,
+            sweeps: 6,
+        }
+    }
+}
+
+/// The learned bone lengths of the current operator and the per-frame refinement.
+#[derive(Debug, Clone)]
+pub struct BonePrior {
+    params: BonePriorParams,
+    /// Per bone: lengths in arrival order, and the same lengths sorted (for the median).
+    history: Vec<(VecDeque<f64>, Vec<f64>)>,
+}
+
+impl BonePrior {
+    /// A prior with no history.
+    pub fn new(params: BonePriorParams) -> Self {
+        Self {
+            params,
+            history: vec![(VecDeque::new(), Vec::new()); BONES.len()],
+        }
+    }
+
+    /// Forgets the learned lengths (a new operator).
+    pub fn reset(&mut self) {
+        for (order, sorted) in &mut self.history {
+            order.clear();
+            sorted.clear();
+        }
+    }
+
+    /// The learned length of bone `b` (index into [`BONES`]), once enough frames were seen.
+    pub fn length_m(&self, b: usize) -> Option<f64> {
+        let (_, sorted) = self.history.get(b)?;
+        if sorted.len() < self.params.min_samples.max(1) {
+            return None;
+        }
+        let m = sorted.len() / 2;
+        Some(if sorted.len().is_multiple_of(2) {
+            0.5 * (sorted[m - 1] + sorted[m])
+        } else {
+            sorted[m]
+        })
+    }
+
+    /// Adds this frame's (uncorrected) bone lengths to the history.
+    pub fn observe(&mut self, points: &[Option<Point3<f64>>; LANDMARK_COUNT]) {
+        for (b, (a, c)) in BONES.iter().enumerate() {
+            let (Some(pa), Some(pc)) = (points[a.index()], points[c.index()]) else {
+                continue;
+            };
+            let l = (pa - pc).norm();
+            if !l.is_finite() {
+                continue;
+            }
+            let (order, sorted) = &mut self.history[b];
+            order.push_back(l);
+            let at = sorted.partition_point(|x| *x < l);
+            sorted.insert(at, l);
+            if order.len() > self.params.window {
+                if let Some(old) = order.pop_front() {
+                    if let Some(i) = sorted.iter().position(|x| *x == old) {
+                        sorted.remove(i);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Pulls the frame's landmarks towards consistent bone lengths, each by how little its cameras
+    /// constrain it (`information[i]` is landmark `i`'s information matrix). Landmarks without an
+    /// estimate, and bones without a learned length, are left alone.
+    pub fn refine(
+        &self,
+        points: &mut [Option<Point3<f64>>; LANDMARK_COUNT],
+        information: &[Matrix3<f64>; LANDMARK_COUNT],
+    ) {
+        let lengths: Vec<Option<f64>> = (0..BONES.len()).map(|b| self.length_m(b)).collect();
+        if lengths.iter().all(Option::is_none) {
+            return;
+        }
+        let measured = *points;
+        let w = 1.0 / (self.params.sigma_m * self.params.sigma_m);
+        for _ in 0..self.params.sweeps {
+            for i in 0..LANDMARK_COUNT {
+                let (Some(x), Some(x_hat)) = (points[i], measured[i]) else {
+                    continue;
+                };
+                let mut h = information[i];
+                let mut g = information[i] * (x - x_hat);
+                let mut constrained = false;
+                for (b, (a, c)) in BONES.iter().enumerate() {
+                    let other = if a.index() == i {
+                        c.index()
+                    } else if c.index() == i {
+                        a.index()
+                    } else {
+                        continue;
+                    };
+                    let (Some(l), Some(y)) = (lengths[b], points[other]) else {
+                        continue;
+                    };
+                    let d: Vector3<f64> = x - y;
+                    let n = d.norm();
+                    if n < 1e-6 {
+                        continue;
+                    }
+                    let u = d / n;
+                    h += u * u.transpose() * w;
+                    g += u * ((n - l) * w);
+                    constrained = true;
+                }
+                if !constrained {
+                    continue;
+                }
+                if let Some(inv) = h.try_inverse() {
+                    let step = inv * g;
+                    if step.iter().all(|s| s.is_finite()) {
+                        points[i] = Some(x - step);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ergocell_skeleton::Landmark;
+
+    fn arm(elbow_x: f64) -> [Option<Point3<f64>>; LANDMARK_COUNT] {
+        let mut p = [None; LANDMARK_COUNT];
+        p[Landmark::LeftShoulder.index()] = Some(Point3::new(0.0, 0.0, 1.4));
+        p[Landmark::LeftElbow.index()] = Some(Point3::new(elbow_x, 0.0, 1.1));
+        p
+    }
+
+    #[test]
+    fn exact_data_is_left_unchanged() {
+        let mut prior = BonePrior::new(BonePriorParams {
+            min_samples: 3,
+            ..BonePriorParams::default()
+        });
+        for _ in 0..5 {
+            prior.observe(&arm(0.0));
+        }
+        assert!((prior.length_m(0).unwrap() - 0.3).abs() < 1e-12);
+        let mut p = arm(0.0);
+        let info = [Matrix3::identity() * 1e4; LANDMARK_COUNT];
+        prior.refine(&mut p, &info);
+        assert_eq!(p, arm(0.0));
+    }
+
+    #[test]
+    fn a_weakly_measured_direction_is_pulled_to_the_learned_length() {
+        let mut prior = BonePrior::new(BonePriorParams {
+            min_samples: 3,
+            ..BonePriorParams::default()
+        });
+        for _ in 0..5 {
+            prior.observe(&arm(0.0));
+        }
+        // the elbow came out 10 cm off along x (say the depth of its cameras): bone 0.316 m long
+        let mut p = arm(0.1);
+        // well measured in y and z, barely in x; the shoulder is well measured in every direction
+        let mut info = [Matrix3::identity() * 1e6; LANDMARK_COUNT];
+        info[Landmark::LeftElbow.index()] = Matrix3::from_diagonal(&Vector3::new(1.0, 1e6, 1e6));
+        prior.refine(&mut p, &info);
+        let elbow = p[Landmark::LeftElbow.index()].unwrap();
+        let shoulder = p[Landmark::LeftShoulder.index()].unwrap();
+        assert!(
+            ((elbow - shoulder).norm() - 0.3).abs() < 1e-3,
+            "length {}",
+            (elbow - shoulder).norm()
+        );
+        // from 10 cm to under 2 cm along the weak direction; the well-measured ones stay put
+        assert!(
+            elbow.x.abs() < 0.02,
+            "moved along the weak direction: {elbow}"
+        );
+        assert!(
+            (elbow.z - 1.1).abs() < 1e-5 && elbow.y.abs() < 1e-9,
+            "{elbow}"
+        );
+        assert!(
+            (shoulder - Point3::new(0.0, 0.0, 1.4)).norm() < 1e-3,
+            "well-measured shoulder stays"
+        );
+    }
+
+    #[test]
+    fn the_median_follows_a_sliding_window() {
+        let mut prior = BonePrior::new(BonePriorParams {
+            min_samples: 1,
+            window: 3,
+            ..BonePriorParams::default()
+        });
+        for x in [0.0, 0.0, 0.0, 0.4, 0.4] {
+            prior.observe(&arm(x));
+        }
+        // window holds lengths for x = 0.0, 0.4, 0.4 → median is the x = 0.4 length
+        assert!((prior.length_m(0).unwrap() - 0.5).abs() < 1e-12);
+        assert_eq!(prior.length_m(3), None);
+    }
+}
