@@ -1,0 +1,230 @@
+//! `ergocell triangulate` end to end: OpenPose folders (BODY_25, two people in view) through the
+//! reference cell's rig, and caliscope's real recording; malformed input exits with code 2.
+
+// Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
+use ergocell_perception::rig_file::parse_rig;
+use ergocell_perception::{CameraRig, KeypointFormat};
+use ergocell_skeleton::{Landmark, LANDMARK_COUNT};
+use nalgebra::{Point3, Vector3};
+
+fn repo() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let p = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&p);
+    p
+}
+
+fn ergocell(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn reference_rig() -> CameraRig {
+    let text = std::fs::read_to_string(repo().join("config/rig.toml")).unwrap();
+    parse_rig(&text, "config/rig.toml").unwrap().0
+}
+
+/// A standing body at the station (x forward, z up), shifted by `offset`.
+fn body(offset: Vector3<f64>) -> [Point3<f64>; LANDMARK_COUNT] {
+    std::array::from_fn(|i| {
+        let lm = Landmark::ALL[i];
+        let side = if lm.name().starts_with("left") {
+            1.0
+        } else if lm.name().starts_with("right") {
+            -1.0
+        } else {
+            0.0
+        };
+        let z = match lm {
+            Landmark::LeftShoulder | Landmark::RightShoulder => 1.42,
+            Landmark::LeftElbow | Landmark::RightElbow => 1.10,
+            Landmark::LeftWrist | Landmark::RightWrist => 0.85,
+            Landmark::LeftHip | Landmark::RightHip => 0.92,
+            Landmark::LeftKnee | Landmark::RightKnee => 0.50,
+            Landmark::LeftAnkle | Landmark::RightAnkle => 0.07,
+            Landmark::LeftHeel | Landmark::RightHeel => 0.03,
+            Landmark::LeftFootIndex | Landmark::RightFootIndex => 0.02,
+            _ => 1.60 + 0.002 * i as f64,
+        };
+        let y = side * if z < 1.0 && z > 0.3 { 0.1 } else { 0.18 };
+        let x = if matches!(lm, Landmark::LeftFootIndex | Landmark::RightFootIndex) {
+            0.15
+        } else {
+            0.01 * (i % 3) as f64
+        };
+        Point3::new(x, y, z) + offset
+    })
+}
+
+fn write_openpose(
+    dir: &Path,
+    rig: &CameraRig,
+    frames: usize,
+) -> Vec<[Point3<f64>; LANDMARK_COUNT]> {
+    let mapping = KeypointFormat::Body25.mapping();
+    let mut truth = Vec::new();
+    for k in 0..frames {
+        let operator = body(Vector3::new(0.0, 0.02 * k as f64, 0.0));
+        let bystander = body(Vector3::new(-0.6, 1.2, 0.0));
+        for (c, cam) in rig.cameras().iter().enumerate() {
+            let folder = dir.join(format!("{}_json", cam.id));
+            std::fs::create_dir_all(&folder).unwrap();
+            let person = |pts: &[Point3<f64>; LANDMARK_COUNT], conf: f64| {
+                let values: Vec<String> = mapping
+                    .iter()
+                    .flat_map(
+                        |lm| match lm.and_then(|lm| cam.project(&pts[lm.index()]).ok()) {
+                            Some(px) => vec![
+                                format!("{:.4}", px.x),
+                                format!("{:.4}", px.y),
+                                format!("{conf}"),
+                            ],
+                            None => vec!["0".into(), "0".into(), "0".into()],
+                        },
+                    )
+                    .collect();
+                format!(
+                    "{{\"person_id\":[-1],\"pose_keypoints_2d\":[{}]}}",
+                    values.join(",")
+                )
+            };
+            // the bystander is listed first in some cameras and is less confident
+            let people = if c % 2 == 0 {
+                format!("[{},{}]", person(&bystander, 0.5), person(&operator, 0.9))
+            } else {
+                format!("[{},{}]", person(&operator, 0.9), person(&bystander, 0.5))
+            };
+            std::fs::write(
+                folder.join(format!("frame_{k:06}_keypoints.json")),
+                format!("{{\"version\":1.3,\"people\":{people}}}"),
+            )
+            .unwrap();
+        }
+        truth.push(operator);
+    }
+    truth
+}
+
+#[test]
+fn openpose_body25_folders_triangulate_to_the_true_body_and_ignore_the_bystander() {
+    let rig = reference_rig();
+    let dir = tmp("openpose_body25");
+    let truth = write_openpose(&dir, &rig, 6);
+    let out = dir.join("out.trc");
+    let (code, stdout, stderr) = ergocell(&[
+        "triangulate",
+        "--calibration",
+        repo().join("config/rig.toml").to_str().unwrap(),
+        "--detections",
+        dir.to_str().unwrap(),
+        "--keypoints",
+        "body_25",
+        "--rate-hz",
+        "10",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stdout}\n{stderr}");
+    assert!(stdout.contains("frames:                   6"), "{stdout}");
+    let frames = read_landmarks(
+        &std::fs::read_to_string(&out).unwrap(),
+        LandmarksFormat::Trc,
+        "out.trc",
+    )
+    .unwrap();
+    assert_eq!(frames.len(), 6);
+    let mut compared = 0;
+    for (skeleton, truth) in frames.iter().zip(&truth) {
+        for lm in KeypointFormat::Body25.mapping().iter().flatten() {
+            let p = skeleton
+                .position(*lm)
+                .unwrap_or_else(|| panic!("{lm} missing"));
+            // pixels were written with 4 decimals and the TRC with 6: sub-millimetre agreement
+            assert!(
+                (p - truth[lm.index()]).norm() < 1e-3,
+                "{lm}: {p} vs {}",
+                truth[lm.index()]
+            );
+            compared += 1;
+        }
+        assert!(
+            skeleton.position(Landmark::LeftPinky).is_none(),
+            "BODY_25 has no pinky: nothing is made up"
+        );
+    }
+    assert_eq!(compared, 6 * 21);
+}
+
+#[test]
+fn caliscope_recording_gives_a_summary_and_json() {
+    let data = repo().join("../shared/data/caliscope-4cam");
+    let out = tmp("caliscope_out").with_extension("json");
+    let (code, stdout, stderr) = ergocell(&[
+        "triangulate",
+        "--calibration",
+        data.join("config.toml").to_str().unwrap(),
+        "--detections",
+        data.join("xy_pose33.csv").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stdout}\n{stderr}");
+    assert!(stdout.contains("frames:                   267"), "{stdout}");
+    assert!(stdout.contains("median reprojection err:"), "{stdout}");
+    assert!(stdout.contains("bone-length variation:"), "{stdout}");
+    let frames = read_landmarks(
+        &std::fs::read_to_string(&out).unwrap(),
+        LandmarksFormat::Json,
+        "out.json",
+    )
+    .unwrap();
+    assert_eq!(frames.len(), 267);
+}
+
+#[test]
+fn malformed_calibration_and_unknown_output_format_exit_with_code_2() {
+    let dir = tmp("bad_calibration");
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("calib.toml");
+    let text = std::fs::read_to_string(repo().join("config/rig.toml"))
+        .unwrap()
+        .replacen("fx = ", "fx = nan # ", 1);
+    std::fs::write(&bad, text).unwrap();
+    let (code, _, stderr) = ergocell(&[
+        "triangulate",
+        "--calibration",
+        bad.to_str().unwrap(),
+        "--detections",
+        dir.to_str().unwrap(),
+        "--out",
+        "x.trc",
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("calib.toml"), "{stderr}");
+    let (code, _, stderr) = ergocell(&[
+        "triangulate",
+        "--calibration",
+        repo().join("config/rig.toml").to_str().unwrap(),
+        "--detections",
+        dir.to_str().unwrap(),
+        "--out",
+        "x.xlsx",
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+}
