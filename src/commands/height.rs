@@ -1,7 +1,7 @@
 //! `ergocell height`: the operator's stature and height class from a 3D landmark recording.
 //!
 //! ```text
-//! ergocell height --landmarks frames.json [--up 0,0,1] [--floor-height-m 0] [--c1-below-m 1.68]
+//! ergocell height --landmarks frames.json [--up x,y,z | --rig config/rig.toml] [--floor-height-m 0] [--c1-below-m 1.68]
 //!                 [--c2-up-to-m 1.82] [--json]
 //! ```
 //!
@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use ergocell_ergonomics::height::{ClassThresholds, DecisionBasis, HeightEstimate};
 use ergocell_ergonomics::{HeightConfig, HeightEstimator, HeightStatus, UpVector};
 
-use super::rula::{parse_up, read_skeletons};
+use super::rula::{parse_up, read_skeletons, resolve_up};
 use super::UsageError;
 
 /// Arguments of `ergocell height`.
@@ -22,9 +22,12 @@ pub struct Args {
     /// 3D landmark file from `ergocell triangulate` (.json, .csv or .trc).
     #[arg(long)]
     pub landmarks: PathBuf,
-    /// The world's up vector in the file's frame, `x,y,z` (default: the cell frame's z-up).
-    #[arg(long, value_parser = parse_up, default_value = "0,0,1", allow_hyphen_values = true)]
-    pub up: UpVector,
+    /// The world's up vector in the file's frame, `x,y,z` (default: the `up` of the rig file).
+    #[arg(long, value_parser = parse_up, allow_hyphen_values = true)]
+    pub up: Option<UpVector>,
+    /// The calibration the landmarks were triangulated with; its `up` is the default for `--up`.
+    #[arg(long, default_value = "config/rig.toml")]
+    pub rig: PathBuf,
     /// Floor height along up, metres (default: the lowest foot landmark of each frame).
     #[arg(long, allow_hyphen_values = true)]
     pub floor_height_m: Option<f64>,
@@ -54,7 +57,7 @@ fn print_estimate(e: &HeightEstimate) {
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let frames = read_skeletons(&args.landmarks)?;
-    let mut config = HeightConfig::new(args.up);
+    let mut config = HeightConfig::new(resolve_up(args.up, &args.rig)?);
     config.floor_height_m = args.floor_height_m;
     config.thresholds = ClassThresholds::new(args.c1_below_m, args.c2_up_to_m)
         .map_err(|e| UsageError(e.to_string()))?;

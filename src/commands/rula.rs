@@ -3,13 +3,14 @@
 //! ```text
 //! ergocell rula score --input cases.json       JSON array of single-side worksheets → JSON array of breakdowns
 //! ergocell rula track --landmarks frames.json  per-frame scores for both sides, warnings and a summary
-//!                     [--up 0,0,1] [--floor-height-m 0] [--task task.json] [--json]
+//!                     [--up x,y,z | --rig config/rig.toml] [--floor-height-m 0] [--task task.json] [--json]
 //! ```
 //!
 //! The landmark file is what `ergocell triangulate` writes (`.json` array of skeletons; `.csv` and
-//! `.trc` are read too). `--up` is the world's up in the file's frame: the cell frame of
-//! `config/cell.toml` is z-up with the floor at z = 0, hence the default; other calibrations (e.g. a
-//! caliscope board frame) need it given.
+//! `.trc` are read too). `--up` is the world's up in the file's frame; by default it is taken from
+//! the rig file the landmarks were triangulated with (`--rig`, default `config/rig.toml`, the
+//! reference cell: z-up, floor at z = 0). It is never assumed: a calibration without a stated up
+//! (caliscope, Anipose) needs `--up`.
 
 use std::path::{Path, PathBuf};
 
@@ -51,9 +52,12 @@ pub struct TrackArgs {
     /// 3D landmark file from `ergocell triangulate` (.json, .csv or .trc).
     #[arg(long)]
     pub landmarks: PathBuf,
-    /// The world's up vector in the file's frame, `x,y,z` (default: the cell frame's z-up).
-    #[arg(long, value_parser = parse_up, default_value = "0,0,1", allow_hyphen_values = true)]
-    pub up: UpVector,
+    /// The world's up vector in the file's frame, `x,y,z` (default: the `up` of the rig file).
+    #[arg(long, value_parser = parse_up, allow_hyphen_values = true)]
+    pub up: Option<UpVector>,
+    /// The calibration the landmarks were triangulated with; its `up` is the default for `--up`.
+    #[arg(long, default_value = "config/rig.toml")]
+    pub rig: PathBuf,
     /// Floor height along up, metres (default: the lowest foot landmark of each frame).
     #[arg(long, allow_hyphen_values = true)]
     pub floor_height_m: Option<f64>,
@@ -66,6 +70,26 @@ pub struct TrackArgs {
     /// Print frames, warnings and summary as one JSON document instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+/// The world's up: `--up` when given, else the rig file's `up`; never assumed. A calibration whose
+/// world frame has no known up (caliscope, Anipose: the frame of a camera or a board) needs `--up`.
+pub fn resolve_up(up: Option<UpVector>, rig: &Path) -> anyhow::Result<UpVector> {
+    if let Some(up) = up {
+        return Ok(up);
+    }
+    let name = rig.display().to_string();
+    let text = std::fs::read_to_string(rig).map_err(|e| {
+        UsageError(format!("the world's up direction is unknown: pass --up x,y,z or --rig <rig.toml> ({name}: {e})"))
+    })?;
+    let (rig, _) = ergocell_perception::rig_file::parse_rig(&text, &name)
+        .map_err(|e| UsageError(e.to_string()))?;
+    let up = rig.up().ok_or_else(|| {
+        UsageError(format!(
+            "{name} does not state the world's up direction: pass --up x,y,z"
+        ))
+    })?;
+    UpVector::new(up).map_err(|e| UsageError(format!("{name}: up: {e}")).into())
 }
 
 /// Parses `x,y,z` into a normalised up vector.
@@ -156,7 +180,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         }
         None => TaskConfig::default(),
     };
-    let mut config = AssessmentConfig::new(args.up);
+    let mut config = AssessmentConfig::new(resolve_up(args.up, &args.rig)?);
     config.floor_height_m = args.floor_height_m;
     config.min_confidence = args.min_confidence;
     config.task = task;
