@@ -1,5 +1,77 @@
-//! Digital twin of the cell: simulated operators, cameras and pose-estimator noise with ground truth.
+//! Digital twin of the cell: simulated operators, cameras and pose-estimator noise, with ground truth.
 //!
-//! Will hold (issue "Digital twin"): anthropometric operators, task-driven postures, a camera rig from
-//! `config/`, realistic 2D detections, and the seed paper's experiments. Deterministic: every run takes
-//! a seed.
+//! The seed paper (Arvanitis et al., Sec. III.3) validates its pipeline in a Unity3D digital twin,
+//! because only a simulator knows the true 3D landmarks. This crate is ergocell's, in Rust: it feeds
+//! the *real* perception and ergonomics code; only the world is simulated.
+//!
+//! - [`body`]: operators of any stature from Drillis & Contini (1966) segment ratios (as tabulated by
+//!   Winter), forward kinematics to all 33 BlazePose landmarks.
+//! - [`reach`]: task-driven postures — the reach to a handover point is solved by a small
+//!   optimisation of reach plus comfort, so a low handover bends the trunk and a high one raises the
+//!   arm above the shoulder.
+//! - [`cameras`]: synthetic rigs of any size (the reference rig comes from `config/rig.toml`, parsed
+//!   by the caller).
+//! - [`detector`]: 2D detections like a real pose estimator's — lens distortion via the perception
+//!   camera model, pixel noise, self-occlusion, out-of-frame, outliers, dropped views, timestamp jitter;
+//!   every level a documented parameter ([`DetectorNoise`]).
+//! - [`session`]: the session script (walk in → idle → N handovers → walk out) and the simulation
+//!   clock; each [`Tick`] carries the ground truth and every camera's [`View2`](ergocell_perception::View2).
+//!
+//! **Deterministic**: every random draw comes from `ChaCha8Rng` seeded by [`SimConfig::seed`] (motion
+//! and detector noise on separate streams); the same seed gives the same numbers, bit for bit. The
+//! simulator has its own clock (tick `k` at `k · frame_period_nanos`) and never reads wall time.
+//! **No I/O**: callers pass parsed rigs and values.
+//!
+//! # Example
+//! ```
+//! use ergocell_sim::{ring_rig, Operator, RingRigConfig, SessionScript, SimConfig, Simulation};
+//! use nalgebra::Point3;
+//!
+//! // The reference cell: `rig_file::parse_rig(&std::fs::read_to_string("config/rig.toml")?, ..)`;
+//! // here a synthetic 6-camera rig.
+//! let rig = ring_rig(6, &RingRigConfig::default())?;
+//! let operator = Operator::new(1.75)?;
+//! let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.055)); // c2's handover, world
+//! script.cycles = 2;
+//! let mut sim = Simulation::new(rig, operator, script, SimConfig::new(42))?;
+//! while let Some(tick) = sim.step()? {
+//!     let truth = &tick.truth; // Skeleton3, stature, joint angles, phase
+//!     assert_eq!(truth.skeleton.observed_count(), 33);
+//!     for view in &tick.frame.views {
+//!         // per-camera 2D keypoints, each view with its own (jittered) stamp_nanos
+//!         let _ = (view.camera, view.stamp_nanos, view.observed_count());
+//!     }
+//! }
+//! # Ok::<(), ergocell_sim::SimError>(())
+//! ```
+
+pub mod body;
+pub mod cameras;
+pub mod detector;
+pub mod reach;
+pub mod session;
+
+pub use body::{ArmPosture, LegPosture, Operator, Posture};
+pub use cameras::{ring_rig, RingRigConfig};
+pub use detector::DetectorNoise;
+pub use reach::{solve_reach, ReachConfig, ReachSolution};
+pub use session::{GroundTruth, Phase, SessionScript, SimConfig, Simulation, Tick};
+
+/// Everything that can go wrong in the simulator.
+#[derive(Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SimError {
+    /// A parameter outside its valid range.
+    #[error("parameter `{name}` = {value}: {why}")]
+    BadParameter {
+        name: &'static str,
+        value: f64,
+        why: &'static str,
+    },
+    /// The perception crate refused a camera, rig or frame.
+    #[error(transparent)]
+    Perception(#[from] ergocell_perception::PerceptionError),
+    /// A skeleton could not be built (non-finite landmark).
+    #[error(transparent)]
+    Skeleton(#[from] ergocell_skeleton::SkeletonError),
+}

@@ -1,0 +1,346 @@
+//! 2D detections like a real pose estimator's (MediaPipe BlazePose on each camera's Jetson).
+//!
+//! Per camera and frame, [`DetectorNoise`] decides what the estimator reports:
+//!
+//! 1. **Dropped frames**: the camera's view is missing with probability
+//!    [`DetectorNoise::drop_probability`] (a lost packet, a late Jetson).
+//! 2. **Timestamp jitter**: each camera captures at the tick time plus a Gaussian offset of
+//!    σ = [`DetectorNoise::stamp_jitter_sigma_nanos`] (clipped at 3σ); the body is posed *at that
+//!    instant* and the view's `stamp_nanos` is that instant, as unsynchronised cameras do.
+//! 3. **Projection** with the perception crate's camera model ([`Camera::project`]: pinhole +
+//!    Brown–Conrady distortion), so detections are distorted pixels as the cameras deliver them.
+//! 4. **Visibility** per landmark: behind the camera or outside the image → not reported; if fewer than
+//!    [`DetectorNoise::min_landmarks_in_frame`] landmarks are in the image, the person is not
+//!    detected at all (an empty view). **Self-occlusion**: a landmark whose line of sight to the camera
+//!    crosses the torso (an elliptic cylinder from the hips to the shoulders, 0.17 H wide and
+//!    0.126 H deep) or that sits on the far side of the head (face landmarks facing away) is occluded.
+//!    BlazePose still guesses occluded landmarks with a low visibility score: each is reported with
+//!    probability [`DetectorNoise::occluded_report_probability`], with a confidence drawn from
+//!    [`DetectorNoise::occluded_confidence`] and [`DetectorNoise::occluded_noise_scale`] times the
+//!    pixel noise.
+//! 5. **Pixel noise**: isotropic Gaussian, σ = [`DetectorNoise::pixel_sigma_px`]; visible landmarks get a
+//!    confidence drawn uniformly from [`DetectorNoise::visible_confidence`].
+//! 6. **Gross outliers**: with probability [`DetectorNoise::outlier_probability`] a keypoint jumps by
+//!    a uniform [`DetectorNoise::outlier_offset_px`] in a random direction, keeping a normal
+//!    confidence (the detector does not know it is wrong).
+//!
+//! Every draw comes from the caller's seeded `ChaCha8Rng`, in a fixed order: same seed, same pixels.
+
+use ergocell_perception::{Camera, CameraIndex, Keypoint2, View2};
+use ergocell_skeleton::{Landmark, LANDMARK_COUNT};
+use nalgebra::{Point3, Vector3};
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+use rand_distr::StandardNormal;
+use serde::Serialize;
+
+use crate::body::{Kinematics, Torso};
+use crate::SimError;
+
+/// Noise levels of the simulated pose estimator. Every field has a documented default.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DetectorNoise {
+    /// Pixel noise σ of a visible keypoint, pixels (default 3.0: BlazePose on 1280×720 crops).
+    pub pixel_sigma_px: f64,
+    /// Confidence range of visible keypoints (default 0.75..0.99).
+    pub visible_confidence: (f64, f64),
+    /// Probability that an occluded keypoint is still reported (default 0.6).
+    pub occluded_report_probability: f64,
+    /// Confidence range of reported occluded keypoints (default 0.05..0.4).
+    pub occluded_confidence: (f64, f64),
+    /// Noise multiplier for reported occluded keypoints (default 4).
+    pub occluded_noise_scale: f64,
+    /// Probability of a gross outlier per reported keypoint (default 0.01).
+    pub outlier_probability: f64,
+    /// Range of an outlier's jump, pixels (default 30..150).
+    pub outlier_offset_px: (f64, f64),
+    /// Probability that a camera's whole view is dropped in a frame (default 0.02).
+    pub drop_probability: f64,
+    /// Capture-time jitter σ per camera and frame, nanoseconds (default 3 ms).
+    pub stamp_jitter_sigma_nanos: f64,
+    /// Fewer landmarks than this inside the image: the person is not detected (default 8).
+    pub min_landmarks_in_frame: usize,
+}
+
+impl Default for DetectorNoise {
+    fn default() -> Self {
+        Self {
+            pixel_sigma_px: 3.0,
+            visible_confidence: (0.75, 0.99),
+            occluded_report_probability: 0.6,
+            occluded_confidence: (0.05, 0.4),
+            occluded_noise_scale: 4.0,
+            outlier_probability: 0.01,
+            outlier_offset_px: (30.0, 150.0),
+            drop_probability: 0.02,
+            stamp_jitter_sigma_nanos: 3.0e6,
+            min_landmarks_in_frame: 8,
+        }
+    }
+}
+
+impl DetectorNoise {
+    /// A perfect detector: no noise, no outliers, no drops, no jitter, occluded keypoints still reported
+    /// exactly (for tests of the camera model).
+    pub fn none() -> Self {
+        Self {
+            pixel_sigma_px: 0.0,
+            visible_confidence: (1.0, 1.0),
+            occluded_report_probability: 1.0,
+            occluded_confidence: (1.0, 1.0),
+            occluded_noise_scale: 1.0,
+            outlier_probability: 0.0,
+            outlier_offset_px: (0.0, 0.0),
+            drop_probability: 0.0,
+            stamp_jitter_sigma_nanos: 0.0,
+            min_landmarks_in_frame: 0,
+        }
+    }
+
+    /// Checks every field is finite, probabilities in 0..=1, ranges ordered.
+    pub fn validate(&self) -> Result<(), SimError> {
+        let bad = |name: &'static str, value: f64, why: &'static str| {
+            Err(SimError::BadParameter { name, value, why })
+        };
+        for (name, v) in [
+            ("pixel_sigma_px", self.pixel_sigma_px),
+            ("occluded_noise_scale", self.occluded_noise_scale),
+            ("stamp_jitter_sigma_nanos", self.stamp_jitter_sigma_nanos),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return bad(name, v, "must be finite and >= 0");
+            }
+        }
+        for (name, v) in [
+            (
+                "occluded_report_probability",
+                self.occluded_report_probability,
+            ),
+            ("outlier_probability", self.outlier_probability),
+            ("drop_probability", self.drop_probability),
+        ] {
+            if !(0.0..=1.0).contains(&v) {
+                return bad(name, v, "a probability must be within 0..=1");
+            }
+        }
+        for (name, (lo, hi), max) in [
+            ("visible_confidence", self.visible_confidence, 1.0),
+            ("occluded_confidence", self.occluded_confidence, 1.0),
+            ("outlier_offset_px", self.outlier_offset_px, f64::MAX),
+        ] {
+            if !(lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo <= hi && hi <= max) {
+                return bad(name, lo, "range must be ordered, finite and within bounds");
+            }
+        }
+        Ok(())
+    }
+}
+
+pub(crate) fn gaussian(rng: &mut ChaCha8Rng) -> f64 {
+    rng.sample(StandardNormal)
+}
+
+/// The capture-time offset of one camera in one frame, nanoseconds.
+pub(crate) fn jitter_nanos(noise: &DetectorNoise, rng: &mut ChaCha8Rng) -> i64 {
+    let z: f64 = gaussian(rng).clamp(-3.0, 3.0);
+    (z * noise.stamp_jitter_sigma_nanos).round() as i64
+}
+
+/// True when the line of sight from `p` to `eye` crosses the torso cylinder (beyond 2 cm from `p`).
+pub(crate) fn torso_occludes(torso: &Torso, p: &Point3<f64>, eye: &Point3<f64>) -> bool {
+    let inv = torso.R_world_trunk.inverse();
+    let a = inv * (p - torso.base);
+    let b = inv * (eye - torso.base);
+    let d = b - a;
+    let len = d.norm();
+    if len < 1e-9 {
+        return false;
+    }
+    let t_start = (0.02 / len).min(1.0);
+    // Scaled cross-section: x = depth (forward), y = width.
+    let (ax, ay) = (a.x / torso.half_depth_m, a.y / torso.half_width_m);
+    let (dx, dy) = (d.x / torso.half_depth_m, d.y / torso.half_width_m);
+    let qa = dx * dx + dy * dy;
+    let qb = 2.0 * (ax * dx + ay * dy);
+    let qc = ax * ax + ay * ay - 1.0;
+    let (mut lo, mut hi) = if qa < 1e-12 {
+        if qc < 0.0 {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            return false;
+        }
+    } else {
+        let disc = qb * qb - 4.0 * qa * qc;
+        if disc <= 0.0 {
+            return false;
+        }
+        let s = disc.sqrt();
+        ((-qb - s) / (2.0 * qa), (-qb + s) / (2.0 * qa))
+    };
+    lo = lo.max(t_start);
+    hi = hi.min(1.0);
+    // Along the trunk axis: 0 <= z(t) <= length.
+    if d.z.abs() < 1e-12 {
+        if a.z < 0.0 || a.z > torso.length_m {
+            return false;
+        }
+    } else {
+        let t0 = (0.0 - a.z) / d.z;
+        let t1 = (torso.length_m - a.z) / d.z;
+        lo = lo.max(t0.min(t1));
+        hi = hi.min(t0.max(t1));
+    }
+    lo < hi
+}
+
+/// True when a face landmark faces away from the camera (the head hides it).
+fn head_hides(head_centre: &Point3<f64>, p: &Point3<f64>, eye: &Point3<f64>) -> bool {
+    let normal: Vector3<f64> = p - head_centre;
+    normal.dot(&(eye - p)) < 0.0
+}
+
+/// Renders one camera's view of a posed body. `kin` is the body at the view's capture instant.
+pub(crate) fn render_view(
+    camera: &Camera,
+    index: CameraIndex,
+    stamp_nanos: i64,
+    kin: &Kinematics,
+    noise: &DetectorNoise,
+    rng: &mut ChaCha8Rng,
+) -> View2 {
+    let eye = camera.position_world();
+    // Project everything first: the person is detected only if enough of them is in the image.
+    let mut pixels = [None; LANDMARK_COUNT];
+    let mut in_frame = 0;
+    for lm in Landmark::ALL {
+        let p = kin.points[lm.index()];
+        if let Ok(px) = camera.project(&p) {
+            if camera.in_image(&px) {
+                pixels[lm.index()] = Some(px);
+                in_frame += 1;
+            }
+        }
+    }
+    let mut view = View2::empty(index, stamp_nanos);
+    // Draw the same number of random values per landmark whatever happens, so one landmark's fate
+    // does not shift every later draw (noise settings change only what they control).
+    for lm in Landmark::ALL {
+        let z_u = gaussian(rng);
+        let z_v = gaussian(rng);
+        let u_report = rng.random::<f64>();
+        let u_conf = rng.random::<f64>();
+        let u_outlier = rng.random::<f64>();
+        let u_angle = rng.random::<f64>();
+        let u_jump = rng.random::<f64>();
+        let Some(px) = pixels[lm.index()] else {
+            continue;
+        };
+        if in_frame < noise.min_landmarks_in_frame {
+            continue;
+        }
+        let p = kin.points[lm.index()];
+        let occluded = torso_occludes(&kin.torso, &p, &eye)
+            || (lm.index() <= Landmark::MouthRight.index()
+                && head_hides(&kin.head_centre, &p, &eye));
+        let (sigma, conf_range) = if occluded {
+            if u_report >= noise.occluded_report_probability {
+                continue;
+            }
+            (
+                noise.pixel_sigma_px * noise.occluded_noise_scale,
+                noise.occluded_confidence,
+            )
+        } else {
+            (noise.pixel_sigma_px, noise.visible_confidence)
+        };
+        let confidence = conf_range.0 + (conf_range.1 - conf_range.0) * u_conf;
+        let (mut u, mut v) = (px.x + sigma * z_u, px.y + sigma * z_v);
+        if u_outlier < noise.outlier_probability {
+            let jump = noise.outlier_offset_px.0
+                + (noise.outlier_offset_px.1 - noise.outlier_offset_px.0) * u_jump;
+            let angle = std::f64::consts::TAU * u_angle;
+            u += jump * angle.cos();
+            v += jump * angle.sin();
+        }
+        if let Ok(k) = Keypoint2::new(u, v, confidence) {
+            view.set(lm, Some(k));
+        }
+    }
+    view
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::body::{Operator, Posture};
+    use nalgebra::Rotation3;
+
+    fn torso() -> Torso {
+        Torso {
+            base: Point3::new(0.0, 0.0, 0.9),
+            R_world_trunk: Rotation3::identity(),
+            length_m: 0.5,
+            half_depth_m: 0.1,
+            half_width_m: 0.15,
+        }
+    }
+
+    #[test]
+    fn the_torso_hides_what_is_behind_it() {
+        let t = torso();
+        let front = Point3::new(3.0, 0.0, 1.1);
+        // a point behind the back, seen from the front: hidden
+        assert!(torso_occludes(&t, &Point3::new(-0.2, 0.0, 1.1), &front));
+        // a point in front of the chest: visible
+        assert!(!torso_occludes(&t, &Point3::new(0.2, 0.0, 1.1), &front));
+        // above the shoulders: visible
+        assert!(!torso_occludes(
+            &t,
+            &Point3::new(-0.2, 0.0, 1.6),
+            &Point3::new(3.0, 0.0, 1.6)
+        ));
+        // from the side, the far shoulder is hidden, the near one not
+        let side = Point3::new(0.0, 3.0, 1.3);
+        assert!(torso_occludes(&t, &Point3::new(0.0, -0.2, 1.3), &side));
+        assert!(!torso_occludes(&t, &Point3::new(0.0, 0.2, 1.3), &side));
+    }
+
+    #[test]
+    fn noise_parameters_are_validated() {
+        assert!(DetectorNoise::default().validate().is_ok());
+        assert!(DetectorNoise::none().validate().is_ok());
+        let bad = DetectorNoise {
+            drop_probability: 1.5,
+            ..DetectorNoise::default()
+        };
+        assert!(bad.validate().is_err());
+        let bad = DetectorNoise {
+            pixel_sigma_px: f64::NAN,
+            ..DetectorNoise::default()
+        };
+        assert!(bad.validate().is_err());
+    }
+
+    #[test]
+    fn a_camera_behind_the_operator_loses_the_face() {
+        let op = Operator::new(1.75).unwrap();
+        let kin = op.kinematics(&Posture::default());
+        let cam = crate::cameras::look_at_camera(
+            "back",
+            Point3::new(-3.0, 0.0, 1.6),
+            Point3::new(0.0, 0.0, 1.0),
+            crate::cameras::default_intrinsics(),
+            crate::cameras::default_distortion(),
+        )
+        .unwrap();
+        let noise = DetectorNoise {
+            occluded_report_probability: 0.0,
+            ..DetectorNoise::none()
+        };
+        let mut rng = <ChaCha8Rng as rand::SeedableRng>::seed_from_u64(1);
+        let v = render_view(&cam, 0, 0, &kin, &noise, &mut rng);
+        assert!(v.get(Landmark::Nose).is_none());
+        assert!(v.get(Landmark::LeftShoulder).is_some());
+        assert!(v.get(Landmark::LeftHeel).is_some());
+    }
+}

@@ -1,0 +1,491 @@
+//! The session script and the simulation clock.
+//!
+//! A session is what the cell controller sees from one operator: walk into the cell → stand idle at
+//! the station (the height measurement happens here) → `cycles` handovers, each reach → hold → return
+//! → rest, reaching to a handover point given in world coordinates → turn and walk out. The body's
+//! posture is a pure function of time ([`Simulation::truth_at`]); the reaching posture of each cycle is
+//! solved once at construction ([`crate::reach::solve_reach`]) for that cycle's target (the handover
+//! point plus a small seeded variation of where the hand meets the part).
+//!
+//! The simulator has its own clock: tick `k` is at `k · frame_period_nanos` (10 Hz by default, as in
+//! the seed paper). It never reads wall time.
+
+use ergocell_perception::{CameraIndex, CameraRig, Frame2};
+use ergocell_skeleton::Skeleton3;
+use nalgebra::Point3;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+
+use crate::body::{LegPosture, Operator, Posture};
+use crate::detector::{gaussian, jitter_nanos, render_view, DetectorNoise};
+use crate::reach::{look_at, solve_reach, ReachConfig};
+use crate::SimError;
+
+/// What the operator is doing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(tag = "phase", rename_all = "snake_case")]
+pub enum Phase {
+    WalkIn,
+    /// Standing upright at the station (height measurement).
+    Idle,
+    /// Moving the hand to the handover point of cycle `cycle` (0-based).
+    Reach {
+        cycle: usize,
+    },
+    /// Holding the hand at the handover point.
+    Hold {
+        cycle: usize,
+    },
+    /// Bringing the part back.
+    Return {
+        cycle: usize,
+    },
+    /// Standing between cycles.
+    Rest {
+        cycle: usize,
+    },
+    WalkOut,
+    /// After the script: nobody in the cell.
+    Gone,
+}
+
+/// The session script. Durations in seconds.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SessionScript {
+    /// Handover point (where the grasp point meets the part), world frame, metres.
+    pub handover_m: Point3<f64>,
+    /// Where the operator stands (floor point below the hips), world x, y (default the origin).
+    pub station_m: [f64; 2],
+    /// Facing direction at the station (default 0: facing +x, the robot).
+    pub station_heading_rad: f64,
+    /// Where the walk starts and ends (default (−2.5, 0.3)).
+    pub entry_m: [f64; 2],
+    /// Default 4 s.
+    pub walk_in_secs: f64,
+    /// Default 4 s (40 frames at 10 Hz: the height estimator needs 15 upright ones).
+    pub idle_secs: f64,
+    /// Number of handover cycles (default 5).
+    pub cycles: usize,
+    /// Default 1.2 s.
+    pub reach_secs: f64,
+    /// Default 1.0 s.
+    pub hold_secs: f64,
+    /// Default 1.2 s.
+    pub return_secs: f64,
+    /// Default 1.6 s.
+    pub rest_secs: f64,
+    /// Default 4 s.
+    pub walk_out_secs: f64,
+    /// σ of the per-cycle variation of the hand's target around the handover point, metres
+    /// (default 0.01).
+    pub target_sigma_m: f64,
+    /// Walking: step frequency, Hz (default 1.8).
+    pub step_hz: f64,
+}
+
+impl SessionScript {
+    /// The default script around a handover point.
+    pub fn new(handover_m: Point3<f64>) -> Self {
+        Self {
+            handover_m,
+            station_m: [0.0, 0.0],
+            station_heading_rad: 0.0,
+            entry_m: [-2.5, 0.3],
+            walk_in_secs: 4.0,
+            idle_secs: 4.0,
+            cycles: 5,
+            reach_secs: 1.2,
+            hold_secs: 1.0,
+            return_secs: 1.2,
+            rest_secs: 1.6,
+            walk_out_secs: 4.0,
+            target_sigma_m: 0.01,
+            step_hz: 1.8,
+        }
+    }
+
+    fn cycle_secs(&self) -> f64 {
+        self.reach_secs + self.hold_secs + self.return_secs + self.rest_secs
+    }
+
+    /// Total duration, seconds.
+    pub fn duration_secs(&self) -> f64 {
+        self.walk_in_secs
+            + self.idle_secs
+            + self.cycles as f64 * self.cycle_secs()
+            + self.walk_out_secs
+    }
+
+    fn validate(&self) -> Result<(), SimError> {
+        for (name, v) in [
+            ("walk_in_secs", self.walk_in_secs),
+            ("idle_secs", self.idle_secs),
+            ("reach_secs", self.reach_secs),
+            ("hold_secs", self.hold_secs),
+            ("return_secs", self.return_secs),
+            ("rest_secs", self.rest_secs),
+            ("walk_out_secs", self.walk_out_secs),
+            ("target_sigma_m", self.target_sigma_m),
+            ("step_hz", self.step_hz),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(SimError::BadParameter {
+                    name,
+                    value: v,
+                    why: "must be finite and >= 0",
+                });
+            }
+        }
+        let h = self.handover_m;
+        for v in [
+            h.x,
+            h.y,
+            h.z,
+            self.station_m[0],
+            self.station_m[1],
+            self.entry_m[0],
+            self.entry_m[1],
+        ] {
+            if !v.is_finite() {
+                return Err(SimError::BadParameter {
+                    name: "position",
+                    value: v,
+                    why: "not finite",
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Simulation settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimConfig {
+    /// Seed of every random draw (detector noise and motion variation).
+    pub seed: u64,
+    /// Frame period, nanoseconds (default 100 ms: 10 Hz, as the seed paper's cameras).
+    pub frame_period_nanos: i64,
+    /// Stamp of tick 0, nanoseconds (default 0).
+    pub start_nanos: i64,
+    pub noise: DetectorNoise,
+    pub reach: ReachConfig,
+}
+
+impl SimConfig {
+    /// Defaults with this seed.
+    pub fn new(seed: u64) -> Self {
+        Self {
+            seed,
+            frame_period_nanos: 100_000_000,
+            start_nanos: 0,
+            noise: DetectorNoise::default(),
+            reach: ReachConfig::default(),
+        }
+    }
+}
+
+/// Ground truth of one instant.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GroundTruth {
+    pub stamp_nanos: i64,
+    pub phase: Phase,
+    /// True stature, metres.
+    pub stature_m: f64,
+    /// True joint angles and placement.
+    pub posture: Posture,
+    /// The 33 true landmarks (confidence 1).
+    pub skeleton: Skeleton3,
+    /// The hand's target of the current cycle, if in a handover cycle.
+    pub target_m: Option<Point3<f64>>,
+}
+
+/// One simulated frame: the truth at the tick and what the cameras reported.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tick {
+    /// Tick index from 0.
+    pub index: u64,
+    pub truth: GroundTruth,
+    /// The views that arrived, in camera order, each with its own jittered `stamp_nanos`; the
+    /// frame's stamp is the tick time.
+    pub frame: Frame2,
+    /// Cameras whose view was dropped this tick.
+    pub dropped: Vec<CameraIndex>,
+}
+
+/// A running simulation: a rig, an operator, a script, a seed. Step it with [`Simulation::step`]
+/// or iterate it.
+#[derive(Debug, Clone)]
+pub struct Simulation {
+    rig: CameraRig,
+    operator: Operator,
+    script: SessionScript,
+    config: SimConfig,
+    rest: Posture,
+    reach: Vec<(Point3<f64>, Posture)>,
+    rng: ChaCha8Rng,
+    next: u64,
+    ticks: u64,
+}
+
+fn smoothstep(s: f64) -> f64 {
+    let s = s.clamp(0.0, 1.0);
+    s * s * (3.0 - 2.0 * s)
+}
+
+impl Simulation {
+    /// Builds the session: validates the inputs and solves each cycle's reaching posture.
+    pub fn new(
+        rig: CameraRig,
+        operator: Operator,
+        script: SessionScript,
+        config: SimConfig,
+    ) -> Result<Self, SimError> {
+        script.validate()?;
+        config.noise.validate()?;
+        if config.frame_period_nanos <= 0 {
+            return Err(SimError::BadParameter {
+                name: "frame_period_nanos",
+                value: config.frame_period_nanos as f64,
+                why: "must be positive",
+            });
+        }
+        let rest = Posture {
+            position_m: script.station_m,
+            heading_rad: script.station_heading_rad,
+            ..Posture::default()
+        };
+        // Motion variation has its own stream, so changing the noise never changes the motion.
+        let mut motion = ChaCha8Rng::seed_from_u64(config.seed);
+        motion.set_stream(1);
+        let mut reach = Vec::with_capacity(script.cycles);
+        for _ in 0..script.cycles {
+            let target = script.handover_m
+                + nalgebra::Vector3::new(
+                    gaussian(&mut motion),
+                    gaussian(&mut motion),
+                    gaussian(&mut motion),
+                ) * script.target_sigma_m;
+            let sol = solve_reach(&operator, &rest, &target, &config.reach)?;
+            reach.push((target, sol.posture));
+        }
+        let mut rng = ChaCha8Rng::seed_from_u64(config.seed);
+        rng.set_stream(2);
+        let period_secs = config.frame_period_nanos as f64 * 1e-9;
+        let ticks = (script.duration_secs() / period_secs).floor() as u64 + 1;
+        Ok(Self {
+            rig,
+            operator,
+            script,
+            config,
+            rest,
+            reach,
+            rng,
+            next: 0,
+            ticks,
+        })
+    }
+
+    /// The rig.
+    pub fn rig(&self) -> &CameraRig {
+        &self.rig
+    }
+
+    /// The operator.
+    pub fn operator(&self) -> &Operator {
+        &self.operator
+    }
+
+    /// The script.
+    pub fn script(&self) -> &SessionScript {
+        &self.script
+    }
+
+    /// Number of ticks in the session.
+    pub fn tick_count(&self) -> u64 {
+        self.ticks
+    }
+
+    /// Each cycle's hand target and solved reaching posture.
+    pub fn reach_postures(&self) -> &[(Point3<f64>, Posture)] {
+        &self.reach
+    }
+
+    /// The phase and posture at time `t_nanos` (pure: no randomness, no state).
+    pub fn posture_at(&self, t_nanos: i64) -> (Phase, Posture, Option<Point3<f64>>) {
+        let sc = &self.script;
+        let mut t = (t_nanos - self.config.start_nanos) as f64 * 1e-9;
+        if t < sc.walk_in_secs {
+            return (Phase::WalkIn, self.walk(t, true), None);
+        }
+        t -= sc.walk_in_secs;
+        if t < sc.idle_secs {
+            return (Phase::Idle, self.rest, None);
+        }
+        t -= sc.idle_secs;
+        let cycle_secs = sc.cycle_secs();
+        if sc.cycles > 0 && t < cycle_secs * sc.cycles as f64 {
+            let cycle = ((t / cycle_secs).floor() as usize).min(sc.cycles - 1);
+            let mut u = t - cycle as f64 * cycle_secs;
+            let (target, reach) = self.reach[cycle];
+            if u < sc.reach_secs {
+                let s = smoothstep(u / sc.reach_secs.max(1e-9));
+                return (
+                    Phase::Reach { cycle },
+                    self.rest.lerp(&reach, s),
+                    Some(target),
+                );
+            }
+            u -= sc.reach_secs;
+            if u < sc.hold_secs {
+                return (Phase::Hold { cycle }, reach, Some(target));
+            }
+            u -= sc.hold_secs;
+            if u < sc.return_secs {
+                let s = smoothstep(u / sc.return_secs.max(1e-9));
+                return (
+                    Phase::Return { cycle },
+                    reach.lerp(&self.rest, s),
+                    Some(target),
+                );
+            }
+            return (Phase::Rest { cycle }, self.rest, Some(target));
+        }
+        t -= cycle_secs * sc.cycles as f64;
+        if t < sc.walk_out_secs {
+            return (Phase::WalkOut, self.walk(t, false), None);
+        }
+        (Phase::Gone, self.walk(sc.walk_out_secs, false), None)
+    }
+
+    /// Walking between the entry and the station; `t` from the start of the walk.
+    fn walk(&self, t: f64, inbound: bool) -> Posture {
+        let sc = &self.script;
+        let dur = if inbound {
+            sc.walk_in_secs
+        } else {
+            sc.walk_out_secs
+        }
+        .max(1e-9);
+        let (from, to) = if inbound {
+            (sc.entry_m, sc.station_m)
+        } else {
+            (sc.station_m, sc.entry_m)
+        };
+        let travel = (to[1] - from[1]).atan2(to[0] - from[0]);
+        // Walk for 80 % of the time, turn on the spot for the rest (at the end inbound, at the
+        // start outbound).
+        let (walk_start, walk_end) = if inbound { (0.0, 0.8) } else { (0.2, 1.0) };
+        let s = t / dur;
+        let w = ((s - walk_start) / (walk_end - walk_start)).clamp(0.0, 1.0);
+        let mut q = self.rest;
+        q.neck_flexion_rad = 0.0;
+        q.position_m = [
+            from[0] + (to[0] - from[0]) * w,
+            from[1] + (to[1] - from[1]) * w,
+        ];
+        let turn = if inbound {
+            smoothstep((s - 0.8) / 0.2)
+        } else {
+            smoothstep(s / 0.2)
+        };
+        let (h0, h1) = if inbound {
+            (travel, sc.station_heading_rad)
+        } else {
+            (sc.station_heading_rad, travel)
+        };
+        let dh = (h1 - h0 + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+            - std::f64::consts::PI;
+        q.heading_rad = h0 + dh * turn;
+        // Gait while moving: legs and arms swing in antiphase, amplitude ramps at both ends.
+        let moving = w > 0.0 && w < 1.0;
+        if moving {
+            let ramp = (w * 8.0).min((1.0 - w) * 8.0).min(1.0);
+            let phase = std::f64::consts::TAU * sc.step_hz * 0.5 * t;
+            let d = f64::to_radians;
+            let leg = |ph: f64| LegPosture {
+                hip_flexion_rad: ramp * d(20.0) * ph.sin(),
+                knee_flexion_rad: ramp * d(35.0) * (ph + 0.9).sin().max(0.0) + d(5.0) * ramp,
+            };
+            q.left_leg = leg(phase);
+            q.right_leg = leg(phase + std::f64::consts::PI);
+            q.left_arm.flexion_rad = -ramp * d(15.0) * phase.sin();
+            q.right_arm.flexion_rad = ramp * d(15.0) * phase.sin();
+        }
+        q
+    }
+
+    /// Ground truth at time `t_nanos`.
+    pub fn truth_at(&self, t_nanos: i64) -> Result<GroundTruth, SimError> {
+        let (phase, mut posture, target) = self.posture_at(t_nanos);
+        if let (Some(_), Phase::Reach { .. } | Phase::Hold { .. } | Phase::Return { .. }) =
+            (target, phase)
+        {
+            // keep watching the hand on the way
+            let hand = self.operator.grasp_point(&posture);
+            look_at(&self.operator, &mut posture, &hand, &self.config.reach);
+        }
+        let points = self.operator.landmarks(&posture);
+        Ok(GroundTruth {
+            stamp_nanos: t_nanos,
+            phase,
+            stature_m: self.operator.stature_m(),
+            posture,
+            skeleton: Skeleton3::from_points(t_nanos, &points)?,
+            target_m: target,
+        })
+    }
+
+    /// The next tick, or `None` after the last one.
+    pub fn step(&mut self) -> Result<Option<Tick>, SimError> {
+        if self.next >= self.ticks {
+            return Ok(None);
+        }
+        let index = self.next;
+        self.next += 1;
+        let t = self.config.start_nanos + index as i64 * self.config.frame_period_nanos;
+        let truth = self.truth_at(t)?;
+        let mut views = Vec::with_capacity(self.rig.len());
+        let mut dropped = Vec::new();
+        for (k, camera) in self.rig.cameras().iter().enumerate() {
+            let u_drop = self.rng.random::<f64>();
+            let dt = jitter_nanos(&self.config.noise, &mut self.rng);
+            if u_drop < self.config.noise.drop_probability {
+                dropped.push(k);
+                continue;
+            }
+            let stamp = t + dt;
+            let posture = if dt == 0 {
+                truth.posture
+            } else {
+                self.truth_at(stamp)?.posture
+            };
+            let kin = self.operator.kinematics(&posture);
+            views.push(render_view(
+                camera,
+                k,
+                stamp,
+                &kin,
+                &self.config.noise,
+                &mut self.rng,
+            ));
+        }
+        Ok(Some(Tick {
+            index,
+            truth,
+            frame: Frame2 {
+                stamp_nanos: t,
+                views,
+            },
+            dropped,
+        }))
+    }
+}
+
+impl Iterator for Simulation {
+    type Item = Result<Tick, SimError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.step().transpose()
+    }
+}

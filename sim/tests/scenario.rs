@@ -1,0 +1,170 @@
+//! The simulator against the perception crate's camera model, its determinism and its script.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use ergocell_perception::rig_file::parse_rig;
+use ergocell_perception::{CameraRig, FusionEngine, FusionMethod};
+use ergocell_sim::{DetectorNoise, Operator, Phase, SessionScript, SimConfig, Simulation, Tick};
+use ergocell_skeleton::Landmark;
+use nalgebra::Point3;
+
+fn reference_rig() -> CameraRig {
+    parse_rig(include_str!("../../config/rig.toml"), "config/rig.toml")
+        .unwrap()
+        .0
+}
+
+fn c2_handover() -> Point3<f64> {
+    Point3::new(0.41, -0.10, 1.055)
+}
+
+fn run(seed: u64, noise: DetectorNoise, stature_m: f64, cycles: usize) -> Vec<Tick> {
+    let mut script = SessionScript::new(c2_handover());
+    script.cycles = cycles;
+    let config = SimConfig {
+        noise,
+        ..SimConfig::new(seed)
+    };
+    Simulation::new(
+        reference_rig(),
+        Operator::new(stature_m).unwrap(),
+        script,
+        config,
+    )
+    .unwrap()
+    .collect::<Result<Vec<_>, _>>()
+    .unwrap()
+}
+
+#[test]
+fn noiseless_detections_are_the_perception_camera_projections() {
+    let rig = reference_rig();
+    let ticks = run(7, DetectorNoise::none(), 1.72, 1);
+    let mut checked = 0;
+    for tick in &ticks {
+        for view in &tick.frame.views {
+            assert_eq!(view.stamp_nanos, tick.truth.stamp_nanos);
+            let cam = rig.camera(view.camera).unwrap();
+            for lm in Landmark::ALL {
+                if let Some(k) = view.get(lm) {
+                    let truth = tick.truth.skeleton.position(lm).unwrap();
+                    let px = cam.project(&truth).unwrap();
+                    assert!((k.pixel() - px).norm() < 1e-9, "{lm} in {}", cam.id);
+                    assert!(cam.in_image(&k.pixel()));
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 10_000, "only {checked} keypoints checked");
+}
+
+#[test]
+fn noiseless_views_triangulate_back_to_the_truth() {
+    let ticks = run(3, DetectorNoise::none(), 1.85, 1);
+    let mut engine = FusionEngine::new(reference_rig(), FusionMethod::Default).unwrap();
+    let idle = ticks.iter().find(|t| t.truth.phase == Phase::Idle).unwrap();
+    let fused = engine.fuse(&idle.frame).unwrap();
+    for lm in Landmark::ALL {
+        let truth = idle.truth.skeleton.position(lm).unwrap();
+        let est = fused.skeleton.position(lm).unwrap();
+        assert!((est - truth).norm() < 1e-4, "{lm}: {est:?} vs {truth:?}");
+    }
+}
+
+#[test]
+fn same_seed_same_ticks_other_seed_other_noise() {
+    let a = run(11, DetectorNoise::default(), 1.66, 2);
+    let b = run(11, DetectorNoise::default(), 1.66, 2);
+    let c = run(12, DetectorNoise::default(), 1.66, 2);
+    assert_eq!(a, b);
+    assert_eq!(a.len(), c.len());
+    assert_ne!(a, c);
+}
+
+#[test]
+fn the_script_walks_in_measures_hands_over_and_walks_out() {
+    let ticks = run(5, DetectorNoise::default(), 1.80, 3);
+    let phases: Vec<Phase> = ticks.iter().map(|t| t.truth.phase).collect();
+    assert_eq!(phases[0], Phase::WalkIn);
+    assert!(phases.contains(&Phase::Idle));
+    for cycle in 0..3 {
+        assert!(phases.contains(&Phase::Hold { cycle }));
+    }
+    assert!(phases.contains(&Phase::WalkOut));
+    assert!(!phases.contains(&Phase::Hold { cycle: 3 }));
+    // ticks are 100 ms apart, starting at 0
+    for (k, t) in ticks.iter().enumerate() {
+        assert_eq!(t.truth.stamp_nanos, k as i64 * 100_000_000);
+        assert_eq!(t.frame.stamp_nanos, t.truth.stamp_nanos);
+        for v in &t.frame.views {
+            assert!((v.stamp_nanos - t.frame.stamp_nanos).abs() <= 9_000_000);
+        }
+    }
+    // while holding, the grasp point is at the cycle's target
+    let op = Operator::new(1.80).unwrap();
+    for t in ticks
+        .iter()
+        .filter(|t| matches!(t.truth.phase, Phase::Hold { .. }))
+    {
+        let target = t.truth.target_m.unwrap();
+        assert!((op.grasp_point(&t.truth.posture) - target).norm() < 0.01);
+        assert!((target - c2_handover()).norm() < 0.06);
+    }
+    // the stature is the operator's
+    assert!(ticks.iter().all(|t| t.truth.stature_m == 1.80));
+}
+
+#[test]
+fn pixel_noise_has_the_configured_spread_and_drops_their_rate() {
+    let noise = DetectorNoise {
+        pixel_sigma_px: 2.5,
+        outlier_probability: 0.0,
+        occluded_report_probability: 0.0,
+        stamp_jitter_sigma_nanos: 0.0,
+        drop_probability: 0.25,
+        ..DetectorNoise::default()
+    };
+    let rig = reference_rig();
+    let ticks = run(9, noise, 1.75, 2);
+    let (mut sum_sq, mut n, mut dropped, mut views) = (0.0, 0usize, 0usize, 0usize);
+    for tick in &ticks {
+        dropped += tick.dropped.len();
+        views += tick.frame.views.len();
+        for view in &tick.frame.views {
+            let cam = rig.camera(view.camera).unwrap();
+            for lm in Landmark::ALL {
+                if let Some(k) = view.get(lm) {
+                    let px = cam
+                        .project(&tick.truth.skeleton.position(lm).unwrap())
+                        .unwrap();
+                    sum_sq += (k.pixel() - px).norm_squared();
+                    n += 1;
+                }
+            }
+        }
+    }
+    let sigma = (sum_sq / (2.0 * n as f64)).sqrt();
+    assert!((sigma - 2.5).abs() < 0.1, "measured sigma {sigma}");
+    let rate = dropped as f64 / (dropped + views) as f64;
+    assert!((rate - 0.25).abs() < 0.03, "drop rate {rate}");
+}
+
+#[test]
+fn the_back_camera_pair_sees_less_of_the_face_than_the_front_pairs() {
+    // S3 (cameras 4, 5) stands behind-left of the operator: the torso and head hide landmarks.
+    let noise = DetectorNoise {
+        occluded_report_probability: 0.0,
+        ..DetectorNoise::none()
+    };
+    let ticks = run(1, noise, 1.75, 1);
+    let idle = ticks.iter().find(|t| t.truth.phase == Phase::Idle).unwrap();
+    let count = |cam: usize| {
+        idle.frame
+            .views
+            .iter()
+            .find(|v| v.camera == cam)
+            .unwrap()
+            .observed_count()
+    };
+    assert!(count(0) > count(4), "{} vs {}", count(0), count(4));
+}
