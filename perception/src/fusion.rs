@@ -180,10 +180,6 @@ impl FusionEngine {
 
     fn fuse_with(&mut self, frame: &Frame2, obs: &mut FrameObs) -> Result<FusedFrame> {
         let (undistortion_failures, cameras_present) = self.observations_into(frame, obs)?;
-        let mut view_of_camera = [usize::MAX; MAX_VIEWS];
-        for (i, v) in frame.views.iter().enumerate() {
-            view_of_camera[v.camera] = i;
-        }
         let mut skeleton = Skeleton3::empty(frame.stamp_nanos);
         let mut rejected_views = 0;
         match self.method {
@@ -224,8 +220,6 @@ impl FusionEngine {
                     let used = Used {
                         obs: &obs[lm.index()],
                         mask: masks[lm.index()],
-                        frame,
-                        view_of_camera: &view_of_camera,
                     };
                     self.set(&mut skeleton, lm, p, &used)?;
                 }
@@ -242,12 +236,7 @@ impl FusionEngine {
                             } else {
                                 (1u64 << o.len()) - 1
                             };
-                            let used = Used {
-                                obs: o,
-                                mask,
-                                frame,
-                                view_of_camera: &view_of_camera,
-                            };
+                            let used = Used { obs: o, mask };
                             self.set(&mut skeleton, lm, p, &used)?;
                         }
                     }
@@ -475,8 +464,9 @@ impl FusionEngine {
         Some(out)
     }
 
-    /// Stores a fused landmark with its exact reprojection error through the full (distorted) camera
-    /// model, over the observations that were used.
+    /// Stores a fused landmark with its RMS reprojection error over the observations that were used,
+    /// in pixels of the undistorted image (the observation undistorted, the point projected by the
+    /// pinhole model: no second pass through the lens model on the hot path).
     fn set(
         &self,
         skeleton: &mut Skeleton3,
@@ -488,15 +478,18 @@ impl FusionEngine {
         let mut n = 0u32;
         let mut conf = 0.0;
         for o in iter_mask(used.mask).filter_map(|i| used.obs.get(i)) {
-            let Some(view) = used.frame.views.get(used.view_of_camera[o.camera]) else {
+            let c = &self.cameras[o.camera];
+            let pc = c.R_camera_world * p.coords + c.t_camera_world;
+            if pc.z <= 1e-9 {
                 continue;
-            };
-            let Some(k) = view.get(lm) else { continue };
-            if let Ok(px) = self.rig.cameras()[o.camera].project(&p) {
-                sq += (px - k.pixel()).norm_squared();
-                n += 1;
-                conf += o.confidence;
             }
+            let r = Vector2::new(
+                (pc.x / pc.z - o.normalized.x) * c.focal_px.x,
+                (pc.y / pc.z - o.normalized.y) * c.focal_px.y,
+            );
+            sq += r.norm_squared();
+            n += 1;
+            conf += o.confidence;
         }
         if n == 0 {
             return Ok(());
@@ -518,9 +511,6 @@ struct Used<'a> {
     obs: &'a [Obs],
     /// Bit `i`: `obs[i]` was used.
     mask: u64,
-    frame: &'a Frame2,
-    /// Index into `frame.views` of each camera's view.
-    view_of_camera: &'a [usize; MAX_VIEWS],
 }
 
 /// `(L̃ᵀL̃)⁻¹L̃ᵀ` for one topology: rows are the `n` observed landmarks then the `m` cameras.

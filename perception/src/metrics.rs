@@ -58,9 +58,7 @@ pub fn bone_length_variation_percent(frames: &[Skeleton3]) -> Option<f64> {
 /// mean is taken over the bones that **every** reconstruction observed (a method that never sees
 /// the lower legs must not look better for leaving out the hardest bones). Returns the bones used and
 /// one mean per reconstruction (`None` when no bone is common to all).
-pub fn common_bone_variation_percent(
-    recordings: &[&[Skeleton3]],
-) -> Option<(Vec<Bone>, Vec<f64>)> {
+pub fn common_bone_variation_percent(recordings: &[&[Skeleton3]]) -> Option<(Vec<Bone>, Vec<f64>)> {
     let stats: Vec<Vec<BoneStats>> = recordings.iter().map(|r| bone_stats(r)).collect();
     let common: Vec<Bone> = BONES
         .iter()
