@@ -26,8 +26,8 @@ use crate::angles::{
     arm_landmarks, body_angles, BodyAngles, LegsObservation, SideAngles, UpVector,
 };
 use crate::rula::{
-    lower_arm_band, neck_band, score_worksheet, trunk_band, upper_arm_band, RulaInput, RulaScores,
-    ScoringNote, WristTwist,
+    neck_band, score_worksheet, trunk_band, upper_arm_band, RulaInput, RulaScores, ScoringNote,
+    WristTwist,
 };
 use crate::{ErgonomicsError, Side};
 
@@ -108,7 +108,7 @@ impl Default for Thresholds {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct MuscleUseConfig {
-    /// A non-relaxed posture held (same bands) longer than this is static (default 60 s).
+    /// Out of the relaxed posture (without returning to it) longer than this is static (default 60 s).
     pub hold_nanos: i64,
     /// Window over which repetitions are counted (default 60 s).
     pub window_nanos: i64,
@@ -158,17 +158,19 @@ impl AssessmentConfig {
     }
 }
 
-/// Muscle use from the time series: static (a non-relaxed posture held longer than the hold time)
-/// or repeated (at least `min_repetitions` excursions out of the relaxed posture within the window).
+/// Muscle use from the time series: static (out of the relaxed posture, without returning to it, for
+/// longer than the hold time) or repeated (at least `min_repetitions` excursions out of the relaxed
+/// posture within the window).
 ///
 /// A relaxed posture held still (arm within 20° of hanging; neck and trunk within 20° of upright) is
-/// not counted as static loading.
+/// not counted as static loading. Band changes while out of the relaxed posture (an angle jittering
+/// across a band edge, or work moving between bands) do not restart the hold clock: only a return
+/// to the relaxed posture does. Otherwise measurement noise at any band edge would hide a posture
+/// held for minutes.
 #[derive(Debug, Clone)]
 pub struct MuscleUseTracker {
     config: MuscleUseConfig,
     last_stamp: Option<i64>,
-    key: Option<u32>,
-    key_since: i64,
     excursion_since: Option<i64>,
     excursion_counted: bool,
     onsets: VecDeque<i64>,
@@ -195,20 +197,16 @@ impl MuscleUseTracker {
         Self {
             config,
             last_stamp: None,
-            key: None,
-            key_since: 0,
             excursion_since: None,
             excursion_counted: false,
             onsets: VecDeque::new(),
         }
     }
 
-    /// Feeds one frame: `posture_key` identifies the posture (its bands), `relaxed` says whether it is
-    /// the relaxed posture.
+    /// Feeds one frame: `relaxed` says whether the posture is the relaxed one.
     pub fn update(
         &mut self,
         stamp_nanos: i64,
-        posture_key: u32,
         relaxed: bool,
     ) -> Result<MuscleUse, ErgonomicsError> {
         if let Some(previous) = self.last_stamp {
@@ -220,15 +218,10 @@ impl MuscleUseTracker {
             }
         }
         self.last_stamp = Some(stamp_nanos);
-        if self.key != Some(posture_key) {
-            self.key = Some(posture_key);
-            self.key_since = stamp_nanos;
-        }
-        let static_hold =
-            !relaxed && stamp_nanos.saturating_sub(self.key_since) > self.config.hold_nanos;
-        if relaxed {
+        let static_hold = if relaxed {
             self.excursion_since = None;
             self.excursion_counted = false;
+            false
         } else {
             let since = *self.excursion_since.get_or_insert(stamp_nanos);
             if !self.excursion_counted
@@ -237,7 +230,8 @@ impl MuscleUseTracker {
                 self.onsets.push_back(since);
                 self.excursion_counted = true;
             }
-        }
+            stamp_nanos.saturating_sub(since) > self.config.hold_nanos
+        };
         let oldest = stamp_nanos.saturating_sub(self.config.window_nanos);
         while self.onsets.front().is_some_and(|&t| t < oldest) {
             self.onsets.pop_front();
@@ -446,10 +440,7 @@ impl RulaAssessor {
                 let nb = neck_band(n_deg);
                 let tb = trunk_band(t_deg, task.seated_well_supported);
                 let relaxed = nb <= 2 && tb <= 2;
-                Some(
-                    self.muscle_b
-                        .update(stamp, u32::from(nb) * 10 + u32::from(tb), relaxed)?,
-                )
+                Some(self.muscle_b.update(stamp, relaxed)?)
             }
             None => None,
         };
@@ -500,14 +491,11 @@ impl RulaAssessor {
             let el_deg = el.to_degrees();
             let wf_deg = wf.to_degrees();
             let relaxed_a = upper_arm_band(ua_deg) == 1;
-            let key_a = u32::from(upper_arm_band(ua_deg)) * 100
-                + u32::from(lower_arm_band(el_deg)) * 10
-                + u32::from(crate::rula::wrist_band(wf_deg));
             let i = match side {
                 Side::Left => 0,
                 Side::Right => 1,
             };
-            let ma = self.muscle_a[i].update(stamp, key_a, relaxed_a)?;
+            let ma = self.muscle_a[i].update(stamp, relaxed_a)?;
             let input = RulaInput {
                 upper_arm_flexion_deg: ua_deg,
                 shoulder_raised: raise.is_some_and(|r| r < th.shoulder_raise_ratio_below),
