@@ -28,6 +28,8 @@ enum Command {
     Height(commands::height::Args),
     /// Validate, lock, approve and verify the class handover trajectories (safety engineer's review).
     Trajectories(commands::trajectories::Args),
+    /// The seed paper's experiments on the digital twin: table1, adaptation, height, rula-agreement.
+    Sim(commands::sim::Args),
 }
 
 fn main() -> std::process::ExitCode {
@@ -43,6 +45,7 @@ fn main() -> std::process::ExitCode {
         Command::Rula(args) => commands::rula::run(&args),
         Command::Height(args) => commands::height::run(&args),
         Command::Trajectories(args) => commands::trajectories::run(&args),
+        Command::Sim(args) => commands::sim::run(&args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

@@ -14,6 +14,8 @@
 //! - [`detector`]: 2D detections like a real pose estimator's — lens distortion via the perception
 //!   camera model, pixel noise, self-occlusion, out-of-frame, outliers, dropped views, timestamp jitter;
 //!   every level a documented parameter ([`DetectorNoise`]).
+//! - [`experiments`]: the seed paper's Table 1 and Figs. 7–9, height estimation and RULA agreement,
+//!   run through the real perception and ergonomics crates.
 //! - [`session`]: the session script (walk in → idle → N handovers → walk out) and the simulation
 //!   clock; each [`Tick`] carries the ground truth and every camera's [`View2`](ergocell_perception::View2).
 //!
@@ -48,6 +50,7 @@
 pub mod body;
 pub mod cameras;
 pub mod detector;
+pub mod experiments;
 pub mod reach;
 pub mod session;
 
@@ -55,7 +58,7 @@ pub use body::{ArmPosture, LegPosture, Operator, Posture};
 pub use cameras::{ring_rig, RingRigConfig};
 pub use detector::DetectorNoise;
 pub use reach::{solve_reach, ReachConfig, ReachSolution};
-pub use session::{GroundTruth, Phase, SessionScript, SimConfig, Simulation, Tick};
+pub use session::{GroundTruth, Habits, Phase, SessionScript, SimConfig, Simulation, Tick};
 
 /// Everything that can go wrong in the simulator.
 #[derive(Debug, PartialEq, thiserror::Error)]
@@ -74,4 +77,7 @@ pub enum SimError {
     /// A skeleton could not be built (non-finite landmark).
     #[error(transparent)]
     Skeleton(#[from] ergocell_skeleton::SkeletonError),
+    /// The ergonomics crate refused a configuration (experiments).
+    #[error(transparent)]
+    Ergonomics(#[from] ergocell_ergonomics::ErgonomicsError),
 }

@@ -16,7 +16,8 @@
 //! than any comfort term, so a reachable target is reached (tested: within 1 cm).
 //!
 //! The head then looks at the hand: the eyes take up to [`ReachConfig::eye_down_rad`] of downward
-//! gaze (and [`ReachConfig::eye_up_rad`] upward) on their own, the neck the rest.
+//! gaze (and [`ReachConfig::eye_up_rad`] upward) on their own, the neck the rest; looking down or
+//! ahead the head never flexes less than the base posture's habitual flexion.
 
 use nalgebra::{DMatrix, DVector, Point3};
 
@@ -38,9 +39,8 @@ pub struct ReachConfig {
     pub lower_rad: [f64; 6],
     /// Upper joint limits, same order (default 180°, 120°, 90°, 150°, 60°, 90°).
     pub upper_rad: [f64; 6],
-    /// Downward gaze (from horizontal) the eyes take without moving the head (default 35°: the normal
-    /// line of sight is 15–30° below horizontal and the eyes rotate a further ~15° comfortably,
-    /// Grandjean).
+    /// Downward gaze (from horizontal) the eyes take without moving the head (default 40°: the
+    /// preferred viewing zone for near work reaches 15–45° below horizontal, Grandjean).
     pub eye_down_rad: f64,
     /// Upward gaze the eyes take without moving the head (default 10°).
     pub eye_up_rad: f64,
@@ -59,7 +59,7 @@ impl Default for ReachConfig {
             rest_rad: [0.0, 0.0, 0.0, d(80.0), 0.0, 0.0],
             lower_rad: [d(-50.0), d(-40.0), d(-60.0), 0.0, d(-60.0), d(-10.0)],
             upper_rad: [d(180.0), d(120.0), d(90.0), d(150.0), d(60.0), d(90.0)],
-            eye_down_rad: d(35.0),
+            eye_down_rad: d(40.0),
             eye_up_rad: d(10.0),
             eye_side_rad: d(20.0),
             max_iterations: 200,
@@ -221,6 +221,7 @@ pub fn solve_reach(
 
 /// Sets neck flexion and yaw so the eyes look at `target`, the eyes taking the first part of the gaze.
 pub fn look_at(op: &Operator, posture: &mut Posture, target: &Point3<f64>, cfg: &ReachConfig) {
+    let habitual_neck = posture.neck_flexion_rad;
     posture.neck_flexion_rad = 0.0;
     posture.neck_yaw_rad = 0.0;
     let p = op.landmarks(posture);
@@ -250,7 +251,14 @@ pub fn look_at(op: &Operator, posture: &mut Posture, target: &Point3<f64>, cfg: 
     } else {
         0.0
     };
-    posture.neck_flexion_rad = (head_pitch - posture.trunk_flexion_rad).clamp(d(-40.0), d(60.0));
+    // Looking down or ahead the head keeps at least its habitual flexion; looking up it extends.
+    let neck = head_pitch - posture.trunk_flexion_rad;
+    let neck = if head_pitch < 0.0 {
+        neck
+    } else {
+        neck.max(habitual_neck)
+    };
+    posture.neck_flexion_rad = neck.clamp(d(-40.0), d(60.0));
     posture.neck_yaw_rad = yaw.clamp(d(-70.0), d(70.0));
 }
 

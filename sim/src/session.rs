@@ -19,7 +19,7 @@ use serde::Serialize;
 
 use crate::body::{LegPosture, Operator, Posture};
 use crate::detector::{gaussian, jitter_nanos, render_view, DetectorNoise};
-use crate::reach::{look_at, solve_reach, ReachConfig};
+use crate::reach::{solve_reach, ReachConfig};
 use crate::SimError;
 
 /// What the operator is doing.
@@ -82,6 +82,40 @@ pub struct SessionScript {
     pub target_sigma_m: f64,
     /// Walking: step frequency, Hz (default 1.8).
     pub step_hz: f64,
+    /// Habitual posture, drawn once per session (see [`Habits`]).
+    pub habits: Habits,
+}
+
+/// A person's habitual posture, `(mean, σ)` in radians, drawn once per session from the motion
+/// stream and clipped to mean ± 2σ. Nobody stands at exactly 0.000°; RULA's bands have edges at
+/// exactly 0° (neck extension scores 4, any trunk flexion 2, any wrist flexion 2), so a simulated
+/// person frozen at the edge would make every measurement look wrong.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Habits {
+    /// Head flexion while standing straight for the height measurement (default 3° ± 1.5°).
+    pub idle_neck_flexion_rad: (f64, f64),
+    /// Head flexion while resting between handovers (default 8° ± 3°: looking at the workstation).
+    pub rest_neck_flexion_rad: (f64, f64),
+    /// Forward lean of the trunk while standing (default 2° ± 1°).
+    pub trunk_flexion_rad: (f64, f64),
+    /// Flexion of the relaxed, hanging wrists (default 6° ± 3°).
+    pub wrist_flexion_rad: (f64, f64),
+}
+
+impl Default for Habits {
+    fn default() -> Self {
+        let d = f64::to_radians;
+        Self {
+            idle_neck_flexion_rad: (d(3.0), d(1.5)),
+            rest_neck_flexion_rad: (d(8.0), d(3.0)),
+            trunk_flexion_rad: (d(2.0), d(1.0)),
+            wrist_flexion_rad: (d(6.0), d(3.0)),
+        }
+    }
+}
+
+fn draw(rng: &mut ChaCha8Rng, (mean, sigma): (f64, f64)) -> f64 {
+    mean + sigma * gaussian(rng).clamp(-2.0, 2.0)
 }
 
 impl SessionScript {
@@ -102,6 +136,7 @@ impl SessionScript {
             walk_out_secs: 4.0,
             target_sigma_m: 0.01,
             step_hz: 1.8,
+            habits: Habits::default(),
         }
     }
 
@@ -222,6 +257,7 @@ pub struct Simulation {
     script: SessionScript,
     config: SimConfig,
     rest: Posture,
+    idle: Posture,
     reach: Vec<(Point3<f64>, Posture)>,
     rng: ChaCha8Rng,
     next: u64,
@@ -250,14 +286,24 @@ impl Simulation {
                 why: "must be positive",
             });
         }
-        let rest = Posture {
-            position_m: script.station_m,
-            heading_rad: script.station_heading_rad,
-            ..Posture::default()
-        };
         // Motion variation has its own stream, so changing the noise never changes the motion.
         let mut motion = ChaCha8Rng::seed_from_u64(config.seed);
         motion.set_stream(1);
+        let habits = script.habits;
+        let mut rest = Posture {
+            position_m: script.station_m,
+            heading_rad: script.station_heading_rad,
+            trunk_flexion_rad: draw(&mut motion, habits.trunk_flexion_rad),
+            ..Posture::default()
+        };
+        let wrist = draw(&mut motion, habits.wrist_flexion_rad);
+        rest.left_arm.wrist_flexion_rad = wrist;
+        rest.right_arm.wrist_flexion_rad = wrist;
+        let idle = Posture {
+            neck_flexion_rad: draw(&mut motion, habits.idle_neck_flexion_rad),
+            ..rest
+        };
+        rest.neck_flexion_rad = draw(&mut motion, habits.rest_neck_flexion_rad);
         let mut reach = Vec::with_capacity(script.cycles);
         for _ in 0..script.cycles {
             let target = script.handover_m
@@ -279,6 +325,7 @@ impl Simulation {
             script,
             config,
             rest,
+            idle,
             reach,
             rng,
             next: 0,
@@ -320,7 +367,7 @@ impl Simulation {
         }
         t -= sc.walk_in_secs;
         if t < sc.idle_secs {
-            return (Phase::Idle, self.rest, None);
+            return (Phase::Idle, self.idle, None);
         }
         t -= sc.idle_secs;
         let cycle_secs = sc.cycle_secs();
@@ -378,8 +425,7 @@ impl Simulation {
         let (walk_start, walk_end) = if inbound { (0.0, 0.8) } else { (0.2, 1.0) };
         let s = t / dur;
         let w = ((s - walk_start) / (walk_end - walk_start)).clamp(0.0, 1.0);
-        let mut q = self.rest;
-        q.neck_flexion_rad = 0.0;
+        let mut q = self.idle;
         q.position_m = [
             from[0] + (to[0] - from[0]) * w,
             from[1] + (to[1] - from[1]) * w,
@@ -417,14 +463,7 @@ impl Simulation {
 
     /// Ground truth at time `t_nanos`.
     pub fn truth_at(&self, t_nanos: i64) -> Result<GroundTruth, SimError> {
-        let (phase, mut posture, target) = self.posture_at(t_nanos);
-        if let (Some(_), Phase::Reach { .. } | Phase::Hold { .. } | Phase::Return { .. }) =
-            (target, phase)
-        {
-            // keep watching the hand on the way
-            let hand = self.operator.grasp_point(&posture);
-            look_at(&self.operator, &mut posture, &hand, &self.config.reach);
-        }
+        let (phase, posture, target) = self.posture_at(t_nanos);
         let points = self.operator.landmarks(&posture);
         Ok(GroundTruth {
             stamp_nanos: t_nanos,

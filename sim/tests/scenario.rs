@@ -168,3 +168,71 @@ fn the_back_camera_pair_sees_less_of_the_face_than_the_front_pairs() {
     };
     assert!(count(0) > count(4), "{} vs {}", count(0), count(4));
 }
+
+fn handovers() -> ergocell_sim::experiments::Handovers {
+    ergocell_sim::experiments::Handovers {
+        before_m: c2_handover(),
+        c1_m: Point3::new(0.38, -0.10, 0.97),
+        c2_m: c2_handover(),
+        c3_m: Point3::new(0.44, -0.10, 1.13),
+    }
+}
+
+fn setup(seed: u64) -> ergocell_sim::experiments::Setup {
+    ergocell_sim::experiments::Setup {
+        rig: reference_rig(),
+        noise: DetectorNoise::default(),
+        seed,
+    }
+}
+
+#[test]
+fn same_seed_gives_byte_identical_experiment_json() {
+    use ergocell_sim::experiments::{height, rula_agreement, table1};
+    let json = |seed: u64| {
+        let mut none = |_: usize, _: usize| {};
+        let t = table1(&setup(seed), &handovers(), &[1.6, 1.9], 1, &mut none).unwrap();
+        let h = height(&setup(seed), &handovers(), 2, 3.0, &mut none).unwrap();
+        let r = rula_agreement(&setup(seed), &handovers(), &[1.7], 1, &mut none).unwrap();
+        format!(
+            "{}{}{}",
+            serde_json::to_string(&t).unwrap(),
+            serde_json::to_string(&h).unwrap(),
+            serde_json::to_string(&r).unwrap()
+        )
+    };
+    let a = json(4);
+    assert_eq!(a, json(4));
+    assert_ne!(a, json(5));
+}
+
+#[test]
+fn default_fusion_beats_every_single_pair_on_the_twin() {
+    // The goal for Table 1, as a regression test on a short run.
+    let mut none = |_: usize, _: usize| {};
+    let t = ergocell_sim::experiments::table1(&setup(2), &handovers(), &[1.6, 1.8], 2, &mut none)
+        .unwrap();
+    assert_eq!(t.landmarks.len(), 12);
+    assert_eq!(t.rmse_m.len(), 5);
+    assert_eq!(t.wins("default_fusion", &t.best_pair()), 12);
+    assert_eq!(t.wins("default_fusion", &t.rmse_m["paper_fusion"]), 12);
+}
+
+#[test]
+fn the_solved_hold_posture_reaches_every_class_handover_for_every_stature() {
+    // Property over the adaptation grid: every stature reaches its class's handover within 1 cm.
+    let thresholds = ergocell_ergonomics::height::ClassThresholds::default();
+    for h in ergocell_sim::experiments::adaptation_heights() {
+        let class = ergocell_ergonomics::HeightClass::of(h, &thresholds);
+        let target = handovers().for_class(class);
+        let op = Operator::new(h).unwrap();
+        let sol = ergocell_sim::solve_reach(
+            &op,
+            &ergocell_sim::Posture::default(),
+            &target,
+            &ergocell_sim::ReachConfig::default(),
+        )
+        .unwrap();
+        assert!(sol.miss_m < 0.01, "{h} m misses by {} m", sol.miss_m);
+    }
+}

@@ -2,6 +2,7 @@
 
 pub mod height;
 pub mod rula;
+pub mod sim;
 pub mod trajectories;
 pub mod triangulate;
 

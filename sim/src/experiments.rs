@@ -1,0 +1,745 @@
+//! The seed paper's experiments, reproduced on the digital twin with the real perception and
+//! ergonomics code (only the world is simulated).
+//!
+//! - [`table1`]: the paper's Table 1 — RMSE of 12 landmarks for each stereo pair alone (DLT of that
+//!   pair, [`FusionEngine::pair_estimates_of`]), the paper's graph-Laplacian fusion
+//!   ([`FusionMethod::Paper`]) and ergocell's default fusion ([`FusionMethod::Default`]), per frame,
+//!   no temporal filter, over every frame at the station (idle and handover cycles).
+//! - [`adaptation`]: the paper's Figs. 7–9 — operators 1.50–2.00 m do the handover task before
+//!   adaptation (one handover point for a 1.75 m operator) and after (their class's handover point;
+//!   class from the true stature with the ergonomics crate's default thresholds). RULA on the noisy
+//!   pipeline (default fusion → One-Euro filter → RULA assessor) over the frames where the hand holds
+//!   the handover point, and the same on the ground truth.
+//! - [`height`]: a population uniform in 1.50–2.00 m; stature and class from the noisy pipeline with
+//!   the ergonomics height estimator during a long idle phase.
+//! - [`rula_agreement`]: per-frame RULA grand score and action level from the noisy pipeline vs from
+//!   ground truth: exact agreement `Po` and Cohen's κ.
+//!
+//! Each function takes the rig, the detector noise and a seed and returns plain values (no I/O); the
+//! binary prints, plots and writes JSON. Each session gets its own seed derived from the experiment's
+//! (`seed · 1000 + session`), so results are reproducible bit for bit and independent of run order.
+
+use std::collections::BTreeMap;
+
+use ergocell_ergonomics::assess::BodyRegion;
+use ergocell_ergonomics::rula::action_level;
+use ergocell_ergonomics::{
+    AssessmentConfig, HeightClass, HeightConfig, HeightEstimator, HeightStatus, RulaAssessor,
+    UpVector,
+};
+use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
+use ergocell_perception::{CameraRig, FusionEngine, FusionMethod};
+use ergocell_skeleton::{Landmark, Skeleton3};
+use nalgebra::{Point3, Vector3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+
+use crate::body::Operator;
+use crate::detector::DetectorNoise;
+use crate::session::{Phase, SessionScript, SimConfig, Simulation, Tick};
+use crate::SimError;
+
+/// The 12 landmarks of the paper's Table 1.
+pub const TABLE1_LANDMARKS: [Landmark; 12] = [
+    Landmark::LeftShoulder,
+    Landmark::RightShoulder,
+    Landmark::LeftElbow,
+    Landmark::RightElbow,
+    Landmark::LeftWrist,
+    Landmark::RightWrist,
+    Landmark::LeftHip,
+    Landmark::RightHip,
+    Landmark::LeftKnee,
+    Landmark::RightKnee,
+    Landmark::LeftAnkle,
+    Landmark::RightAnkle,
+];
+
+/// What every experiment runs on.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    pub rig: CameraRig,
+    pub noise: DetectorNoise,
+    pub seed: u64,
+}
+
+/// The handover points, world frame: one before adaptation, one per class after.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Handovers {
+    /// The single handover point of the unadapted robot (set for a 1.75 m operator).
+    pub before_m: Point3<f64>,
+    pub c1_m: Point3<f64>,
+    pub c2_m: Point3<f64>,
+    pub c3_m: Point3<f64>,
+}
+
+impl Handovers {
+    /// The class's handover point.
+    pub fn for_class(&self, class: HeightClass) -> Point3<f64> {
+        match class {
+            HeightClass::C1 => self.c1_m,
+            HeightClass::C2 => self.c2_m,
+            HeightClass::C3 => self.c3_m,
+        }
+    }
+}
+
+/// Progress callback: `(sessions done, sessions in total)`.
+pub type Progress<'a> = &'a mut dyn FnMut(usize, usize);
+
+fn up() -> Result<UpVector, SimError> {
+    Ok(UpVector::new(Vector3::z())?)
+}
+
+fn session_seed(seed: u64, session: usize) -> u64 {
+    seed.wrapping_mul(1000).wrapping_add(session as u64)
+}
+
+fn simulate(
+    setup: &Setup,
+    session: usize,
+    stature_m: f64,
+    script: SessionScript,
+) -> Result<Vec<Tick>, SimError> {
+    let config = SimConfig {
+        noise: setup.noise,
+        ..SimConfig::new(session_seed(setup.seed, session))
+    };
+    Simulation::new(setup.rig.clone(), Operator::new(stature_m)?, script, config)?.collect()
+}
+
+fn at_station(phase: Phase) -> bool {
+    !matches!(phase, Phase::WalkIn | Phase::WalkOut | Phase::Gone)
+}
+
+fn round6(x: f64) -> f64 {
+    (x * 1e6).round() / 1e6
+}
+
+// ---------------------------------------------------------------------------------------------
+// Table 1
+
+/// Result of [`table1`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Table1 {
+    /// The 12 landmark names.
+    pub landmarks: Vec<String>,
+    /// RMSE per landmark, metres, per method: each stereo pair by name, `paper_fusion`,
+    /// `default_fusion`. `None` where a method never estimated the landmark.
+    pub rmse_m: BTreeMap<String, Vec<Option<f64>>>,
+    /// Median error per landmark, metres, per method (RMSE is dominated by the rare catastrophic
+    /// estimates of a narrow-baseline pair; the median shows the typical error).
+    pub median_m: BTreeMap<String, Vec<Option<f64>>>,
+    /// Share of the frames in which each method estimated each landmark.
+    pub coverage: BTreeMap<String, Vec<f64>>,
+    /// Frames evaluated.
+    pub frames: usize,
+    /// Operators' statures.
+    pub statures_m: Vec<f64>,
+}
+
+impl Table1 {
+    /// For each landmark, the smallest RMSE of any single stereo pair.
+    pub fn best_pair(&self) -> Vec<Option<f64>> {
+        (0..TABLE1_LANDMARKS.len())
+            .map(|i| {
+                self.rmse_m
+                    .iter()
+                    .filter(|(k, _)| *k != "paper_fusion" && *k != "default_fusion")
+                    .filter_map(|(_, v)| v[i])
+                    .min_by(f64::total_cmp)
+            })
+            .collect()
+    }
+
+    /// Landmarks on which `method` beats (strictly lower RMSE) `other`'s per-landmark values.
+    pub fn wins(&self, method: &str, other: &[Option<f64>]) -> usize {
+        let Some(m) = self.rmse_m.get(method) else {
+            return 0;
+        };
+        m.iter()
+            .zip(other)
+            .filter(|(a, b)| match (a, b) {
+                (Some(a), Some(b)) => a < b,
+                (Some(_), None) => true,
+                _ => false,
+            })
+            .count()
+    }
+}
+
+#[derive(Default, Clone)]
+struct Acc {
+    sum_sq: Vec<f64>,
+    n: Vec<usize>,
+    errors: Vec<Vec<f64>>,
+}
+
+impl Acc {
+    fn new() -> Self {
+        Self {
+            sum_sq: vec![0.0; TABLE1_LANDMARKS.len()],
+            n: vec![0; TABLE1_LANDMARKS.len()],
+            errors: vec![Vec::new(); TABLE1_LANDMARKS.len()],
+        }
+    }
+    fn add(&mut self, i: usize, est: Option<Point3<f64>>, truth: &Point3<f64>) {
+        if let Some(e) = est {
+            let d = (e - truth).norm();
+            self.sum_sq[i] += d * d;
+            self.n[i] += 1;
+            self.errors[i].push(d);
+        }
+    }
+    fn medians(&mut self) -> Vec<Option<f64>> {
+        self.errors
+            .iter_mut()
+            .map(|v| {
+                if v.is_empty() {
+                    return None;
+                }
+                v.sort_by(f64::total_cmp);
+                let n = v.len();
+                Some(round6(if n % 2 == 1 {
+                    v[n / 2]
+                } else {
+                    0.5 * (v[n / 2 - 1] + v[n / 2])
+                }))
+            })
+            .collect()
+    }
+}
+
+/// The paper's Table 1 on the simulator: operators of `statures_m`, `cycles` handovers each at their
+/// class's handover point.
+pub fn table1(
+    setup: &Setup,
+    handovers: &Handovers,
+    statures_m: &[f64],
+    cycles: usize,
+    progress: Progress<'_>,
+) -> Result<Table1, SimError> {
+    let pair_names: Vec<String> = setup.rig.pairs().iter().map(|p| p.name.clone()).collect();
+    let mut pairs = vec![Acc::new(); pair_names.len()];
+    let mut paper = Acc::new();
+    let mut default = Acc::new();
+    let mut frames = 0usize;
+    let thresholds = HeightConfig::new(up()?).thresholds;
+    for (s, &h) in statures_m.iter().enumerate() {
+        let mut script = SessionScript::new(handovers.for_class(HeightClass::of(h, &thresholds)));
+        script.cycles = cycles;
+        let ticks = simulate(setup, s, h, script)?;
+        let mut e_paper = FusionEngine::new(setup.rig.clone(), FusionMethod::Paper)?;
+        let mut e_default = FusionEngine::new(setup.rig.clone(), FusionMethod::Default)?;
+        for tick in ticks.iter().filter(|t| at_station(t.truth.phase)) {
+            frames += 1;
+            let per_pair = e_default.pair_estimates_of(&tick.frame)?;
+            let fp = e_paper.fuse(&tick.frame)?.skeleton;
+            let fd = e_default.fuse(&tick.frame)?.skeleton;
+            for (i, lm) in TABLE1_LANDMARKS.iter().enumerate() {
+                let Some(truth) = tick.truth.skeleton.position(*lm) else {
+                    continue;
+                };
+                for (acc, est) in pairs.iter_mut().zip(&per_pair) {
+                    acc.add(i, est[lm.index()], &truth);
+                }
+                paper.add(i, fp.position(*lm), &truth);
+                default.add(i, fd.position(*lm), &truth);
+            }
+        }
+        progress(s + 1, statures_m.len());
+    }
+    let mut rmse_m = BTreeMap::new();
+    let mut median_m = BTreeMap::new();
+    let mut coverage = BTreeMap::new();
+    let all = pair_names.into_iter().zip(pairs).chain([
+        ("paper_fusion".to_owned(), paper),
+        ("default_fusion".to_owned(), default),
+    ]);
+    for (name, mut acc) in all {
+        median_m.insert(name.clone(), acc.medians());
+        rmse_m.insert(
+            name.clone(),
+            acc.sum_sq
+                .iter()
+                .zip(&acc.n)
+                .map(|(s, n)| (*n > 0).then(|| round6((s / *n as f64).sqrt())))
+                .collect(),
+        );
+        coverage.insert(
+            name,
+            acc.n
+                .iter()
+                .map(|n| round6(*n as f64 / frames.max(1) as f64))
+                .collect(),
+        );
+    }
+    Ok(Table1 {
+        landmarks: TABLE1_LANDMARKS
+            .iter()
+            .map(|l| l.name().to_owned())
+            .collect(),
+        rmse_m,
+        median_m,
+        coverage,
+        frames,
+        statures_m: statures_m.to_vec(),
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// The noisy pipeline and RULA on it
+
+/// Default fusion → One-Euro filter: the reconstruction the cell controller runs.
+struct Pipeline {
+    engine: FusionEngine,
+    filter: OneEuroFilter,
+}
+
+impl Pipeline {
+    fn new(rig: &CameraRig) -> Result<Self, SimError> {
+        Ok(Self {
+            engine: FusionEngine::new(rig.clone(), FusionMethod::Default)?,
+            filter: OneEuroFilter::new(OneEuroParams::default()),
+        })
+    }
+    fn skeleton(&mut self, tick: &Tick) -> Result<Skeleton3, SimError> {
+        let fused = self.engine.fuse(&tick.frame)?;
+        Ok(self.filter.filter(&fused.skeleton))
+    }
+}
+
+/// Per-region scores and angles of one scored frame (worse side).
+#[derive(Debug, Clone, Copy, Default)]
+struct Scored {
+    grand: u8,
+    regions: [u8; 6],
+}
+
+fn headline(assessor: &mut RulaAssessor, s: &Skeleton3) -> Result<Option<Scored>, SimError> {
+    let a = assessor.assess(s)?;
+    Ok(a.headline().map(|h| Scored {
+        grand: h.scores.final_score,
+        regions: BodyRegion::ALL.map(|r| r.score(&h.scores)),
+    }))
+}
+
+/// Result of [`adaptation`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Adaptation {
+    pub heights_m: Vec<f64>,
+    /// Mean RULA grand score (worse side) over the handover frames, noisy pipeline.
+    pub mean_grand_score_before: Vec<f64>,
+    pub mean_grand_score_after: Vec<f64>,
+    /// The same on the ground-truth skeleton.
+    pub true_mean_grand_score_before: Vec<f64>,
+    pub true_mean_grand_score_after: Vec<f64>,
+    /// Mean score per body region (upper_arm, lower_arm, wrist, neck, trunk, legs), per height.
+    pub region_names: Vec<String>,
+    pub mean_region_scores_before: Vec<Vec<f64>>,
+    pub mean_region_scores_after: Vec<Vec<f64>>,
+    /// True joint angles of the working side while holding, degrees, per height (mean over frames):
+    /// trunk flexion, shoulder flexion, elbow flexion, neck flexion.
+    pub angle_names: Vec<String>,
+    pub mean_angles_deg_before: Vec<Vec<f64>>,
+    pub mean_angles_deg_after: Vec<Vec<f64>>,
+    /// Every frame's true angles (same order), before and after, for distributions.
+    pub angle_samples_deg_before: Vec<Vec<f64>>,
+    pub angle_samples_deg_after: Vec<Vec<f64>>,
+    /// The handover point used after adaptation, per height.
+    pub handover_after_m: Vec<[f64; 3]>,
+}
+
+fn mean(v: &[f64]) -> f64 {
+    if v.is_empty() {
+        f64::NAN
+    } else {
+        v.iter().sum::<f64>() / v.len() as f64
+    }
+}
+
+struct TaskRun {
+    grand: Vec<f64>,
+    true_grand: Vec<f64>,
+    regions: Vec<[f64; 6]>,
+    angles: Vec<[f64; 4]>,
+}
+
+fn run_task(
+    setup: &Setup,
+    session: usize,
+    stature_m: f64,
+    handover: Point3<f64>,
+    cycles: usize,
+) -> Result<TaskRun, SimError> {
+    let mut script = SessionScript::new(handover);
+    script.cycles = cycles;
+    let ticks = simulate(setup, session, stature_m, script)?;
+    let mut pipeline = Pipeline::new(&setup.rig)?;
+    let cfg = AssessmentConfig::new(up()?);
+    let (mut est, mut truth) = (RulaAssessor::new(cfg)?, RulaAssessor::new(cfg)?);
+    let mut out = TaskRun {
+        grand: Vec::new(),
+        true_grand: Vec::new(),
+        regions: Vec::new(),
+        angles: Vec::new(),
+    };
+    let op = Operator::new(stature_m)?;
+    for tick in &ticks {
+        let s = pipeline.skeleton(tick)?;
+        let e = headline(&mut est, &s)?;
+        let t = headline(&mut truth, &tick.truth.skeleton)?;
+        if !matches!(tick.truth.phase, Phase::Hold { .. }) {
+            continue;
+        }
+        if let Some(e) = e {
+            out.grand.push(f64::from(e.grand));
+            out.regions.push(e.regions.map(f64::from));
+        }
+        if let Some(t) = t {
+            out.true_grand.push(f64::from(t.grand));
+        }
+        let q = &tick.truth.posture;
+        let arm = q.working_arm(op.right_handed);
+        out.angles.push(
+            [
+                q.trunk_flexion_rad,
+                arm.flexion_rad,
+                arm.elbow_flexion_rad,
+                q.neck_flexion_rad,
+            ]
+            .map(f64::to_degrees),
+        );
+    }
+    Ok(out)
+}
+
+/// Heights 1.50–2.00 m in 5 cm steps.
+pub fn adaptation_heights() -> Vec<f64> {
+    (0..=10)
+        .map(|i| round6(1.50 + 0.05 * f64::from(i)))
+        .collect()
+}
+
+/// The paper's Figs. 7–9: RULA before vs after the class-specific handover.
+pub fn adaptation(
+    setup: &Setup,
+    handovers: &Handovers,
+    heights_m: &[f64],
+    cycles: usize,
+    progress: Progress<'_>,
+) -> Result<Adaptation, SimError> {
+    let thresholds = HeightConfig::new(up()?).thresholds;
+    let mut r = Adaptation {
+        heights_m: heights_m.to_vec(),
+        mean_grand_score_before: Vec::new(),
+        mean_grand_score_after: Vec::new(),
+        true_mean_grand_score_before: Vec::new(),
+        true_mean_grand_score_after: Vec::new(),
+        region_names: BodyRegion::ALL
+            .iter()
+            .map(|b| b.name().to_owned())
+            .collect(),
+        mean_region_scores_before: Vec::new(),
+        mean_region_scores_after: Vec::new(),
+        angle_names: [
+            "trunk_flexion",
+            "shoulder_flexion",
+            "elbow_flexion",
+            "neck_flexion",
+        ]
+        .map(str::to_owned)
+        .to_vec(),
+        mean_angles_deg_before: Vec::new(),
+        mean_angles_deg_after: Vec::new(),
+        angle_samples_deg_before: vec![Vec::new(); 4],
+        angle_samples_deg_after: vec![Vec::new(); 4],
+        handover_after_m: Vec::new(),
+    };
+    let total = 2 * heights_m.len();
+    for (i, &h) in heights_m.iter().enumerate() {
+        let after_point = handovers.for_class(HeightClass::of(h, &thresholds));
+        r.handover_after_m
+            .push([after_point.x, after_point.y, after_point.z]);
+        for (k, point) in [handovers.before_m, after_point].into_iter().enumerate() {
+            // The same session seed before and after: only the handover point differs.
+            let run = run_task(setup, i, h, point, cycles)?;
+            let regions: Vec<f64> = (0..6)
+                .map(|j| round6(mean(&run.regions.iter().map(|x| x[j]).collect::<Vec<_>>())))
+                .collect();
+            let angles: Vec<f64> = (0..4)
+                .map(|j| round6(mean(&run.angles.iter().map(|x| x[j]).collect::<Vec<_>>())))
+                .collect();
+            let (grand, true_grand) = (round6(mean(&run.grand)), round6(mean(&run.true_grand)));
+            let samples = if k == 0 {
+                r.mean_grand_score_before.push(grand);
+                r.true_mean_grand_score_before.push(true_grand);
+                r.mean_region_scores_before.push(regions);
+                r.mean_angles_deg_before.push(angles);
+                &mut r.angle_samples_deg_before
+            } else {
+                r.mean_grand_score_after.push(grand);
+                r.true_mean_grand_score_after.push(true_grand);
+                r.mean_region_scores_after.push(regions);
+                r.mean_angles_deg_after.push(angles);
+                &mut r.angle_samples_deg_after
+            };
+            for a in &run.angles {
+                for j in 0..4 {
+                    samples[j].push(round6(a[j]));
+                }
+            }
+            progress(2 * i + k + 1, total);
+        }
+    }
+    Ok(r)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Height
+
+/// One operator of the height experiment.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HeightRow {
+    pub true_m: f64,
+    pub estimated_m: Option<f64>,
+    pub true_class: HeightClass,
+    /// `None` = undecided.
+    pub decided_class: Option<HeightClass>,
+}
+
+/// Result of [`height`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HeightResult {
+    /// Mean absolute stature error over operators with an estimate, metres.
+    pub mae_m: f64,
+    /// Share of all operators whose decided class is correct.
+    pub class_accuracy: f64,
+    /// The same over operators more than 2 cm from a class boundary.
+    pub class_accuracy_beyond_2cm: f64,
+    /// Operators given a wrong class.
+    pub confidently_wrong: usize,
+    pub undecided: usize,
+    pub operators: Vec<HeightRow>,
+}
+
+/// A population of `count` operators uniform in 1.50–2.00 m, each standing idle for `idle_secs`.
+pub fn height(
+    setup: &Setup,
+    handovers: &Handovers,
+    count: usize,
+    idle_secs: f64,
+    progress: Progress<'_>,
+) -> Result<HeightResult, SimError> {
+    let mut population = ChaCha8Rng::seed_from_u64(setup.seed);
+    population.set_stream(7);
+    let cfg = HeightConfig::new(up()?);
+    let t = cfg.thresholds;
+    let mut rows = Vec::with_capacity(count);
+    for i in 0..count {
+        let h = round6(1.50 + 0.50 * population.random::<f64>());
+        let mut script = SessionScript::new(handovers.before_m);
+        script.cycles = 0;
+        script.idle_secs = idle_secs;
+        script.walk_out_secs = 0.0;
+        let ticks = simulate(setup, i, h, script)?;
+        let mut pipeline = Pipeline::new(&setup.rig)?;
+        let mut estimator = HeightEstimator::new(cfg);
+        for tick in &ticks {
+            let s = pipeline.skeleton(tick)?;
+            estimator.push(&s);
+        }
+        let (estimated_m, decided_class) = match estimator.status() {
+            HeightStatus::Decided(d) => (Some(d.estimate.height_m), Some(d.class)),
+            HeightStatus::Measuring { estimate, .. } => (estimate.map(|e| e.height_m), None),
+        };
+        rows.push(HeightRow {
+            true_m: h,
+            estimated_m: estimated_m.map(round6),
+            true_class: HeightClass::of(h, &t),
+            decided_class,
+        });
+        progress(i + 1, count);
+    }
+    let errors: Vec<f64> = rows
+        .iter()
+        .filter_map(|r| r.estimated_m.map(|e| (e - r.true_m).abs()))
+        .collect();
+    let correct = |r: &&HeightRow| r.decided_class == Some(r.true_class);
+    let correct_beyond = |r: &&&HeightRow| r.decided_class == Some(r.true_class);
+    let beyond: Vec<&HeightRow> = rows
+        .iter()
+        .filter(|r| {
+            (r.true_m - t.c1_below_m()).abs() > 0.02 && (r.true_m - t.c2_up_to_m()).abs() > 0.02
+        })
+        .collect();
+    Ok(HeightResult {
+        mae_m: round6(mean(&errors)),
+        class_accuracy: round6(rows.iter().filter(correct).count() as f64 / count.max(1) as f64),
+        class_accuracy_beyond_2cm: round6(
+            beyond.iter().filter(correct_beyond).count() as f64 / beyond.len().max(1) as f64,
+        ),
+        confidently_wrong: rows
+            .iter()
+            .filter(|r| r.decided_class.is_some_and(|c| c != r.true_class))
+            .count(),
+        undecided: rows.iter().filter(|r| r.decided_class.is_none()).count(),
+        operators: rows,
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// RULA agreement
+
+/// Exact agreement and Cohen's κ of one score.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Agreement {
+    pub exact: f64,
+    pub kappa: f64,
+    /// `confusion[truth][estimate]`, scores 1..=n mapped to 0..n.
+    pub confusion: Vec<Vec<usize>>,
+}
+
+/// Result of [`rula_agreement`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RulaAgreement {
+    pub grand_score: Agreement,
+    pub action_level: Agreement,
+    /// Exact agreement of each region's score (upper_arm, lower_arm, wrist, neck, trunk, legs): where
+    /// the disagreement comes from.
+    pub region_names: Vec<String>,
+    pub region_exact: Vec<f64>,
+    /// Mean region score, noisy pipeline minus ground truth (positive = the pipeline scores higher).
+    pub region_mean_difference: Vec<f64>,
+    /// Frames scored by both.
+    pub frames: usize,
+    pub statures_m: Vec<f64>,
+}
+
+/// Exact agreement and Cohen's κ from a confusion matrix.
+pub fn agreement(confusion: Vec<Vec<usize>>) -> Agreement {
+    let n: usize = confusion.iter().flatten().sum();
+    let k = confusion.len();
+    if n == 0 {
+        return Agreement {
+            exact: f64::NAN,
+            kappa: f64::NAN,
+            confusion,
+        };
+    }
+    let nf = n as f64;
+    let po = (0..k).map(|i| confusion[i][i]).sum::<usize>() as f64 / nf;
+    let pe: f64 = (0..k)
+        .map(|i| {
+            let row: usize = confusion[i].iter().sum();
+            let col: usize = confusion.iter().map(|r| r[i]).sum();
+            row as f64 * col as f64 / (nf * nf)
+        })
+        .sum();
+    let kappa = if (1.0 - pe).abs() < 1e-12 {
+        1.0
+    } else {
+        (po - pe) / (1.0 - pe)
+    };
+    Agreement {
+        exact: round6(po),
+        kappa: round6(kappa),
+        confusion,
+    }
+}
+
+/// Per-frame RULA from the noisy pipeline vs from ground truth, for operators of `statures_m` doing
+/// `cycles` handovers at the unadapted handover point (a spread of postures and scores).
+pub fn rula_agreement(
+    setup: &Setup,
+    handovers: &Handovers,
+    statures_m: &[f64],
+    cycles: usize,
+    progress: Progress<'_>,
+) -> Result<RulaAgreement, SimError> {
+    let mut grand = vec![vec![0usize; 7]; 7];
+    let mut level = vec![vec![0usize; 4]; 4];
+    let mut frames = 0;
+    let mut region_same = [0usize; 6];
+    let mut region_diff = [0i64; 6];
+    let cfg = AssessmentConfig::new(up()?);
+    for (i, &h) in statures_m.iter().enumerate() {
+        let mut script = SessionScript::new(handovers.before_m);
+        script.cycles = cycles;
+        let ticks = simulate(setup, i, h, script)?;
+        let mut pipeline = Pipeline::new(&setup.rig)?;
+        let (mut est, mut truth) = (RulaAssessor::new(cfg)?, RulaAssessor::new(cfg)?);
+        for tick in &ticks {
+            let s = pipeline.skeleton(tick)?;
+            let e = headline(&mut est, &s)?;
+            let t = headline(&mut truth, &tick.truth.skeleton)?;
+            if !at_station(tick.truth.phase) {
+                continue;
+            }
+            if let (Some(e), Some(t)) = (e, t) {
+                let (ge, gt) = (
+                    usize::from(e.grand.clamp(1, 7)),
+                    usize::from(t.grand.clamp(1, 7)),
+                );
+                grand[gt - 1][ge - 1] += 1;
+                let (le, lt) = (
+                    usize::from(action_level(e.grand).clamp(1, 4)),
+                    usize::from(action_level(t.grand).clamp(1, 4)),
+                );
+                level[lt - 1][le - 1] += 1;
+                for j in 0..6 {
+                    region_same[j] += usize::from(e.regions[j] == t.regions[j]);
+                    region_diff[j] += i64::from(e.regions[j]) - i64::from(t.regions[j]);
+                }
+                frames += 1;
+            }
+        }
+        progress(i + 1, statures_m.len());
+    }
+    Ok(RulaAgreement {
+        grand_score: agreement(grand),
+        action_level: agreement(level),
+        region_names: BodyRegion::ALL
+            .iter()
+            .map(|b| b.name().to_owned())
+            .collect(),
+        region_exact: region_same
+            .iter()
+            .map(|n| round6(*n as f64 / frames.max(1) as f64))
+            .collect(),
+        region_mean_difference: region_diff
+            .iter()
+            .map(|n| round6(*n as f64 / frames.max(1) as f64))
+            .collect(),
+        frames,
+        statures_m: statures_m.to_vec(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kappa_of_perfect_and_chance_agreement() {
+        let perfect = agreement(vec![vec![5, 0], vec![0, 5]]);
+        assert_eq!((perfect.exact, perfect.kappa), (1.0, 1.0));
+        // Independent raters at 50/50: Po = 0.5, Pe = 0.5, κ = 0.
+        let chance = agreement(vec![vec![25, 25], vec![25, 25]]);
+        assert_eq!((chance.exact, chance.kappa), (0.5, 0.0));
+        // A textbook example: 20/5/10/15 → Po = 0.7, Pe = 0.5, κ = 0.4.
+        let k = agreement(vec![vec![20, 5], vec![10, 15]]);
+        assert!((k.exact - 0.7).abs() < 1e-9 && (k.kappa - 0.4).abs() < 1e-9);
+        assert!(agreement(vec![vec![0]]).exact.is_nan());
+    }
+
+    #[test]
+    fn adaptation_heights_are_eleven_five_centimetre_steps() {
+        let h = adaptation_heights();
+        assert_eq!(h.len(), 11);
+        assert_eq!(h[0], 1.5);
+        assert_eq!(h[10], 2.0);
+        assert_eq!(h[5], 1.75);
+    }
+}

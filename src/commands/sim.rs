@@ -1,0 +1,754 @@
+//! `ergocell sim`: the seed paper's experiments on the digital twin (`ergocell_sim`).
+//!
+//! ```text
+//! ergocell sim table1|adaptation|height|rula-agreement [--seed 1] [--cameras config/rig.toml | N]
+//!              [--noise-px 3] [--json] [--out-dir sim-out] [--cell config/cell.toml]
+//!              [--trajectories trajectories] [--operators N] [--cycles N]
+//! ```
+//!
+//! Each experiment prints a table (or, with `--json`, one JSON object on stdout) and writes
+//! `<experiment>.json` and its SVG figures into `--out-dir`. The same seed gives byte-identical JSON.
+//! The handover points come from `trajectories/c1..c3.toml` (station frame) placed in the world with
+//! `config/cell.toml`'s `[station]`; "before adaptation" is the c2 point (set for a 1.75 m operator).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Context;
+use ergocell_perception::rig_file::parse_rig;
+use ergocell_perception::CameraRig;
+use ergocell_robot::{CellConfig, TrajectorySpec};
+use ergocell_sim::experiments::{
+    self, Adaptation, Handovers, HeightResult, RulaAgreement, Setup, Table1,
+};
+use ergocell_sim::{ring_rig, DetectorNoise, RingRigConfig};
+use indicatif::{ProgressBar, ProgressStyle};
+use nalgebra::{Point3, Vector3};
+use plotters::prelude::*;
+
+use super::UsageError;
+
+/// Arguments of `ergocell sim`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    #[command(subcommand)]
+    pub experiment: Experiment,
+    #[command(flatten)]
+    pub common: Common,
+}
+
+/// The experiments.
+#[derive(Debug, Clone, Copy, clap::Subcommand)]
+pub enum Experiment {
+    /// The paper's Table 1: RMSE of 12 landmarks per stereo pair, paper fusion, default fusion.
+    Table1,
+    /// The paper's Figs. 7–9: RULA per height before and after the class-specific handover.
+    Adaptation,
+    /// Stature and height class from the noisy cameras for a population of operators.
+    Height,
+    /// Per-frame RULA agreement (exact and Cohen's κ), noisy pipeline vs ground truth.
+    RulaAgreement,
+}
+
+impl Experiment {
+    fn name(self) -> &'static str {
+        match self {
+            Experiment::Table1 => "table1",
+            Experiment::Adaptation => "adaptation",
+            Experiment::Height => "height",
+            Experiment::RulaAgreement => "rula_agreement",
+        }
+    }
+}
+
+/// Options every experiment takes.
+#[derive(Debug, clap::Args)]
+pub struct Common {
+    /// Seed of every random draw: the same seed gives byte-identical JSON.
+    #[arg(long, global = true, default_value_t = 1)]
+    pub seed: u64,
+    /// The camera rig: a calibration file (world z up, floor z = 0) or a number of cameras placed in
+    /// stereo pairs around the station.
+    #[arg(long, global = true, default_value = "config/rig.toml")]
+    pub cameras: String,
+    /// Pixel noise σ of the simulated pose estimator, pixels.
+    #[arg(long, global = true, default_value_t = 3.0)]
+    pub noise_px: f64,
+    /// Print the numbers as one JSON object on stdout instead of a table.
+    #[arg(long, global = true)]
+    pub json: bool,
+    /// Where `<experiment>.json` and the figures (SVG) are written.
+    #[arg(long, global = true, default_value = "sim-out")]
+    pub out_dir: PathBuf,
+    /// Cell configuration (the operator station's place in the world).
+    #[arg(long, global = true, default_value = "config/cell.toml")]
+    pub cell: PathBuf,
+    /// Folder with the class trajectories `c1.toml`, `c2.toml`, `c3.toml`.
+    #[arg(long, global = true, default_value = "trajectories")]
+    pub trajectories: PathBuf,
+    /// Operators to simulate (default per experiment: table1 5, height 60, rula-agreement 6).
+    #[arg(long, global = true)]
+    pub operators: Option<usize>,
+    /// Handover cycles per operator (default 5).
+    #[arg(long, global = true, default_value_t = 5)]
+    pub cycles: usize,
+}
+
+fn read(path: &Path) -> anyhow::Result<String> {
+    std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))
+}
+
+fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
+    if let Ok(count) = spec.parse::<usize>() {
+        return ring_rig(count, &RingRigConfig::default())
+            .map_err(|e| UsageError(e.to_string()).into());
+    }
+    let path = PathBuf::from(spec);
+    let (rig, _) = parse_rig(&read(&path)?, spec).map_err(|e| UsageError(e.to_string()))?;
+    if let Some(up) = rig.up() {
+        if (up - Vector3::z()).norm() > 1e-6 {
+            return Err(UsageError(format!(
+                "{spec}: the simulator's world is z-up with the floor at z = 0; this rig's up is {up:?}"
+            ))
+            .into());
+        }
+    }
+    Ok(rig)
+}
+
+fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
+    let cell = CellConfig::from_toml_str(&read(&common.cell)?)
+        .map_err(|e| UsageError(format!("{}: {e}", common.cell.display())))?;
+    let T_world_station = cell.T_cell_station();
+    let mut points = Vec::new();
+    for class in ["c1", "c2", "c3"] {
+        let path = common.trajectories.join(format!("{class}.toml"));
+        let spec = TrajectorySpec::from_toml_str(&read(&path)?)
+            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+        let h = &spec.handover;
+        points.push(T_world_station * Point3::new(h.forward_m, h.lateral_m, h.height_m));
+    }
+    Ok(Handovers {
+        before_m: points[1],
+        c1_m: points[0],
+        c2_m: points[1],
+        c3_m: points[2],
+    })
+}
+
+fn progress_bar(what: &str) -> ProgressBar {
+    let pb = ProgressBar::new(0);
+    if let Ok(style) =
+        ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} sessions {elapsed}")
+    {
+        pb.set_style(style);
+    }
+    pb.set_message(what.to_owned());
+    pb
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let c = &args.common;
+    if !(c.noise_px.is_finite() && c.noise_px >= 0.0) {
+        return Err(
+            UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
+        );
+    }
+    let setup = Setup {
+        rig: load_rig(&c.cameras)?,
+        noise: DetectorNoise {
+            pixel_sigma_px: c.noise_px,
+            ..DetectorNoise::default()
+        },
+        seed: c.seed,
+    };
+    let handovers = load_handovers(c)?;
+    let name = args.experiment.name();
+    let pb = progress_bar(name);
+    let mut tick = |done: usize, total: usize| {
+        pb.set_length(total as u64);
+        pb.set_position(done as u64);
+    };
+    std::fs::create_dir_all(&c.out_dir)
+        .with_context(|| format!("creating {}", c.out_dir.display()))?;
+    let statures = |n: usize| -> Vec<f64> {
+        (0..n)
+            .map(|i| 1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64)
+            .collect()
+    };
+    let (value, figures) = match args.experiment {
+        Experiment::Table1 => {
+            let r = experiments::table1(
+                &setup,
+                &handovers,
+                &statures(c.operators.unwrap_or(5)),
+                c.cycles,
+                &mut tick,
+            )?;
+            pb.finish_and_clear();
+            if !c.json {
+                print_table1(&r);
+            }
+            (serde_json::to_value(&r)?, plot_table1(&r, &c.out_dir)?)
+        }
+        Experiment::Adaptation => {
+            let r = experiments::adaptation(
+                &setup,
+                &handovers,
+                &experiments::adaptation_heights(),
+                c.cycles,
+                &mut tick,
+            )?;
+            pb.finish_and_clear();
+            if !c.json {
+                print_adaptation(&r);
+            }
+            (serde_json::to_value(&r)?, plot_adaptation(&r, &c.out_dir)?)
+        }
+        Experiment::Height => {
+            let r = experiments::height(
+                &setup,
+                &handovers,
+                c.operators.unwrap_or(60),
+                12.0,
+                &mut tick,
+            )?;
+            pb.finish_and_clear();
+            if !c.json {
+                print_height(&r);
+            }
+            (serde_json::to_value(&r)?, plot_height(&r, &c.out_dir)?)
+        }
+        Experiment::RulaAgreement => {
+            let r = experiments::rula_agreement(
+                &setup,
+                &handovers,
+                &statures(c.operators.unwrap_or(6)),
+                c.cycles,
+                &mut tick,
+            )?;
+            pb.finish_and_clear();
+            if !c.json {
+                print_agreement(&r);
+            }
+            (serde_json::to_value(&r)?, plot_agreement(&r, &c.out_dir)?)
+        }
+    };
+    let mut doc = value;
+    if let Some(obj) = doc.as_object_mut() {
+        obj.insert(
+            "setup".into(),
+            serde_json::json!({
+                "seed": c.seed,
+                "cameras": c.cameras,
+                "camera_count": setup.rig.len(),
+                "noise": setup.noise,
+                "cycles": c.cycles,
+                "handovers_m": handovers,
+            }),
+        );
+    }
+    let text = serde_json::to_string(&doc)?;
+    let json_path = c.out_dir.join(format!("{name}.json"));
+    std::fs::write(&json_path, format!("{text}\n"))
+        .with_context(|| format!("writing {}", json_path.display()))?;
+    if c.json {
+        println!("{text}");
+    } else {
+        println!("wrote {}", json_path.display());
+        for f in figures {
+            println!("wrote {}", f.display());
+        }
+    }
+    Ok(())
+}
+
+fn cm(x: Option<f64>) -> String {
+    x.map_or_else(|| "   —  ".to_owned(), |v| format!("{:6.2}", v * 100.0))
+}
+
+fn print_table1(r: &Table1) {
+    println!(
+        "RMSE per landmark, cm ({} frames, operators {:?} m)",
+        r.frames, r.statures_m
+    );
+    let methods: Vec<&String> = r.rmse_m.keys().filter(|k| !k.ends_with("fusion")).collect();
+    print!("{:<16}", "landmark");
+    for m in &methods {
+        print!(" {m:>6}");
+    }
+    println!(" {:>6} {:>6}", "paper", "default");
+    for (i, lm) in r.landmarks.iter().enumerate() {
+        print!("{lm:<16}");
+        for m in &methods {
+            print!(" {}", cm(r.rmse_m[*m][i]));
+        }
+        println!(
+            " {} {}",
+            cm(r.rmse_m["paper_fusion"][i]),
+            cm(r.rmse_m["default_fusion"][i])
+        );
+    }
+    let best = r.best_pair();
+    let paper: Vec<Option<f64>> = r.rmse_m["paper_fusion"].clone();
+    println!(
+        "default fusion beats the best single pair on {}/12 landmarks and the paper fusion on {}/12; \
+         the paper fusion beats the best single pair on {}/12",
+        r.wins("default_fusion", &best),
+        r.wins("default_fusion", &paper),
+        r.wins("paper_fusion", &best)
+    );
+}
+
+fn print_adaptation(r: &Adaptation) {
+    println!(
+        "mean RULA grand score while holding the part (noisy pipeline; ground truth in brackets)"
+    );
+    println!("{:>8} {:>16} {:>16}", "height", "before", "after");
+    for i in 0..r.heights_m.len() {
+        println!(
+            "{:>6.2} m {:>8.2} [{:4.2}] {:>8.2} [{:4.2}]",
+            r.heights_m[i],
+            r.mean_grand_score_before[i],
+            r.true_mean_grand_score_before[i],
+            r.mean_grand_score_after[i],
+            r.true_mean_grand_score_after[i]
+        );
+    }
+    println!("mean region scores over all heights (before → after):");
+    for (j, region) in r.region_names.iter().enumerate() {
+        let m = |v: &Vec<Vec<f64>>| v.iter().map(|x| x[j]).sum::<f64>() / v.len().max(1) as f64;
+        println!(
+            "  {region:<10} {:.2} → {:.2}",
+            m(&r.mean_region_scores_before),
+            m(&r.mean_region_scores_after)
+        );
+    }
+}
+
+fn print_height(r: &HeightResult) {
+    println!(
+        "{} operators: MAE {:.2} cm; class accuracy {:.1}% overall, {:.1}% beyond 2 cm of a boundary; \
+         {} undecided, {} confidently wrong",
+        r.operators.len(),
+        r.mae_m * 100.0,
+        r.class_accuracy * 100.0,
+        r.class_accuracy_beyond_2cm * 100.0,
+        r.undecided,
+        r.confidently_wrong
+    );
+}
+
+fn print_agreement(r: &RulaAgreement) {
+    println!(
+        "{} frames: grand score exact {:.3}, κ {:.3}; action level exact {:.3}, κ {:.3} \
+         (Kinect anchor: Po 0.96, κ 0.84)",
+        r.frames,
+        r.grand_score.exact,
+        r.grand_score.kappa,
+        r.action_level.exact,
+        r.action_level.kappa
+    );
+    println!("per region: exact agreement, mean difference (pipeline − truth)");
+    for (j, name) in r.region_names.iter().enumerate() {
+        println!(
+            "  {name:<10} {:.3} {:+.3}",
+            r.region_exact[j], r.region_mean_difference[j]
+        );
+    }
+}
+
+// --------------------------------------------------------------------------------------------
+// Figures (SVG, plotters without system fonts)
+
+const COLORS: [RGBColor; 6] = [
+    RGBColor(120, 144, 156),
+    RGBColor(158, 158, 158),
+    RGBColor(189, 189, 189),
+    RGBColor(239, 108, 0),
+    RGBColor(21, 101, 192),
+    RGBColor(46, 125, 50),
+];
+
+fn plot_err<E: std::fmt::Debug>(e: E) -> anyhow::Error {
+    anyhow::anyhow!("drawing a figure: {e:?}")
+}
+
+fn plot_table1(r: &Table1, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let path = dir.join("table1_rmse.svg");
+    let methods: Vec<String> = r
+        .rmse_m
+        .keys()
+        .filter(|k| !k.ends_with("fusion"))
+        .cloned()
+        .chain(["paper_fusion".to_owned(), "default_fusion".to_owned()])
+        .collect();
+    let max = r
+        .rmse_m
+        .values()
+        .flatten()
+        .flatten()
+        .fold(0.0f64, |a, b| a.max(*b))
+        * 100.0
+        * 1.15;
+    let file = path.clone();
+    let root = SVGBackend::new(&file, (1200, 520)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_err)?;
+    let n = r.landmarks.len();
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "Table 1 on the digital twin: RMSE per landmark (lower is better)",
+            ("sans-serif", 18),
+        )
+        .margin(15)
+        .x_label_area_size(70)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..n as f64, 0.0..max.max(0.1))
+        .map_err(plot_err)?;
+    let names = r.landmarks.clone();
+    chart
+        .configure_mesh()
+        .disable_x_mesh()
+        .x_labels(2 * n + 1)
+        .x_label_formatter(&|x| {
+            let i = x.floor() as usize;
+            if (x - i as f64 - 0.5).abs() < 0.01 && i < names.len() {
+                names[i].replace("left_", "L ").replace("right_", "R ")
+            } else {
+                String::new()
+            }
+        })
+        .y_desc("RMSE, cm")
+        .draw()
+        .map_err(plot_err)?;
+    let width = 0.85 / methods.len() as f64;
+    for (m, method) in methods.iter().enumerate() {
+        let color = COLORS[(m + COLORS.len() - methods.len().min(COLORS.len())) % COLORS.len()];
+        let values = &r.rmse_m[method];
+        chart
+            .draw_series(values.iter().enumerate().filter_map(|(i, v)| {
+                v.map(|v| {
+                    let x0 = i as f64 + 0.075 + m as f64 * width;
+                    Rectangle::new([(x0, 0.0), (x0 + width * 0.9, v * 100.0)], color.filled())
+                })
+            }))
+            .map_err(plot_err)?
+            .label(method.clone())
+            .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], color.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(plot_err)?;
+    root.present().map_err(plot_err)?;
+    Ok(vec![path])
+}
+
+fn line_chart(
+    path: &Path,
+    title: &str,
+    y_desc: &str,
+    x: &[f64],
+    series: &[(&str, &[f64], RGBColor, bool)],
+    y_range: (f64, f64),
+) -> anyhow::Result<()> {
+    let root = SVGBackend::new(path, (900, 520)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_err)?;
+    let (x0, x1) = (
+        x.first().copied().unwrap_or(0.0),
+        x.last().copied().unwrap_or(1.0),
+    );
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(55)
+        .build_cartesian_2d(x0 - 0.02..x1 + 0.02, y_range.0..y_range.1)
+        .map_err(plot_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("operator stature, m")
+        .y_desc(y_desc)
+        .draw()
+        .map_err(plot_err)?;
+    for (name, ys, color, dashed) in series {
+        let color = *color;
+        let pts: Vec<(f64, f64)> = x
+            .iter()
+            .zip(ys.iter())
+            .filter(|(_, y)| y.is_finite())
+            .map(|(a, b)| (*a, *b))
+            .collect();
+        let style = if *dashed {
+            color.stroke_width(1)
+        } else {
+            color.stroke_width(3)
+        };
+        chart
+            .draw_series(LineSeries::new(pts.clone(), style))
+            .map_err(plot_err)?
+            .label(*name)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(3))
+            });
+        chart
+            .draw_series(pts.iter().map(|p| Circle::new(*p, 3, color.filled())))
+            .map_err(plot_err)?;
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()
+        .map_err(plot_err)?;
+    root.present().map_err(plot_err)?;
+    Ok(())
+}
+
+fn plot_adaptation(r: &Adaptation, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let grand = dir.join("adaptation_grand_score.svg");
+    line_chart(
+        &grand,
+        "Mean RULA grand score while holding the part: before vs after adaptation",
+        "mean RULA grand score (worse side)",
+        &r.heights_m,
+        &[
+            (
+                "before (noisy pipeline)",
+                &r.mean_grand_score_before,
+                COLORS[3],
+                false,
+            ),
+            (
+                "after (noisy pipeline)",
+                &r.mean_grand_score_after,
+                COLORS[4],
+                false,
+            ),
+            (
+                "before (ground truth)",
+                &r.true_mean_grand_score_before,
+                COLORS[3],
+                true,
+            ),
+            (
+                "after (ground truth)",
+                &r.true_mean_grand_score_after,
+                COLORS[4],
+                true,
+            ),
+        ],
+        (1.0, 7.0),
+    )?;
+    let mut out = vec![grand];
+    // Region scores: one line chart per region would be many files; one chart, before dashed.
+    let regions = dir.join("adaptation_regions.svg");
+    let per_region = |v: &Vec<Vec<f64>>, j: usize| v.iter().map(|x| x[j]).collect::<Vec<f64>>();
+    let before: Vec<Vec<f64>> = (0..6)
+        .map(|j| per_region(&r.mean_region_scores_before, j))
+        .collect();
+    let after: Vec<Vec<f64>> = (0..6)
+        .map(|j| per_region(&r.mean_region_scores_after, j))
+        .collect();
+    let palette = [
+        RGBColor(239, 108, 0),
+        RGBColor(21, 101, 192),
+        RGBColor(46, 125, 50),
+        RGBColor(142, 36, 170),
+        RGBColor(198, 40, 40),
+        RGBColor(96, 125, 139),
+    ];
+    let labels_before: Vec<String> = r
+        .region_names
+        .iter()
+        .map(|n| format!("{n} before"))
+        .collect();
+    let labels_after: Vec<String> = r
+        .region_names
+        .iter()
+        .map(|n| format!("{n} after"))
+        .collect();
+    let mut series: Vec<(&str, &[f64], RGBColor, bool)> = Vec::new();
+    for j in 0..6 {
+        series.push((&labels_before[j], &before[j], palette[j], true));
+        series.push((&labels_after[j], &after[j], palette[j], false));
+    }
+    line_chart(
+        &regions,
+        "Mean RULA score per body region (thin: before, thick: after adaptation)",
+        "mean region score",
+        &r.heights_m,
+        &series,
+        (0.5, 5.0),
+    )?;
+    out.push(regions);
+    let angles = dir.join("adaptation_angles.svg");
+    let before: Vec<Vec<f64>> = (0..4)
+        .map(|j| per_region(&r.mean_angles_deg_before, j))
+        .collect();
+    let after: Vec<Vec<f64>> = (0..4)
+        .map(|j| per_region(&r.mean_angles_deg_after, j))
+        .collect();
+    let labels_before: Vec<String> = r
+        .angle_names
+        .iter()
+        .map(|n| format!("{n} before"))
+        .collect();
+    let labels_after: Vec<String> = r.angle_names.iter().map(|n| format!("{n} after")).collect();
+    let mut series: Vec<(&str, &[f64], RGBColor, bool)> = Vec::new();
+    for j in 0..4 {
+        series.push((&labels_before[j], &before[j], palette[j], true));
+        series.push((&labels_after[j], &after[j], palette[j], false));
+    }
+    line_chart(
+        &angles,
+        "True joint angles while holding the part (thin: before, thick: after adaptation)",
+        "angle, degrees",
+        &r.heights_m,
+        &series,
+        (-10.0, 90.0),
+    )?;
+    out.push(angles);
+    Ok(out)
+}
+
+fn plot_height(r: &HeightResult, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let path = dir.join("height_estimates.svg");
+    let file = path.clone();
+    let root = SVGBackend::new(&file, (800, 640)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!(
+                "Stature from the noisy cameras: MAE {:.2} cm, {} undecided, {} wrong",
+                r.mae_m * 100.0,
+                r.undecided,
+                r.confidently_wrong
+            ),
+            ("sans-serif", 18),
+        )
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(1.48..2.02, -4.0..4.0)
+        .map_err(plot_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("true stature, m")
+        .y_desc("estimate − truth, cm")
+        .draw()
+        .map_err(plot_err)?;
+    for b in [1.68, 1.82] {
+        chart
+            .draw_series(LineSeries::new(vec![(b, -4.0), (b, 4.0)], BLACK.mix(0.4)))
+            .map_err(plot_err)?;
+    }
+    for (label, color, pick) in [
+        ("class correct", COLORS[5], 0),
+        ("undecided", COLORS[3], 1),
+        ("class wrong", RED, 2),
+    ] {
+        let pts: Vec<(f64, f64)> = r
+            .operators
+            .iter()
+            .filter(|o| match pick {
+                0 => o.decided_class == Some(o.true_class),
+                1 => o.decided_class.is_none(),
+                _ => o.decided_class.is_some_and(|c| c != o.true_class),
+            })
+            .filter_map(|o| {
+                o.estimated_m
+                    .map(|e| (o.true_m, ((e - o.true_m) * 100.0).clamp(-3.9, 3.9)))
+            })
+            .collect();
+        chart
+            .draw_series(pts.iter().map(|p| Circle::new(*p, 4, color.filled())))
+            .map_err(plot_err)?
+            .label(label)
+            .legend(move |(x, y)| Circle::new((x + 6, y), 4, color.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()
+        .map_err(plot_err)?;
+    root.present().map_err(plot_err)?;
+    Ok(vec![path])
+}
+
+fn plot_agreement(r: &RulaAgreement, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let path = dir.join("rula_agreement.svg");
+    let file = path.clone();
+    let root = SVGBackend::new(&file, (1100, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_err)?;
+    let panels = root.split_evenly((1, 2));
+    for (panel, (title, a)) in panels.iter().zip([
+        ("grand score", &r.grand_score),
+        ("action level", &r.action_level),
+    ]) {
+        let k = a.confusion.len();
+        let max = a
+            .confusion
+            .iter()
+            .flatten()
+            .copied()
+            .max()
+            .unwrap_or(1)
+            .max(1) as f64;
+        let mut chart = ChartBuilder::on(panel)
+            .caption(
+                format!("{title}: exact {:.3}, κ {:.3}", a.exact, a.kappa),
+                ("sans-serif", 17),
+            )
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(45)
+            .build_cartesian_2d(0.5..k as f64 + 0.5, 0.5..k as f64 + 0.5)
+            .map_err(plot_err)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_labels(k)
+            .y_labels(k)
+            .x_label_formatter(&|x| format!("{x:.0}"))
+            .y_label_formatter(&|y| format!("{y:.0}"))
+            .x_desc("noisy pipeline")
+            .y_desc("ground truth")
+            .draw()
+            .map_err(plot_err)?;
+        for (t, row) in a.confusion.iter().enumerate() {
+            for (e, count) in row.iter().enumerate() {
+                let (x, y) = (e as f64 + 1.0, t as f64 + 1.0);
+                let shade = *count as f64 / max;
+                let color = RGBColor(
+                    (255.0 - 234.0 * shade) as u8,
+                    (255.0 - 154.0 * shade) as u8,
+                    (255.0 - 63.0 * shade) as u8,
+                );
+                chart
+                    .draw_series(std::iter::once(Rectangle::new(
+                        [(x - 0.5, y - 0.5), (x + 0.5, y + 0.5)],
+                        color.filled(),
+                    )))
+                    .map_err(plot_err)?;
+                if *count > 0 {
+                    let text_color = if shade > 0.5 { WHITE } else { BLACK };
+                    chart
+                        .draw_series(std::iter::once(Text::new(
+                            count.to_string(),
+                            (x - 0.15, y + 0.1),
+                            ("sans-serif", 14).into_font().color(&text_color),
+                        )))
+                        .map_err(plot_err)?;
+                }
+            }
+        }
+    }
+    root.present().map_err(plot_err)?;
+    Ok(vec![path])
+}
