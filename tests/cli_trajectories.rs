@@ -135,6 +135,66 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
     assert!(err.contains("refusing to approve"), "{err}");
 }
 
+/// A lock whose samples were edited and whose `lock_sha256` was recomputed agrees with every hash, but
+/// it does not hold what validation produces: it can be neither approved nor verified.
+#[test]
+fn a_hand_edited_and_rehashed_lock_is_neither_approved_nor_verified() {
+    use ergocell_robot::lock::LockFile;
+    use ergocell_robot::TrajectoryClass;
+
+    let dir = fresh_cell("trajectories_forged_lock");
+    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c1"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, _) = ergocell(
+        &dir,
+        &[
+            "trajectories",
+            "verify",
+            "--class",
+            "c1",
+            "--allow-unapproved",
+        ],
+    );
+    assert_eq!(code, 0, "{out}");
+
+    let path = dir.join("trajectories/locks/c1.lock.toml");
+    let mut lock = LockFile::from_toml_str(
+        TrajectoryClass::C1,
+        &std::fs::read_to_string(&path).unwrap(),
+    )
+    .unwrap();
+    lock.trajectory.point[40].velocities_rad_s[1] *= 1.5;
+    lock.lock_sha256 = lock.content_sha256();
+    std::fs::write(&path, lock.to_toml().unwrap()).unwrap();
+
+    let (code, _, err) = ergocell(
+        &dir,
+        &["trajectories", "approve", "--class", "c1", "--by", "X"],
+    );
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("does not hold the validated trajectory")
+            && err.contains("refusing to approve"),
+        "{err}"
+    );
+    assert!(!dir.join("trajectories/approvals/c1.toml").exists());
+    let (code, out, _) = ergocell(
+        &dir,
+        &[
+            "trajectories",
+            "verify",
+            "--class",
+            "c1",
+            "--allow-unapproved",
+        ],
+    );
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("c1: FAIL") && out.contains("point 40: velocities_rad_s[1]"),
+        "{out}"
+    );
+}
+
 #[test]
 fn an_unknown_class_is_a_usage_error() {
     let dir = fresh_cell("trajectories_usage");

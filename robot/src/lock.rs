@@ -11,6 +11,8 @@
 //! * [`verify`] checks the lock's own hash, every input hash against the current files, the locked samples
 //!   against the current URDF's limits, and that an approval names exactly this lock hash. Only then does
 //!   it hand out an [`ApprovedTrajectory`], the only thing the controller may send.
+//! * [`check_matches_validation`] ties the samples to validation: the review commands re-plan from the
+//!   current inputs and refuse a lock (hand-edited and re-hashed, say) that does not hold that result.
 //! * A [`SessionLock`] holds one approved trajectory for a session; a request for another class is refused
 //!   and recorded until the session ends (operator gone and robot at home).
 //!
@@ -480,6 +482,96 @@ fn check_samples(class: TrajectoryClass, lock: &LockFile, model: &RobotModel) ->
         }
     }
     problems
+}
+
+/// How far a locked sample may differ from what validation produces now (rad, rad/s, rad/s²; s for
+/// times): far below anything that matters physically, far above the last-bit differences of the
+/// solver between machines.
+pub const REVALIDATION_TOLERANCE: f64 = 1e-6;
+
+/// Check that `lock` holds the trajectory that validation produces from the current inputs
+/// (`validated`, from [`crate::plan_and_validate`] on the same files), sample by sample within
+/// [`REVALIDATION_TOLERANCE`].
+///
+/// [`verify_integrity`] only proves that the lock is self-consistent and names the current inputs: a
+/// lock whose samples were edited and whose `lock_sha256` was recomputed passes it. This check ties
+/// the samples to validation, so such a lock is never approved or verified. It re-plans (IK and QP),
+/// so it belongs to the review commands (`approve`, `verify`), not to the run-time start, which must
+/// not re-run IK: there the approval of this exact hash carries the guarantee.
+pub fn check_matches_validation(
+    lock: &LockFile,
+    validated: &LockedTrajectory,
+) -> Result<(), RobotError> {
+    let class = lock.class;
+    let differs = |what: String| {
+        Err(RobotError::LockCorrupt {
+            class: class.to_string(),
+            reason: format!("does not hold the validated trajectory: {what}"),
+        })
+    };
+    if validated.class() != class {
+        return differs(format!("validation is for class {}", validated.class()));
+    }
+    if &lock.inputs != validated.inputs() {
+        return differs("its input hashes differ from the current inputs".to_owned());
+    }
+    let t = &lock.trajectory;
+    if t.joint_names != validated.joint_names() {
+        return differs(format!(
+            "joint names {:?}, validation gives {:?}",
+            t.joint_names,
+            validated.joint_names()
+        ));
+    }
+    if t.point.len() != validated.time_s().len() {
+        return differs(format!(
+            "{} points, validation gives {}",
+            t.point.len(),
+            validated.time_s().len()
+        ));
+    }
+    let close = |a: f64, b: f64| (a - b).abs() <= REVALIDATION_TOLERANCE;
+    if !close(t.dt_s, validated.dt_s()) {
+        return differs(format!("dt_s {} vs {}", t.dt_s, validated.dt_s()));
+    }
+    for (k, p) in t.point.iter().enumerate() {
+        if !close(p.time_s, validated.time_s()[k]) {
+            return differs(format!(
+                "point {k}: time_s {} vs {}",
+                p.time_s,
+                validated.time_s()[k]
+            ));
+        }
+        for (field, locked, now) in [
+            (
+                "positions_rad",
+                &p.positions_rad,
+                &validated.positions_rad()[k],
+            ),
+            (
+                "velocities_rad_s",
+                &p.velocities_rad_s,
+                &validated.velocities_rad_s()[k],
+            ),
+            (
+                "accelerations_rad_s2",
+                &p.accelerations_rad_s2,
+                &validated.accelerations_rad_s2()[k],
+            ),
+        ] {
+            if locked.len() != now.len() {
+                return differs(format!("point {k}: {field} has {} values", locked.len()));
+            }
+            for (j, (a, b)) in locked.iter().zip(now).enumerate() {
+                if !close(*a, *b) {
+                    return differs(format!(
+                        "point {k}: {field}[{j}] = {a}, validation gives {b}"
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Full verification: integrity plus an approval of exactly this lock hash.

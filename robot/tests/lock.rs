@@ -279,3 +279,37 @@ fn the_committed_locks_match_the_committed_inputs() {
         }
     }
 }
+
+#[test]
+fn a_hand_edited_and_rehashed_lock_passes_integrity_but_not_the_validation_match() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let spec = TrajectorySpec::from_toml_str(&text).unwrap();
+    let hashes = common::hashes(&s, &text);
+    let validated = plan_and_validate(&PlanInputs {
+        model: &s.model,
+        cell: &s.cell,
+        spec: &spec,
+        hashes: &hashes,
+    })
+    .unwrap()
+    .into_locked()
+    .unwrap();
+    let honest = LockFile::from_locked(&validated);
+    lock::check_matches_validation(&honest, &validated).unwrap();
+    let parsed = LockFile::from_toml_str(CLASS, &honest.to_toml().unwrap()).unwrap();
+    lock::check_matches_validation(&parsed, &validated).unwrap();
+
+    // 0.01 rad on joint 4 mid-way, lock_sha256 recomputed: every hash agrees, limits still hold.
+    let mut forged = honest.clone();
+    forged.trajectory.point[50].positions_rad[3] += 0.01;
+    forged.lock_sha256 = forged.content_sha256();
+    let toml = forged.to_toml().unwrap();
+    assert!(lock::verify_integrity(&inputs(&toml, &hashes, &s.model, None)).is_ok());
+    let err = lock::check_matches_validation(&forged, &validated).unwrap_err();
+    assert!(matches!(err, RobotError::LockCorrupt { .. }), "{err}");
+    assert!(
+        err.to_string().contains("point 50: positions_rad[3]"),
+        "{err}"
+    );
+}

@@ -6,7 +6,8 @@
 //! ergocell trajectories approve --class c2 --by <name>   append a sign-off of the lock's hash to
 //!                                                        trajectories/approvals/<class>.toml
 //! ergocell trajectories verify [--class c2] [--allow-unapproved]
-//!                                                        lock hash, input hashes, limits, approvals agree
+//!                                                        lock hash, input hashes, limits, approvals agree,
+//!                                                        and the lock holds what validation produces now
 //! ```
 //!
 //! Paths default to `trajectories/` and `config/cell.toml` under the current directory. The lock is a
@@ -239,8 +240,28 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
     }
 }
 
+/// Re-plan the class from the current inputs and check that the lock holds exactly that trajectory:
+/// a lock edited by hand (and re-hashed) is refused even though its hashes agree.
+fn matches_validation(
+    ctx: &Context,
+    spec: &TrajectorySpec,
+    current: &InputHashes,
+    lock: &LockFile,
+) -> Result<(), String> {
+    let inputs = PlanInputs {
+        model: &ctx.model,
+        cell: &ctx.cell,
+        spec,
+        hashes: current,
+    };
+    let validated = plan_and_validate(&inputs)
+        .and_then(ergocell_robot::Validation::into_locked)
+        .map_err(|e| format!("validation of the current inputs fails: {e}"))?;
+    lock::check_matches_validation(lock, &validated).map_err(|e| e.to_string())
+}
+
 fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()> {
-    let (_, current) = ctx.spec(class)?;
+    let (spec, current) = ctx.spec(class)?;
     let lock_path = ctx.lock_path(class);
     let lock_text = read(&lock_path)
         .with_context(|| format!("run `ergocell trajectories lock --class {class}` first"))?;
@@ -253,6 +274,8 @@ fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()
     };
     let lock =
         lock::verify_integrity(&inputs).map_err(|f| anyhow::anyhow!("{f}\nrefusing to approve"))?;
+    matches_validation(ctx, &spec, &current, &lock)
+        .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?;
     let approvals_path = ctx.approvals_path(class);
     let mut file = if approvals_path.exists() {
         ApprovalsFile::from_toml_str(&read(&approvals_path)?)
@@ -279,7 +302,7 @@ fn verify(
 ) -> anyhow::Result<()> {
     let mut failed = Vec::new();
     for class in classes(class) {
-        let (_, current) = ctx.spec(class)?;
+        let (spec, current) = ctx.spec(class)?;
         let lock_path = ctx.lock_path(class);
         let Ok(lock_text) = fs::read_to_string(&lock_path) else {
             println!(
@@ -298,6 +321,14 @@ fn verify(
             model: &ctx.model,
             approvals_toml: approvals_text.as_deref(),
         };
+        // Integrity holds: the samples must also be what validation produces from these inputs.
+        if let Ok(lock) = lock::verify_integrity(&inputs) {
+            if let Err(e) = matches_validation(ctx, &spec, &current, &lock) {
+                println!("{class}: FAIL\n  - {e}");
+                failed.push(class);
+                continue;
+            }
+        }
         match lock::verify(&inputs) {
             Ok(approved) => {
                 let names: Vec<String> = approved
