@@ -1,4 +1,26 @@
 //! ROS 2 bridge: the messages and transport between ergocell, the camera nodes and the KUKA controller.
 //!
-//! Will hold (issue "The cell controller"): hand-written ROS 2 message structs in IDL field order, the
-//! `ros2-client` transport, and QoS choices. The only library crate that touches the network.
+//! - [`msg`]: hand-written ROS 2 message structs in exact IDL field order (std_msgs, sensor_msgs,
+//!   trajectory_msgs and the repository's `ros2/ergocell_msgs` package), with their `ros2msg` schema
+//!   text for recordings.
+//! - [`cdr`]: the ROS 2 wire payload (XCDR1, little-endian, 4-byte encapsulation header).
+//! - [`qos`]: the QoS of every topic and why.
+//!
+//! The only library crate that touches the network; it knows nothing of cameras, ergonomics or the
+//! robot model — the binary converts between these messages and the library types.
+
+pub mod cdr;
+pub mod msg;
+pub mod qos;
+
+/// Everything that can go wrong in the bridge.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum BridgeError {
+    /// A message could not be serialised.
+    #[error("CDR encode: {0}")]
+    Encode(String),
+    /// A payload is not a valid CDR encoding of the expected message.
+    #[error("CDR decode: {0}")]
+    Decode(String),
+}

@@ -1,0 +1,448 @@
+//! ROS 2 messages, hand-written in exact IDL field order.
+//!
+//! CDR is positional: a struct's fields go on the wire in declaration order with no names, so each
+//! struct below declares its fields in exactly the order of its `.msg` file. Sequences (`T[]`) are
+//! `Vec<T>`; fixed arrays are avoided (serde stops at 32 elements, and the wire of `T[N]` differs from
+//! `T[]`). The standard messages follow ROS 2 Jazzy (identical in Humble for the types here).
+//!
+//! Each message carries its `ros2msg` definition (the `.msg` text, dependencies appended the way
+//! rosbag2 stores them) so an MCAP recording names its schemas and Foxglove / rosbag2 decode it. The
+//! `ergocell_msgs` definitions are the files in `ros2/ergocell_msgs/msg/`, embedded at compile time.
+
+use serde::{de::DeserializeOwned, Deserialize, Serialize};
+
+/// A ROS 2 message type: its name, its definition and its dependencies' definitions.
+pub trait RosMessage: Serialize + DeserializeOwned {
+    /// Package, e.g. `sensor_msgs`.
+    const PACKAGE: &'static str;
+    /// Type name, e.g. `JointState`.
+    const NAME: &'static str;
+    /// The `.msg` text.
+    const DEFINITION: &'static str;
+    /// Every nested type (transitively, each once) as `("pkg/Name", definition)`.
+    const DEPENDENCIES: &'static [(&'static str, &'static str)];
+    /// `(type, field name)` in wire order, as in the `.msg` file (checked against it in the tests).
+    const FIELDS: &'static [(&'static str, &'static str)];
+
+    /// `pkg/msg/Name`, the name rosbag2 and Foxglove use.
+    fn type_name() -> String {
+        format!("{}/msg/{}", Self::PACKAGE, Self::NAME)
+    }
+
+    /// The `ros2msg` schema text: the definition, then each dependency after a separator line.
+    fn schema_text() -> String {
+        let mut text = Self::DEFINITION.trim_end().to_owned();
+        text.push('\n');
+        for (name, definition) in Self::DEPENDENCIES {
+            text.push_str(&"=".repeat(80));
+            text.push_str("\nMSG: ");
+            text.push_str(name);
+            text.push('\n');
+            text.push_str(definition.trim_end());
+            text.push('\n');
+        }
+        text
+    }
+}
+
+/// `builtin_interfaces/Time`: seconds and nanoseconds since the Unix epoch (or the clock's origin).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct Time {
+    pub sec: i32,
+    pub nanosec: u32,
+}
+
+impl Time {
+    /// From integer nanoseconds (negative stamps clamp to 0: ROS time is not negative).
+    pub fn from_nanos(stamp_nanos: i64) -> Self {
+        let t = stamp_nanos.max(0);
+        Self {
+            sec: i32::try_from(t / 1_000_000_000).unwrap_or(i32::MAX),
+            nanosec: (t % 1_000_000_000) as u32,
+        }
+    }
+
+    /// Integer nanoseconds.
+    pub fn to_nanos(self) -> i64 {
+        i64::from(self.sec) * 1_000_000_000 + i64::from(self.nanosec)
+    }
+}
+
+const TIME_DEF: &str = "int32 sec\nuint32 nanosec\n";
+
+/// `builtin_interfaces/Duration`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct Duration {
+    pub sec: i32,
+    pub nanosec: u32,
+}
+
+impl Duration {
+    /// From seconds (non-negative; rounded to the nanosecond).
+    pub fn from_secs_f64(secs: f64) -> Self {
+        let nanos = (secs.max(0.0) * 1e9).round() as i64;
+        Self {
+            sec: i32::try_from(nanos / 1_000_000_000).unwrap_or(i32::MAX),
+            nanosec: (nanos % 1_000_000_000) as u32,
+        }
+    }
+
+    /// Seconds.
+    pub fn as_secs_f64(self) -> f64 {
+        f64::from(self.sec) + f64::from(self.nanosec) * 1e-9
+    }
+}
+
+const DURATION_DEF: &str = "int32 sec\nuint32 nanosec\n";
+
+/// `std_msgs/Header`.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct Header {
+    pub stamp: Time,
+    pub frame_id: String,
+}
+
+impl Header {
+    pub fn new(stamp_nanos: i64, frame_id: &str) -> Self {
+        Self {
+            stamp: Time::from_nanos(stamp_nanos),
+            frame_id: frame_id.to_owned(),
+        }
+    }
+}
+
+const HEADER_DEF: &str = "builtin_interfaces/Time stamp\nstring frame_id\n";
+const HEADER_DEPS: [(&str, &str); 2] = [
+    ("std_msgs/Header", HEADER_DEF),
+    ("builtin_interfaces/Time", TIME_DEF),
+];
+
+/// `sensor_msgs/JointState`: map by name, the order is not guaranteed.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct JointState {
+    pub header: Header,
+    pub name: Vec<String>,
+    pub position: Vec<f64>,
+    pub velocity: Vec<f64>,
+    pub effort: Vec<f64>,
+}
+
+impl RosMessage for JointState {
+    const PACKAGE: &'static str = "sensor_msgs";
+    const NAME: &'static str = "JointState";
+    const DEFINITION: &'static str = "std_msgs/Header header\nstring[] name\nfloat64[] position\nfloat64[] velocity\nfloat64[] effort\n";
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &HEADER_DEPS;
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("string[]", "name"),
+        ("float64[]", "position"),
+        ("float64[]", "velocity"),
+        ("float64[]", "effort"),
+    ];
+}
+
+impl JointState {
+    /// Positions in the order of `names` (mapped by name); `None` if a joint is missing.
+    pub fn positions_for(&self, names: &[String]) -> Option<Vec<f64>> {
+        names
+            .iter()
+            .map(|n| {
+                self.name
+                    .iter()
+                    .position(|m| m == n)
+                    .and_then(|i| self.position.get(i).copied())
+            })
+            .collect()
+    }
+}
+
+/// `trajectory_msgs/JointTrajectoryPoint`.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct JointTrajectoryPoint {
+    pub positions: Vec<f64>,
+    pub velocities: Vec<f64>,
+    pub accelerations: Vec<f64>,
+    pub effort: Vec<f64>,
+    pub time_from_start: Duration,
+}
+
+const POINT_DEF: &str = "float64[] positions\nfloat64[] velocities\nfloat64[] accelerations\nfloat64[] effort\nbuiltin_interfaces/Duration time_from_start\n";
+
+/// `trajectory_msgs/JointTrajectory`. An empty one (no points) sent to the joint trajectory
+/// controller's topic replaces the current goal: the robot stops (a hold, not an emergency stop).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct JointTrajectory {
+    pub header: Header,
+    pub joint_names: Vec<String>,
+    pub points: Vec<JointTrajectoryPoint>,
+}
+
+impl RosMessage for JointTrajectory {
+    const PACKAGE: &'static str = "trajectory_msgs";
+    const NAME: &'static str = "JointTrajectory";
+    const DEFINITION: &'static str =
+        "std_msgs/Header header\nstring[] joint_names\nJointTrajectoryPoint[] points\n";
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", HEADER_DEF),
+        ("builtin_interfaces/Time", TIME_DEF),
+        ("trajectory_msgs/JointTrajectoryPoint", POINT_DEF),
+        ("builtin_interfaces/Duration", DURATION_DEF),
+    ];
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("string[]", "joint_names"),
+        ("JointTrajectoryPoint[]", "points"),
+    ];
+}
+
+/// `ergocell_msgs/CameraLandmarks` (`ros2/ergocell_msgs/msg/CameraLandmarks.msg`).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct CameraLandmarks {
+    pub header: Header,
+    pub camera_id: String,
+    pub image_width: u32,
+    pub image_height: u32,
+    pub x_px: Vec<f32>,
+    pub y_px: Vec<f32>,
+    pub visibility: Vec<f32>,
+    pub presence: Vec<f32>,
+}
+
+impl RosMessage for CameraLandmarks {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "CameraLandmarks";
+    const DEFINITION: &'static str =
+        include_str!("../../ros2/ergocell_msgs/msg/CameraLandmarks.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &HEADER_DEPS;
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("string", "camera_id"),
+        ("uint32", "image_width"),
+        ("uint32", "image_height"),
+        ("float32[]", "x_px"),
+        ("float32[]", "y_px"),
+        ("float32[]", "visibility"),
+        ("float32[]", "presence"),
+    ];
+}
+
+/// `ergocell_msgs/SessionState`.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct SessionState {
+    pub header: Header,
+    pub state: String,
+    pub reason: String,
+    pub height_m: f64,
+    pub height_uncertainty_m: f64,
+    pub height_class: String,
+    pub trajectory_sha256: String,
+    pub robot_held: bool,
+    pub cameras_fresh: u32,
+    pub stereo_pairs_tracking: u32,
+}
+
+impl RosMessage for SessionState {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "SessionState";
+    const DEFINITION: &'static str = include_str!("../../ros2/ergocell_msgs/msg/SessionState.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &HEADER_DEPS;
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("string", "state"),
+        ("string", "reason"),
+        ("float64", "height_m"),
+        ("float64", "height_uncertainty_m"),
+        ("string", "height_class"),
+        ("string", "trajectory_sha256"),
+        ("bool", "robot_held"),
+        ("uint32", "cameras_fresh"),
+        ("uint32", "stereo_pairs_tracking"),
+    ];
+}
+
+/// `ergocell_msgs/RulaSide`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct RulaSide {
+    pub scored: bool,
+    pub uncertain: bool,
+    pub upper_arm_score: u8,
+    pub lower_arm_score: u8,
+    pub wrist_score: u8,
+    pub wrist_twist_score: u8,
+    pub posture_score_a: u8,
+    pub score_c_wrist_arm: u8,
+    pub neck_score: u8,
+    pub trunk_score: u8,
+    pub legs_score: u8,
+    pub posture_score_b: u8,
+    pub score_d_neck_trunk_legs: u8,
+    pub final_score: u8,
+    pub action_level: u8,
+}
+
+const RULA_SIDE_DEF: &str = include_str!("../../ros2/ergocell_msgs/msg/RulaSide.msg");
+
+impl RosMessage for RulaSide {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "RulaSide";
+    const DEFINITION: &'static str = RULA_SIDE_DEF;
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[];
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("bool", "scored"),
+        ("bool", "uncertain"),
+        ("uint8", "upper_arm_score"),
+        ("uint8", "lower_arm_score"),
+        ("uint8", "wrist_score"),
+        ("uint8", "wrist_twist_score"),
+        ("uint8", "posture_score_a"),
+        ("uint8", "score_c_wrist_arm"),
+        ("uint8", "neck_score"),
+        ("uint8", "trunk_score"),
+        ("uint8", "legs_score"),
+        ("uint8", "posture_score_b"),
+        ("uint8", "score_d_neck_trunk_legs"),
+        ("uint8", "final_score"),
+        ("uint8", "action_level"),
+    ];
+}
+
+/// `ergocell_msgs/ErgonomicState`.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct ErgonomicState {
+    pub header: Header,
+    pub left: RulaSide,
+    pub right: RulaSide,
+    pub action_level: u8,
+}
+
+impl RosMessage for ErgonomicState {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "ErgonomicState";
+    const DEFINITION: &'static str =
+        include_str!("../../ros2/ergocell_msgs/msg/ErgonomicState.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", HEADER_DEF),
+        ("builtin_interfaces/Time", TIME_DEF),
+        ("ergocell_msgs/RulaSide", RULA_SIDE_DEF),
+    ];
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("RulaSide", "left"),
+        ("RulaSide", "right"),
+        ("uint8", "action_level"),
+    ];
+}
+
+/// `ergocell_msgs/PostureWarning`.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct PostureWarning {
+    pub header: Header,
+    pub kind: String,
+    pub region: String,
+    pub side: String,
+    pub region_score: u8,
+    pub angle_deg: f64,
+    pub action_level: u8,
+    pub uncertain: bool,
+    pub message: String,
+}
+
+impl RosMessage for PostureWarning {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "PostureWarning";
+    const DEFINITION: &'static str =
+        include_str!("../../ros2/ergocell_msgs/msg/PostureWarning.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &HEADER_DEPS;
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("string", "kind"),
+        ("string", "region"),
+        ("string", "side"),
+        ("uint8", "region_score"),
+        ("float64", "angle_deg"),
+        ("uint8", "action_level"),
+        ("bool", "uncertain"),
+        ("string", "message"),
+    ];
+}
+
+/// `(type, name)` of every field declared in a `.msg` text (comments, blank lines and constants
+/// skipped).
+pub fn msg_fields(definition: &str) -> Vec<(String, String)> {
+    definition
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or("").trim())
+        .filter(|l| !l.is_empty() && !l.contains('='))
+        .filter_map(|l| {
+            let mut it = l.split_whitespace();
+            Some((it.next()?.to_owned(), it.next()?.to_owned()))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn check<M: RosMessage>() {
+        let declared = msg_fields(M::DEFINITION);
+        let rust: Vec<(String, String)> = M::FIELDS
+            .iter()
+            .map(|(t, n)| ((*t).to_owned(), (*n).to_owned()))
+            .collect();
+        assert_eq!(declared, rust, "{}", M::type_name());
+    }
+
+    #[test]
+    fn every_struct_lists_its_msg_fields_in_order() {
+        check::<JointState>();
+        check::<JointTrajectory>();
+        check::<CameraLandmarks>();
+        check::<SessionState>();
+        check::<RulaSide>();
+        check::<ErgonomicState>();
+        check::<PostureWarning>();
+        assert_eq!(
+            msg_fields(POINT_DEF).len(),
+            5,
+            "JointTrajectoryPoint has five fields"
+        );
+    }
+
+    #[test]
+    fn schema_text_appends_dependencies_like_rosbag2() {
+        let s = JointTrajectory::schema_text();
+        assert!(s.starts_with("std_msgs/Header header\n"));
+        assert!(s.contains("\nMSG: trajectory_msgs/JointTrajectoryPoint\nfloat64[] positions\n"));
+        assert_eq!(s.matches("\nMSG: ").count(), 4);
+        assert_eq!(
+            JointTrajectory::type_name(),
+            "trajectory_msgs/msg/JointTrajectory"
+        );
+    }
+
+    #[test]
+    fn time_round_trips_nanoseconds() {
+        let t = Time::from_nanos(1_700_000_123_456_789_012);
+        assert_eq!(t.sec, 1_700_000_123);
+        assert_eq!(t.nanosec, 456_789_012);
+        assert_eq!(t.to_nanos(), 1_700_000_123_456_789_012);
+        assert_eq!(Time::from_nanos(-5), Time::default());
+        let d = Duration::from_secs_f64(2.25);
+        assert_eq!((d.sec, d.nanosec), (2, 250_000_000));
+    }
+
+    #[test]
+    fn joint_state_maps_by_name() {
+        let js = JointState {
+            name: vec!["b".into(), "a".into()],
+            position: vec![2.0, 1.0],
+            ..JointState::default()
+        };
+        assert_eq!(
+            js.positions_for(&["a".into(), "b".into()]),
+            Some(vec![1.0, 2.0])
+        );
+        assert_eq!(js.positions_for(&["c".into()]), None);
+    }
+}

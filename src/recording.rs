@@ -1,0 +1,283 @@
+//! Session recordings: MCAP with the `ros2` profile, `ros2msg` schemas and CDR payloads — the layout
+//! rosbag2 writes since Iron — so Foxglove, `ros2 bag play` and `rosbags` open them.
+//!
+//! Crash safety: messages go into chunks that are closed and flushed to the file at least once per
+//! second of log time, so a killed process leaves every chunk up to the last second readable (an MCAP
+//! reader recovers a file without its summary; `mcap recover` rewrites one). A normal end writes the
+//! summary and the footer.
+//!
+//! Also here: the conversions between library values and the bridge's messages.
+
+use std::collections::BTreeMap;
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::Path;
+
+use ergocell_bridge::cdr;
+use ergocell_bridge::msg::{
+    CameraLandmarks, ErgonomicState, Header, PostureWarning, RosMessage, RulaSide,
+};
+use ergocell_ergonomics::{FrameAssessment, SideAssessment, WarningEvent};
+use ergocell_perception::{CameraRig, Keypoint2, View2};
+use ergocell_skeleton::LANDMARK_COUNT;
+
+/// Topic names.
+pub mod topics {
+    /// `/ergocell/camera/<id>/landmarks`.
+    pub fn camera(id: &str) -> String {
+        format!("/ergocell/camera/{id}/landmarks")
+    }
+    pub const SESSION_STATE: &str = "/ergocell/session_state";
+    pub const ERGONOMICS: &str = "/ergocell/ergonomics";
+    pub const WARNINGS: &str = "/ergocell/warnings";
+    pub const JOINT_STATES: &str = "/joint_states";
+    pub const JOINT_TRAJECTORY: &str = "/joint_trajectory_controller/joint_trajectory";
+}
+
+/// A recording could not be written or read.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum RecordingError {
+    #[error("{path}: {source}")]
+    Io {
+        path: String,
+        source: std::io::Error,
+    },
+    #[error("MCAP: {0}")]
+    Mcap(#[from] mcap::McapError),
+    #[error(transparent)]
+    Bridge(#[from] ergocell_bridge::BridgeError),
+}
+
+/// Writes one session's MCAP file.
+pub struct McapRecorder {
+    writer: mcap::Writer<BufWriter<File>>,
+    schemas: BTreeMap<String, u16>,
+    channels: BTreeMap<String, u16>,
+    sequence: u32,
+    last_flush_nanos: Option<i64>,
+    messages: u64,
+}
+
+impl McapRecorder {
+    /// Creates (truncates) the file.
+    pub fn create(path: &Path) -> Result<Self, RecordingError> {
+        let file = File::create(path).map_err(|source| RecordingError::Io {
+            path: path.display().to_string(),
+            source,
+        })?;
+        let options = mcap::WriteOptions::new()
+            .profile("ros2")
+            .compression(None)
+            .library(concat!("ergocell ", env!("CARGO_PKG_VERSION")));
+        let writer = options.create(BufWriter::new(file))?;
+        Ok(Self {
+            writer,
+            schemas: BTreeMap::new(),
+            channels: BTreeMap::new(),
+            sequence: 0,
+            last_flush_nanos: None,
+            messages: 0,
+        })
+    }
+
+    /// Messages written so far.
+    pub fn messages(&self) -> u64 {
+        self.messages
+    }
+
+    /// Records `message` on `topic` at `log_time_nanos` (the session clock).
+    pub fn write<M: RosMessage>(
+        &mut self,
+        topic: &str,
+        log_time_nanos: i64,
+        message: &M,
+    ) -> Result<(), RecordingError> {
+        let channel = self.channel::<M>(topic)?;
+        let data = cdr::encode(message)?;
+        self.sequence = self.sequence.wrapping_add(1);
+        let time = u64::try_from(log_time_nanos).unwrap_or(0);
+        self.writer.write_to_known_channel(
+            &mcap::records::MessageHeader {
+                channel_id: channel,
+                sequence: self.sequence,
+                log_time: time,
+                publish_time: time,
+            },
+            &data,
+        )?;
+        self.messages += 1;
+        let last = *self.last_flush_nanos.get_or_insert(log_time_nanos);
+        if log_time_nanos - last >= 1_000_000_000 {
+            self.flush(log_time_nanos)?;
+        }
+        Ok(())
+    }
+
+    /// Closes the current chunk and flushes it to the file.
+    pub fn flush(&mut self, log_time_nanos: i64) -> Result<(), RecordingError> {
+        self.writer.flush()?;
+        self.last_flush_nanos = Some(log_time_nanos);
+        Ok(())
+    }
+
+    /// Writes the summary and footer.
+    pub fn finish(mut self) -> Result<u64, RecordingError> {
+        self.writer.finish()?;
+        Ok(self.messages)
+    }
+
+    fn channel<M: RosMessage>(&mut self, topic: &str) -> Result<u16, RecordingError> {
+        if let Some(id) = self.channels.get(topic) {
+            return Ok(*id);
+        }
+        let type_name = M::type_name();
+        let schema = if let Some(id) = self.schemas.get(&type_name) {
+            *id
+        } else {
+            let id = self
+                .writer
+                .add_schema(&type_name, "ros2msg", M::schema_text().as_bytes())?;
+            self.schemas.insert(type_name, id);
+            id
+        };
+        let id = self
+            .writer
+            .add_channel(schema, topic, "cdr", &BTreeMap::new())?;
+        self.channels.insert(topic.to_owned(), id);
+        Ok(id)
+    }
+}
+
+/// A camera's view as the Jetson publishes it: 33 entries in BlazePose order (unobserved: NaN pixels,
+/// visibility and presence 0), or none when nobody is detected.
+pub fn landmarks_message(rig: &CameraRig, view: &View2) -> CameraLandmarks {
+    let camera = rig.camera(view.camera);
+    let id = camera.map_or_else(|| format!("{}", view.camera), |c| c.id.as_str().to_owned());
+    let (w, h) = camera.map_or((0, 0), |c| (c.intrinsics.width_px, c.intrinsics.height_px));
+    let mut m = CameraLandmarks {
+        header: Header::new(view.stamp_nanos, &format!("camera_{id}")),
+        camera_id: id,
+        image_width: w,
+        image_height: h,
+        ..CameraLandmarks::default()
+    };
+    if view.observed_count() == 0 {
+        return m;
+    }
+    for k in view.keypoints() {
+        match k {
+            Some(k) => {
+                let p = k.pixel();
+                m.x_px.push(p.x as f32);
+                m.y_px.push(p.y as f32);
+                m.visibility.push(k.confidence() as f32);
+                m.presence.push(1.0);
+            }
+            None => {
+                m.x_px.push(f32::NAN);
+                m.y_px.push(f32::NAN);
+                m.visibility.push(0.0);
+                m.presence.push(0.0);
+            }
+        }
+    }
+    m
+}
+
+/// Why a landmark message was not turned into a view.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum LandmarksRejected {
+    #[error("unknown camera `{0}` (not in the rig)")]
+    UnknownCamera(String),
+    #[error("camera `{camera}`: {got} landmarks, expected 0 or {LANDMARK_COUNT} in each array")]
+    BadLength { camera: String, got: usize },
+}
+
+/// A camera's message back to a view (the inverse of [`landmarks_message`]): a landmark is observed
+/// when its pixels are finite and its presence and visibility are positive; its confidence is the
+/// visibility.
+pub fn view_from_message(rig: &CameraRig, m: &CameraLandmarks) -> Result<View2, LandmarksRejected> {
+    let camera = rig
+        .index_of_name(&m.camera_id)
+        .ok_or_else(|| LandmarksRejected::UnknownCamera(m.camera_id.clone()))?;
+    let mut view = View2::empty(camera, m.header.stamp.to_nanos());
+    let n = m.x_px.len();
+    if n == 0 {
+        return Ok(view);
+    }
+    if n != LANDMARK_COUNT
+        || [m.y_px.len(), m.visibility.len(), m.presence.len()]
+            .iter()
+            .any(|&l| l != n)
+    {
+        return Err(LandmarksRejected::BadLength {
+            camera: m.camera_id.clone(),
+            got: n,
+        });
+    }
+    for lm in ergocell_skeleton::Landmark::ALL {
+        let i = lm.index();
+        let (x, y) = (f64::from(m.x_px[i]), f64::from(m.y_px[i]));
+        let (vis, pres) = (f64::from(m.visibility[i]), f64::from(m.presence[i]));
+        if pres > 0.0 && vis > 0.0 {
+            view.set(lm, Keypoint2::new(x, y, vis.min(1.0)).ok());
+        }
+    }
+    Ok(view)
+}
+
+fn side_message(side: Option<&SideAssessment>) -> RulaSide {
+    let Some(s) = side else {
+        return RulaSide::default();
+    };
+    let r = &s.scores;
+    RulaSide {
+        scored: true,
+        uncertain: s.uncertain,
+        upper_arm_score: r.upper_arm_score,
+        lower_arm_score: r.lower_arm_score,
+        wrist_score: r.wrist_score,
+        wrist_twist_score: r.wrist_twist_score,
+        posture_score_a: r.posture_score_a,
+        score_c_wrist_arm: r.score_c_wrist_arm,
+        neck_score: r.neck_score,
+        trunk_score: r.trunk_score,
+        legs_score: r.legs_score,
+        posture_score_b: r.posture_score_b,
+        score_d_neck_trunk_legs: r.score_d_neck_trunk_legs,
+        final_score: r.final_score,
+        action_level: r.action_level,
+    }
+}
+
+/// The per-frame RULA state.
+pub fn ergonomic_message(a: &FrameAssessment) -> ErgonomicState {
+    ErgonomicState {
+        header: Header::new(a.stamp_nanos, "world"),
+        left: side_message(a.left.as_ref()),
+        right: side_message(a.right.as_ref()),
+        action_level: a.headline().map_or(0, |h| h.scores.action_level),
+    }
+}
+
+/// A warning event.
+pub fn warning_message(w: &WarningEvent) -> PostureWarning {
+    let kind = match w.kind {
+        ergocell_ergonomics::warnings::WarningKind::Raised => "raised",
+        ergocell_ergonomics::warnings::WarningKind::Changed => "changed",
+        ergocell_ergonomics::warnings::WarningKind::Cleared => "cleared",
+    };
+    PostureWarning {
+        header: Header::new(w.stamp_nanos, "world"),
+        kind: kind.to_owned(),
+        region: w.region.name().to_owned(),
+        side: w.side.map_or(String::new(), |s| s.name().to_owned()),
+        region_score: w.region_score,
+        angle_deg: w.angle_deg.unwrap_or(f64::NAN),
+        action_level: w.action_level,
+        uncertain: w.uncertain,
+        message: w.message.clone(),
+    }
+}

@@ -1,0 +1,734 @@
+//! The session state machine (see the module docs of [`crate::session`]).
+
+use ergocell_ergonomics::{
+    AssessmentConfig, HeightConfig, HeightDecision, HeightEstimator, RulaAssessor, UpVector,
+    WarningConfig, WarningTracker,
+};
+use ergocell_perception::temporal::FrameAssembler;
+use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
+use ergocell_perception::{CameraRig, FusionEngine, FusionMethod, View2};
+use ergocell_robot::{SessionLock, TrajectoryClass};
+use ergocell_skeleton::{Landmark, Skeleton3};
+use nalgebra::Point3;
+
+use super::{
+    trajectory_class, trajectory_message, Leg, RobotCommand, RobotSink, SessionConfig,
+    SessionEvent, SessionState, TrajectoryProvider,
+};
+
+/// Per-camera health.
+#[derive(Debug, Clone)]
+struct CameraHealth {
+    name: String,
+    last_arrival_nanos: Option<i64>,
+    sees_operator: bool,
+    degraded: bool,
+}
+
+/// Where the robot is along the locked path, as far as the session knows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Motion {
+    /// Not commanded yet (at home).
+    AtHome,
+    Moving(Leg),
+    AtHandover,
+}
+
+/// Counts for the final summary.
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+pub struct SessionSummary {
+    pub frames_fused: u64,
+    pub frames_tracked: u64,
+    pub height_m: Option<f64>,
+    pub height_uncertainty_m: Option<f64>,
+    pub class: Option<String>,
+    pub lock_sha256: Option<String>,
+    pub holds: u32,
+    pub warnings_raised: u32,
+    pub changes_refused: u32,
+    pub camera_degradations: u32,
+    pub max_action_level: u8,
+    pub robot_commands: u32,
+    pub ended: bool,
+    pub end_reason: String,
+}
+
+/// The session state machine. One per operator session.
+pub struct SessionMachine {
+    config: SessionConfig,
+    pairs: Vec<(usize, usize)>,
+    assembler: FrameAssembler,
+    fusion: FusionEngine,
+    filter: OneEuroFilter,
+    up: UpVector,
+    height: HeightEstimator,
+    assessor: RulaAssessor,
+    warnings: WarningTracker,
+    provider: Box<dyn TrajectoryProvider>,
+    state: SessionState,
+    cameras: Vec<CameraHealth>,
+    decision: Option<HeightDecision>,
+    lock: Option<SessionLock>,
+    motion: Motion,
+    hold_reason: Option<String>,
+    tracking_back_since: Option<i64>,
+    last_frame_stamp: Option<i64>,
+    last_tracked: Option<(i64, Point3<f64>)>,
+    operator_departed: bool,
+    pairs_tracking: usize,
+    summary: SessionSummary,
+}
+
+impl SessionMachine {
+    /// A session on this rig. The rig's `up` is required (RULA and height need the world's vertical).
+    pub fn new(
+        rig: CameraRig,
+        config: SessionConfig,
+        provider: Box<dyn TrajectoryProvider>,
+    ) -> Result<Self, String> {
+        let up = rig
+            .up()
+            .ok_or("the rig has no `up` vector: RULA and height need the world's vertical")?;
+        let up = UpVector::new(up).map_err(|e| e.to_string())?;
+        let pairs = rig.pairs().iter().map(|p| (p.left, p.right)).collect();
+        let cameras = rig
+            .cameras()
+            .iter()
+            .map(|c| CameraHealth {
+                name: c.id.as_str().to_owned(),
+                last_arrival_nanos: None,
+                sees_operator: false,
+                degraded: false,
+            })
+            .collect();
+        let assembler = FrameAssembler::new(
+            rig.len(),
+            config.assembly_tolerance_nanos,
+            config.assembly_max_wait_nanos,
+        );
+        let fusion = FusionEngine::new(rig, FusionMethod::Default).map_err(|e| e.to_string())?;
+        let assessor = RulaAssessor::new(AssessmentConfig::new(up)).map_err(|e| e.to_string())?;
+        Ok(Self {
+            config,
+            pairs,
+            assembler,
+            fusion,
+            filter: OneEuroFilter::new(OneEuroParams::default()),
+            up,
+            height: HeightEstimator::new(HeightConfig::new(up)),
+            assessor,
+            warnings: WarningTracker::new(WarningConfig::default()),
+            provider,
+            state: SessionState::WaitingForOperator,
+            cameras,
+            decision: None,
+            lock: None,
+            motion: Motion::AtHome,
+            hold_reason: None,
+            tracking_back_since: None,
+            last_frame_stamp: None,
+            last_tracked: None,
+            operator_departed: false,
+            pairs_tracking: 0,
+            summary: SessionSummary::default(),
+        })
+    }
+
+    pub fn state(&self) -> SessionState {
+        self.state
+    }
+
+    pub fn summary(&self) -> &SessionSummary {
+        &self.summary
+    }
+
+    /// The height decision, once made.
+    pub fn decision(&self) -> Option<&HeightDecision> {
+        self.decision.as_ref()
+    }
+
+    /// The locked trajectory's hash, once locked.
+    pub fn lock_sha256(&self) -> Option<&str> {
+        self.lock
+            .as_ref()
+            .map(|l| l.trajectory().lock().lock_sha256.as_str())
+    }
+
+    /// Why the robot is held, if it is.
+    pub fn hold_reason(&self) -> Option<&str> {
+        self.hold_reason.as_deref()
+    }
+
+    /// Cameras whose views are fresh.
+    pub fn cameras_fresh(&self) -> usize {
+        self.cameras.iter().filter(|c| !c.degraded).count()
+    }
+
+    /// Stereo pairs whose two cameras both see the operator (as of the last step).
+    pub fn pairs_tracking(&self) -> usize {
+        self.pairs_tracking
+    }
+
+    /// A request to change the trajectory class mid-session: refused once a trajectory is locked
+    /// (the class comes from the height measured at session start, nothing else).
+    pub fn request_class(&mut self, now_nanos: i64, requested: TrajectoryClass) -> SessionEvent {
+        let reason = match self.lock.as_mut() {
+            Some(lock) => match lock.request(requested) {
+                Ok(_) => format!("class {requested} is already the locked class: nothing changes"),
+                Err(e) => e.to_string(),
+            },
+            None => "no trajectory is locked yet: the class is decided by the height measurement \
+                     only"
+                .to_owned(),
+        };
+        self.summary.changes_refused += 1;
+        tracing::warn!(%requested, %reason, "trajectory change request refused");
+        SessionEvent::ChangeRefused {
+            stamp_nanos: now_nanos,
+            requested,
+            reason,
+        }
+    }
+
+    /// Ctrl-C or a backend failure: hold the robot and end the session.
+    pub fn shutdown(
+        &mut self,
+        now_nanos: i64,
+        robot: &mut dyn RobotSink,
+        why: &str,
+    ) -> Vec<SessionEvent> {
+        let mut events = Vec::new();
+        if self.state == SessionState::SessionEnded {
+            return events;
+        }
+        let command = RobotCommand::Hold {
+            reason: format!("session interrupted: {why}"),
+        };
+        self.send(now_nanos, robot, command, &mut events);
+        self.hold_reason = Some(why.to_owned());
+        self.summary.end_reason = format!("interrupted: {why} (robot held)");
+        self.transition(now_nanos, SessionState::SessionEnded, why, &mut events);
+        events
+    }
+
+    /// One step at `now_nanos` with the views that arrived since the last step.
+    pub fn step(
+        &mut self,
+        now_nanos: i64,
+        views: Vec<View2>,
+        robot: &mut dyn RobotSink,
+    ) -> Vec<SessionEvent> {
+        let mut events = Vec::new();
+        if self.state == SessionState::SessionEnded {
+            return events;
+        }
+        // Camera health from arrivals.
+        for view in &views {
+            if let Some(c) = self.cameras.get_mut(view.camera) {
+                c.last_arrival_nanos = Some(now_nanos);
+                c.sees_operator = view.observed_count() >= self.config.min_view_landmarks;
+            }
+        }
+        self.update_camera_health(now_nanos, &mut events);
+        let mut frames = Vec::new();
+        for view in views {
+            frames.extend(self.assembler.push(view, now_nanos));
+        }
+        frames.extend(self.assembler.poll(now_nanos));
+        for frame in &frames {
+            self.last_frame_stamp = Some(
+                self.last_frame_stamp
+                    .map_or(frame.stamp_nanos, |s| s.max(frame.stamp_nanos)),
+            );
+            let fused = match self.fusion.fuse(frame) {
+                Ok(f) => f,
+                Err(e) => {
+                    tracing::warn!(error = %e, "frame not fused");
+                    continue;
+                }
+            };
+            self.summary.frames_fused += 1;
+            if fused.skeleton.observed_count() < self.config.min_tracked_landmarks {
+                continue;
+            }
+            self.summary.frames_tracked += 1;
+            let skeleton = self.filter.filter(&fused.skeleton);
+            if let Some(hips) = mid_hip(&skeleton) {
+                self.last_tracked = Some((frame.stamp_nanos, hips));
+            }
+            self.on_tracked_frame(now_nanos, &fused.skeleton, skeleton, &mut events);
+        }
+        self.pairs_tracking = self
+            .pairs
+            .iter()
+            .filter(|(l, r)| {
+                [*l, *r].iter().all(|&k| {
+                    self.cameras
+                        .get(k)
+                        .is_some_and(|c| !c.degraded && c.sees_operator)
+                })
+            })
+            .count();
+        self.supervise(now_nanos, robot, &mut events);
+        events
+    }
+
+    fn update_camera_health(&mut self, now_nanos: i64, events: &mut Vec<SessionEvent>) {
+        for c in &mut self.cameras {
+            let stale = c
+                .last_arrival_nanos
+                .is_none_or(|t| now_nanos - t > self.config.camera_stale_nanos);
+            if stale && c.last_arrival_nanos.is_some() && !c.degraded {
+                c.degraded = true;
+                c.sees_operator = false;
+                self.summary.camera_degradations += 1;
+                let why = format!(
+                    "no view for more than {} ms: fusion continues without it",
+                    self.config.camera_stale_nanos / 1_000_000
+                );
+                tracing::warn!(camera = %c.name, %why, "camera degraded");
+                events.push(SessionEvent::CameraDegraded {
+                    stamp_nanos: now_nanos,
+                    camera: c.name.clone(),
+                    why,
+                });
+            } else if !stale && c.degraded {
+                c.degraded = false;
+                tracing::info!(camera = %c.name, "camera restored");
+                events.push(SessionEvent::CameraRestored {
+                    stamp_nanos: now_nanos,
+                    camera: c.name.clone(),
+                });
+            }
+        }
+    }
+
+    fn on_tracked_frame(
+        &mut self,
+        now_nanos: i64,
+        raw: &Skeleton3,
+        filtered: Skeleton3,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        if self.state == SessionState::WaitingForOperator {
+            self.transition(
+                now_nanos,
+                SessionState::MeasuringHeight,
+                "operator tracked",
+                events,
+            );
+        }
+        if self.state == SessionState::MeasuringHeight {
+            // Height is measured at session start only, on the unfiltered fused skeleton.
+            if let Some(decision) = self.height.push(raw) {
+                let e = &decision.estimate;
+                self.summary.height_m = Some(e.height_m);
+                self.summary.height_uncertainty_m = Some(e.uncertainty_m);
+                self.summary.class = Some(decision.class.name().to_owned());
+                tracing::info!(
+                    height_m = e.height_m,
+                    uncertainty_m = e.uncertainty_m,
+                    class = decision.class.name(),
+                    "height class decided"
+                );
+                events.push(SessionEvent::ClassDecided {
+                    stamp_nanos: now_nanos,
+                    height_m: e.height_m,
+                    uncertainty_m: e.uncertainty_m,
+                    class: decision.class,
+                });
+                let reason = format!(
+                    "stature {:.3} ± {:.3} m → class {}",
+                    e.height_m,
+                    e.uncertainty_m,
+                    decision.class.name()
+                );
+                self.decision = Some(decision);
+                self.transition(now_nanos, SessionState::ClassDecided, &reason, events);
+            }
+        }
+        // RULA in every state once an operator is tracked.
+        let assessment = match self.assessor.assess(&filtered) {
+            Ok(a) => {
+                for w in self.warnings.update(&a) {
+                    if w.kind == ergocell_ergonomics::warnings::WarningKind::Raised {
+                        self.summary.warnings_raised += 1;
+                    }
+                    tracing::info!(message = %w.message, "posture warning");
+                    events.push(SessionEvent::Warning(w));
+                }
+                if let Some(h) = a.headline() {
+                    self.summary.max_action_level =
+                        self.summary.max_action_level.max(h.scores.action_level);
+                }
+                Some(a)
+            }
+            Err(e) => {
+                tracing::warn!(error = %e, "frame not assessed");
+                None
+            }
+        };
+        events.push(SessionEvent::Frame {
+            stamp_nanos: filtered.stamp_nanos,
+            skeleton: filtered,
+            assessment,
+        });
+    }
+
+    /// Locking, holding, resuming, ending.
+    fn supervise(
+        &mut self,
+        now_nanos: i64,
+        robot: &mut dyn RobotSink,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        if self.state == SessionState::ClassDecided {
+            self.lock_trajectory(now_nanos, robot, events);
+        }
+        if !matches!(
+            self.state,
+            SessionState::TrajectoryLocked | SessionState::Working | SessionState::Held
+        ) {
+            return;
+        }
+        let Some(lock) = self.lock.as_ref() else {
+            return;
+        };
+        let names = lock.trajectory().joint_names().to_vec();
+        let points = lock.trajectory().points();
+        let (Some(first), Some(last)) = (points.first(), points.last()) else {
+            return;
+        };
+        let (home, handover) = (first.positions_rad.clone(), last.positions_rad.clone());
+        let position = robot.joint_positions(now_nanos, &names);
+        let near = |target: &[f64]| {
+            position.as_ref().is_some_and(|p| {
+                p.len() == target.len()
+                    && p.iter()
+                        .zip(target)
+                        .all(|(a, b)| (a - b).abs() <= self.config.at_knot_tolerance_rad)
+            })
+        };
+        let (at_home, at_handover) = (near(&home), near(&handover));
+        match self.motion {
+            Motion::Moving(Leg::ToHandover) if at_handover => self.motion = Motion::AtHandover,
+            Motion::Moving(Leg::ToHome) if at_home => self.motion = Motion::AtHome,
+            _ => {}
+        }
+
+        // Has the operator left? Last tracked farther than `exit_radius_m` from the station (still in
+        // view or not). Lost from view nearer than that is a loss of tracking: the robot is held.
+        let frame_age = self.last_frame_stamp.map(|s| now_nanos - s);
+        let frames_fresh = frame_age.is_some_and(|a| a <= self.config.max_frame_age_nanos);
+        if !self.operator_departed && self.state != SessionState::TrajectoryLocked {
+            if let Some((_, p)) = self.last_tracked {
+                let [sx, sy] = self.config.station_xy_m;
+                let d = (p.x - sx).hypot(p.y - sy);
+                if d > self.config.exit_radius_m {
+                    self.operator_departed = true;
+                    tracing::info!(distance_m = d, "operator left the station");
+                }
+            }
+        }
+        let tracking_ok = self.operator_departed || (self.pairs_tracking >= 1 && frames_fresh);
+
+        if !tracking_ok {
+            self.tracking_back_since = None;
+            if self.state != SessionState::Held {
+                let why = if frames_fresh {
+                    format!(
+                        "fewer than one stereo pair sees the operator ({} cameras fresh)",
+                        self.cameras_fresh()
+                    )
+                } else {
+                    format!(
+                        "newest frame older than the {} ms bound",
+                        self.config.max_frame_age_nanos / 1_000_000
+                    )
+                };
+                self.hold(now_nanos, robot, &why, events);
+            }
+            return;
+        }
+        if self.state == SessionState::Held {
+            let since = *self.tracking_back_since.get_or_insert(now_nanos);
+            if now_nanos - since < self.config.resume_after_nanos {
+                return;
+            }
+            self.try_resume(now_nanos, at_home, at_handover, robot, events);
+            return;
+        }
+        if self.state == SessionState::TrajectoryLocked {
+            self.start_leg(now_nanos, Leg::ToHandover, robot, events);
+            self.transition(
+                now_nanos,
+                SessionState::Working,
+                "trajectory sent: home → handover",
+                events,
+            );
+            return;
+        }
+        // Working.
+        if self.operator_departed {
+            match self.motion {
+                Motion::AtHandover => self.start_leg(now_nanos, Leg::ToHome, robot, events),
+                Motion::AtHome => self.end_session(now_nanos, at_home, events),
+                Motion::Moving(_) => {}
+            }
+        }
+    }
+
+    fn lock_trajectory(
+        &mut self,
+        now_nanos: i64,
+        robot: &mut dyn RobotSink,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        let Some(decision) = self.decision.as_ref() else {
+            return;
+        };
+        let class = trajectory_class(decision.class);
+        match self.provider.verify(class) {
+            Ok(approved) => {
+                let names = approved.joint_names().to_vec();
+                if let Some(current) = robot.joint_positions(now_nanos, &names) {
+                    if let Err(e) =
+                        approved.check_start(&current, self.config.at_knot_tolerance_rad)
+                    {
+                        let why = format!("the robot is not at the trajectory's start: {e}");
+                        self.abort(now_nanos, robot, &why, events);
+                        return;
+                    }
+                } else {
+                    self.abort(
+                        now_nanos,
+                        robot,
+                        "no joint positions from the robot: cannot check the trajectory's start",
+                        events,
+                    );
+                    return;
+                }
+                let sha = approved.lock().lock_sha256.clone();
+                let approved_by = approved
+                    .approvals()
+                    .iter()
+                    .map(|a| a.approved_by.clone())
+                    .collect();
+                tracing::info!(%class, lock_sha256 = %sha, "trajectory verified and locked");
+                self.summary.lock_sha256 = Some(sha.clone());
+                events.push(SessionEvent::TrajectoryLocked {
+                    stamp_nanos: now_nanos,
+                    class,
+                    lock_sha256: sha.clone(),
+                    approved_by,
+                });
+                self.lock = Some(SessionLock::start(approved));
+                self.transition(
+                    now_nanos,
+                    SessionState::TrajectoryLocked,
+                    &format!("class {class} verified against its approval, locked ({sha})"),
+                    events,
+                );
+            }
+            Err(why) => {
+                let why = format!("trajectory for class {class} not verified: {why}");
+                self.abort(now_nanos, robot, &why, events);
+            }
+        }
+    }
+
+    fn start_leg(
+        &mut self,
+        now_nanos: i64,
+        leg: Leg,
+        robot: &mut dyn RobotSink,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        let Some(lock) = self.lock.as_ref() else {
+            return;
+        };
+        let approved = lock.trajectory();
+        let command = RobotCommand::Execute {
+            leg,
+            lock_sha256: approved.lock().lock_sha256.clone(),
+            trajectory: trajectory_message(approved, leg),
+        };
+        if self.send(now_nanos, robot, command, events) {
+            self.motion = Motion::Moving(leg);
+        }
+    }
+
+    fn hold(
+        &mut self,
+        now_nanos: i64,
+        robot: &mut dyn RobotSink,
+        why: &str,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        let command = RobotCommand::Hold {
+            reason: why.to_owned(),
+        };
+        self.send(now_nanos, robot, command, events);
+        self.summary.holds += 1;
+        self.hold_reason = Some(why.to_owned());
+        tracing::warn!(reason = %why, "robot held");
+        self.transition(now_nanos, SessionState::Held, why, events);
+    }
+
+    fn try_resume(
+        &mut self,
+        now_nanos: i64,
+        at_home: bool,
+        at_handover: bool,
+        robot: &mut dyn RobotSink,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        let Some(lock) = self.lock.as_ref() else {
+            return;
+        };
+        let class = lock.trajectory().class();
+        let locked_sha = lock.trajectory().lock().lock_sha256.clone();
+        // The locked trajectory must still verify (files, approvals) and be the same one.
+        match self.provider.verify(class) {
+            Ok(a) if a.lock().lock_sha256 == locked_sha => {}
+            Ok(a) => {
+                let why = format!(
+                    "the lock changed during the session ({} → {}): staying held",
+                    locked_sha,
+                    a.lock().lock_sha256
+                );
+                self.set_hold_reason(&why);
+                return;
+            }
+            Err(e) => {
+                self.set_hold_reason(&format!(
+                    "the locked trajectory no longer verifies: {e}; staying held"
+                ));
+                return;
+            }
+        }
+        let (motion, reason) = if at_home {
+            (
+                Motion::AtHome,
+                "tracking back, trajectory still verified: robot at home",
+            )
+        } else if at_handover {
+            (
+                Motion::AtHandover,
+                "tracking back, trajectory still verified: robot at the handover point",
+            )
+        } else {
+            // Stopped between knots: resuming from there would be a motion nobody validated.
+            self.set_hold_reason(
+                "tracking back, but the robot stopped between the locked trajectory's ends: bring \
+                 it home with the pendant; the session resumes once /joint_states match home",
+            );
+            return;
+        };
+        self.motion = motion;
+        self.hold_reason = None;
+        self.tracking_back_since = None;
+        self.transition(now_nanos, SessionState::Working, reason, events);
+        if motion == Motion::AtHome && !self.operator_departed {
+            self.start_leg(now_nanos, Leg::ToHandover, robot, events);
+        }
+    }
+
+    fn set_hold_reason(&mut self, why: &str) {
+        if self.hold_reason.as_deref() != Some(why) {
+            tracing::warn!(reason = %why, "robot stays held");
+            self.hold_reason = Some(why.to_owned());
+        }
+    }
+
+    fn end_session(&mut self, now_nanos: i64, at_home: bool, events: &mut Vec<SessionEvent>) {
+        let Some(lock) = self.lock.take() else {
+            return;
+        };
+        match lock.end(self.operator_departed, at_home) {
+            Ok(refused) => {
+                self.summary.ended = true;
+                self.summary.end_reason = format!(
+                    "operator left, robot at home ({} change request(s) refused during the session)",
+                    refused.len()
+                );
+                let reason = self.summary.end_reason.clone();
+                self.transition(now_nanos, SessionState::SessionEnded, &reason, events);
+            }
+            Err((lock, _)) => self.lock = Some(*lock),
+        }
+    }
+
+    fn abort(
+        &mut self,
+        now_nanos: i64,
+        robot: &mut dyn RobotSink,
+        why: &str,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        tracing::error!(reason = %why, "session aborted");
+        let command = RobotCommand::Hold {
+            reason: why.to_owned(),
+        };
+        self.send(now_nanos, robot, command, events);
+        self.hold_reason = Some(why.to_owned());
+        self.summary.end_reason = format!("aborted: {why}");
+        self.transition(now_nanos, SessionState::SessionEnded, why, events);
+    }
+
+    /// Sends a command; a failed send is logged and the robot is assumed not to have moved.
+    fn send(
+        &mut self,
+        now_nanos: i64,
+        robot: &mut dyn RobotSink,
+        command: RobotCommand,
+        events: &mut Vec<SessionEvent>,
+    ) -> bool {
+        match robot.send(now_nanos, &command) {
+            Ok(()) => {
+                self.summary.robot_commands += 1;
+                events.push(SessionEvent::RobotCommandSent {
+                    stamp_nanos: now_nanos,
+                    command,
+                });
+                true
+            }
+            Err(e) => {
+                tracing::error!(error = %e, "robot command not sent");
+                false
+            }
+        }
+    }
+
+    fn transition(
+        &mut self,
+        now_nanos: i64,
+        to: SessionState,
+        reason: &str,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        let from = self.state;
+        if from == to {
+            return;
+        }
+        self.state = to;
+        tracing::info!(%from, %to, %reason, stamp_nanos = now_nanos, "session state");
+        events.push(SessionEvent::StateChanged {
+            stamp_nanos: now_nanos,
+            from,
+            to,
+            reason: reason.to_owned(),
+        });
+    }
+
+    /// The world's up vector the session uses.
+    pub fn up(&self) -> &UpVector {
+        &self.up
+    }
+}
+
+fn mid_hip(s: &Skeleton3) -> Option<Point3<f64>> {
+    let l = s.position(Landmark::LeftHip)?;
+    let r = s.position(Landmark::RightHip)?;
+    Some(nalgebra::center(&l, &r))
+}

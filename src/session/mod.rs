@@ -1,0 +1,265 @@
+//! The cell controller's session: one operator, from walking in to leaving.
+//!
+//! ```text
+//! WaitingForOperator → MeasuringHeight → ClassDecided → TrajectoryLocked → Working → SessionEnded
+//!                                                              │              ▲ │
+//!                                                              └──► Held ◄────┘ └► (Held ⇄ Working)
+//! ```
+//!
+//! [`SessionMachine`] is driven by the caller: each [`SessionMachine::step`] gets the time (an injected
+//! clock: the simulator's, a test's or the wall clock at the binary's boundary), the camera views that
+//! arrived since the last step, and a [`RobotSink`]. Backends implement two traits —
+//! [`LandmarkSource`] (camera landmarks in) and [`RobotSink`] (commands out, joint positions in) —
+//! the simulator ([`sim::SimSource`]), ROS 2 (the binary's `run`), and dummies for tests
+//! ([`dummy`]). Trajectories come only through a [`TrajectoryProvider`], which verifies the lock and
+//! its approval on every call.
+//!
+//! The robot is **held** (goal cancelled: an empty `JointTrajectory`) when fewer than one stereo pair
+//! sees the operator or the newest frame is older than [`SessionConfig::max_frame_age_nanos`]. A hold
+//! is a software hold through the controller's normal interface, not an emergency stop.
+
+pub mod dummy;
+mod machine;
+pub mod provider;
+pub mod sim;
+
+pub use machine::{SessionMachine, SessionSummary};
+
+use ergocell_bridge::msg::{Duration, Header, JointTrajectory, JointTrajectoryPoint};
+use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
+use ergocell_perception::View2;
+use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
+use ergocell_skeleton::Skeleton3;
+
+/// The session's states.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SessionState {
+    WaitingForOperator,
+    MeasuringHeight,
+    ClassDecided,
+    TrajectoryLocked,
+    Working,
+    /// The robot is held (tracking lost or frames stale); resumes only when tracking is back and the
+    /// locked trajectory still verifies.
+    Held,
+    SessionEnded,
+}
+
+impl SessionState {
+    /// Snake-case name (the `state` field of `ergocell_msgs/SessionState`).
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::WaitingForOperator => "waiting_for_operator",
+            Self::MeasuringHeight => "measuring_height",
+            Self::ClassDecided => "class_decided",
+            Self::TrajectoryLocked => "trajectory_locked",
+            Self::Working => "working",
+            Self::Held => "held",
+            Self::SessionEnded => "session_ended",
+        }
+    }
+}
+
+impl std::fmt::Display for SessionState {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Which way along the locked path a trajectory goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Leg {
+    /// Home → handover: the locked trajectory as stored.
+    ToHandover,
+    /// Handover → home: the locked trajectory time-reversed (same path, same samples, velocities
+    /// negated; every limit the validator checked is symmetric, and both ends are at rest).
+    ToHome,
+}
+
+/// A command to the robot controller.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RobotCommand {
+    /// Follow this trajectory (the locked one, or its time reversal).
+    Execute {
+        leg: Leg,
+        lock_sha256: String,
+        trajectory: JointTrajectory,
+    },
+    /// Cancel the goal / send an empty trajectory: the robot stops where it is. Not an emergency stop.
+    Hold { reason: String },
+}
+
+impl RobotCommand {
+    /// The message on the controller's `joint_trajectory` topic (a hold is the empty trajectory).
+    pub fn to_message(&self, stamp_nanos: i64) -> JointTrajectory {
+        match self {
+            Self::Execute { trajectory, .. } => {
+                let mut t = trajectory.clone();
+                t.header.stamp = ergocell_bridge::msg::Time::from_nanos(stamp_nanos);
+                t
+            }
+            Self::Hold { .. } => JointTrajectory {
+                header: Header::new(stamp_nanos, ""),
+                ..JointTrajectory::default()
+            },
+        }
+    }
+}
+
+/// What happened in a step: logged with `tracing`, recorded, shown.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SessionEvent {
+    StateChanged {
+        stamp_nanos: i64,
+        from: SessionState,
+        to: SessionState,
+        reason: String,
+    },
+    ClassDecided {
+        stamp_nanos: i64,
+        height_m: f64,
+        uncertainty_m: f64,
+        class: HeightClass,
+    },
+    TrajectoryLocked {
+        stamp_nanos: i64,
+        class: TrajectoryClass,
+        lock_sha256: String,
+        approved_by: Vec<String>,
+    },
+    /// A mid-session request for another trajectory class, refused.
+    ChangeRefused {
+        stamp_nanos: i64,
+        requested: TrajectoryClass,
+        reason: String,
+    },
+    CameraDegraded {
+        stamp_nanos: i64,
+        camera: String,
+        why: String,
+    },
+    CameraRestored {
+        stamp_nanos: i64,
+        camera: String,
+    },
+    RobotCommandSent {
+        stamp_nanos: i64,
+        command: RobotCommand,
+    },
+    Warning(WarningEvent),
+    /// One fused frame (for recording and displays).
+    Frame {
+        stamp_nanos: i64,
+        skeleton: Skeleton3,
+        assessment: Option<FrameAssessment>,
+    },
+}
+
+/// Thresholds of the session. Times in integer nanoseconds, distances in metres.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SessionConfig {
+    /// A camera whose last view arrived longer ago than this is stale (degraded, reported).
+    pub camera_stale_nanos: i64,
+    /// The robot is held when the newest fused frame is older than this (the stated bound).
+    pub max_frame_age_nanos: i64,
+    /// A view "sees the operator" with at least this many landmarks.
+    pub min_view_landmarks: usize,
+    /// The operator is tracked when the fused skeleton has at least this many landmarks.
+    pub min_tracked_landmarks: usize,
+    /// Tracking must be back this long before a held robot resumes.
+    pub resume_after_nanos: i64,
+    /// An operator lost from view farther than this from the station (horizontally) has left the
+    /// cell; lost nearer, it is a tracking loss (the robot is held).
+    pub exit_radius_m: f64,
+    /// Station position in the world (x, y), metres.
+    pub station_xy_m: [f64; 2],
+    /// Joint tolerance for "the robot is at the trajectory's start / end", radians.
+    pub at_knot_tolerance_rad: f64,
+    /// Frame assembly: stamps this close are one instant.
+    pub assembly_tolerance_nanos: i64,
+    /// Frame assembly: how long a frame waits for missing cameras.
+    pub assembly_max_wait_nanos: i64,
+}
+
+impl Default for SessionConfig {
+    fn default() -> Self {
+        Self {
+            camera_stale_nanos: 500_000_000,
+            max_frame_age_nanos: 500_000_000,
+            min_view_landmarks: 10,
+            min_tracked_landmarks: 20,
+            resume_after_nanos: 500_000_000,
+            exit_radius_m: 1.0,
+            station_xy_m: [0.0, 0.0],
+            at_knot_tolerance_rad: 0.01,
+            assembly_tolerance_nanos: 40_000_000,
+            assembly_max_wait_nanos: 60_000_000,
+        }
+    }
+}
+
+/// Camera landmarks in: whatever arrived by `now_nanos`.
+pub trait LandmarkSource {
+    /// The views that arrived since the last poll, or `None` once the source has ended.
+    fn poll(&mut self, now_nanos: i64) -> Result<Option<Vec<View2>>, BackendError>;
+}
+
+/// Robot commands out, joint positions in.
+pub trait RobotSink {
+    /// Sends a command to the controller.
+    fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError>;
+    /// The robot's joint positions in the order of `names` (from `/joint_states`, mapped by name);
+    /// `None` if unknown.
+    fn joint_positions(&mut self, now_nanos: i64, names: &[String]) -> Option<Vec<f64>>;
+}
+
+/// Verified trajectories: every call re-reads and re-verifies the lock and its approval.
+pub trait TrajectoryProvider {
+    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, String>;
+}
+
+/// A backend (source or sink) failed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{backend}: {reason}")]
+pub struct BackendError {
+    pub backend: &'static str,
+    pub reason: String,
+}
+
+/// The trajectory class a height class selects.
+pub fn trajectory_class(class: HeightClass) -> TrajectoryClass {
+    match class {
+        HeightClass::C1 => TrajectoryClass::C1,
+        HeightClass::C2 => TrajectoryClass::C2,
+        HeightClass::C3 => TrajectoryClass::C3,
+    }
+}
+
+/// The locked trajectory as a `JointTrajectory` message, for one leg.
+pub fn trajectory_message(approved: &ApprovedTrajectory, leg: Leg) -> JointTrajectory {
+    let points = approved.points();
+    let total_s = points.last().map_or(0.0, |p| p.time_s);
+    let convert =
+        |p: &ergocell_robot::lock::LockPoint, time_s: f64, sign: f64| JointTrajectoryPoint {
+            positions: p.positions_rad.clone(),
+            velocities: p.velocities_rad_s.iter().map(|v| sign * v).collect(),
+            accelerations: p.accelerations_rad_s2.clone(),
+            effort: Vec::new(),
+            time_from_start: Duration::from_secs_f64(time_s),
+        };
+    let points = match leg {
+        Leg::ToHandover => points.iter().map(|p| convert(p, p.time_s, 1.0)).collect(),
+        Leg::ToHome => points
+            .iter()
+            .rev()
+            .map(|p| convert(p, total_s - p.time_s, -1.0))
+            .collect(),
+    };
+    JointTrajectory {
+        header: Header::default(),
+        joint_names: approved.joint_names().to_vec(),
+        points,
+    }
+}

@@ -1,0 +1,123 @@
+//! Trajectories from the files: `config/cell.toml`, the URDF, `trajectories/<class>.toml`, its lock
+//! file and its approvals. Every [`TrajectoryProvider::verify`] call re-reads and re-verifies them all,
+//! so a file changed during a session is noticed before the robot resumes.
+
+use std::path::{Path, PathBuf};
+
+use ergocell_robot::lock::{self, ApprovalsFile, VerifyInputs};
+use ergocell_robot::{ApprovedTrajectory, CellConfig, InputHashes, RobotModel, TrajectoryClass};
+
+use super::TrajectoryProvider;
+
+/// Reads and verifies the locked trajectories.
+#[derive(Debug, Clone)]
+pub struct FileTrajectories {
+    cell_path: PathBuf,
+    trajectories_dir: PathBuf,
+    approvals_dir: PathBuf,
+}
+
+impl FileTrajectories {
+    /// `approvals_dir` holds `<class>.toml` approvals (normally `<trajectories_dir>/approvals`).
+    pub fn new(cell_path: &Path, trajectories_dir: &Path, approvals_dir: &Path) -> Self {
+        Self {
+            cell_path: cell_path.to_owned(),
+            trajectories_dir: trajectories_dir.to_owned(),
+            approvals_dir: approvals_dir.to_owned(),
+        }
+    }
+
+    fn read(path: &Path) -> Result<String, String> {
+        std::fs::read_to_string(path).map_err(|e| format!("cannot read {}: {e}", path.display()))
+    }
+
+    fn lock_path(&self, class: TrajectoryClass) -> PathBuf {
+        self.trajectories_dir
+            .join("locks")
+            .join(format!("{class}.lock.toml"))
+    }
+
+    /// Reads the cell, the URDF and the class's trajectory file: the model and the current hashes.
+    fn current(&self, class: TrajectoryClass) -> Result<(RobotModel, InputHashes), String> {
+        let cell_text = Self::read(&self.cell_path)?;
+        let cell = CellConfig::from_toml_str(&cell_text)
+            .map_err(|e| format!("{}: {e}", self.cell_path.display()))?;
+        let urdf_path = self
+            .cell_path
+            .parent()
+            .unwrap_or_else(|| Path::new("."))
+            .join(&cell.robot.urdf);
+        let urdf_text = Self::read(&urdf_path)?;
+        let model =
+            RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
+                .map_err(|e| format!("{}: {e}", urdf_path.display()))?;
+        let spec_text = Self::read(&self.trajectories_dir.join(format!("{class}.toml")))?;
+        let hashes = InputHashes::new(
+            spec_text.as_bytes(),
+            urdf_text.as_bytes(),
+            &cell,
+            env!("CARGO_PKG_VERSION"),
+        );
+        Ok((model, hashes))
+    }
+
+    /// Writes a **demo** approval of the class's current lock into `self.approvals_dir` (which must
+    /// not be the repository's `trajectories/approvals/`): integrity is verified first, exactly as
+    /// `ergocell trajectories approve` does, and the approver is named as a demo.
+    pub fn approve_for_demo(
+        &self,
+        class: TrajectoryClass,
+        stamp_utc: &str,
+    ) -> Result<String, String> {
+        if self.approvals_dir.ends_with("trajectories/approvals") {
+            return Err(format!(
+                "refusing to write a demo approval into {}: demo approvals live in a temporary folder",
+                self.approvals_dir.display()
+            ));
+        }
+        let (model, hashes) = self.current(class)?;
+        let lock_text = Self::read(&self.lock_path(class))?;
+        let inputs = VerifyInputs {
+            class,
+            lock_toml: &lock_text,
+            current_inputs: &hashes,
+            model: &model,
+            approvals_toml: None,
+        };
+        let lock = lock::verify_integrity(&inputs).map_err(|f| f.to_string())?;
+        let mut file = ApprovalsFile::default();
+        file.approve(
+            &lock,
+            "DEMO APPROVAL (ergocell demo, simulator only; not a safety engineer's sign-off)",
+            stamp_utc,
+        )
+        .map_err(|e| e.to_string())?;
+        let text = file.to_toml().map_err(|e| e.to_string())?;
+        std::fs::create_dir_all(&self.approvals_dir)
+            .map_err(|e| format!("cannot create {}: {e}", self.approvals_dir.display()))?;
+        let path = self.approvals_dir.join(format!("{class}.toml"));
+        let text = format!(
+            "# DEMO APPROVAL written by `ergocell demo` for the simulator. Not a safety sign-off;\n\
+             # never copy into trajectories/approvals/.\n{text}"
+        );
+        std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        Ok(lock.lock_sha256)
+    }
+}
+
+impl TrajectoryProvider for FileTrajectories {
+    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, String> {
+        let (model, hashes) = self.current(class)?;
+        let lock_text = Self::read(&self.lock_path(class))?;
+        let approvals =
+            std::fs::read_to_string(self.approvals_dir.join(format!("{class}.toml"))).ok();
+        let inputs = VerifyInputs {
+            class,
+            lock_toml: &lock_text,
+            current_inputs: &hashes,
+            model: &model,
+            approvals_toml: approvals.as_deref(),
+        };
+        lock::verify(&inputs).map_err(|f| f.to_string())
+    }
+}

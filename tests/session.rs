@@ -1,0 +1,393 @@
+//! The session state machine on the simulator with an injected clock: every transition and every
+//! message sent to the robot, for a whole session with a refused change request, one camera dropped
+//! (degraded), all cameras dropped (held), recovery and the session's end; plus Ctrl-C, an unapproved
+//! lock, and a hold in mid-motion that must not resume on its own.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::path::{Path, PathBuf};
+
+use ergocell::session::dummy::DummyRobot;
+use ergocell::session::provider::FileTrajectories;
+use ergocell::session::{
+    LandmarkSource, Leg, RobotCommand, SessionConfig, SessionEvent, SessionMachine, SessionState,
+    TrajectoryProvider,
+};
+use ergocell_perception::rig_file::parse_rig;
+use ergocell_perception::{CameraRig, View2};
+use ergocell_robot::TrajectoryClass;
+use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
+use nalgebra::Point3;
+
+const PERIOD: i64 = 100_000_000;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn rig() -> CameraRig {
+    let text = std::fs::read_to_string(root().join("config/rig.toml")).unwrap();
+    parse_rig(&text, "config/rig.toml").unwrap().0
+}
+
+/// A provider on the repository's files with a demo approval of `approve` in a fresh temp folder.
+fn provider(name: &str, approve: Option<TrajectoryClass>) -> FileTrajectories {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("session-{name}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let p = FileTrajectories::new(
+        &root().join("config/cell.toml"),
+        &root().join("trajectories"),
+        &dir,
+    );
+    if let Some(class) = approve {
+        p.approve_for_demo(class, "2026-01-01T00:00:00Z").unwrap();
+    }
+    p
+}
+
+fn simulation(cycles: usize) -> Simulation {
+    // c2's handover point (trajectories/locks/c2.lock.toml, station frame = world here).
+    let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.055));
+    script.cycles = cycles;
+    Simulation::new(
+        rig(),
+        Operator::new(1.75).unwrap(),
+        script,
+        SimConfig::new(7),
+    )
+    .unwrap()
+}
+
+/// The c2 trajectory's home (first point) and joint names.
+fn home() -> (Vec<String>, Vec<f64>) {
+    let approved = provider("home", Some(TrajectoryClass::C2))
+        .verify(TrajectoryClass::C2)
+        .unwrap();
+    (
+        approved.joint_names().to_vec(),
+        approved.points()[0].positions_rad.clone(),
+    )
+}
+
+struct Run {
+    machine: SessionMachine,
+    robot: DummyRobot,
+    sim: Simulation,
+    events: Vec<SessionEvent>,
+    now: i64,
+    sim_done: bool,
+}
+
+impl Run {
+    fn new(name: &str, approve: Option<TrajectoryClass>, cycles: usize) -> Self {
+        let (names, home) = home();
+        Self {
+            machine: SessionMachine::new(
+                rig(),
+                SessionConfig::default(),
+                Box::new(provider(name, approve)),
+            )
+            .unwrap(),
+            robot: DummyRobot::new(names, home),
+            sim: simulation(cycles),
+            events: Vec::new(),
+            now: 0,
+            sim_done: false,
+        }
+    }
+
+    /// One 100 ms step of the injected clock; `keep` filters the cameras' views (faults).
+    fn step(&mut self, keep: &dyn Fn(&View2) -> bool) {
+        let views: Vec<View2> = if self.sim_done {
+            Vec::new()
+        } else {
+            match self.sim.step().unwrap() {
+                Some(tick) => {
+                    assert_eq!(tick.frame.stamp_nanos, self.now, "sim and clock agree");
+                    tick.frame.views.into_iter().filter(|v| keep(v)).collect()
+                }
+                None => {
+                    self.sim_done = true;
+                    Vec::new()
+                }
+            }
+        };
+        let ev = self.machine.step(self.now, views, &mut self.robot);
+        self.events.extend(ev);
+        self.now += PERIOD;
+    }
+
+    fn run_until(&mut self, limit_nanos: i64, stop: &dyn Fn(&SessionMachine) -> bool) {
+        while self.now <= limit_nanos && !stop(&self.machine) {
+            self.step(&|_| true);
+        }
+    }
+
+    fn transitions(&self) -> Vec<SessionState> {
+        self.events
+            .iter()
+            .filter_map(|e| match e {
+                SessionEvent::StateChanged { to, .. } => Some(*to),
+                _ => None,
+            })
+            .collect()
+    }
+
+    fn first_stamp(&self, f: impl Fn(&SessionEvent) -> bool) -> Option<i64> {
+        self.events.iter().find(|e| f(e)).map(|e| match e {
+            SessionEvent::StateChanged { stamp_nanos, .. }
+            | SessionEvent::CameraDegraded { stamp_nanos, .. }
+            | SessionEvent::CameraRestored { stamp_nanos, .. }
+            | SessionEvent::ClassDecided { stamp_nanos, .. }
+            | SessionEvent::TrajectoryLocked { stamp_nanos, .. }
+            | SessionEvent::ChangeRefused { stamp_nanos, .. }
+            | SessionEvent::RobotCommandSent { stamp_nanos, .. }
+            | SessionEvent::Frame { stamp_nanos, .. } => *stamp_nanos,
+            SessionEvent::Warning(w) => w.stamp_nanos,
+        })
+    }
+}
+
+#[test]
+fn whole_session_with_refused_change_degrade_hold_recovery_and_end() {
+    let mut run = Run::new("whole", Some(TrajectoryClass::C2), 3);
+
+    // Walk in, measure, decide, verify, lock, start working.
+    run.run_until(12_000_000_000, &|m| m.state() == SessionState::Working);
+    assert_eq!(run.machine.state(), SessionState::Working);
+    assert_eq!(
+        run.transitions(),
+        [
+            SessionState::MeasuringHeight,
+            SessionState::ClassDecided,
+            SessionState::TrajectoryLocked,
+            SessionState::Working
+        ]
+    );
+    let decided = run
+        .events
+        .iter()
+        .find_map(|e| match e {
+            SessionEvent::ClassDecided {
+                height_m, class, ..
+            } => Some((*height_m, *class)),
+            _ => None,
+        })
+        .unwrap();
+    assert_eq!(decided.1, ergocell_ergonomics::HeightClass::C2);
+    assert!((decided.0 - 1.75).abs() < 0.05, "height {}", decided.0);
+    let sha = run.machine.lock_sha256().unwrap().to_owned();
+    assert!(run.events.iter().any(|e| matches!(e,
+        SessionEvent::TrajectoryLocked { class: TrajectoryClass::C2, lock_sha256, .. } if *lock_sha256 == sha)));
+    // Exactly one command so far: the locked trajectory, home → handover, as locked.
+    assert_eq!(run.robot.received.len(), 1);
+    match &run.robot.received[0].1 {
+        RobotCommand::Execute {
+            leg: Leg::ToHandover,
+            lock_sha256,
+            trajectory,
+        } => {
+            assert_eq!(*lock_sha256, sha);
+            assert_eq!(trajectory.points.len(), 100);
+            assert_eq!(trajectory.joint_names[0], "joint_1");
+        }
+        other => panic!("expected the locked trajectory, got {other:?}"),
+    }
+    let t_work = run.now - PERIOD;
+
+    // A mid-session change request is refused, logged, and sends nothing to the robot.
+    let refused = run.machine.request_class(run.now, TrajectoryClass::C3);
+    assert!(
+        matches!(&refused, SessionEvent::ChangeRefused { requested: TrajectoryClass::C3, reason, .. } if reason.contains("c2")),
+        "{refused:?}"
+    );
+    assert_eq!(run.robot.received.len(), 1);
+    assert_eq!(run.machine.lock_sha256(), Some(sha.as_str()));
+
+    // Let the robot reach the handover point (5 s trajectory).
+    run.run_until(t_work + 5_500_000_000, &|_| false);
+    assert_eq!(run.machine.state(), SessionState::Working);
+
+    // One camera (s1_left) silent for 1 s: degraded and reported, fusion goes on, no hold.
+    let t0 = run.now;
+    while run.now < t0 + 1_000_000_000 {
+        run.step(&|v| v.camera != 0);
+    }
+    assert!(run
+        .events
+        .iter()
+        .any(|e| matches!(e, SessionEvent::CameraDegraded { camera, .. } if camera == "s1_left")));
+    assert_eq!(run.machine.state(), SessionState::Working);
+    assert_eq!(
+        run.robot.received.len(),
+        1,
+        "a degraded camera does not stop the robot"
+    );
+    run.run_until(t0 + 1_500_000_000, &|_| false);
+    assert!(run
+        .events
+        .iter()
+        .any(|e| matches!(e, SessionEvent::CameraRestored { camera, .. } if camera == "s1_left")));
+
+    // Every camera silent for 1.2 s: held (goal cancelled), with the reason.
+    let t1 = run.now;
+    while run.now < t1 + 1_200_000_000 {
+        run.step(&|_| false);
+    }
+    assert_eq!(run.machine.state(), SessionState::Held);
+    assert_eq!(run.robot.received.len(), 2);
+    let (held_at, hold) = &run.robot.received[1];
+    assert!(
+        matches!(hold, RobotCommand::Hold { reason } if reason.contains("older than") || reason.contains("stereo pair"))
+    );
+    assert!(
+        *held_at <= t1 + 700_000_000,
+        "held within the 500 ms bound plus one step"
+    );
+    assert!(run.machine.hold_reason().is_some());
+
+    // Cameras back: resumes after the 500 ms of tracking, with the lock re-verified; the robot is at
+    // the handover point, so nothing new is sent.
+    run.run_until(t1 + 3_000_000_000, &|m| m.state() == SessionState::Working);
+    assert_eq!(run.machine.state(), SessionState::Working);
+    assert_eq!(run.robot.received.len(), 2);
+    assert!(run.machine.hold_reason().is_none());
+
+    // The operator finishes the cycles and walks out; the robot goes home; the session ends.
+    run.run_until(60_000_000_000, &|m| m.state() == SessionState::SessionEnded);
+    assert_eq!(run.machine.state(), SessionState::SessionEnded);
+    assert_eq!(run.robot.received.len(), 3);
+    match &run.robot.received[2].1 {
+        RobotCommand::Execute {
+            leg: Leg::ToHome,
+            lock_sha256,
+            trajectory,
+        } => {
+            assert_eq!(*lock_sha256, sha);
+            let first = &trajectory.points[0];
+            assert_eq!(first.time_from_start.as_secs_f64(), 0.0);
+            assert!(first.velocities.iter().all(|v| *v == 0.0));
+        }
+        other => panic!("expected the way home, got {other:?}"),
+    }
+    assert_eq!(
+        run.transitions(),
+        [
+            SessionState::MeasuringHeight,
+            SessionState::ClassDecided,
+            SessionState::TrajectoryLocked,
+            SessionState::Working,
+            SessionState::Held,
+            SessionState::Working,
+            SessionState::SessionEnded
+        ]
+    );
+    let s = run.machine.summary();
+    assert!(s.ended);
+    assert_eq!((s.holds, s.changes_refused), (1, 1));
+    assert!(s.camera_degradations >= 1);
+    // RULA ran on every tracked frame.
+    let assessed = run
+        .events
+        .iter()
+        .filter(|e| {
+            matches!(
+                e,
+                SessionEvent::Frame {
+                    assessment: Some(_),
+                    ..
+                }
+            )
+        })
+        .count();
+    assert!(assessed > 150, "{assessed} assessed frames");
+    // The recorded session ends at home.
+    let (names, home) = home();
+    let at_end = {
+        let mut r = run.robot.clone();
+        ergocell::session::RobotSink::joint_positions(&mut r, run.now, &names).unwrap()
+    };
+    for (a, b) in at_end.iter().zip(&home) {
+        assert!((a - b).abs() < 1e-9);
+    }
+    // Frames were tracked before the lock and after it.
+    let first_frame = run
+        .first_stamp(|e| matches!(e, SessionEvent::Frame { .. }))
+        .unwrap();
+    assert!(first_frame < t_work);
+}
+
+#[test]
+fn ctrl_c_holds_the_robot_and_ends_the_session() {
+    let mut run = Run::new("ctrlc", Some(TrajectoryClass::C2), 1);
+    run.run_until(12_000_000_000, &|m| m.state() == SessionState::Working);
+    assert_eq!(run.machine.state(), SessionState::Working);
+    run.run_until(run.now + 1_000_000_000, &|_| false);
+    let ev = run.machine.shutdown(run.now, &mut run.robot, "Ctrl-C");
+    assert!(matches!(
+        ev.last(),
+        Some(SessionEvent::StateChanged {
+            to: SessionState::SessionEnded,
+            ..
+        })
+    ));
+    assert!(matches!(
+        run.robot.received.last(),
+        Some((_, RobotCommand::Hold { reason })) if reason.contains("Ctrl-C")
+    ));
+    // Nothing moves after the end.
+    let n = run.robot.received.len();
+    run.run_until(run.now + 2_000_000_000, &|_| false);
+    assert_eq!(run.robot.received.len(), n);
+}
+
+#[test]
+fn an_unapproved_lock_never_moves_the_robot() {
+    let mut run = Run::new("unapproved", None, 1);
+    run.run_until(12_000_000_000, &|m| m.state() == SessionState::SessionEnded);
+    assert_eq!(run.machine.state(), SessionState::SessionEnded);
+    assert!(run
+        .robot
+        .received
+        .iter()
+        .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
+    assert!(run.machine.summary().end_reason.contains("not verified"));
+    assert!(run.machine.lock_sha256().is_none());
+}
+
+#[test]
+fn a_hold_in_mid_motion_does_not_resume_by_itself() {
+    let mut run = Run::new("midmotion", Some(TrajectoryClass::C2), 3);
+    run.run_until(12_000_000_000, &|m| m.state() == SessionState::Working);
+    // 2 s into the 5 s trajectory, every camera goes silent.
+    run.run_until(run.now + 2_000_000_000, &|_| false);
+    let t = run.now;
+    while run.now < t + 1_000_000_000 {
+        run.step(&|_| false);
+    }
+    assert_eq!(run.machine.state(), SessionState::Held);
+    // Tracking back for 2 s: still held, and the reason says why.
+    run.run_until(run.now + 2_000_000_000, &|_| false);
+    assert_eq!(run.machine.state(), SessionState::Held);
+    assert!(run.machine.hold_reason().unwrap().contains("between"));
+    assert_eq!(run.robot.received.len(), 2, "no command after the hold");
+}
+
+#[test]
+fn views_round_trip_through_the_camera_message() {
+    let rig = rig();
+    let mut sim = simulation(1);
+    let tick = (0..60).filter_map(|_| sim.step().unwrap()).last().unwrap();
+    for v in &tick.frame.views {
+        let m = ergocell::recording::landmarks_message(&rig, v);
+        let back = ergocell::recording::view_from_message(&rig, &m).unwrap();
+        assert_eq!(back.camera, v.camera);
+        assert_eq!(back.observed_count(), v.observed_count());
+        for (a, b) in back.keypoints().iter().zip(v.keypoints()) {
+            if let (Some(a), Some(b)) = (a, b) {
+                assert!((a.pixel() - b.pixel()).norm() < 1e-3);
+            }
+        }
+    }
+    let mut source = ergocell::session::dummy::ScriptedSource::default();
+    assert!(source.poll(0).unwrap().is_none());
+}
