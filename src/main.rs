@@ -20,6 +20,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// The whole cell in one process on the simulator (no ROS): operator, height, locked trajectory, RULA, recording.
+    Demo(commands::demo::Args),
     /// Triangulate and fuse 2D detections from calibrated cameras into 3D landmarks.
     Triangulate(commands::triangulate::Args),
     /// RULA: score worksheets (`score`) or every frame of a 3D landmark recording (`track`).
@@ -41,6 +43,7 @@ fn main() -> std::process::ExitCode {
         .with_writer(std::io::stderr)
         .init();
     let result = match cli.command {
+        Command::Demo(args) => commands::demo::run(&args),
         Command::Triangulate(args) => commands::triangulate::run(&args),
         Command::Rula(args) => commands::rula::run(&args),
         Command::Height(args) => commands::height::run(&args),

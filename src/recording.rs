@@ -166,20 +166,17 @@ pub fn landmarks_message(rig: &CameraRig, view: &View2) -> CameraLandmarks {
         return m;
     }
     for k in view.keypoints() {
-        match k {
-            Some(k) => {
-                let p = k.pixel();
-                m.x_px.push(p.x as f32);
-                m.y_px.push(p.y as f32);
-                m.visibility.push(k.confidence() as f32);
-                m.presence.push(1.0);
-            }
-            None => {
-                m.x_px.push(f32::NAN);
-                m.y_px.push(f32::NAN);
-                m.visibility.push(0.0);
-                m.presence.push(0.0);
-            }
+        if let Some(k) = k {
+            let p = k.pixel();
+            m.x_px.push(p.x as f32);
+            m.y_px.push(p.y as f32);
+            m.visibility.push(k.confidence() as f32);
+            m.presence.push(1.0);
+        } else {
+            m.x_px.push(f32::NAN);
+            m.y_px.push(f32::NAN);
+            m.visibility.push(0.0);
+            m.presence.push(0.0);
         }
     }
     m
@@ -279,5 +276,120 @@ pub fn warning_message(w: &WarningEvent) -> PostureWarning {
         action_level: w.action_level,
         uncertain: w.uncertain,
         message: w.message.clone(),
+    }
+}
+
+/// The session state message of `machine` now.
+pub fn session_state_message(
+    machine: &crate::session::SessionMachine,
+    stamp_nanos: i64,
+    reason: &str,
+) -> ergocell_bridge::msg::SessionState {
+    let estimate = machine.decision().map(|d| &d.estimate);
+    ergocell_bridge::msg::SessionState {
+        header: Header::new(stamp_nanos, "world"),
+        state: machine.state().name().to_owned(),
+        reason: reason.to_owned(),
+        height_m: estimate.map_or(f64::NAN, |e| e.height_m),
+        height_uncertainty_m: estimate.map_or(f64::NAN, |e| e.uncertainty_m),
+        height_class: machine
+            .decision()
+            .map_or(String::new(), |d| d.class.name().to_owned()),
+        trajectory_sha256: machine.lock_sha256().unwrap_or_default().to_owned(),
+        robot_held: machine.hold_reason().is_some(),
+        cameras_fresh: u32::try_from(machine.cameras_fresh()).unwrap_or(u32::MAX),
+        stereo_pairs_tracking: u32::try_from(machine.pairs_tracking()).unwrap_or(u32::MAX),
+    }
+}
+
+/// Records a step's events: state changes, RULA state, warnings and robot commands.
+pub fn record_events(
+    rec: &mut McapRecorder,
+    machine: &crate::session::SessionMachine,
+    now_nanos: i64,
+    events: &[crate::session::SessionEvent],
+) -> Result<(), RecordingError> {
+    use crate::session::SessionEvent as E;
+    for e in events {
+        match e {
+            E::StateChanged { reason, .. } => rec.write(
+                topics::SESSION_STATE,
+                now_nanos,
+                &session_state_message(machine, now_nanos, reason),
+            )?,
+            E::ClassDecided { .. }
+            | E::TrajectoryLocked { .. }
+            | E::ChangeRefused { .. }
+            | E::CameraDegraded { .. }
+            | E::CameraRestored { .. } => rec.write(
+                topics::SESSION_STATE,
+                now_nanos,
+                &session_state_message(machine, now_nanos, &describe(e)),
+            )?,
+            E::RobotCommandSent { command, .. } => rec.write(
+                topics::JOINT_TRAJECTORY,
+                now_nanos,
+                &command.to_message(now_nanos),
+            )?,
+            E::Warning(w) => rec.write(topics::WARNINGS, now_nanos, &warning_message(w))?,
+            E::Frame {
+                assessment: Some(a),
+                ..
+            } => rec.write(topics::ERGONOMICS, now_nanos, &ergonomic_message(a))?,
+            E::Frame {
+                assessment: None, ..
+            } => {}
+        }
+    }
+    Ok(())
+}
+
+/// One line for a person reading the terminal or the log.
+pub fn describe(e: &crate::session::SessionEvent) -> String {
+    use crate::session::{RobotCommand, SessionEvent as E};
+    match e {
+        E::StateChanged {
+            from, to, reason, ..
+        } => format!("state {from} → {to}: {reason}"),
+        E::ClassDecided {
+            height_m,
+            uncertainty_m,
+            class,
+            ..
+        } => format!(
+            "height measured {height_m:.3} ± {uncertainty_m:.3} m → class {}",
+            class.name()
+        ),
+        E::TrajectoryLocked {
+            class,
+            lock_sha256,
+            approved_by,
+            ..
+        } => format!(
+            "trajectory {class} validated, verified and locked: sha256 {lock_sha256} (approved by {})",
+            approved_by.join(", ")
+        ),
+        E::ChangeRefused {
+            requested, reason, ..
+        } => format!("change to {requested} refused: {reason}"),
+        E::CameraDegraded { camera, why, .. } => format!("camera {camera} degraded: {why}"),
+        E::CameraRestored { camera, .. } => format!("camera {camera} restored"),
+        E::RobotCommandSent { command, .. } => match command {
+            RobotCommand::Execute {
+                leg, trajectory, ..
+            } => format!(
+                "robot ← trajectory {leg:?} ({} points, {:.1} s)",
+                trajectory.points.len(),
+                trajectory
+                    .points
+                    .last()
+                    .map_or(0.0, |p| p.time_from_start.as_secs_f64())
+            ),
+            RobotCommand::Hold { reason } => {
+                format!("robot ← HOLD (goal cancelled, not an e-stop): {reason}")
+            }
+        },
+        E::Warning(w) => format!("RULA warning: {}", w.message),
+        E::Frame { .. } => "frame".to_owned(),
     }
 }

@@ -97,19 +97,17 @@ impl Run {
 
     /// One 100 ms step of the injected clock; `keep` filters the cameras' views (faults).
     fn step(&mut self, keep: &dyn Fn(&View2) -> bool) {
-        let views: Vec<View2> = if self.sim_done {
-            Vec::new()
+        let tick = if self.sim_done {
+            None
         } else {
-            match self.sim.step().unwrap() {
-                Some(tick) => {
-                    assert_eq!(tick.frame.stamp_nanos, self.now, "sim and clock agree");
-                    tick.frame.views.into_iter().filter(|v| keep(v)).collect()
-                }
-                None => {
-                    self.sim_done = true;
-                    Vec::new()
-                }
-            }
+            self.sim.step().unwrap()
+        };
+        let views: Vec<View2> = if let Some(tick) = tick {
+            assert_eq!(tick.frame.stamp_nanos, self.now, "sim and clock agree");
+            tick.frame.views.into_iter().filter(|v| keep(v)).collect()
+        } else {
+            self.sim_done = true;
+            Vec::new()
         };
         let ev = self.machine.step(self.now, views, &mut self.robot);
         self.events.extend(ev);

@@ -370,8 +370,8 @@ impl SessionMachine {
         };
         events.push(SessionEvent::Frame {
             stamp_nanos: filtered.stamp_nanos,
-            skeleton: filtered,
-            assessment,
+            skeleton: Box::new(filtered),
+            assessment: assessment.map(Box::new),
         });
     }
 

@@ -152,8 +152,8 @@ pub enum SessionEvent {
     /// One fused frame (for recording and displays).
     Frame {
         stamp_nanos: i64,
-        skeleton: Skeleton3,
-        assessment: Option<FrameAssessment>,
+        skeleton: Box<Skeleton3>,
+        assessment: Option<Box<FrameAssessment>>,
     },
 }
 

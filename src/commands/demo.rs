@@ -1,0 +1,339 @@
+//! `ergocell demo`: a whole simulated session in one process, no ROS needed.
+//!
+//! The digital twin (`ergocell_sim`) plays an operator who walks in, stands, does handover cycles and
+//! walks out, seen by the reference cell's six cameras (`config/rig.toml`) with pose-estimator noise.
+//! The real session state machine fuses the views, measures the height, decides the class, verifies
+//! and locks the class's trajectory and runs RULA; a simulated controller follows the trajectory.
+//! Two faults are injected while working (one camera silent, then every camera) to show the degrade
+//! and the hold. The session is recorded to MCAP (Foxglove, rosbag2).
+//!
+//! The shipped locks carry no approvals (a person signs them off on site), so the demo approves the
+//! current locks in a **temporary** folder, labelled as a demo approval; `trajectories/approvals/` is
+//! never written.
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+use anyhow::Context as _;
+use ergocell::recording::{self, topics, McapRecorder};
+use ergocell::session::dummy::DummyRobot;
+use ergocell::session::provider::FileTrajectories;
+use ergocell::session::{
+    trajectory_class, RobotSink, SessionConfig, SessionEvent, SessionMachine, SessionState,
+};
+use ergocell_bridge::msg::{Header, JointState};
+use ergocell_ergonomics::height::ClassThresholds;
+use ergocell_ergonomics::HeightClass;
+use ergocell_perception::rig_file::parse_rig;
+use ergocell_perception::View2;
+use ergocell_robot::{LockFile, TrajectoryClass};
+use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
+use nalgebra::Point3;
+
+use super::UsageError;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Camera rig (ergocell rig TOML).
+    #[arg(long, default_value = "config/rig.toml")]
+    pub rig: PathBuf,
+    /// Cell configuration (`[robot]`, `[station]`).
+    #[arg(long, default_value = "config/cell.toml")]
+    pub cell: PathBuf,
+    /// Folder of the trajectory files and `locks/`.
+    #[arg(long, default_value = "trajectories")]
+    pub trajectories: PathBuf,
+    /// The simulated operator's stature, metres.
+    #[arg(long, default_value_t = 1.75)]
+    pub stature_m: f64,
+    /// Handover cycles.
+    #[arg(long, default_value_t = 3)]
+    pub cycles: usize,
+    /// Simulation seed (same seed, same session).
+    #[arg(long, default_value_t = 42)]
+    pub seed: u64,
+    /// The MCAP recording to write.
+    #[arg(long, default_value = "ergocell-demo.mcap")]
+    pub out: PathBuf,
+    /// Do not inject the camera faults.
+    #[arg(long)]
+    pub no_faults: bool,
+}
+
+const PERIOD_NANOS: i64 = 100_000_000;
+
+/// Wall-clock time at the binary's clock boundary (the session itself runs on the simulator's clock).
+#[allow(clippy::disallowed_methods)]
+fn wall_clock_nanos() -> i64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| i64::try_from(d.as_nanos()).unwrap_or(i64::MAX))
+}
+
+/// Sets the flag on Ctrl-C (a thread with a small tokio runtime waiting for the signal).
+fn ctrl_c_flag() -> Arc<AtomicBool> {
+    let flag = Arc::new(AtomicBool::new(false));
+    let f = flag.clone();
+    std::thread::spawn(move || {
+        let Ok(rt) = tokio::runtime::Builder::new_current_thread()
+            .enable_all()
+            .build()
+        else {
+            return;
+        };
+        if rt.block_on(tokio::signal::ctrl_c()).is_ok() {
+            f.store(true, Ordering::SeqCst);
+        }
+    });
+    flag
+}
+
+fn secs(t: i64, start: i64) -> f64 {
+    (t - start) as f64 * 1e-9
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    if !(1.3..=2.2).contains(&args.stature_m) {
+        return Err(UsageError(format!(
+            "--stature-m {} is outside 1.3..=2.2 m",
+            args.stature_m
+        ))
+        .into());
+    }
+    let rig_text = std::fs::read_to_string(&args.rig)
+        .with_context(|| format!("cannot read {}", args.rig.display()))?;
+    let (rig, _) = parse_rig(&rig_text, &args.rig.display().to_string())
+        .map_err(|e| UsageError(e.to_string()))?;
+
+    // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
+    let approvals_dir = std::env::temp_dir()
+        .join(format!("ergocell-demo-{}", std::process::id()))
+        .join("approvals");
+    let provider = FileTrajectories::new(&args.cell, &args.trajectories, &approvals_dir);
+    let start = wall_clock_nanos();
+    println!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
+    println!(
+        "  DEMO APPROVAL: the shipped locks are approved for this run only, in {}",
+        approvals_dir.display()
+    );
+    println!("  (a simulator-only sign-off; a real cell needs a safety engineer's `ergocell trajectories approve`)");
+    for class in TrajectoryClass::ALL {
+        provider
+            .approve_for_demo(
+                class,
+                &format!("demo run at unix {}s", start / 1_000_000_000),
+            )
+            .map_err(|e| anyhow::anyhow!("{class}: {e}"))?;
+    }
+
+    // The simulated operator reaches for the handover point of their true class (the session itself
+    // measures the height and decides the class from the cameras).
+    let true_class = trajectory_class(HeightClass::of(args.stature_m, &ClassThresholds::default()));
+    let lock_path = args
+        .trajectories
+        .join("locks")
+        .join(format!("{true_class}.lock.toml"));
+    let lock_text = std::fs::read_to_string(&lock_path)
+        .with_context(|| format!("cannot read {}", lock_path.display()))?;
+    let lock = LockFile::from_toml_str(true_class, &lock_text)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", lock_path.display()))?;
+    let [hx, hy, hz] = lock.summary.handover_station_m;
+    let mut script = SessionScript::new(Point3::new(hx, hy, hz));
+    script.cycles = args.cycles;
+    let mut sim_config = SimConfig::new(args.seed);
+    sim_config.start_nanos = start;
+    let sim = Simulation::new(
+        rig.clone(),
+        Operator::new(args.stature_m)?,
+        script,
+        sim_config,
+    )?;
+    let home = lock
+        .trajectory
+        .point
+        .first()
+        .map(|p| p.positions_rad.clone())
+        .context("lock file without points")?;
+    let mut robot = DummyRobot::new(lock.trajectory.joint_names.clone(), home);
+    let mut machine =
+        SessionMachine::new(rig.clone(), SessionConfig::default(), Box::new(provider))
+            .map_err(|e| anyhow::anyhow!(e))?;
+    let mut rec = McapRecorder::create(&args.out)?;
+    println!(
+        "  operator {:.2} m, {} handover cycles, {} cameras, seed {}; recording {}",
+        args.stature_m,
+        args.cycles,
+        rig.len(),
+        args.seed,
+        args.out.display()
+    );
+    println!();
+
+    let stop = ctrl_c_flag();
+    let mut sim = sim;
+    let mut now = start;
+    let mut sim_done = false;
+    let mut working_since: Option<i64> = None;
+    let mut change_requested = false;
+    let mut last_status = start;
+    let mut interrupted = false;
+    let mut rula = "RULA -".to_owned();
+    let limit = start + 120_000_000_000;
+    while machine.state() != SessionState::SessionEnded && now <= limit {
+        if stop.load(Ordering::SeqCst) {
+            interrupted = true;
+            let events = machine.shutdown(now, &mut robot, "Ctrl-C");
+            report(&events, now, start);
+            recording::record_events(&mut rec, &machine, now, &events)?;
+            break;
+        }
+        let mut views = Vec::new();
+        if !sim_done {
+            match sim.step()? {
+                Some(tick) => views = tick.frame.views,
+                None => sim_done = true,
+            }
+        }
+        if sim_done {
+            // The script is over and the cell is empty; the cameras keep publishing "nobody".
+            views = (0..rig.len()).map(|k| View2::empty(k, now)).collect();
+        }
+        // Faults while working: s1_left silent 5.5–6.5 s after the robot starts, then every camera
+        // 7.5–8.7 s (the robot waits at the handover point by then).
+        if let (Some(w), false) = (working_since, args.no_faults) {
+            let t = now - w;
+            if (5_500_000_000..6_500_000_000).contains(&t) {
+                views.retain(|v| v.camera != 0);
+            } else if (7_500_000_000..8_700_000_000).contains(&t) {
+                views.clear();
+            }
+        }
+        for v in &views {
+            let m = recording::landmarks_message(&rig, v);
+            rec.write(&topics::camera(&m.camera_id), now, &m)?;
+        }
+        let events = machine.step(now, views, &mut robot);
+        report(&events, now, start);
+        for e in &events {
+            if let SessionEvent::Frame {
+                assessment: Some(a),
+                ..
+            } = e
+            {
+                let score = |side: Option<&ergocell_ergonomics::SideAssessment>| {
+                    side.map_or("-".to_owned(), |s| s.scores.final_score.to_string())
+                };
+                rula = format!(
+                    "RULA left {} right {} (action level {})",
+                    score(a.left.as_ref()),
+                    score(a.right.as_ref()),
+                    a.headline().map_or(0, |h| h.scores.action_level)
+                );
+            }
+        }
+        recording::record_events(&mut rec, &machine, now, &events)?;
+        if working_since.is_none() && machine.state() == SessionState::Working {
+            working_since = Some(now);
+        }
+        // A supervisor asks for another class mid-session: refused.
+        if let (Some(w), false) = (working_since, change_requested) {
+            if now - w >= 2_000_000_000 {
+                change_requested = true;
+                let other = if machine.summary().class.as_deref() == Some("c3") {
+                    TrajectoryClass::C1
+                } else {
+                    TrajectoryClass::C3
+                };
+                let e = machine.request_class(now, other);
+                report(std::slice::from_ref(&e), now, start);
+                recording::record_events(&mut rec, &machine, now, &[e])?;
+            }
+        }
+        let names = lock.trajectory.joint_names.clone();
+        if let Some(position) = robot.joint_positions(now, &names) {
+            let js = JointState {
+                header: Header::new(now, ""),
+                name: names,
+                position,
+                ..JointState::default()
+            };
+            rec.write(topics::JOINT_STATES, now, &js)?;
+        }
+        if now - last_status >= 5_000_000_000 {
+            last_status = now;
+            println!(
+                "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {rula}",
+                secs(now, start),
+                machine.state().name(),
+                machine.cameras_fresh(),
+                rig.len(),
+                machine.pairs_tracking()
+            );
+        }
+        now += PERIOD_NANOS;
+    }
+    let messages = rec.finish()?;
+    let _ = std::fs::remove_dir_all(approvals_dir.parent().unwrap_or(&approvals_dir));
+
+    let s = machine.summary();
+    println!();
+    println!("summary");
+    println!(
+        "  session:        {} after {:.1} s of simulated time",
+        machine.state(),
+        secs(now, start)
+    );
+    println!(
+        "  height:         {} (true {:.3} m) → class {}",
+        s.height_m.map_or("not measured".to_owned(), |h| format!(
+            "{h:.3} ± {:.3} m",
+            s.height_uncertainty_m.unwrap_or(f64::NAN)
+        )),
+        args.stature_m,
+        s.class.as_deref().unwrap_or("none")
+    );
+    println!(
+        "  trajectory:     {}",
+        s.lock_sha256.as_deref().unwrap_or("not locked")
+    );
+    println!(
+        "  frames:         {} fused, {} with the operator tracked",
+        s.frames_fused, s.frames_tracked
+    );
+    println!(
+        "  RULA:           {} warnings raised, worst action level {}",
+        s.warnings_raised, s.max_action_level
+    );
+    println!(
+        "  faults:         {} camera degradation(s), {} hold(s), {} change request(s) refused",
+        s.camera_degradations, s.holds, s.changes_refused
+    );
+    println!("  robot commands: {}", s.robot_commands);
+    println!("  ended:          {}", s.end_reason);
+    println!(
+        "  recording:      {} ({messages} messages; open in Foxglove or `ros2 bag info`)",
+        args.out.display()
+    );
+    if interrupted {
+        anyhow::bail!("interrupted: robot held, recording closed");
+    }
+    if !s.ended {
+        anyhow::bail!("the session did not end normally: {}", s.end_reason);
+    }
+    Ok(())
+}
+
+fn report(events: &[SessionEvent], now: i64, start: i64) {
+    for e in events {
+        if matches!(e, SessionEvent::Frame { .. }) {
+            continue;
+        }
+        if let SessionEvent::Warning(w) = e {
+            if w.kind != ergocell_ergonomics::warnings::WarningKind::Raised {
+                continue;
+            }
+        }
+        println!("  t={:5.1} s  {}", secs(now, start), recording::describe(e));
+    }
+}
