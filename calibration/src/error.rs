@@ -1,0 +1,60 @@
+//! The calibration crate's one error type: bad input and failed solves. A rejected checkerboard
+//! view is an outcome ([`crate::detect::Rejection`]), not an error.
+
+use ergocell_perception::PerceptionError;
+
+/// Everything that can go wrong in calibration, with the offending values.
+#[derive(Debug, thiserror::Error, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum CalibrationError {
+    /// The image bytes could not be decoded (not a JPEG/PNG, truncated, …).
+    #[error("cannot decode image `{name}`: {message}")]
+    Decode { name: String, message: String },
+    /// The board description is invalid, e.g. `--board 1x6` or a non-positive square size.
+    #[error("invalid board {cols}x{rows} with {square_m} m squares: {why}")]
+    BadBoard {
+        cols: usize,
+        rows: usize,
+        square_m: f64,
+        why: &'static str,
+    },
+    /// A board size string is not `COLSxROWS`.
+    #[error("board size `{0}` is not COLSxROWS (inner corners), e.g. 9x6")]
+    BadBoardSpec(String),
+    /// Fewer usable views than calibration needs.
+    #[error("{what}: {usable} usable views, at least {needed} needed")]
+    TooFewViews {
+        what: String,
+        usable: usize,
+        needed: usize,
+    },
+    /// A view's corner list does not have one point per board corner.
+    #[error("view {view}: {got} corners, the board has {expected}")]
+    CornerCount {
+        view: usize,
+        got: usize,
+        expected: usize,
+    },
+    /// Views of one camera come from images of different sizes.
+    #[error("camera `{camera}`: image {view} is {got_w}x{got_h} px, earlier images are {want_w}x{want_h} px")]
+    ImageSizeMismatch {
+        camera: String,
+        view: usize,
+        got_w: u32,
+        got_h: u32,
+        want_w: u32,
+        want_h: u32,
+    },
+    /// The closed-form initialisation found no physical camera (degenerate views: all boards parallel).
+    #[error("closed-form initialisation failed: {0}")]
+    Initialisation(String),
+    /// Rig cameras cannot be put in one frame: a camera shares no frame with the others.
+    #[error("camera `{0}` shares no checkerboard view with the rest of the rig")]
+    Disconnected(String),
+    /// The camera model rejected the estimate (non-finite or non-positive parameters).
+    #[error(transparent)]
+    Camera(#[from] PerceptionError),
+}
+
+/// Result with [`CalibrationError`].
+pub type Result<T> = std::result::Result<T, CalibrationError>;
