@@ -109,6 +109,19 @@ fn rula_track_and_height_on_a_synthetic_recording() {
     );
     assert!(stdout.contains("time share per action level"), "{stdout}");
 
+    // The JSON breakdown says which inputs were observed and which configured.
+    let (code, stdout, stderr) =
+        ergocell(&["rula", "track", "--landmarks", p, "--up", "0,1,0", "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let right = &doc["frames"][0]["right"];
+    assert_eq!(right["sources"]["upper_arm_flexion_deg"], "observed");
+    assert_eq!(right["sources"]["force_load_score_arm_wrist"], "configured");
+    assert_eq!(right["sources"]["wrist_twist"], "configured");
+    assert_eq!(right["sources"]["muscle_use_arm_wrist"], "time_series");
+    assert!(right["input"]["upper_arm_flexion_deg"].as_f64().unwrap() > 45.0);
+    assert_eq!(right["scores"]["upper_arm_score"], 3);
+
     let (code, stdout, stderr) = ergocell(&["height", "--landmarks", p, "--up", "0,1,0"]);
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("stature: 1.950"), "{stdout}");

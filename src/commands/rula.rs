@@ -169,6 +169,24 @@ fn side_text(s: Option<&SideAssessment>) -> String {
     }
 }
 
+/// One side's breakdown as JSON: the scores, the worksheet that was scored, and where each input came
+/// from (observed, held, not observed, configured, time series) with the reasons a score is uncertain.
+fn side_json(s: &SideAssessment) -> serde_json::Value {
+    let sources: serde_json::Map<String, serde_json::Value> = s
+        .sources
+        .iter()
+        .map(|(name, source)| ((*name).to_owned(), serde_json::json!(source)))
+        .collect();
+    serde_json::json!({
+        "scores": s.scores,
+        "uncertain": s.uncertain,
+        "uncertain_reasons": s.uncertain_reasons,
+        "notes": s.notes,
+        "input": s.input,
+        "sources": sources,
+    })
+}
+
 fn track(args: &TrackArgs) -> anyhow::Result<()> {
     let frames = read_skeletons(&args.landmarks)?;
     let task: TaskConfig = match &args.task {
@@ -192,6 +210,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     let mut events = Vec::new();
     if !args.json {
         println!("# time_s  left: final AL (regions) | right: ... ; UA upper arm, LA lower arm, WR wrist, TW twist, N neck, T trunk, L legs");
+        println!("# configured (task config): force/load, wrist twist, arm supported, seated; muscle use: from the time series; the rest observed (\"uncertain\": an input held, not observed or of low confidence; --json lists each input's source)");
     }
     for (i, skeleton) in frames.iter().enumerate() {
         let frame = assessor
@@ -203,8 +222,8 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         if args.json {
             frame_docs.push(serde_json::json!({
                 "stamp_nanos": frame.stamp_nanos,
-                "left": frame.left.as_ref().map(|s| serde_json::json!({"scores": s.scores, "uncertain": s.uncertain, "notes": s.notes})),
-                "right": frame.right.as_ref().map(|s| serde_json::json!({"scores": s.scores, "uncertain": s.uncertain, "notes": s.notes})),
+                "left": frame.left.as_ref().map(side_json),
+                "right": frame.right.as_ref().map(side_json),
                 "headline": frame.headline().map(|h| h.side),
             }));
         } else {
