@@ -22,6 +22,10 @@ struct Cli {
 enum Command {
     /// The whole cell in one process on the simulator (no ROS): operator, height, locked trajectory, RULA, recording.
     Demo(commands::demo::Args),
+    /// The cell controller on ROS 2: camera landmarks in, robot commands and session state out.
+    Run(commands::run::Args),
+    /// Replay a recording's camera landmarks over ROS 2 (`--ros`), as the camera nodes would publish them.
+    Replay(commands::run::ReplayArgs),
     /// Triangulate and fuse 2D detections from calibrated cameras into 3D landmarks.
     Triangulate(commands::triangulate::Args),
     /// RULA: score worksheets (`score`) or every frame of a 3D landmark recording (`track`).
@@ -44,6 +48,8 @@ fn main() -> std::process::ExitCode {
         .init();
     let result = match cli.command {
         Command::Demo(args) => commands::demo::run(&args),
+        Command::Run(args) => commands::run::run(&args),
+        Command::Replay(args) => commands::run::replay(&args),
         Command::Triangulate(args) => commands::triangulate::run(&args),
         Command::Rula(args) => commands::rula::run(&args),
         Command::Height(args) => commands::height::run(&args),

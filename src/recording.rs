@@ -312,11 +312,11 @@ pub fn record_events(
     use crate::session::SessionEvent as E;
     for e in events {
         match e {
-            E::StateChanged { reason, .. } => rec.write(
-                topics::SESSION_STATE,
-                now_nanos,
-                &session_state_message(machine, now_nanos, reason),
-            )?,
+            E::StateChanged { to, reason, .. } => {
+                let mut m = session_state_message(machine, now_nanos, reason);
+                to.name().clone_into(&mut m.state);
+                rec.write(topics::SESSION_STATE, now_nanos, &m)?;
+            }
             E::ClassDecided { .. }
             | E::TrajectoryLocked { .. }
             | E::ChangeRefused { .. }

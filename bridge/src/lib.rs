@@ -5,6 +5,7 @@
 //!   text for recordings.
 //! - [`cdr`]: the ROS 2 wire payload (XCDR1, little-endian, 4-byte encapsulation header).
 //! - [`qos`]: the QoS of every topic and why.
+//! - [`transport`]: the `ros2-client` node, the cell's topics and the `[ros]` config table.
 //!
 //! The only library crate that touches the network; it knows nothing of cameras, ergonomics or the
 //! robot model — the binary converts between these messages and the library types.
@@ -12,6 +13,7 @@
 pub mod cdr;
 pub mod msg;
 pub mod qos;
+pub mod transport;
 
 /// Everything that can go wrong in the bridge.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -23,4 +25,10 @@ pub enum BridgeError {
     /// A payload is not a valid CDR encoding of the expected message.
     #[error("CDR decode: {0}")]
     Decode(String),
+    /// The `[ros]` table of the cell config is malformed.
+    #[error("[ros] config: {0}")]
+    Config(String),
+    /// The ROS 2 middleware refused an operation.
+    #[error("ROS 2: {0}")]
+    Ros(String),
 }

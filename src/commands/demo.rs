@@ -56,12 +56,13 @@ pub struct Args {
     /// The MCAP recording to write.
     #[arg(long, default_value = "ergocell-demo.mcap")]
     pub out: PathBuf,
+    /// Camera frame rate, Hz (the seed paper's cameras: 10 Hz).
+    #[arg(long, default_value_t = 10.0)]
+    pub fps: f64,
     /// Do not inject the camera faults.
     #[arg(long)]
     pub no_faults: bool,
 }
-
-const PERIOD_NANOS: i64 = 100_000_000;
 
 /// Wall-clock time at the binary's clock boundary (the session itself runs on the simulator's clock).
 #[allow(clippy::disallowed_methods)]
@@ -141,7 +142,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let [hx, hy, hz] = lock.summary.handover_station_m;
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
+    if !(1.0..=120.0).contains(&args.fps) {
+        return Err(UsageError(format!("--fps {} is outside 1..=120 Hz", args.fps)).into());
+    }
+    let period_nanos = (1e9 / args.fps).round() as i64;
     let mut sim_config = SimConfig::new(args.seed);
+    sim_config.frame_period_nanos = period_nanos;
     sim_config.start_nanos = start;
     let sim = Simulation::new(
         rig.clone(),
@@ -271,7 +277,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 machine.pairs_tracking()
             );
         }
-        now += PERIOD_NANOS;
+        now += period_nanos;
     }
     let messages = rec.finish()?;
     let _ = std::fs::remove_dir_all(approvals_dir.parent().unwrap_or(&approvals_dir));

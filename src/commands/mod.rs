@@ -3,6 +3,7 @@
 pub mod demo;
 pub mod height;
 pub mod rula;
+pub mod run;
 pub mod sim;
 pub mod trajectories;
 pub mod triangulate;

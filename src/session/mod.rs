@@ -194,8 +194,8 @@ impl Default for SessionConfig {
             exit_radius_m: 1.0,
             station_xy_m: [0.0, 0.0],
             at_knot_tolerance_rad: 0.01,
-            assembly_tolerance_nanos: 40_000_000,
-            assembly_max_wait_nanos: 60_000_000,
+            assembly_tolerance_nanos: 15_000_000,
+            assembly_max_wait_nanos: 40_000_000,
         }
     }
 }

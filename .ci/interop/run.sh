@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Cyclone DDS interop test: `ergocell run` (ros2-client / RustDDS) against an independent DDS
+# implementation (Eclipse Cyclone DDS through its Python binding) that plays the six camera nodes and the
+# KUKA controller. Loopback only, in a private network namespace (needs root: CI runs as root).
+#
+#   bash .ci/interop/run.sh [path/to/ergocell]
+#
+# Asserts, Cyclone → ergocell: the camera landmarks were fused, the height class decided, the session
+# ended after the operator left; ergocell → Cyclone: the locked trajectory (100 points, joint_1..7,
+# the lock's hash in the session state), the hold (empty trajectory) and the way home arrived.
+# Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+bin=${1:-target/release/ergocell}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# The session the cameras will replay: the simulator at 30 Hz, one handover cycle, with the faults.
+"$bin" --log error demo --cycles 1 --fps 30 --out "$tmp/session.mcap" > "$tmp/demo.log"
+
+# Approvals for this test only, beside a copy of the trajectories (never trajectories/approvals/).
+mkdir -p "$tmp/traj"
+cp trajectories/c*.toml "$tmp/traj/" && cp -r trajectories/locks "$tmp/traj/"
+"$bin" trajectories --trajectories-dir "$tmp/traj" approve --class c2 --by "interop test (not a sign-off)" > /dev/null
+
+export CYCLONEDDS_URI="file://$PWD/.ci/interop/cyclonedds.xml"
+export RUST_LOG=warn
+unshare -n -- bash -c '
+  set -euo pipefail
+  ip link set lo up
+  ip link set lo multicast on
+  ip route add 224.0.0.0/4 dev lo
+  "$1" --log "warn,rustdds=error" run --config config/cell.toml --rig config/rig.toml \
+      --trajectories "$2/traj" --max-secs 90 --latency-report > "$2/run.log" 2> "$2/run.err" &
+  run=$!
+  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 90 > "$2/peer.json"
+  wait "$run"
+' _ "$bin" "$tmp"
+
+cat "$tmp/run.log"
+python3 - "$tmp/peer.json" "$tmp/run.log" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+run = open(sys.argv[2]).read()
+fail = []
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        fail.append(what)
+print(f"peer: {r['camera_messages_sent']} camera messages and {r['joint_states_sent']} joint states sent; "
+      f"{len(r['trajectories'])} trajectories and {r['holds']} holds received; states {r['states']}")
+# Cyclone -> ergocell
+check(r["camera_messages_sent"] > 1000, "the peer published the recorded camera landmarks")
+check("height measured" in run and "class c2" in run, "ergocell fused the Cyclone landmarks and decided class c2")
+check("session: session_ended" in run, "ergocell ended the session after the operator left")
+# ergocell -> Cyclone
+t = r["trajectories"]
+check(len(t) >= 2, "two trajectories reached the Cyclone controller (to the handover, home)")
+if t:
+    check(t[0]["points"] == 100, "the locked trajectory arrived with its 100 points")
+    check(t[0]["joint_names"] == [f"joint_{k}" for k in range(1, 8)], "joint names joint_1..joint_7 in order")
+    check(abs(t[0]["duration_s"] - 5.0) < 1e-6, "time_from_start intact (5.0 s)")
+if len(t) >= 2:
+    check(all(abs(a - b) < 1e-12 for a, b in zip(t[1]["first"], t[0]["last"])), "the way home starts where the handover ended")
+check(r["holds"] >= 1, "the hold (empty JointTrajectory) reached the controller")
+check(r["lock_sha256"] in r["trajectory_sha256_seen"], "the session state carried the lock's sha256")
+check("c2" in r["height_class_seen"], "the session state carried the height class")
+check("working" in r["states"] and "held" in r["states"] and r["states"][-1] == "session_ended",
+      "session states working, held, session_ended arrived (reliable, transient local)")
+sys.exit(1 if fail else 0)
+PY

@@ -1,0 +1,283 @@
+//! ROS 2 transport with `ros2-client` (pure-Rust DDS, no ROS installation): the cell node's topics
+//! and the camera-replay node's. Topic names come from [`RosConfig`] (`[ros]` in `config/cell.toml`);
+//! QoS from [`crate::qos`].
+//!
+//! Holding the robot publishes an empty `JointTrajectory` on the controller's topic (the
+//! ros2_control joint trajectory controller then drops its goal and stops). It is not an emergency
+//! stop; that stays with the robot's safety controller.
+
+pub use ros2_client::Publisher;
+use ros2_client::{
+    Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, QosProfile,
+    Subscription,
+};
+use serde::Deserialize;
+
+use crate::msg::{
+    CameraLandmarks, ErgonomicState, JointState, JointTrajectory, PostureWarning, RosMessage,
+    SessionState,
+};
+use crate::qos::{self, TopicQos};
+use crate::BridgeError;
+
+/// `[ros]` of `config/cell.toml`.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RosConfig {
+    /// DDS domain (ROS_DOMAIN_ID is not read: it is configured here).
+    #[serde(default)]
+    pub domain_id: u16,
+    /// Node namespace and name of the cell controller.
+    #[serde(default = "default_namespace")]
+    pub namespace: String,
+    #[serde(default = "default_node")]
+    pub node_name: String,
+    /// Camera ids (one topic each); must match the rig's camera ids.
+    pub cameras: Vec<String>,
+    /// Camera topic, `{id}` replaced by the camera id.
+    #[serde(default = "default_camera_topic")]
+    pub camera_topic: String,
+    #[serde(default = "default_joint_states")]
+    pub joint_states_topic: String,
+    #[serde(default = "default_joint_trajectory")]
+    pub joint_trajectory_topic: String,
+    /// The FollowJointTrajectory action of the controller (documented for the integrator; the bridge
+    /// commands through `joint_trajectory_topic`).
+    #[serde(default = "default_action")]
+    pub follow_joint_trajectory_action: String,
+    #[serde(default = "default_session_state")]
+    pub session_state_topic: String,
+    #[serde(default = "default_ergonomics")]
+    pub ergonomics_topic: String,
+    #[serde(default = "default_warnings")]
+    pub warnings_topic: String,
+}
+
+fn default_namespace() -> String {
+    "/ergocell".into()
+}
+fn default_node() -> String {
+    "cell".into()
+}
+fn default_camera_topic() -> String {
+    "/ergocell/camera/{id}/landmarks".into()
+}
+fn default_joint_states() -> String {
+    "/joint_states".into()
+}
+fn default_joint_trajectory() -> String {
+    "/joint_trajectory_controller/joint_trajectory".into()
+}
+fn default_action() -> String {
+    "/joint_trajectory_controller/follow_joint_trajectory".into()
+}
+fn default_session_state() -> String {
+    "/ergocell/session_state".into()
+}
+fn default_ergonomics() -> String {
+    "/ergocell/ergonomics".into()
+}
+fn default_warnings() -> String {
+    "/ergocell/warnings".into()
+}
+
+#[derive(Deserialize)]
+struct CellFile {
+    ros: Option<RosConfig>,
+}
+
+impl RosConfig {
+    /// The `[ros]` table of a cell config file (other tables are read by other crates).
+    pub fn from_cell_toml(text: &str) -> Result<Self, BridgeError> {
+        let file: CellFile =
+            toml::from_str(text).map_err(|e| BridgeError::Config(e.to_string()))?;
+        let cfg = file
+            .ros
+            .ok_or_else(|| BridgeError::Config("no [ros] table".to_owned()))?;
+        if cfg.cameras.is_empty() {
+            return Err(BridgeError::Config("[ros] cameras is empty".to_owned()));
+        }
+        Ok(cfg)
+    }
+
+    /// The topic of one camera.
+    pub fn camera_topic_of(&self, id: &str) -> String {
+        self.camera_topic.replace("{id}", id)
+    }
+}
+
+fn profile(q: TopicQos) -> QosProfile {
+    let reliability = match q.reliability {
+        qos::Reliability::BestEffort => ros2_client::qos::Reliability::BestEffort,
+        qos::Reliability::Reliable => ros2_client::qos::Reliability::Reliable {
+            when_full: ros2_client::qos::WhenFull::DEFAULT,
+        },
+    };
+    let durability = match q.durability {
+        qos::Durability::Volatile => ros2_client::qos::Durability::Volatile,
+        qos::Durability::TransientLocal => ros2_client::qos::Durability::TransientLocal,
+    };
+    QosProfile::subscription_default()
+        .reliability(reliability)
+        .durability(durability)
+        .history(ros2_client::qos::History::KeepLast {
+            depth: q.depth as usize,
+        })
+}
+
+fn name_of(full: &str) -> Result<Name, BridgeError> {
+    let (ns, base) = full.rsplit_once('/').unwrap_or(("", full));
+    let ns = if ns.is_empty() { "/" } else { ns };
+    Name::new(ns, base).map_err(|e| BridgeError::Ros(format!("topic name {full}: {e:?}")))
+}
+
+fn ros_err(what: &str) -> impl Fn(String) -> BridgeError + '_ {
+    move |e| BridgeError::Ros(format!("{what}: {e}"))
+}
+
+/// A ROS 2 node with helpers to make typed publishers and subscriptions.
+pub struct RosNode {
+    pub node: Node,
+    _context: Context,
+}
+
+impl RosNode {
+    /// Creates the node; spawn [`RosNode::spinner`] on the runtime before use.
+    pub fn new(domain_id: u16, namespace: &str, name: &str) -> Result<Self, BridgeError> {
+        let context = Context::with_options(ContextOptions::new().domain_id(domain_id))
+            .map_err(|e| BridgeError::Ros(format!("DDS context: {e:?}")))?;
+        let node_name = NodeName::new(namespace, name)
+            .map_err(|e| BridgeError::Ros(format!("node name {namespace}/{name}: {e:?}")))?;
+        let node = context
+            .new_node(node_name, NodeOptions::new().enable_rosout(false))
+            .map_err(|e| BridgeError::Ros(format!("node: {e:?}")))?;
+        Ok(Self {
+            node,
+            _context: context,
+        })
+    }
+
+    /// The spinner future (discovery, parameters); spawn it on the runtime.
+    pub fn spinner(
+        &mut self,
+    ) -> Result<impl std::future::Future<Output = ()> + Send + 'static, BridgeError> {
+        let spinner = self
+            .node
+            .spinner()
+            .map_err(|e| BridgeError::Ros(format!("spinner: {e:?}")))?;
+        Ok(async move {
+            if let Err(e) = spinner.spin().await {
+                tracing::error!(error = ?e, "ROS 2 spinner stopped");
+            }
+        })
+    }
+
+    /// A publisher of `M` on `topic` with `qos`.
+    pub fn publisher<M: RosMessage>(
+        &mut self,
+        topic: &str,
+        qos: TopicQos,
+    ) -> Result<Publisher<M>, BridgeError> {
+        let q = profile(qos);
+        let t = self
+            .node
+            .create_topic(
+                &name_of(topic)?,
+                MessageTypeName::new(M::PACKAGE, M::NAME),
+                &q,
+            )
+            .map_err(|e| ros_err(topic)(format!("{e:?}")))?;
+        self.node
+            .create_publisher(&t, Some(q))
+            .map_err(|e| ros_err(topic)(format!("{e:?}")))
+    }
+
+    /// A subscription to `M` on `topic` with `qos`.
+    pub fn subscription<M: RosMessage + 'static>(
+        &mut self,
+        topic: &str,
+        qos: TopicQos,
+    ) -> Result<Subscription<M>, BridgeError> {
+        let q = profile(qos);
+        let t = self
+            .node
+            .create_topic(
+                &name_of(topic)?,
+                MessageTypeName::new(M::PACKAGE, M::NAME),
+                &q,
+            )
+            .map_err(|e| ros_err(topic)(format!("{e:?}")))?;
+        self.node
+            .create_subscription(&t, Some(q))
+            .map_err(|e| ros_err(topic)(format!("{e:?}")))
+    }
+}
+
+/// The cell controller's topics.
+pub struct CellTopics {
+    pub cameras: Vec<Subscription<CameraLandmarks>>,
+    pub joint_states: Subscription<JointState>,
+    pub joint_trajectory: Publisher<JointTrajectory>,
+    pub session_state: Publisher<SessionState>,
+    pub ergonomics: Publisher<ErgonomicState>,
+    pub warnings: Publisher<PostureWarning>,
+}
+
+impl CellTopics {
+    /// Creates every publisher and subscription of the cell node, QoS from [`crate::qos`].
+    pub fn new(node: &mut RosNode, cfg: &RosConfig) -> Result<Self, BridgeError> {
+        let cameras = cfg
+            .cameras
+            .iter()
+            .map(|id| node.subscription(&cfg.camera_topic_of(id), qos::CAMERA_LANDMARKS))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Self {
+            cameras,
+            joint_states: node.subscription(&cfg.joint_states_topic, qos::JOINT_STATES)?,
+            joint_trajectory: node
+                .publisher(&cfg.joint_trajectory_topic, qos::TRAJECTORY_COMMAND)?,
+            session_state: node.publisher(&cfg.session_state_topic, qos::SESSION_STATE)?,
+            ergonomics: node.publisher(&cfg.ergonomics_topic, qos::PER_FRAME_STATE)?,
+            warnings: node.publisher(&cfg.warnings_topic, qos::WARNINGS)?,
+        })
+    }
+}
+
+/// Publishes `message`, mapping the error.
+pub async fn publish<M: serde::Serialize + std::fmt::Debug>(
+    p: &Publisher<M>,
+    message: M,
+) -> Result<(), BridgeError> {
+    p.async_publish(message)
+        .await
+        .map_err(|e| BridgeError::Ros(format!("publish: {e:?}")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ros_table_parses_with_defaults_and_rejects_unknown_keys() {
+        let cfg = RosConfig::from_cell_toml(
+            "[robot]\nurdf = \"x\"\n[ros]\ncameras = [\"a\", \"b\"]\ndomain_id = 7\n",
+        )
+        .unwrap();
+        assert_eq!(cfg.domain_id, 7);
+        assert_eq!(cfg.camera_topic_of("a"), "/ergocell/camera/a/landmarks");
+        assert_eq!(
+            cfg.joint_trajectory_topic,
+            "/joint_trajectory_controller/joint_trajectory"
+        );
+        assert!(RosConfig::from_cell_toml("[ros]\ncameras = [\"a\"]\ntypo = 1\n").is_err());
+        assert!(RosConfig::from_cell_toml("[robot]\n").is_err());
+        assert!(RosConfig::from_cell_toml("[ros]\ncameras = []\n").is_err());
+    }
+
+    #[test]
+    fn topic_names_split_into_namespace_and_base() {
+        assert!(name_of("/joint_states").is_ok());
+        assert!(name_of("/joint_trajectory_controller/joint_trajectory").is_ok());
+        assert!(name_of("/ergocell/camera/s1_left/landmarks").is_ok());
+    }
+}

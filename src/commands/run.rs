@@ -1,0 +1,439 @@
+//! `ergocell run`: the session state machine on the ROS 2 backend, and `ergocell replay --ros`:
+//! recorded camera landmarks published as the Jetsons would.
+//!
+//! `run` subscribes to one landmark topic per camera and to `/joint_states`, commands the robot on the
+//! joint trajectory controller's topic (a hold is an empty `JointTrajectory`: not an emergency stop),
+//! and publishes the session state, the RULA state and the warnings. Topic names and the DDS domain
+//! come from `[ros]` in the cell config; QoS from `ergocell_bridge::qos`. Ctrl-C holds the robot and
+//! closes the recording.
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+
+use anyhow::Context as _;
+use ergocell::recording::{self, topics, McapRecorder};
+use ergocell::session::provider::FileTrajectories;
+use ergocell::session::{
+    BackendError, RobotCommand, RobotSink, SessionConfig, SessionEvent, SessionMachine,
+    SessionState,
+};
+use ergocell_bridge::msg::{CameraLandmarks, JointState, JointTrajectory};
+use ergocell_bridge::transport::{publish, CellTopics, RosConfig, RosNode};
+use ergocell_bridge::{cdr, qos};
+use ergocell_perception::rig_file::parse_rig;
+use futures::StreamExt as _;
+
+use super::UsageError;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Cell configuration: `[robot]`, `[station]` and `[ros]`.
+    #[arg(long, default_value = "config/cell.toml")]
+    pub config: PathBuf,
+    /// Camera rig; its camera ids must match `[ros] cameras`.
+    #[arg(long, default_value = "config/rig.toml")]
+    pub rig: PathBuf,
+    /// Folder of the trajectory files and `locks/`.
+    #[arg(long, default_value = "trajectories")]
+    pub trajectories: PathBuf,
+    /// Folder of the approvals (default `<trajectories>/approvals`).
+    #[arg(long)]
+    pub approvals: Option<PathBuf>,
+    /// Record the session to this MCAP file.
+    #[arg(long)]
+    pub record: Option<PathBuf>,
+    /// Stop (holding the robot) after this many seconds if the session has not ended.
+    #[arg(long)]
+    pub max_secs: Option<f64>,
+    /// Print the latency from a camera message's arrival to the RULA state published (p50/p99) and
+    /// the process's CPU use at the end.
+    #[arg(long)]
+    pub latency_report: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ReplayArgs {
+    /// An MCAP recording (e.g. from `ergocell demo`).
+    pub recording: PathBuf,
+    /// Publish the camera landmarks over ROS 2 (the only output so far; required).
+    #[arg(long)]
+    pub ros: bool,
+    /// Cell configuration with the `[ros]` table.
+    #[arg(long, default_value = "config/cell.toml")]
+    pub config: PathBuf,
+    /// Playback speed factor (1 = as recorded).
+    #[arg(long, default_value_t = 1.0)]
+    pub speed: f64,
+}
+
+/// Wall-clock time, nanoseconds since the Unix epoch: the binary's clock boundary (camera stamps are
+/// ROS time).
+#[allow(clippy::disallowed_methods)]
+fn now_nanos() -> i64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| i64::try_from(d.as_nanos()).unwrap_or(i64::MAX))
+}
+
+/// Monotonic instant for latency measurements.
+#[allow(clippy::disallowed_methods)]
+fn instant() -> std::time::Instant {
+    std::time::Instant::now()
+}
+
+/// The robot over ROS 2: commands published on the trajectory topic, positions from `/joint_states`.
+struct RosRobot {
+    publisher: ergocell_bridge::transport::Publisher<JointTrajectory>,
+    latest: Arc<Mutex<Option<JointState>>>,
+}
+
+impl RobotSink for RosRobot {
+    fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError> {
+        self.publisher
+            .publish(command.to_message(now_nanos))
+            .map_err(|e| BackendError {
+                backend: "ROS 2 joint trajectory",
+                reason: format!("{e:?}"),
+            })
+    }
+
+    fn joint_positions(&mut self, _now_nanos: i64, names: &[String]) -> Option<Vec<f64>> {
+        self.latest
+            .lock()
+            .ok()?
+            .as_ref()
+            .and_then(|js| js.positions_for(names))
+    }
+}
+
+/// User + system CPU seconds of this process (Linux `/proc/self/stat`, clock ticks of 100 Hz).
+fn cpu_secs() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    let after = stat.rsplit_once(')')?.1;
+    let fields: Vec<&str> = after.split_whitespace().collect();
+    let utime: f64 = fields.get(11)?.parse().ok()?;
+    let stime: f64 = fields.get(12)?.parse().ok()?;
+    Some((utime + stime) / 100.0)
+}
+
+fn percentile(sorted: &[f64], p: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let k = ((sorted.len() - 1) as f64 * p).round() as usize;
+    sorted[k.min(sorted.len() - 1)]
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let cell_text = std::fs::read_to_string(&args.config)
+        .with_context(|| format!("cannot read {}", args.config.display()))?;
+    let ros = RosConfig::from_cell_toml(&cell_text)
+        .map_err(|e| UsageError(format!("{}: {e}", args.config.display())))?;
+    let rig_text = std::fs::read_to_string(&args.rig)
+        .with_context(|| format!("cannot read {}", args.rig.display()))?;
+    let (rig, _) = parse_rig(&rig_text, &args.rig.display().to_string())
+        .map_err(|e| UsageError(e.to_string()))?;
+    for id in &ros.cameras {
+        if rig.index_of_name(id).is_none() {
+            return Err(UsageError(format!(
+                "{}: [ros] camera `{id}` is not in the rig {}",
+                args.config.display(),
+                args.rig.display()
+            ))
+            .into());
+        }
+    }
+    let approvals = args
+        .approvals
+        .clone()
+        .unwrap_or_else(|| args.trajectories.join("approvals"));
+    let provider = FileTrajectories::new(&args.config, &args.trajectories, &approvals);
+    let mut machine =
+        SessionMachine::new(rig.clone(), SessionConfig::default(), Box::new(provider))
+            .map_err(|e| anyhow::anyhow!(e))?;
+    let mut recorder = args
+        .record
+        .as_deref()
+        .map(McapRecorder::create)
+        .transpose()?;
+
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .enable_all()
+        .build()
+        .context("tokio runtime")?;
+    runtime.block_on(async {
+        let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name)?;
+        tokio::spawn(node.spinner()?);
+        let CellTopics {
+            cameras,
+            joint_states,
+            joint_trajectory,
+            session_state,
+            ergonomics,
+            warnings,
+        } = CellTopics::new(&mut node, &ros)?;
+        let latest = Arc::new(Mutex::new(None::<JointState>));
+        let mut robot = RosRobot {
+            publisher: joint_trajectory,
+            latest: latest.clone(),
+        };
+        let mut camera_stream =
+            futures::stream::select_all(cameras.iter().map(|s| Box::pin(s.async_stream())));
+        let mut joint_stream = Box::pin(joint_states.async_stream());
+        let mut tick = tokio::time::interval(std::time::Duration::from_millis(20));
+        let interrupted = Arc::new(AtomicBool::new(false));
+        let ctrl_c = {
+            let flag = interrupted.clone();
+            tokio::spawn(async move {
+                if tokio::signal::ctrl_c().await.is_ok() {
+                    flag.store(true, Ordering::SeqCst);
+                }
+            })
+        };
+        let started = now_nanos();
+        let cpu0 = cpu_secs();
+        let wall0 = instant();
+        let mut latencies_ms: Vec<f64> = Vec::new();
+        let mut rejected = 0u64;
+        println!(
+            "ergocell run: node {}/{} on DDS domain {}, {} camera topics, robot on {}",
+            ros.namespace,
+            ros.node_name,
+            ros.domain_id,
+            cameras.len(),
+            ros.joint_trajectory_topic
+        );
+        session_state
+            .async_publish(recording::session_state_message(&machine, started, "started"))
+            .await
+            .map_err(|e| anyhow::anyhow!("publish session state: {e:?}"))?;
+        loop {
+            let mut arrival = None;
+            let views = tokio::select! {
+                Some(item) = camera_stream.next() => {
+                    arrival = Some(instant());
+                    match item {
+                        Ok((m, _info)) => {
+                            let m: CameraLandmarks = m;
+                            if let Some(rec) = recorder.as_mut() {
+                                rec.write(&topics::camera(&m.camera_id), now_nanos(), &m)?;
+                            }
+                            match recording::view_from_message(&rig, &m) {
+                                Ok(v) => vec![v],
+                                Err(e) => {
+                                    rejected += 1;
+                                    tracing::warn!(error = %e, "camera message rejected");
+                                    Vec::new()
+                                }
+                            }
+                        }
+                        Err(e) => {
+                            tracing::warn!(error = ?e, "camera read error");
+                            Vec::new()
+                        }
+                    }
+                }
+                Some(Ok((js, _))) = joint_stream.next() => {
+                    let js: JointState = js;
+                    if let Ok(mut l) = latest.lock() {
+                        *l = Some(js);
+                    }
+                    continue;
+                }
+                _ = tick.tick() => Vec::new(),
+            };
+            let now = now_nanos();
+            if interrupted.load(Ordering::SeqCst) {
+                let events = machine.shutdown(now, &mut robot, "Ctrl-C");
+                publish_events(&machine, now, &events, &session_state, &ergonomics, &warnings)
+                    .await?;
+                if let Some(rec) = recorder.as_mut() {
+                    recording::record_events(rec, &machine, now, &events)?;
+                }
+                break;
+            }
+            if let Some(limit) = args.max_secs {
+                if (now - started) as f64 * 1e-9 > limit {
+                    let events = machine.shutdown(now, &mut robot, "--max-secs reached");
+                    publish_events(&machine, now, &events, &session_state, &ergonomics, &warnings)
+                        .await?;
+                    if let Some(rec) = recorder.as_mut() {
+                        recording::record_events(rec, &machine, now, &events)?;
+                    }
+                    break;
+                }
+            }
+            let events = machine.step(now, views, &mut robot);
+            for e in &events {
+                if !matches!(e, SessionEvent::Frame { .. }) {
+                    println!("  {}", recording::describe(e));
+                }
+            }
+            let published_frame =
+                publish_events(&machine, now, &events, &session_state, &ergonomics, &warnings)
+                    .await?;
+            if let (Some(t0), true) = (arrival, published_frame) {
+                latencies_ms.push(t0.elapsed().as_secs_f64() * 1e3);
+            }
+            if let Some(rec) = recorder.as_mut() {
+                recording::record_events(rec, &machine, now, &events)?;
+            }
+            if machine.state() == SessionState::SessionEnded {
+                break;
+            }
+        }
+        ctrl_c.abort();
+        let s = machine.summary();
+        println!(
+            "session: {} — {} frames fused, {} tracked, class {}, lock {}, {} hold(s), {} robot command(s), {} camera message(s) rejected; {}",
+            machine.state(),
+            s.frames_fused,
+            s.frames_tracked,
+            s.class.as_deref().unwrap_or("-"),
+            s.lock_sha256.as_deref().unwrap_or("-"),
+            s.holds,
+            s.robot_commands,
+            rejected,
+            s.end_reason
+        );
+        if args.latency_report {
+            latencies_ms.sort_by(f64::total_cmp);
+            let wall = wall0.elapsed().as_secs_f64();
+            let cpu = cpu0.zip(cpu_secs()).map(|(a, b)| b - a);
+            println!(
+                "latency (camera message arrival → RULA state published): n = {}, p50 = {:.3} ms, p99 = {:.3} ms, max = {:.3} ms; CPU {}",
+                latencies_ms.len(),
+                percentile(&latencies_ms, 0.5),
+                percentile(&latencies_ms, 0.99),
+                latencies_ms.last().copied().unwrap_or(f64::NAN),
+                cpu.map_or("n/a".to_owned(), |c| format!(
+                    "{c:.2} s over {wall:.1} s = {:.1} % of one core",
+                    100.0 * c / wall
+                ))
+            );
+        }
+        if interrupted.load(Ordering::SeqCst) {
+            anyhow::bail!("interrupted: robot held");
+        }
+        anyhow::Ok(())
+    })?;
+    if let Some(rec) = recorder {
+        rec.finish()?;
+    }
+    Ok(())
+}
+
+/// Publishes a step's events; true if a RULA state was published.
+async fn publish_events(
+    machine: &SessionMachine,
+    now: i64,
+    events: &[SessionEvent],
+    session_state: &ergocell_bridge::transport::Publisher<ergocell_bridge::msg::SessionState>,
+    ergonomics: &ergocell_bridge::transport::Publisher<ergocell_bridge::msg::ErgonomicState>,
+    warnings: &ergocell_bridge::transport::Publisher<ergocell_bridge::msg::PostureWarning>,
+) -> anyhow::Result<bool> {
+    let mut frame = false;
+    for e in events {
+        match e {
+            SessionEvent::Frame {
+                assessment: Some(a),
+                ..
+            } => {
+                publish(ergonomics, recording::ergonomic_message(a)).await?;
+                frame = true;
+            }
+            SessionEvent::Warning(w) => publish(warnings, recording::warning_message(w)).await?,
+            SessionEvent::Frame { .. } | SessionEvent::RobotCommandSent { .. } => {}
+            SessionEvent::StateChanged { to, reason, .. } => {
+                let mut m = recording::session_state_message(machine, now, reason);
+                to.name().clone_into(&mut m.state);
+                publish(session_state, m).await?;
+            }
+            other => {
+                publish(
+                    session_state,
+                    recording::session_state_message(machine, now, &recording::describe(other)),
+                )
+                .await?;
+            }
+        }
+    }
+    Ok(frame)
+}
+
+pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
+    if !args.ros {
+        return Err(UsageError("replay publishes over ROS 2: pass --ros".to_owned()).into());
+    }
+    if !(args.speed > 0.0 && args.speed.is_finite()) {
+        return Err(UsageError(format!("--speed {} must be positive", args.speed)).into());
+    }
+    let cell_text = std::fs::read_to_string(&args.config)
+        .with_context(|| format!("cannot read {}", args.config.display()))?;
+    let ros = RosConfig::from_cell_toml(&cell_text)
+        .map_err(|e| UsageError(format!("{}: {e}", args.config.display())))?;
+    let bytes = std::fs::read(&args.recording)
+        .with_context(|| format!("cannot read {}", args.recording.display()))?;
+    // Camera messages in log-time order; a recording cut by a crash is read up to its last chunk.
+    let options = enumset::EnumSet::only(mcap::read::Options::IgnoreEndMagic);
+    let mut frames: Vec<(u64, CameraLandmarks)> = Vec::new();
+    for m in mcap::read::MessageStream::new_with_options(&bytes, options)
+        .map_err(|e| UsageError(format!("{}: {e}", args.recording.display())))?
+    {
+        let Ok(m) = m else { break };
+        if m.channel.topic.starts_with("/ergocell/camera/") {
+            let lm: CameraLandmarks = cdr::decode(&m.data)
+                .map_err(|e| UsageError(format!("{}: {e}", args.recording.display())))?;
+            frames.push((m.log_time, lm));
+        }
+    }
+    if frames.is_empty() {
+        return Err(UsageError(format!(
+            "{}: no camera landmarks in the recording",
+            args.recording.display()
+        ))
+        .into());
+    }
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .enable_all()
+        .build()
+        .context("tokio runtime")?;
+    runtime.block_on(async {
+        let mut node = RosNode::new(ros.domain_id, &ros.namespace, "replay")?;
+        tokio::spawn(node.spinner()?);
+        let mut publishers = std::collections::BTreeMap::new();
+        for id in &ros.cameras {
+            let p =
+                node.publisher::<CameraLandmarks>(&ros.camera_topic_of(id), qos::CAMERA_LANDMARKS)?;
+            publishers.insert(id.clone(), p);
+        }
+        // Give discovery a moment before the first frame.
+        tokio::time::sleep(std::time::Duration::from_millis(1500)).await;
+        let t0_log = frames[0].0;
+        let t0 = instant();
+        let start = now_nanos();
+        let mut sent = 0usize;
+        for (log_time, mut m) in frames {
+            let offset_secs = (log_time - t0_log) as f64 * 1e-9 / args.speed;
+            let due = std::time::Duration::from_secs_f64(offset_secs);
+            if let Some(wait) = due.checked_sub(t0.elapsed()) {
+                tokio::time::sleep(wait).await;
+            }
+            // Re-stamp as a live camera would: capture time now.
+            m.header.stamp =
+                ergocell_bridge::msg::Time::from_nanos(start + (offset_secs * 1e9) as i64);
+            if let Some(p) = publishers.get(&m.camera_id) {
+                publish(p, m).await?;
+                sent += 1;
+            }
+        }
+        println!(
+            "replayed {sent} camera messages from {}",
+            args.recording.display()
+        );
+        anyhow::Ok(())
+    })
+}
