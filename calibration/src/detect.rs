@@ -186,12 +186,14 @@ fn chess_candidates(img: &GrayImage) -> Vec<(Point2<f64>, f64)> {
     }
     let mut response = vec![0.0f64; w * h];
     let mut max_r = 0.0f64;
+    let data = img.data();
+    let offsets: Vec<isize> = ring.iter().map(|(dx, dy)| dy * w as isize + dx).collect();
     for y in border..h - border {
         for x in border..w - border {
-            let (xi, yi) = (x as isize, y as isize);
+            let idx = y * w + x;
             let mut s = [0.0f64; 16];
-            for (n, (dx, dy)) in ring.iter().enumerate() {
-                s[n] = f64::from(img.at(xi + dx, yi + dy));
+            for (n, o) in offsets.iter().enumerate() {
+                s[n] = f64::from(data[idx.wrapping_add_signed(*o)]);
             }
             let mut sum_r = 0.0;
             for n in 0..4 {
@@ -202,14 +204,11 @@ fn chess_candidates(img: &GrayImage) -> Vec<(Point2<f64>, f64)> {
                 diff_r += (s[n] - s[n + 8]).abs();
             }
             let ring_mean = s.iter().sum::<f64>() / 16.0;
-            let local_mean = (f64::from(img.at(xi, yi))
-                + f64::from(img.at(xi + 1, yi))
-                + f64::from(img.at(xi - 1, yi))
-                + f64::from(img.at(xi, yi + 1))
-                + f64::from(img.at(xi, yi - 1)))
-                / 5.0;
+            let local_mean = f64::from(
+                data[idx] + data[idx + 1] + data[idx - 1] + data[idx + w] + data[idx - w],
+            ) / 5.0;
             let r = sum_r - diff_r - 16.0 * (ring_mean - local_mean).abs();
-            response[y * w + x] = r;
+            response[idx] = r;
             max_r = max_r.max(r);
         }
     }
@@ -724,23 +723,39 @@ fn refine_corners(
 fn corner_subpix(image: &GrayImage, start: Point2<f64>, half: isize) -> Point2<f64> {
     let mut q = start;
     let hw = half as f64;
+    // the window plus a one-pixel border for the gradients, resampled at q's sub-pixel offset
+    // (OpenCV's getRectSubPix), so each iteration samples the image once per pixel
+    let side = (2 * half + 3) as usize;
+    let mut patch = vec![0.0f64; side * side];
+    let weights: Vec<f64> = (-half..=half)
+        .flat_map(|dy| {
+            (-half..=half).map(move |dx| (-((dx * dx + dy * dy) as f64) / (hw * hw)).exp())
+        })
+        .collect();
     for _ in 0..40 {
+        for (r, row) in patch.chunks_mut(side).enumerate() {
+            let y = q.y + r as f64 - (half + 1) as f64;
+            for (c, v) in row.iter_mut().enumerate() {
+                *v = image.sample(q.x + c as f64 - (half + 1) as f64, y);
+            }
+        }
         let mut a = Matrix2::zeros();
         let mut bvec = Vector2::zeros();
+        let mut k = 0;
         for dy in -half..=half {
             for dx in -half..=half {
-                let (fx, fy) = (dx as f64, dy as f64);
-                let wgt = (-(fx * fx + fy * fy) / (hw * hw)).exp();
-                let (x, y) = (q.x + fx, q.y + fy);
-                let gx = 0.5 * (image.sample(x + 1.0, y) - image.sample(x - 1.0, y));
-                let gy = 0.5 * (image.sample(x, y + 1.0) - image.sample(x, y - 1.0));
+                let (r, c) = ((dy + half + 1) as usize, (dx + half + 1) as usize);
+                let gx = 0.5 * (patch[r * side + c + 1] - patch[r * side + c - 1]);
+                let gy = 0.5 * (patch[(r + 1) * side + c] - patch[(r - 1) * side + c]);
+                let wgt = weights[k];
+                k += 1;
+                let (x, y) = (q.x + dx as f64, q.y + dy as f64);
                 let (gxx, gxy, gyy) = (gx * gx * wgt, gx * gy * wgt, gy * gy * wgt);
                 a += Matrix2::new(gxx, gxy, gxy, gyy);
                 bvec += Vector2::new(gxx * x + gxy * y, gxy * x + gyy * y);
             }
         }
-        let det = a.determinant();
-        if det.abs() < 1e-9 {
+        if a.determinant().abs() < 1e-9 {
             return q;
         }
         let Some(inv) = a.try_inverse() else {

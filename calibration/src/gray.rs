@@ -76,42 +76,50 @@ impl GrayImage {
         (a * (1.0 - fx) + b * fx) * (1.0 - fy) + (c * (1.0 - fx) + d * fx) * fy
     }
 
-    /// A separable Gaussian blur with standard deviation `sigma_px` (kernel radius 3σ).
+    /// A separable Gaussian blur with standard deviation `sigma_px` (kernel radius 3σ, border
+    /// pixels repeated).
     #[must_use]
     pub fn gaussian_blur(&self, sigma_px: f64) -> Self {
         if sigma_px <= 0.0 {
             return self.clone();
         }
-        let radius = (3.0 * sigma_px).ceil() as isize;
-        let kernel: Vec<f32> = (-radius..=radius)
-            .map(|i| (-(i * i) as f64 / (2.0 * sigma_px * sigma_px)).exp() as f32)
+        let radius = (3.0 * sigma_px).ceil() as usize;
+        let kernel: Vec<f32> = (0..=2 * radius)
+            .map(|i| {
+                let d = i as f64 - radius as f64;
+                (-(d * d) / (2.0 * sigma_px * sigma_px)).exp() as f32
+            })
             .collect();
         let norm: f32 = kernel.iter().sum();
         let kernel: Vec<f32> = kernel.iter().map(|k| k / norm).collect();
         let (w, h) = (self.width, self.height);
+        // horizontal pass on a border-padded copy of each row
         let mut tmp = vec![0.0f32; w * h];
+        let mut padded = vec![0.0f32; w + 2 * radius];
         for y in 0..h {
-            for x in 0..w {
-                let mut acc = 0.0;
-                for (k, &kv) in kernel.iter().enumerate() {
-                    acc += kv * self.at(x as isize + k as isize - radius, y as isize);
-                }
-                tmp[y * w + x] = acc;
+            let row = &self.data[y * w..(y + 1) * w];
+            padded[radius..radius + w].copy_from_slice(row);
+            padded[..radius].fill(row[0]);
+            padded[radius + w..].fill(row[w - 1]);
+            let out = &mut tmp[y * w..(y + 1) * w];
+            for (x, o) in out.iter_mut().enumerate() {
+                *o = kernel
+                    .iter()
+                    .zip(&padded[x..=x + 2 * radius])
+                    .map(|(k, v)| k * v)
+                    .sum();
             }
         }
-        let horizontal = Self {
-            width: w,
-            height: h,
-            data: tmp,
-        };
+        // vertical pass: whole rows at a time
         let mut out = vec![0.0f32; w * h];
         for y in 0..h {
-            for x in 0..w {
-                let mut acc = 0.0;
-                for (k, &kv) in kernel.iter().enumerate() {
-                    acc += kv * horizontal.at(x as isize, y as isize + k as isize - radius);
+            let dst = &mut out[y * w..(y + 1) * w];
+            for (k, &kv) in kernel.iter().enumerate() {
+                let sy = (y + k).saturating_sub(radius).min(h - 1);
+                let src = &tmp[sy * w..(sy + 1) * w];
+                for (d, s) in dst.iter_mut().zip(src) {
+                    *d += kv * s;
                 }
-                out[y * w + x] = acc;
             }
         }
         Self {
@@ -119,6 +127,11 @@ impl GrayImage {
             height: h,
             data: out,
         }
+    }
+
+    /// The intensities, row-major.
+    pub fn data(&self) -> &[f32] {
+        &self.data
     }
 
     /// Central-difference gradient `(∂I/∂x, ∂I/∂y)` at an integer pixel.
