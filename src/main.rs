@@ -28,6 +28,8 @@ enum Command {
     Replay(commands::run::ReplayArgs),
     /// Triangulate and fuse 2D detections from calibrated cameras into 3D landmarks.
     Triangulate(commands::triangulate::Args),
+    /// Camera and stereo calibration from checkerboard images, written as a rig file.
+    Calibrate(commands::calibrate::Args),
     /// RULA: score worksheets (`score`) or every frame of a 3D landmark recording (`track`).
     Rula(commands::rula::Args),
     /// Estimate the operator's stature and height class from a 3D landmark recording.
@@ -51,6 +53,7 @@ fn main() -> std::process::ExitCode {
         Command::Run(args) => commands::run::run(&args),
         Command::Replay(args) => commands::run::replay(&args),
         Command::Triangulate(args) => commands::triangulate::run(&args),
+        Command::Calibrate(args) => commands::calibrate::run(&args),
         Command::Rula(args) => commands::rula::run(&args),
         Command::Height(args) => commands::height::run(&args),
         Command::Trajectories(args) => commands::trajectories::run(&args),

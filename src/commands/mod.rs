@@ -1,5 +1,6 @@
 //! One module per subcommand. Each exposes `Args` (clap) and `run(&Args) -> anyhow::Result<()>`.
 
+pub mod calibrate;
 pub mod demo;
 pub mod height;
 pub mod rula;

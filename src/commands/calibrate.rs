@@ -1,0 +1,482 @@
+//! `ergocell calibrate`: camera and stereo calibration from checkerboard images (step A of the seed
+//! paper's Algorithm 1), written as a rig file.
+//!
+//! ```text
+//! ergocell calibrate intrinsics --images <dir|glob> --board 9x6 --square-m 0.025 --out cam.toml
+//! ergocell calibrate stereo --left <dir|glob> --right <dir|glob> --board 9x6 --square-m 0.025 \
+//!                           --out rig.toml [--format anipose] [--refine-intrinsics]
+//! ```
+//!
+//! Prints one row per image (or pair): used with its reprojection error, or rejected and why. Too
+//! few usable views is a usage error (exit 2). Stereo images pair up in sorted file-name order.
+
+use std::io::IsTerminal as _;
+use std::path::{Path, PathBuf};
+
+use anyhow::Context as _;
+use ergocell_calibration::{
+    calibrate_camera, calibrate_stereo, detect_checkerboard, BoardSpec, CalibrationError,
+    CameraViews, GrayImage, RigOptions, SolveOptions,
+};
+use ergocell_perception::rig_file::{to_anipose_toml, to_ergocell_toml};
+use ergocell_perception::{Camera, CameraId, CameraRig};
+use indicatif::{ProgressBar, ProgressStyle};
+use nalgebra::{Point2, Rotation3, Vector3};
+
+use super::UsageError;
+
+/// Arguments of `ergocell calibrate`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    #[command(subcommand)]
+    pub command: CalibrateCommand,
+}
+
+/// The calibrations.
+#[derive(Debug, clap::Subcommand)]
+pub enum CalibrateCommand {
+    /// One camera's intrinsics and distortion from checkerboard images.
+    Intrinsics(IntrinsicsArgs),
+    /// A stereo pair: both cameras and the pose of the right one in the left one's frame.
+    Stereo(StereoArgs),
+}
+
+/// The board and the output, shared by both calibrations.
+#[derive(Debug, clap::Args)]
+pub struct BoardArgs {
+    /// Inner corners per row x rows of inner corners (OpenCV's pattern size), e.g. 9x6.
+    #[arg(long, default_value = "9x6")]
+    pub board: String,
+    /// Side of one square, metres.
+    #[arg(long, default_value_t = 0.025)]
+    pub square_m: f64,
+    /// Output rig file.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Output format: ergocell's rig TOML (`config/` format) or the Anipose/Pose2Sim TOML.
+    #[arg(long, default_value = "ergocell", value_parser = ["ergocell", "anipose"])]
+    pub format: String,
+}
+
+/// Arguments of `ergocell calibrate intrinsics`.
+#[derive(Debug, clap::Args)]
+pub struct IntrinsicsArgs {
+    /// A folder of .jpg/.png images, or a glob such as `data/left*.jpg`.
+    #[arg(long)]
+    pub images: String,
+    /// Camera id written to the rig file.
+    #[arg(long, default_value = "cam_0")]
+    pub id: String,
+    #[command(flatten)]
+    pub common: BoardArgs,
+}
+
+/// Arguments of `ergocell calibrate stereo`.
+#[derive(Debug, clap::Args)]
+pub struct StereoArgs {
+    /// Left camera images: a folder or a glob.
+    #[arg(long)]
+    pub left: String,
+    /// Right camera images: a folder or a glob (same count, paired in sorted order).
+    #[arg(long)]
+    pub right: String,
+    /// Camera ids written to the rig file.
+    #[arg(long, default_value = "left")]
+    pub left_id: String,
+    #[arg(long, default_value = "right")]
+    pub right_id: String,
+    /// Refine both cameras' intrinsics in the stereo solve (default: held as calibrated alone).
+    #[arg(long)]
+    pub refine_intrinsics: bool,
+    #[command(flatten)]
+    pub common: BoardArgs,
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    match &args.command {
+        CalibrateCommand::Intrinsics(a) => run_intrinsics(a),
+        CalibrateCommand::Stereo(a) => run_stereo(a),
+    }
+}
+
+fn board_of(common: &BoardArgs) -> anyhow::Result<BoardSpec> {
+    BoardSpec::parse(&common.board, common.square_m).map_err(|e| UsageError(e.to_string()).into())
+}
+
+fn camera_id(name: &str) -> anyhow::Result<CameraId> {
+    CameraId::new(name).map_err(|e| UsageError(e.to_string()).into())
+}
+
+/// One image's detection: corners, or why not.
+struct ImageResult {
+    path: PathBuf,
+    size_px: Option<(u32, u32)>,
+    corners: Result<Vec<Point2<f64>>, String>,
+}
+
+fn run_intrinsics(args: &IntrinsicsArgs) -> anyhow::Result<()> {
+    let board = board_of(&args.common)?;
+    let id = camera_id(&args.id)?;
+    let paths = list_images(&args.images)?;
+    let results = detect_all(&paths, &board)?;
+    let size = common_size(&results, &id)?;
+    let used: Vec<usize> = (0..results.len())
+        .filter(|&i| results[i].corners.is_ok())
+        .collect();
+    let views: Vec<Vec<Point2<f64>>> = used
+        .iter()
+        .filter_map(|&i| results[i].corners.clone().ok())
+        .collect();
+    let calib = calibrate_camera(&views, &board, size, SolveOptions::default());
+    let calib = match calib {
+        Ok(c) => c,
+        Err(e) => {
+            print_intrinsics_table(&results, &[], &[]);
+            return Err(usage_if_too_few(e));
+        }
+    };
+    print_intrinsics_table(&results, &used, &calib.view_rms_px);
+    let k = calib.intrinsics;
+    println!(
+        "\n{id}: fx {:.3} fy {:.3} cx {:.3} cy {:.3} px; distortion k1 k2 p1 p2 k3 = {:?}",
+        k.fx,
+        k.fy,
+        k.cx,
+        k.cy,
+        calib.distortion.to_array()
+    );
+    println!(
+        "RMS reprojection error {:.4} px over {} views",
+        calib.rms_px,
+        views.len()
+    );
+    let camera = Camera::new(
+        id,
+        calib.intrinsics,
+        calib.distortion,
+        Rotation3::identity(),
+        Vector3::zeros(),
+    )?;
+    let rig = CameraRig::new(vec![camera], &[], None)?;
+    write_rig(&rig, &args.common)
+}
+
+fn run_stereo(args: &StereoArgs) -> anyhow::Result<()> {
+    let board = board_of(&args.common)?;
+    let (left_id, right_id) = (camera_id(&args.left_id)?, camera_id(&args.right_id)?);
+    if left_id == right_id {
+        anyhow::bail!(UsageError(format!(
+            "--left-id and --right-id are both `{left_id}`"
+        )));
+    }
+    let left_paths = list_images(&args.left)?;
+    let right_paths = list_images(&args.right)?;
+    if left_paths.len() != right_paths.len() {
+        anyhow::bail!(UsageError(format!(
+            "{} left images but {} right images: stereo images must pair up",
+            left_paths.len(),
+            right_paths.len()
+        )));
+    }
+    let mut all = left_paths.clone();
+    all.extend(right_paths.iter().cloned());
+    let mut results = detect_all(&all, &board)?;
+    let right_results = results.split_off(left_paths.len());
+    let left_results = results;
+    let views = |results: &[ImageResult], id: &CameraId| -> anyhow::Result<CameraViews> {
+        Ok(CameraViews {
+            id: id.clone(),
+            image_size_px: common_size(results, id)?,
+            frames: results.iter().map(|r| r.corners.clone().ok()).collect(),
+        })
+    };
+    let left = views(&left_results, &left_id)?;
+    let right = views(&right_results, &right_id)?;
+    let options = RigOptions {
+        refine_intrinsics: args.refine_intrinsics,
+        ..RigOptions::default()
+    };
+    let calib = match calibrate_stereo(left, right, &board, options) {
+        Ok(c) => c,
+        Err(e) => {
+            print_stereo_table(&left_results, &right_results, None);
+            return Err(usage_if_too_few(e));
+        }
+    };
+    print_stereo_table(&left_results, &right_results, Some(&calib.view_rms_px));
+    println!();
+    for (cam, single) in calib.rig.cameras().iter().zip(&calib.single) {
+        let k = cam.intrinsics;
+        println!(
+            "{}: fx {:.3} fy {:.3} cx {:.3} cy {:.3} px; distortion {:?}; alone: RMS {:.4} px",
+            cam.id,
+            k.fx,
+            k.fy,
+            k.cx,
+            k.cy,
+            cam.distortion.to_array(),
+            single.rms_px
+        );
+    }
+    let T = calib
+        .T_between(0, 1)
+        .context("the stereo rig lost a camera")?;
+    let t = T.translation.vector;
+    let r_deg = T.rotation.scaled_axis() * (180.0 / std::f64::consts::PI);
+    println!(
+        "stereo: RMS {:.4} px; baseline {:.2} mm; T_right_left: t = [{:.5}, {:.5}, {:.5}] m, rotation vector = [{:.3}, {:.3}, {:.3}] deg",
+        calib.rms_px,
+        calib.baseline_m(0, 1).unwrap_or(f64::NAN) * 1e3,
+        t.x,
+        t.y,
+        t.z,
+        r_deg.x,
+        r_deg.y,
+        r_deg.z
+    );
+    write_rig(&calib.rig, &args.common)
+}
+
+fn usage_if_too_few(e: CalibrationError) -> anyhow::Error {
+    match e {
+        CalibrationError::TooFewViews { .. } => UsageError(format!(
+            "{e} (see the table above for why images were rejected)"
+        ))
+        .into(),
+        other => anyhow::Error::new(other).context("calibration failed"),
+    }
+}
+
+fn write_rig(rig: &CameraRig, common: &BoardArgs) -> anyhow::Result<()> {
+    let text = if common.format == "anipose" {
+        to_anipose_toml(rig)
+    } else {
+        to_ergocell_toml(rig)
+    };
+    std::fs::write(&common.out, text)
+        .with_context(|| format!("writing {}", common.out.display()))?;
+    eprintln!("wrote {} ({} format)", common.out.display(), common.format);
+    Ok(())
+}
+
+/// The image size shared by a camera's images (the first decodable one's); a different size is an
+/// input error.
+fn common_size(results: &[ImageResult], id: &CameraId) -> anyhow::Result<(u32, u32)> {
+    let mut size = None;
+    for (view, r) in results.iter().enumerate() {
+        if let Some(s) = r.size_px {
+            match size {
+                None => size = Some(s),
+                Some(want) if want != s => {
+                    return Err(UsageError(
+                        CalibrationError::ImageSizeMismatch {
+                            camera: id.to_string(),
+                            view,
+                            got_w: s.0,
+                            got_h: s.1,
+                            want_w: want.0,
+                            want_h: want.1,
+                        }
+                        .to_string(),
+                    )
+                    .into())
+                }
+                Some(_) => {}
+            }
+        }
+    }
+    size.ok_or_else(|| UsageError(format!("camera `{id}`: no image could be decoded")).into())
+}
+
+/// Reads, decodes and detects every image, on all cores, with a progress bar on a terminal.
+fn detect_all(paths: &[PathBuf], board: &BoardSpec) -> anyhow::Result<Vec<ImageResult>> {
+    let bytes: Vec<Vec<u8>> = paths
+        .iter()
+        .map(|p| std::fs::read(p).with_context(|| format!("reading {}", p.display())))
+        .collect::<anyhow::Result<_>>()?;
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = ProgressBar::new(paths.len() as u64);
+        if let Ok(style) =
+            ProgressStyle::with_template("detecting corners {bar:30} {pos}/{len} {wide_msg}")
+        {
+            bar.set_style(style);
+        }
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
+    let workers = std::thread::available_parallelism()
+        .map_or(1, std::num::NonZeroUsize::get)
+        .min(paths.len().max(1));
+    let mut results: Vec<Option<ImageResult>> = (0..paths.len()).map(|_| None).collect();
+    std::thread::scope(|scope| {
+        let chunk = paths.len().div_ceil(workers).max(1);
+        for (k, slot) in results.chunks_mut(chunk).enumerate() {
+            let bar = &bar;
+            let bytes = &bytes;
+            scope.spawn(move || {
+                for (j, out) in slot.iter_mut().enumerate() {
+                    let i = k * chunk + j;
+                    let path = &paths[i];
+                    let name = path.display().to_string();
+                    *out = Some(match GrayImage::decode(&bytes[i], &name) {
+                        Ok(img) => ImageResult {
+                            path: path.clone(),
+                            size_px: Some(img.size_px()),
+                            corners: detect_checkerboard(&img, board)
+                                .map(|d| d.corners)
+                                .map_err(|why| why.to_string()),
+                        },
+                        Err(e) => ImageResult {
+                            path: path.clone(),
+                            size_px: None,
+                            corners: Err(e.to_string()),
+                        },
+                    });
+                    bar.inc(1);
+                }
+            });
+        }
+    });
+    bar.finish_and_clear();
+    Ok(results.into_iter().flatten().collect())
+}
+
+fn file_name(p: &Path) -> String {
+    p.file_name().map_or_else(
+        || p.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
+}
+
+fn print_intrinsics_table(results: &[ImageResult], used: &[usize], errors: &[f64]) {
+    println!("{:<28} {:<9} {:>9}  why", "image", "status", "error px");
+    for (i, r) in results.iter().enumerate() {
+        let name = file_name(&r.path);
+        match &r.corners {
+            Ok(_) => {
+                let err = used
+                    .iter()
+                    .position(|&u| u == i)
+                    .and_then(|k| errors.get(k))
+                    .map_or_else(|| "-".to_owned(), |e| format!("{e:.4}"));
+                println!("{name:<28} {:<9} {err:>9}", "used");
+            }
+            Err(why) => println!("{name:<28} {:<9} {:>9}  {why}", "rejected", "-"),
+        }
+    }
+}
+
+fn print_stereo_table(
+    left: &[ImageResult],
+    right: &[ImageResult],
+    errors: Option<&Vec<Vec<Option<f64>>>>,
+) {
+    println!(
+        "{:<22} {:<22} {:<9} {:>8} {:>8}  why",
+        "left", "right", "status", "left px", "right px"
+    );
+    for (f, (l, r)) in left.iter().zip(right).enumerate() {
+        let err = |cam: usize| {
+            errors
+                .and_then(|e| e.get(cam)?.get(f).copied().flatten())
+                .map_or_else(|| "-".to_owned(), |e| format!("{e:.4}"))
+        };
+        let why: Vec<String> = [("left", &l.corners), ("right", &r.corners)]
+            .iter()
+            .filter_map(|(side, c)| c.as_ref().err().map(|w| format!("{side}: {w}")))
+            .collect();
+        let status = if why.is_empty() { "used" } else { "rejected" };
+        println!(
+            "{:<22} {:<22} {status:<9} {:>8} {:>8}  {}",
+            file_name(&l.path),
+            file_name(&r.path),
+            err(0),
+            err(1),
+            why.join("; ")
+        );
+    }
+}
+
+/// The images of `spec`: a folder (its .jpg/.jpeg/.png files), a glob with `*`/`?` in the file
+/// name (`data/left*.jpg`), or one file; sorted by name.
+fn list_images(spec: &str) -> anyhow::Result<Vec<PathBuf>> {
+    let path = Path::new(spec);
+    let is_image = |p: &Path| {
+        p.extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "jpg" | "jpeg" | "png"))
+    };
+    let mut out: Vec<PathBuf> = if path.is_dir() {
+        std::fs::read_dir(path)
+            .with_context(|| format!("listing {spec}"))?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.is_file() && is_image(p))
+            .collect()
+    } else if spec.contains(['*', '?']) {
+        let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
+        let dir = dir.unwrap_or_else(|| Path::new("."));
+        let pattern = file_name(path);
+        if dir.to_string_lossy().contains(['*', '?']) {
+            anyhow::bail!(UsageError(format!(
+                "`{spec}`: wildcards are supported in the file name only"
+            )));
+        }
+        std::fs::read_dir(dir)
+            .with_context(|| format!("listing {}", dir.display()))?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.is_file() && wildcard_match(&pattern, &file_name(p)))
+            .collect()
+    } else if path.is_file() {
+        vec![path.to_path_buf()]
+    } else {
+        anyhow::bail!(UsageError(format!("`{spec}`: no such folder or file")));
+    };
+    out.sort();
+    if out.is_empty() {
+        anyhow::bail!(UsageError(format!("`{spec}`: no images found")));
+    }
+    Ok(out)
+}
+
+/// Shell-style match of `*` (any run) and `?` (one character).
+fn wildcard_match(pattern: &str, name: &str) -> bool {
+    let p: Vec<char> = pattern.chars().collect();
+    let n: Vec<char> = name.chars().collect();
+    let (mut pi, mut ni) = (0, 0);
+    let (mut star, mut mark) = (None, 0);
+    while ni < n.len() {
+        if pi < p.len() && (p[pi] == '?' || p[pi] == n[ni]) {
+            pi += 1;
+            ni += 1;
+        } else if pi < p.len() && p[pi] == '*' {
+            star = Some(pi);
+            mark = ni;
+            pi += 1;
+        } else if let Some(s) = star {
+            pi = s + 1;
+            mark += 1;
+            ni = mark;
+        } else {
+            return false;
+        }
+    }
+    while pi < p.len() && p[pi] == '*' {
+        pi += 1;
+    }
+    pi == p.len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wildcard_match;
+
+    #[test]
+    fn wildcards_match_like_a_shell() {
+        assert!(wildcard_match("left*.jpg", "left01.jpg"));
+        assert!(!wildcard_match("left*.jpg", "right01.jpg"));
+        assert!(wildcard_match("l?ft0*", "left01.jpg"));
+        assert!(!wildcard_match("left?.jpg", "left01.jpg"));
+        assert!(wildcard_match("*", "anything"));
+    }
+}
