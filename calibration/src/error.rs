@@ -48,6 +48,15 @@ pub enum CalibrationError {
     /// The closed-form initialisation found no physical camera (degenerate views: all boards parallel).
     #[error("closed-form initialisation failed: {0}")]
     Initialisation(String),
+    /// The views do not determine the camera (e.g. every board parallel to the image plane): the
+    /// estimate ran off to an implausible value.
+    #[error("the views do not determine the camera: {field} = {value} is implausible for a {width_px}x{height_px} px image (tilt the board between views)")]
+    Degenerate {
+        field: &'static str,
+        value: f64,
+        width_px: u32,
+        height_px: u32,
+    },
     /// Rig cameras cannot be put in one frame: a camera shares no frame with the others.
     #[error("camera `{0}` shares no checkerboard view with the rest of the rig")]
     Disconnected(String),

@@ -138,6 +138,7 @@ pub fn calibrate_camera(
         T_camera_board.push(pose);
     }
     check_camera(&intrinsics, &distortion)?;
+    check_determined(&intrinsics)?;
     Ok(CameraCalibration {
         intrinsics,
         distortion,
@@ -146,6 +147,35 @@ pub fn calibrate_camera(
         view_rms_px,
         report,
     })
+}
+
+/// Rejects an estimate the views did not pin down: focal lengths beyond 100 image widths (or below
+/// 1/20), an aspect ratio beyond 3, a principal point outside the image.
+pub(crate) fn check_determined(k: &Intrinsics) -> Result<()> {
+    let size = f64::from(k.width_px.max(k.height_px));
+    let bad = |field, value| {
+        Err(CalibrationError::Degenerate {
+            field,
+            value,
+            width_px: k.width_px,
+            height_px: k.height_px,
+        })
+    };
+    for (field, f) in [("fx", k.fx), ("fy", k.fy)] {
+        if !(f > 0.05 * size && f < 100.0 * size) {
+            return bad(field, f);
+        }
+    }
+    if k.fx / k.fy > 3.0 || k.fy / k.fx > 3.0 {
+        return bad("fx/fy", k.fx / k.fy);
+    }
+    if !(0.0..=f64::from(k.width_px)).contains(&k.cx) {
+        return bad("cx", k.cx);
+    }
+    if !(0.0..=f64::from(k.height_px)).contains(&k.cy) {
+        return bad("cy", k.cy);
+    }
+    Ok(())
 }
 
 /// Validates the estimate through the camera model's own checks.

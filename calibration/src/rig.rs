@@ -15,7 +15,9 @@ use nalgebra::{Isometry3, Point2, Point3, Quaternion, Translation3, UnitQuaterni
 
 use crate::board::BoardSpec;
 use crate::error::{CalibrationError, Result};
-use crate::intrinsics::{calibrate_camera, check_camera, CameraCalibration, SolveOptions};
+use crate::intrinsics::{
+    calibrate_camera, check_camera, check_determined, CameraCalibration, SolveOptions,
+};
 use crate::lm::{solve, BlockProblem, LmReport};
 use crate::model::{
     camera_of, params_of, pose_from_params, pose_to_params, rms_per_point, view_residuals,
@@ -254,6 +256,7 @@ pub fn calibrate_rig(
     for (c, cam) in cameras.iter().enumerate() {
         let (k, d) = camera_of(&intrinsics[c], cam.image_size_px);
         check_camera(&k, &d)?;
+        check_determined(&k)?;
         let t = &extrinsics[c];
         rig_cameras.push(Camera::new(
             cam.id.clone(),

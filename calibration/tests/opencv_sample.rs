@@ -276,3 +276,28 @@ fn calibrated_rig_round_trips_through_both_file_formats() {
         }
     }
 }
+
+/// Refining the intrinsics in the stereo solve (OpenCV's `stereoCalibrate` without
+/// `CALIB_FIX_INTRINSIC`) can only lower the joint error, and keeps the baseline.
+#[test]
+fn refining_intrinsics_in_the_stereo_solve_keeps_the_baseline() {
+    let Sample { left, calib, right } = sample();
+    let board = BoardSpec::new(9, 6, 0.025).unwrap();
+    let options = RigOptions {
+        refine_intrinsics: true,
+        ..RigOptions::default()
+    };
+    let refined = calibrate_stereo(left.clone(), right.clone(), &board, options).unwrap();
+    println!(
+        "refined intrinsics: rms {:.4} (fixed {:.4}), baseline {:.3} mm",
+        refined.rms_px,
+        calib.rms_px,
+        refined.baseline_m(0, 1).unwrap() * 1e3
+    );
+    assert!(refined.rms_px <= calib.rms_px + 1e-9);
+    let (a, b) = (
+        refined.baseline_m(0, 1).unwrap(),
+        calib.baseline_m(0, 1).unwrap(),
+    );
+    assert!((a / b - 1.0).abs() < 0.005, "{a} vs {b}");
+}

@@ -132,7 +132,7 @@ fn run_intrinsics(args: &IntrinsicsArgs) -> anyhow::Result<()> {
         Ok(c) => c,
         Err(e) => {
             print_intrinsics_table(&results, &[], &[]);
-            return Err(usage_if_too_few(e));
+            return Err(usage_if_bad_views(e));
         }
     };
     print_intrinsics_table(&results, &used, &calib.view_rms_px);
@@ -200,7 +200,7 @@ fn run_stereo(args: &StereoArgs) -> anyhow::Result<()> {
         Ok(c) => c,
         Err(e) => {
             print_stereo_table(&left_results, &right_results, None);
-            return Err(usage_if_too_few(e));
+            return Err(usage_if_bad_views(e));
         }
     };
     print_stereo_table(&left_results, &right_results, Some(&calib.view_rms_px));
@@ -237,12 +237,16 @@ fn run_stereo(args: &StereoArgs) -> anyhow::Result<()> {
     write_rig(&calib.rig, &args.common)
 }
 
-fn usage_if_too_few(e: CalibrationError) -> anyhow::Error {
+fn usage_if_bad_views(e: CalibrationError) -> anyhow::Error {
     match e {
         CalibrationError::TooFewViews { .. } => UsageError(format!(
             "{e} (see the table above for why images were rejected)"
         ))
         .into(),
+        // the images cannot determine the camera: an input problem, not a failure of ours
+        CalibrationError::Degenerate { .. } | CalibrationError::Initialisation(_) => {
+            UsageError(e.to_string()).into()
+        }
         other => anyhow::Error::new(other).context("calibration failed"),
     }
 }
