@@ -184,16 +184,16 @@ fn chess_candidates(img: &GrayImage) -> Vec<(Point2<f64>, f64)> {
     if w <= 2 * border || h <= 2 * border {
         return Vec::new();
     }
-    let mut response = vec![0.0f64; w * h];
-    let mut max_r = 0.0f64;
+    let mut response = vec![0.0f32; w * h];
+    let mut max_r = 0.0f32;
     let data = img.data();
     let offsets: Vec<isize> = ring.iter().map(|(dx, dy)| dy * w as isize + dx).collect();
+    let mut s = [0.0f32; 16];
     for y in border..h - border {
         for x in border..w - border {
             let idx = y * w + x;
-            let mut s = [0.0f64; 16];
-            for (n, o) in offsets.iter().enumerate() {
-                s[n] = f64::from(data[idx.wrapping_add_signed(*o)]);
+            for (v, o) in s.iter_mut().zip(&offsets) {
+                *v = data[idx.wrapping_add_signed(*o)];
             }
             let mut sum_r = 0.0;
             for n in 0..4 {
@@ -203,15 +203,16 @@ fn chess_candidates(img: &GrayImage) -> Vec<(Point2<f64>, f64)> {
             for n in 0..8 {
                 diff_r += (s[n] - s[n + 8]).abs();
             }
-            let ring_mean = s.iter().sum::<f64>() / 16.0;
-            let local_mean = f64::from(
-                data[idx] + data[idx + 1] + data[idx - 1] + data[idx + w] + data[idx - w],
-            ) / 5.0;
+            let ring_mean = s.iter().sum::<f32>() / 16.0;
+            let local_mean =
+                (data[idx] + data[idx + 1] + data[idx - 1] + data[idx + w] + data[idx - w]) / 5.0;
             let r = sum_r - diff_r - 16.0 * (ring_mean - local_mean).abs();
             response[idx] = r;
             max_r = max_r.max(r);
         }
     }
+    let response: Vec<f64> = response.into_iter().map(f64::from).collect();
+    let max_r = f64::from(max_r);
     if max_r <= 0.0 {
         return Vec::new();
     }
