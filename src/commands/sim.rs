@@ -11,6 +11,7 @@
 //! The handover points come from `trajectories/c1..c3.toml` (station frame) placed in the world with
 //! `config/cell.toml`'s `[station]`; "before adaptation" is the c2 point (set for a 1.75 m operator).
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
@@ -172,7 +173,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
     let statures = |n: usize| -> Vec<f64> {
         (0..n)
-            .map(|i| 1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64)
+            .map(|i| ((1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64) * 1e6).round() / 1e6)
             .collect()
     };
     let (value, figures) = match args.experiment {
@@ -219,18 +220,59 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             (serde_json::to_value(&r)?, plot_height(&r, &c.out_dir)?)
         }
         Experiment::RulaAgreement => {
-            let r = experiments::rula_agreement(
-                &setup,
-                &handovers,
-                &statures(c.operators.unwrap_or(6)),
-                c.cycles,
-                &mut tick,
-            )?;
+            let operators = statures(c.operators.unwrap_or(6));
+            let r =
+                experiments::rula_agreement(&setup, &handovers, &operators, c.cycles, &mut tick)?;
+            // The same sessions at other pixel-noise levels: how agreement depends on the detector.
+            let mut sweep = Vec::new();
+            for noise_px in NOISE_SWEEP_PX {
+                let s = Setup {
+                    noise: DetectorNoise {
+                        pixel_sigma_px: noise_px,
+                        ..setup.noise
+                    },
+                    ..setup.clone()
+                };
+                let a = experiments::rula_agreement(
+                    &s,
+                    &handovers,
+                    &operators,
+                    c.cycles,
+                    &mut |_, _| {},
+                )?;
+                sweep.push((noise_px, a));
+            }
             pb.finish_and_clear();
             if !c.json {
                 print_agreement(&r);
+                println!("noise sweep (σ px: grand exact / κ, action level exact / κ):");
+                for (n, a) in &sweep {
+                    println!(
+                        "  {n:>4.1} px: {:.3} / {:.3}, {:.3} / {:.3}",
+                        a.grand_score.exact,
+                        a.grand_score.kappa,
+                        a.action_level.exact,
+                        a.action_level.kappa
+                    );
+                }
             }
-            (serde_json::to_value(&r)?, plot_agreement(&r, &c.out_dir)?)
+            let mut value = serde_json::to_value(&r)?;
+            if let Some(obj) = value.as_object_mut() {
+                let rows = sweep
+                    .iter()
+                    .map(|(n, a)| {
+                        serde_json::json!({
+                            "noise_px": n,
+                            "grand_score": {"exact": a.grand_score.exact, "kappa": a.grand_score.kappa},
+                            "action_level": {"exact": a.action_level.exact, "kappa": a.action_level.kappa},
+                        })
+                    })
+                    .collect();
+                obj.insert("noise_sweep".into(), serde_json::Value::Array(rows));
+            }
+            let mut figures = plot_agreement(&r, &c.out_dir)?;
+            figures.push(plot_noise_sweep(&sweep, &c.out_dir)?);
+            (value, figures)
         }
     };
     let mut doc = value;
@@ -252,7 +294,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     std::fs::write(&json_path, format!("{text}\n"))
         .with_context(|| format!("writing {}", json_path.display()))?;
     if c.json {
-        println!("{text}");
+        // A closed pipe (`| head`) is not an error worth a panic.
+        let mut out = std::io::stdout().lock();
+        if let Err(e) = writeln!(out, "{text}") {
+            if e.kind() != std::io::ErrorKind::BrokenPipe {
+                return Err(e).context("writing to stdout");
+            }
+        }
     } else {
         println!("wrote {}", json_path.display());
         for f in figures {
@@ -261,6 +309,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     Ok(())
 }
+
+/// Pixel-noise levels of the RULA-agreement sweep, pixels.
+const NOISE_SWEEP_PX: [f64; 6] = [0.5, 1.0, 2.0, 3.0, 4.0, 6.0];
 
 fn cm(x: Option<f64>) -> String {
     x.map_or_else(|| "   —  ".to_owned(), |v| format!("{:6.2}", v * 100.0))
@@ -382,73 +433,89 @@ fn plot_table1(r: &Table1, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
         .cloned()
         .chain(["paper_fusion".to_owned(), "default_fusion".to_owned()])
         .collect();
-    let max = r
-        .rmse_m
-        .values()
-        .flatten()
-        .flatten()
-        .fold(0.0f64, |a, b| a.max(*b))
-        * 100.0
-        * 1.15;
     let file = path.clone();
-    let root = SVGBackend::new(&file, (1200, 520)).into_drawing_area();
+    let root = SVGBackend::new(&file, (1200, 900)).into_drawing_area();
     root.fill(&WHITE).map_err(plot_err)?;
-    let n = r.landmarks.len();
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "Table 1 on the digital twin: RMSE per landmark (lower is better)",
-            ("sans-serif", 18),
-        )
-        .margin(15)
-        .x_label_area_size(70)
-        .y_label_area_size(60)
-        .build_cartesian_2d(0.0..n as f64, 0.0..max.max(0.1))
-        .map_err(plot_err)?;
-    let names = r.landmarks.clone();
-    chart
-        .configure_mesh()
-        .disable_x_mesh()
-        .x_labels(2 * n + 1)
-        .x_label_formatter(&|x| {
-            let i = x.floor() as usize;
-            if (x - i as f64 - 0.5).abs() < 0.01 && i < names.len() {
-                names[i].replace("left_", "L ").replace("right_", "R ")
-            } else {
-                String::new()
-            }
-        })
-        .y_desc("RMSE, cm")
-        .draw()
-        .map_err(plot_err)?;
-    let width = 0.85 / methods.len() as f64;
-    for (m, method) in methods.iter().enumerate() {
-        let color = COLORS[(m + COLORS.len() - methods.len().min(COLORS.len())) % COLORS.len()];
-        let values = &r.rmse_m[method];
+    let panels = root.split_evenly((2, 1));
+    for (panel, (title, values)) in panels.iter().zip([
+        (
+            "Table 1 on the digital twin: RMSE per landmark, cm (log scale; lower is better)",
+            &r.rmse_m,
+        ),
+        ("Median error per landmark, cm (log scale)", &r.median_m),
+    ]) {
+        let max = values
+            .values()
+            .flatten()
+            .flatten()
+            .fold(0.0f64, |a, b| a.max(*b))
+            * 100.0
+            * 2.0;
+        let floor = 0.1;
+        let n = r.landmarks.len();
+        let mut chart = ChartBuilder::on(panel)
+            .caption(title, ("sans-serif", 18))
+            .margin(15)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(0.0..n as f64, (floor..max.max(1.0)).log_scale())
+            .map_err(plot_err)?;
+        let names = r.landmarks.clone();
         chart
-            .draw_series(values.iter().enumerate().filter_map(|(i, v)| {
-                v.map(|v| {
-                    let x0 = i as f64 + 0.075 + m as f64 * width;
-                    Rectangle::new([(x0, 0.0), (x0 + width * 0.9, v * 100.0)], color.filled())
-                })
-            }))
-            .map_err(plot_err)?
-            .label(method.clone())
-            .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], color.filled()));
+            .configure_mesh()
+            .disable_x_mesh()
+            .x_labels(2 * n + 1)
+            .x_label_formatter(&|x| {
+                let i = x.floor() as usize;
+                if (x - i as f64 - 0.5).abs() < 0.01 && i < names.len() {
+                    names[i].replace("left_", "L ").replace("right_", "R ")
+                } else {
+                    String::new()
+                }
+            })
+            .y_label_formatter(&|y| format!("{y}"))
+            .y_desc("cm")
+            .draw()
+            .map_err(plot_err)?;
+        let width = 0.85 / methods.len() as f64;
+        for (m, method) in methods.iter().enumerate() {
+            let color = COLORS[(m + COLORS.len() - methods.len().min(COLORS.len())) % COLORS.len()];
+            let Some(v) = values.get(method) else {
+                continue;
+            };
+            chart
+                .draw_series(v.iter().enumerate().filter_map(|(i, v)| {
+                    v.map(|v| {
+                        let x0 = i as f64 + 0.075 + m as f64 * width;
+                        Rectangle::new(
+                            [(x0, floor), (x0 + width * 0.9, (v * 100.0).max(floor))],
+                            color.filled(),
+                        )
+                    })
+                }))
+                .map_err(plot_err)?
+                .label(method.clone())
+                .legend(move |(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 12, y + 5)], color.filled())
+                });
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(plot_err)?;
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(plot_err)?;
     root.present().map_err(plot_err)?;
     Ok(vec![path])
 }
 
+#[allow(clippy::too_many_arguments)]
 fn line_chart(
     path: &Path,
     title: &str,
+    x_desc: &str,
     y_desc: &str,
     x: &[f64],
     series: &[(&str, &[f64], RGBColor, bool)],
@@ -465,11 +532,14 @@ fn line_chart(
         .margin(15)
         .x_label_area_size(45)
         .y_label_area_size(55)
-        .build_cartesian_2d(x0 - 0.02..x1 + 0.02, y_range.0..y_range.1)
+        .build_cartesian_2d(
+            x0 - 0.02 * (x1 - x0)..x1 + 0.02 * (x1 - x0),
+            y_range.0..y_range.1,
+        )
         .map_err(plot_err)?;
     chart
         .configure_mesh()
-        .x_desc("operator stature, m")
+        .x_desc(x_desc)
         .y_desc(y_desc)
         .draw()
         .map_err(plot_err)?;
@@ -501,7 +571,7 @@ fn line_chart(
         .configure_series_labels()
         .background_style(WHITE.mix(0.9))
         .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(SeriesLabelPosition::LowerLeft)
         .draw()
         .map_err(plot_err)?;
     root.present().map_err(plot_err)?;
@@ -513,6 +583,7 @@ fn plot_adaptation(r: &Adaptation, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
     line_chart(
         &grand,
         "Mean RULA grand score while holding the part: before vs after adaptation",
+        "operator stature, m",
         "mean RULA grand score (worse side)",
         &r.heights_m,
         &[
@@ -579,6 +650,7 @@ fn plot_adaptation(r: &Adaptation, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
     line_chart(
         &regions,
         "Mean RULA score per body region (thin: before, thick: after adaptation)",
+        "operator stature, m",
         "mean region score",
         &r.heights_m,
         &series,
@@ -606,6 +678,7 @@ fn plot_adaptation(r: &Adaptation, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
     line_chart(
         &angles,
         "True joint angles while holding the part (thin: before, thick: after adaptation)",
+        "operator stature, m",
         "angle, degrees",
         &r.heights_m,
         &series,
@@ -679,6 +752,36 @@ fn plot_height(r: &HeightResult, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
         .map_err(plot_err)?;
     root.present().map_err(plot_err)?;
     Ok(vec![path])
+}
+
+fn plot_noise_sweep(sweep: &[(f64, RulaAgreement)], dir: &Path) -> anyhow::Result<PathBuf> {
+    let xs: Vec<f64> = sweep.iter().map(|(n, _)| *n).collect();
+    let pick =
+        |f: &dyn Fn(&RulaAgreement) -> f64| sweep.iter().map(|(_, a)| f(a)).collect::<Vec<f64>>();
+    let ge = pick(&|a| a.grand_score.exact);
+    let gk = pick(&|a| a.grand_score.kappa);
+    let le = pick(&|a| a.action_level.exact);
+    let lk = pick(&|a| a.action_level.kappa);
+    let anchor_po = vec![0.96; xs.len()];
+    let anchor_k = vec![0.84; xs.len()];
+    let path = dir.join("rula_agreement_noise.svg");
+    line_chart(
+        &path,
+        "RULA agreement with ground truth vs detector pixel noise",
+        "pixel noise σ, px",
+        "agreement",
+        &xs,
+        &[
+            ("grand score exact", &ge, COLORS[4], false),
+            ("grand score κ", &gk, COLORS[3], false),
+            ("action level exact", &le, COLORS[5], false),
+            ("action level κ", &lk, RGBColor(142, 36, 170), false),
+            ("Kinect anchor Po 0.96", &anchor_po, COLORS[0], true),
+            ("Kinect anchor κ 0.84", &anchor_k, COLORS[1], true),
+        ],
+        (0.0, 1.0),
+    )?;
+    Ok(path)
 }
 
 fn plot_agreement(r: &RulaAgreement, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
