@@ -3,8 +3,8 @@
 //!
 //! Figures (release, `cargo bench -p ergocell_calibration`), AMD EPYC, 2 cores, shared machine,
 //! ergocell 0.1.0, Rust 1.95:
-//! - `stereo_13_pairs` (single-threaded): 265–318 ms (two runs; the machine is shared);
-//! - `detect_one_image` (left01, decoded): 9–11.5 ms (ChESS ≈ 5.4 ms, blur ≈ 2 ms);
+//! - `stereo_13_pairs` (single-threaded): 265–318 ms (three runs; the machine is shared);
+//! - `detect_one_image` (left01, decoded): 8.5 ms (ChESS ≈ 4 ms, blur ≈ 2 ms);
 //! - OpenCV 5.0.0 (`docs/opencv_calibration_reference.py 5 1`, Python, same steps, median of 5):
 //!   146 ms with 1 thread, 155–170 ms with 2.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
