@@ -32,6 +32,21 @@ pub struct Detection {
     pub orientation: OrientationSource,
 }
 
+impl Detection {
+    /// The corners for a stereo or rig calibration, where every camera must list the same physical
+    /// corner first: rejected when only the image position fixed the order (a board whose
+    /// rows + cols is even looks the same turned 180°, so two cameras may disagree).
+    pub fn into_rig_corners(self, board: &BoardSpec) -> Result<Vec<Point2<f64>>, Rejection> {
+        match self.orientation {
+            OrientationSource::Colour => Ok(self.corners),
+            OrientationSource::ImagePosition => Err(Rejection::AmbiguousOrder {
+                cols: board.cols(),
+                rows: board.rows(),
+            }),
+        }
+    }
+}
+
 /// How a detection's corner order was fixed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum OrientationSource {
@@ -65,6 +80,9 @@ pub enum Rejection {
     LowContrast { contrast: f64 },
     /// A square's colour breaks the checkerboard pattern.
     ColoursDoNotAlternate { row: usize, col: usize },
+    /// The board is symmetric under a half turn (rows + cols even): its corner order cannot be
+    /// matched across cameras.
+    AmbiguousOrder { cols: usize, rows: usize },
     /// Sub-pixel refinement moved a corner too far from the lattice.
     RefinementDiverged {
         row: usize,
@@ -104,6 +122,11 @@ impl fmt::Display for Rejection {
             Self::ColoursDoNotAlternate { row, col } => {
                 write!(f, "square colours do not alternate at cell (row {row}, col {col})")
             }
+            Self::AmbiguousOrder { cols, rows } => write!(
+                f,
+                "a {cols}x{rows} board looks the same turned 180° (rows + cols even): the corner \
+                 order cannot be matched between cameras; use a board such as 9x6"
+            ),
             Self::RefinementDiverged { row, col, shift_px } => write!(
                 f,
                 "sub-pixel refinement moved corner (row {row}, col {col}) by {shift_px:.2} px"

@@ -49,7 +49,9 @@ impl Default for RigOptions {
 }
 
 /// The views of one camera: one entry per frame (the same frames for every camera), `None` where
-/// the board was not found.
+/// the board was not found. Corners come from
+/// [`Detection::into_rig_corners`](crate::detect::Detection::into_rig_corners), so every camera lists
+/// the same physical corner first.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CameraViews {
     pub id: CameraId,

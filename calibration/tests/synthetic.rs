@@ -315,3 +315,22 @@ fn a_corrupted_view_is_rejected_and_a_clean_one_is_not() {
     let got = detect_checkerboard(&damaged, &board);
     assert!(got.is_err(), "a board with a blotted corner was accepted");
 }
+
+/// An 8x6 board (rows + cols even) is found, but its order is only by image position: a rig must
+/// not use it; a 9x6 board's order comes from its colours.
+#[test]
+fn a_half_turn_symmetric_board_is_not_used_for_a_rig() {
+    let board = BoardSpec::new(8, 6, 0.025).unwrap();
+    let cam = left_camera();
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let T = poses(&board)[2];
+    let det = detect_checkerboard(&cam.render(&board, &T, &mut rng), &board).unwrap();
+    assert_eq!(det.orientation, OrientationSource::ImagePosition);
+    assert!(matches!(
+        det.into_rig_corners(&board),
+        Err(ergocell_calibration::Rejection::AmbiguousOrder { cols: 8, rows: 6 })
+    ));
+    let board = BoardSpec::new(9, 6, 0.025).unwrap();
+    let det = detect_checkerboard(&cam.render(&board, &T, &mut rng), &board).unwrap();
+    assert_eq!(det.into_rig_corners(&board).unwrap().len(), 54);
+}

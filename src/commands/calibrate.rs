@@ -118,7 +118,7 @@ fn run_intrinsics(args: &IntrinsicsArgs) -> anyhow::Result<()> {
     let board = board_of(&args.common)?;
     let id = camera_id(&args.id)?;
     let paths = list_images(&args.images)?;
-    let results = detect_all(&paths, &board)?;
+    let results = detect_all(&paths, &board, false)?;
     let size = common_size(&results, &id)?;
     let used: Vec<usize> = (0..results.len())
         .filter(|&i| results[i].corners.is_ok())
@@ -180,7 +180,7 @@ fn run_stereo(args: &StereoArgs) -> anyhow::Result<()> {
     }
     let mut all = left_paths.clone();
     all.extend(right_paths.iter().cloned());
-    let mut results = detect_all(&all, &board)?;
+    let mut results = detect_all(&all, &board, true)?;
     let right_results = results.split_off(left_paths.len());
     let left_results = results;
     let views = |results: &[ImageResult], id: &CameraId| -> anyhow::Result<CameraViews> {
@@ -292,8 +292,13 @@ fn common_size(results: &[ImageResult], id: &CameraId) -> anyhow::Result<(u32, u
     size.ok_or_else(|| UsageError(format!("camera `{id}`: no image could be decoded")).into())
 }
 
-/// Reads, decodes and detects every image, on all cores, with a progress bar on a terminal.
-fn detect_all(paths: &[PathBuf], board: &BoardSpec) -> anyhow::Result<Vec<ImageResult>> {
+/// Reads, decodes and detects every image, on all cores, with a progress bar on a terminal. With
+/// `for_rig`, views whose corner order cannot be matched across cameras are rejected.
+fn detect_all(
+    paths: &[PathBuf],
+    board: &BoardSpec,
+    for_rig: bool,
+) -> anyhow::Result<Vec<ImageResult>> {
     let bytes: Vec<Vec<u8>> = paths
         .iter()
         .map(|p| std::fs::read(p).with_context(|| format!("reading {}", p.display())))
@@ -328,7 +333,13 @@ fn detect_all(paths: &[PathBuf], board: &BoardSpec) -> anyhow::Result<Vec<ImageR
                             path: path.clone(),
                             size_px: Some(img.size_px()),
                             corners: detect_checkerboard(&img, board)
-                                .map(|d| d.corners)
+                                .and_then(|d| {
+                                    if for_rig {
+                                        d.into_rig_corners(board)
+                                    } else {
+                                        Ok(d.corners)
+                                    }
+                                })
                                 .map_err(|why| why.to_string()),
                         },
                         Err(e) => ImageResult {
