@@ -30,6 +30,7 @@ pub mod topics {
     pub const SESSION_STATE: &str = "/ergocell/session_state";
     pub const ERGONOMICS: &str = "/ergocell/ergonomics";
     pub const WARNINGS: &str = "/ergocell/warnings";
+    pub const SKELETON: &str = "/ergocell/skeleton";
     pub const JOINT_STATES: &str = "/joint_states";
     pub const JOINT_TRAJECTORY: &str = "/joint_trajectory_controller/joint_trajectory";
 }
@@ -249,6 +250,93 @@ fn side_message(side: Option<&SideAssessment>) -> RulaSide {
     }
 }
 
+/// The fused skeleton as RViz/Foxglove markers in the `world` frame: the landmarks as a sphere list
+/// (colour by action level: green 1, yellow 2, orange 3, red 4) and the rigid bones as a line list.
+pub fn skeleton_message(
+    skeleton: &ergocell_skeleton::Skeleton3,
+    action_level: u8,
+) -> ergocell_bridge::msg::MarkerArray {
+    use ergocell_bridge::msg::{ColorRGBA, Marker, MarkerArray, Point, Vector3};
+    let color = match action_level {
+        0 => ColorRGBA {
+            r: 0.6,
+            g: 0.6,
+            b: 0.6,
+            a: 1.0,
+        },
+        1 => ColorRGBA {
+            r: 0.1,
+            g: 0.8,
+            b: 0.2,
+            a: 1.0,
+        },
+        2 => ColorRGBA {
+            r: 0.9,
+            g: 0.8,
+            b: 0.1,
+            a: 1.0,
+        },
+        3 => ColorRGBA {
+            r: 1.0,
+            g: 0.5,
+            b: 0.0,
+            a: 1.0,
+        },
+        _ => ColorRGBA {
+            r: 0.9,
+            g: 0.1,
+            b: 0.1,
+            a: 1.0,
+        },
+    };
+    let point = |p: nalgebra::Point3<f64>| Point {
+        x: p.x,
+        y: p.y,
+        z: p.z,
+    };
+    let joints = Marker {
+        header: Header::new(skeleton.stamp_nanos, "world"),
+        ns: "operator".to_owned(),
+        id: 0,
+        r#type: Marker::SPHERE_LIST,
+        action: Marker::ADD,
+        scale: Vector3 {
+            x: 0.04,
+            y: 0.04,
+            z: 0.04,
+        },
+        color,
+        points: ergocell_skeleton::Landmark::ALL
+            .iter()
+            .filter_map(|lm| skeleton.position(*lm))
+            .map(point)
+            .collect(),
+        ..Marker::default()
+    };
+    let bones = Marker {
+        header: Header::new(skeleton.stamp_nanos, "world"),
+        ns: "operator".to_owned(),
+        id: 1,
+        r#type: Marker::LINE_LIST,
+        action: Marker::ADD,
+        scale: Vector3 {
+            x: 0.015,
+            ..Vector3::default()
+        },
+        color,
+        points: ergocell_skeleton::BONES
+            .iter()
+            .filter_map(|(a, b)| Some([skeleton.position(*a)?, skeleton.position(*b)?]))
+            .flatten()
+            .map(point)
+            .collect(),
+        ..Marker::default()
+    };
+    MarkerArray {
+        markers: vec![joints, bones],
+    }
+}
+
 /// The per-frame RULA state.
 pub fn ergonomic_message(a: &FrameAssessment) -> ErgonomicState {
     ErgonomicState {
@@ -333,12 +421,23 @@ pub fn record_events(
             )?,
             E::Warning(w) => rec.write(topics::WARNINGS, now_nanos, &warning_message(w))?,
             E::Frame {
-                assessment: Some(a),
+                skeleton,
+                assessment,
                 ..
-            } => rec.write(topics::ERGONOMICS, now_nanos, &ergonomic_message(a))?,
-            E::Frame {
-                assessment: None, ..
-            } => {}
+            } => {
+                let level = assessment
+                    .as_ref()
+                    .and_then(|a| a.headline().map(|h| h.scores.action_level))
+                    .unwrap_or(0);
+                rec.write(
+                    topics::SKELETON,
+                    now_nanos,
+                    &skeleton_message(skeleton, level),
+                )?;
+                if let Some(a) = assessment {
+                    rec.write(topics::ERGONOMICS, now_nanos, &ergonomic_message(a))?;
+                }
+            }
         }
     }
     Ok(())

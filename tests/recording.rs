@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use ergocell::recording::{topics, McapRecorder};
 use ergocell_bridge::cdr;
-use ergocell_bridge::msg::{Header, JointState, RosMessage, SessionState};
+use ergocell_bridge::msg::{Header, JointState, MarkerArray, RosMessage, SessionState};
 
 fn path(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name)
@@ -96,4 +96,33 @@ fn killed_recording_is_readable_up_to_the_last_second() {
         assert_eq!(*s, state(k as i64));
     }
     drop(rec);
+}
+
+#[test]
+fn skeleton_markers_hold_every_landmark_and_bone() {
+    let truth = ergocell_sim::Operator::new(1.75).unwrap();
+    let mut script = ergocell_sim::SessionScript::new(nalgebra::Point3::new(0.41, -0.10, 1.055));
+    script.cycles = 1;
+    let rig = ergocell_sim::ring_rig(6, &ergocell_sim::RingRigConfig::default()).unwrap();
+    let mut sim =
+        ergocell_sim::Simulation::new(rig, truth, script, ergocell_sim::SimConfig::new(1)).unwrap();
+    let tick = sim.step().unwrap().unwrap();
+    let m = ergocell::recording::skeleton_message(&tick.truth.skeleton, 3);
+    assert_eq!(m.markers.len(), 2);
+    assert_eq!(m.markers[0].points.len(), 33);
+    assert_eq!(
+        m.markers[1].points.len(),
+        2 * ergocell_skeleton::BONES.len()
+    );
+    assert_eq!(m.markers[0].header.frame_id, "world");
+    let p = tick
+        .truth
+        .skeleton
+        .position(ergocell_skeleton::Landmark::Nose)
+        .unwrap();
+    assert_eq!(m.markers[0].points[0].z, p.z);
+    assert_eq!(
+        cdr::decode::<MarkerArray>(&cdr::encode(&m).unwrap()).unwrap(),
+        m
+    );
 }

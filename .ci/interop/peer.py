@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from cyclonedds.core import Qos, Policy
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.types import float32, float64, int32, sequence, uint32
+from cyclonedds.idl.types import float32, float64, int32, sequence, uint8, uint32
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
@@ -99,6 +99,91 @@ class SessionState(IdlStruct, typename="ergocell_msgs::msg::dds_::SessionState_"
     stereo_pairs_tracking: uint32
 
 
+@dataclass
+class Point(IdlStruct, typename="geometry_msgs::msg::dds_::Point_"):
+    x: float64
+    y: float64
+    z: float64
+
+
+@dataclass
+class Quaternion(IdlStruct, typename="geometry_msgs::msg::dds_::Quaternion_"):
+    x: float64
+    y: float64
+    z: float64
+    w: float64
+
+
+@dataclass
+class Pose(IdlStruct, typename="geometry_msgs::msg::dds_::Pose_"):
+    position: Point
+    orientation: Quaternion
+
+
+@dataclass
+class Vector3(IdlStruct, typename="geometry_msgs::msg::dds_::Vector3_"):
+    x: float64
+    y: float64
+    z: float64
+
+
+@dataclass
+class ColorRGBA(IdlStruct, typename="std_msgs::msg::dds_::ColorRGBA_"):
+    r: float32
+    g: float32
+    b: float32
+    a: float32
+
+
+@dataclass
+class CompressedImage(IdlStruct, typename="sensor_msgs::msg::dds_::CompressedImage_"):
+    header: Header
+    format: str
+    data: sequence[uint8]
+
+
+@dataclass
+class UVCoordinate(IdlStruct, typename="visualization_msgs::msg::dds_::UVCoordinate_"):
+    u: float32
+    v: float32
+
+
+@dataclass
+class MeshFile(IdlStruct, typename="visualization_msgs::msg::dds_::MeshFile_"):
+    filename: str
+    data: sequence[uint8]
+
+
+@dataclass
+class Marker(IdlStruct, typename="visualization_msgs::msg::dds_::Marker_"):
+    """Jazzy layout (Iron added texture_resource, texture, uv_coordinates, mesh_file)."""
+
+    header: Header
+    ns: str
+    id: int32
+    type: int32
+    action: int32
+    pose: Pose
+    scale: Vector3
+    color: ColorRGBA
+    lifetime: Duration
+    frame_locked: bool
+    points: sequence[Point]
+    colors: sequence[ColorRGBA]
+    texture_resource: str
+    texture: CompressedImage
+    uv_coordinates: sequence[UVCoordinate]
+    text: str
+    mesh_resource: str
+    mesh_file: MeshFile
+    mesh_use_embedded_materials: bool
+
+
+@dataclass
+class MarkerArray(IdlStruct, typename="visualization_msgs::msg::dds_::MarkerArray_"):
+    markers: sequence[Marker]
+
+
 def stamp(ns):
     return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
 
@@ -139,6 +224,12 @@ def main():
         dp, Topic(dp, "rt/joint_trajectory_controller/joint_trajectory", JointTrajectory), qos=command
     )
     state_reader = DataReader(dp, Topic(dp, "rt/ergocell/session_state", SessionState), qos=state_qos)
+    per_frame = Qos(
+        Policy.Reliability.Reliable(max_blocking_time=1_000_000_000),
+        Policy.Durability.Volatile,
+        Policy.History.KeepLast(10),
+    )
+    skeleton_reader = DataReader(dp, Topic(dp, "rt/ergocell/skeleton", MarkerArray), qos=per_frame)
 
     report = {
         "camera_messages_sent": 0,
@@ -149,6 +240,9 @@ def main():
         "lock_sha256": lock["lock_sha256"],
         "trajectory_sha256_seen": [],
         "height_class_seen": [],
+        "skeletons": 0,
+        "skeleton_points_max": 0,
+        "skeleton_frame_ids": [],
     }
     position = list(home)
     active = None  # (start monotonic, JointTrajectory, names order)
@@ -192,6 +286,8 @@ def main():
             report["camera_messages_sent"] += 1
             i += 1
         for traj in traj_reader.take(N=10):
+            if not isinstance(traj, JointTrajectory):  # InvalidSample: a writer went away
+                continue
             position = positions_now(now)
             if len(traj.points) == 0:
                 active = None
@@ -208,7 +304,18 @@ def main():
                         "duration_s": p1.time_from_start.sec + p1.time_from_start.nanosec * 1e-9,
                     }
                 )
+        for sk in skeleton_reader.take(N=50):
+            if not isinstance(sk, MarkerArray):
+                continue
+            report["skeletons"] += 1
+            if sk.markers:
+                report["skeleton_points_max"] = max(report["skeleton_points_max"], len(sk.markers[0].points))
+                fid = sk.markers[0].header.frame_id
+                if fid not in report["skeleton_frame_ids"]:
+                    report["skeleton_frame_ids"].append(fid)
         for s in state_reader.take(N=50):
+            if not isinstance(s, SessionState):
+                continue
             if not report["states"] or report["states"][-1] != s.state:
                 report["states"].append(s.state)
             if s.trajectory_sha256 and s.trajectory_sha256 not in report["trajectory_sha256_seen"]:

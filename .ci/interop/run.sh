@@ -7,7 +7,8 @@
 #
 # Asserts, Cyclone → ergocell: the camera landmarks were fused, the height class decided, the session
 # ended after the operator left; ergocell → Cyclone: the locked trajectory (100 points, joint_1..7,
-# the lock's hash in the session state), the hold (empty trajectory) and the way home arrived.
+# the lock's hash in the session state), the hold (empty trajectory), the way home and the fused
+# skeleton (MarkerArray) arrived.
 # Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -67,5 +68,7 @@ check(r["lock_sha256"] in r["trajectory_sha256_seen"], "the session state carrie
 check("c2" in r["height_class_seen"], "the session state carried the height class")
 check("working" in r["states"] and "held" in r["states"] and r["states"][-1] == "session_ended",
       "session states working, held, session_ended arrived (reliable, transient local)")
+check(r["skeletons"] > 100 and r["skeleton_points_max"] >= 30 and r["skeleton_frame_ids"] == ["world"],
+      "the fused skeleton arrived as visualization_msgs/MarkerArray (Jazzy layout) in frame world")
 sys.exit(1 if fail else 0)
 PY

@@ -97,6 +97,30 @@ mod tests {
     }
 
     #[test]
+    fn marker_array_round_trips() {
+        use crate::msg::{Marker, MarkerArray, Point};
+        let m = MarkerArray {
+            markers: vec![Marker {
+                header: Header::new(7, "world"),
+                ns: "operator".into(),
+                id: 1,
+                r#type: Marker::SPHERE_LIST,
+                points: vec![Point {
+                    x: 1.0,
+                    y: 2.0,
+                    z: 3.0,
+                }],
+                text: "t".into(),
+                ..Marker::default()
+            }],
+        };
+        let bytes = encode(&m).unwrap();
+        assert_eq!(decode::<MarkerArray>(&bytes).unwrap(), m);
+        // sequence length 1, then the header's stamp (7 ns)
+        assert_eq!(&bytes[4..16], &[1, 0, 0, 0, 0, 0, 0, 0, 7, 0, 0, 0]);
+    }
+
+    #[test]
     fn refuses_foreign_encapsulation_and_short_payloads() {
         assert!(matches!(
             decode::<Time>(&[0, 1]),

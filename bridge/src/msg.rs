@@ -366,6 +366,155 @@ impl RosMessage for PostureWarning {
     ];
 }
 
+/// `geometry_msgs/Point`, metres.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Point {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+/// `geometry_msgs/Quaternion` (x, y, z, w).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Quaternion {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub w: f64,
+}
+
+impl Default for Quaternion {
+    fn default() -> Self {
+        Self {
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+            w: 1.0,
+        }
+    }
+}
+
+/// `geometry_msgs/Pose`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Pose {
+    pub position: Point,
+    pub orientation: Quaternion,
+}
+
+/// `geometry_msgs/Vector3`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Vector3 {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+/// `std_msgs/ColorRGBA`, each in `0..=1`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct ColorRGBA {
+    pub r: f32,
+    pub g: f32,
+    pub b: f32,
+    pub a: f32,
+}
+
+/// `sensor_msgs/CompressedImage` (only as the Marker's `texture`; left empty).
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct CompressedImage {
+    pub header: Header,
+    pub format: String,
+    pub data: Vec<u8>,
+}
+
+/// `visualization_msgs/UVCoordinate`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct UVCoordinate {
+    pub u: f32,
+    pub v: f32,
+}
+
+/// `visualization_msgs/MeshFile`.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct MeshFile {
+    pub filename: String,
+    pub data: Vec<u8>,
+}
+
+/// `visualization_msgs/Marker` in the **Jazzy** layout (Iron added `texture_resource`, `texture`,
+/// `uv_coordinates` and `mesh_file`; a Humble peer's Marker has a different wire layout).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct Marker {
+    pub header: Header,
+    pub ns: String,
+    pub id: i32,
+    pub r#type: i32,
+    pub action: i32,
+    pub pose: Pose,
+    pub scale: Vector3,
+    pub color: ColorRGBA,
+    pub lifetime: Duration,
+    pub frame_locked: bool,
+    pub points: Vec<Point>,
+    pub colors: Vec<ColorRGBA>,
+    pub texture_resource: String,
+    pub texture: CompressedImage,
+    pub uv_coordinates: Vec<UVCoordinate>,
+    pub text: String,
+    pub mesh_resource: String,
+    pub mesh_file: MeshFile,
+    pub mesh_use_embedded_materials: bool,
+}
+
+impl Marker {
+    pub const LINE_LIST: i32 = 5;
+    pub const SPHERE_LIST: i32 = 7;
+    pub const ADD: i32 = 0;
+}
+
+const MARKER_DEF: &str = "std_msgs/Header header\nstring ns\nint32 id\nint32 type\nint32 action\ngeometry_msgs/Pose pose\ngeometry_msgs/Vector3 scale\nstd_msgs/ColorRGBA color\nbuiltin_interfaces/Duration lifetime\nbool frame_locked\ngeometry_msgs/Point[] points\nstd_msgs/ColorRGBA[] colors\nstring texture_resource\nsensor_msgs/CompressedImage texture\nUVCoordinate[] uv_coordinates\nstring text\nstring mesh_resource\nMeshFile mesh_file\nbool mesh_use_embedded_materials\n";
+
+/// `visualization_msgs/MarkerArray`: the fused skeleton for RViz and Foxglove.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct MarkerArray {
+    pub markers: Vec<Marker>,
+}
+
+impl RosMessage for MarkerArray {
+    const PACKAGE: &'static str = "visualization_msgs";
+    const NAME: &'static str = "MarkerArray";
+    const DEFINITION: &'static str = "Marker[] markers\n";
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[
+        ("visualization_msgs/Marker", MARKER_DEF),
+        ("std_msgs/Header", HEADER_DEF),
+        ("builtin_interfaces/Time", TIME_DEF),
+        (
+            "geometry_msgs/Pose",
+            "Point position\nQuaternion orientation\n",
+        ),
+        ("geometry_msgs/Point", "float64 x\nfloat64 y\nfloat64 z\n"),
+        (
+            "geometry_msgs/Quaternion",
+            "float64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n",
+        ),
+        ("geometry_msgs/Vector3", "float64 x\nfloat64 y\nfloat64 z\n"),
+        (
+            "std_msgs/ColorRGBA",
+            "float32 r\nfloat32 g\nfloat32 b\nfloat32 a\n",
+        ),
+        ("builtin_interfaces/Duration", DURATION_DEF),
+        (
+            "sensor_msgs/CompressedImage",
+            "std_msgs/Header header\nstring format\nuint8[] data\n",
+        ),
+        ("visualization_msgs/UVCoordinate", "float32 u\nfloat32 v\n"),
+        (
+            "visualization_msgs/MeshFile",
+            "string filename\nuint8[] data\n",
+        ),
+    ];
+    const FIELDS: &'static [(&'static str, &'static str)] = &[("Marker[]", "markers")];
+}
+
 /// `(type, name)` of every field declared in a `.msg` text (comments, blank lines and constants
 /// skipped).
 pub fn msg_fields(definition: &str) -> Vec<(String, String)> {
@@ -402,6 +551,11 @@ mod tests {
         check::<RulaSide>();
         check::<ErgonomicState>();
         check::<PostureWarning>();
+        check::<MarkerArray>();
+        let marker: Vec<String> = msg_fields(MARKER_DEF).into_iter().map(|(_, n)| n).collect();
+        assert_eq!(marker.len(), 19, "Jazzy Marker has 19 fields");
+        assert_eq!(marker[3], "type");
+        assert_eq!(marker[18], "mesh_use_embedded_materials");
         assert_eq!(
             msg_fields(POINT_DEF).len(),
             5,

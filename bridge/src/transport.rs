@@ -14,8 +14,8 @@ use ros2_client::{
 use serde::Deserialize;
 
 use crate::msg::{
-    CameraLandmarks, ErgonomicState, JointState, JointTrajectory, PostureWarning, RosMessage,
-    SessionState,
+    CameraLandmarks, ErgonomicState, JointState, JointTrajectory, MarkerArray, PostureWarning,
+    RosMessage, SessionState,
 };
 use crate::qos::{self, TopicQos};
 use crate::BridgeError;
@@ -51,6 +51,9 @@ pub struct RosConfig {
     pub ergonomics_topic: String,
     #[serde(default = "default_warnings")]
     pub warnings_topic: String,
+    /// The fused skeleton (`visualization_msgs/MarkerArray`, Jazzy layout) for RViz and Foxglove.
+    #[serde(default = "default_skeleton")]
+    pub skeleton_topic: String,
 }
 
 fn default_namespace() -> String {
@@ -79,6 +82,9 @@ fn default_ergonomics() -> String {
 }
 fn default_warnings() -> String {
     "/ergocell/warnings".into()
+}
+fn default_skeleton() -> String {
+    "/ergocell/skeleton".into()
 }
 
 #[derive(Deserialize)]
@@ -221,6 +227,7 @@ pub struct CellTopics {
     pub session_state: Publisher<SessionState>,
     pub ergonomics: Publisher<ErgonomicState>,
     pub warnings: Publisher<PostureWarning>,
+    pub skeleton: Publisher<MarkerArray>,
 }
 
 impl CellTopics {
@@ -239,6 +246,7 @@ impl CellTopics {
             session_state: node.publisher(&cfg.session_state_topic, qos::SESSION_STATE)?,
             ergonomics: node.publisher(&cfg.ergonomics_topic, qos::PER_FRAME_STATE)?,
             warnings: node.publisher(&cfg.warnings_topic, qos::WARNINGS)?,
+            skeleton: node.publisher(&cfg.skeleton_topic, qos::PER_FRAME_STATE)?,
         })
     }
 }

@@ -19,7 +19,7 @@ use ergocell::session::{
     SessionState,
 };
 use ergocell_bridge::msg::{CameraLandmarks, JointState, JointTrajectory};
-use ergocell_bridge::transport::{publish, CellTopics, RosConfig, RosNode};
+use ergocell_bridge::transport::{publish, CellTopics, Publisher, RosConfig, RosNode};
 use ergocell_bridge::{cdr, qos};
 use ergocell_perception::rig_file::parse_rig;
 use futures::StreamExt as _;
@@ -84,7 +84,7 @@ fn instant() -> std::time::Instant {
 
 /// The robot over ROS 2: commands published on the trajectory topic, positions from `/joint_states`.
 struct RosRobot {
-    publisher: ergocell_bridge::transport::Publisher<JointTrajectory>,
+    publisher: Publisher<JointTrajectory>,
     latest: Arc<Mutex<Option<JointState>>>,
 }
 
@@ -173,7 +173,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             session_state,
             ergonomics,
             warnings,
+            skeleton,
         } = CellTopics::new(&mut node, &ros)?;
+        let out = Outputs {
+            session_state,
+            ergonomics,
+            warnings,
+            skeleton,
+        };
         let latest = Arc::new(Mutex::new(None::<JointState>));
         let mut robot = RosRobot {
             publisher: joint_trajectory,
@@ -205,7 +212,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             cameras.len(),
             ros.joint_trajectory_topic
         );
-        session_state
+        out.session_state
             .async_publish(recording::session_state_message(&machine, started, "started"))
             .await
             .map_err(|e| anyhow::anyhow!("publish session state: {e:?}"))?;
@@ -247,7 +254,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             let now = now_nanos();
             if interrupted.load(Ordering::SeqCst) {
                 let events = machine.shutdown(now, &mut robot, "Ctrl-C");
-                publish_events(&machine, now, &events, &session_state, &ergonomics, &warnings)
+                publish_events(&machine, now, &events, &out)
                     .await?;
                 if let Some(rec) = recorder.as_mut() {
                     recording::record_events(rec, &machine, now, &events)?;
@@ -257,7 +264,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             if let Some(limit) = args.max_secs {
                 if (now - started) as f64 * 1e-9 > limit {
                     let events = machine.shutdown(now, &mut robot, "--max-secs reached");
-                    publish_events(&machine, now, &events, &session_state, &ergonomics, &warnings)
+                    publish_events(&machine, now, &events, &out)
                         .await?;
                     if let Some(rec) = recorder.as_mut() {
                         recording::record_events(rec, &machine, now, &events)?;
@@ -272,7 +279,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
             }
             let published_frame =
-                publish_events(&machine, now, &events, &session_state, &ergonomics, &warnings)
+                publish_events(&machine, now, &events, &out)
                     .await?;
             if let (Some(t0), true) = (arrival, published_frame) {
                 latencies_ms.push(t0.elapsed().as_secs_f64() * 1e3);
@@ -325,35 +332,51 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The cell's outputs.
+struct Outputs {
+    session_state: Publisher<ergocell_bridge::msg::SessionState>,
+    ergonomics: Publisher<ergocell_bridge::msg::ErgonomicState>,
+    warnings: Publisher<ergocell_bridge::msg::PostureWarning>,
+    skeleton: Publisher<ergocell_bridge::msg::MarkerArray>,
+}
+
 /// Publishes a step's events; true if a RULA state was published.
 async fn publish_events(
     machine: &SessionMachine,
     now: i64,
     events: &[SessionEvent],
-    session_state: &ergocell_bridge::transport::Publisher<ergocell_bridge::msg::SessionState>,
-    ergonomics: &ergocell_bridge::transport::Publisher<ergocell_bridge::msg::ErgonomicState>,
-    warnings: &ergocell_bridge::transport::Publisher<ergocell_bridge::msg::PostureWarning>,
+    out: &Outputs,
 ) -> anyhow::Result<bool> {
     let mut frame = false;
     for e in events {
         match e {
             SessionEvent::Frame {
-                assessment: Some(a),
+                skeleton,
+                assessment,
                 ..
             } => {
-                publish(ergonomics, recording::ergonomic_message(a)).await?;
-                frame = true;
+                if let Some(a) = assessment {
+                    publish(&out.ergonomics, recording::ergonomic_message(a)).await?;
+                    frame = true;
+                }
+                let level = assessment
+                    .as_ref()
+                    .and_then(|a| a.headline().map(|h| h.scores.action_level))
+                    .unwrap_or(0);
+                publish(&out.skeleton, recording::skeleton_message(skeleton, level)).await?;
             }
-            SessionEvent::Warning(w) => publish(warnings, recording::warning_message(w)).await?,
-            SessionEvent::Frame { .. } | SessionEvent::RobotCommandSent { .. } => {}
+            SessionEvent::Warning(w) => {
+                publish(&out.warnings, recording::warning_message(w)).await?;
+            }
+            SessionEvent::RobotCommandSent { .. } => {}
             SessionEvent::StateChanged { to, reason, .. } => {
                 let mut m = recording::session_state_message(machine, now, reason);
                 to.name().clone_into(&mut m.state);
-                publish(session_state, m).await?;
+                publish(&out.session_state, m).await?;
             }
             other => {
                 publish(
-                    session_state,
+                    &out.session_state,
                     recording::session_state_message(machine, now, &recording::describe(other)),
                 )
                 .await?;
