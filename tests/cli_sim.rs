@@ -1,0 +1,107 @@
+//! `ergocell sim` end to end: every experiment prints the JSON shape issue 5 promises, writes its JSON
+//! and figures, and the same seed gives byte-identical output (a short run: 2 operators, 1 cycle).
+
+// Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn run(experiment: &str, seed: u64, out: &Path, extra: &[&str]) -> String {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let output = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&root)
+        .args([
+            "sim",
+            experiment,
+            "--json",
+            "--operators",
+            "2",
+            "--cycles",
+            "1",
+        ])
+        .args(["--seed", &seed.to_string()])
+        .arg("--out-dir")
+        .arg(out)
+        .args(extra)
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{experiment}: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8(output.stdout).unwrap()
+}
+
+fn out_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn num_array(v: &serde_json::Value, len: usize) {
+    let a = v.as_array().unwrap();
+    assert_eq!(a.len(), len);
+}
+
+#[test]
+fn table1_has_the_promised_shape_and_is_reproducible() {
+    let dir = out_dir("sim_table1");
+    let a = run("table1", 3, &dir, &[]);
+    assert_eq!(a, run("table1", 3, &dir, &[]));
+    assert_ne!(a, run("table1", 4, &dir, &[]));
+    let v: serde_json::Value = serde_json::from_str(&a).unwrap();
+    num_array(&v["landmarks"], 12);
+    for key in ["S1", "S2", "S3", "paper_fusion", "default_fusion"] {
+        num_array(&v["rmse_m"][key], 12);
+    }
+    assert!(dir.join("table1.json").exists() && dir.join("table1_rmse.svg").exists());
+}
+
+#[test]
+fn adaptation_height_and_agreement_have_the_promised_shapes() {
+    let dir = out_dir("sim_others");
+    let v: serde_json::Value =
+        serde_json::from_str(&run("adaptation", 1, &dir, &["--cameras", "4"])).unwrap();
+    num_array(&v["heights_m"], 11);
+    num_array(&v["mean_grand_score_before"], 11);
+    num_array(&v["mean_grand_score_after"], 11);
+    assert_eq!(v["setup"]["camera_count"], 4);
+    let v: serde_json::Value = serde_json::from_str(&run("height", 1, &dir, &[])).unwrap();
+    for key in ["mae_m", "class_accuracy", "class_accuracy_beyond_2cm"] {
+        assert!(v[key].is_f64(), "{key}");
+    }
+    assert!(v["confidently_wrong"].is_u64());
+    let v: serde_json::Value =
+        serde_json::from_str(&run("rula-agreement", 1, &dir, &["--noise-px", "1"])).unwrap();
+    for group in ["grand_score", "action_level"] {
+        assert!(
+            v[group]["exact"].is_f64() && v[group]["kappa"].is_f64(),
+            "{group}"
+        );
+    }
+    for f in [
+        "adaptation_grand_score.svg",
+        "height_estimates.svg",
+        "rula_agreement.svg",
+        "rula_agreement_noise.svg",
+    ] {
+        assert!(dir.join(f).exists(), "{f}");
+    }
+}
+
+#[test]
+fn bad_camera_arguments_are_usage_errors() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let out = out_dir("sim_bad");
+    for cameras in ["0", "no/such/rig.toml"] {
+        let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(&root)
+            .args(["sim", "table1", "--cameras", cameras, "--out-dir"])
+            .arg(&out)
+            .status()
+            .unwrap();
+        assert!(!status.success(), "{cameras}");
+    }
+}
