@@ -24,6 +24,10 @@
 //! simulator has its own clock (tick `k` at `k · frame_period_nanos`) and never reads wall time.
 //! **No I/O**: callers pass parsed rigs and values.
 //!
+//! **Ground truth** per tick: the 33 true landmarks ([`GroundTruth::skeleton`]), the stature, the true
+//! joint angles ([`Posture`]) and the phase; true RULA is `ergocell_ergonomics::RulaAssessor` run on
+//! the true skeleton (as [`experiments`] does), so truth and pipeline are scored by the same code.
+//!
 //! # Example
 //! ```
 //! use ergocell_sim::{ring_rig, Operator, RingRigConfig, SessionScript, SimConfig, Simulation};
