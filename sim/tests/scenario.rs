@@ -150,7 +150,7 @@ fn pixel_noise_has_the_configured_spread_and_drops_their_rate() {
 }
 
 #[test]
-fn the_back_camera_pair_sees_less_of_the_face_than_the_front_pairs() {
+fn the_camera_behind_the_operator_sees_fewer_landmarks_than_a_front_one() {
     // S3 (cameras 4, 5) stands behind-left of the operator: the torso and head hide landmarks.
     let noise = DetectorNoise {
         occluded_report_probability: 0.0,
