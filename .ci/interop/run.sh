@@ -38,8 +38,22 @@ unshare -n -- bash -c '
   wait "$run"
 ' _ "$bin" "$tmp"
 
+# ergocell replay --ros → ergocell run (RustDDS both ends), with the repository's trajectories, which
+# ship without approvals: the cameras' session must be fused and classed, and the run must refuse to
+# move the robot (no approval).
+unshare -n -- bash -c '
+  set -euo pipefail
+  ip link set lo up
+  ip link set lo multicast on
+  ip route add 224.0.0.0/4 dev lo
+  "$1" --log "error" run --config config/cell.toml --trajectories trajectories --max-secs 20 > "$2/replay-run.log" 2>&1 &
+  run=$!
+  "$1" --log "error" replay "$2/session.mcap" --ros --speed 4 > "$2/replay.log"
+  wait "$run"
+' _ "$bin" "$tmp"
+
 cat "$tmp/run.log"
-python3 - "$tmp/peer.json" "$tmp/run.log" <<'PY'
+python3 - "$tmp/peer.json" "$tmp/run.log" "$tmp/replay-run.log" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 run = open(sys.argv[2]).read()
@@ -70,5 +84,8 @@ check("working" in r["states"] and "held" in r["states"] and r["states"][-1] == 
       "session states working, held, session_ended arrived (reliable, transient local)")
 check(r["skeletons"] > 100 and r["skeleton_points_max"] >= 30 and r["skeleton_frame_ids"] == ["world"],
       "the fused skeleton arrived as visualization_msgs/MarkerArray (Jazzy layout) in frame world")
+rr = open(sys.argv[3]).read()
+check("class c2" in rr and "not verified" in rr and "robot ← trajectory" not in rr,
+      "replay --ros fed run: session classed c2, and without an approval the robot never got a trajectory")
 sys.exit(1 if fail else 0)
 PY

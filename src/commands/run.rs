@@ -163,9 +163,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .enable_all()
         .build()
         .context("tokio runtime")?;
-    runtime.block_on(async {
-        let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name)?;
-        tokio::spawn(node.spinner()?);
+    let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name)?;
+    runtime.spawn(node.spinner()?);
+    let result = runtime.block_on(async {
         let CellTopics {
             cameras,
             joint_states,
@@ -325,7 +325,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             anyhow::bail!("interrupted: robot held");
         }
         anyhow::Ok(())
-    })?;
+    });
+    // The node first (it tells the spinner to stop), then a moment for the spinner to finish while
+    // the runtime still runs: every reader and writer says goodbye before the DDS participant goes.
+    drop(node);
+    runtime.block_on(async { tokio::time::sleep(std::time::Duration::from_millis(100)).await });
+    drop(runtime);
+    result?;
     if let Some(rec) = recorder {
         rec.finish()?;
     }
@@ -424,9 +430,9 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         .enable_all()
         .build()
         .context("tokio runtime")?;
-    runtime.block_on(async {
-        let mut node = RosNode::new(ros.domain_id, &ros.namespace, "replay")?;
-        tokio::spawn(node.spinner()?);
+    let mut node = RosNode::new(ros.domain_id, &ros.namespace, "replay")?;
+    runtime.spawn(node.spinner()?);
+    let result = runtime.block_on(async {
         let mut publishers = std::collections::BTreeMap::new();
         for id in &ros.cameras {
             let p =
@@ -458,5 +464,11 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
             args.recording.display()
         );
         anyhow::Ok(())
-    })
+    });
+    // The node first (it tells the spinner to stop), then a moment for the spinner to finish while
+    // the runtime still runs: every reader and writer says goodbye before the DDS participant goes.
+    drop(node);
+    runtime.block_on(async { tokio::time::sleep(std::time::Duration::from_millis(100)).await });
+    drop(runtime);
+    result
 }
