@@ -418,6 +418,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
             frames.push((m.log_time, lm));
         }
     }
+    frames.sort_by_key(|(t, _)| *t);
     if frames.is_empty() {
         return Err(UsageError(format!(
             "{}: no camera landmarks in the recording",
@@ -446,7 +447,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         let start = now_nanos();
         let mut sent = 0usize;
         for (log_time, mut m) in frames {
-            let offset_secs = (log_time - t0_log) as f64 * 1e-9 / args.speed;
+            let offset_secs = log_time.saturating_sub(t0_log) as f64 * 1e-9 / args.speed;
             let due = std::time::Duration::from_secs_f64(offset_secs);
             if let Some(wait) = due.checked_sub(t0.elapsed()) {
                 tokio::time::sleep(wait).await;
