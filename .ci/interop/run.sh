@@ -10,6 +10,9 @@
 # the lock's hash in the session state), the hold (empty trajectory), the way home and the fused
 # skeleton (MarkerArray) arrived.
 # Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
+# Measured on the dev machine (2 vCPUs shared with other builds; release; ros2-client 0.12.1, RustDDS
+# 0.15.1, cyclonedds 11.0.1), 2026-11-23, four runs: p50 0.13–0.18 ms, p99 0.29–1.96 ms, max ≤ 4.3 ms,
+# ergocell's CPU 1.9–2.1 % of one core. Not asserted (wall-clock figures vary with the machine's load).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=${1:-target/release/ergocell}
