@@ -389,3 +389,17 @@ fn views_round_trip_through_the_camera_message() {
     let mut source = ergocell::session::dummy::ScriptedSource::default();
     assert!(source.poll(0).unwrap().is_none());
 }
+
+#[test]
+fn same_seed_same_clock_same_session() {
+    let run = |name: &str| {
+        let mut r = Run::new(name, Some(TrajectoryClass::C2), 1);
+        r.run_until(8_000_000_000, &|_| false);
+        (r.events, r.robot.received)
+    };
+    let (a_events, a_robot) = run("det-a");
+    let (b_events, b_robot) = run("det-b");
+    assert!(a_events.len() > 80);
+    assert_eq!(a_events, b_events);
+    assert_eq!(a_robot, b_robot);
+}
