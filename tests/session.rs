@@ -187,6 +187,14 @@ fn whole_session_with_refused_change_degrade_hold_recovery_and_end() {
             assert_eq!(*lock_sha256, sha);
             assert_eq!(trajectory.points.len(), 100);
             assert_eq!(trajectory.joint_names[0], "joint_1");
+            let wire = run.robot.received[0].1.to_message(123);
+            assert_eq!(wire.header.stamp.to_nanos(), 0, "start on receipt");
+            assert_eq!(wire.points, trajectory.points);
+            let hold = RobotCommand::Hold {
+                reason: String::new(),
+            }
+            .to_message(123);
+            assert!(hold.points.is_empty() && hold.joint_names.is_empty());
         }
         other => panic!("expected the locked trajectory, got {other:?}"),
     }

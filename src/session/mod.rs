@@ -93,11 +93,15 @@ pub enum RobotCommand {
 
 impl RobotCommand {
     /// The message on the controller's `joint_trajectory` topic (a hold is the empty trajectory).
+    ///
+    /// A trajectory goes out with a zero `header.stamp`: the joint trajectory controller then starts it
+    /// on receipt, on its own clock. A stamp from this PC's clock would shift or cut the start if the
+    /// two clocks disagree (a past stamp skips points). `stamp_nanos` only stamps the hold.
     pub fn to_message(&self, stamp_nanos: i64) -> JointTrajectory {
         match self {
             Self::Execute { trajectory, .. } => {
                 let mut t = trajectory.clone();
-                t.header.stamp = ergocell_bridge::msg::Time::from_nanos(stamp_nanos);
+                t.header.stamp = ergocell_bridge::msg::Time::default();
                 t
             }
             Self::Hold { .. } => JointTrajectory {
