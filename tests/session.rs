@@ -411,3 +411,32 @@ fn same_seed_same_clock_same_session() {
     assert_eq!(a_events, b_events);
     assert_eq!(a_robot, b_robot);
 }
+
+#[test]
+fn one_camera_of_every_pair_dropped_holds_although_frames_are_fresh() {
+    let mut run = Run::new("halfpairs", Some(TrajectoryClass::C2), 3);
+    run.run_until(12_000_000_000, &|m| m.state() == SessionState::Working);
+    run.run_until(run.now + 5_500_000_000, &|_| false); // at the handover point
+    let rig = rig();
+    let lefts: Vec<usize> = rig.pairs().iter().map(|p| p.left).collect();
+    assert_eq!(lefts.len(), 3);
+    let t = run.now;
+    while run.now < t + 1_000_000_000 {
+        run.step(&|v| !lefts.contains(&v.camera));
+    }
+    assert_eq!(run.machine.state(), SessionState::Held);
+    assert_eq!(run.machine.pairs_tracking(), 0);
+    assert_eq!(run.machine.cameras_fresh(), 3);
+    assert!(matches!(
+        run.robot.received.last(),
+        Some((_, RobotCommand::Hold { reason })) if reason.contains("fewer than one stereo pair")
+    ));
+    // One pair back is enough.
+    let first_left = lefts[0];
+    let t = run.now;
+    while run.now < t + 1_500_000_000 {
+        run.step(&|v| v.camera == first_left || !lefts.contains(&v.camera));
+    }
+    assert_eq!(run.machine.state(), SessionState::Working);
+    assert_eq!(run.machine.pairs_tracking(), 1);
+}
