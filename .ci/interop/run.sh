@@ -35,7 +35,7 @@ unshare -n -- bash -c '
   ip link set lo multicast on
   ip route add 224.0.0.0/4 dev lo
   "$1" --log "warn,rustdds=error" run --config config/cell.toml --rig config/rig.toml \
-      --trajectories "$2/traj" --max-secs 90 --latency-report > "$2/run.log" 2> "$2/run.err" &
+      --trajectories "$2/traj" --sessions 1 --max-secs 90 --latency-report > "$2/run.log" 2> "$2/run.err" &
   run=$!
   python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 90 > "$2/peer.json"
   wait "$run"
@@ -52,7 +52,8 @@ unshare -n -- bash -c '
   "$1" --log "error" run --config config/cell.toml --trajectories trajectories --max-secs 20 > "$2/replay-run.log" 2>&1 &
   run=$!
   "$1" --log "error" replay "$2/session.mcap" --ros --speed 4 > "$2/replay.log"
-  wait "$run"
+  # Without an approval the session is aborted and run exits 1: expected here.
+  if wait "$run"; then echo "run exit 0" >> "$2/replay-run.log"; else echo "run exit $?" >> "$2/replay-run.log"; fi
 ' _ "$bin" "$tmp"
 
 cat "$tmp/run.log"
@@ -88,7 +89,7 @@ check("working" in r["states"] and "held" in r["states"] and r["states"][-1] == 
 check(r["skeletons"] > 100 and r["skeleton_points_max"] >= 30 and r["skeleton_frame_ids"] == ["world"],
       "the fused skeleton arrived as visualization_msgs/MarkerArray (Jazzy layout) in frame world")
 rr = open(sys.argv[3]).read()
-check("class c2" in rr and "not verified" in rr and "robot ← trajectory" not in rr,
+check("class c2" in rr and "not verified" in rr and "robot ← trajectory" not in rr and "run exit 1" in rr,
       "replay --ros fed run: session classed c2, and without an approval the robot never got a trajectory")
 sys.exit(1 if fail else 0)
 PY

@@ -46,6 +46,11 @@ pub struct Args {
     /// Stop (holding the robot) after this many seconds if the session has not ended.
     #[arg(long)]
     pub max_secs: Option<f64>,
+    /// Stop after this many sessions (default: one operator session after another until Ctrl-C). A
+    /// session that ends without the operator leaving normally (e.g. a trajectory that does not
+    /// verify) always stops the program with exit code 1: it needs a person.
+    #[arg(long)]
+    pub sessions: Option<u32>,
     /// Print the latency from a camera message's arrival to the RULA state published (p50/p99) and
     /// the process's CPU use at the end.
     #[arg(long)]
@@ -148,10 +153,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .approvals
         .clone()
         .unwrap_or_else(|| args.trajectories.join("approvals"));
-    let provider = FileTrajectories::new(&args.config, &args.trajectories, &approvals);
-    let mut machine =
+    let new_machine = || {
+        let provider = FileTrajectories::new(&args.config, &args.trajectories, &approvals);
         SessionMachine::new(rig.clone(), SessionConfig::default(), Box::new(provider))
-            .map_err(|e| anyhow::anyhow!(e))?;
+            .map_err(|e| anyhow::anyhow!(e))
+    };
+    let mut machine = new_machine()?;
     let mut recorder = args
         .record
         .as_deref()
@@ -204,6 +211,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let wall0 = instant();
         let mut latencies_ms: Vec<f64> = Vec::new();
         let mut rejected = 0u64;
+        let mut sessions_done = 0u32;
         println!(
             "ergocell run: node {}/{} on DDS domain {}, {} camera topics, robot on {}",
             ros.namespace,
@@ -288,23 +296,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 recording::record_events(rec, &machine, now, &events)?;
             }
             if machine.state() == SessionState::SessionEnded {
+                sessions_done += 1;
+                let more = args.sessions.is_none_or(|n| sessions_done < n);
+                if machine.summary().ended && more {
+                    print_summary(&machine, rejected);
+                    machine = new_machine()?;
+                    println!("next session: waiting for an operator");
+                    continue;
+                }
                 break;
             }
         }
         ctrl_c.abort();
-        let s = machine.summary();
-        println!(
-            "session: {} — {} frames fused, {} tracked, class {}, lock {}, {} hold(s), {} robot command(s), {} camera message(s) rejected; {}",
-            machine.state(),
-            s.frames_fused,
-            s.frames_tracked,
-            s.class.as_deref().unwrap_or("-"),
-            s.lock_sha256.as_deref().unwrap_or("-"),
-            s.holds,
-            s.robot_commands,
-            rejected,
-            s.end_reason
-        );
+        print_summary(&machine, rejected);
         if args.latency_report {
             latencies_ms.sort_by(f64::total_cmp);
             let wall = wall0.elapsed().as_secs_f64();
@@ -324,6 +328,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         if interrupted.load(Ordering::SeqCst) {
             anyhow::bail!("interrupted: robot held");
         }
+        if machine.state() == SessionState::SessionEnded && !machine.summary().ended {
+            anyhow::bail!("session {}", machine.summary().end_reason);
+        }
         anyhow::Ok(())
     });
     // The node first (it tells the spinner to stop), then a moment for the spinner to finish while
@@ -336,6 +343,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         rec.finish()?;
     }
     Ok(())
+}
+
+fn print_summary(machine: &SessionMachine, rejected: u64) {
+    let s = machine.summary();
+    println!(
+        "session: {} — {} frames fused, {} tracked, class {}, lock {}, {} hold(s), {} robot command(s), {} camera message(s) rejected; {}",
+        machine.state(),
+        s.frames_fused,
+        s.frames_tracked,
+        s.class.as_deref().unwrap_or("-"),
+        s.lock_sha256.as_deref().unwrap_or("-"),
+        s.holds,
+        s.robot_commands,
+        rejected,
+        s.end_reason
+    );
 }
 
 /// The cell's outputs.
