@@ -166,7 +166,9 @@ pub enum SessionEvent {
 pub struct SessionConfig {
     /// A camera whose last view arrived longer ago than this is stale (degraded, reported).
     pub camera_stale_nanos: i64,
-    /// The robot is held when the newest fused frame is older than this (the stated bound).
+    /// The robot is held when the newest fused frame is older than this (the stated bound). Frame
+    /// age is this clock minus the cameras' capture stamps: on a real cell the camera computers and
+    /// the cell PC must be time-synchronised (chrony/PTP) well inside this bound.
     pub max_frame_age_nanos: i64,
     /// A view "sees the operator" with at least this many landmarks.
     pub min_view_landmarks: usize,
