@@ -440,3 +440,30 @@ fn one_camera_of_every_pair_dropped_holds_although_frames_are_fresh() {
     assert_eq!(run.machine.state(), SessionState::Working);
     assert_eq!(run.machine.pairs_tracking(), 1);
 }
+
+#[test]
+fn a_camera_silent_from_the_start_is_reported_and_the_session_goes_on() {
+    let mut run = Run::new("deadcam", Some(TrajectoryClass::C2), 1);
+    while run.now < 12_000_000_000 && run.machine.state() != SessionState::Working {
+        run.step(&|v| v.camera != 5);
+    }
+    assert_eq!(run.machine.state(), SessionState::Working);
+    let degraded: Vec<(i64, &str)> = run
+        .events
+        .iter()
+        .filter_map(|e| match e {
+            SessionEvent::CameraDegraded {
+                stamp_nanos,
+                camera,
+                why,
+            } => {
+                assert!(why.contains("since the session started"), "{why}");
+                Some((*stamp_nanos, camera.as_str()))
+            }
+            _ => None,
+        })
+        .collect();
+    assert_eq!(degraded, [(600_000_000, "s3_right")]);
+    assert_eq!(run.machine.cameras_fresh(), 5);
+    assert_eq!(run.machine.pairs_tracking(), 2);
+}

@@ -76,6 +76,7 @@ pub struct SessionMachine {
     last_tracked: Option<(i64, Point3<f64>)>,
     operator_departed: bool,
     pairs_tracking: usize,
+    first_step_nanos: Option<i64>,
     summary: SessionSummary,
 }
 
@@ -130,6 +131,7 @@ impl SessionMachine {
             last_tracked: None,
             operator_departed: false,
             pairs_tracking: 0,
+            first_step_nanos: None,
             summary: SessionSummary::default(),
         })
     }
@@ -274,18 +276,27 @@ impl SessionMachine {
     }
 
     fn update_camera_health(&mut self, now_nanos: i64, events: &mut Vec<SessionEvent>) {
+        let since = *self.first_step_nanos.get_or_insert(now_nanos);
+        let bound = self.config.camera_stale_nanos;
         for c in &mut self.cameras {
-            let stale = c
-                .last_arrival_nanos
-                .is_none_or(|t| now_nanos - t > self.config.camera_stale_nanos);
-            if stale && c.last_arrival_nanos.is_some() && !c.degraded {
+            // A camera silent since the session started is as stale as one that stopped.
+            let stale = now_nanos - c.last_arrival_nanos.unwrap_or(since) > bound;
+            if stale && !c.degraded {
                 c.degraded = true;
                 c.sees_operator = false;
                 self.summary.camera_degradations += 1;
-                let why = format!(
-                    "no view for more than {} ms: fusion continues without it",
-                    self.config.camera_stale_nanos / 1_000_000
-                );
+                let why = if c.last_arrival_nanos.is_some() {
+                    format!(
+                        "no view for more than {} ms: fusion continues without it",
+                        bound / 1_000_000
+                    )
+                } else {
+                    format!(
+                        "no view at all since the session started ({} ms ago): fusion continues \
+                         without it",
+                        (now_nanos - since) / 1_000_000
+                    )
+                };
                 tracing::warn!(camera = %c.name, %why, "camera degraded");
                 events.push(SessionEvent::CameraDegraded {
                     stamp_nanos: now_nanos,
