@@ -90,6 +90,23 @@ fn ctrl_c_flag() -> Arc<AtomicBool> {
     flag
 }
 
+/// `println!` that ignores a closed stdout (`ergocell demo | head` must not panic).
+macro_rules! say {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($t)*);
+    }};
+}
+
+/// The demo's temporary folder (its demo approvals), removed on every way out, a panic included.
+struct TempDir(PathBuf);
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
 fn secs(t: i64, start: i64) -> f64 {
     (t - start) as f64 * 1e-9
 }
@@ -108,17 +125,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .map_err(|e| UsageError(e.to_string()))?;
 
     // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
-    let approvals_dir = std::env::temp_dir()
-        .join(format!("ergocell-demo-{}", std::process::id()))
-        .join("approvals");
+    let demo_dir =
+        TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
+    let approvals_dir = demo_dir.0.join("approvals");
     let provider = FileTrajectories::new(&args.cell, &args.trajectories, &approvals_dir);
     let start = wall_clock_nanos();
-    println!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
-    println!(
+    say!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
+    say!(
         "  DEMO APPROVAL: the shipped locks are approved for this run only, in {}",
         approvals_dir.display()
     );
-    println!("  (a simulator-only sign-off; a real cell needs a safety engineer's `ergocell trajectories approve`)");
+    say!("  (a simulator-only sign-off; a real cell needs a safety engineer's `ergocell trajectories approve`)");
     for class in TrajectoryClass::ALL {
         provider
             .approve_for_demo(
@@ -166,7 +183,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         SessionMachine::new(rig.clone(), SessionConfig::default(), Box::new(provider))
             .map_err(|e| anyhow::anyhow!(e))?;
     let mut rec = McapRecorder::create(&args.out)?;
-    println!(
+    say!(
         "  operator {:.2} m, {} handover cycles, {} cameras, seed {}; recording {}",
         args.stature_m,
         args.cycles,
@@ -174,7 +191,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         args.seed,
         args.out.display()
     );
-    println!();
+    say!();
 
     let stop = ctrl_c_flag();
     let mut sim = sim;
@@ -268,7 +285,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         if now - last_status >= 5_000_000_000 {
             last_status = now;
-            println!(
+            say!(
                 "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {rula}",
                 secs(now, start),
                 machine.state().name(),
@@ -280,17 +297,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         now += period_nanos;
     }
     let messages = rec.finish()?;
-    let _ = std::fs::remove_dir_all(approvals_dir.parent().unwrap_or(&approvals_dir));
+    drop(demo_dir);
 
     let s = machine.summary();
-    println!();
-    println!("summary");
-    println!(
+    say!();
+    say!("summary");
+    say!(
         "  session:        {} after {:.1} s of simulated time",
         machine.state(),
         secs(now, start)
     );
-    println!(
+    say!(
         "  height:         {} (true {:.3} m) → class {}",
         s.height_m.map_or("not measured".to_owned(), |h| format!(
             "{h:.3} ± {:.3} m",
@@ -299,25 +316,29 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         args.stature_m,
         s.class.as_deref().unwrap_or("none")
     );
-    println!(
+    say!(
         "  trajectory:     {}",
         s.lock_sha256.as_deref().unwrap_or("not locked")
     );
-    println!(
+    say!(
         "  frames:         {} fused, {} with the operator tracked",
-        s.frames_fused, s.frames_tracked
+        s.frames_fused,
+        s.frames_tracked
     );
-    println!(
+    say!(
         "  RULA:           {} warnings raised, worst action level {}",
-        s.warnings_raised, s.max_action_level
+        s.warnings_raised,
+        s.max_action_level
     );
-    println!(
+    say!(
         "  faults:         {} camera degradation(s), {} hold(s), {} change request(s) refused",
-        s.camera_degradations, s.holds, s.changes_refused
+        s.camera_degradations,
+        s.holds,
+        s.changes_refused
     );
-    println!("  robot commands: {}", s.robot_commands);
-    println!("  ended:          {}", s.end_reason);
-    println!(
+    say!("  robot commands: {}", s.robot_commands);
+    say!("  ended:          {}", s.end_reason);
+    say!(
         "  recording:      {} ({messages} messages; open in Foxglove or `ros2 bag info`)",
         args.out.display()
     );
@@ -340,6 +361,6 @@ fn report(events: &[SessionEvent], now: i64, start: i64) {
                 continue;
             }
         }
-        println!("  t={:5.1} s  {}", secs(now, start), recording::describe(e));
+        say!("  t={:5.1} s  {}", secs(now, start), recording::describe(e));
     }
 }
