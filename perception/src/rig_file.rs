@@ -1,7 +1,7 @@
 //! Calibration files: ergocell's own rig TOML, and import of the Anipose / Pose2Sim and caliscope TOMLs.
 //!
 //! The crate does no I/O: callers pass the file's text and its name (used in every error, together
-//! with the offending field, e.g. `calib.toml: field `cam_1.matrix[0][0]`: not a finite number`).
+//! with the offending field, e.g. `calib.toml: field cam_1.matrix[0][0]: not a finite number`).
 //!
 //! | format | rotation | translation | notes |
 //! |---|---|---|---|
