@@ -467,3 +467,61 @@ fn a_camera_silent_from_the_start_is_reported_and_the_session_goes_on() {
     assert_eq!(run.machine.cameras_fresh(), 5);
     assert_eq!(run.machine.pairs_tracking(), 2);
 }
+
+#[test]
+fn an_operator_outside_the_validated_statures_never_moves_the_robot() {
+    // 1.50 m is class c1 (below 1.68 m), but c1's trajectory was derived and validated for
+    // 1.55–1.68 m only (trajectories/c1.toml): the session must end without moving the robot,
+    // although c1's lock is approved.
+    let (names, home) = home();
+    let mut machine = SessionMachine::new(
+        rig(),
+        SessionConfig::default(),
+        Box::new(provider("short-operator", Some(TrajectoryClass::C1))),
+    )
+    .unwrap();
+    let mut robot = DummyRobot::new(names, home);
+    let mut script = SessionScript::new(Point3::new(0.38, -0.10, 0.975));
+    script.cycles = 1;
+    let mut sim = Simulation::new(
+        rig(),
+        Operator::new(1.50).unwrap(),
+        script,
+        SimConfig::new(11),
+    )
+    .unwrap();
+    let mut events = Vec::new();
+    let mut now = 0;
+    while now <= 20_000_000_000 && machine.state() != SessionState::SessionEnded {
+        let views = sim
+            .step()
+            .unwrap()
+            .map(|t| t.frame.views)
+            .unwrap_or_default();
+        events.extend(machine.step(now, views, &mut robot));
+        now += PERIOD;
+    }
+    let decided = events.iter().find_map(|e| match e {
+        SessionEvent::ClassDecided {
+            class, height_m, ..
+        } => Some((*class, *height_m)),
+        _ => None,
+    });
+    let (class, height_m) = decided.expect("the class is decided");
+    assert_eq!(class.name(), "c1");
+    assert!((height_m - 1.50).abs() < 0.03, "{height_m}");
+    assert_eq!(machine.state(), SessionState::SessionEnded);
+    assert!(
+        machine
+            .summary()
+            .end_reason
+            .contains("outside the statures"),
+        "{}",
+        machine.summary().end_reason
+    );
+    assert!(machine.lock_sha256().is_none());
+    assert!(robot
+        .received
+        .iter()
+        .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
+}

@@ -499,6 +499,26 @@ impl SessionMachine {
             return;
         };
         let class = trajectory_class(decision.class);
+        let height_m = decision.estimate.height_m;
+        // A class's trajectory suits the statures it was derived and validated for; the open-ended
+        // classes (c1, c3) have explicit bounds. Outside them the robot does not move.
+        match self.provider.stature_bounds_m(class) {
+            Ok((min_m, max_m)) if (min_m..=max_m).contains(&height_m) => {}
+            Ok((min_m, max_m)) => {
+                let why = format!(
+                    "operator stature {height_m:.3} m is outside the statures class {class}'s trajectory \
+                     was validated for ({min_m:.2}–{max_m:.2} m): the robot does not move; a trajectory for \
+                     this stature must be derived, validated and approved first"
+                );
+                self.abort(now_nanos, robot, &why, events);
+                return;
+            }
+            Err(e) => {
+                let why = format!("cannot read the stature bounds of class {class}: {e}");
+                self.abort(now_nanos, robot, &why, events);
+                return;
+            }
+        }
         match self.provider.verify(class) {
             Ok(approved) => {
                 let names = approved.joint_names().to_vec();

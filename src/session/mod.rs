@@ -224,6 +224,9 @@ pub trait RobotSink {
 /// Verified trajectories: every call re-reads and re-verifies the lock and its approval.
 pub trait TrajectoryProvider {
     fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, String>;
+    /// The statures `(min_m, max_m)` the class's trajectory was derived and validated for (written
+    /// in its trajectory file, covered by the lock's hash).
+    fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), String>;
 }
 
 /// A backend (source or sink) failed.

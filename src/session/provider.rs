@@ -5,7 +5,9 @@
 use std::path::{Path, PathBuf};
 
 use ergocell_robot::lock::{self, ApprovalsFile, VerifyInputs};
-use ergocell_robot::{ApprovedTrajectory, CellConfig, InputHashes, RobotModel, TrajectoryClass};
+use ergocell_robot::{
+    ApprovedTrajectory, CellConfig, InputHashes, RobotModel, TrajectoryClass, TrajectorySpec,
+};
 
 use super::TrajectoryProvider;
 
@@ -106,6 +108,13 @@ impl FileTrajectories {
 }
 
 impl TrajectoryProvider for FileTrajectories {
+    fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), String> {
+        let path = self.trajectories_dir.join(format!("{class}.toml"));
+        let spec = TrajectorySpec::from_toml_str(&Self::read(&path)?)
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok((spec.stature.min_m, spec.stature.max_m))
+    }
+
     fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, String> {
         let (model, hashes) = self.current(class)?;
         let lock_text = Self::read(&self.lock_path(class))?;
