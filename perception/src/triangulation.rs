@@ -64,7 +64,8 @@ impl DltAccumulator {
             if b == 0.0 {
                 continue;
             }
-            let h = a.hypot(b);
+            // rows are pixel-scaled projection rows (≲ 1e7): no overflow risk, so no `hypot`
+            let h = (a * a + b * b).sqrt();
             let (c, s) = (a / h, b / h);
             for j in i..4 {
                 let rij = self.r[(i, j)];
@@ -109,12 +110,17 @@ impl DltAccumulator {
 pub fn smallest_right_singular_vector(m: &Matrix4<f64>) -> Vector4<f64> {
     let mut u = *m;
     let mut v = Matrix4::<f64>::identity();
+    let mut norms = [0.0; 4];
     for _sweep in 0..60 {
+        // exact column norms at the start of each sweep; within it they are updated by the
+        // rotation's closed form (α' = α − tγ, β' = β + tγ), which saves two dot products per pair
+        for (j, n) in norms.iter_mut().enumerate() {
+            *n = u.column(j).norm_squared();
+        }
         let mut rotated = false;
         for p in 0..3 {
             for q in (p + 1)..4 {
-                let alpha = u.column(p).norm_squared();
-                let beta = u.column(q).norm_squared();
+                let (alpha, beta) = (norms[p], norms[q]);
                 let gamma = u.column(p).dot(&u.column(q));
                 if alpha == 0.0 || beta == 0.0 || gamma.abs() <= 1e-15 * (alpha * beta).sqrt() {
                     continue;
@@ -132,6 +138,8 @@ pub fn smallest_right_singular_vector(m: &Matrix4<f64>) -> Vector4<f64> {
                     v[(i, p)] = c * vp - s * vq;
                     v[(i, q)] = s * vp + c * vq;
                 }
+                norms[p] = alpha - t * gamma;
+                norms[q] = beta + t * gamma;
             }
         }
         if !rotated {
