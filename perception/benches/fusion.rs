@@ -13,7 +13,7 @@ use ergocell_perception::{
     Camera, CameraId, CameraRig, Distortion, Frame2, FusionEngine, FusionMethod, Intrinsics,
 };
 use ergocell_skeleton::{Landmark, LANDMARK_COUNT};
-use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+use nalgebra::{Point3, Vector3};
 
 fn rig(n: usize) -> CameraRig {
     let cams = (0..n)
@@ -22,13 +22,14 @@ fn rig(n: usize) -> CameraRig {
             let angle = pair as f64 * std::f64::consts::TAU / (n / 2) as f64;
             let centre = Point3::new(3.0 * angle.cos(), 3.0 * angle.sin(), 2.0);
             let target = Point3::new(0.0, 0.0, 1.0);
-            let z = (target - centre).normalize();
-            let x = z.cross(&Vector3::z()).normalize();
-            let y = z.cross(&x);
-            let eye = centre + x * if k % 2 == 0 { -0.06 } else { 0.06 };
-            let r = Matrix3::from_columns(&[x, y, z]).transpose();
-            Camera::new(
+            let x = (target - centre).cross(&Vector3::z()).normalize();
+            let offset = x * if k % 2 == 0 { -0.06 } else { 0.06 };
+            // both cameras of a pair look the same way (parallel axes, 12 cm baseline)
+            Camera::look_at(
                 CameraId::new(format!("cam_{k}")).unwrap(),
+                centre + offset,
+                target + offset,
+                Vector3::z(),
                 Intrinsics {
                     fx: 700.0,
                     fy: 700.0,
@@ -45,8 +46,6 @@ fn rig(n: usize) -> CameraRig {
                     p2: -0.0003,
                     k3: 0.0,
                 },
-                Rotation3::from_matrix_unchecked(r),
-                -(r * eye.coords),
             )
             .unwrap()
         })

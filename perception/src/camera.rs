@@ -262,6 +262,39 @@ impl Camera {
         })
     }
 
+    /// A camera at `eye` looking at `target`, its image "up" towards `world_up` (camera x right,
+    /// y down, z forward). Errors when the eye and target coincide or the view is along `world_up`.
+    pub fn look_at(
+        id: CameraId,
+        eye: Point3<f64>,
+        target: Point3<f64>,
+        world_up: Vector3<f64>,
+        intrinsics: Intrinsics,
+        distortion: Distortion,
+    ) -> Result<Self> {
+        let bad = |why: &'static str, value: f64| PerceptionError::BadCameraParameter {
+            camera: id.clone(),
+            field: "look_at",
+            value,
+            why,
+        };
+        let z = (target - eye)
+            .try_normalize(1e-9)
+            .ok_or_else(|| bad("eye and target coincide", 0.0))?;
+        let x = z
+            .cross(&world_up)
+            .try_normalize(1e-9)
+            .ok_or_else(|| bad("view direction is along world up", z.dot(&world_up)))?;
+        let y = z.cross(&x);
+        let R_camera_world = Rotation3::from_matrix_unchecked(Matrix3::from_rows(&[
+            x.transpose(),
+            y.transpose(),
+            z.transpose(),
+        ]));
+        let t_camera_world = -(R_camera_world * eye.coords);
+        Self::new(id, intrinsics, distortion, R_camera_world, t_camera_world)
+    }
+
     /// The camera centre in world coordinates (`-Rᵀ t`).
     pub fn position_world(&self) -> Point3<f64> {
         self.T_camera_world
@@ -415,6 +448,51 @@ mod tests {
             let fd = (d.distort(p + e) - d.distort(p - e)) / (2.0 * h);
             assert_relative_eq!(j.column(c).into_owned(), fd, epsilon = 1e-7);
         }
+    }
+
+    #[test]
+    fn look_at_puts_the_target_on_the_optical_axis_with_up_up() {
+        let k = Intrinsics {
+            fx: 700.0,
+            fy: 700.0,
+            cx: 640.0,
+            cy: 360.0,
+            skew: 0.0,
+            width_px: 1280,
+            height_px: 720,
+        };
+        let id = CameraId::new("c").unwrap();
+        let eye = Point3::new(3.0, 1.0, 2.0);
+        let target = Point3::new(0.0, 0.0, 1.0);
+        let cam = Camera::look_at(
+            id.clone(),
+            eye,
+            target,
+            Vector3::z(),
+            k,
+            Distortion::default(),
+        )
+        .unwrap();
+        assert_relative_eq!(cam.position_world(), eye, epsilon = 1e-12);
+        assert_relative_eq!(
+            cam.project(&target).unwrap(),
+            Point2::new(640.0, 360.0),
+            epsilon = 1e-9
+        );
+        // a point above the target appears higher in the image (smaller v)
+        assert!(cam.project(&Point3::new(0.0, 0.0, 1.5)).unwrap().y < 360.0);
+        assert!(
+            Camera::look_at(id.clone(), eye, eye, Vector3::z(), k, Distortion::default()).is_err()
+        );
+        assert!(Camera::look_at(
+            id,
+            eye,
+            eye - Vector3::z(),
+            Vector3::z(),
+            k,
+            Distortion::default()
+        )
+        .is_err());
     }
 
     #[test]

@@ -560,7 +560,6 @@ mod tests {
     use crate::camera::{Camera, CameraId, Distortion, Intrinsics};
     use crate::detections::{Keypoint2, View2};
     use approx::assert_relative_eq;
-    use nalgebra::Rotation3;
 
     pub(crate) fn ring_rig(n: usize) -> CameraRig {
         let cams = (0..n)
@@ -571,13 +570,11 @@ mod tests {
                     3.0 * angle.sin(),
                     1.4 + 0.1 * (k % 3) as f64,
                 );
-                let target = Point3::new(0.0, 0.0, 1.0);
-                let z = (target - eye).normalize();
-                let x = z.cross(&Vector3::z()).normalize();
-                let y = z.cross(&x);
-                let r = Matrix3::from_columns(&[x, y, z]).transpose();
-                Camera::new(
+                Camera::look_at(
                     CameraId::new(format!("cam_{k}")).unwrap(),
+                    eye,
+                    Point3::new(0.0, 0.0, 1.0),
+                    Vector3::z(),
                     Intrinsics {
                         fx: 900.0,
                         fy: 900.0,
@@ -594,8 +591,6 @@ mod tests {
                         p2: -0.0003,
                         k3: 0.0,
                     },
-                    Rotation3::from_matrix_unchecked(r),
-                    -(r * eye.coords),
                 )
                 .unwrap()
             })

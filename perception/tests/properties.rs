@@ -6,17 +6,16 @@ use ergocell_perception::detections::{Keypoint2, View2};
 use ergocell_perception::fusion::{FusionEngine, FusionMethod};
 use ergocell_perception::{Camera, CameraId, CameraRig, Distortion, Frame2, Intrinsics};
 use ergocell_skeleton::{Landmark, LANDMARK_COUNT};
-use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
 
 /// A camera at `eye` looking at `target` (world z up), with a 1280×720 sensor and mild distortion.
 fn camera(k: usize, eye: Point3<f64>, target: Point3<f64>, f: f64, k1: f64) -> Camera {
-    let z = (target - eye).normalize();
-    let x = z.cross(&Vector3::z()).normalize();
-    let y = z.cross(&x);
-    let r = Matrix3::from_columns(&[x, y, z]).transpose();
-    Camera::new(
+    Camera::look_at(
         CameraId::new(format!("cam_{k}")).unwrap(),
+        eye,
+        target,
+        Vector3::z(),
         Intrinsics {
             fx: f,
             fy: f * 1.002,
@@ -33,8 +32,6 @@ fn camera(k: usize, eye: Point3<f64>, target: Point3<f64>, f: f64, k1: f64) -> C
             p2: -0.0002,
             k3: 0.0,
         },
-        Rotation3::from_matrix_unchecked(r),
-        -(r * eye.coords),
     )
     .unwrap()
 }

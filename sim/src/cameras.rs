@@ -8,7 +8,7 @@
 //! own [`Camera::project`], so the simulator and the reconstruction share one camera model.
 
 use ergocell_perception::{Camera, CameraId, CameraRig, Distortion, Intrinsics};
-use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+use nalgebra::{Point3, Vector3};
 
 use crate::SimError;
 
@@ -74,34 +74,13 @@ pub fn look_at_camera(
     intrinsics: Intrinsics,
     distortion: Distortion,
 ) -> Result<Camera, SimError> {
-    let z = (target - centre)
-        .try_normalize(1e-9)
-        .ok_or(SimError::BadParameter {
-            name: "look_at",
-            value: 0.0,
-            why: "camera centre and target coincide",
-        })?;
-    let x = z
-        .cross(&Vector3::z())
-        .try_normalize(1e-9)
-        .ok_or(SimError::BadParameter {
-            name: "look_at",
-            value: z.z,
-            why: "camera looks straight up or down",
-        })?;
-    let y = z.cross(&x);
-    let r = Rotation3::from_matrix_unchecked(Matrix3::from_rows(&[
-        x.transpose(),
-        y.transpose(),
-        z.transpose(),
-    ]));
-    let t = -(r * centre.coords);
-    Ok(Camera::new(
+    Ok(Camera::look_at(
         CameraId::new(id)?,
+        centre,
+        target,
+        Vector3::z(),
         intrinsics,
         distortion,
-        r,
-        t,
     )?)
 }
 
