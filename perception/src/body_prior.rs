@@ -1,4 +1,5 @@
-//! A body-model prior for fusion: the operator's bones do not change length during a session.
+//! A body-model prior for fusion: the operator's bones do not change length during a session, and
+//! the face landmarks (ears, eyes, nose, mouth) sit on one rigid skull.
 //!
 //! Each landmark triangulated by the [`crate::triangulation::RobustTriangulator`] comes with an
 //! information matrix `Λ` that says how well the cameras pin it down in each direction — for a point
@@ -10,7 +11,10 @@
 //! `min Σ_i (x_i − x̂_i)ᵀ Λ_i (x_i − x̂_i) + Σ_bones (‖x_a − x_b‖ − L_ab)² / σ_L²`
 //!
 //! by block Gauss–Seidel (each landmark's 3×3 Gauss–Newton step with its neighbours fixed, a few
-//! sweeps). Directions the cameras measure well hardly move; poorly measured directions are pulled
+//! sweeps). The rigid pairs are the limb and trunk bones of [`BONES`] and nine head pairs: the ears are
+//! occluded in most views (a detector still reports them, with low confidence and large errors), and
+//! the neck angle RULA scores hangs on them; the skull's distances hold them to the nose and eyes.
+//! Directions the cameras measure well hardly move; poorly measured directions are pulled
 //! to a configuration with consistent bone lengths. With exact measurements every bone already has its
 //! learned length and nothing moves. Causal (uses only past and present frames) and deterministic.
 //!
@@ -19,11 +23,42 @@
 
 use std::collections::VecDeque;
 
-use ergocell_skeleton::{BONES, LANDMARK_COUNT};
+use ergocell_skeleton::{Landmark, BONES, LANDMARK_COUNT};
 use nalgebra::{Matrix3, Point3, Vector3};
 
-/// The landmarks (MediaPipe indices) that are an end of some bone in [`BONES`].
-const BONE_LANDMARKS: [usize; 12] = [11, 12, 13, 14, 15, 16, 23, 24, 25, 26, 27, 28];
+/// Landmark pairs whose distance the prior keeps: the rigid limb and trunk bones of [`BONES`], and
+/// the head (ears, eyes, nose and mouth are fixed on the skull).
+const RIGID: [(Landmark, Landmark); 21] = {
+    use Landmark as L;
+    [
+        BONES[0],
+        BONES[1],
+        BONES[2],
+        BONES[3],
+        BONES[4],
+        BONES[5],
+        BONES[6],
+        BONES[7],
+        BONES[8],
+        BONES[9],
+        BONES[10],
+        BONES[11],
+        (L::LeftEar, L::RightEar),
+        (L::Nose, L::LeftEar),
+        (L::Nose, L::RightEar),
+        (L::LeftEye, L::RightEye),
+        (L::LeftEye, L::LeftEar),
+        (L::RightEye, L::RightEar),
+        (L::MouthLeft, L::MouthRight),
+        (L::Nose, L::MouthLeft),
+        (L::Nose, L::MouthRight),
+    ]
+};
+
+/// The landmarks (MediaPipe indices) that are an end of some pair in [`RIGID`].
+const BONE_LANDMARKS: [usize; 19] = [
+    0, 2, 5, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 23, 24, 25, 26, 27, 28,
+];
 
 /// Settings of the bone-length prior.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -65,7 +100,7 @@ impl BonePrior {
     pub fn new(params: BonePriorParams) -> Self {
         Self {
             params,
-            history: vec![(VecDeque::new(), Vec::new()); BONES.len()],
+            history: vec![(VecDeque::new(), Vec::new()); RIGID.len()],
         }
     }
 
@@ -77,7 +112,8 @@ impl BonePrior {
         }
     }
 
-    /// The learned length of bone `b` (index into [`BONES`]), once enough frames were seen.
+    /// The learned length of pair `b` (index into the rigid pairs: [`BONES`] then the head), once
+    /// enough frames were seen.
     pub fn length_m(&self, b: usize) -> Option<f64> {
         let (_, sorted) = self.history.get(b)?;
         if sorted.len() < self.params.min_samples.max(1) {
@@ -93,7 +129,7 @@ impl BonePrior {
 
     /// Adds this frame's (uncorrected) bone lengths to the history.
     pub fn observe(&mut self, points: &[Option<Point3<f64>>; LANDMARK_COUNT]) {
-        for (b, (a, c)) in BONES.iter().enumerate() {
+        for (b, (a, c)) in RIGID.iter().enumerate() {
             let (Some(pa), Some(pc)) = (points[a.index()], points[c.index()]) else {
                 continue;
             };
@@ -123,7 +159,7 @@ impl BonePrior {
         points: &mut [Option<Point3<f64>>; LANDMARK_COUNT],
         information: &[Matrix3<f64>; LANDMARK_COUNT],
     ) {
-        let lengths: Vec<Option<f64>> = (0..BONES.len()).map(|b| self.length_m(b)).collect();
+        let lengths: Vec<Option<f64>> = (0..RIGID.len()).map(|b| self.length_m(b)).collect();
         if lengths.iter().all(Option::is_none) {
             return;
         }
@@ -137,7 +173,7 @@ impl BonePrior {
                 let mut h = information[i];
                 let mut g = information[i] * (x - x_hat);
                 let mut constrained = false;
-                for (b, (a, c)) in BONES.iter().enumerate() {
+                for (b, (a, c)) in RIGID.iter().enumerate() {
                     let other = if a.index() == i {
                         c.index()
                     } else if c.index() == i {
@@ -186,7 +222,7 @@ mod tests {
 
     #[test]
     fn bone_landmarks_are_exactly_the_ends_of_the_bones() {
-        let mut ends: Vec<usize> = BONES
+        let mut ends: Vec<usize> = RIGID
             .iter()
             .flat_map(|(a, b)| [a.index(), b.index()])
             .collect();
