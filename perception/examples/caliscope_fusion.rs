@@ -14,7 +14,7 @@ use ergocell_perception::metrics::{bone_stats, common_bone_variation_percent};
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
 use ergocell_perception::{FusionEngine, FusionMethod};
-use ergocell_skeleton::{Landmark, LandmarkEstimate, Skeleton3, BONES, LANDMARK_COUNT};
+use ergocell_skeleton::{Landmark, Skeleton3, BONES, LANDMARK_COUNT};
 use nalgebra::Point3;
 use plotters::prelude::*;
 
@@ -22,21 +22,7 @@ fn to_skeletons(points: &[[Option<Point3<f64>>; LANDMARK_COUNT]]) -> Vec<Skeleto
     points
         .iter()
         .enumerate()
-        .map(|(k, pts)| {
-            let mut s = Skeleton3::empty(k as i64);
-            for lm in Landmark::ALL {
-                if let Some(p) = pts[lm.index()] {
-                    let e = LandmarkEstimate {
-                        position_m: p,
-                        confidence: 1.0,
-                        reprojection_error_px: None,
-                        views: 2,
-                    };
-                    s.set(lm, Some(e)).unwrap();
-                }
-            }
-            s
-        })
+        .map(|(k, pts)| Skeleton3::from_optional_points(k as i64, pts).unwrap())
         .collect()
 }
 

@@ -12,7 +12,7 @@ use ergocell_perception::import::parse_caliscope_xy;
 use ergocell_perception::metrics::{bone_length_variation_percent, common_bone_variation_percent};
 use ergocell_perception::rig_file::{parse_rig, RigFormat};
 use ergocell_perception::{CameraRig, Frame2};
-use ergocell_skeleton::{Landmark, LandmarkEstimate, Skeleton3};
+use ergocell_skeleton::Skeleton3;
 
 fn data_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/caliscope-4cam")
@@ -81,21 +81,7 @@ fn skeletons(points: &[[Option<nalgebra::Point3<f64>>; 33]]) -> Vec<Skeleton3> {
     points
         .iter()
         .enumerate()
-        .map(|(k, pts)| {
-            let mut s = Skeleton3::empty(k as i64);
-            for lm in Landmark::ALL {
-                if let Some(p) = pts[lm.index()] {
-                    let e = LandmarkEstimate {
-                        position_m: p,
-                        confidence: 1.0,
-                        reprojection_error_px: None,
-                        views: 2,
-                    };
-                    s.set(lm, Some(e)).unwrap();
-                }
-            }
-            s
-        })
+        .map(|(k, pts)| Skeleton3::from_optional_points(k as i64, pts).unwrap())
         .collect()
 }
 

@@ -301,11 +301,20 @@ impl Skeleton3 {
         stamp_nanos: i64,
         points: &[Point3<f64>; LANDMARK_COUNT],
     ) -> Result<Self, SkeletonError> {
+        Self::from_optional_points(stamp_nanos, &points.map(Some))
+    }
+
+    /// A skeleton of bare positions, `None` where a landmark was not found (e.g. the output of a
+    /// plain triangulation): confidence 1, no reprojection error, no view count.
+    pub fn from_optional_points(
+        stamp_nanos: i64,
+        points: &[Option<Point3<f64>>; LANDMARK_COUNT],
+    ) -> Result<Self, SkeletonError> {
         let slots = points
             .iter()
             .map(|p| {
-                Some(LandmarkEstimate {
-                    position_m: *p,
+                p.map(|position_m| LandmarkEstimate {
+                    position_m,
                     confidence: 1.0,
                     reprojection_error_px: None,
                     views: 0,
