@@ -40,8 +40,10 @@
 //! - **Neck flexion** (relative to the trunk): the vector from the shoulder midpoint to the ear
 //!   midpoint, `v`, in the trunk's sagittal plane: `atan2(v·f, v·t)`; positive = forward, negative =
 //!   extension. **Side bend**: `atan2(|v·r|, v·t)`. **Twist**: signed angle about `t` from `r` to the
-//!   ear line (right ear − left ear) projected on the plane normal to `t`; if an ear is missing, from
-//!   `f` to the nose direction (nose − shoulder midpoint) projected the same way.
+//!   head's left-to-right axis projected on the plane normal to `t`; the axis is the sum of
+//!   `right − left` over the face's mirror pairs (ears, outer/centre/inner eyes, mouth corners), all
+//!   parallel to the ear line on a rigid head ([`head_lateral_axis`]). If an ear is missing, from `f`
+//!   to the nose direction (nose − shoulder midpoint) projected the same way.
 //! - **Legs**: each foot's lowest point (ankle, heel, foot index) above the floor along `u`; the floor
 //!   is the configured height along `u`, or the lowest foot landmark of the frame when unknown. Weight
 //!   balance: horizontal distance from the hip midpoint to the midpoint of the ankles, divided by half
@@ -308,8 +310,34 @@ fn neck_angles(s: &Skeleton3, frame: &TrunkFrame) -> (Option<f64>, Option<f64>, 
     let v = mid(el, er) - frame.shoulder_mid;
     let flexion = v.dot(&frame.f).atan2(v.dot(&frame.t));
     let side_bend = v.dot(&frame.r).abs().atan2(v.dot(&frame.t));
-    let twist = signed_angle_about(frame.r, er - el, &frame.t);
+    let twist = head_lateral_axis(s).and_then(|l| signed_angle_about(frame.r, l, &frame.t));
     (Some(flexion), Some(side_bend), twist)
+}
+
+/// The face's left/right landmark pairs, all mirror images across the head's midsagittal plane.
+const FACE_PAIRS: [(Landmark, Landmark); 5] = [
+    (Landmark::LeftEar, Landmark::RightEar),
+    (Landmark::LeftEyeOuter, Landmark::RightEyeOuter),
+    (Landmark::LeftEye, Landmark::RightEye),
+    (Landmark::LeftEyeInner, Landmark::RightEyeInner),
+    (Landmark::MouthLeft, Landmark::MouthRight),
+];
+
+/// The head's left-to-right axis (not normalised): the sum of `right − left` over every observed pair
+/// of [`FACE_PAIRS`]. Each pair is parallel to the same axis on a rigid head, so the sum has the
+/// direction of the ear line, while an error of a few millimetres in one landmark (the ears are
+/// hidden from most cameras) moves it far less than it moves the 15 cm ear line alone. Each pair is
+/// weighted by its own length, i.e. the longer (better conditioned) baselines count more.
+pub fn head_lateral_axis(s: &Skeleton3) -> Option<Vector3<f64>> {
+    let mut sum = Vector3::zeros();
+    let mut any = false;
+    for (l, r) in FACE_PAIRS {
+        if let (Some(pl), Some(pr)) = (s.position(l), s.position(r)) {
+            sum += pr - pl;
+            any = true;
+        }
+    }
+    any.then_some(sum).filter(|v| v.norm() > 1e-9)
 }
 
 fn lowest(s: &Skeleton3, up: &UpVector, lms: [Landmark; 3]) -> Option<f64> {

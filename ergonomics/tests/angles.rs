@@ -311,3 +311,61 @@ proptest! {
         prop_assert!(close(a.neck_flexion_rad, neck));
     }
 }
+
+/// Neck twist comes from every mirror pair of the face (ears, eyes, mouth corners), not the ear line
+/// alone: a known twist is recovered exactly, and an ear error that turns the ear line by 11° turns
+/// the head's axis by under 5°.
+#[test]
+fn neck_twist_from_every_face_pair() {
+    use ergocell_ergonomics::angles::head_lateral_axis;
+    use ergocell_skeleton::Landmark;
+    let spec = PoseSpec {
+        neck_twist_rad: 25f64.to_radians(),
+        ..PoseSpec::default()
+    };
+    for_each_world(&spec, |a, ctx| {
+        assert_deg("neck twist", a.neck_twist_rad.map(f64::abs), 25.0, ctx);
+    });
+
+    // Untwisted head, ears 1.5 cm off in opposite directions along the body's forward axis.
+    let base = PoseSpec::default();
+    let mut s = base.skeleton();
+    let up = UpVector::new(base.up()).unwrap();
+    let nose = s.position(Landmark::Nose).unwrap();
+    let ears_mid = {
+        let (l, r) = (
+            s.position(Landmark::LeftEar).unwrap(),
+            s.position(Landmark::RightEar).unwrap(),
+        );
+        (l.coords + r.coords) * 0.5
+    };
+    let fwd = {
+        let v = nose.coords - ears_mid;
+        (v - up.vector() * v.dot(&up.vector())).normalize()
+    };
+    for (lm, sign) in [(Landmark::LeftEar, 1.0), (Landmark::RightEar, -1.0)] {
+        let mut e = *s.get(lm).unwrap();
+        e.position_m += fwd * (0.015 * sign);
+        s.set(lm, Some(e)).unwrap();
+    }
+    let a = body_angles(&s, &up, None);
+    let (l, r) = (
+        s.position(Landmark::LeftEar).unwrap(),
+        s.position(Landmark::RightEar).unwrap(),
+    );
+    let ear_line_error = (r - l).angle(&head_lateral_axis(&base.skeleton()).unwrap());
+    assert!(
+        ear_line_error.to_degrees() > 10.0,
+        "the ear line alone is off"
+    );
+    let twist = a.neck_twist_rad.unwrap().to_degrees();
+    assert!(twist.abs() < 5.0, "head axis from all pairs: {twist:.2}°");
+
+    // Without ears the eyes and mouth still give the twist.
+    let mut s = spec.skeleton();
+    s.set(Landmark::LeftEar, None).unwrap();
+    s.set(Landmark::RightEar, None).unwrap();
+    let axis = head_lateral_axis(&s).unwrap();
+    let full = head_lateral_axis(&spec.skeleton()).unwrap();
+    assert!(axis.angle(&full) < 1e-9);
+}
