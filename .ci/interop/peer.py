@@ -97,6 +97,7 @@ class SessionState(IdlStruct, typename="ergocell_msgs::msg::dds_::SessionState_"
     robot_held: bool
     cameras_fresh: uint32
     stereo_pairs_tracking: uint32
+    trajectory_approved_by: sequence[str]
 
 
 @dataclass

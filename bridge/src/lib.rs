@@ -13,6 +13,7 @@
 pub mod cdr;
 pub mod msg;
 pub mod qos;
+#[cfg(feature = "transport")]
 pub mod transport;
 
 /// Everything that can go wrong in the bridge.

@@ -239,6 +239,7 @@ pub struct SessionState {
     pub robot_held: bool,
     pub cameras_fresh: u32,
     pub stereo_pairs_tracking: u32,
+    pub trajectory_approved_by: Vec<String>,
 }
 
 impl RosMessage for SessionState {
@@ -257,6 +258,34 @@ impl RosMessage for SessionState {
         ("bool", "robot_held"),
         ("uint32", "cameras_fresh"),
         ("uint32", "stereo_pairs_tracking"),
+        ("string[]", "trajectory_approved_by"),
+    ];
+}
+
+/// `ergocell_msgs/OperatorPose`: the fused skeleton (33 landmarks, NaN where not fused) and the joint
+/// angles RULA was scored from, radians.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct OperatorPose {
+    pub header: Header,
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub z: Vec<f64>,
+    pub angle_names: Vec<String>,
+    pub angle_rad: Vec<f64>,
+}
+
+impl RosMessage for OperatorPose {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "OperatorPose";
+    const DEFINITION: &'static str = include_str!("../../ros2/ergocell_msgs/msg/OperatorPose.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &HEADER_DEPS;
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("float64[]", "x"),
+        ("float64[]", "y"),
+        ("float64[]", "z"),
+        ("string[]", "angle_names"),
+        ("float64[]", "angle_rad"),
     ];
 }
 
@@ -466,6 +495,7 @@ pub struct Marker {
 }
 
 impl Marker {
+    pub const SPHERE: i32 = 2;
     pub const LINE_LIST: i32 = 5;
     pub const SPHERE_LIST: i32 = 7;
     pub const ADD: i32 = 0;
@@ -548,6 +578,7 @@ mod tests {
         check::<JointTrajectory>();
         check::<CameraLandmarks>();
         check::<SessionState>();
+        check::<OperatorPose>();
         check::<RulaSide>();
         check::<ErgonomicState>();
         check::<PostureWarning>();
