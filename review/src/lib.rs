@@ -1,0 +1,37 @@
+//! Offline ergonomics review (the seed paper's fourth contribution): a session recording turned into
+//! what an ergonomics expert reads — the fused skeleton over time with each joint coloured by its RULA
+//! band, the grand score and action level of both sides, the warnings, per-region score shares, the
+//! distribution of every joint angle and the session facts (height, class, locked trajectory,
+//! approvers).
+//!
+//! - [`read`]: an MCAP recording (bytes) → the ergocell messages in it. A file cut short (a crash, a
+//!   partial copy) is read up to its last complete chunk and says so; a foreign MCAP or a file that is
+//!   not MCAP at all is refused with what could be read.
+//! - [`analysis`]: the messages → [`ReviewData`], the JSON the page renders (`version` 1).
+//! - [`page`]: the page itself — the HTML shell around the browser bundle built from `web/`
+//!   (three.js + uPlot, vendored, so it works offline), linked for `ergocell review`'s server, or
+//!   everything inlined into one file for `ergocell report`.
+//!
+//! No I/O here: the binary reads the file and serves the page.
+
+pub mod analysis;
+pub mod page;
+pub mod read;
+
+pub use analysis::{analyse, ReviewData, SessionReview};
+pub use read::{read_recording, Recording};
+
+/// Why a recording cannot be reviewed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ReviewError {
+    /// Not an MCAP file (or nothing of it is readable).
+    #[error("not a readable MCAP file: {reason}")]
+    NotMcap { reason: String },
+    /// An MCAP file without ergocell's topics. `channels` lists what it does hold.
+    #[error("an MCAP file, but not an ergocell session recording: none of its {message_count} messages is on an ergocell topic (it has {channels})")]
+    Foreign {
+        message_count: u64,
+        channels: String,
+    },
+}
