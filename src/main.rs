@@ -37,6 +37,10 @@ enum Command {
     Height(commands::height::Args),
     /// Validate, lock, approve and verify the class handover trajectories (safety engineer's review).
     Trajectories(commands::trajectories::Args),
+    /// Offline ergonomics review of a session recording in the browser (local web server).
+    Review(commands::review::Args),
+    /// The offline review as one self-contained HTML file (`--compare` for two sessions).
+    Report(commands::review::ReportArgs),
     /// The seed paper's experiments on the digital twin: table1, adaptation, height, rula-agreement.
     Sim(commands::sim::Args),
 }
@@ -64,6 +68,8 @@ fn main() -> std::process::ExitCode {
         Command::Height(args) => commands::height::run(&args),
         Command::Trajectories(args) => commands::trajectories::run(&args),
         Command::Sim(args) => commands::sim::run(&args),
+        Command::Review(args) => commands::review::run(&args),
+        Command::Report(args) => commands::review::report(&args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

@@ -15,7 +15,7 @@ use std::path::Path;
 
 use ergocell_bridge::cdr;
 use ergocell_bridge::msg::{
-    CameraLandmarks, ErgonomicState, Header, PostureWarning, RosMessage, RulaSide,
+    CameraLandmarks, ErgonomicState, Header, OperatorPose, PostureWarning, RosMessage, RulaSide,
 };
 use ergocell_ergonomics::{FrameAssessment, SideAssessment, WarningEvent};
 use ergocell_perception::{CameraRig, Keypoint2, View2};
@@ -31,6 +31,10 @@ pub mod topics {
     pub const ERGONOMICS: &str = "/ergocell/ergonomics";
     pub const WARNINGS: &str = "/ergocell/warnings";
     pub const SKELETON: &str = "/ergocell/skeleton";
+    /// The fused skeleton by landmark and the joint angles (`ergocell_msgs/OperatorPose`).
+    pub const OPERATOR_POSE: &str = "/ergocell/operator_pose";
+    /// The robot's TCP (marker id 0) and the locked handover point (id 1), `world` frame.
+    pub const ROBOT_MARKERS: &str = "/ergocell/robot_markers";
     pub const JOINT_STATES: &str = "/joint_states";
     pub const JOINT_TRAJECTORY: &str = "/joint_trajectory_controller/joint_trajectory";
 }
@@ -337,6 +341,130 @@ pub fn skeleton_message(
     }
 }
 
+/// The joint angles recorded in [`OperatorPose::angle_names`], in this order.
+pub const ANGLE_NAMES: [&str; 16] = [
+    "trunk_flexion",
+    "trunk_side_bend",
+    "trunk_twist",
+    "neck_flexion",
+    "neck_side_bend",
+    "neck_twist",
+    "left_upper_arm_flexion",
+    "left_upper_arm_abduction",
+    "left_elbow_flexion",
+    "left_wrist_flexion",
+    "left_wrist_deviation",
+    "right_upper_arm_flexion",
+    "right_upper_arm_abduction",
+    "right_elbow_flexion",
+    "right_wrist_flexion",
+    "right_wrist_deviation",
+];
+
+/// The fused skeleton by landmark index (NaN where not fused) and, when the frame was assessed, the
+/// joint angles RULA was scored from (radians, NaN where not observed).
+pub fn operator_pose_message(
+    skeleton: &ergocell_skeleton::Skeleton3,
+    assessment: Option<&FrameAssessment>,
+) -> OperatorPose {
+    let mut m = OperatorPose {
+        header: Header::new(skeleton.stamp_nanos, "world"),
+        x: Vec::with_capacity(LANDMARK_COUNT),
+        y: Vec::with_capacity(LANDMARK_COUNT),
+        z: Vec::with_capacity(LANDMARK_COUNT),
+        ..OperatorPose::default()
+    };
+    for lm in ergocell_skeleton::Landmark::ALL {
+        let p = skeleton
+            .position(lm)
+            .unwrap_or_else(|| nalgebra::Point3::new(f64::NAN, f64::NAN, f64::NAN));
+        m.x.push(p.x);
+        m.y.push(p.y);
+        m.z.push(p.z);
+    }
+    if let Some(a) = assessment {
+        let b = &a.angles;
+        let values = [
+            b.trunk_flexion_rad,
+            b.trunk_side_bend_rad,
+            b.trunk_twist_rad,
+            b.neck_flexion_rad,
+            b.neck_side_bend_rad,
+            b.neck_twist_rad,
+            b.left.upper_arm_flexion_rad,
+            b.left.upper_arm_abduction_rad,
+            b.left.elbow_flexion_rad,
+            b.left.wrist_flexion_rad,
+            b.left.wrist_deviation_rad,
+            b.right.upper_arm_flexion_rad,
+            b.right.upper_arm_abduction_rad,
+            b.right.elbow_flexion_rad,
+            b.right.wrist_flexion_rad,
+            b.right.wrist_deviation_rad,
+        ];
+        m.angle_names = ANGLE_NAMES.iter().map(|&n| n.to_owned()).collect();
+        m.angle_rad = values.iter().map(|v| v.unwrap_or(f64::NAN)).collect();
+    }
+    m
+}
+
+/// The robot's TCP (sphere, id 0) and the locked handover point (sphere, id 1) as markers in the
+/// `world` frame, for Foxglove and `ergocell review`.
+pub fn robot_markers_message(
+    stamp_nanos: i64,
+    tcp_world: nalgebra::Point3<f64>,
+    handover_world: Option<nalgebra::Point3<f64>>,
+) -> ergocell_bridge::msg::MarkerArray {
+    use ergocell_bridge::msg::{ColorRGBA, Marker, MarkerArray, Point, Pose, Quaternion, Vector3};
+    let sphere = |id: i32, p: nalgebra::Point3<f64>, size: f64, color: ColorRGBA| Marker {
+        header: Header::new(stamp_nanos, "world"),
+        ns: "robot".to_owned(),
+        id,
+        r#type: Marker::SPHERE,
+        action: Marker::ADD,
+        pose: Pose {
+            position: Point {
+                x: p.x,
+                y: p.y,
+                z: p.z,
+            },
+            orientation: Quaternion::default(),
+        },
+        scale: Vector3 {
+            x: size,
+            y: size,
+            z: size,
+        },
+        color,
+        ..Marker::default()
+    };
+    let mut markers = vec![sphere(
+        0,
+        tcp_world,
+        0.06,
+        ColorRGBA {
+            r: 0.2,
+            g: 0.6,
+            b: 1.0,
+            a: 1.0,
+        },
+    )];
+    if let Some(h) = handover_world {
+        markers.push(sphere(
+            1,
+            h,
+            0.05,
+            ColorRGBA {
+                r: 1.0,
+                g: 0.2,
+                b: 0.8,
+                a: 0.8,
+            },
+        ));
+    }
+    MarkerArray { markers }
+}
+
 /// The per-frame RULA state.
 pub fn ergonomic_message(a: &FrameAssessment) -> ErgonomicState {
     ErgonomicState {
@@ -387,6 +515,7 @@ pub fn session_state_message(
         robot_held: machine.hold_reason().is_some(),
         cameras_fresh: u32::try_from(machine.cameras_fresh()).unwrap_or(u32::MAX),
         stereo_pairs_tracking: u32::try_from(machine.pairs_tracking()).unwrap_or(u32::MAX),
+        trajectory_approved_by: machine.approved_by(),
     }
 }
 
@@ -398,22 +527,31 @@ pub fn record_events(
     events: &[crate::session::SessionEvent],
 ) -> Result<(), RecordingError> {
     use crate::session::SessionEvent as E;
+    // The state as of each event (the machine may have moved on by the end of the step).
+    let mut current = events
+        .iter()
+        .find_map(|e| match e {
+            E::StateChanged { from, .. } => Some(*from),
+            _ => None,
+        })
+        .unwrap_or_else(|| machine.state());
     for e in events {
         match e {
             E::StateChanged { to, reason, .. } => {
+                current = *to;
                 let mut m = session_state_message(machine, now_nanos, reason);
-                to.name().clone_into(&mut m.state);
+                current.name().clone_into(&mut m.state);
                 rec.write(topics::SESSION_STATE, now_nanos, &m)?;
             }
             E::ClassDecided { .. }
             | E::TrajectoryLocked { .. }
             | E::ChangeRefused { .. }
             | E::CameraDegraded { .. }
-            | E::CameraRestored { .. } => rec.write(
-                topics::SESSION_STATE,
-                now_nanos,
-                &session_state_message(machine, now_nanos, &describe(e)),
-            )?,
+            | E::CameraRestored { .. } => {
+                let mut m = session_state_message(machine, now_nanos, &describe(e));
+                current.name().clone_into(&mut m.state);
+                rec.write(topics::SESSION_STATE, now_nanos, &m)?;
+            }
             E::RobotCommandSent { command, .. } => rec.write(
                 topics::JOINT_TRAJECTORY,
                 now_nanos,
@@ -433,6 +571,11 @@ pub fn record_events(
                     topics::SKELETON,
                     now_nanos,
                     &skeleton_message(skeleton, level),
+                )?;
+                rec.write(
+                    topics::OPERATOR_POSE,
+                    now_nanos,
+                    &operator_pose_message(skeleton, assessment.as_deref()),
                 )?;
                 if let Some(a) = assessment {
                     rec.write(topics::ERGONOMICS, now_nanos, &ergonomic_message(a))?;

@@ -3,6 +3,7 @@
 pub mod calibrate;
 pub mod demo;
 pub mod height;
+pub mod review;
 pub mod rula;
 pub mod run;
 pub mod sim;

@@ -156,6 +156,17 @@ impl SessionMachine {
             .map(|l| l.trajectory().lock().lock_sha256.as_str())
     }
 
+    /// Who approved the locked trajectory (oldest approval first), once locked.
+    pub fn approved_by(&self) -> Vec<String> {
+        self.lock.as_ref().map_or_else(Vec::new, |l| {
+            l.trajectory()
+                .approvals()
+                .iter()
+                .map(|a| a.approved_by.clone())
+                .collect()
+        })
+    }
+
     /// Why the robot is held, if it is.
     pub fn hold_reason(&self) -> Option<&str> {
         self.hold_reason.as_deref()

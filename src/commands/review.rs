@@ -1,0 +1,260 @@
+//! `ergocell review` and `ergocell report`: a session recording for the ergonomics expert.
+//!
+//! `review` serves the review page of one recording on a local web server: loopback by default, and
+//! then it answers only requests whose `Host` is the loopback address it printed (a page on another
+//! site cannot reach it through DNS rebinding). It serves exactly four things, all from memory —
+//! the page, its script, its stylesheet and the recording's analysis — and never reads a path from a
+//! request, so nothing but the given recording can be served. `--bind` serves elsewhere on request.
+//!
+//! `report` writes the same page as one self-contained HTML file (data, three.js, uPlot inlined)
+//! that opens offline and can be mailed; `--compare` puts a second session beside the first.
+
+use std::net::{IpAddr, Ipv4Addr, SocketAddr};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use anyhow::Context as _;
+use axum::extract::{ConnectInfo, Request, State};
+use axum::http::{header, HeaderValue, Method, StatusCode};
+use axum::middleware::Next;
+use axum::response::{IntoResponse, Response};
+use axum::routing::get;
+use axum::Router;
+use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
+
+use super::UsageError;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The session recording (`.mcap`, from `ergocell demo` or `ergocell run --record`).
+    pub recording: PathBuf,
+    /// A second recording shown beside the first (e.g. before vs after the robot's adaptation).
+    #[arg(long)]
+    pub compare: Option<PathBuf>,
+    /// Address to listen on. Loopback by default; any other address serves the recording to the
+    /// network (and then accepts any Host header).
+    #[arg(long, default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
+    pub bind: IpAddr,
+    /// Port (0 = any free port; the URL is printed).
+    #[arg(long, default_value_t = 8765)]
+    pub port: u16,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ReportArgs {
+    /// The session recording (`.mcap`).
+    pub recording: PathBuf,
+    /// A second recording shown beside the first (e.g. before vs after the robot's adaptation).
+    #[arg(long)]
+    pub compare: Option<PathBuf>,
+    /// The HTML file to write.
+    #[arg(long, default_value = "report.html")]
+    pub out: PathBuf,
+}
+
+/// Reads and analyses one recording; what is wrong with it goes to stderr and onto the page.
+fn load(path: &Path) -> anyhow::Result<SessionReview> {
+    let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let recording =
+        read_recording(&bytes).map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+    let label = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let review = analyse(&recording, &label);
+    for p in &review.source.problems {
+        eprintln!("warning: {}: {p}", path.display());
+    }
+    Ok(review)
+}
+
+fn load_all(recording: &Path, compare: Option<&Path>) -> anyhow::Result<ReviewData> {
+    let mut sessions = vec![load(recording)?];
+    if let Some(other) = compare {
+        sessions.push(load(other)?);
+    }
+    Ok(ReviewData::new(sessions))
+}
+
+fn summary(data: &ReviewData) -> String {
+    data.sessions
+        .iter()
+        .map(|s| {
+            format!(
+                "{}: {} frames over {:.1} s, {} warnings, height {}, class {}{}",
+                s.label,
+                s.frames.t.len(),
+                s.frames.t.last().copied().unwrap_or(0.0),
+                s.warnings.iter().filter(|w| w.kind == "raised").count(),
+                s.facts
+                    .height_m
+                    .map_or("not measured".to_owned(), |h| format!("{h:.3} m")),
+                s.facts.height_class.as_deref().unwrap_or("none"),
+                if s.source.complete {
+                    ""
+                } else {
+                    " (incomplete file)"
+                }
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
+    let data = load_all(&args.recording, args.compare.as_deref())?;
+    let html = page::report_page(&data).context("serialising the review")?;
+    std::fs::write(&args.out, html.as_bytes())
+        .with_context(|| format!("cannot write {}", args.out.display()))?;
+    println!("{}", summary(&data));
+    println!(
+        "report: {} ({:.1} MB, self-contained: opens offline in any browser)",
+        args.out.display(),
+        html.len() as f64 / 1e6
+    );
+    Ok(())
+}
+
+/// What the server holds: everything it can ever answer with.
+struct Served {
+    page: String,
+    json: String,
+    /// `Host` values accepted; `None` when asked to serve the network.
+    allowed_hosts: Option<Vec<String>>,
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let data = load_all(&args.recording, args.compare.as_deref())?;
+    let json = serde_json::to_string(&data).context("serialising the review")?;
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .enable_all()
+        .build()
+        .context("tokio runtime")?;
+    runtime.block_on(async {
+        let listener = tokio::net::TcpListener::bind(SocketAddr::new(args.bind, args.port))
+            .await
+            .map_err(|e| {
+                UsageError(format!("cannot listen on {}:{}: {e}", args.bind, args.port))
+            })?;
+        let addr = listener.local_addr()?;
+        let loopback = args.bind.is_loopback();
+        let allowed_hosts = loopback.then(|| {
+            let port = addr.port();
+            vec![
+                format!("127.0.0.1:{port}"),
+                format!("localhost:{port}"),
+                format!("[::1]:{port}"),
+            ]
+        });
+        let served = Arc::new(Served {
+            page: page::served_page(&data),
+            json,
+            allowed_hosts,
+        });
+        let app = Router::new()
+            .route("/", get(index))
+            .route("/assets/review.js", get(script))
+            .route("/assets/review.css", get(stylesheet))
+            .route("/api/review.json", get(review_json))
+            .route("/favicon.ico", get(|| async { StatusCode::NO_CONTENT }))
+            .fallback(not_found)
+            .layer(axum::middleware::from_fn_with_state(served.clone(), guard))
+            .with_state(served);
+        println!("{}", summary(&data));
+        let shown = if addr.ip().is_unspecified() {
+            SocketAddr::new(IpAddr::V4(Ipv4Addr::LOCALHOST), addr.port())
+        } else {
+            addr
+        };
+        println!("review: http://{shown}/");
+        if !loopback {
+            println!("  serving on {addr} to the network, as asked (--bind)");
+        }
+        println!("  Ctrl-C stops the server");
+        let _ = std::io::Write::flush(&mut std::io::stdout());
+        axum::serve(
+            listener,
+            app.into_make_service_with_connect_info::<SocketAddr>(),
+        )
+        .with_graceful_shutdown(async {
+            let _ = tokio::signal::ctrl_c().await;
+        })
+        .await
+        .context("review server")?;
+        anyhow::Ok(())
+    })
+}
+
+/// Refuses other hosts (peer not on loopback, or a `Host` that is not the printed address) unless the
+/// server was bound elsewhere on request, and anything but GET/HEAD. Adds the security headers.
+async fn guard(
+    State(served): State<Arc<Served>>,
+    ConnectInfo(peer): ConnectInfo<SocketAddr>,
+    request: Request,
+    next: Next,
+) -> Response {
+    if let Some(allowed) = &served.allowed_hosts {
+        let host = request
+            .headers()
+            .get(header::HOST)
+            .and_then(|h| h.to_str().ok())
+            .unwrap_or("");
+        if !peer.ip().is_loopback() || !allowed.iter().any(|a| a.eq_ignore_ascii_case(host)) {
+            return (
+                StatusCode::FORBIDDEN,
+                format!(
+                    "forbidden: this review server answers only on {}",
+                    allowed.join(", ")
+                ),
+            )
+                .into_response();
+        }
+    }
+    if request.method() != Method::GET && request.method() != Method::HEAD {
+        return StatusCode::METHOD_NOT_ALLOWED.into_response();
+    }
+    let mut response = next.run(request).await;
+    let h = response.headers_mut();
+    h.insert(
+        header::CONTENT_SECURITY_POLICY,
+        HeaderValue::from_static(
+            "default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; \
+             img-src 'self' data: blob:; connect-src 'self'; frame-ancestors 'none'",
+        ),
+    );
+    h.insert(
+        header::X_CONTENT_TYPE_OPTIONS,
+        HeaderValue::from_static("nosniff"),
+    );
+    h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+    response
+}
+
+fn with_type(content_type: &'static str, body: String) -> Response {
+    ([(header::CONTENT_TYPE, content_type)], body).into_response()
+}
+
+async fn index(State(s): State<Arc<Served>>) -> Response {
+    with_type("text/html; charset=utf-8", s.page.clone())
+}
+
+async fn script() -> Response {
+    with_type("text/javascript; charset=utf-8", page::REVIEW_JS.to_owned())
+}
+
+async fn stylesheet() -> Response {
+    with_type("text/css; charset=utf-8", page::REVIEW_CSS.to_owned())
+}
+
+async fn review_json(State(s): State<Arc<Served>>) -> Response {
+    with_type("application/json", s.json.clone())
+}
+
+async fn not_found() -> Response {
+    (
+        StatusCode::NOT_FOUND,
+        "not found: this server serves only the review page of the recording it was started with",
+    )
+        .into_response()
+}

@@ -1,0 +1,362 @@
+//! `ergocell review` and `ergocell report` end to end on a recording made here by `ergocell demo`:
+//! the analysis holds the session (frames, RULA, height, class, lock, approvers, robot TCP); the
+//! server serves only that recording's page (no path traversal) and only to the loopback host it
+//! printed; a truncated recording is read up to the cut and says so; a foreign MCAP and a non-MCAP
+//! file are refused with what could be read.
+
+// Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::collections::BTreeMap;
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::TcpStream;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::OnceLock;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn tmp(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name)
+}
+
+/// One short demo session, recorded once for all tests of this file.
+fn demo_recording() -> &'static Path {
+    static REC: OnceLock<PathBuf> = OnceLock::new();
+    REC.get_or_init(|| {
+        let out = tmp("review-demo.mcap");
+        let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(root())
+            .args(["demo", "--cycles", "1", "--seed", "7", "--out"])
+            .arg(&out)
+            .stdout(Stdio::null())
+            .status()
+            .unwrap();
+        assert!(status.success(), "demo failed");
+        out
+    })
+}
+
+fn ergocell(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(root())
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// The data a report embeds.
+fn report_data(html: &str) -> serde_json::Value {
+    let start = html.find("window.ERGOCELL_REVIEW_DATA = ").unwrap() + 30;
+    let end = start + html[start..].find(";</script>").unwrap();
+    serde_json::from_str(&html[start..end]).unwrap()
+}
+
+fn report(rec: &Path, name: &str) -> (std::process::Output, Option<serde_json::Value>) {
+    let out = tmp(name);
+    let _ = std::fs::remove_file(&out);
+    let o = ergocell(&[
+        "report",
+        rec.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let data = std::fs::read_to_string(&out).ok().map(|h| report_data(&h));
+    (o, data)
+}
+
+#[test]
+fn report_holds_the_whole_session() {
+    let (o, data) = report(demo_recording(), "review-report.html");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let data = data.unwrap();
+    assert_eq!(data["version"], 1);
+    let s = &data["sessions"][0];
+    assert_eq!(s["source"]["complete"], true);
+    assert_eq!(s["source"]["problems"].as_array().unwrap().len(), 0);
+    // The demo operator is 1.75 m: measured within 5 cm, class c2, locked and (demo-)approved.
+    let h = s["facts"]["height_m"].as_f64().unwrap();
+    assert!((h - 1.75).abs() < 0.05, "height {h}");
+    assert_eq!(s["facts"]["height_class"], "c2");
+    assert_eq!(s["facts"]["trajectory_sha256"].as_str().unwrap().len(), 64);
+    assert!(!s["facts"]["approved_by"].as_array().unwrap().is_empty());
+    let states: Vec<&str> = s["facts"]["states"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x["state"].as_str().unwrap())
+        .collect();
+    assert!(states.contains(&"working") && states.contains(&"session_ended"));
+
+    let f = &s["frames"];
+    let n = f["t"].as_array().unwrap().len();
+    assert!(n > 50, "{n} frames");
+    for key in [
+        "positions",
+        "strain",
+        "grand_left",
+        "grand_right",
+        "action_level",
+    ] {
+        assert_eq!(f[key].as_array().unwrap().len(), n, "{key}");
+    }
+    let times: Vec<f64> = f["t"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert!(times.windows(2).all(|w| w[0] < w[1]), "time increases");
+    // Every frame has 99 coordinates and 33 strains in 0..1; a standing operator's nose is 1.4–1.9 m up.
+    let mut scored = 0;
+    for (k, row) in f["positions"].as_array().unwrap().iter().enumerate() {
+        let row = row.as_array().unwrap();
+        assert_eq!(row.len(), 99);
+        if let Some(z) = row[2].as_f64() {
+            assert!((0.3..2.1).contains(&z), "nose z {z}");
+        }
+        let strain = f["strain"][k].as_array().unwrap();
+        assert_eq!(strain.len(), 33);
+        for v in strain.iter().filter_map(serde_json::Value::as_f64) {
+            assert!((0.0..=1.0).contains(&v));
+        }
+        if f["grand_right"][k].is_u64() {
+            scored += 1;
+            let g = f["grand_right"][k].as_u64().unwrap();
+            assert!((1..=7).contains(&g));
+        }
+    }
+    assert!(scored > n / 2, "{scored} of {n} frames scored");
+    // Regions: shares of each region sum to 1 where it was scored.
+    for r in s["regions"].as_array().unwrap() {
+        if r["samples"].as_u64().unwrap() > 0 {
+            let sum: f64 = r["time_share"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .sum();
+            assert!((sum - 1.0).abs() < 1e-9, "{r}");
+        }
+    }
+    let angles: Vec<&str> = s["angles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["name"].as_str().unwrap())
+        .collect();
+    assert!(angles.contains(&"trunk flexion") && angles.contains(&"elbow flexion"));
+    // The robot: a TCP track inside the cell and the handover point in front of the operator.
+    let tcp = s["robot"]["tcp"]["positions"].as_array().unwrap();
+    assert!(tcp.len() > 50);
+    let hp = s["robot"]["handover_point"].as_array().unwrap();
+    let hz = hp[2].as_f64().unwrap();
+    assert!((0.8..1.6).contains(&hz), "handover height {hz}");
+}
+
+#[test]
+fn a_truncated_recording_is_read_up_to_the_cut_and_says_so() {
+    let bytes = std::fs::read(demo_recording()).unwrap();
+    let cut = tmp("review-cut.mcap");
+    std::fs::write(&cut, &bytes[..bytes.len() * 6 / 10]).unwrap();
+    let (o, data) = report(&cut, "review-cut.html");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(stderr.contains("cut short"), "{stderr}");
+    let s = &data.unwrap()["sessions"][0];
+    assert_eq!(s["source"]["complete"], false);
+    assert!(!s["source"]["problems"].as_array().unwrap().is_empty());
+    let (_, full) = report(demo_recording(), "review-full.html");
+    let n_full = full.unwrap()["sessions"][0]["frames"]["t"]
+        .as_array()
+        .unwrap()
+        .len();
+    let n_cut = s["frames"]["t"].as_array().unwrap().len();
+    assert!(n_cut > 0 && n_cut < n_full, "{n_cut} of {n_full}");
+}
+
+#[test]
+fn a_foreign_mcap_and_a_non_mcap_file_are_refused_with_what_could_be_read() {
+    let foreign = tmp("review-foreign.mcap");
+    {
+        let mut w = mcap::Writer::new(std::io::BufWriter::new(
+            std::fs::File::create(&foreign).unwrap(),
+        ))
+        .unwrap();
+        let schema = w
+            .add_schema("std_msgs/msg/String", "ros2msg", b"string data\n")
+            .unwrap();
+        let channel = w
+            .add_channel(schema, "/chatter", "cdr", &BTreeMap::new())
+            .unwrap();
+        for k in 0..3u64 {
+            w.write_to_known_channel(
+                &mcap::records::MessageHeader {
+                    channel_id: channel,
+                    sequence: k as u32,
+                    log_time: k,
+                    publish_time: k,
+                },
+                &[0, 1, 0, 0, 3, 0, 0, 0, b'h', b'i', 0, 0],
+            )
+            .unwrap();
+        }
+        w.finish().unwrap();
+    }
+    let (o, _) = report(&foreign, "review-foreign.html");
+    assert_eq!(o.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.contains("not an ergocell session recording") && stderr.contains("/chatter"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("std_msgs/msg/String"), "{stderr}");
+
+    let text = tmp("review-not-mcap.mcap");
+    std::fs::write(&text, "hello, I am a text file\n").unwrap();
+    let (o, _) = report(&text, "review-text.html");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("not a readable MCAP file"));
+}
+
+/// A running `ergocell review`, killed on drop.
+struct Server {
+    child: Child,
+    port: u16,
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn serve(rec: &Path) -> Server {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(root())
+        .args(["review", rec.to_str().unwrap(), "--port", "0"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+    let url = loop {
+        let line = lines
+            .next()
+            .expect("server exited before printing its URL")
+            .unwrap();
+        if let Some(u) = line.strip_prefix("review: ") {
+            break u.to_owned();
+        }
+    };
+    assert!(url.starts_with("http://127.0.0.1:"), "{url}");
+    let port = url
+        .trim_start_matches("http://127.0.0.1:")
+        .trim_end_matches('/')
+        .parse()
+        .unwrap();
+    Server { child, port }
+}
+
+/// A raw HTTP/1.1 request (the target is sent verbatim, so `..` reaches the server unnormalised):
+/// (status, headers + body).
+fn get(port: u16, method: &str, target: &str, host: &str) -> (u16, String) {
+    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    write!(
+        s,
+        "{method} {target} HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut buf = Vec::new();
+    s.read_to_end(&mut buf).unwrap();
+    let text = String::from_utf8_lossy(&buf).into_owned();
+    let status = text
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(0);
+    (status, text)
+}
+
+#[test]
+fn the_server_serves_only_the_recordings_review_and_only_to_loopback() {
+    let server = serve(demo_recording());
+    let host = format!("127.0.0.1:{}", server.port);
+    let (status, page) = get(server.port, "GET", "/", &host);
+    assert_eq!(status, 200);
+    assert!(page.contains("<div id=\"app\"></div>") && page.contains("assets/review.js"));
+    assert!(page
+        .to_ascii_lowercase()
+        .contains("content-security-policy"));
+    let (status, js) = get(server.port, "GET", "/assets/review.js", &host);
+    assert_eq!(status, 200);
+    assert!(js.len() > 1000);
+    let (status, json) = get(server.port, "GET", "/api/review.json", &host);
+    assert_eq!(status, 200);
+    let body = &json[json.find("\r\n\r\n").unwrap() + 4..];
+    let data: serde_json::Value = serde_json::from_str(body).unwrap();
+    assert_eq!(data["sessions"][0]["facts"]["height_class"], "c2");
+    // `localhost` works too.
+    assert_eq!(
+        get(
+            server.port,
+            "GET",
+            "/",
+            &format!("localhost:{}", server.port)
+        )
+        .0,
+        200
+    );
+
+    // No path reaches the file system: the recording, the repository, /etc.
+    let rec_path = demo_recording().to_str().unwrap().to_owned();
+    for target in [
+        "/assets/../Cargo.toml",
+        "/assets/..%2f..%2fCargo.toml",
+        "/%2e%2e/%2e%2e/Cargo.toml",
+        "/api/review.json/../../Cargo.toml",
+        "/../../../../etc/passwd",
+        "/review-demo.mcap",
+        "/Cargo.toml",
+        "/assets/",
+        rec_path.as_str(),
+    ] {
+        let (status, text) = get(server.port, "GET", target, &host);
+        assert!(status == 404 || status == 400, "{target}: {status}");
+        assert!(
+            !text.contains("[package]") && !text.contains("root:"),
+            "{target}"
+        );
+        assert!(
+            !text.as_bytes().windows(5).any(|w| w == b"\x89MCAP"),
+            "{target}"
+        );
+    }
+    // Other hosts (DNS rebinding) and other methods are refused.
+    assert_eq!(get(server.port, "GET", "/", "evil.example").0, 403);
+    assert_eq!(
+        get(server.port, "GET", "/api/review.json", "evil.example:80").0,
+        403
+    );
+    assert_eq!(get(server.port, "POST", "/", &host).0, 405);
+    // Nothing but loopback is listening: the server is not reachable on another address of this
+    // machine (when it has one).
+    if let Some(ip) = non_loopback_ip() {
+        assert!(
+            TcpStream::connect((ip, server.port)).is_err(),
+            "review reachable on {ip}"
+        );
+    }
+}
+
+/// An address of this machine that is not loopback, if any (the source address of a UDP socket
+/// "connected" to a public address; nothing is sent).
+fn non_loopback_ip() -> Option<std::net::IpAddr> {
+    let s = std::net::UdpSocket::bind("0.0.0.0:0").ok()?;
+    s.connect("192.0.2.1:9").ok()?;
+    let ip = s.local_addr().ok()?.ip();
+    (!ip.is_loopback() && !ip.is_unspecified()).then_some(ip)
+}
