@@ -1,0 +1,71 @@
+// End-to-end check of the review page served by `ergocell review` (or dev/serve.mjs):
+//   node web/e2e/review.e2e.mjs <url> <screenshot.png>
+// Uses Debian's chromium (/usr/bin/chromium, or $CHROMIUM). Exits non-zero on the first failure.
+import { main, loadChecks, screenshot, fail, pass } from './lib.mjs';
+
+const [url, shot] = process.argv.slice(2);
+if (!url || !shot) {
+  console.error('usage: node review.e2e.mjs <url> <screenshot.png>');
+  process.exit(2);
+}
+
+await main(async (b) => {
+  const { page } = b;
+  const n = await loadChecks(b, url);
+  if (n < 2) fail(`the recording has ${n} frame(s); play and timeline checks need at least 2`);
+
+  // 2. play advances the counter; pause stops it.
+  const counter = () => page.textContent('#frame-counter');
+  const before = await counter();
+  await page.click('#play');
+  await page
+    .waitForFunction((b0) => document.querySelector('#frame-counter').textContent !== b0, before, { timeout: 2500 })
+    .catch(() => fail(`pressing play did not advance the frame counter within 2 s (still "${before}")`));
+  await page.waitForTimeout(300);
+  const during = await counter();
+  await page.click('#play');
+  if (await page.evaluate(() => window.ergocellReview.playing())) fail('clicking #play a second time did not pause');
+  const paused = await counter();
+  await page.waitForTimeout(1000);
+  const later = await counter();
+  if (later !== paused) fail(`after pause the counter still moved: "${paused}" -> "${later}"`);
+  pass(`play advances the counter ("${before}" -> "${during}"); pause stops it ("${paused}" unchanged over 1 s)`);
+
+  // 3. a click at 70 % of the timeline's plotting area moves the 3D view there.
+  const over = await page.$('#timeline .u-over');
+  if (!over) fail('no timeline plot (#timeline .u-over) on the page');
+  const box = await over.boundingBox();
+  await page.mouse.click(box.x + box.width * 0.7, box.y + box.height * 0.5);
+  await page.waitForTimeout(300);
+  const r = await page.evaluate(() => {
+    const c = document.querySelector('canvas.view3d');
+    return { frame: Number(c.getAttribute('data-frame')), t: window.ergocellReview.time(), api: window.ergocellReview.frame() };
+  });
+  const times = await page.evaluate(() => {
+    const f = window.ergocellReview.frameCount();
+    const cur = window.ergocellReview.frame();
+    window.ergocellReview.seek(-1e9);
+    const t0 = window.ergocellReview.time();
+    window.ergocellReview.seek(1e9);
+    const t1 = window.ergocellReview.time();
+    window.ergocellReview.seek(-1e9);
+    for (let i = 0; i < cur; i++) document.getElementById('step-forward').click();
+    return { t0, t1, f, back: window.ergocellReview.frame() };
+  });
+  if (r.frame !== r.api) fail(`canvas data-frame ${r.frame} differs from ergocellReview.frame() ${r.api}`);
+  const share = (r.t - times.t0) / (times.t1 - times.t0);
+  if (!(Math.abs(share - 0.7) <= 0.1)) fail(`clicking the timeline at 70 % went to frame ${r.frame} at ${r.t.toFixed(2)} s, ${(share * 100).toFixed(1)} % of the duration (expected 60–80 %)`);
+  if (times.back !== r.frame) fail(`stepping forward ${r.frame} times from frame 0 reached ${times.back}`);
+  pass(`timeline click at 70 % sets the 3D view to frame ${r.frame} (${r.t.toFixed(2)} s, ${(share * 100).toFixed(1)} % of ${(times.t1 - times.t0).toFixed(2)} s)`);
+
+  const text = await counter();
+  if (!text.startsWith(`frame ${r.frame + 1} / ${n}`)) fail(`the counter reads "${text}" after the timeline click (expected frame ${r.frame + 1} / ${n})`);
+  const scrub = await page.$eval('#scrubber', (e) => Number(e.value));
+  if (scrub !== r.frame) fail(`the scrubber is at ${scrub}, not at frame ${r.frame}`);
+  pass(`counter ("${text}") and scrubber follow the timeline click`);
+
+  // 4. the screenshot.
+  await page.mouse.move(5, 5);
+  await page.waitForTimeout(200);
+  await screenshot(b, shot);
+});

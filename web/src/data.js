@@ -1,0 +1,149 @@
+// Loading and normalising the review JSON (contract version 1, produced by the Rust side).
+
+export async function loadData() {
+  if (typeof window.ERGOCELL_REVIEW_DATA !== 'undefined') return window.ERGOCELL_REVIEW_DATA;
+  let res;
+  try {
+    res = await fetch('api/review.json', { cache: 'no-store' });
+  } catch (e) {
+    throw new Error(`could not reach the review server (${e.message})`);
+  }
+  if (!res.ok) throw new Error(`api/review.json answered ${res.status} ${res.statusText}`);
+  try {
+    return await res.json();
+  } catch (e) {
+    throw new Error(`api/review.json is not valid JSON (${e.message})`);
+  }
+}
+
+const arr = (a) => (Array.isArray(a) ? a : []);
+const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
+
+function column(a, n) {
+  const src = arr(a);
+  const out = new Array(n);
+  for (let i = 0; i < n; i++) out[i] = num(src[i]);
+  return out;
+}
+
+/** A session with every optional part filled in, typed arrays for the per-frame data. */
+export function normalizeSession(s, index) {
+  s = s || {};
+  const frames = s.frames || {};
+  const tRaw = arr(frames.t);
+  // Frames without a finite time cannot be placed on the timeline; keep the valid prefix.
+  let n = 0;
+  while (n < tRaw.length && num(tRaw[n]) !== null) n++;
+  const t = Float64Array.from(tRaw.slice(0, n));
+
+  const landmarks = arr(s.landmarks).map(String);
+  const posRows = arr(frames.positions);
+  let nl = landmarks.length;
+  if (!nl) for (const r of posRows) if (Array.isArray(r)) { nl = Math.floor(r.length / 3); break; }
+  if (!nl) nl = 33;
+
+  const positions = new Array(n);
+  const strain = new Array(n);
+  const strainRows = arr(frames.strain);
+  for (let i = 0; i < n; i++) {
+    const p = new Float64Array(nl * 3).fill(NaN);
+    const r = posRows[i];
+    if (Array.isArray(r)) {
+      for (let k = 0; k < nl; k++) {
+        const x = num(r[3 * k]), y = num(r[3 * k + 1]), z = num(r[3 * k + 2]);
+        if (x !== null && y !== null && z !== null) { p[3 * k] = x; p[3 * k + 1] = y; p[3 * k + 2] = z; }
+      }
+    }
+    positions[i] = p;
+    const sr = strainRows[i];
+    const st = new Float64Array(nl).fill(NaN);
+    if (Array.isArray(sr)) for (let k = 0; k < nl; k++) { const v = num(sr[k]); if (v !== null) st[k] = v; }
+    strain[i] = st;
+  }
+
+  const bones = arr(s.bones).filter((b) => Array.isArray(b) && b.length === 2 && b.every((k) => Number.isInteger(k) && k >= 0 && k < nl));
+  const upRaw = arr(s.up).map(Number);
+  let up = upRaw.length === 3 && upRaw.every(Number.isFinite) ? upRaw : [0, 0, 1];
+  const ul = Math.hypot(...up);
+  up = ul > 0 ? up.map((v) => v / ul) : [0, 0, 1];
+
+  let tcp = null;
+  const robot = s.robot || {};
+  if (robot.tcp && Array.isArray(robot.tcp.t)) {
+    const tt = [], pp = [];
+    const rows = arr(robot.tcp.positions);
+    robot.tcp.t.forEach((tv, i) => {
+      const r = arr(rows[i]).map(num);
+      if (num(tv) !== null && r.length === 3 && r.every((v) => v !== null)) { tt.push(tv); pp.push(r); }
+    });
+    if (tt.length) tcp = { t: Float64Array.from(tt), positions: pp };
+  }
+  const hp = arr(robot.handover_point).map(num);
+  const handover = hp.length === 3 && hp.every((v) => v !== null) ? hp : null;
+
+  const source = s.source || {};
+  const facts = s.facts || {};
+  return {
+    index,
+    label: String(s.label ?? source.file ?? `session ${index + 1}`),
+    source: {
+      file: source.file ?? null,
+      bytes: num(source.bytes),
+      messages: num(source.messages),
+      complete: source.complete !== false,
+      problems: arr(source.problems).map(String),
+    },
+    facts: {
+      height_m: num(facts.height_m),
+      height_uncertainty_m: num(facts.height_uncertainty_m),
+      height_class: facts.height_class ?? null,
+      trajectory_sha256: facts.trajectory_sha256 ?? null,
+      approved_by: arr(facts.approved_by).map(String),
+      states: arr(facts.states).filter((x) => x && typeof x === 'object'),
+    },
+    landmarks,
+    nl,
+    bones,
+    up,
+    n,
+    t,
+    positions,
+    strain,
+    grandLeft: column(frames.grand_left, n),
+    grandRight: column(frames.grand_right, n),
+    actionLeft: column(frames.action_left, n),
+    actionRight: column(frames.action_right, n),
+    actionLevel: column(frames.action_level, n),
+    tcp,
+    handover,
+    warnings: arr(s.warnings).filter((w) => w && num(w.t) !== null).sort((a, b) => a.t - b.t),
+    regions: arr(s.regions).filter((r) => r && typeof r === 'object'),
+    angles: arr(s.angles).filter((a) => a && typeof a === 'object'),
+  };
+}
+
+/** Index of the frame nearest to time `time` (t sorted ascending). */
+export function nearestFrame(t, time) {
+  const n = t.length;
+  if (!n) return 0;
+  if (time <= t[0]) return 0;
+  if (time >= t[n - 1]) return n - 1;
+  let lo = 0, hi = n - 1;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if (t[mid] <= time) lo = mid; else hi = mid;
+  }
+  return time - t[lo] <= t[hi] - time ? lo : hi;
+}
+
+/** Index of the last frame with t <= time (0 if none). */
+export function frameAtOrBefore(t, time) {
+  const n = t.length;
+  if (!n || time < t[0]) return 0;
+  let lo = 0, hi = n;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if (t[mid] <= time) lo = mid; else hi = mid;
+  }
+  return lo;
+}

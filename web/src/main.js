@@ -1,0 +1,305 @@
+// ergocell review page: entry point. Data comes from window.ERGOCELL_REVIEW_DATA (report)
+// or api/review.json (`ergocell review`'s server).
+import 'uplot/dist/uPlot.min.css';
+import './style.css';
+import { loadData, normalizeSession, nearestFrame, frameAtOrBefore } from './data.js';
+import { SkeletonView } from './view3d.js';
+import { createTimeline, SERIES_COLORS } from './timeline.js';
+import { renderFacts, renderStates, renderWarnings, renderRegions, renderAngles, esc, SESSION_COLORS } from './panels.js';
+import { gradientCss } from './colormap.js';
+
+const SPEEDS = [0.25, 0.5, 1, 2, 4];
+// Inline SVG icons: the system fonts may lack the media-control glyphs.
+const PLAY_ICON = '<svg viewBox="0 0 16 16" width="14" height="14" aria-hidden="true"><path d="M4 2v12l10-6z" fill="currentColor"/></svg>';
+const PAUSE_ICON = '<svg viewBox="0 0 16 16" width="14" height="14" aria-hidden="true"><path d="M3 2h4v12H3zM9 2h4v12H9z" fill="currentColor"/></svg>';
+
+function preventFaviconRequest() {
+  // The shell has no icon; without this the browser asks the server for /favicon.ico.
+  if (!document.querySelector('link[rel~="icon"]')) {
+    const l = document.createElement('link');
+    l.rel = 'icon';
+    l.href = 'data:,';
+    document.head.appendChild(l);
+  }
+}
+
+function appRoot() {
+  let app = document.getElementById('app');
+  if (!app) {
+    app = document.createElement('div');
+    app.id = 'app';
+    document.body.appendChild(app);
+  }
+  return app;
+}
+
+function showMessage(app, title, detail) {
+  app.innerHTML = `<header class="topbar"><div class="brand">ergocell <span>review</span></div></header><div class="message-card"><h1>${esc(title)}</h1><p>${esc(detail)}</p></div>`;
+}
+
+function layout(sessions) {
+  const cmp = sessions.length > 1;
+  const problems = sessions.flatMap((s, i) => s.source.problems.map((p) => (cmp ? `${'AB'[i]} · ${s.label}: ${p}` : p)));
+  const selector = cmp
+    ? `<div class="seg-select" id="session-select" role="tablist" aria-label="Session shown in 3D">${sessions
+        .map((s, i) => `<button role="tab" data-i="${i}"><span class="sess-dot" style="background:${SESSION_COLORS[i]}"></span>${'AB'[i]} · ${esc(s.label)}</button>`)
+        .join('')}</div>`
+    : '';
+  const title = cmp ? `${esc(sessions[0].label)} <span class="vs">vs</span> ${esc(sessions[1].label)}` : esc(sessions[0].label);
+  return `
+<header class="topbar">
+  <div class="brand">ergocell <span>review</span></div>
+  <div class="title" title="${esc(sessions.map((s) => s.label).join(' vs '))}">${title}</div>
+  ${selector}
+</header>
+${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1 ? 'Problem with the recording' : `${problems.length} problems with the recordings`}</b> — only what could be read is shown.<ul>${problems.map((p) => `<li>${esc(p)}</li>`).join('')}</ul></div>` : ''}
+<main class="layout${cmp ? ' compare' : ''}">
+  <section class="card viewer">
+    <div class="viewport" id="viewport">
+      <div class="overlay top-left"><span class="session-badge" id="session-badge"></span></div>
+      <div class="overlay legend" aria-label="Strain colour legend">
+        <div class="legend-title">Joint strain (RULA band)</div>
+        <div class="ramp" style="background:${gradientCss()}"></div>
+        <div class="ramp-labels"><span>0 · lowest</span><span>highest · 1</span></div>
+        <div class="legend-keys"><span><i class="dot grey"></i>not scored</span><span><i class="dot tcp"></i>robot TCP</span><span><i class="dot handover"></i>handover point</span></div>
+      </div>
+      <div class="overlay bottom-right hint">drag to orbit · right-drag to pan · wheel to zoom</div>
+      <div class="view-message" id="view-empty" hidden><span class="msg">No frames were recorded in this session.</span></div>
+    </div>
+    <div class="transport">
+      <button id="step-back" title="Step back (←)" aria-label="Step back"><svg viewBox="0 0 16 16" width="14" height="14" aria-hidden="true"><path d="M3 2h2v12H3zM14 2v12L6 8z" fill="currentColor"/></svg></button>
+      <button id="play" class="primary" title="Play / pause (space)" aria-label="Play">${PLAY_ICON}</button>
+      <button id="step-forward" title="Step forward (→)" aria-label="Step forward"><svg viewBox="0 0 16 16" width="14" height="14" aria-hidden="true"><path d="M11 2h2v12h-2zM2 2v12l8-6z" fill="currentColor"/></svg></button>
+      <input type="range" id="scrubber" min="0" max="0" step="1" value="0" aria-label="Time">
+      <label class="speed">speed <select id="speed">${SPEEDS.map((v) => `<option value="${v}"${v === 1 ? ' selected' : ''}>${v}×</option>`).join('')}</select></label>
+      <span id="frame-counter" class="counter">frame 0 / 0 · 0.00 s</span>
+    </div>
+  </section>
+  <aside class="side">
+    <section class="card" id="facts"></section>
+    <section class="card" id="warnings"></section>
+    <section class="card" id="states"></section>
+  </aside>
+  <section class="card timeline-card">
+    <h2>Timeline <span class="hint">RULA grand score per side and action level · dashed flags are warnings (hover) · click to jump</span></h2>
+    <div id="timeline"></div>
+  </section>
+  <section class="card" id="regions"></section>
+  <section class="card" id="angles"></section>
+</main>
+<footer class="foot">ergocell review · RULA scores per frame from the fused 3D skeleton · lengths in metres, angles in degrees</footer>`;
+}
+
+function start(app, raw) {
+  const sessionsRaw = raw && Array.isArray(raw.sessions) ? raw.sessions : null;
+  if (!sessionsRaw) {
+    showMessage(app, 'The review data is not in the expected format', 'Expected an object with a "sessions" list.');
+    return;
+  }
+  if (!sessionsRaw.length) {
+    showMessage(app, 'Nothing to review', 'The recording contains no session: no frames, facts or warnings could be read from it.');
+    return;
+  }
+  const sessions = sessionsRaw.slice(0, 2).map(normalizeSession);
+  app.innerHTML = layout(sessions);
+  document.title = document.title && document.title !== '…' ? document.title : `ergocell review · ${sessions.map((s) => s.label).join(' vs ')}`;
+
+  const $ = (id) => document.getElementById(id);
+  const playBtn = $('play');
+  const scrubber = $('scrubber');
+  const counter = $('frame-counter');
+  const speedSel = $('speed');
+  const view = new SkeletonView($('viewport'));
+
+  const state = { si: 0, frame: 0, playing: false, time: 0, last: 0, raf: 0 };
+  const cur = () => sessions[state.si];
+
+  function cursorTimeFor(si) {
+    return () => (si === state.si && sessions[si].n ? sessions[si].t[state.frame] : null);
+  }
+
+  // Timelines, one per session.
+  const tlHost = $('timeline');
+  const timelines = sessions.map((s, si) => {
+    const wrap = document.createElement('div');
+    wrap.className = 'tl';
+    if (sessions.length > 1) {
+      const h = document.createElement('div');
+      h.className = 'tl-head';
+      h.innerHTML = `<span class="sess-dot" style="background:${SESSION_COLORS[si]}"></span>${'AB'[si]} · ${esc(s.label)}`;
+      wrap.appendChild(h);
+    }
+    const plot = document.createElement('div');
+    plot.className = 'tl-plot';
+    wrap.appendChild(plot);
+    tlHost.appendChild(wrap);
+    return { wrap, plot, s, si };
+  });
+  // Build the plots after layout so they get their real width.
+  timelines.forEach((tl) => {
+    tl.chart = createTimeline(tl.plot, tl.s, {
+      height: sessions.length > 1 ? 150 : 190,
+      cursorTime: cursorTimeFor(tl.si),
+      onSeek: (t) => seek(tl.si, t),
+    });
+  });
+
+  const onSeekList = (si, t) => seek(si, t);
+  renderFacts($('facts'), sessions);
+  renderWarnings($('warnings'), sessions, onSeekList);
+  renderStates($('states'), sessions, onSeekList);
+  renderRegions($('regions'), sessions);
+  renderAngles($('angles'), sessions);
+
+  function update() {
+    const s = cur();
+    const n = s.n;
+    const f = n ? state.frame : 0;
+    view.setFrame(f);
+    scrubber.max = String(Math.max(0, n - 1));
+    scrubber.value = String(f);
+    const t = n ? s.t[f] : 0;
+    counter.textContent = `frame ${n ? f + 1 : 0} / ${n} · ${t.toFixed(2)} s`;
+    playBtn.innerHTML = state.playing ? PAUSE_ICON : PLAY_ICON;
+    playBtn.setAttribute('aria-label', state.playing ? 'Pause' : 'Play');
+    playBtn.classList.toggle('active', state.playing);
+    for (const tl of timelines) tl.chart.redraw();
+  }
+
+  function selectSession(si, keepTime = true) {
+    const t = cur().n ? cur().t[state.frame] : 0;
+    state.si = si;
+    const s = cur();
+    view.setSession(s);
+    state.frame = keepTime && s.n ? nearestFrame(s.t, t) : 0;
+    const disabled = s.n === 0;
+    for (const id of ['play', 'step-back', 'step-forward', 'scrubber']) $(id).disabled = disabled;
+    $('view-empty').hidden = !disabled;
+    $('session-badge').innerHTML = sessions.length > 1 ? `<span class="sess-dot" style="background:${SESSION_COLORS[si]}"></span>${'AB'[si]} · ${esc(s.label)}` : esc(s.label);
+    document.querySelectorAll('#session-select button').forEach((b) => b.classList.toggle('active', Number(b.dataset.i) === si));
+    timelines.forEach((tl) => tl.wrap.classList.toggle('active', tl.si === si));
+    update();
+  }
+
+  function setFrame(i) {
+    const n = cur().n;
+    state.frame = n ? Math.min(n - 1, Math.max(0, i)) : 0;
+    update();
+  }
+
+  function seek(si, t) {
+    pause();
+    if (si !== state.si) selectSession(si, false);
+    const s = cur();
+    if (s.n) setFrame(nearestFrame(s.t, t));
+  }
+
+  function tick(now) {
+    if (!state.playing) return;
+    const s = cur();
+    const dt = Math.min(0.25, Math.max(0, (now - state.last) / 1000));
+    state.last = now;
+    state.time += dt * Number(speedSel.value || 1);
+    const end = s.t[s.n - 1];
+    if (state.time >= end) {
+      state.frame = s.n - 1;
+      state.playing = false;
+      update();
+      return;
+    }
+    const f = frameAtOrBefore(s.t, state.time);
+    if (f !== state.frame) {
+      state.frame = f;
+      update();
+    }
+    state.raf = requestAnimationFrame(tick);
+  }
+
+  function play() {
+    const s = cur();
+    if (!s.n || state.playing) return;
+    if (state.frame >= s.n - 1) state.frame = 0; // at the end: play from the start
+    state.playing = true;
+    state.time = s.t[state.frame];
+    state.last = performance.now();
+    update();
+    state.raf = requestAnimationFrame(tick);
+  }
+
+  function pause() {
+    if (!state.playing) return;
+    state.playing = false;
+    cancelAnimationFrame(state.raf);
+    update();
+  }
+
+  const toggle = () => (state.playing ? pause() : play());
+  const step = (d) => {
+    pause();
+    setFrame(state.frame + d);
+  };
+
+  playBtn.addEventListener('click', toggle);
+  $('step-back').addEventListener('click', () => step(-1));
+  $('step-forward').addEventListener('click', () => step(1));
+  scrubber.addEventListener('input', () => {
+    pause();
+    setFrame(Number(scrubber.value));
+  });
+  speedSel.addEventListener('change', () => {
+    if (state.playing) state.time = cur().t[state.frame];
+  });
+  document.querySelectorAll('#session-select button').forEach((b) => b.addEventListener('click', () => {
+    pause();
+    selectSession(Number(b.dataset.i));
+  }));
+
+  const isTyping = (el) => el && (el.tagName === 'SELECT' || el.tagName === 'TEXTAREA' || (el.tagName === 'INPUT' && el.type !== 'range'));
+  window.addEventListener('keydown', (e) => {
+    if (e.ctrlKey || e.metaKey || e.altKey || isTyping(e.target)) return;
+    if (e.code === 'Space' || e.key === ' ') {
+      e.preventDefault();
+      if (!e.repeat) toggle();
+    } else if (e.key === 'ArrowLeft' || e.key === 'ArrowRight') {
+      e.preventDefault();
+      step(e.key === 'ArrowLeft' ? -1 : 1);
+    }
+  });
+  // A focused button would also "click" on the space key's release.
+  window.addEventListener('keyup', (e) => {
+    if ((e.code === 'Space' || e.key === ' ') && !isTyping(e.target)) e.preventDefault();
+  });
+
+  window.ergocellReview = {
+    frame: () => state.frame,
+    frameCount: () => cur().n,
+    playing: () => state.playing,
+    session: () => state.si,
+    time: () => (cur().n ? cur().t[state.frame] : 0),
+    seek: (t, si = state.si) => seek(si, t),
+  };
+
+  selectSession(0, false);
+}
+
+async function main() {
+  preventFaviconRequest();
+  const app = appRoot();
+  app.innerHTML = '<div class="message-card"><p>Loading the recording…</p></div>';
+  let raw;
+  try {
+    raw = await loadData();
+  } catch (e) {
+    showMessage(app, 'Could not load the review data', e.message || String(e));
+    return;
+  }
+  try {
+    start(app, raw);
+  } catch (e) {
+    // Keep the page readable rather than blank; the message says what broke.
+    showMessage(app, 'The review page could not show this recording', e.message || String(e));
+    throw e;
+  }
+}
+
+main();

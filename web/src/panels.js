@@ -1,0 +1,294 @@
+// Session facts, state changes, warnings list, per-region summary and joint-angle histograms.
+import uPlot from 'uplot';
+import { scoreCss } from './colormap.js';
+
+export const SESSION_COLORS = ['#4ea1ff', '#ffa94d'];
+const AXIS = '#8b9bb0';
+const GRID = 'rgba(139,155,176,0.12)';
+
+export function esc(s) {
+  return String(s ?? '').replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
+}
+
+const fmt = (v, d = 1) => (v == null || !Number.isFinite(+v) ? '–' : (+v).toFixed(d));
+const titleCase = (s) => String(s || '').replace(/^./, (c) => c.toUpperCase());
+
+export function fmtBytes(b) {
+  if (b == null) return '–';
+  if (b < 1024) return `${b} B`;
+  if (b < 1024 * 1024) return `${(b / 1024).toFixed(1)} KiB`;
+  return `${(b / 1024 / 1024).toFixed(1)} MiB`;
+}
+
+function heightText(f) {
+  if (f.height_m == null) return '<span class="muted">not measured</span>';
+  const u = f.height_uncertainty_m != null ? ` ± ${(f.height_uncertainty_m * 100).toFixed(1)} cm` : '';
+  return `${f.height_m.toFixed(3)} m${u}`;
+}
+
+function hashText(h) {
+  if (!h) return '<span class="muted">none locked</span>';
+  return `<code title="${esc(h)}">${esc(String(h).slice(0, 12))}…</code>`;
+}
+
+function approvalText(f) {
+  if (!f.approved_by.length) return '<span class="badge warn">not approved</span>';
+  return f.approved_by.map((a) => `<span class="badge ok">${esc(a)}</span>`).join(' ');
+}
+
+function sourceText(s) {
+  const src = s.source;
+  const parts = [fmtBytes(src.bytes), src.messages != null ? `${src.messages} messages` : null, `${s.n} frames`];
+  const dur = s.n > 1 ? ` · ${(s.t[s.n - 1] - s.t[0]).toFixed(1)} s` : '';
+  const complete = src.complete ? '<span class="badge ok">complete</span>' : '<span class="badge danger">incomplete</span>';
+  return `${parts.filter(Boolean).join(' · ')}${dur} ${complete}`;
+}
+
+/** Facts for one session (a definition list) or two (a table with A and B columns). */
+export function renderFacts(el, sessions) {
+  const rows = [
+    ['Recording', (s) => `<span class="file" title="${esc(s.source.file ?? s.label)}">${esc(s.source.file ?? s.label)}</span><br><span class="muted small">${sourceText(s)}</span>`],
+    ['Operator height', (s) => heightText(s.facts)],
+    ['Height class', (s) => (s.facts.height_class ? `<span class="badge">${esc(s.facts.height_class)}</span>` : '<span class="muted">undecided</span>')],
+    ['Locked trajectory', (s) => hashText(s.facts.trajectory_sha256)],
+    ['Approved by', (s) => approvalText(s.facts)],
+  ];
+  if (sessions.length === 1) {
+    const s = sessions[0];
+    el.innerHTML = `<h2>Session facts</h2><dl class="facts">${rows.map(([k, f]) => `<dt>${k}</dt><dd>${f(s)}</dd>`).join('')}</dl>`;
+  } else {
+    el.innerHTML = `<h2>Session facts</h2><table class="facts-table"><thead><tr><th></th>${sessions
+      .map((s, i) => `<th><span class="sess-dot" style="background:${SESSION_COLORS[i]}"></span>${'AB'[i]}</th>`)
+      .join('')}</tr></thead><tbody>${rows.map(([k, f]) => `<tr><th>${k}</th>${sessions.map((s) => `<td>${f(s)}</td>`).join('')}</tr>`).join('')}</tbody></table>`;
+  }
+}
+
+export function renderStates(el, sessions, onSeek) {
+  const blocks = sessions.map((s, si) => {
+    const items = s.facts.states
+      .map((st) => {
+        const t = Number(st.t);
+        return `<li><button class="linkish" data-s="${si}" data-t="${Number.isFinite(t) ? t : ''}"><span class="t">${fmt(t, 2)} s</span><span class="state state-${esc(st.state)}">${esc(String(st.state ?? '').replace(/_/g, ' '))}</span></button>${st.reason ? `<span class="reason">${esc(st.reason)}</span>` : ''}</li>`;
+      })
+      .join('');
+    const head = sessions.length > 1 ? `<h3><span class="sess-dot" style="background:${SESSION_COLORS[si]}"></span>${'AB'[si]} · ${esc(s.label)}</h3>` : '';
+    return `${head}<ol class="events">${items || '<li class="muted">no state changes recorded</li>'}</ol>`;
+  });
+  el.innerHTML = `<h2>State changes</h2><div class="scroll">${blocks.join('')}</div>`;
+  wireSeek(el, onSeek);
+}
+
+export function renderWarnings(el, sessions, onSeek) {
+  const blocks = sessions.map((s, si) => {
+    const items = s.warnings
+      .map(
+        (w) =>
+          `<li><button class="linkish" data-s="${si}" data-t="${w.t}"><span class="t">${fmt(w.t, 2)} s</span><span class="kind kind-${esc(w.kind)}">${esc(w.kind)}</span></button><span class="reason">${esc(w.message || `${w.side} ${w.region}`)}</span></li>`,
+      )
+      .join('');
+    const head = sessions.length > 1 ? `<h3><span class="sess-dot" style="background:${SESSION_COLORS[si]}"></span>${'AB'[si]} · ${esc(s.label)}</h3>` : '';
+    return `${head}<ol class="events">${items || '<li class="muted">no posture warnings</li>'}</ol>`;
+  });
+  const total = sessions.reduce((a, s) => a + s.warnings.length, 0);
+  el.innerHTML = `<h2>Posture warnings <span class="count">${total}</span></h2><div class="scroll">${blocks.join('')}</div>`;
+  wireSeek(el, onSeek);
+}
+
+function wireSeek(el, onSeek) {
+  el.querySelectorAll('button[data-t]').forEach((b) => {
+    b.addEventListener('click', () => {
+      const t = parseFloat(b.dataset.t);
+      if (Number.isFinite(t)) onSeek(Number(b.dataset.s), t);
+    });
+  });
+}
+
+function regionKey(r) {
+  return `${r.name}|${r.side || ''}`;
+}
+
+function shareBar(r, tag) {
+  if (!r) return '<div class="sharebar empty-bar"><span class="muted small">not scored</span></div>';
+  const max = Math.max(1, Number(r.max_score) || (r.time_share || []).length || 1);
+  const share = Array.isArray(r.time_share) ? r.time_share : [];
+  if (!share.some((v) => Number(v) > 0)) return `<div class="sharebar">${tag ? `<span class="tag">${tag}</span>` : ''}<div class="bar"></div><span class="muted small">no scored frames</span></div>`;
+  const segs = share
+    .map((v, i) => {
+      const pct = Math.max(0, Number(v) || 0) * 100;
+      if (pct <= 0) return '';
+      const label = pct >= 7 ? `${i + 1}` : '';
+      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${scoreCss(i + 1, max)}" title="score ${i + 1}: ${pct.toFixed(1)} % of scored frames">${label}</span>`;
+    })
+    .join('');
+  return `<div class="sharebar">${tag ? `<span class="tag">${tag}</span>` : ''}<div class="bar">${segs}</div></div>`;
+}
+
+function meanChip(r) {
+  if (!r || r.mean == null) return '<span class="muted">–</span>';
+  const max = Math.max(1, Number(r.max_score) || 1);
+  return `<span class="chip" style="background:${scoreCss(Math.min(max, Math.max(1, r.mean)), max)}"></span>${fmt(r.mean, 2)}`;
+}
+
+export function renderRegions(el, sessions) {
+  const keys = [];
+  const maps = sessions.map((s) => {
+    const m = new Map();
+    for (const r of s.regions) {
+      const k = regionKey(r);
+      if (!keys.includes(k)) keys.push(k);
+      m.set(k, r);
+    }
+    return m;
+  });
+  if (!keys.length) {
+    el.innerHTML = '<h2>Body regions</h2><div class="empty">No RULA scores in this recording.</div>';
+    return;
+  }
+  const cmp = sessions.length > 1;
+  const head = cmp
+    ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num">max</th><th>Time share per score (A above B)</th></tr>`
+    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Time share per score</th></tr>`;
+  const body = keys
+    .map((k) => {
+      const rs = maps.map((m) => m.get(k));
+      const r0 = rs.find(Boolean);
+      const name = `${r0.side ? `${titleCase(r0.side)} ` : ''}${r0.name}`;
+      const max = r0.max_score ?? '–';
+      if (!cmp) return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(rs[0])}</td><td class="num">${esc(max)}</td><td>${shareBar(rs[0])}</td></tr>`;
+      const [a, b] = rs;
+      let delta = '<span class="muted">–</span>';
+      if (a && b && a.mean != null && b.mean != null) {
+        const d = b.mean - a.mean;
+        delta = `<span class="${d < -0.05 ? 'better' : d > 0.05 ? 'worse' : 'muted'}">${d > 0 ? '+' : ''}${d.toFixed(2)}</span>`;
+      }
+      return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(a)}</td><td class="num">${meanChip(b)}</td><td class="num">${delta}</td><td class="num">${esc(max)}</td><td>${shareBar(a, 'A')}${shareBar(b, 'B')}</td></tr>`;
+    })
+    .join('');
+  el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region; bar segments from score 1 (deep blue) to the region's maximum (deep red)</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
+}
+
+function sameEdges(a, b) {
+  return a.length === b.length && a.every((v, i) => Math.abs(v - b[i]) < 1e-9);
+}
+
+function histogramPlot(container, edges, hists) {
+  // hists: [{counts, mean, p95, color}], all on `edges`; bars show % of that session's samples.
+  const centres = edges.slice(0, -1).map((e, i) => (e + edges[i + 1]) / 2);
+  const series = [{ label: 'angle', value: (u, v) => (v == null ? '–' : `${v.toFixed(0)}°`) }];
+  const data = [centres];
+  const overlay = hists.length > 1;
+  hists.forEach((h, i) => {
+    const total = h.counts.reduce((a, c) => a + (Number(c) || 0), 0) || 1;
+    data.push(centres.map((_, j) => ((Number(h.counts[j]) || 0) / total) * 100));
+    series.push({
+      label: overlay ? 'AB'[i] : '% of samples',
+      stroke: h.color,
+      fill: `${h.color}${overlay ? 'bb' : '99'}`,
+      width: 1,
+      // Two sessions: paired bars, A left of the bin centre and B right of it.
+      paths: uPlot.paths.bars({ size: [overlay ? 0.45 : 0.86, Infinity], align: overlay ? (i === 0 ? -1 : 1) : 0 }),
+      points: { show: false },
+      value: (u, v) => (v == null ? '–' : `${v.toFixed(1)} %`),
+    });
+  });
+  const width = Math.max(180, container.clientWidth);
+  const u = new uPlot(
+    {
+      width,
+      height: 150,
+      padding: [8, 8, 0, 0],
+      legend: { show: false },
+      cursor: { drag: { x: false, y: false, setScale: false }, points: { show: false }, y: false },
+      scales: { x: { time: false, range: [edges[0], edges[edges.length - 1]] }, y: { range: (u, min, max) => [0, Math.max(5, Math.ceil(max / 5) * 5)] } },
+      axes: [
+        { stroke: AXIS, grid: { show: false }, ticks: { stroke: GRID }, values: (u, v) => v.map((x) => `${x}°`), font: '10px system-ui, sans-serif', size: 28 },
+        { stroke: AXIS, grid: { stroke: GRID }, ticks: { stroke: GRID }, values: (u, v) => v.map((x) => `${x}%`), font: '10px system-ui, sans-serif', size: 36 },
+      ],
+      series,
+      hooks: {
+        draw: [
+          (u) => {
+            const ctx = u.ctx;
+            const { top, height } = u.bbox;
+            ctx.save();
+            for (const h of hists) {
+              for (const [v, dash] of [[h.mean, []], [h.p95, [4, 3]]]) {
+                if (v == null || !Number.isFinite(v)) continue;
+                const x = Math.round(u.valToPos(v, 'x', true));
+                ctx.strokeStyle = overlay ? h.color : '#f4f7fb';
+                ctx.lineWidth = 1.5 * uPlot.pxRatio;
+                ctx.setLineDash(dash.map((d) => d * uPlot.pxRatio));
+                ctx.beginPath();
+                ctx.moveTo(x, top);
+                ctx.lineTo(x, top + height);
+                ctx.stroke();
+              }
+            }
+            ctx.restore();
+          },
+        ],
+      },
+    },
+    data,
+    container,
+  );
+  new ResizeObserver(() => {
+    const w = Math.max(180, container.clientWidth);
+    if (Math.abs(w - u.width) > 1) u.setSize({ width: w, height: 150 });
+  }).observe(container);
+}
+
+export function renderAngles(el, sessions) {
+  const keys = [];
+  const maps = sessions.map((s) => {
+    const m = new Map();
+    for (const a of s.angles) {
+      const k = regionKey(a);
+      if (!keys.includes(k)) keys.push(k);
+      m.set(k, a);
+    }
+    return m;
+  });
+  el.innerHTML = `<h2>Joint angles <span class="hint">distribution over the scored frames · solid line mean, dashed line 95th percentile</span></h2><div class="angle-grid"></div>`;
+  const grid = el.querySelector('.angle-grid');
+  if (!keys.length) {
+    grid.outerHTML = '<div class="empty">No joint angles in this recording.</div>';
+    return;
+  }
+  for (const k of keys) {
+    const as = maps.map((m) => m.get(k));
+    const a0 = as.find(Boolean);
+    const unit = a0.unit === 'deg' || !a0.unit ? '°' : ` ${a0.unit}`;
+    const card = document.createElement('div');
+    card.className = 'angle';
+    const stats = as
+      .map((a, i) => {
+        const tag = sessions.length > 1 ? `<span class="sess-dot" style="background:${SESSION_COLORS[i]}"></span>${'AB'[i]} ` : '';
+        if (!a) return `<div class="stats">${tag}<span class="muted">not recorded</span></div>`;
+        return `<div class="stats">${tag}mean <b>${fmt(a.mean)}${unit}</b> · p95 <b>${fmt(a.p95)}${unit}</b> · n ${esc(a.samples ?? '–')}</div>`;
+      })
+      .join('');
+    card.innerHTML = `<div class="angle-head"><span class="name">${esc(titleCase(`${a0.side ? `${a0.side} ` : ''}${a0.name}`))}</span></div>${stats}<div class="plots"></div>`;
+    grid.appendChild(card);
+    const plots = card.querySelector('.plots');
+    const valid = as
+      .map((a, i) => ({ a, i }))
+      .filter(({ a }) => a && Array.isArray(a.bin_edges) && a.bin_edges.length >= 2 && Array.isArray(a.counts) && a.counts.some((c) => Number(c) > 0));
+    if (!valid.length) {
+      plots.innerHTML = '<div class="empty small">no samples</div>';
+      continue;
+    }
+    // Overlay when both sessions share the bins; otherwise one plot each.
+    const groups = valid.length === 2 && sameEdges(valid[0].a.bin_edges, valid[1].a.bin_edges) ? [valid] : valid.map((v) => [v]);
+    for (const g of groups) {
+      const div = document.createElement('div');
+      div.className = 'hist';
+      plots.appendChild(div);
+      histogramPlot(
+        div,
+        g[0].a.bin_edges.map(Number),
+        g.map(({ a, i }) => ({ counts: a.counts, mean: a.mean, p95: a.p95, color: sessions.length > 1 ? SESSION_COLORS[i] : '#5b8def' })),
+      );
+    }
+  }
+}
