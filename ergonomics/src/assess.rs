@@ -162,8 +162,9 @@ impl AssessmentConfig {
 /// longer than the hold time) or repeated (at least `min_repetitions` excursions out of the relaxed
 /// posture within the window).
 ///
-/// A relaxed posture held still (arm within 20° of hanging; neck and trunk within 20° of upright) is
-/// not counted as static loading. Band changes while out of the relaxed posture (an angle jittering
+/// A relaxed posture held still (arm within 20° of hanging; neck and trunk within 20° of upright —
+/// forwards or back, since RULA's trunk extension scores as erect and a neck a few degrees back is no
+/// effort) is not counted as static loading. Band changes while out of the relaxed posture (an angle jittering
 /// across a band edge, or work moving between bands) do not restart the hold clock: only a return
 /// to the relaxed posture does. Otherwise measurement noise at any band edge would hide a posture
 /// held for minutes.
@@ -437,7 +438,9 @@ impl RulaAssessor {
         }
         let muscle_b = match group_b {
             Some((t_deg, n_deg)) => {
-                let nb = neck_band(n_deg);
+                // Within 20° of upright, either way: a head held a few degrees back is relaxed
+                // (RULA scores any extension 4, but that is the posture score, not muscle use).
+                let nb = neck_band(n_deg.abs());
                 let tb = trunk_band(t_deg, task.seated_well_supported);
                 let relaxed = nb <= 2 && tb <= 2;
                 Some(self.muscle_b.update(stamp, relaxed)?)

@@ -263,6 +263,39 @@ fn band_edge_noise_is_not_counted_as_repetitions() {
     assert_eq!(last.unwrap().repetitions_in_window, 0);
 }
 
+/// "Neck within 20° of upright" is relaxed either way: a head upright within a few degrees, now a
+/// little forward, now a little back (as a measured one is), is no muscle use; held 25° back it is.
+#[test]
+fn a_head_a_few_degrees_back_is_relaxed_for_muscle_use() {
+    let mut a =
+        RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap())).unwrap();
+    let mut last = None;
+    for k in 0..600 {
+        // 0.5 s at +4°, 0.5 s at −4°: sixty half-second stays in extension in a minute.
+        let deg = if (k / 5) % 2 == 0 { 4.0 } else { -4.0 };
+        last = Some(a.assess(&neck_pose(deg, k * FRAME)).unwrap());
+    }
+    let r = last.unwrap().right.unwrap();
+    assert_eq!(
+        r.scores.neck_score, 4,
+        "the posture score still sees extension"
+    );
+    assert!(!r.input.muscle_use_neck_trunk_legs);
+    assert_eq!(r.muscle_use_neck_trunk_legs.repetitions_in_window, 0);
+
+    let mut a =
+        RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap())).unwrap();
+    let mut last = None;
+    for k in 0..700 {
+        last = Some(a.assess(&neck_pose(-25.0, k * FRAME)).unwrap());
+    }
+    let r = last.unwrap().right.unwrap();
+    assert!(
+        r.muscle_use_neck_trunk_legs.static_hold,
+        "held back over a minute"
+    );
+}
+
 fn neck_pose(deg: f64, stamp_nanos: i64) -> Skeleton3 {
     PoseSpec {
         neck_flexion_rad: deg.to_radians(),
