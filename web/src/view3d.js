@@ -88,19 +88,28 @@ export class SkeletonView {
     const up = new THREE.Vector3(...s.up);
     this.camera.up.copy(up);
 
-    // Bounds over the recording (every few frames), the TCP path and the handover point.
+    // Bounds over the recording (every few frames), robust to the odd far-off landmark a
+    // degraded triangulation can produce: the 2nd..98th percentile per axis.
     const box = new THREE.Box3();
     const v = new THREE.Vector3();
-    let minUp = Infinity;
-    const stride = Math.max(1, Math.floor(s.n / 200));
+    const xs = [], ys = [], zs = [], ups = [];
+    const stride = Math.max(1, Math.floor(s.n / 300));
     for (let i = 0; i < s.n; i += stride) {
       const p = s.positions[i];
       for (let k = 0; k < s.nl; k++) {
         if (Number.isNaN(p[3 * k])) continue;
-        v.set(p[3 * k], p[3 * k + 1], p[3 * k + 2]);
-        box.expandByPoint(v);
-        minUp = Math.min(minUp, v.dot(up));
+        xs.push(p[3 * k]);
+        ys.push(p[3 * k + 1]);
+        zs.push(p[3 * k + 2]);
+        ups.push(p[3 * k] * up.x + p[3 * k + 1] * up.y + p[3 * k + 2] * up.z);
       }
+    }
+    const q = (a, f) => a[Math.min(a.length - 1, Math.max(0, Math.round(f * (a.length - 1))))];
+    for (const a of [xs, ys, zs, ups]) a.sort((m, n) => m - n);
+    let minUp = Infinity;
+    if (xs.length) {
+      box.set(new THREE.Vector3(q(xs, 0.02), q(ys, 0.02), q(zs, 0.02)), new THREE.Vector3(q(xs, 0.98), q(ys, 0.98), q(zs, 0.98)));
+      minUp = q(ups, 0.01);
     }
     const bodyBox = box.clone();
     if (s.tcp) for (const q of s.tcp.positions) box.expandByPoint(v.set(...q));
