@@ -28,7 +28,9 @@ fn tmp(name: &str) -> PathBuf {
 fn missing_browser() -> Option<String> {
     let chromium = std::env::var("CHROMIUM").unwrap_or_else(|_| "/usr/bin/chromium".to_owned());
     if !Path::new(&chromium).exists() {
-        return Some(format!("no Chromium at {chromium} (apt-get install chromium)"));
+        return Some(format!(
+            "no Chromium at {chromium} (apt-get install chromium)"
+        ));
     }
     if !root().join("web/node_modules/playwright-core").exists() {
         return Some("web/node_modules/playwright-core missing (npm ci --prefix web)".to_owned());
@@ -107,7 +109,10 @@ fn review_page_plays_pauses_and_jumps_in_headless_chromium() {
         std::panic::resume_unwind(e);
     }
     let png = std::fs::read(&shot).unwrap();
-    assert!(png.starts_with(b"\x89PNG") && png.len() > 20_000, "screenshot");
+    assert!(
+        png.starts_with(b"\x89PNG") && png.len() > 20_000,
+        "screenshot"
+    );
 }
 
 #[test]
