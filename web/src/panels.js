@@ -171,6 +171,37 @@ function sameEdges(a, b) {
   return a.length === b.length && a.every((v, i) => Math.abs(v - b[i]) < 1e-9);
 }
 
+/** The bin width when the edges are evenly spaced, else null. */
+function uniformStep(e) {
+  const w = e[1] - e[0];
+  if (!(w > 0)) return null;
+  return e.every((v, i) => i === 0 || Math.abs(v - e[i - 1] - w) < 1e-6 * w) ? w : null;
+}
+
+/**
+ * Two histograms on one set of bins: equal edges as they are; evenly spaced edges of the same width
+ * on a common grid (the union of both ranges, counts shifted); anything else: null.
+ */
+function commonBins(a, b) {
+  const ea = a.bin_edges.map(Number);
+  const eb = b.bin_edges.map(Number);
+  if (sameEdges(ea, eb)) return { edges: ea, counts: [a.counts, b.counts] };
+  const w = uniformStep(ea);
+  if (w === null || uniformStep(eb) === null || Math.abs(uniformStep(eb) - w) > 1e-6 * w) return null;
+  const off = (eb[0] - ea[0]) / w;
+  if (Math.abs(off - Math.round(off)) > 1e-6) return null;
+  const lo = Math.min(ea[0], eb[0]);
+  const nb = Math.round((Math.max(ea[ea.length - 1], eb[eb.length - 1]) - lo) / w);
+  const edges = Array.from({ length: nb + 1 }, (_, i) => lo + i * w);
+  const place = (e, c) => {
+    const out = new Array(nb).fill(0);
+    const k0 = Math.round((e[0] - lo) / w);
+    c.forEach((v, i) => (out[k0 + i] = Number(v) || 0));
+    return out;
+  };
+  return { edges, counts: [place(ea, a.counts), place(eb, b.counts)] };
+}
+
 function histogramPlot(container, edges, hists) {
   // hists: [{counts, mean, p95, color}], all on `edges`; bars show % of that session's samples.
   const centres = edges.slice(0, -1).map((e, i) => (e + edges[i + 1]) / 2);
@@ -278,17 +309,19 @@ export function renderAngles(el, sessions) {
       plots.innerHTML = '<div class="empty small">no samples</div>';
       continue;
     }
-    // Overlay when both sessions share the bins; otherwise one plot each.
-    const groups = valid.length === 2 && sameEdges(valid[0].a.bin_edges, valid[1].a.bin_edges) ? [valid] : valid.map((v) => [v]);
-    for (const g of groups) {
+    const color = (i) => (sessions.length > 1 ? SESSION_COLORS[i] : '#5b8def');
+    const addPlot = (edges, hists) => {
       const div = document.createElement('div');
       div.className = 'hist';
       plots.appendChild(div);
-      histogramPlot(
-        div,
-        g[0].a.bin_edges.map(Number),
-        g.map(({ a, i }) => ({ counts: a.counts, mean: a.mean, p95: a.p95, color: sessions.length > 1 ? SESSION_COLORS[i] : '#5b8def' })),
-      );
+      histogramPlot(div, edges, hists);
+    };
+    // Paired bars when both sessions' bins can share one axis; otherwise one plot each.
+    const both = valid.length === 2 ? commonBins(valid[0].a, valid[1].a) : null;
+    if (both) {
+      addPlot(both.edges, valid.map(({ a, i }, j) => ({ counts: both.counts[j], mean: a.mean, p95: a.p95, color: color(i) })));
+    } else {
+      for (const { a, i } of valid) addPlot(a.bin_edges.map(Number), [{ counts: a.counts, mean: a.mean, p95: a.p95, color: color(i) }]);
     }
   }
 }
