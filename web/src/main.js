@@ -276,6 +276,7 @@ function start(app, raw) {
     playing: () => state.playing,
     session: () => state.si,
     time: () => (cur().n ? cur().t[state.frame] : 0),
+    timeOf: (i) => (cur().n ? cur().t[Math.min(cur().n - 1, Math.max(0, i))] : 0),
     seek: (t, si = state.si) => seek(si, t),
   };
 
