@@ -63,6 +63,7 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
         <div class="ramp-labels"><span>0 · lowest</span><span>highest · 1</span></div>
         <div class="legend-keys"><span><i class="dot grey"></i>not scored</span><span><i class="dot tcp"></i>robot TCP</span><span><i class="dot handover"></i>handover point</span></div>
       </div>
+      <div class="overlay bottom-left readout" id="readout"></div>
       <div class="overlay bottom-right hint">drag to orbit · right-drag to pan · wheel to zoom</div>
       <div class="view-message" id="view-empty" hidden><span class="msg">No frames were recorded in this session.</span></div>
     </div>
@@ -90,6 +91,19 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
 <footer class="foot">ergocell review · RULA scores per frame from the fused 3D skeleton · lengths in metres, angles in degrees</footer>`;
 }
 
+const ACTION_TEXT = ['not scored', 'acceptable', 'investigate further', 'investigate, change soon', 'investigate, change now'];
+
+/** The RULA scores and session state at frame f, for the 3D view's corner. */
+function readoutHtml(s, f) {
+  const g = (v) => (v == null ? '–' : v);
+  const a = s.actionLevel[f];
+  const t = s.t[f];
+  let state = null;
+  for (const st of s.facts.states) if (Number(st.t) <= t + 1e-9) state = st.state;
+  const al = a == null ? '' : `<span class="al al${a}">action level ${a}${ACTION_TEXT[a] ? ` · ${ACTION_TEXT[a]}` : ''}</span>`;
+  return `<span class="gs"><i style="background:${SERIES_COLORS.left}"></i>L ${g(s.grandLeft[f])}</span><span class="gs"><i style="background:${SERIES_COLORS.right}"></i>R ${g(s.grandRight[f])}</span>${al}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}`;
+}
+
 function start(app, raw) {
   const sessionsRaw = raw && Array.isArray(raw.sessions) ? raw.sessions : null;
   if (!sessionsRaw) {
@@ -110,6 +124,7 @@ function start(app, raw) {
   const counter = $('frame-counter');
   const speedSel = $('speed');
   const view = new SkeletonView($('viewport'));
+  const readout = $('readout');
 
   const state = { si: 0, frame: 0, playing: false, time: 0, last: 0, raf: 0 };
   const cur = () => sessions[state.si];
@@ -160,6 +175,7 @@ function start(app, raw) {
     scrubber.value = String(f);
     const t = n ? s.t[f] : 0;
     counter.textContent = `frame ${n ? f + 1 : 0} / ${n} · ${t.toFixed(2)} s`;
+    readout.innerHTML = n ? readoutHtml(s, f) : '';
     playBtn.innerHTML = state.playing ? PAUSE_ICON : PLAY_ICON;
     playBtn.setAttribute('aria-label', state.playing ? 'Pause' : 'Play');
     playBtn.classList.toggle('active', state.playing);

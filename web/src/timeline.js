@@ -155,9 +155,28 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
   });
   ro.observe(container);
 
+  // Off the plot, the legend reads out the current frame.
+  let hovering = false;
+  u.over.addEventListener('mouseenter', () => (hovering = true));
+  u.over.addEventListener('mouseleave', () => {
+    hovering = false;
+    showCurrent();
+  });
+  function showCurrent() {
+    const ct = cursorTime();
+    if (hovering) return;
+    if (ct == null) u.setLegend({ idx: null });
+    else {
+      let i = 0;
+      while (i + 1 < t.length && t[i + 1] <= ct) i++;
+      u.setLegend({ idx: i });
+    }
+  }
+
   return {
     redraw() {
       u.redraw(false, false);
+      showCurrent();
     },
     destroy() {
       ro.disconnect();
