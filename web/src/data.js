@@ -2,6 +2,10 @@
 
 export async function loadData() {
   if (typeof window.ERGOCELL_REVIEW_DATA !== 'undefined') return window.ERGOCELL_REVIEW_DATA;
+  if (location.protocol === 'file:') {
+    // A report carries its data inline; a page opened from disk without it has nothing to fetch.
+    throw new Error('this file holds no review data (write reports with `ergocell report`, or open the page `ergocell review` serves)');
+  }
   let res;
   try {
     res = await fetch('api/review.json', { cache: 'no-store' });
