@@ -227,7 +227,7 @@ function histogramPlot(container, edges, hists) {
     {
       width,
       height: 150,
-      padding: [8, 8, 0, 0],
+      padding: [8, 16, 0, 0],
       legend: { show: false },
       cursor: { drag: { x: false, y: false, setScale: false }, points: { show: false }, y: false },
       scales: { x: { time: false, range: [edges[0], edges[edges.length - 1]] }, y: { range: (u, min, max) => [0, Math.max(5, Math.ceil(max / 5) * 5)] } },

@@ -1,6 +1,7 @@
 // uPlot timeline of one session: grand score left/right and action level, warnings marked,
 // a cursor line at the current frame; a click anywhere on the plot seeks to that time.
 import uPlot from 'uplot';
+import { frameAtOrBefore } from './data.js';
 
 const AXIS = '#8b9bb0';
 const GRID = 'rgba(139,155,176,0.12)';
@@ -166,11 +167,7 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
     const ct = cursorTime();
     if (hovering) return;
     if (ct == null) u.setLegend({ idx: null });
-    else {
-      let i = 0;
-      while (i + 1 < t.length && t[i + 1] <= ct) i++;
-      u.setLegend({ idx: i });
-    }
+    else u.setLegend({ idx: frameAtOrBefore(t, ct) });
   }
 
   return {
