@@ -85,6 +85,18 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
           const ctx = u.ctx;
           const { left, top, width, height: h } = u.bbox;
           ctx.save();
+          for (const [g0, g1] of gaps) {
+            const x0 = u.valToPos(g0, 'x', true);
+            const x1 = u.valToPos(g1, 'x', true);
+            ctx.fillStyle = 'rgba(139,155,176,0.10)';
+            ctx.fillRect(x0, top, x1 - x0, h);
+            if (x1 - x0 > 60 * uPlot.pxRatio) {
+              ctx.fillStyle = '#8b9bb0';
+              ctx.font = `${11 * uPlot.pxRatio}px system-ui, sans-serif`;
+              ctx.textAlign = 'center';
+              ctx.fillText('no skeleton', (x0 + x1) / 2, top + 14 * uPlot.pxRatio);
+            }
+          }
           for (const w of s.warnings) {
             const x = Math.round(u.valToPos(w.t, 'x', true));
             if (x < left - 1 || x > left + width + 1) continue;
@@ -127,7 +139,28 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
     }
   }
 
+  // Stretches with no frame at all (no skeleton fused, e.g. while too few cameras saw the
+  // operator): break the lines there and shade the stretch, rather than hold the last score.
+  const dts = [];
+  for (let i = 1; i < t.length; i++) dts.push(t[i] - t[i - 1]);
+  dts.sort((a, b) => a - b);
+  const dtMed = dts.length ? dts[dts.length >> 1] : 0;
+  const gaps = [];
+  if (dtMed > 0) for (let i = 1; i < t.length; i++) if (t[i] - t[i - 1] > Math.max(0.5, 3 * dtMed)) gaps.push([t[i - 1] + dtMed, t[i]]);
   const data = [t, s.grandLeft, s.grandRight, s.actionLevel];
+  if (gaps.length) {
+    const cols = [[], [], [], []];
+    let g = 0;
+    for (let i = 0; i < t.length; i++) {
+      while (g < gaps.length && gaps[g][0] < t[i]) {
+        cols[0].push(gaps[g][0]);
+        for (let c = 1; c < 4; c++) cols[c].push(null);
+        g++;
+      }
+      for (let c = 0; c < 4; c++) cols[c].push(data[c][i]);
+    }
+    data.splice(0, 4, ...cols);
+  }
   const u = new uPlot(opts, data, container);
 
   // Warning flags with their message on hover (inside the plot overlay, so a click on one also seeks).
@@ -167,7 +200,7 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
     const ct = cursorTime();
     if (hovering) return;
     if (ct == null) u.setLegend({ idx: null });
-    else u.setLegend({ idx: frameAtOrBefore(t, ct) });
+    else u.setLegend({ idx: frameAtOrBefore(data[0], ct) });
   }
 
   return {
