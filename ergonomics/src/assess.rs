@@ -9,6 +9,9 @@
 //!   documented there).
 //! - **Configured** inputs come from [`TaskConfig`]: force/load, wrist twist (cameras cannot see
 //!   pronation), arm supported/leaning and seated-and-supported.
+//! - **Smoothed**: the angles on short baselines (wrist, and those behind the yes/no adjustments)
+//!   are scored as their median over the last [`AssessmentConfig::smoothing_window_nanos`]
+//!   ([`AngleSmoother`]); [`FrameAssessment::angles`] are the angles as scored.
 //! - **Time-series** input: muscle use, from [`MuscleUseTracker`] (posture held > 1 min, or an action
 //!   repeated ≥ 4 times a minute), driven by the frames' `stamp_nanos` — never by a wall clock.
 //! - **Held**: when a landmark is missing in this frame, the last observed value is used and the score
@@ -142,6 +145,9 @@ pub struct AssessmentConfig {
     pub thresholds: Thresholds,
     pub task: TaskConfig,
     pub muscle: MuscleUseConfig,
+    /// Each angle is scored as the median of its observations over this trailing window (default
+    /// 0.5 s; 0 = this frame only). See [`AngleSmoother`].
+    pub smoothing_window_nanos: i64,
 }
 
 impl AssessmentConfig {
@@ -154,8 +160,106 @@ impl AssessmentConfig {
             thresholds: Thresholds::default(),
             task: TaskConfig::default(),
             muscle: MuscleUseConfig::default(),
+            smoothing_window_nanos: DEFAULT_SMOOTHING_WINDOW_NANOS,
         }
     }
+}
+
+/// Default of [`AssessmentConfig::smoothing_window_nanos`]: 0.5 s.
+pub const DEFAULT_SMOOTHING_WINDOW_NANOS: i64 = 500_000_000;
+
+/// Accessors of the angles [`AngleSmoother`] smooths: those behind ergocell's yes/no adjustments
+/// (side bends, twists, abduction, shoulder raise, wrist deviation) and the wrist's flexion, all
+/// measured on short baselines. The angles that move with the task — trunk and neck flexion, upper
+/// arm, elbow, the wrist's lateral offset — are scored as observed: on the simulator a median of
+/// them lags a reach or a glance by more than it removes noise.
+/// Accessor of one field of [`BodyAngles`].
+pub type AngleField = fn(&mut BodyAngles) -> &mut Option<f64>;
+pub const SMOOTHED_FIELDS: [AngleField; 12] = [
+    |a| &mut a.trunk_side_bend_rad,
+    |a| &mut a.trunk_twist_rad,
+    |a| &mut a.neck_side_bend_rad,
+    |a| &mut a.neck_twist_rad,
+    |a| &mut a.left.upper_arm_abduction_rad,
+    |a| &mut a.left.shoulder_raise_ratio,
+    |a| &mut a.left.wrist_flexion_rad,
+    |a| &mut a.left.wrist_deviation_rad,
+    |a| &mut a.right.upper_arm_abduction_rad,
+    |a| &mut a.right.shoulder_raise_ratio,
+    |a| &mut a.right.wrist_flexion_rad,
+    |a| &mut a.right.wrist_deviation_rad,
+];
+
+/// A causal running median of each angle over a trailing time window (by the frames' stamps, never a
+/// wall clock).
+///
+/// Several angles hang on short landmark baselines: the wrist's deviation and flexion on index and
+/// pinky a few centimetres from the wrist, the neck's twist and side bend on the face. Per frame,
+/// detector noise of a few pixels moves them by several degrees and flips ergocell's 10° thresholds
+/// (and the wrist's 15° band edge) from one frame to the next. A median over the last `window_nanos`
+/// (0.5 s by default: 5 frames at 10 Hz, 15 at 30 Hz) removes that frame-to-frame noise and single
+/// bad frames, and follows a real change of posture within half a window. Applied per angle (see
+/// [`SMOOTHED_FIELDS`]) to its observed values only: a missing value is not smoothed into existence
+/// (holding is the assessor's job, and marks the score uncertain).
+#[derive(Debug, Clone, Default)]
+pub struct AngleSmoother {
+    window_nanos: i64,
+    history: VecDeque<(i64, BodyAngles)>,
+}
+
+impl AngleSmoother {
+    /// `window_nanos ≤ 0` passes every frame through unchanged.
+    pub fn new(window_nanos: i64) -> Self {
+        Self {
+            window_nanos: window_nanos.max(0),
+            history: VecDeque::new(),
+        }
+    }
+
+    /// Adds this frame's angles (stamps in time order) and returns them with every smoothed angle
+    /// replaced by the median of its observations within the window ending at `stamp_nanos`.
+    pub fn push(&mut self, stamp_nanos: i64, angles: &BodyAngles) -> BodyAngles {
+        if self.window_nanos == 0 {
+            return *angles;
+        }
+        self.history.push_back((stamp_nanos, *angles));
+        while self
+            .history
+            .front()
+            .is_some_and(|(t, _)| stamp_nanos.saturating_sub(*t) >= self.window_nanos)
+        {
+            self.history.pop_front();
+        }
+        let mut out = *angles;
+        let mut values = Vec::with_capacity(self.history.len());
+        for field in SMOOTHED_FIELDS {
+            if field(&mut out).is_none() {
+                continue;
+            }
+            values.clear();
+            values.extend(
+                self.history
+                    .iter()
+                    .filter_map(|(_, a)| *field(&mut a.clone())),
+            );
+            *field(&mut out) = median(&mut values);
+        }
+        out
+    }
+}
+
+/// Median of a non-empty slice (mean of the middle two for an even count); `None` when empty.
+fn median(v: &mut [f64]) -> Option<f64> {
+    if v.is_empty() {
+        return None;
+    }
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    Some(if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    })
 }
 
 /// Muscle use from the time series: static (out of the relaxed posture, without returning to it, for
@@ -286,6 +390,7 @@ pub struct SideAssessment {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrameAssessment {
     pub stamp_nanos: i64,
+    /// The angles as scored (after [`AngleSmoother`]).
     pub angles: BodyAngles,
     /// `None` when the side could not be scored at all (the reason is in `unscored_reasons`).
     pub left: Option<SideAssessment>,
@@ -324,6 +429,7 @@ pub struct RulaAssessor {
     held: BodyAngles,
     muscle_a: [MuscleUseTracker; 2],
     muscle_b: MuscleUseTracker,
+    smoother: AngleSmoother,
     last_stamp: Option<i64>,
 }
 
@@ -372,6 +478,14 @@ impl RulaAssessor {
                 });
             }
         }
+        if config.smoothing_window_nanos < 0 {
+            return Err(ErgonomicsError::OutOfRange {
+                field: "smoothing_window_nanos",
+                value: config.smoothing_window_nanos as f64,
+                min: 0.0,
+                max: f64::INFINITY,
+            });
+        }
         if !(0.0..=1.0).contains(&config.min_confidence) {
             return Err(ErgonomicsError::OutOfRange {
                 field: "min_confidence",
@@ -388,6 +502,7 @@ impl RulaAssessor {
                 MuscleUseTracker::new(config.muscle),
             ],
             muscle_b: MuscleUseTracker::new(config.muscle),
+            smoother: AngleSmoother::new(config.smoothing_window_nanos),
             last_stamp: None,
         })
     }
@@ -408,7 +523,8 @@ impl RulaAssessor {
             }
         }
         self.last_stamp = Some(stamp);
-        let angles = body_angles(skeleton, &self.config.up, self.config.floor_height_m);
+        let observed = body_angles(skeleton, &self.config.up, self.config.floor_height_m);
+        let angles = self.smoother.push(stamp, &observed);
         let th = self.config.thresholds;
         let task = self.config.task;
 

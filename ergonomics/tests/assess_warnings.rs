@@ -5,7 +5,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use ergocell_ergonomics::assess::{
-    BodyRegion, InputSource, MuscleUseConfig, MuscleUseTracker, SummaryBuilder,
+    AngleSmoother, BodyRegion, InputSource, MuscleUseConfig, MuscleUseTracker, SummaryBuilder,
 };
 use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
 use ergocell_ergonomics::warnings::WarningKind;
@@ -663,4 +663,92 @@ fn band_edge_noise_does_not_hide_a_posture_held_over_a_minute() {
         r.muscle_use_neck_trunk_legs
     );
     assert!(r.input.muscle_use_neck_trunk_legs);
+}
+
+fn deviated(wrist_deviation_deg: f64, stamp_nanos: i64) -> Skeleton3 {
+    PoseSpec {
+        right_arm: ArmPose {
+            flexion_rad: 40f64.to_radians(),
+            elbow_flexion_rad: 90f64.to_radians(),
+            wrist_deviation_rad: wrist_deviation_deg.to_radians(),
+            ..ArmPose::default()
+        },
+        stamp_nanos,
+        ..PoseSpec::default()
+    }
+    .skeleton()
+}
+
+/// One frame in five with the wrist 25° off (noise on the hand landmarks) is not a deviated wrist;
+/// a deviation held 0.3 s is, and the unsmoothed assessor flags every spike.
+#[test]
+fn wrist_deviation_is_scored_on_its_median_over_half_a_second() {
+    let config = AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap());
+    assert_eq!(config.smoothing_window_nanos, 500_000_000);
+    let mut smoothed = RulaAssessor::new(config).unwrap();
+    let mut raw = RulaAssessor::new(AssessmentConfig {
+        smoothing_window_nanos: 0,
+        ..config
+    })
+    .unwrap();
+    let (mut flagged_smoothed, mut flagged_raw) = (0, 0);
+    for k in 0..50 {
+        let deg = if k % 5 == 3 { 25.0 } else { 0.0 };
+        let s = deviated(deg, k * FRAME);
+        let bent = |f: FrameAssessment| f.right.unwrap().input.wrist_bent_from_midline;
+        flagged_smoothed += usize::from(bent(smoothed.assess(&s).unwrap()));
+        flagged_raw += usize::from(bent(raw.assess(&s).unwrap()));
+    }
+    assert_eq!(flagged_raw, 10);
+    assert_eq!(flagged_smoothed, 0);
+    // A real deviation: scored from the third frame on (the median of five is then the new value).
+    let mut first = None;
+    for k in 50..70 {
+        let deg = if k < 55 { 0.0 } else { 25.0 };
+        let f = smoothed.assess(&deviated(deg, k * FRAME)).unwrap();
+        if first.is_none() && f.right.unwrap().input.wrist_bent_from_midline {
+            first = Some(k - 55);
+        }
+    }
+    assert_eq!(first, Some(2));
+}
+
+#[test]
+fn the_smoother_passes_through_when_off_and_never_invents_a_value() {
+    let a = ergocell_ergonomics::BodyAngles {
+        neck_twist_rad: Some(0.3),
+        neck_flexion_rad: Some(0.2),
+        ..Default::default()
+    };
+    let mut off = AngleSmoother::new(0);
+    assert_eq!(off.push(0, &a), a);
+    let mut on = AngleSmoother::new(500_000_000);
+    let _ = on.push(0, &a);
+    let _ = on.push(FRAME, &a);
+    let missing = ergocell_ergonomics::BodyAngles {
+        neck_flexion_rad: Some(0.25),
+        ..Default::default()
+    };
+    let out = on.push(2 * FRAME, &missing);
+    assert_eq!(
+        out.neck_twist_rad, None,
+        "not observed this frame stays None"
+    );
+    assert_eq!(
+        out.neck_flexion_rad,
+        Some(0.25),
+        "neck flexion is not smoothed"
+    );
+    // Frames older than the window drop out: only the last one is left.
+    let twisted = ergocell_ergonomics::BodyAngles {
+        neck_twist_rad: Some(-0.1),
+        ..Default::default()
+    };
+    let out = on.push(2 * FRAME + 500_000_000, &twisted);
+    assert_eq!(out.neck_twist_rad, Some(-0.1));
+    assert!(RulaAssessor::new(AssessmentConfig {
+        smoothing_window_nanos: -1,
+        ..AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap())
+    })
+    .is_err());
 }

@@ -109,6 +109,15 @@ fn simulate(
     Simulation::new(setup.rig.clone(), Operator::new(stature_m)?, script, config)?.collect()
 }
 
+/// The assessor for the ground truth: the true angles of each instant, unsmoothed (the pipeline's
+/// assessor keeps the cell controller's defaults, smoothing included, and its lag counts against it).
+fn truth_config(cfg: AssessmentConfig) -> AssessmentConfig {
+    AssessmentConfig {
+        smoothing_window_nanos: 0,
+        ..cfg
+    }
+}
+
 fn at_station(phase: Phase) -> bool {
     !matches!(phase, Phase::WalkIn | Phase::WalkOut | Phase::Gone)
 }
@@ -378,7 +387,10 @@ fn run_task(
     let ticks = simulate(setup, session, stature_m, script)?;
     let mut pipeline = Pipeline::new(&setup.rig)?;
     let cfg = AssessmentConfig::new(up()?);
-    let (mut est, mut truth) = (RulaAssessor::new(cfg)?, RulaAssessor::new(cfg)?);
+    let (mut est, mut truth) = (
+        RulaAssessor::new(cfg)?,
+        RulaAssessor::new(truth_config(cfg))?,
+    );
     let mut out = TaskRun {
         grand: Vec::new(),
         true_grand: Vec::new(),
@@ -669,7 +681,10 @@ pub fn rula_agreement(
         script.cycles = cycles;
         let ticks = simulate(setup, i, h, script)?;
         let mut pipeline = Pipeline::new(&setup.rig)?;
-        let (mut est, mut truth) = (RulaAssessor::new(cfg)?, RulaAssessor::new(cfg)?);
+        let (mut est, mut truth) = (
+            RulaAssessor::new(cfg)?,
+            RulaAssessor::new(truth_config(cfg))?,
+        );
         for tick in &ticks {
             let s = pipeline.skeleton(tick)?;
             let e = headline(&mut est, &s)?;
