@@ -72,6 +72,12 @@ pub struct Handovers {
     pub c1_m: Point3<f64>,
     pub c2_m: Point3<f64>,
     pub c3_m: Point3<f64>,
+    /// The statures `[min, max]` each class's trajectory was derived and validated for (its
+    /// trajectory file's `[stature]`): the cell controller ends the session without moving the robot
+    /// for an operator outside them.
+    pub c1_stature_m: [f64; 2],
+    pub c2_stature_m: [f64; 2],
+    pub c3_stature_m: [f64; 2],
 }
 
 impl Handovers {
@@ -82,6 +88,22 @@ impl Handovers {
             HeightClass::C2 => self.c2_m,
             HeightClass::C3 => self.c3_m,
         }
+    }
+
+    /// The statures the class's trajectory was validated for.
+    pub fn stature_bounds_m(&self, class: HeightClass) -> [f64; 2] {
+        match class {
+            HeightClass::C1 => self.c1_stature_m,
+            HeightClass::C2 => self.c2_stature_m,
+            HeightClass::C3 => self.c3_stature_m,
+        }
+    }
+
+    /// Whether the cell would hand over to an operator of this stature in `class` (inside the
+    /// statures the class's trajectory was validated for, bounds included, as the session checks).
+    pub fn serves(&self, class: HeightClass, stature_m: f64) -> bool {
+        let [lo, hi] = self.stature_bounds_m(class);
+        (lo..=hi).contains(&stature_m)
     }
 }
 
@@ -338,7 +360,10 @@ fn headline(assessor: &mut RulaAssessor, s: &Skeleton3) -> Result<Option<Scored>
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Adaptation {
     pub heights_m: Vec<f64>,
-    /// Mean RULA grand score (worse side) over the handover frames, noisy pipeline.
+    /// Mean RULA grand score (worse side) over the handover frames, noisy pipeline. After
+    /// adaptation, an operator outside the statures of their class's trajectory is not served (the
+    /// session ends without moving the robot): every "after" value of that height is NaN (`null` in
+    /// JSON) and `not_served_after` says why.
     pub mean_grand_score_before: Vec<f64>,
     pub mean_grand_score_after: Vec<f64>,
     /// The same on the ground-truth skeleton.
@@ -358,6 +383,8 @@ pub struct Adaptation {
     pub angle_samples_deg_after: Vec<Vec<f64>>,
     /// The handover point used after adaptation, per height.
     pub handover_after_m: Vec<[f64; 3]>,
+    /// Per height: `None` when the cell hands over after adaptation, else why it does not.
+    pub not_served_after: Vec<Option<String>>,
 }
 
 fn mean(v: &[f64]) -> f64 {
@@ -373,6 +400,18 @@ struct TaskRun {
     true_grand: Vec<f64>,
     regions: Vec<[f64; 6]>,
     angles: Vec<[f64; 4]>,
+}
+
+impl TaskRun {
+    /// No handover took place: every mean is NaN.
+    fn empty() -> Self {
+        Self {
+            grand: Vec::new(),
+            true_grand: Vec::new(),
+            regions: Vec::new(),
+            angles: Vec::new(),
+        }
+    }
 }
 
 fn run_task(
@@ -468,15 +507,30 @@ pub fn adaptation(
         angle_samples_deg_before: vec![Vec::new(); 4],
         angle_samples_deg_after: vec![Vec::new(); 4],
         handover_after_m: Vec::new(),
+        not_served_after: Vec::new(),
     };
     let total = 2 * heights_m.len();
     for (i, &h) in heights_m.iter().enumerate() {
-        let after_point = handovers.for_class(HeightClass::of(h, &thresholds));
+        let class = HeightClass::of(h, &thresholds);
+        let after_point = handovers.for_class(class);
         r.handover_after_m
             .push([after_point.x, after_point.y, after_point.z]);
+        let served = handovers.serves(class, h);
+        r.not_served_after.push((!served).then(|| {
+            let [lo, hi] = handovers.stature_bounds_m(class);
+            format!(
+                "{h:.2} m is outside the statures class {}'s trajectory was validated for \
+                 ({lo:.2}–{hi:.2} m): the session ends without moving the robot",
+                class.name()
+            )
+        }));
         for (k, point) in [handovers.before_m, after_point].into_iter().enumerate() {
             // The same session seed before and after: only the handover point differs.
-            let run = run_task(setup, i, h, point, cycles)?;
+            let run = if k == 1 && !served {
+                TaskRun::empty()
+            } else {
+                run_task(setup, i, h, point, cycles)?
+            };
             let regions: Vec<f64> = (0..6)
                 .map(|j| round6(mean(&run.regions.iter().map(|x| x[j]).collect::<Vec<_>>())))
                 .collect();

@@ -175,6 +175,9 @@ fn handovers() -> ergocell_sim::experiments::Handovers {
         c1_m: Point3::new(0.38, -0.10, 0.97),
         c2_m: c2_handover(),
         c3_m: Point3::new(0.44, -0.10, 1.13),
+        c1_stature_m: [1.55, 1.68],
+        c2_stature_m: [1.68, 1.82],
+        c3_stature_m: [1.82, 1.95],
     }
 }
 
@@ -235,4 +238,36 @@ fn the_solved_hold_posture_reaches_every_class_handover_for_every_stature() {
         .unwrap();
         assert!(sol.miss_m < 0.01, "{h} m misses by {} m", sol.miss_m);
     }
+}
+
+/// After adaptation an operator outside the statures of their class's trajectory is not served —
+/// the session ends without moving the robot — and the experiment says so instead of a score.
+#[test]
+fn adaptation_reports_operators_outside_the_validated_statures_as_not_served() {
+    let mut none = |_: usize, _: usize| {};
+    let r = ergocell_sim::experiments::adaptation(
+        &setup(1),
+        &handovers(),
+        &[1.50, 1.60, 2.00],
+        1,
+        &mut none,
+    )
+    .unwrap();
+    assert!(r.not_served_after[0]
+        .as_ref()
+        .unwrap()
+        .contains("1.55–1.68"));
+    assert!(r.not_served_after[1].is_none());
+    assert!(r.not_served_after[2]
+        .as_ref()
+        .unwrap()
+        .contains("1.82–1.95"));
+    for i in [0, 2] {
+        assert!(r.mean_grand_score_after[i].is_nan());
+        assert!(r.true_mean_grand_score_after[i].is_nan());
+        assert!(r.mean_grand_score_before[i].is_finite(), "before is scored");
+    }
+    assert!(r.mean_grand_score_after[1].is_finite());
+    let json = serde_json::to_value(&r).unwrap();
+    assert!(json["mean_grand_score_after"][0].is_null());
 }

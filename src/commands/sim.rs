@@ -121,18 +121,23 @@ fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
         .map_err(|e| UsageError(format!("{}: {e}", common.cell.display())))?;
     let T_world_station = cell.T_cell_station();
     let mut points = Vec::new();
+    let mut statures = Vec::new();
     for class in ["c1", "c2", "c3"] {
         let path = common.trajectories.join(format!("{class}.toml"));
         let spec = TrajectorySpec::from_toml_str(&read(&path)?)
             .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
         let h = &spec.handover;
         points.push(T_world_station * Point3::new(h.forward_m, h.lateral_m, h.height_m));
+        statures.push([spec.stature.min_m, spec.stature.max_m]);
     }
     Ok(Handovers {
         before_m: points[1],
         c1_m: points[0],
         c2_m: points[1],
         c3_m: points[2],
+        c1_stature_m: statures[0],
+        c2_stature_m: statures[1],
+        c3_stature_m: statures[2],
     })
 }
 
@@ -356,18 +361,29 @@ fn print_adaptation(r: &Adaptation) {
     );
     println!("{:>8} {:>16} {:>16}", "height", "before", "after");
     for i in 0..r.heights_m.len() {
+        let after = match r.not_served_after.get(i).and_then(Option::as_ref) {
+            Some(why) => format!("not served: {why}"),
+            None => format!(
+                "{:>8.2} [{:4.2}]",
+                r.mean_grand_score_after[i], r.true_mean_grand_score_after[i]
+            ),
+        };
         println!(
-            "{:>6.2} m {:>8.2} [{:4.2}] {:>8.2} [{:4.2}]",
-            r.heights_m[i],
-            r.mean_grand_score_before[i],
-            r.true_mean_grand_score_before[i],
-            r.mean_grand_score_after[i],
-            r.true_mean_grand_score_after[i]
+            "{:>6.2} m {:>8.2} [{:4.2}] {after}",
+            r.heights_m[i], r.mean_grand_score_before[i], r.true_mean_grand_score_before[i],
         );
     }
-    println!("mean region scores over all heights (before → after):");
+    println!("mean region scores over the heights served after adaptation (before → after):");
     for (j, region) in r.region_names.iter().enumerate() {
-        let m = |v: &Vec<Vec<f64>>| v.iter().map(|x| x[j]).sum::<f64>() / v.len().max(1) as f64;
+        let m = |v: &Vec<Vec<f64>>| {
+            let x: Vec<f64> = v
+                .iter()
+                .zip(&r.not_served_after)
+                .filter(|(_, why)| why.is_none())
+                .map(|(x, _)| x[j])
+                .collect();
+            x.iter().sum::<f64>() / x.len().max(1) as f64
+        };
         println!(
             "  {region:<10} {:.2} → {:.2}",
             m(&r.mean_region_scores_before),
