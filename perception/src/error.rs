@@ -52,6 +52,10 @@ pub enum PerceptionError {
     /// The linear system of a triangulation is degenerate (e.g. all rays parallel).
     #[error("degenerate triangulation (rays parallel or point at infinity)")]
     Degenerate,
+    /// The views constrain the point too weakly to be used (nearly parallel rays, e.g. a narrow
+    /// stereo pair far away with a wrong detection): its position uncertainty exceeds the limit.
+    #[error("triangulated point too uncertain: σ {sigma_m:.2} m > {limit_m:.2} m")]
+    Unconstrained { sigma_m: f64, limit_m: f64 },
     /// An unsupported model or format was asked for.
     #[error("unsupported: {0}")]
     Unsupported(String),

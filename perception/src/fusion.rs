@@ -209,6 +209,7 @@ impl FusionEngine {
                     information[lm.index()] = t.information;
                     masks[lm.index()] = t.used_mask;
                 }
+                rejected_views += drop_off_body(&mut points, &masks);
                 if let Some(prior) = self.bone_prior.as_mut() {
                     prior.observe(&points);
                     prior.refine(&mut points, &information);
@@ -506,6 +507,36 @@ impl FusionEngine {
     }
 }
 
+/// No landmark of a human body lies farther than this from the median of its landmarks (a 2.2 m
+/// person's fingertip overhead is ≈ 1.3 m from mid-body), metres.
+pub const MAX_BODY_RADIUS_M: f64 = 1.5;
+
+/// Drops landmarks farther than [`MAX_BODY_RADIUS_M`] from the per-axis median of the frame's
+/// landmarks (needs at least 5 landmarks to judge); returns the views they had used.
+fn drop_off_body(
+    points: &mut [Option<Point3<f64>>; LANDMARK_COUNT],
+    masks: &[u64; LANDMARK_COUNT],
+) -> usize {
+    let present: Vec<Point3<f64>> = points.iter().flatten().copied().collect();
+    if present.len() < 5 {
+        return 0;
+    }
+    let median = |axis: usize| {
+        let mut v: Vec<f64> = present.iter().map(|p| p[axis]).collect();
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let centre = Point3::new(median(0), median(1), median(2));
+    let mut dropped = 0;
+    for (p, mask) in points.iter_mut().zip(masks) {
+        if p.is_some_and(|q| (q - centre).norm() > MAX_BODY_RADIUS_M) {
+            *p = None;
+            dropped += mask.count_ones() as usize;
+        }
+    }
+    dropped
+}
+
 /// The observations of one landmark that a fused estimate used.
 struct Used<'a> {
     obs: &'a [Obs],
@@ -626,6 +657,22 @@ mod tests {
                 0.2 + 1.6 * i as f64 / 33.0,
             )
         })
+    }
+
+    #[test]
+    fn a_landmark_off_the_body_is_dropped_with_its_views() {
+        let mut points = body().map(Some);
+        let masks = [0b11u64; LANDMARK_COUNT];
+        assert_eq!(drop_off_body(&mut points, &masks), 0, "a body stays whole");
+        points[2] = Some(Point3::new(-40.0, 12.0, 1.1));
+        assert_eq!(drop_off_body(&mut points, &masks), 2);
+        assert!(points[2].is_none());
+        assert_eq!(points.iter().flatten().count(), LANDMARK_COUNT - 1);
+        // Too few landmarks to judge: nothing dropped.
+        let mut few = [None; LANDMARK_COUNT];
+        few[0] = Some(Point3::origin());
+        few[1] = Some(Point3::new(30.0, 0.0, 0.0));
+        assert_eq!(drop_off_body(&mut few, &masks), 0);
     }
 
     #[test]

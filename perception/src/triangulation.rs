@@ -218,6 +218,12 @@ pub struct RobustTriangulator {
     pub iterations: usize,
     /// Observations below this detector confidence are not used.
     pub min_confidence: f64,
+    /// A point whose position uncertainty under the noise model (`sqrt(trace(information⁻¹))`,
+    /// metres) exceeds this is not reported. One stereo pair of the reference cell at the station
+    /// gives ≈ 0.6 m along its rays (the bone prior then fixes that direction); a wrong detection on
+    /// nearly parallel rays gives tens of metres to kilometres (seen in `ergocell demo` while the
+    /// operator walked out: an eye 3 km away).
+    pub max_position_sigma_m: f64,
 }
 
 impl Default for RobustTriangulator {
@@ -231,6 +237,7 @@ impl Default for RobustTriangulator {
             outlier_sigmas: 6.0,
             iterations: 5,
             min_confidence: 0.05,
+            max_position_sigma_m: 1.0,
         }
     }
 }
@@ -296,6 +303,15 @@ impl RobustTriangulator {
             let r = residual_px(&views[i], &point).ok_or(PerceptionError::Degenerate)?;
             sq += r.norm_squared();
             conf += views[i].confidence;
+        }
+        let sigma_m = information
+            .try_inverse()
+            .map_or(f64::INFINITY, |cov| cov.trace().max(0.0).sqrt());
+        if sigma_m.is_nan() || sigma_m > self.max_position_sigma_m {
+            return Err(PerceptionError::Unconstrained {
+                sigma_m,
+                limit_m: self.max_position_sigma_m,
+            });
         }
         let n = f64::from(mask.count_ones());
         Ok(Triangulated {
@@ -686,6 +702,36 @@ mod tests {
         let eye = Point3::new(3.0, 0.0, 1.5);
         let views = views_of(&p, &[eye, eye]);
         assert!(RobustTriangulator::default().triangulate(&views).is_err());
+    }
+
+    #[test]
+    fn a_wrong_detection_on_a_narrow_pair_is_too_uncertain_to_report() {
+        // One 12 cm stereo pair 3 m from a point: its own views triangulate it (σ ≈ 0.6 m along the
+        // rays with the default noise model, within the limit).
+        let p = Point3::new(0.0, 0.0, 1.2);
+        let pair = [Point3::new(3.0, 0.0, 1.5), Point3::new(3.0, 0.12, 1.5)];
+        let mut views = views_of(&p, &pair);
+        let tri = RobustTriangulator::default();
+        let t = tri.triangulate(&views).unwrap();
+        assert_relative_eq!(t.point, p, epsilon = 1e-6);
+        // A gross detection error (≈ 36 px, the pair's whole disparity) in the second view makes its
+        // ray parallel to the first's, but for 0.5 px: the rays meet hundreds of metres away. That
+        // point is refused, not reported.
+        let d0 = views[0].R_camera_world.transpose()
+            * Vector3::new(views[0].normalized.x, views[0].normalized.y, 1.0);
+        let d1 = views[1].R_camera_world * d0;
+        let parallel = Vector2::new(d1.x / d1.z, d1.y / d1.z);
+        let toward = views[1].normalized - parallel;
+        views[1].normalized = parallel + toward.normalize() * (0.5 / 900.0);
+        let dlt_far = tri.linear_estimate(&views, 0b11).unwrap();
+        assert!((dlt_far - p).norm() > 20.0, "{dlt_far:?}");
+        match tri.triangulate(&views) {
+            Err(PerceptionError::Unconstrained { sigma_m, limit_m }) => {
+                assert!(sigma_m > limit_m, "{sigma_m} vs {limit_m}");
+            }
+            Ok(t) => panic!("reported {:?} (linear estimate {dlt_far:?})", t.point),
+            Err(e) => assert!(matches!(e, PerceptionError::Degenerate), "{e}"),
+        }
     }
 
     #[test]
