@@ -5,3 +5,4 @@
 
 pub mod recording;
 pub mod session;
+pub mod sim_record;

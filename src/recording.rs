@@ -412,7 +412,7 @@ pub fn operator_pose_message(
 /// `world` frame, for Foxglove and `ergocell review`.
 pub fn robot_markers_message(
     stamp_nanos: i64,
-    tcp_world: nalgebra::Point3<f64>,
+    tcp_world: Option<nalgebra::Point3<f64>>,
     handover_world: Option<nalgebra::Point3<f64>>,
 ) -> ergocell_bridge::msg::MarkerArray {
     use ergocell_bridge::msg::{ColorRGBA, Marker, MarkerArray, Point, Pose, Quaternion, Vector3};
@@ -438,17 +438,20 @@ pub fn robot_markers_message(
         color,
         ..Marker::default()
     };
-    let mut markers = vec![sphere(
-        0,
-        tcp_world,
-        0.06,
-        ColorRGBA {
-            r: 0.2,
-            g: 0.6,
-            b: 1.0,
-            a: 1.0,
-        },
-    )];
+    let mut markers = Vec::new();
+    if let Some(p) = tcp_world {
+        markers.push(sphere(
+            0,
+            p,
+            0.06,
+            ColorRGBA {
+                r: 0.2,
+                g: 0.6,
+                b: 1.0,
+                a: 1.0,
+            },
+        ));
+    }
     if let Some(h) = handover_world {
         markers.push(sphere(
             1,

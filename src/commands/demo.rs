@@ -288,7 +288,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 rec.write(
                     topics::ROBOT_MARKERS,
                     now,
-                    &recording::robot_markers_message(now, p, Some(handover_world)),
+                    &recording::robot_markers_message(now, Some(p), Some(handover_world)),
                 )?;
             }
         }

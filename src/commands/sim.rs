@@ -92,6 +92,11 @@ pub struct Common {
     /// Handover cycles per operator (default 5).
     #[arg(long, global = true, default_value_t = 5)]
     pub cycles: usize,
+    /// adaptation: also record an operator of this stature (metres) before and after as two session
+    /// recordings, `adaptation_<h>m_before.mcap` / `_after.mcap` in `--out-dir`, for
+    /// `ergocell report <before> --compare <after>`.
+    #[arg(long, global = true)]
+    pub record_height: Option<f64>,
 }
 
 fn read(path: &Path) -> anyhow::Result<String> {
@@ -207,6 +212,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             pb.finish_and_clear();
             if !c.json {
                 print_adaptation(&r);
+            }
+            if let Some(h) = c.record_height {
+                if !(1.3..=2.2).contains(&h) {
+                    return Err(
+                        UsageError(format!("--record-height {h} is outside 1.3..=2.2 m")).into(),
+                    );
+                }
+                let [before, after] =
+                    ergocell::sim_record::record_both(&setup, &handovers, h, c.cycles, &c.out_dir)?;
+                eprintln!(
+                    "recorded {} and {}: ergocell report {} --compare {}",
+                    before.display(),
+                    after.display(),
+                    before.display(),
+                    after.display()
+                );
             }
             (serde_json::to_value(&r)?, plot_adaptation(&r, &c.out_dir)?)
         }

@@ -1,0 +1,198 @@
+//! `ergocell sim adaptation --record-height <m>`: one operator's handover task recorded before and
+//! after the adaptation, as two session recordings (MCAP) for `ergocell report --compare` — the
+//! seed paper's Figs. 7–9 for one person, readable by the ergonomics expert.
+//!
+//! Each recording is the digital twin's operator doing the task seen by the rig's cameras with
+//! pose-estimator noise, fused (default fusion + the cell's causal filter) and assessed (RULA,
+//! warnings) exactly as in a session; "before" reaches for the unadapted robot's handover point
+//! (set for a 1.75 m operator), "after" for the class-specific one. There is no robot motion in the
+//! simulator's task, so the recording holds the handover point and no TCP track.
+
+use std::path::{Path, PathBuf};
+
+use crate::recording::{self, topics, McapRecorder, RecordingError};
+use ergocell_bridge::msg::{Header, SessionState};
+use ergocell_ergonomics::height::ClassThresholds;
+use ergocell_ergonomics::warnings::{WarningConfig, WarningTracker};
+use ergocell_ergonomics::{AssessmentConfig, HeightClass, RulaAssessor, UpVector};
+use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
+use ergocell_perception::{FusionEngine, FusionMethod};
+use ergocell_sim::experiments::{Handovers, Setup};
+use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
+use nalgebra::Vector3;
+
+/// A simulated session could not be recorded.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum SimRecordError {
+    #[error(transparent)]
+    Recording(#[from] RecordingError),
+    #[error("simulator: {0}")]
+    Sim(#[from] ergocell_sim::SimError),
+    #[error("fusion: {0}")]
+    Perception(#[from] ergocell_perception::PerceptionError),
+    #[error("ergonomics: {0}")]
+    Ergonomics(#[from] ergocell_ergonomics::ErgonomicsError),
+    /// After adaptation the cell does not serve this operator (the session ends without moving the
+    /// robot), so there is no task to record.
+    #[error("a {stature_m:.2} m operator is outside the statures {min_m:.2}–{max_m:.2} m class {class}'s trajectory was validated for: after adaptation the cell does not serve them (the session ends without moving the robot), so there is no \"after\" task to record")]
+    NotServed {
+        stature_m: f64,
+        class: &'static str,
+        min_m: f64,
+        max_m: f64,
+    },
+}
+
+/// Which handover point the operator reaches for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Condition {
+    Before,
+    After,
+}
+
+impl Condition {
+    pub fn name(self) -> &'static str {
+        match self {
+            Condition::Before => "before",
+            Condition::After => "after",
+        }
+    }
+}
+
+/// Records both conditions for an operator of `stature_m`; returns the two paths.
+pub fn record_both(
+    setup: &Setup,
+    handovers: &Handovers,
+    stature_m: f64,
+    cycles: usize,
+    out_dir: &Path,
+) -> Result<[PathBuf; 2], SimRecordError> {
+    let path = |c: Condition| out_dir.join(format!("adaptation_{stature_m:.2}m_{}.mcap", c.name()));
+    let paths = [path(Condition::Before), path(Condition::After)];
+    // Refuse before writing anything when "after" cannot exist.
+    check_served(handovers, stature_m)?;
+    record(
+        setup,
+        handovers,
+        stature_m,
+        cycles,
+        Condition::Before,
+        &paths[0],
+    )?;
+    record(
+        setup,
+        handovers,
+        stature_m,
+        cycles,
+        Condition::After,
+        &paths[1],
+    )?;
+    Ok(paths)
+}
+
+fn check_served(handovers: &Handovers, stature_m: f64) -> Result<(), SimRecordError> {
+    let class = HeightClass::of(stature_m, &ClassThresholds::default());
+    let [min_m, max_m] = match class {
+        HeightClass::C1 => handovers.c1_stature_m,
+        HeightClass::C2 => handovers.c2_stature_m,
+        HeightClass::C3 => handovers.c3_stature_m,
+    };
+    if (min_m..=max_m).contains(&stature_m) {
+        Ok(())
+    } else {
+        Err(SimRecordError::NotServed {
+            stature_m,
+            class: class.name(),
+            min_m,
+            max_m,
+        })
+    }
+}
+
+/// Records one condition into `path`.
+pub fn record(
+    setup: &Setup,
+    handovers: &Handovers,
+    stature_m: f64,
+    cycles: usize,
+    condition: Condition,
+    path: &Path,
+) -> Result<(), SimRecordError> {
+    let class = HeightClass::of(stature_m, &ClassThresholds::default());
+    if condition == Condition::After {
+        check_served(handovers, stature_m)?;
+    }
+    let (handover, what) = match condition {
+        Condition::Before => (
+            handovers.before_m,
+            "the unadapted robot's handover point (set for a 1.75 m operator)".to_owned(),
+        ),
+        Condition::After => (
+            handovers.for_class(class),
+            format!(
+                "the class-specific handover point of class {}",
+                class.name()
+            ),
+        ),
+    };
+    let mut script = SessionScript::new(handover);
+    script.cycles = cycles;
+    let config = SimConfig {
+        noise: setup.noise,
+        ..SimConfig::new(setup.seed)
+    };
+    let sim = Simulation::new(setup.rig.clone(), Operator::new(stature_m)?, script, config)?;
+    let mut engine = FusionEngine::new(setup.rig.clone(), FusionMethod::Default)?;
+    let mut filter = OneEuroFilter::new(OneEuroParams::default());
+    let mut assessor = RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z())?))?;
+    let mut warnings = WarningTracker::new(WarningConfig::default());
+    let mut rec = McapRecorder::create(path)?;
+    let mut first = true;
+    for tick in sim {
+        let tick = tick?;
+        let now = tick.truth.stamp_nanos;
+        if first {
+            first = false;
+            let state = SessionState {
+                header: Header::new(now, "world"),
+                state: "simulated".to_owned(),
+                reason: format!(
+                    "digital twin, seed {}: a {stature_m:.2} m operator ({}) reaching for {what}, {cycles} cycles; {}",
+                    setup.seed,
+                    class.name(),
+                    condition.name()
+                ),
+                height_m: stature_m,
+                // The true stature (the simulator knows it), not a measurement: no uncertainty.
+                height_uncertainty_m: f64::NAN,
+                height_class: class.name().to_owned(),
+                ..SessionState::default()
+            };
+            rec.write(topics::SESSION_STATE, now, &state)?;
+        }
+        let fused = engine.fuse(&tick.frame)?;
+        let skeleton = filter.filter(&fused.skeleton);
+        let assessment = assessor.assess(&skeleton)?;
+        rec.write(
+            topics::OPERATOR_POSE,
+            now,
+            &recording::operator_pose_message(&skeleton, Some(&assessment)),
+        )?;
+        rec.write(
+            topics::ERGONOMICS,
+            now,
+            &recording::ergonomic_message(&assessment),
+        )?;
+        for w in warnings.update(&assessment) {
+            rec.write(topics::WARNINGS, now, &recording::warning_message(&w))?;
+        }
+        rec.write(
+            topics::ROBOT_MARKERS,
+            now,
+            &recording::robot_markers_message(now, None, Some(handover)),
+        )?;
+    }
+    rec.finish()?;
+    Ok(())
+}
