@@ -392,11 +392,17 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             .push(side(e.map(|e| &e.right), |s| s.action_level));
         frames.action_level.push(e.map_or(0, |e| e.action_level));
         if m.angle_names.len() == m.angle_rad.len() {
+            // Kept in the recorder's order, whether or not an angle was observed in this frame.
             for (name, &v) in m.angle_names.iter().zip(&m.angle_rad) {
-                let Some(v) = finite(v) else { continue };
-                match angle_samples.iter_mut().find(|(n, _)| n == name) {
-                    Some((_, s)) => s.push(v.to_degrees()),
-                    None => angle_samples.push((name.clone(), vec![v.to_degrees()])),
+                let k = match angle_samples.iter().position(|(n, _)| n == name) {
+                    Some(k) => k,
+                    None => {
+                        angle_samples.push((name.clone(), Vec::new()));
+                        angle_samples.len() - 1
+                    }
+                };
+                if let Some(v) = finite(v) {
+                    angle_samples[k].1.push(v.to_degrees());
                 }
             }
         } else {
@@ -440,6 +446,7 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
 
     let angles = angle_samples
         .into_iter()
+        .filter(|(_, samples)| !samples.is_empty())
         .map(|(name, samples)| angle_stats(&name, &samples))
         .collect();
 
