@@ -394,12 +394,11 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         if m.angle_names.len() == m.angle_rad.len() {
             // Kept in the recorder's order, whether or not an angle was observed in this frame.
             for (name, &v) in m.angle_names.iter().zip(&m.angle_rad) {
-                let k = match angle_samples.iter().position(|(n, _)| n == name) {
-                    Some(k) => k,
-                    None => {
-                        angle_samples.push((name.clone(), Vec::new()));
-                        angle_samples.len() - 1
-                    }
+                let k = if let Some(k) = angle_samples.iter().position(|(n, _)| n == name) {
+                    k
+                } else {
+                    angle_samples.push((name.clone(), Vec::new()));
+                    angle_samples.len() - 1
                 };
                 if let Some(v) = finite(v) {
                     angle_samples[k].1.push(v.to_degrees());
