@@ -678,6 +678,11 @@ pub struct RulaAgreement {
     pub region_exact: Vec<f64>,
     /// Mean region score, noisy pipeline minus ground truth (positive = the pipeline scores higher).
     pub region_mean_difference: Vec<f64>,
+    /// Per region, `confusion[truth][estimate]` of the region score (1..=6 mapped to 0..6).
+    pub region_confusion: Vec<Vec<Vec<usize>>>,
+    /// Frames whose grand score differs although every region score agrees: the muscle-use
+    /// adjustment (from the time series) differs.
+    pub grand_differs_with_regions_equal: usize,
     /// Frames scored by both.
     pub frames: usize,
     pub statures_m: Vec<f64>,
@@ -729,6 +734,8 @@ pub fn rula_agreement(
     let mut frames = 0;
     let mut region_same = [0usize; 6];
     let mut region_diff = [0i64; 6];
+    let mut region_confusion = vec![vec![vec![0usize; 6]; 6]; 6];
+    let mut grand_differs_with_regions_equal = 0;
     let cfg = AssessmentConfig::new(up()?);
     for (i, &h) in statures_m.iter().enumerate() {
         let mut script = SessionScript::new(handovers.before_m);
@@ -760,7 +767,14 @@ pub fn rula_agreement(
                 for j in 0..6 {
                     region_same[j] += usize::from(e.regions[j] == t.regions[j]);
                     region_diff[j] += i64::from(e.regions[j]) - i64::from(t.regions[j]);
+                    let (re, rt) = (
+                        usize::from(e.regions[j].clamp(1, 6)),
+                        usize::from(t.regions[j].clamp(1, 6)),
+                    );
+                    region_confusion[j][rt - 1][re - 1] += 1;
                 }
+                grand_differs_with_regions_equal +=
+                    usize::from(e.grand != t.grand && e.regions == t.regions);
                 frames += 1;
             }
         }
@@ -781,6 +795,8 @@ pub fn rula_agreement(
             .iter()
             .map(|n| round6(*n as f64 / frames.max(1) as f64))
             .collect(),
+        region_confusion,
+        grand_differs_with_regions_equal,
         frames,
         statures_m: statures_m.to_vec(),
     })

@@ -436,13 +436,34 @@ fn print_agreement(r: &RulaAgreement) {
         r.action_level.exact,
         r.action_level.kappa
     );
-    println!("per region: exact agreement, mean difference (pipeline − truth)");
+    println!(
+        "per region: exact agreement, mean difference (pipeline − truth), \
+         confusion truth→pipeline (scores that occur)"
+    );
     for (j, name) in r.region_names.iter().enumerate() {
+        let confusion: Vec<String> = r
+            .region_confusion
+            .get(j)
+            .into_iter()
+            .flat_map(|m| m.iter().enumerate())
+            .flat_map(|(t, row)| {
+                row.iter()
+                    .enumerate()
+                    .filter(|(_, n)| **n > 0)
+                    .map(move |(e, n)| format!("{}→{}: {n}", t + 1, e + 1))
+            })
+            .collect();
         println!(
-            "  {name:<10} {:.3} {:+.3}",
-            r.region_exact[j], r.region_mean_difference[j]
+            "  {name:<10} {:.3} {:+.3}  {}",
+            r.region_exact[j],
+            r.region_mean_difference[j],
+            confusion.join(", ")
         );
     }
+    println!(
+        "grand score differs with every region score equal (muscle use differs): {} frames",
+        r.grand_differs_with_regions_equal
+    );
 }
 
 // --------------------------------------------------------------------------------------------
