@@ -4,5 +4,6 @@
 //! `anyhow` stays in the command modules of the binary; this half returns typed errors.
 
 pub mod recording;
+pub mod robot_markers;
 pub mod session;
 pub mod sim_record;

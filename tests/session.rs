@@ -525,3 +525,71 @@ fn an_operator_outside_the_validated_statures_never_moves_the_robot() {
         .iter()
         .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
 }
+
+#[test]
+fn an_operator_measured_while_walking_in_has_not_left_the_station() {
+    // At 30 Hz the height is decided before the operator reaches the station (more frames sooner).
+    // Found in the interop run: the operator, still 1.3 m out, counted as "departed", and the robot
+    // was sent home as soon as it reached the handover point. The robot must wait for them.
+    const PERIOD_30HZ: i64 = 33_333_333;
+    let (names, home) = home();
+    let mut machine = SessionMachine::new(
+        rig(),
+        SessionConfig::default(),
+        Box::new(provider("walking-in", Some(TrajectoryClass::C2))),
+    )
+    .unwrap();
+    let mut robot = DummyRobot::new(names, home);
+    let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.055));
+    script.cycles = 2;
+    let mut config = SimConfig::new(42);
+    config.frame_period_nanos = PERIOD_30HZ;
+    let mut sim = Simulation::new(rig(), Operator::new(1.75).unwrap(), script, config).unwrap();
+    let mut events = Vec::new();
+    let mut walk_out_from = None;
+    let mut phase_at_decision = None;
+    let mut now = 0;
+    while now <= 60_000_000_000 && machine.state() != SessionState::SessionEnded {
+        let tick = sim.step().unwrap();
+        let phase = tick.as_ref().map(|t| t.truth.phase);
+        if walk_out_from.is_none() && phase == Some(ergocell_sim::Phase::WalkOut) {
+            walk_out_from = Some(now);
+        }
+        let views = tick.map(|t| t.frame.views).unwrap_or_default();
+        let ev = machine.step(now, views, &mut robot);
+        if phase_at_decision.is_none()
+            && ev
+                .iter()
+                .any(|e| matches!(e, SessionEvent::ClassDecided { .. }))
+        {
+            phase_at_decision = phase;
+        }
+        events.extend(ev);
+        now += PERIOD_30HZ;
+    }
+    assert_eq!(
+        phase_at_decision,
+        Some(ergocell_sim::Phase::WalkIn),
+        "the scenario: decided while walking in"
+    );
+    let home_sent = events.iter().find_map(|e| match e {
+        SessionEvent::RobotCommandSent {
+            stamp_nanos,
+            command:
+                RobotCommand::Execute {
+                    leg: ergocell::session::Leg::ToHome,
+                    ..
+                },
+        } => Some(*stamp_nanos),
+        _ => None,
+    });
+    let walk_out_from = walk_out_from.unwrap();
+    assert!(
+        home_sent.is_some_and(|t| t >= walk_out_from),
+        "robot sent home at {:?} s, the operator leaves at {:.1} s; session: {}",
+        home_sent.map(|t| t as f64 * 1e-9),
+        walk_out_from as f64 * 1e-9,
+        machine.summary().end_reason
+    );
+    assert_eq!(machine.state(), SessionState::SessionEnded);
+}

@@ -17,6 +17,7 @@ use std::sync::Arc;
 
 use anyhow::Context as _;
 use ergocell::recording::{self, topics, McapRecorder};
+use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
@@ -157,8 +158,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let lock = LockFile::from_toml_str(true_class, &lock_text)
         .map_err(|e| anyhow::anyhow!("{}: {e}", lock_path.display()))?;
     let [hx, hy, hz] = lock.summary.handover_station_m;
-    let tcp = TcpFk::load(&args.cell, &args.trajectories, true_class)?;
-    let handover_world = tcp.T_world_station * Point3::new(hx, hy, hz);
+    let geometry = load_geometry(&args.cell, &args.trajectories, true_class)?;
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
     if !(1.0..=120.0).contains(&args.fps) {
@@ -284,11 +284,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 ..JointState::default()
             };
             rec.write(topics::JOINT_STATES, now, &js)?;
-            if let Some(p) = tcp.tcp_world(&js.position) {
+            if let Some(p) = geometry.tcp_world(&js) {
                 rec.write(
                     topics::ROBOT_MARKERS,
                     now,
-                    &recording::robot_markers_message(now, Some(p), Some(handover_world)),
+                    &recording::robot_markers_message(
+                        now,
+                        Some(p),
+                        Some(geometry.handover_world()),
+                    ),
                 )?;
             }
         }
@@ -360,51 +364,27 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The robot's TCP in the world, for the recording (the review's 3D view and Foxglove).
-struct TcpFk {
-    model: ergocell_robot::RobotModel,
-    T_world_base: nalgebra::Isometry3<f64>,
-    T_world_station: nalgebra::Isometry3<f64>,
-    T_flange_tcp: nalgebra::Isometry3<f64>,
-}
-
-impl TcpFk {
-    fn load(
-        cell_path: &std::path::Path,
-        trajectories: &std::path::Path,
-        class: TrajectoryClass,
-    ) -> anyhow::Result<Self> {
-        let read = |p: &std::path::Path| {
-            std::fs::read_to_string(p).with_context(|| format!("cannot read {}", p.display()))
-        };
-        let cell = ergocell_robot::CellConfig::from_toml_str(&read(cell_path)?)
-            .map_err(|e| anyhow::anyhow!("{}: {e}", cell_path.display()))?;
-        let urdf_path = cell_path
-            .parent()
-            .unwrap_or_else(|| std::path::Path::new("."))
-            .join(&cell.robot.urdf);
-        let model = ergocell_robot::RobotModel::from_urdf_str(
-            &read(&urdf_path)?,
-            &cell.robot.base_link,
-            &cell.robot.flange_link,
-        )
-        .map_err(|e| anyhow::anyhow!("{}: {e}", urdf_path.display()))?;
-        let spec_path = trajectories.join(format!("{class}.toml"));
-        let spec = ergocell_robot::TrajectorySpec::from_toml_str(&read(&spec_path)?)
-            .map_err(|e| anyhow::anyhow!("{}: {e}", spec_path.display()))?;
-        let [x, y, z] = spec.tool.tcp_from_flange_m;
-        Ok(Self {
-            model,
-            T_world_base: cell.T_cell_base(),
-            T_world_station: cell.T_cell_station(),
-            T_flange_tcp: nalgebra::Isometry3::translation(x, y, z),
-        })
-    }
-
-    fn tcp_world(&self, q: &[f64]) -> Option<Point3<f64>> {
-        let T_base_tcp = self.model.fk_tcp(q, &self.T_flange_tcp).ok()?;
-        Some(self.T_world_base * T_base_tcp * Point3::origin())
-    }
+/// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
+pub fn load_geometry(
+    cell_path: &std::path::Path,
+    trajectories: &std::path::Path,
+    class: TrajectoryClass,
+) -> anyhow::Result<RobotGeometry> {
+    let read = |p: &std::path::Path| {
+        std::fs::read_to_string(p).with_context(|| format!("cannot read {}", p.display()))
+    };
+    let cell = read(cell_path)?;
+    let urdf_rel = ergocell_robot::CellConfig::from_toml_str(&cell)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", cell_path.display()))?
+        .robot
+        .urdf;
+    let urdf_path = cell_path
+        .parent()
+        .unwrap_or_else(|| std::path::Path::new("."))
+        .join(urdf_rel);
+    let spec_path = trajectories.join(format!("{class}.toml"));
+    RobotGeometry::from_texts(&cell, &read(&urdf_path)?, &read(&spec_path)?)
+        .map_err(|e| anyhow::anyhow!("robot geometry for the recording ({class}): {e}"))
 }
 
 fn report(events: &[SessionEvent], now: i64, start: i64) {

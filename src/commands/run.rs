@@ -196,6 +196,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let mut camera_stream =
             futures::stream::select_all(cameras.iter().map(|s| Box::pin(s.async_stream())));
         let mut joint_stream = Box::pin(joint_states.async_stream());
+        let mut geometry: Option<(String, ergocell::robot_markers::RobotGeometry)> = None;
+        let mut last_marker_nanos = i64::MIN / 2;
         let mut tick = tokio::time::interval(std::time::Duration::from_millis(20));
         let interrupted = Arc::new(AtomicBool::new(false));
         let ctrl_c = {
@@ -252,6 +254,36 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
                 Some(Ok((js, _))) = joint_stream.next() => {
                     let js: JointState = js;
+                    if let Some(rec) = recorder.as_mut() {
+                        let now = now_nanos();
+                        rec.write(topics::JOINT_STATES, now, &js)?;
+                        // The TCP and handover point once a class is locked, at most 20 Hz.
+                        let class = machine.summary().class.clone();
+                        if geometry.as_ref().map(|(c, _)| c) != class.as_ref() {
+                            geometry = class.as_deref().and_then(|name| {
+                                let c = ergocell_robot::TrajectoryClass::ALL.into_iter().find(|c| c.to_string() == name)?;
+                                match super::demo::load_geometry(&args.config, &args.trajectories, c) {
+                                    Ok(g) => Some((name.to_owned(), g)),
+                                    Err(e) => {
+                                        tracing::warn!(error = %e, "no robot markers in the recording");
+                                        None
+                                    }
+                                }
+                            });
+                        }
+                        if let Some((_, g)) = geometry.as_ref() {
+                            if now - last_marker_nanos >= 50_000_000 {
+                                if let Some(p) = g.tcp_world(&js) {
+                                    last_marker_nanos = now;
+                                    rec.write(
+                                        topics::ROBOT_MARKERS,
+                                        now,
+                                        &recording::robot_markers_message(now, Some(p), Some(g.handover_world())),
+                                    )?;
+                                }
+                            }
+                        }
+                    }
                     if let Ok(mut l) = latest.lock() {
                         *l = Some(js);
                     }

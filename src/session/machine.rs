@@ -75,6 +75,9 @@ pub struct SessionMachine {
     last_frame_stamp: Option<i64>,
     last_tracked: Option<(i64, Point3<f64>)>,
     operator_departed: bool,
+    /// The operator has stood within `exit_radius_m` of the station this session: only then can
+    /// they leave it (one still walking in has not departed).
+    operator_arrived: bool,
     pairs_tracking: usize,
     first_step_nanos: Option<i64>,
     summary: SessionSummary,
@@ -130,6 +133,7 @@ impl SessionMachine {
             last_frame_stamp: None,
             last_tracked: None,
             operator_departed: false,
+            operator_arrived: false,
             pairs_tracking: 0,
             first_step_nanos: None,
             summary: SessionSummary::default(),
@@ -439,14 +443,18 @@ impl SessionMachine {
         }
 
         // Has the operator left? Last tracked farther than `exit_radius_m` from the station (still in
-        // view or not). Lost from view nearer than that is a loss of tracking: the robot is held.
+        // view or not) after having stood within it. Lost from view nearer than that is a loss of
+        // tracking: the robot is held. One still walking in (the height can be measured on the way)
+        // has not left.
         let frame_age = self.last_frame_stamp.map(|s| now_nanos - s);
         let frames_fresh = frame_age.is_some_and(|a| a <= self.config.max_frame_age_nanos);
         if !self.operator_departed && self.state != SessionState::TrajectoryLocked {
             if let Some((_, p)) = self.last_tracked {
                 let [sx, sy] = self.config.station_xy_m;
                 let d = (p.x - sx).hypot(p.y - sy);
-                if d > self.config.exit_radius_m {
+                if d <= self.config.exit_radius_m {
+                    self.operator_arrived = true;
+                } else if self.operator_arrived {
                     self.operator_departed = true;
                     tracing::info!(distance_m = d, "operator left the station");
                 }
