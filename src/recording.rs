@@ -522,6 +522,43 @@ pub fn session_state_message(
     }
 }
 
+/// The session-state message of each event that has one (state changes, class decided, lock,
+/// refused change, camera degraded/restored), in order, each with the state **as of that event**
+/// (by the end of the step the machine may have moved on: decided → locked → working in one step).
+pub fn session_state_messages(
+    machine: &crate::session::SessionMachine,
+    now_nanos: i64,
+    events: &[crate::session::SessionEvent],
+) -> Vec<ergocell_bridge::msg::SessionState> {
+    use crate::session::SessionEvent as E;
+    let mut current = events
+        .iter()
+        .find_map(|e| match e {
+            E::StateChanged { from, .. } => Some(*from),
+            _ => None,
+        })
+        .unwrap_or_else(|| machine.state());
+    let mut out = Vec::new();
+    for e in events {
+        let reason = match e {
+            E::StateChanged { to, reason, .. } => {
+                current = *to;
+                reason.clone()
+            }
+            E::ClassDecided { .. }
+            | E::TrajectoryLocked { .. }
+            | E::ChangeRefused { .. }
+            | E::CameraDegraded { .. }
+            | E::CameraRestored { .. } => describe(e),
+            E::RobotCommandSent { .. } | E::Warning(_) | E::Frame { .. } => continue,
+        };
+        let mut m = session_state_message(machine, now_nanos, &reason);
+        current.name().clone_into(&mut m.state);
+        out.push(m);
+    }
+    out
+}
+
 /// Records a step's events: state changes, RULA state, warnings and robot commands.
 pub fn record_events(
     rec: &mut McapRecorder,
@@ -530,30 +567,18 @@ pub fn record_events(
     events: &[crate::session::SessionEvent],
 ) -> Result<(), RecordingError> {
     use crate::session::SessionEvent as E;
-    // The state as of each event (the machine may have moved on by the end of the step).
-    let mut current = events
-        .iter()
-        .find_map(|e| match e {
-            E::StateChanged { from, .. } => Some(*from),
-            _ => None,
-        })
-        .unwrap_or_else(|| machine.state());
+    let mut states = session_state_messages(machine, now_nanos, events).into_iter();
     for e in events {
         match e {
-            E::StateChanged { to, reason, .. } => {
-                current = *to;
-                let mut m = session_state_message(machine, now_nanos, reason);
-                current.name().clone_into(&mut m.state);
-                rec.write(topics::SESSION_STATE, now_nanos, &m)?;
-            }
-            E::ClassDecided { .. }
+            E::StateChanged { .. }
+            | E::ClassDecided { .. }
             | E::TrajectoryLocked { .. }
             | E::ChangeRefused { .. }
             | E::CameraDegraded { .. }
             | E::CameraRestored { .. } => {
-                let mut m = session_state_message(machine, now_nanos, &describe(e));
-                current.name().clone_into(&mut m.state);
-                rec.write(topics::SESSION_STATE, now_nanos, &m)?;
+                if let Some(m) = states.next() {
+                    rec.write(topics::SESSION_STATE, now_nanos, &m)?;
+                }
             }
             E::RobotCommandSent { command, .. } => rec.write(
                 topics::JOINT_TRAJECTORY,

@@ -563,6 +563,19 @@ fn an_operator_measured_while_walking_in_has_not_left_the_station() {
                 .any(|e| matches!(e, SessionEvent::ClassDecided { .. }))
         {
             phase_at_decision = phase;
+            // Published and recorded session states carry the state as of each event, in order,
+            // although the machine is already working at the end of this step.
+            let states: Vec<String> =
+                ergocell::recording::session_state_messages(&machine, now, &ev)
+                    .into_iter()
+                    .map(|m| m.state)
+                    .collect();
+            assert_eq!(states.first().map(String::as_str), Some("class_decided"));
+            assert_eq!(states.last().map(String::as_str), Some("working"));
+            assert!(
+                states.contains(&"trajectory_locked".to_owned()),
+                "{states:?}"
+            );
         }
         events.extend(ev);
         now += PERIOD_30HZ;

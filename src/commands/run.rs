@@ -409,6 +409,7 @@ async fn publish_events(
     out: &Outputs,
 ) -> anyhow::Result<bool> {
     let mut frame = false;
+    let mut states = recording::session_state_messages(machine, now, events).into_iter();
     for e in events {
         match e {
             SessionEvent::Frame {
@@ -430,17 +431,10 @@ async fn publish_events(
                 publish(&out.warnings, recording::warning_message(w)).await?;
             }
             SessionEvent::RobotCommandSent { .. } => {}
-            SessionEvent::StateChanged { to, reason, .. } => {
-                let mut m = recording::session_state_message(machine, now, reason);
-                to.name().clone_into(&mut m.state);
-                publish(&out.session_state, m).await?;
-            }
-            other => {
-                publish(
-                    &out.session_state,
-                    recording::session_state_message(machine, now, &recording::describe(other)),
-                )
-                .await?;
+            _ => {
+                if let Some(m) = states.next() {
+                    publish(&out.session_state, m).await?;
+                }
             }
         }
     }
