@@ -570,12 +570,19 @@ fn an_operator_measured_while_walking_in_has_not_left_the_station() {
                     .into_iter()
                     .map(|m| m.state)
                     .collect();
-            assert_eq!(states.first().map(String::as_str), Some("class_decided"));
-            assert_eq!(states.last().map(String::as_str), Some("working"));
-            assert!(
-                states.contains(&"trajectory_locked".to_owned()),
-                "{states:?}"
-            );
+            let order = [
+                "measuring_height",
+                "class_decided",
+                "trajectory_locked",
+                "working",
+            ];
+            let rank: Vec<usize> = states
+                .iter()
+                .map(|s| order.iter().position(|o| o == s).unwrap())
+                .collect();
+            assert!(rank.windows(2).all(|w| w[0] <= w[1]), "{states:?}");
+            assert_eq!(rank.first(), Some(&0), "{states:?}");
+            assert_eq!(rank.last(), Some(&3), "{states:?}");
         }
         events.extend(ev);
         now += PERIOD_30HZ;
