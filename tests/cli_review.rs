@@ -271,7 +271,12 @@ fn get(port: u16, method: &str, target: &str, host: &str) -> (u16, String) {
     )
     .unwrap();
     let mut buf = Vec::new();
-    s.read_to_end(&mut buf).unwrap();
+    if let Err(e) = s.read_to_end(&mut buf) {
+        panic!(
+            "{method} {target} (Host {host}): {e}; read {} bytes",
+            buf.len()
+        );
+    }
     let text = String::from_utf8_lossy(&buf).into_owned();
     let status = text
         .split_whitespace()

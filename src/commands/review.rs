@@ -9,6 +9,7 @@
 //! `report` writes the same page as one self-contained HTML file (data, three.js, uPlot inlined)
 //! that opens offline and can be mailed; `--compare` puts a second session beside the first.
 
+use std::io::Write as _;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -23,6 +24,16 @@ use axum::Router;
 use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
 
 use super::UsageError;
+
+/// `println!` that ignores a closed stdout: `ergocell review x.mcap | head -1` (or a test that reads
+/// only the URL line) must not bring the server down.
+macro_rules! say {
+    ($($t:tt)*) => {{
+        let mut out = std::io::stdout();
+        let _ = writeln!(out, $($t)*);
+        let _ = out.flush();
+    }};
+}
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -63,7 +74,7 @@ fn load(path: &Path) -> anyhow::Result<SessionReview> {
     );
     let review = analyse(&recording, &label);
     for p in &review.source.problems {
-        eprintln!("warning: {}: {p}", path.display());
+        let _ = writeln!(std::io::stderr(), "warning: {}: {p}", path.display());
     }
     Ok(review)
 }
@@ -106,8 +117,8 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
     let html = page::report_page(&data).context("serialising the review")?;
     std::fs::write(&args.out, html.as_bytes())
         .with_context(|| format!("cannot write {}", args.out.display()))?;
-    println!("{}", summary(&data));
-    println!(
+    say!("{}", summary(&data));
+    say!(
         "report: {} ({:.1} MB, self-contained: opens offline in any browser)",
         args.out.display(),
         html.len() as f64 / 1e6
@@ -161,18 +172,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .fallback(not_found)
             .layer(axum::middleware::from_fn_with_state(served.clone(), guard))
             .with_state(served);
-        println!("{}", summary(&data));
+        say!("{}", summary(&data));
         let shown = if addr.ip().is_unspecified() {
             SocketAddr::new(IpAddr::V4(Ipv4Addr::LOCALHOST), addr.port())
         } else {
             addr
         };
-        println!("review: http://{shown}/");
+        say!("review: http://{shown}/");
         if !loopback {
-            println!("  serving on {addr} to the network, as asked (--bind)");
+            say!("  serving on {addr} to the network, as asked (--bind)");
         }
-        println!("  Ctrl-C stops the server");
-        let _ = std::io::Write::flush(&mut std::io::stdout());
+        say!("  Ctrl-C stops the server");
         axum::serve(
             listener,
             app.into_make_service_with_connect_info::<SocketAddr>(),
