@@ -365,3 +365,148 @@ fn non_loopback_ip() -> Option<std::net::IpAddr> {
     let ip = s.local_addr().ok()?.ip();
     (!ip.is_loopback() && !ip.is_unspecified()).then_some(ip)
 }
+
+#[test]
+fn a_damaged_chunk_is_skipped_and_named_and_the_rest_is_read() {
+    let mut bytes = std::fs::read(demo_recording()).unwrap();
+    // One flipped byte in the middle of the file (inside a chunk's messages).
+    let k = bytes.len() / 2;
+    bytes[k] ^= 0xff;
+    let bad = tmp("review-damaged.mcap");
+    std::fs::write(&bad, &bytes).unwrap();
+    let (o, data) = report(&bad, "review-damaged.html");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(stderr.contains("skipped"), "{stderr}");
+    let s = &data.unwrap()["sessions"][0];
+    assert_eq!(s["source"]["complete"], false);
+    let (_, full) = report(demo_recording(), "review-undamaged.html");
+    let n_full = full.unwrap()["sessions"][0]["frames"]["t"]
+        .as_array()
+        .unwrap()
+        .len();
+    let n = s["frames"]["t"].as_array().unwrap().len();
+    assert!(n > n_full / 2 && n < n_full, "{n} of {n_full} frames");
+}
+
+/// A recording of two operator sessions, as `ergocell run --record` writes them one after another.
+fn two_sessions() -> PathBuf {
+    use ergocell::recording::{topics, McapRecorder};
+    use ergocell_bridge::msg::{Header, OperatorPose, SessionState};
+    let path = tmp("review-two-sessions.mcap");
+    let mut rec = McapRecorder::create(&path).unwrap();
+    let s = 1_000_000_000i64;
+    for (k, (class, height)) in [("c1", 1.60), ("c3", 1.90)].iter().enumerate() {
+        let t0 = k as i64 * 20 * s;
+        let state = |t: i64, name: &str| SessionState {
+            header: Header::new(t, "world"),
+            state: name.to_owned(),
+            height_m: *height,
+            height_class: (*class).to_owned(),
+            ..SessionState::default()
+        };
+        rec.write(topics::SESSION_STATE, t0, &state(t0, "working"))
+            .unwrap();
+        for f in 0..50 {
+            let t = t0 + f * s / 10;
+            let pose = OperatorPose {
+                header: Header::new(t, "world"),
+                x: vec![0.0; 33],
+                y: vec![0.0; 33],
+                z: vec![1.0; 33],
+                ..OperatorPose::default()
+            };
+            rec.write(topics::OPERATOR_POSE, t, &pose).unwrap();
+        }
+        rec.write(
+            topics::SESSION_STATE,
+            t0 + 10 * s,
+            &state(t0 + 10 * s, "session_ended"),
+        )
+        .unwrap();
+    }
+    rec.finish().unwrap();
+    path
+}
+
+#[test]
+fn a_recording_of_two_operators_is_reviewed_one_session_at_a_time() {
+    let rec = two_sessions();
+    let html = tmp("review-two.html");
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "report",
+            rec.to_str().unwrap(),
+            "--out",
+            html.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let o = ergocell(&args);
+        let data = o
+            .status
+            .success()
+            .then(|| report_data(&std::fs::read_to_string(&html).unwrap()));
+        (o, data)
+    };
+    let (o, data) = run(&[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = &data.unwrap()["sessions"][0];
+    assert_eq!(s["facts"]["height_class"], "c1", "session 1 by default");
+    assert_eq!(s["frames"]["t"].as_array().unwrap().len(), 50);
+    let problems = s["source"]["problems"].to_string();
+    assert!(problems.contains("2 operator sessions"), "{problems}");
+    let (o, data) = run(&["--session", "2"]);
+    assert!(o.status.success());
+    let s = &data.unwrap()["sessions"][0];
+    assert_eq!(s["facts"]["height_class"], "c3");
+    assert!((s["facts"]["height_m"].as_f64().unwrap() - 1.90).abs() < 1e-12);
+    assert_eq!(s["frames"]["t"].as_array().unwrap().len(), 50);
+    let (o, _) = run(&["--session", "3"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("2 operator session"));
+}
+
+#[test]
+fn the_allowed_host_is_the_bound_address_and_two_hosts_are_refused() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(root())
+        .args([
+            "review",
+            demo_recording().to_str().unwrap(),
+            "--port",
+            "0",
+            "--bind",
+            "127.0.0.2",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+    let url = loop {
+        let line = lines.next().expect("server exited").unwrap();
+        if let Some(u) = line.strip_prefix("review: ") {
+            break u.to_owned();
+        }
+    };
+    let server = Server { child, port: 0 };
+    let authority = url.trim_start_matches("http://").trim_end_matches('/');
+    assert!(authority.starts_with("127.0.0.2:"), "{url}");
+    let port: u16 = authority.rsplit(':').next().unwrap().parse().unwrap();
+    let get2 = |host_lines: &str| {
+        let mut s = TcpStream::connect(("127.0.0.2", port)).unwrap();
+        write!(s, "GET / HTTP/1.1\r\n{host_lines}Connection: close\r\n\r\n").unwrap();
+        let mut buf = String::new();
+        let _ = s.read_to_string(&mut buf);
+        buf.split_whitespace().nth(1).unwrap_or("").to_owned()
+    };
+    assert_eq!(get2(&format!("Host: {authority}\r\n")), "200");
+    assert_eq!(get2(&format!("Host: localhost:{port}\r\n")), "200");
+    assert_eq!(get2(&format!("Host: 127.0.0.1:{port}\r\n")), "403");
+    assert_eq!(
+        get2(&format!("Host: {authority}\r\nHost: evil.example\r\n")),
+        "400"
+    );
+    drop(lines);
+    drop(server);
+}

@@ -64,17 +64,38 @@ fn demo(out: &Path) {
     assert!(status.success(), "demo failed");
 }
 
+/// Runs a node script, failing it after 3 minutes (a hung browser must not hang the test suite).
 fn node(script: &str, args: &[&str]) {
-    let output = Command::new("node")
+    let mut child = Command::new("node")
         .current_dir(root())
         .arg(script)
         .args(args)
-        .output()
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
         .unwrap();
-    let out = String::from_utf8_lossy(&output.stdout);
-    let err = String::from_utf8_lossy(&output.stderr);
+    let deadline = std::time::Duration::from_mins(3);
+    let mut waited = std::time::Duration::ZERO;
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break Some(status);
+        }
+        if waited >= deadline {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+        waited += std::time::Duration::from_millis(100);
+    };
+    let mut out = String::new();
+    let mut err = String::new();
+    let _ = std::io::Read::read_to_string(&mut child.stdout.take().unwrap(), &mut out);
+    let _ = std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err);
     eprintln!("{out}{err}");
-    assert!(output.status.success(), "{script} failed:\n{out}\n{err}");
+    let status =
+        status.unwrap_or_else(|| panic!("{script} did not finish in 3 minutes:\n{out}\n{err}"));
+    assert!(status.success(), "{script} failed:\n{out}\n{err}");
 }
 
 #[test]
@@ -140,4 +161,14 @@ fn report_opens_offline_from_file_in_headless_chromium() {
         &[html.to_str().unwrap(), shot.to_str().unwrap()],
     );
     assert!(std::fs::read(&shot).unwrap().starts_with(b"\x89PNG"));
+}
+
+#[test]
+fn the_page_handles_edge_case_data_and_every_control() {
+    // Zero frames, one frame, all-null strain, no robot, compare with problems, no sessions; step
+    // buttons, keys, scrubber, speed, the warning tooltip, B's timeline (web/e2e/variants.e2e.mjs).
+    if skip_or_fail() {
+        return;
+    }
+    node("web/e2e/variants.e2e.mjs", &[]);
 }

@@ -356,6 +356,7 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
     poses.dedup_by_key(|p| stamp(&p.message.header));
     let mut frames = Frames::default();
     let mut malformed = 0usize;
+    let mut implausible_angles = 0usize;
     let mut angle_samples: Vec<(String, Vec<f64>)> = Vec::new();
     for p in poses {
         let m = &p.message;
@@ -400,13 +401,20 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
                     angle_samples.push((name.clone(), Vec::new()));
                     angle_samples.len() - 1
                 };
-                if let Some(v) = finite(v) {
-                    angle_samples[k].1.push(v.to_degrees());
+                match finite(v).map(f64::to_degrees) {
+                    Some(deg) if deg.abs() <= MAX_ANGLE_DEG => angle_samples[k].1.push(deg),
+                    Some(_) => implausible_angles += 1,
+                    None => {}
                 }
             }
         } else {
             malformed += 1;
         }
+    }
+    if implausible_angles > 0 {
+        problems.push(format!(
+            "{implausible_angles} joint angle value(s) beyond ±{MAX_ANGLE_DEG}° left out of the distributions (damaged data)"
+        ));
     }
     if malformed > 0 {
         problems.push(format!(
@@ -468,7 +476,8 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             .warnings
             .iter()
             .map(|w| Warning {
-                t: secs(w.log_time_nanos, t0),
+                // The frame the warning was raised on (its header), on the frames' clock.
+                t: secs(header_or_log_time(&w.message.header, w.log_time_nanos), t0),
                 kind: w.message.kind.clone(),
                 region: w.message.region.clone(),
                 side: w.message.side.clone(),
@@ -480,6 +489,14 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         regions,
         angles,
     }
+}
+
+/// A message's header stamp, or its log time when the header has none.
+fn header_or_log_time(h: &ergocell_bridge::msg::Header, log_time_nanos: u64) -> u64 {
+    u64::try_from(h.stamp.to_nanos())
+        .ok()
+        .filter(|&t| t > 0)
+        .unwrap_or(log_time_nanos)
 }
 
 fn region_stats(region: Region, side: &'static str, scores: &[u8]) -> RegionStats {
@@ -515,14 +532,18 @@ fn angle_label(name: &str) -> (String, &'static str) {
     (rest.replace('_', " "), side)
 }
 
-/// Histogram of `samples` (degrees) in 10° bins covering them, with mean and 95th percentile.
+/// No joint angle is larger than a full turn; a larger recorded value is damaged data.
+pub const MAX_ANGLE_DEG: f64 = 360.0;
+
+/// Histogram of `samples` (degrees, within ±[`MAX_ANGLE_DEG`]) in 10° bins covering them, with mean
+/// and 95th percentile.
 fn angle_stats(name: &str, samples: &[f64]) -> AngleStats {
     let (label, side) = angle_label(name);
     let mut sorted = samples.to_vec();
     sorted.sort_by(f64::total_cmp);
     let n = sorted.len();
     let (bin_edges, counts) = match (sorted.first(), sorted.last()) {
-        (Some(&lo), Some(&hi)) => {
+        (Some(&lo), Some(&hi)) if lo >= -MAX_ANGLE_DEG && hi <= MAX_ANGLE_DEG => {
             const BIN_DEG: f64 = 10.0;
             let lo = (lo / BIN_DEG).floor() * BIN_DEG;
             let hi = ((hi / BIN_DEG).floor() + 1.0) * BIN_DEG;
@@ -656,6 +677,17 @@ mod tests {
         assert_eq!(a.counts[0], 10); // -5.0 .. -0.5
         assert_eq!(a.p95, Some(42.0)); // the 95th of 100 sorted values
         assert!((a.mean.unwrap() - 19.75).abs() < 1e-12);
+    }
+
+    #[test]
+    fn damaged_angles_never_size_the_histogram() {
+        // A recording with one flipped byte decoded to an angle of ~1e300 rad: that sized the
+        // histogram to usize::MAX bins (capacity overflow). Out-of-range input gives no bins.
+        let a = angle_stats("trunk_flexion", &[1e300, 5.0]);
+        assert!(a.counts.is_empty() && a.bin_edges.is_empty());
+        let b = angle_stats("trunk_flexion", &[-360.0, 359.0]);
+        assert_eq!(b.counts.iter().sum::<u64>(), 2);
+        assert_eq!(b.counts.len(), 72);
     }
 
     #[test]

@@ -65,12 +65,17 @@ pub fn served_page(data: &ReviewData) -> String {
     )
 }
 
+/// The report's Content-Security-Policy: its own inline script and style, nothing fetched from
+/// anywhere (a mailed report cannot phone home, whatever a recording holds).
+pub const REPORT_CSP: &str = "default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data: blob:; base-uri 'none'; form-action 'none'";
+
 /// The self-contained report: the data, the stylesheet and the bundle inlined, nothing fetched.
 pub fn report_page(data: &ReviewData) -> Result<String, serde_json::Error> {
     let json = script_json(data)?;
     Ok(format!(
         "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\">\
 <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\
+<meta http-equiv=\"Content-Security-Policy\" content=\"{REPORT_CSP}\">\
 <title>{}</title><style>{}</style></head>\
 <body><div id=\"app\"></div><script>window.ERGOCELL_REVIEW_DATA = {json};</script>\
 <script>{}</script>\n<!-- Third-party licences of the embedded libraries:\n{}\n-->\n</body></html>\n",

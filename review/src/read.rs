@@ -83,6 +83,10 @@ struct Skipped {
 
 /// Reads `bytes` (a whole `.mcap` file).
 ///
+/// A file with its summary is read chunk by chunk through the summary's chunk index, each chunk's
+/// CRC checked: a damaged chunk is skipped and named, the rest is read. A file without a summary (cut
+/// short) is read linearly up to the first unreadable record.
+///
 /// # Errors
 /// [`ReviewError::NotMcap`] when nothing of it reads as MCAP, [`ReviewError::Foreign`] when it is MCAP
 /// but holds none of ergocell's topics (the error lists the channels it does hold).
@@ -95,39 +99,148 @@ pub fn read_recording(bytes: &[u8]) -> Result<Recording, ReviewError> {
             ),
         });
     }
-    let options = enumset::EnumSet::only(mcap::read::Options::IgnoreEndMagic);
-    let stream = mcap::read::MessageStream::new_with_options(bytes, options).map_err(|e| {
-        ReviewError::NotMcap {
-            reason: e.to_string(),
-        }
-    })?;
-    let mut rec = Recording {
-        bytes: bytes.len() as u64,
-        complete: true,
-        ..Recording::default()
+    if bytes.len() <= mcap::MAGIC.len() * 2 {
+        return Err(ReviewError::NotMcap {
+            reason: format!(
+                "{} bytes: the MCAP magic and no header or records",
+                bytes.len()
+            ),
+        });
+    }
+    let mut reader = Reader {
+        rec: Recording {
+            bytes: bytes.len() as u64,
+            complete: true,
+            ..Recording::default()
+        },
+        skipped: BTreeMap::new(),
     };
-    let mut skipped: BTreeMap<String, Skipped> = BTreeMap::new();
-    for item in stream {
-        let m = match item {
-            Ok(m) => m,
-            Err(e) => {
-                rec.complete = false;
-                let at = rec.last_log_time_nanos.map_or_else(
-                    || "before the first message".to_owned(),
-                    |t| {
-                        format!(
-                            "after {:.1} s of recording",
-                            t.saturating_sub(rec.first_log_time_nanos.unwrap_or(t)) as f64 * 1e-9
-                        )
-                    },
-                );
-                rec.problems.push(format!(
-                    "the recording is cut short: it could be read only up to {at} ({} messages); the rest is unreadable ({e})",
-                    rec.messages
+    let summary = mcap::Summary::read(bytes).ok().flatten();
+    match summary {
+        Some(summary) if !summary.chunk_indexes.is_empty() => {
+            reader.read_chunks(bytes, &summary);
+        }
+        _ => reader.read_linear(bytes),
+    }
+    reader.finish()
+}
+
+/// Reading state: what was read and what was skipped.
+struct Reader {
+    rec: Recording,
+    skipped: BTreeMap<String, Skipped>,
+}
+
+impl Reader {
+    fn secs_into(&self, t: u64) -> f64 {
+        t.saturating_sub(self.rec.first_log_time_nanos.unwrap_or(t)) as f64 * 1e-9
+    }
+
+    /// Every chunk through the summary's index, in time order; damaged chunks skipped and named.
+    fn read_chunks(&mut self, bytes: &[u8], summary: &mcap::Summary) {
+        let mut indexes: Vec<&mcap::records::ChunkIndex> = summary.chunk_indexes.iter().collect();
+        indexes.sort_by_key(|i| (i.message_start_time, i.chunk_start_offset));
+        let first_time = indexes.first().map_or(0, |i| i.message_start_time);
+        let span = |i: &mcap::records::ChunkIndex| {
+            format!(
+                "{:.1}–{:.1} s",
+                i.message_start_time.saturating_sub(first_time) as f64 * 1e-9,
+                i.message_end_time.saturating_sub(first_time) as f64 * 1e-9
+            )
+        };
+        for index in indexes {
+            if let Err(why) = check_chunk(bytes, index) {
+                self.rec.complete = false;
+                self.rec.problems.push(format!(
+                    "the chunk of {} is unreadable and was skipped: {why}",
+                    span(index)
                 ));
-                break;
+                continue;
+            }
+            let messages = match summary.stream_chunk(bytes, index) {
+                Ok(m) => m,
+                Err(e) => {
+                    self.rec.complete = false;
+                    self.rec.problems.push(format!(
+                        "the chunk of {} is unreadable and was skipped: {e}",
+                        span(index)
+                    ));
+                    continue;
+                }
+            };
+            for m in messages {
+                match m {
+                    Ok(m) => self.take_message(&m),
+                    Err(e) => {
+                        self.rec.complete = false;
+                        self.rec.problems.push(format!(
+                            "the chunk of {} is damaged: read up to a bad record ({e})",
+                            span(index)
+                        ));
+                        break;
+                    }
+                }
+            }
+        }
+        if let Some(stats) = &summary.stats {
+            if stats.message_count > self.rec.messages {
+                self.rec.complete = false;
+                self.rec.problems.push(format!(
+                    "{} of the {} messages the file's summary counts could not be read",
+                    stats.message_count - self.rec.messages,
+                    stats.message_count
+                ));
+            }
+        }
+    }
+
+    /// Linearly, up to the first unreadable record (a file cut short has no summary).
+    fn read_linear(&mut self, bytes: &[u8]) {
+        let options = mcap::read::Options::IgnoreEndMagic | mcap::read::Options::ValidateChunkCrcs;
+        let stream = match mcap::read::MessageStream::new_with_options(bytes, options) {
+            Ok(s) => s,
+            Err(e) => {
+                self.rec.complete = false;
+                self.rec.problems.push(format!("unreadable MCAP: {e}"));
+                return;
             }
         };
+        for item in stream {
+            match item {
+                Ok(m) => self.take_message(&m),
+                Err(e) => {
+                    self.rec.complete = false;
+                    let at = self.rec.last_log_time_nanos.map_or_else(
+                        || "before the first message".to_owned(),
+                        |t| format!("after {:.1} s of recording", self.secs_into(t)),
+                    );
+                    let why = match &e {
+                        mcap::McapError::UnsupportedCompression(c) => format!(
+                            "its chunks are {c}-compressed; ergocell writes and reads uncompressed recordings (`mcap convert --compression none` decompresses one)"
+                        ),
+                        e => format!("the rest is unreadable ({e})"),
+                    };
+                    self.rec.problems.push(format!(
+                        "the recording could be read only up to {at} ({} messages): {why}",
+                        self.rec.messages
+                    ));
+                    break;
+                }
+            }
+        }
+        if self.rec.complete && !bytes.ends_with(mcap::MAGIC) {
+            self.rec.complete = false;
+        }
+        if !bytes.ends_with(mcap::MAGIC) {
+            self.rec.problems.push(format!(
+                "the file has no MCAP footer: the recording was cut short (a crash or a partial copy); {} messages were read up to its last complete chunk",
+                self.rec.messages
+            ));
+        }
+    }
+
+    fn take_message(&mut self, m: &mcap::Message<'_>) {
+        let rec = &mut self.rec;
         rec.messages += 1;
         rec.first_log_time_nanos = Some(
             rec.first_log_time_nanos
@@ -160,68 +273,105 @@ pub fn read_recording(bytes: &[u8]) -> Result<Recording, ReviewError> {
             _ => Ok(()),
         };
         if let Err(why) = outcome {
-            let s = skipped.entry(topic.to_owned()).or_default();
+            let s = self.skipped.entry(topic.to_owned()).or_default();
             s.count += 1;
             if s.first.is_empty() {
                 s.first = why;
             }
         }
     }
-    if rec.complete && !bytes.ends_with(mcap::MAGIC) {
-        rec.complete = false;
-        rec.problems.push(format!(
-            "the file has no MCAP footer: the recording was cut short (a crash or a partial copy); {} messages were read up to its last complete chunk",
-            rec.messages
-        ));
-    }
-    for (topic, s) in skipped {
-        rec.problems.push(format!(
-            "{} message(s) on {topic} skipped: {}",
-            s.count, s.first
-        ));
-    }
-    if rec.ergocell_messages() == 0 {
-        if rec.messages == 0 && !rec.complete {
-            return Err(ReviewError::NotMcap {
-                reason: rec.problems.join("; "),
-            });
-        }
-        let channels = if rec.channels.is_empty() {
-            "no channels".to_owned()
-        } else {
-            rec.channels
-                .iter()
-                .map(|(topic, c)| {
-                    format!(
-                        "{topic} [{}] × {}",
-                        if c.schema.is_empty() {
-                            "no schema"
-                        } else {
-                            &c.schema
-                        },
-                        c.messages
-                    )
-                })
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        return Err(ReviewError::Foreign {
-            message_count: rec.messages,
-            channels,
-        });
-    }
-    for topic in [
-        topics::OPERATOR_POSE,
-        topics::ERGONOMICS,
-        topics::SESSION_STATE,
-    ] {
-        if !rec.channels.contains_key(topic) {
+
+    fn finish(mut self) -> Result<Recording, ReviewError> {
+        let rec = &mut self.rec;
+        for (topic, s) in std::mem::take(&mut self.skipped) {
             rec.problems.push(format!(
-                "no messages on {topic}: the review shows what the other topics hold"
+                "{} message(s) on {topic} skipped: {}",
+                s.count, s.first
             ));
         }
+        if rec.ergocell_messages() == 0 {
+            let ours = rec.channels.keys().any(|t| t.starts_with("/ergocell/"));
+            if !rec.complete || ours {
+                let mut reason = if rec.messages == 0 {
+                    "no message could be read".to_owned()
+                } else {
+                    format!(
+                        "{} messages read ({}), none of the session's (operator pose, RULA, session state)",
+                        rec.messages,
+                        channel_list(&rec.channels)
+                    )
+                };
+                if !rec.problems.is_empty() {
+                    reason.push_str("; ");
+                    reason.push_str(&rec.problems.join("; "));
+                }
+                return Err(ReviewError::NotMcap { reason });
+            }
+            return Err(ReviewError::Foreign {
+                message_count: rec.messages,
+                channels: channel_list(&rec.channels),
+            });
+        }
+        for topic in [
+            topics::OPERATOR_POSE,
+            topics::ERGONOMICS,
+            topics::SESSION_STATE,
+        ] {
+            if !rec.channels.contains_key(topic) {
+                rec.problems.push(format!(
+                    "no messages on {topic}: the review shows what the other topics hold"
+                ));
+            }
+        }
+        Ok(self.rec)
     }
-    Ok(rec)
+}
+
+fn channel_list(channels: &BTreeMap<String, ChannelInfo>) -> String {
+    if channels.is_empty() {
+        return "no channels".to_owned();
+    }
+    channels
+        .iter()
+        .map(|(topic, c)| {
+            format!(
+                "{topic} [{}] × {}",
+                if c.schema.is_empty() {
+                    "no schema"
+                } else {
+                    &c.schema
+                },
+                c.messages
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A chunk's record is whole, uncompressed and matches its CRC.
+fn check_chunk(bytes: &[u8], index: &mcap::records::ChunkIndex) -> Result<(), String> {
+    let start = usize::try_from(index.chunk_start_offset).map_err(|e| e.to_string())?;
+    let end = usize::try_from(index.chunk_start_offset.saturating_add(index.chunk_length))
+        .map_err(|e| e.to_string())?;
+    let body = bytes
+        .get(start.saturating_add(9)..end)
+        .ok_or_else(|| "beyond the end of the file".to_owned())?;
+    match mcap::parse_record(mcap::records::op::CHUNK, body) {
+        Ok(mcap::records::Record::Chunk { header, data }) => {
+            if !header.compression.is_empty() {
+                return Err(format!(
+                    "{}-compressed; ergocell writes and reads uncompressed recordings (`mcap convert --compression none` decompresses one)",
+                    header.compression
+                ));
+            }
+            if header.uncompressed_crc != 0 && crc32fast::hash(&data) != header.uncompressed_crc {
+                return Err("its CRC does not match (the bytes were damaged)".to_owned());
+            }
+            Ok(())
+        }
+        Ok(_) => Err("the index does not point at a chunk".to_owned()),
+        Err(e) => Err(e.to_string()),
+    }
 }
 
 /// Decodes one message of type `M` if the channel's schema names `M`.
@@ -241,4 +391,149 @@ fn take<M: RosMessage + DeserializeOwned>(
         message,
     });
     Ok(())
+}
+
+/// The messages of `v` whose log time `f` accepts.
+fn part<M: Clone>(v: &[Stamped<M>], f: &dyn Fn(u64) -> bool) -> Vec<Stamped<M>> {
+    v.iter().filter(|m| f(m.log_time_nanos)).cloned().collect()
+}
+
+/// One operator session of a recording: its number (1-based) and its messages.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SessionPart {
+    pub number: usize,
+    pub recording: Recording,
+}
+
+/// Splits a recording into its operator sessions: `ergocell run --record` writes one session after
+/// another into one file, each ending with a `session_ended` state. A session is the messages up to
+/// and including its `session_ended`; what follows the last one counts only if an operator was seen
+/// in it (poses or RULA), e.g. a session cut short by the end of the file.
+pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
+    let ends: Vec<u64> = rec
+        .states
+        .iter()
+        .filter(|s| s.message.state == "session_ended")
+        .map(|s| s.log_time_nanos)
+        .collect();
+    if ends.len() <= 1 {
+        let only_one = ends.first().is_none_or(|&end| {
+            rec.poses.iter().all(|p| p.log_time_nanos <= end)
+                && rec.ergonomics.iter().all(|e| e.log_time_nanos <= end)
+        });
+        if only_one {
+            return vec![SessionPart {
+                number: 1,
+                recording: rec.clone(),
+            }];
+        }
+    }
+    let mut bounds: Vec<(Option<u64>, Option<u64>)> = Vec::new();
+    let mut from = None;
+    for &end in &ends {
+        bounds.push((from, Some(end)));
+        from = Some(end);
+    }
+    bounds.push((from, None));
+    let inside = |t: u64, (a, b): (Option<u64>, Option<u64>)| {
+        a.is_none_or(|a| t > a) && b.is_none_or(|b| t <= b)
+    };
+    let mut parts = Vec::new();
+    for range in bounds {
+        let f = |t: u64| inside(t, range);
+        let poses = part(&rec.poses, &f);
+        let ergonomics = part(&rec.ergonomics, &f);
+        if poses.is_empty() && ergonomics.is_empty() {
+            continue; // nobody seen: between operators, or waiting after the last one
+        }
+        parts.push(Recording {
+            bytes: rec.bytes,
+            messages: rec.messages,
+            complete: rec.complete,
+            problems: rec.problems.clone(),
+            first_log_time_nanos: range.0.map_or(rec.first_log_time_nanos, |a| Some(a + 1)),
+            last_log_time_nanos: range.1.or(rec.last_log_time_nanos),
+            poses,
+            ergonomics,
+            warnings: part(&rec.warnings, &f),
+            states: part(&rec.states, &f),
+            robot_markers: part(&rec.robot_markers, &f),
+            channels: rec.channels.clone(),
+        });
+    }
+    parts
+        .into_iter()
+        .enumerate()
+        .map(|(i, recording)| SessionPart {
+            number: i + 1,
+            recording,
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn stamped<M>(t: u64, message: M) -> Stamped<M> {
+        Stamped {
+            log_time_nanos: t,
+            message,
+        }
+    }
+
+    fn state(name: &str) -> SessionState {
+        SessionState {
+            state: name.to_owned(),
+            ..SessionState::default()
+        }
+    }
+
+    #[test]
+    fn a_recording_of_two_operators_splits_at_session_ended() {
+        let s = 1_000_000_000;
+        let rec = Recording {
+            states: vec![
+                stamped(0, state("measuring_height")),
+                stamped(10 * s, state("session_ended")),
+                stamped(11 * s, state("waiting_for_operator")),
+                stamped(12 * s, state("measuring_height")),
+                stamped(20 * s, state("session_ended")),
+                stamped(21 * s, state("waiting_for_operator")),
+            ],
+            poses: [1, 5, 9, 13, 19]
+                .iter()
+                .map(|&k| stamped(k * s, OperatorPose::default()))
+                .collect(),
+            first_log_time_nanos: Some(0),
+            last_log_time_nanos: Some(22 * s),
+            ..Recording::default()
+        };
+        let parts = split_sessions(&rec);
+        assert_eq!(
+            parts.len(),
+            2,
+            "the idle tail after the second operator is no session"
+        );
+        assert_eq!(parts[0].recording.poses.len(), 3);
+        assert_eq!(parts[1].recording.poses.len(), 2);
+        assert_eq!(parts[1].number, 2);
+        // Each part starts its own clock after the previous session's end.
+        assert_eq!(parts[1].recording.first_log_time_nanos, Some(10 * s + 1));
+        assert_eq!(
+            parts[1]
+                .recording
+                .states
+                .first()
+                .map(|m| m.message.state.as_str()),
+            Some("waiting_for_operator")
+        );
+        // One session (or none ended yet): the recording itself.
+        let one = Recording {
+            states: rec.states[..2].to_vec(),
+            poses: rec.poses[..3].to_vec(),
+            ..Recording::default()
+        };
+        assert_eq!(split_sessions(&one).len(), 1);
+    }
 }

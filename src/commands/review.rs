@@ -21,6 +21,7 @@ use axum::middleware::Next;
 use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use axum::Router;
+use ergocell_review::read::split_sessions;
 use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
 
 use super::UsageError;
@@ -42,6 +43,13 @@ pub struct Args {
     /// A second recording shown beside the first (e.g. before vs after the robot's adaptation).
     #[arg(long)]
     pub compare: Option<PathBuf>,
+    /// Which operator session of the recording (1-based): `ergocell run --record` writes one after
+    /// another into one file.
+    #[arg(long, default_value_t = 1)]
+    pub session: usize,
+    /// Which operator session of the `--compare` recording (1-based).
+    #[arg(long, default_value_t = 1)]
+    pub compare_session: usize,
     /// Address to listen on. Loopback by default; any other address serves the recording to the
     /// network (and then accepts any Host header).
     #[arg(long, default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
@@ -58,20 +66,52 @@ pub struct ReportArgs {
     /// A second recording shown beside the first (e.g. before vs after the robot's adaptation).
     #[arg(long)]
     pub compare: Option<PathBuf>,
+    /// Which operator session of the recording (1-based): `ergocell run --record` writes one after
+    /// another into one file.
+    #[arg(long, default_value_t = 1)]
+    pub session: usize,
+    /// Which operator session of the `--compare` recording (1-based).
+    #[arg(long, default_value_t = 1)]
+    pub compare_session: usize,
     /// The HTML file to write.
     #[arg(long, default_value = "report.html")]
     pub out: PathBuf,
 }
 
-/// Reads and analyses one recording; what is wrong with it goes to stderr and onto the page.
-fn load(path: &Path) -> anyhow::Result<SessionReview> {
+/// Reads one recording and analyses its operator session `session` (1-based); what is wrong with it
+/// goes to stderr and onto the page.
+fn load(path: &Path, session: usize) -> anyhow::Result<SessionReview> {
     let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
     let recording =
         read_recording(&bytes).map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
-    let label = path.file_name().map_or_else(
+    let mut parts = split_sessions(&recording);
+    let count = parts.len();
+    if session == 0 || session > count.max(1) {
+        return Err(UsageError(format!(
+            "{}: --session {session}: the recording holds {count} operator session(s)",
+            path.display()
+        ))
+        .into());
+    }
+    let name = path.file_name().map_or_else(
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
+    let (label, mut recording) = if count > 1 {
+        let listing = parts
+            .iter()
+            .map(|p| format!("{}: {}", p.number, describe_part(&p.recording)))
+            .collect::<Vec<_>>()
+            .join("; ");
+        let mut chosen = parts.swap_remove(session - 1).recording;
+        chosen.problems.push(format!(
+            "this recording holds {count} operator sessions ({listing}); this page shows session {session} (--session N picks another)"
+        ));
+        (format!("{name} · session {session}/{count}"), chosen)
+    } else {
+        (name, parts.pop().map_or(recording, |p| p.recording))
+    };
+    recording.problems.dedup();
     let review = analyse(&recording, &label);
     for p in &review.source.problems {
         let _ = writeln!(std::io::stderr(), "warning: {}: {p}", path.display());
@@ -79,10 +119,33 @@ fn load(path: &Path) -> anyhow::Result<SessionReview> {
     Ok(review)
 }
 
-fn load_all(recording: &Path, compare: Option<&Path>) -> anyhow::Result<ReviewData> {
-    let mut sessions = vec![load(recording)?];
+/// One line on an operator session: frames, class and height, duration.
+fn describe_part(r: &ergocell_review::Recording) -> String {
+    let t0 = r.first_log_time_nanos.unwrap_or(0);
+    let secs = r
+        .last_log_time_nanos
+        .map_or(0.0, |t| t.saturating_sub(t0) as f64 * 1e-9);
+    let decided = r
+        .states
+        .iter()
+        .rev()
+        .find(|s| !s.message.height_class.is_empty());
+    let class = decided.map_or_else(
+        || "no class decided".to_owned(),
+        |s| format!("{} at {:.3} m", s.message.height_class, s.message.height_m),
+    );
+    format!("{} frames, {class}, {secs:.0} s", r.poses.len())
+}
+
+fn load_all(
+    recording: &Path,
+    session: usize,
+    compare: Option<&Path>,
+    compare_session: usize,
+) -> anyhow::Result<ReviewData> {
+    let mut sessions = vec![load(recording, session)?];
     if let Some(other) = compare {
-        sessions.push(load(other)?);
+        sessions.push(load(other, compare_session)?);
     }
     Ok(ReviewData::new(sessions))
 }
@@ -113,7 +176,12 @@ fn summary(data: &ReviewData) -> String {
 }
 
 pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
-    let data = load_all(&args.recording, args.compare.as_deref())?;
+    let data = load_all(
+        &args.recording,
+        args.session,
+        args.compare.as_deref(),
+        args.compare_session,
+    )?;
     let html = page::report_page(&data).context("serialising the review")?;
     std::fs::write(&args.out, html.as_bytes())
         .with_context(|| format!("cannot write {}", args.out.display()))?;
@@ -135,7 +203,12 @@ struct Served {
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let data = load_all(&args.recording, args.compare.as_deref())?;
+    let data = load_all(
+        &args.recording,
+        args.session,
+        args.compare.as_deref(),
+        args.compare_session,
+    )?;
     let json = serde_json::to_string(&data).context("serialising the review")?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
@@ -149,15 +222,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 UsageError(format!("cannot listen on {}:{}: {e}", args.bind, args.port))
             })?;
         let addr = listener.local_addr()?;
-        let loopback = args.bind.is_loopback();
-        let allowed_hosts = loopback.then(|| {
-            let port = addr.port();
-            vec![
-                format!("127.0.0.1:{port}"),
-                format!("localhost:{port}"),
-                format!("[::1]:{port}"),
-            ]
-        });
+        // An IPv4-mapped loopback (::ffff:127.0.0.1) is loopback too.
+        let loopback = args.bind.to_canonical().is_loopback();
+        // The Host values a browser sends for the printed URL (and `localhost`), nothing else.
+        let allowed_hosts =
+            loopback.then(|| vec![addr.to_string(), format!("localhost:{}", addr.port())]);
         let served = Arc::new(Served {
             page: page::served_page(&data),
             json,
@@ -204,13 +273,19 @@ async fn guard(
     request: Request,
     next: Next,
 ) -> Response {
+    if request.headers().get_all(header::HOST).iter().count() > 1 {
+        // RFC 9112 §3.2: more than one Host is a bad request.
+        return (StatusCode::BAD_REQUEST, "more than one Host header").into_response();
+    }
     if let Some(allowed) = &served.allowed_hosts {
         let host = request
             .headers()
             .get(header::HOST)
             .and_then(|h| h.to_str().ok())
             .unwrap_or("");
-        if !peer.ip().is_loopback() || !allowed.iter().any(|a| a.eq_ignore_ascii_case(host)) {
+        if !peer.ip().to_canonical().is_loopback()
+            || !allowed.iter().any(|a| a.eq_ignore_ascii_case(host))
+        {
             return (
                 StatusCode::FORBIDDEN,
                 format!(
@@ -230,7 +305,8 @@ async fn guard(
         header::CONTENT_SECURITY_POLICY,
         HeaderValue::from_static(
             "default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; \
-             img-src 'self' data: blob:; connect-src 'self'; frame-ancestors 'none'",
+             img-src 'self' data: blob:; connect-src 'self'; frame-ancestors 'none'; \
+             base-uri 'none'; form-action 'none'",
         ),
     );
     h.insert(

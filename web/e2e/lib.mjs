@@ -74,7 +74,10 @@ export function assertClean(b, when) {
 export async function loadChecks(b, url) {
   const { page } = b;
   await page.goto(url, { waitUntil: 'load', timeout: 30000 });
-  await page.waitForSelector('#frame-counter', { timeout: 15000 }).catch(() => fail(`#frame-counter did not appear; page says: ${JSON.stringify((bodyTextSync || '').slice(0, 300))}`));
+  await page.waitForSelector('#frame-counter', { timeout: 15000 }).catch(async () => {
+    const text = await page.evaluate(() => document.body.innerText).catch(() => '');
+    fail(`#frame-counter did not appear; page says: ${JSON.stringify(text.slice(0, 300))}`);
+  });
   await page.waitForFunction(() => window.ergocellReview && document.querySelector('canvas[data-frame]'), null, { timeout: 15000 }).catch(() => fail('window.ergocellReview or the 3D canvas did not appear'));
   // Give WebGL a couple of frames to render (context creation errors show up here).
   await page.waitForTimeout(500);
@@ -90,7 +93,6 @@ export async function loadChecks(b, url) {
   pass(`page loads, #frame-counter shows "${counter.trim()}", WebGL renders, no console errors, page errors or failed requests (${n} frames)`);
   return n;
 }
-let bodyTextSync = '';
 
 export async function screenshot(b, path) {
   await b.page.screenshot({ path, fullPage: true });

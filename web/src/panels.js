@@ -146,8 +146,8 @@ export function renderRegions(el, sessions) {
   }
   const cmp = sessions.length > 1;
   const head = cmp
-    ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num">max</th><th>Time share per score (A above B)</th></tr>`
-    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Time share per score</th></tr>`;
+    ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num">max</th><th>Share of scored frames per score (A above B)</th></tr>`
+    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Share of scored frames per score</th></tr>`;
   const body = keys
     .map((k) => {
       const rs = maps.map((m) => m.get(k));
@@ -289,7 +289,7 @@ export function renderAngles(el, sessions) {
   for (const k of keys) {
     const as = maps.map((m) => m.get(k));
     const a0 = as.find(Boolean);
-    const unit = a0.unit === 'deg' || !a0.unit ? '°' : ` ${a0.unit}`;
+    const unit = a0.unit === 'deg' || !a0.unit ? '°' : ` ${esc(a0.unit)}`;
     const card = document.createElement('div');
     card.className = 'angle';
     const stats = as
