@@ -386,6 +386,36 @@ pub struct SideAssessment {
     pub uncertain_reasons: Vec<String>,
 }
 
+/// The angle values (degrees) at which an angle's RULA contribution changes, for drawing over its
+/// distribution: the band edges of the worksheet ([`crate::rula`]) and the adjustment thresholds of
+/// `thresholds` (± for the symmetric ones). `angle` is a joint-angle name as recorded —
+/// `trunk_flexion`, `neck_twist`, `left_upper_arm_abduction`, … (a `left_`/`right_` prefix is
+/// ignored). `None` for an unknown name.
+pub fn score_edges_deg(angle: &str, thresholds: &Thresholds) -> Option<Vec<f64>> {
+    use crate::rula::{
+        LOWER_ARM_EDGES_DEG, NECK_EDGES_DEG, TRUNK_EDGES_DEG, UPPER_ARM_EDGES_DEG, WRIST_EDGES_DEG,
+    };
+    let name = angle
+        .strip_prefix("left_")
+        .or_else(|| angle.strip_prefix("right_"))
+        .unwrap_or(angle);
+    let sym = |rad: f64| vec![-rad.to_degrees(), rad.to_degrees()];
+    Some(match name {
+        "trunk_flexion" => TRUNK_EDGES_DEG.to_vec(),
+        "trunk_side_bend" => sym(thresholds.trunk_side_bend_rad),
+        "trunk_twist" => sym(thresholds.trunk_twist_rad),
+        "neck_flexion" => NECK_EDGES_DEG.to_vec(),
+        "neck_side_bend" => sym(thresholds.neck_side_bend_rad),
+        "neck_twist" => sym(thresholds.neck_twist_rad),
+        "upper_arm_flexion" => UPPER_ARM_EDGES_DEG.to_vec(),
+        "upper_arm_abduction" => vec![thresholds.abduction_rad.to_degrees()],
+        "elbow_flexion" => LOWER_ARM_EDGES_DEG.to_vec(),
+        "wrist_flexion" => WRIST_EDGES_DEG.to_vec(),
+        "wrist_deviation" => sym(thresholds.wrist_deviation_rad),
+        _ => return None,
+    })
+}
+
 /// Both sides of one frame.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrameAssessment {

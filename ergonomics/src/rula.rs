@@ -207,15 +207,27 @@ pub struct WorksheetResult {
     pub notes: Vec<ScoringNote>,
 }
 
+/// Where the upper-arm band changes (flexion, degrees; negative = extension).
+pub const UPPER_ARM_EDGES_DEG: [f64; 4] = [-20.0, 20.0, 45.0, 90.0];
+/// Where the lower-arm band changes (elbow flexion, degrees): 60–100° inclusive scores 1.
+pub const LOWER_ARM_EDGES_DEG: [f64; 2] = [60.0, 100.0];
+/// Where the wrist band changes (flexion, degrees): below 15° either way scores 2 (exactly 0°, 1).
+pub const WRIST_EDGES_DEG: [f64; 2] = [-15.0, 15.0];
+/// Where the neck band changes (flexion, degrees; below 0 = extension scores 4).
+pub const NECK_EDGES_DEG: [f64; 3] = [0.0, 10.0, 20.0];
+/// Where the trunk band changes (flexion, degrees).
+pub const TRUNK_EDGES_DEG: [f64; 3] = [0.0, 20.0, 60.0];
+
 /// Step 1 before adjustments: upper-arm band from flexion (negative = extension), degrees.
 pub fn upper_arm_band(flexion_deg: f64) -> u8 {
-    if flexion_deg < -20.0 {
+    let [ext, low, mid, high] = UPPER_ARM_EDGES_DEG;
+    if flexion_deg < ext {
         2 // extension strictly greater than 20°
-    } else if flexion_deg < 20.0 {
+    } else if flexion_deg < low {
         1
-    } else if flexion_deg < 45.0 {
+    } else if flexion_deg < mid {
         2
-    } else if flexion_deg < 90.0 {
+    } else if flexion_deg < high {
         3
     } else {
         4
@@ -231,7 +243,8 @@ pub fn upper_arm_score(flexion_deg: f64, raised: bool, abducted: bool, supported
 
 /// Step 2 before adjustments: 60°–100° elbow flexion inclusive → 1, otherwise 2.
 pub fn lower_arm_band(elbow_flexion_deg: f64) -> u8 {
-    if (60.0..=100.0).contains(&elbow_flexion_deg) {
+    let [low, high] = LOWER_ARM_EDGES_DEG;
+    if (low..=high).contains(&elbow_flexion_deg) {
         1
     } else {
         2
@@ -248,7 +261,7 @@ pub fn wrist_band(wrist_flexion_deg: f64) -> u8 {
     let w = wrist_flexion_deg.abs();
     if w == 0.0 {
         1
-    } else if w < 15.0 {
+    } else if w < WRIST_EDGES_DEG[1] {
         2
     } else {
         3
@@ -270,11 +283,12 @@ pub fn wrist_twist_score(twist: WristTwist) -> u8 {
 
 /// Step 9 before adjustments: extension (< 0°) → 4; 0 to < 10° → 1; 10 to < 20° → 2; ≥ 20° → 3.
 pub fn neck_band(neck_flexion_deg: f64) -> u8 {
-    if neck_flexion_deg < 0.0 {
+    let [ext, low, high] = NECK_EDGES_DEG;
+    if neck_flexion_deg < ext {
         4
-    } else if neck_flexion_deg < 10.0 {
+    } else if neck_flexion_deg < low {
         1
-    } else if neck_flexion_deg < 20.0 {
+    } else if neck_flexion_deg < high {
         2
     } else {
         3
@@ -289,11 +303,12 @@ pub fn neck_score(neck_flexion_deg: f64, twisted: bool, side_bending: bool) -> u
 /// Step 10 before adjustments. Seated and well supported → 1; otherwise from flexion: ≤ 0° (erect,
 /// or extension scored as erect) → 1; 0 < t < 20° → 2; 20 to < 60° → 3; ≥ 60° → 4.
 pub fn trunk_band(trunk_flexion_deg: f64, seated_well_supported: bool) -> u8 {
-    if seated_well_supported || trunk_flexion_deg <= 0.0 {
+    let [erect, low, high] = TRUNK_EDGES_DEG;
+    if seated_well_supported || trunk_flexion_deg <= erect {
         1
-    } else if trunk_flexion_deg < 20.0 {
+    } else if trunk_flexion_deg < low {
         2
-    } else if trunk_flexion_deg < 60.0 {
+    } else if trunk_flexion_deg < high {
         3
     } else {
         4

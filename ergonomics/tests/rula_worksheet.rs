@@ -475,3 +475,40 @@ fn malformed_worksheets_name_the_entry_and_the_field() {
     let (i, f, _) = entry_error("[3]");
     assert_eq!((i, f.as_str()), (0, "(entry)"));
 }
+
+/// The score edges the review draws over each angle's distribution are exactly where the
+/// worksheet's bands change: just below and just above each edge score differently.
+#[test]
+fn score_edges_are_where_the_bands_change() {
+    use ergocell_ergonomics::assess::{score_edges_deg, Thresholds};
+    use ergocell_ergonomics::rula::{
+        lower_arm_band, neck_band, trunk_band, upper_arm_band, wrist_band,
+    };
+    let th = Thresholds::default();
+    let eps = 1e-6;
+    let check = |name: &str, band: &dyn Fn(f64) -> u8| {
+        let edges = score_edges_deg(name, &th).unwrap();
+        assert!(!edges.is_empty(), "{name}");
+        for e in edges {
+            assert_ne!(band(e - eps), band(e + eps), "{name} at {e}°");
+        }
+    };
+    check("trunk_flexion", &|d| trunk_band(d, false));
+    check("neck_flexion", &neck_band);
+    check("left_upper_arm_flexion", &upper_arm_band);
+    check("right_elbow_flexion", &lower_arm_band);
+    check("left_wrist_flexion", &wrist_band);
+    // The adjustments: ± the thresholds.
+    assert_eq!(
+        score_edges_deg("neck_twist", &th).unwrap(),
+        vec![
+            -th.neck_twist_rad.to_degrees(),
+            th.neck_twist_rad.to_degrees()
+        ]
+    );
+    assert_eq!(
+        score_edges_deg("right_upper_arm_abduction", &th).unwrap(),
+        vec![th.abduction_rad.to_degrees()]
+    );
+    assert!(score_edges_deg("knee_flexion", &th).is_none());
+}

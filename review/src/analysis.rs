@@ -90,6 +90,10 @@ pub struct Frames {
     pub grand_right: Vec<Option<u8>>,
     pub action_left: Vec<Option<u8>>,
     pub action_right: Vec<Option<u8>>,
+    /// The side's score rests on low-confidence landmarks or held inputs (never scored lower for
+    /// it); false when not scored.
+    pub uncertain_left: Vec<bool>,
+    pub uncertain_right: Vec<bool>,
     /// The frame's headline action level (worse side), 0 when neither side was scored.
     pub action_level: Vec<u8>,
 }
@@ -145,6 +149,9 @@ pub struct AngleStats {
     pub mean: Option<f64>,
     pub p95: Option<f64>,
     pub samples: usize,
+    /// Where this angle's RULA contribution changes (band edges and adjustment thresholds, degrees),
+    /// to draw over the distribution; empty when unknown.
+    pub score_edges_deg: Vec<f64>,
 }
 
 /// MediaPipe's `POSE_CONNECTIONS`: the lines drawn between BlazePose landmarks.
@@ -392,6 +399,9 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             .action_right
             .push(side(e.map(|e| &e.right), |s| s.action_level));
         frames.action_level.push(e.map_or(0, |e| e.action_level));
+        let uncertain = |s: Option<&RulaSide>| s.and_then(scored).is_some_and(|s| s.uncertain);
+        frames.uncertain_left.push(uncertain(e.map(|e| &e.left)));
+        frames.uncertain_right.push(uncertain(e.map(|e| &e.right)));
         if m.angle_names.len() == m.angle_rad.len() {
             // Kept in the recorder's order, whether or not an angle was observed in this frame.
             for (name, &v) in m.angle_names.iter().zip(&m.angle_rad) {
@@ -567,6 +577,11 @@ fn angle_stats(name: &str, samples: &[f64]) -> AngleStats {
         mean: (n > 0).then(|| sorted.iter().sum::<f64>() / n as f64),
         p95: percentile(&sorted, 0.95),
         samples: n,
+        score_edges_deg: ergocell_ergonomics::assess::score_edges_deg(
+            name,
+            &ergocell_ergonomics::assess::Thresholds::default(),
+        )
+        .unwrap_or_default(),
     }
 }
 
@@ -676,6 +691,11 @@ mod tests {
         assert_eq!(a.counts.len() + 1, a.bin_edges.len());
         assert_eq!(a.counts[0], 10); // -5.0 .. -0.5
         assert_eq!(a.p95, Some(42.0)); // the 95th of 100 sorted values
+        assert_eq!(
+            a.score_edges_deg,
+            vec![60.0, 100.0],
+            "RULA's lower-arm band"
+        );
         assert!((a.mean.unwrap() - 19.75).abs() < 1e-12);
     }
 
