@@ -8,11 +8,14 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use std::collections::BTreeMap;
-use std::io::{BufRead, BufReader, Read, Write};
+use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::sync::OnceLock;
+
+mod common;
+use common::ReviewServer;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -221,44 +224,14 @@ fn a_foreign_mcap_and_a_non_mcap_file_are_refused_with_what_could_be_read() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("not a readable MCAP file"));
 }
 
-/// A running `ergocell review`, killed on drop.
-struct Server {
-    child: Child,
-    port: u16,
-}
-
-impl Drop for Server {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
-fn serve(rec: &Path) -> Server {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(root())
-        .args(["review", rec.to_str().unwrap(), "--port", "0"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
-    let url = loop {
-        let line = lines
-            .next()
-            .expect("server exited before printing its URL")
-            .unwrap();
-        if let Some(u) = line.strip_prefix("review: ") {
-            break u.to_owned();
-        }
-    };
-    assert!(url.starts_with("http://127.0.0.1:"), "{url}");
-    let port = url
-        .trim_start_matches("http://127.0.0.1:")
-        .trim_end_matches('/')
-        .parse()
-        .unwrap();
-    Server { child, port }
+fn serve(rec: &Path) -> ReviewServer {
+    let server = ReviewServer::start(&root(), rec, &[]);
+    assert!(
+        server.url.starts_with("http://127.0.0.1:"),
+        "{}",
+        server.url
+    );
+    server
 }
 
 /// A raw HTTP/1.1 request (the target is sent verbatim, so `..` reaches the server unnormalised):
@@ -468,31 +441,9 @@ fn a_recording_of_two_operators_is_reviewed_one_session_at_a_time() {
 
 #[test]
 fn the_allowed_host_is_the_bound_address_and_two_hosts_are_refused() {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(root())
-        .args([
-            "review",
-            demo_recording().to_str().unwrap(),
-            "--port",
-            "0",
-            "--bind",
-            "127.0.0.2",
-        ])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
-    let url = loop {
-        let line = lines.next().expect("server exited").unwrap();
-        if let Some(u) = line.strip_prefix("review: ") {
-            break u.to_owned();
-        }
-    };
-    let server = Server { child, port: 0 };
-    let authority = url.trim_start_matches("http://").trim_end_matches('/');
-    assert!(authority.starts_with("127.0.0.2:"), "{url}");
-    let port: u16 = authority.rsplit(':').next().unwrap().parse().unwrap();
+    let server = ReviewServer::start(&root(), demo_recording(), &["--bind", "127.0.0.2"]);
+    let (authority, port) = (server.authority.clone(), server.port);
+    assert!(authority.starts_with("127.0.0.2:"), "{}", server.url);
     let get2 = |host_lines: &str| {
         let mut s = TcpStream::connect(("127.0.0.2", port)).unwrap();
         write!(s, "GET / HTTP/1.1\r\n{host_lines}Connection: close\r\n\r\n").unwrap();
@@ -507,6 +458,5 @@ fn the_allowed_host_is_the_bound_address_and_two_hosts_are_refused() {
         get2(&format!("Host: {authority}\r\nHost: evil.example\r\n")),
         "400"
     );
-    drop(lines);
     drop(server);
 }

@@ -12,9 +12,11 @@
 // Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
+
+mod common;
+use common::ReviewServer;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -105,27 +107,14 @@ fn review_page_plays_pauses_and_jumps_in_headless_chromium() {
     }
     let rec = tmp("browser-demo.mcap");
     demo(&rec);
-    let mut server = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(root())
-        .args(["review", rec.to_str().unwrap(), "--port", "0"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut lines = BufReader::new(server.stdout.take().unwrap()).lines();
-    let url = loop {
-        let line = lines.next().expect("server exited early").unwrap();
-        if let Some(u) = line.strip_prefix("review: ") {
-            break u.to_owned();
-        }
-    };
+    let server = ReviewServer::start(&root(), &rec, &[]);
+    let url = server.url.clone();
     let shot = tmp("review.png");
     let _ = std::fs::remove_file(&shot);
     let result = std::panic::catch_unwind(|| {
         node("web/e2e/review.e2e.mjs", &[&url, shot.to_str().unwrap()]);
     });
-    let _ = server.kill();
-    let _ = server.wait();
+    drop(server);
     if let Err(e) = result {
         std::panic::resume_unwind(e);
     }

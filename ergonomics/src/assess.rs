@@ -28,6 +28,7 @@ use serde::{Deserialize, Serialize};
 use crate::angles::{
     arm_landmarks, body_angles, BodyAngles, LegsObservation, SideAngles, UpVector,
 };
+use crate::height::median;
 use crate::rula::{
     neck_band, score_worksheet, trunk_band, upper_arm_band, RulaInput, RulaScores, ScoringNote,
     WristTwist,
@@ -249,19 +250,6 @@ impl AngleSmoother {
 }
 
 /// Median of a non-empty slice (mean of the middle two for an even count); `None` when empty.
-fn median(v: &mut [f64]) -> Option<f64> {
-    if v.is_empty() {
-        return None;
-    }
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    Some(if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    })
-}
-
 /// Muscle use from the time series: static (out of the relaxed posture, without returning to it, for
 /// longer than the hold time) or repeated (at least `min_repetitions` excursions out of the relaxed
 /// posture within the window).

@@ -298,7 +298,8 @@ fn mean_of(values: &[f64]) -> Option<f64> {
     (!values.is_empty()).then(|| values.iter().sum::<f64>() / values.len() as f64)
 }
 
-fn median(v: &mut [f64]) -> Option<f64> {
+/// The median (mean of the middle two for an even count); sorts `v`.
+pub(crate) fn median(v: &mut [f64]) -> Option<f64> {
     if v.is_empty() {
         return None;
     }

@@ -36,9 +36,11 @@ macro_rules! say {
     }};
 }
 
+/// The recordings to review (both commands).
 #[derive(Debug, clap::Args)]
-pub struct Args {
-    /// The session recording (`.mcap`, from `ergocell demo` or `ergocell run --record`).
+pub struct Input {
+    /// The session recording (`.mcap`, from `ergocell demo`, `ergocell run --record` or
+    /// `ergocell sim adaptation --record-height`).
     pub recording: PathBuf,
     /// A second recording shown beside the first (e.g. before vs after the robot's adaptation).
     #[arg(long)]
@@ -50,6 +52,12 @@ pub struct Args {
     /// Which operator session of the `--compare` recording (1-based).
     #[arg(long, default_value_t = 1)]
     pub compare_session: usize,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    #[command(flatten)]
+    pub input: Input,
     /// Address to listen on. Loopback by default; any other address serves the recording to the
     /// network (and then accepts any Host header).
     #[arg(long, default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
@@ -61,18 +69,8 @@ pub struct Args {
 
 #[derive(Debug, clap::Args)]
 pub struct ReportArgs {
-    /// The session recording (`.mcap`).
-    pub recording: PathBuf,
-    /// A second recording shown beside the first (e.g. before vs after the robot's adaptation).
-    #[arg(long)]
-    pub compare: Option<PathBuf>,
-    /// Which operator session of the recording (1-based): `ergocell run --record` writes one after
-    /// another into one file.
-    #[arg(long, default_value_t = 1)]
-    pub session: usize,
-    /// Which operator session of the `--compare` recording (1-based).
-    #[arg(long, default_value_t = 1)]
-    pub compare_session: usize,
+    #[command(flatten)]
+    pub input: Input,
     /// The HTML file to write.
     #[arg(long, default_value = "report.html")]
     pub out: PathBuf,
@@ -137,15 +135,10 @@ fn describe_part(r: &ergocell_review::Recording) -> String {
     format!("{} frames, {class}, {secs:.0} s", r.poses.len())
 }
 
-fn load_all(
-    recording: &Path,
-    session: usize,
-    compare: Option<&Path>,
-    compare_session: usize,
-) -> anyhow::Result<ReviewData> {
-    let mut sessions = vec![load(recording, session)?];
-    if let Some(other) = compare {
-        sessions.push(load(other, compare_session)?);
+fn load_all(input: &Input) -> anyhow::Result<ReviewData> {
+    let mut sessions = vec![load(&input.recording, input.session)?];
+    if let Some(other) = &input.compare {
+        sessions.push(load(other, input.compare_session)?);
     }
     Ok(ReviewData::new(sessions))
 }
@@ -176,12 +169,7 @@ fn summary(data: &ReviewData) -> String {
 }
 
 pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
-    let data = load_all(
-        &args.recording,
-        args.session,
-        args.compare.as_deref(),
-        args.compare_session,
-    )?;
+    let data = load_all(&args.input)?;
     let html = page::report_page(&data).context("serialising the review")?;
     std::fs::write(&args.out, html.as_bytes())
         .with_context(|| format!("cannot write {}", args.out.display()))?;
@@ -203,12 +191,7 @@ struct Served {
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let data = load_all(
-        &args.recording,
-        args.session,
-        args.compare.as_deref(),
-        args.compare_session,
-    )?;
+    let data = load_all(&args.input)?;
     let json = serde_json::to_string(&data).context("serialising the review")?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)

@@ -1,0 +1,61 @@
+//! Shared by the review tests: a running `ergocell review`, killed on drop.
+
+#![allow(clippy::unwrap_used, clippy::expect_used, dead_code)]
+
+use std::io::{BufRead, BufReader};
+use std::path::Path;
+use std::process::{Child, Command, Stdio};
+
+/// A running `ergocell review` and the URL it printed.
+pub struct ReviewServer {
+    child: Child,
+    pub url: String,
+    /// `host:port` of the URL.
+    pub authority: String,
+    pub port: u16,
+}
+
+impl ReviewServer {
+    /// Starts `ergocell review <rec> --port 0 <extra>` in `root` and waits for its URL.
+    pub fn start(root: &Path, rec: &Path, extra: &[&str]) -> Self {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(root)
+            .arg("review")
+            .arg(rec)
+            .args(["--port", "0"])
+            .args(extra)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        // The reader is dropped after the URL line: the server must survive a closed stdout.
+        let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+        let url = loop {
+            let line = lines
+                .next()
+                .expect("server exited before printing its URL")
+                .unwrap();
+            if let Some(u) = line.strip_prefix("review: ") {
+                break u.to_owned();
+            }
+        };
+        let authority = url
+            .trim_start_matches("http://")
+            .trim_end_matches('/')
+            .to_owned();
+        let port = authority.rsplit(':').next().unwrap().parse().unwrap();
+        Self {
+            child,
+            url,
+            authority,
+            port,
+        }
+    }
+}
+
+impl Drop for ReviewServer {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
