@@ -3,6 +3,7 @@
 // reaching forward with one arm every few seconds; the robot's TCP moves to a handover point.
 //
 //   node dev/sample-data.mjs out.json [--frames N] [--compare] [--problems] [--no-robot] [--null-strain] [--empty]
+//     [--legacy]  (without the fields added later: frames.uncertain_left/right, angles[].score_edges_deg)
 import { writeFileSync } from 'node:fs';
 
 const args = process.argv.slice(2);
@@ -48,12 +49,15 @@ function band(v, edges) {
   return s;
 }
 
-function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, nullStrain = false, problems = [] } = {}) {
+// Where each sample angle's RULA score changes (ergonomics::assess::score_edges_deg).
+const SCORE_EDGES = { 'trunk flexion': [0, 20, 60], 'neck flexion': [0, 10, 20], 'upper arm flexion': [-20, 20, 45, 90], 'elbow flexion': [60, 100] };
+
+function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, nullStrain = false, problems = [], legacy = false } = {}) {
   const rand = rng(seed);
   const noise = () => (rand() - 0.5) * 0.006;
   const dt = 0.1;
   const t = [], positions = [], strain = [];
-  const gl = [], gr = [], al = [], ar = [], act = [];
+  const gl = [], gr = [], al = [], ar = [], act = [], ul = [], ur = [];
   const angleSamples = { 'trunk flexion|': [], 'neck flexion|': [], 'upper arm flexion|left': [], 'upper arm flexion|right': [], 'elbow flexion|left': [], 'elbow flexion|right': [] };
   const regionScores = { 'upper arm|left': [], 'upper arm|right': [], 'lower arm|left': [], 'lower arm|right': [], 'wrist|left': [], 'wrist|right': [], 'neck|': [], 'trunk|': [], 'legs|': [] };
   const maxScore = { 'upper arm': 6, 'lower arm': 3, wrist: 4, neck: 6, trunk: 6, legs: 2 };
@@ -131,6 +135,10 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
     if (scored) {
       const gL = grand(uaL, laL), gR = grand(uaR, laR);
       gl.push(gL); gr.push(gR); al.push(action(gL)); ar.push(action(gR)); act.push(Math.max(action(gL), action(gR)));
+      // Uncertain: the left side around the hand's drop-outs (held inputs), the right side while
+      // tracking degrades before the 'held' state at 18 s.
+      ul.push(i % 47 >= 12 && i % 47 <= 17);
+      ur.push(i >= 165 && i < 180);
       const st = new Array(33).fill(null);
       const norm = (s, m) => (s - 1) / (m - 1);
       st[11] = norm(uaL, 6); st[12] = norm(uaR, 6);
@@ -152,7 +160,7 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
       regionScores['wrist|left'].push(wrL); regionScores['wrist|right'].push(wrR);
       regionScores['neck|'].push(nk); regionScores['trunk|'].push(tr); regionScores['legs|'].push(lg);
     } else {
-      gl.push(null); gr.push(null); al.push(null); ar.push(null); act.push(0);
+      gl.push(null); gr.push(null); al.push(null); ar.push(null); act.push(0); ul.push(false); ur.push(false);
       strain.push(null);
     }
   }
@@ -178,6 +186,7 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
       mean: v.length ? r2(v.reduce((a, b) => a + b, 0) / v.length) : null,
       p95: v.length ? r2(sorted[Math.min(sorted.length - 1, Math.floor(0.95 * sorted.length))]) : null,
       samples: v.length,
+      ...(legacy ? {} : { score_edges_deg: SCORE_EDGES[name] || [] }),
     };
   });
 
@@ -228,7 +237,7 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
     landmarks: LANDMARKS,
     bones: BONES,
     up: [0, 0, 1],
-    frames: { t, positions, strain, grand_left: gl, grand_right: gr, action_left: al, action_right: ar, action_level: act },
+    frames: { t, positions, strain, grand_left: gl, grand_right: gr, action_left: al, action_right: ar, ...(legacy ? {} : { uncertain_left: ul, uncertain_right: ur }), action_level: act },
     robot: { tcp, handover_point: robot ? handover : null },
     warnings,
     regions,
@@ -238,7 +247,7 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
 
 const frames = opt('--frames', 300);
 const problems = flag('--problems') ? ['truncated after 29.4 s: the last chunk ends mid-record (offset 1048321 of 1048576 bytes)'] : [];
-const common = { frames, robot: !flag('--no-robot'), nullStrain: flag('--null-strain') };
+const common = { frames, robot: !flag('--no-robot'), nullStrain: flag('--null-strain'), legacy: flag('--legacy') };
 let data;
 if (flag('--empty')) data = { version: 1, sessions: [] };
 else if (flag('--compare'))

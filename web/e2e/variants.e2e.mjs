@@ -20,7 +20,42 @@ const variants = [
   ['no-robot', ['--no-robot']],
   ['compare-problems', ['--compare', '--problems']],
   ['no-sessions', ['--empty']],
+  ['legacy', ['--legacy']],
 ];
+
+// The fields added to contract version 1 later: each side's 'uncertain' flag per frame and the
+// angles' RULA score edges. Present in the sample (frames 165–179 uncertain on the right);
+// older data without them must show neither.
+async function newFields(b, name) {
+  const { page } = b;
+  const legacy = name === 'legacy';
+  await page.evaluate(() => window.ergocellReview.seek(17.0));
+  await page.waitForTimeout(100);
+  const r = await page.evaluate(() => ({
+    unc: [...document.querySelectorAll('#readout .gs.unc')].map((e) => `${e.textContent} (${e.title})`),
+    readout: document.querySelector('#readout').textContent,
+    legend: document.querySelector('#timeline .u-unc')?.textContent ?? null,
+    key: document.querySelector('#angles .angle-legend')?.textContent ?? null,
+    titles: [...document.querySelectorAll('#angles .hist')].map((e) => e.title).filter(Boolean),
+    ramp: document.querySelector('.legend .ramp-note')?.textContent ?? '',
+  }));
+  if (!/per region/i.test(r.ramp)) fail(`${name}: the strain legend does not say the scale is per region ("${r.ramp}")`);
+  if (legacy) {
+    if (r.unc.length || r.legend || r.key || r.titles.length) fail(`${name}: data without the new fields shows them: ${JSON.stringify(r)}`);
+    pass(`${name}: no uncertain marks or score edges without the fields (readout "${r.readout}")`);
+    return;
+  }
+  if (r.unc.length !== 1 || !/^R \d\?/.test(r.unc[0])) fail(`${name}: at 17.0 s the readout should mark the right score uncertain, has ${JSON.stringify(r.unc)} ("${r.readout}")`);
+  if (!r.legend || !/uncertain \(low-confidence landmarks\)R$/.test(r.legend)) fail(`${name}: the timeline legend's uncertain entry reads ${JSON.stringify(r.legend)} at 17.0 s`);
+  if (!r.key || !/dotted: where the RULA score changes/.test(r.key)) fail(`${name}: no score-edge legend under "Joint angles" (${r.key})`);
+  if (r.titles.length < 6 || !r.titles.some((t) => /90°/.test(t))) fail(`${name}: histograms without score edges: ${JSON.stringify(r.titles)}`);
+  // And a frame where neither side is uncertain.
+  await page.evaluate(() => window.ergocellReview.seek(5.0));
+  await page.waitForTimeout(100);
+  const clear = await page.evaluate(() => document.querySelectorAll('#readout .gs.unc').length);
+  if (clear) fail(`${name}: at 5.0 s no side is uncertain, the readout marks ${clear}`);
+  pass(`${name}: readout "${r.unc[0]}", timeline legend "${r.legend}", ${r.titles.length} histograms with score edges ("${r.titles[0]}")`);
+}
 
 async function interactions(b) {
   const { page } = b;
@@ -96,6 +131,7 @@ await main(async (b) => {
         await b.page.waitForTimeout(200);
         await b.page.keyboard.press('Space');
       }
+      if (name === 'sample' || name === 'legacy') await newFields(b, name);
       if (name === 'sample') await interactions(b);
       if (name.startsWith('compare')) {
         await b.page.click('#session-select button[data-i="1"]');

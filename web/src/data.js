@@ -23,6 +23,20 @@ export async function loadData() {
 const arr = (a) => (Array.isArray(a) ? a : []);
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 
+/** Per-frame flags: true only where the data says `true` (missing or shorter lists read as false). */
+function flags(a, n) {
+  const src = arr(a);
+  const out = new Uint8Array(n);
+  for (let i = 0; i < n; i++) out[i] = src[i] === true ? 1 : 0;
+  return out;
+}
+
+/** An angle's score edges: finite numbers, ascending, no duplicates (missing in older data: none). */
+function scoreEdges(a) {
+  const v = arr(a).map(num).filter((x) => x !== null).sort((x, y) => x - y);
+  return v.filter((x, i) => i === 0 || x !== v[i - 1]);
+}
+
 function column(a, n) {
   const src = arr(a);
   const out = new Array(n);
@@ -118,11 +132,17 @@ export function normalizeSession(s, index) {
     actionLeft: column(frames.action_left, n),
     actionRight: column(frames.action_right, n),
     actionLevel: column(frames.action_level, n),
+    // The side's score rests on low-confidence landmarks or held inputs (absent in older data).
+    uncertainLeft: flags(frames.uncertain_left, n),
+    uncertainRight: flags(frames.uncertain_right, n),
+    hasUncertain: Array.isArray(frames.uncertain_left) || Array.isArray(frames.uncertain_right),
     tcp,
     handover,
     warnings: arr(s.warnings).filter((w) => w && num(w.t) !== null).sort((a, b) => a.t - b.t),
     regions: arr(s.regions).filter((r) => r && typeof r === 'object'),
-    angles: arr(s.angles).filter((a) => a && typeof a === 'object'),
+    angles: arr(s.angles)
+      .filter((a) => a && typeof a === 'object')
+      .map((a) => ({ ...a, score_edges_deg: scoreEdges(a.score_edges_deg) })),
   };
 }
 

@@ -61,6 +61,7 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
         <div class="legend-title">Joint strain (RULA band)</div>
         <div class="ramp" style="background:${gradientCss()}"></div>
         <div class="ramp-labels"><span>0 · lowest</span><span>highest · 1</span></div>
+        <div class="ramp-note">Per region: each region's lowest score = deep blue, its highest = deep red; 2-level regions such as legs jump straight to red.</div>
         <div class="legend-keys"><span><i class="dot grey"></i>not scored</span><span><i class="dot tcp"></i>robot TCP</span><span><i class="dot handover"></i>handover point</span></div>
       </div>
       <div class="overlay bottom-left readout" id="readout"></div>
@@ -82,7 +83,7 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
     <section class="card" id="states"></section>
   </aside>
   <section class="card timeline-card">
-    <h2>Timeline <span class="hint">RULA grand score per side and action level · dashed flags are warnings (hover) · click to jump</span></h2>
+    <h2>Timeline <span class="hint">RULA grand score per side and action level · dashed flags are warnings (hover)${sessions.some((s) => s.hasUncertain) ? " · hatched band at the bottom: a side's score is uncertain" : ''} · click to jump</span></h2>
     <div id="timeline"></div>
   </section>
   <section class="card" id="regions"></section>
@@ -101,7 +102,12 @@ function readoutHtml(s, f) {
   let state = null;
   for (const st of s.facts.states) if (Number(st.t) <= t + 1e-9) state = st.state;
   const al = a == null ? '' : `<span class="al al${a}">action level ${a}${ACTION_TEXT[a] ? ` · ${ACTION_TEXT[a]}` : ''}</span>`;
-  return `<span class="gs"><i style="background:${SERIES_COLORS.left}"></i>L ${g(s.grandLeft[f])}</span><span class="gs"><i style="background:${SERIES_COLORS.right}"></i>R ${g(s.grandRight[f])}</span>${al}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}`;
+  const side = (name, letter, color, v, unc) => {
+    const q = unc && v != null;
+    const tip = q ? ` title="${name} score ${v} rests on low-confidence landmarks or held inputs (uncertain)"` : '';
+    return `<span class="gs${q ? ' unc' : ''}"${tip}><i style="background:${color}"></i>${letter} ${g(v)}${q ? '<span class="q">?</span>' : ''}</span>`;
+  };
+  return `${side('Left', 'L', SERIES_COLORS.left, s.grandLeft[f], s.uncertainLeft[f])}${side('Right', 'R', SERIES_COLORS.right, s.grandRight[f], s.uncertainRight[f])}${al}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}`;
 }
 
 function start(app, raw) {

@@ -10,6 +10,7 @@ export function esc(s) {
   return String(s ?? '').replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 }
 
+const fmtDeg = (v) => String(+(+v).toFixed(1));
 const fmt = (v, d = 1) => (v == null || !Number.isFinite(+v) ? '–' : (+v).toFixed(d));
 const titleCase = (s) => String(s || '').replace(/^./, (c) => c.toUpperCase());
 
@@ -202,15 +203,46 @@ function commonBins(a, b) {
   return { edges, counts: [place(ea, a.counts), place(eb, b.counts)] };
 }
 
-function histogramPlot(container, edges, hists) {
+// RULA score edges: a faint orange-red dotted line each (distinct from the mean and p95 lines).
+const EDGE_COLOR = 'rgba(255,128,80,0.85)';
+/** Edges within this many degrees of the data's range widen the plot so they show. */
+const EDGE_REACH_DEG = 30;
+
+/** The x range: the bins, widened to the score edges within EDGE_REACH_DEG of them (plus a margin). */
+function plotRange(edges, scoreEdges) {
+  let lo = edges[0], hi = edges[edges.length - 1];
+  const near = scoreEdges.filter((e) => e >= lo - EDGE_REACH_DEG && e <= hi + EDGE_REACH_DEG);
+  const pad = 5;
+  for (const e of near) {
+    if (e - pad < lo) lo = e - pad;
+    if (e + pad > hi) hi = e + pad;
+  }
+  return [lo, hi];
+}
+
+function histogramPlot(container, edges, hists, scoreEdges = []) {
   // hists: [{counts, mean, p95, color}], all on `edges`; bars show % of that session's samples.
+  let [x0, x1] = plotRange(edges, scoreEdges);
+  // Widened for score edges: empty bins of the same width out to the new range, so that the bars
+  // keep their width (uPlot sizes bars by the spacing of the x values).
+  let k0 = 0;
+  const step = uniformStep(edges);
+  if (step !== null && (x0 < edges[0] || x1 > edges[edges.length - 1])) {
+    k0 = Math.ceil((edges[0] - x0) / step - 1e-9);
+    const k1 = Math.ceil((x1 - edges[edges.length - 1]) / step - 1e-9);
+    const lo = edges[0] - k0 * step;
+    edges = Array.from({ length: edges.length + k0 + k1 }, (_, i) => lo + i * step);
+    [x0, x1] = [edges[0], edges[edges.length - 1]];
+  }
   const centres = edges.slice(0, -1).map((e, i) => (e + edges[i + 1]) / 2);
   const series = [{ label: 'angle', value: (u, v) => (v == null ? '–' : `${v.toFixed(0)}°`) }];
   const data = [centres];
   const overlay = hists.length > 1;
+  const shown = scoreEdges.filter((e) => e >= x0 && e <= x1);
+  if (shown.length) container.title = `RULA score changes at ${shown.map((e) => `${fmtDeg(e)}°`).join(', ')} (dotted lines)`;
   hists.forEach((h, i) => {
     const total = h.counts.reduce((a, c) => a + (Number(c) || 0), 0) || 1;
-    data.push(centres.map((_, j) => ((Number(h.counts[j]) || 0) / total) * 100));
+    data.push(centres.map((_, j) => (j < k0 || j - k0 >= h.counts.length ? null : ((Number(h.counts[j - k0]) || 0) / total) * 100)));
     series.push({
       label: overlay ? 'AB'[i] : '% of samples',
       stroke: h.color,
@@ -227,13 +259,13 @@ function histogramPlot(container, edges, hists) {
     {
       width,
       height: 150,
-      padding: [8, 16, 0, 0],
+      padding: [shown.length ? 14 : 8, 16, 0, 0],
       legend: { show: false },
       cursor: { drag: { x: false, y: false, setScale: false }, points: { show: false }, y: false },
-      scales: { x: { time: false, range: [edges[0], edges[edges.length - 1]] }, y: { range: (u, min, max) => [0, Math.max(5, Math.ceil(max / 5) * 5)] } },
+      scales: { x: { time: false, range: [x0, x1] }, y: { range: (u, min, max) => [0, Math.max(5, Math.ceil(max / 5) * 5)] } },
       axes: [
         { stroke: AXIS, grid: { show: false }, ticks: { stroke: GRID }, values: (u, v) => v.map((x) => `${x}°`), font: '10px system-ui, sans-serif', size: 28 },
-        { stroke: AXIS, grid: { stroke: GRID }, ticks: { stroke: GRID }, values: (u, v) => v.map((x) => `${x}%`), font: '10px system-ui, sans-serif', size: 36 },
+        { stroke: AXIS, grid: { stroke: GRID }, ticks: { stroke: GRID }, values: (u, v) => v.map((x) => `${x}%`), font: '10px system-ui, sans-serif', size: 40 },
       ],
       series,
       hooks: {
@@ -241,7 +273,30 @@ function histogramPlot(container, edges, hists) {
           (u) => {
             const ctx = u.ctx;
             const { top, height } = u.bbox;
+            const px = uPlot.pxRatio;
             ctx.save();
+            // Score edges first (under the mean/p95 lines), labelled in the top margin.
+            ctx.strokeStyle = EDGE_COLOR;
+            ctx.fillStyle = EDGE_COLOR;
+            ctx.lineWidth = 1.2 * px;
+            ctx.setLineDash([1.5 * px, 2.5 * px]);
+            ctx.font = `${9 * px}px system-ui, sans-serif`;
+            ctx.textAlign = 'center';
+            ctx.textBaseline = 'bottom';
+            let labelEnd = -Infinity;
+            for (const e of shown) {
+              const x = Math.round(u.valToPos(e, 'x', true)) + 0.5;
+              ctx.beginPath();
+              ctx.moveTo(x, top);
+              ctx.lineTo(x, top + height);
+              ctx.stroke();
+              // A label that would overlap the previous one is left out (the plot's tooltip lists all).
+              const label = `${fmtDeg(e)}°`;
+              const w = ctx.measureText(label).width;
+              if (x - w / 2 < labelEnd + 3 * px) continue;
+              ctx.fillText(label, x, top - 1 * px);
+              labelEnd = x + w / 2;
+            }
             for (const h of hists) {
               for (const [v, dash] of [[h.mean, []], [h.p95, [4, 3]]]) {
                 if (v == null || !Number.isFinite(v)) continue;
@@ -269,6 +324,19 @@ function histogramPlot(container, edges, hists) {
   }).observe(container);
 }
 
+// Sign conventions, as ergonomics/src/angles.rs defines them (twists and wrist deviation: not stated
+// there in anatomical terms, so no note).
+const SIGN_NOTES = {
+  'trunk flexion': 'forward +, extension −',
+  'trunk side bend': 'towards the right +, left −',
+  'neck flexion': 'forward +, extension −',
+  'neck side bend': 'unsigned: either side is +',
+  'upper arm flexion': 'flexion +, extension −',
+  'upper arm abduction': 'outwards +, across the chest −',
+  'elbow flexion': '0° = straight arm',
+  'wrist flexion': 'towards the palm +, extension −',
+};
+
 export function renderAngles(el, sessions) {
   const keys = [];
   const maps = sessions.map((s) => {
@@ -280,7 +348,9 @@ export function renderAngles(el, sessions) {
     }
     return m;
   });
-  el.innerHTML = `<h2>Joint angles <span class="hint">distribution over the scored frames · solid line mean, dashed line 95th percentile</span></h2><div class="angle-grid"></div>`;
+  const anyEdges = sessions.some((s) => s.angles.some((a) => a.score_edges_deg.length));
+  const edgeKey = anyEdges ? '<div class="angle-legend"><i class="edge-swatch"></i>dotted: where the RULA score changes</div>' : '';
+  el.innerHTML = `<h2>Joint angles <span class="hint">distribution over the scored frames · solid line mean, dashed line 95th percentile</span></h2>${edgeKey}<div class="angle-grid"></div>`;
   const grid = el.querySelector('.angle-grid');
   if (!keys.length) {
     grid.outerHTML = '<div class="empty">No joint angles in this recording.</div>';
@@ -299,7 +369,12 @@ export function renderAngles(el, sessions) {
         return `<div class="stats">${tag}mean <b>${fmt(a.mean)}${unit}</b> · p95 <b>${fmt(a.p95)}${unit}</b> · n ${esc(a.samples ?? '–')}</div>`;
       })
       .join('');
-    card.innerHTML = `<div class="angle-head"><span class="name">${esc(titleCase(`${a0.side ? `${a0.side} ` : ''}${a0.name}`))}</span></div>${stats}<div class="plots"></div>`;
+    // The same angle has the same edges in both sessions; the union, should they ever differ.
+    const scoreEdges = [...new Set(as.flatMap((a) => (a ? a.score_edges_deg : [])))].sort((x, y) => x - y);
+    const sign = SIGN_NOTES[String(a0.name)];
+    // Always a line (empty when there is no note) so that the cards of a row line up.
+    const note = `<div class="sign"${sign ? ' title="sign convention (ergonomics/src/angles.rs)"' : ''}>${sign ? esc(sign) : '&nbsp;'}</div>`;
+    card.innerHTML = `<div class="angle-head"><span class="name">${esc(titleCase(`${a0.side ? `${a0.side} ` : ''}${a0.name}`))}</span></div>${note}${stats}<div class="plots"></div>`;
     grid.appendChild(card);
     const plots = card.querySelector('.plots');
     const valid = as
@@ -314,7 +389,7 @@ export function renderAngles(el, sessions) {
       const div = document.createElement('div');
       div.className = 'hist';
       plots.appendChild(div);
-      histogramPlot(div, edges, hists);
+      histogramPlot(div, edges, hists, scoreEdges);
     };
     // Paired bars when both sessions' bins can share one axis; otherwise one plot each.
     const both = valid.length === 2 ? commonBins(valid[0].a, valid[1].a) : null;

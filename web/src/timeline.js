@@ -17,6 +17,34 @@ function escapeHtml(s) {
   return String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
 }
 
+const UNC_BAND_PX = 9;
+const UNC_EDGE = 'rgba(255,210,122,0.7)';
+let hatchCache = null;
+
+/** A diagonal-hatch fill (light amber stripes) for the uncertain band. */
+function hatch(ctx) {
+  const px = uPlot.pxRatio;
+  if (hatchCache && hatchCache.px === px) return hatchCache.pattern;
+  const n = Math.max(4, Math.round(6 * px));
+  const c = document.createElement('canvas');
+  c.width = n;
+  c.height = n;
+  const g = c.getContext('2d');
+  g.fillStyle = 'rgba(255,210,122,0.12)';
+  g.fillRect(0, 0, n, n);
+  g.strokeStyle = 'rgba(255,210,122,0.65)';
+  g.lineWidth = 1.2 * px;
+  g.beginPath();
+  for (const o of [-n, 0, n]) {
+    g.moveTo(o, n);
+    g.lineTo(o + n, 0);
+  }
+  g.stroke();
+  const pattern = ctx.createPattern(c, 'repeat');
+  hatchCache = { px, pattern };
+  return pattern;
+}
+
 export function createTimeline(container, session, { onSeek, cursorTime, height = 190 }) {
   const s = session;
   if (!s.n) {
@@ -97,6 +125,24 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
               ctx.fillText('no skeleton', (x0 + x1) / 2, top + 14 * uPlot.pxRatio);
             }
           }
+          // Uncertain stretches: a hatched band along the bottom of the plot.
+          if (uncertain.length) {
+            const bh = UNC_BAND_PX * uPlot.pxRatio;
+            ctx.fillStyle = hatch(ctx);
+            ctx.strokeStyle = UNC_EDGE;
+            ctx.lineWidth = 1 * uPlot.pxRatio;
+            for (const [a0, a1] of uncertain) {
+              const x0 = Math.max(left, u.valToPos(a0, 'x', true));
+              const x1 = Math.min(left + width, u.valToPos(a1, 'x', true));
+              if (x1 <= x0) continue;
+              const w = Math.max(1, x1 - x0);
+              ctx.fillRect(x0, top + h - bh, w, bh);
+              ctx.beginPath();
+              ctx.moveTo(x0, top + h - bh + 0.5);
+              ctx.lineTo(x0 + w, top + h - bh + 0.5);
+              ctx.stroke();
+            }
+          }
           for (const w of s.warnings) {
             const x = Math.round(u.valToPos(w.t, 'x', true));
             if (x < left - 1 || x > left + width + 1) continue;
@@ -161,7 +207,56 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
     }
     data.splice(0, 4, ...cols);
   }
+  // Each side's 'uncertain' flag on the same rows (false on the inserted gap rows), and the
+  // stretches where either side is uncertain: a frame's flag holds until the next frame, like the
+  // stepped score lines.
+  const uncL = [], uncR = [];
+  {
+    let i = 0;
+    for (const tv of data[0]) {
+      if (i < t.length && tv === t[i]) {
+        uncL.push(!!s.uncertainLeft[i]);
+        uncR.push(!!s.uncertainRight[i]);
+        i++;
+      } else {
+        uncL.push(false);
+        uncR.push(false);
+      }
+    }
+  }
+  const uncertain = [];
+  for (let j = 0; j < data[0].length; j++) {
+    if (!(uncL[j] || uncR[j])) continue;
+    const a = data[0][j];
+    const b = j + 1 < data[0].length ? data[0][j + 1] : a + (dtMed || 0.1);
+    const last = uncertain[uncertain.length - 1];
+    if (last && Math.abs(last[1] - a) < 1e-9) last[1] = b;
+    else uncertain.push([a, b]);
+  }
+  if (s.hasUncertain) {
+    opts.hooks.setLegend = [
+      (u) => {
+        if (!uncCell) return;
+        const j = u.legend.idx;
+        const sides = j == null ? null : [uncL[j] && 'L', uncR[j] && 'R'].filter(Boolean);
+        uncCell.textContent = sides == null ? '–' : sides.length ? sides.join(' + ') : 'no';
+      },
+    ];
+  }
+  let uncCell = null;
   const u = new uPlot(opts, data, container);
+  if (s.hasUncertain) {
+    // A legend entry for the hatched band; its value names the uncertain side(s) at the cursor.
+    const body = u.root.querySelector('.u-legend tbody');
+    if (body) {
+      const row = document.createElement('tr');
+      row.className = 'u-series u-unc';
+      row.title = "a side's score rests on low-confidence landmarks or held inputs";
+      row.innerHTML = '<th><div class="u-marker"></div><div class="u-label">uncertain (low-confidence landmarks)</div></th><td class="u-value">–</td>';
+      body.appendChild(row);
+      uncCell = row.querySelector('.u-value');
+    }
+  }
 
   // Warning flags with their message on hover (inside the plot overlay, so a click on one also seeks).
   for (const w of s.warnings) {
