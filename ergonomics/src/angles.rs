@@ -324,7 +324,7 @@ const FACE_PAIRS: [(Landmark, Landmark); 5] = [
 ];
 
 /// The head's left-to-right axis (not normalised): the sum of `right − left` over every observed pair
-/// of [`FACE_PAIRS`]. Each pair is parallel to the same axis on a rigid head, so the sum has the
+/// of `FACE_PAIRS`. Each pair is parallel to the same axis on a rigid head, so the sum has the
 /// direction of the ear line, while an error of a few millimetres in one landmark (the ears are
 /// hidden from most cameras) moves it far less than it moves the 15 cm ear line alone. Each pair is
 /// weighted by its own length, i.e. the longer (better conditioned) baselines count more.

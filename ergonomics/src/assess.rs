@@ -393,7 +393,8 @@ pub fn score_edges_deg(angle: &str, thresholds: &Thresholds) -> Option<Vec<f64>>
         "trunk_side_bend" => sym(thresholds.trunk_side_bend_rad),
         "trunk_twist" => sym(thresholds.trunk_twist_rad),
         "neck_flexion" => NECK_EDGES_DEG.to_vec(),
-        "neck_side_bend" => sym(thresholds.neck_side_bend_rad),
+        // Unsigned: either side is positive.
+        "neck_side_bend" => vec![thresholds.neck_side_bend_rad.to_degrees()],
         "neck_twist" => sym(thresholds.neck_twist_rad),
         "upper_arm_flexion" => UPPER_ARM_EDGES_DEG.to_vec(),
         "upper_arm_abduction" => vec![thresholds.abduction_rad.to_degrees()],
