@@ -1,5 +1,6 @@
 //! `ergocell demo` end to end, as the README runs it: a whole session, the locked trajectory's hash in
-//! the output, a readable MCAP with every topic, and no approval written into `trajectories/approvals/`.
+//! the output, the floor pick's posture warning raised and cleared, a readable MCAP with every topic,
+//! and no approval written into `trajectories/approvals/`.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use std::collections::BTreeSet;
@@ -38,12 +39,23 @@ fn demo_runs_a_whole_session_and_records_it() {
         "state held → working",
         "change to c3 refused",
         "session:        session_ended",
+        "floor pick after handover cycle 1",
+        "RULA warning: Trunk bent forward",
+        "RULA warning: Trunk back within limits",
     ] {
         assert!(
             stdout.contains(expected),
             "missing `{expected}` in:\n{stdout}"
         );
     }
+    // The floor pick raises at least one posture warning.
+    let raised: u32 = stdout
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("RULA:"))
+        .and_then(|l| l.split_whitespace().next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no `RULA: N warnings raised` in:\n{stdout}"));
+    assert!(raised >= 1, "no warning raised:\n{stdout}");
     assert_eq!(
         approvals.exists(),
         approvals_before,

@@ -122,13 +122,19 @@ fn simulate(
     setup: &Setup,
     session: usize,
     stature_m: f64,
-    script: SessionScript,
+    script: &SessionScript,
 ) -> Result<Vec<Tick>, SimError> {
     let config = SimConfig {
         noise: setup.noise,
         ..SimConfig::new(session_seed(setup.seed, session))
     };
-    Simulation::new(setup.rig.clone(), Operator::new(stature_m)?, script, config)?.collect()
+    Simulation::new(
+        setup.rig.clone(),
+        Operator::new(stature_m)?,
+        *script,
+        config,
+    )?
+    .collect()
 }
 
 /// The assessor for the ground truth: the true angles of each instant, unsmoothed (the pipeline's
@@ -260,7 +266,7 @@ pub fn table1(
     for (s, &h) in statures_m.iter().enumerate() {
         let mut script = SessionScript::new(handovers.for_class(HeightClass::of(h, &thresholds)));
         script.cycles = cycles;
-        let ticks = simulate(setup, s, h, script)?;
+        let ticks = simulate(setup, s, h, &script)?;
         let mut e_paper = FusionEngine::new(setup.rig.clone(), FusionMethod::Paper)?;
         let mut e_default = FusionEngine::new(setup.rig.clone(), FusionMethod::Default)?;
         for tick in ticks.iter().filter(|t| at_station(t.truth.phase)) {
@@ -423,7 +429,7 @@ fn run_task(
 ) -> Result<TaskRun, SimError> {
     let mut script = SessionScript::new(handover);
     script.cycles = cycles;
-    let ticks = simulate(setup, session, stature_m, script)?;
+    let ticks = simulate(setup, session, stature_m, &script)?;
     let mut pipeline = Pipeline::new(&setup.rig)?;
     let cfg = AssessmentConfig::new(up()?);
     let (mut est, mut truth) = (
@@ -609,7 +615,7 @@ pub fn height(
         script.cycles = 0;
         script.idle_secs = idle_secs;
         script.walk_out_secs = 0.0;
-        let ticks = simulate(setup, i, h, script)?;
+        let ticks = simulate(setup, i, h, &script)?;
         let mut pipeline = Pipeline::new(&setup.rig)?;
         let mut estimator = HeightEstimator::new(cfg);
         for tick in &ticks {
@@ -740,7 +746,7 @@ pub fn rula_agreement(
     for (i, &h) in statures_m.iter().enumerate() {
         let mut script = SessionScript::new(handovers.before_m);
         script.cycles = cycles;
-        let ticks = simulate(setup, i, h, script)?;
+        let ticks = simulate(setup, i, h, &script)?;
         let mut pipeline = Pipeline::new(&setup.rig)?;
         let (mut est, mut truth) = (
             RulaAssessor::new(cfg)?,

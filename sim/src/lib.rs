@@ -62,7 +62,9 @@ pub use body::{ArmPosture, LegPosture, Operator, Posture};
 pub use cameras::{ring_rig, RingRigConfig};
 pub use detector::DetectorNoise;
 pub use reach::{solve_reach, ReachConfig, ReachSolution};
-pub use session::{GroundTruth, Habits, Phase, SessionScript, SimConfig, Simulation, Tick};
+pub use session::{
+    FloorPick, GroundTruth, Habits, Phase, PickStage, SessionScript, SimConfig, Simulation, Tick,
+};
 
 /// Everything that can go wrong in the simulator.
 #[derive(Debug, PartialEq, thiserror::Error)]

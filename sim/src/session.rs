@@ -7,6 +7,11 @@
 //! solved once at construction ([`crate::reach::solve_reach`]) for that cycle's target (the handover
 //! point plus a small seeded variation of where the hand meets the part).
 //!
+//! Optionally ([`SessionScript::floor_pick`], default none) the operator bends down for a dropped part
+//! after a given number of cycles: reach → hold → return to a low target, its posture solved by
+//! the same reach optimisation (the arm alone cannot get that low, so the trunk bends far forward), the
+//! bad-posture episode RULA warnings are for. The robot is not involved.
+//!
 //! The simulator has its own clock: tick `k` is at `k · frame_period_nanos` (10 Hz by default, as in
 //! the seed paper). It never reads wall time.
 
@@ -45,9 +50,66 @@ pub enum Phase {
     Rest {
         cycle: usize,
     },
+    /// Picking a dropped part off the floor ([`SessionScript::floor_pick`]).
+    FloorPick {
+        stage: PickStage,
+    },
     WalkOut,
     /// After the script: nobody in the cell.
     Gone,
+}
+
+/// The stages of a [`Phase::FloorPick`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PickStage {
+    /// Bending down to the part.
+    Reach,
+    /// Holding the bent posture (gripping the part).
+    Hold,
+    /// Standing back up.
+    Return,
+}
+
+/// A floor pick: after `after_cycle` handover cycles the operator bends down to pick up a dropped
+/// part (reach → hold → return to the resting posture), then the next cycle (or the walk out) follows.
+/// The posture is solved by [`crate::reach::solve_reach`] for `target_m`. Durations in seconds.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FloorPick {
+    /// Number of handover cycles done before the pick (0 = right after the idle phase; at most
+    /// [`SessionScript::cycles`]: after the last cycle, before the walk out).
+    pub after_cycle: usize,
+    /// Where the hand grasps the part, same frame as [`SessionScript::handover_m`] (default
+    /// (0.45, −0.20, 0.40): in front of the working hand's foot, 40 cm above the floor, where it lies
+    /// on the parts tray). The simulated legs stay straight while reaching (a stoop, no squat), so
+    /// much lower targets are out of reach: a 1.75 m operator misses one at 0.25 m by 6 cm with the
+    /// trunk at its 90° limit; this one is reached by statures 1.55–1.95 m with the trunk at 73–85°.
+    pub target_m: Point3<f64>,
+    /// Default 1.5 s.
+    pub reach_secs: f64,
+    /// Default 4.0 s: twice the warnings' default dwell time (2 s,
+    /// `ergocell_ergonomics::warnings::WarningConfig`), so a posture warning is raised.
+    pub hold_secs: f64,
+    /// Default 1.5 s.
+    pub return_secs: f64,
+}
+
+impl FloorPick {
+    /// The default pick after `after_cycle` handover cycles.
+    pub fn new(after_cycle: usize) -> Self {
+        Self {
+            after_cycle,
+            target_m: Point3::new(0.45, -0.20, 0.40),
+            reach_secs: 1.5,
+            hold_secs: 4.0,
+            return_secs: 1.5,
+        }
+    }
+
+    /// Total duration, seconds.
+    pub fn duration_secs(&self) -> f64 {
+        self.reach_secs + self.hold_secs + self.return_secs
+    }
 }
 
 /// The session script. Durations in seconds.
@@ -84,6 +146,8 @@ pub struct SessionScript {
     pub step_hz: f64,
     /// Habitual posture, drawn once per session (see [`Habits`]).
     pub habits: Habits,
+    /// An optional floor pick (default none: the session is the handover cycles only).
+    pub floor_pick: Option<FloorPick>,
 }
 
 /// A person's habitual posture, `(mean, σ)` in radians, drawn once per session from the motion
@@ -137,6 +201,7 @@ impl SessionScript {
             target_sigma_m: 0.01,
             step_hz: 1.8,
             habits: Habits::default(),
+            floor_pick: None,
         }
     }
 
@@ -146,10 +211,14 @@ impl SessionScript {
 
     /// Total duration, seconds.
     pub fn duration_secs(&self) -> f64 {
-        self.walk_in_secs
+        let d = self.walk_in_secs
             + self.idle_secs
             + self.cycles as f64 * self.cycle_secs()
-            + self.walk_out_secs
+            + self.walk_out_secs;
+        match &self.floor_pick {
+            Some(p) => d + p.duration_secs(),
+            None => d,
+        }
     }
 
     fn validate(&self) -> Result<(), SimError> {
@@ -170,6 +239,38 @@ impl SessionScript {
                     value: v,
                     why: "must be finite and >= 0",
                 });
+            }
+        }
+        if let Some(p) = &self.floor_pick {
+            for (name, v) in [
+                ("floor_pick.reach_secs", p.reach_secs),
+                ("floor_pick.hold_secs", p.hold_secs),
+                ("floor_pick.return_secs", p.return_secs),
+            ] {
+                if !(v.is_finite() && v >= 0.0) {
+                    return Err(SimError::BadParameter {
+                        name,
+                        value: v,
+                        why: "must be finite and >= 0",
+                    });
+                }
+            }
+            if p.after_cycle > self.cycles {
+                return Err(SimError::BadParameter {
+                    name: "floor_pick.after_cycle",
+                    value: p.after_cycle as f64,
+                    why: "must be at most the number of cycles",
+                });
+            }
+            let t = p.target_m;
+            for v in [t.x, t.y, t.z] {
+                if !v.is_finite() {
+                    return Err(SimError::BadParameter {
+                        name: "floor_pick.target_m",
+                        value: v,
+                        why: "not finite",
+                    });
+                }
             }
         }
         let h = self.handover_m;
@@ -231,7 +332,7 @@ pub struct GroundTruth {
     pub posture: Posture,
     /// The 33 true landmarks (confidence 1).
     pub skeleton: Skeleton3,
-    /// The hand's target of the current cycle, if in a handover cycle.
+    /// The hand's target of the current cycle, if in a handover cycle, or of the floor pick.
     pub target_m: Option<Point3<f64>>,
 }
 
@@ -259,6 +360,8 @@ pub struct Simulation {
     rest: Posture,
     idle: Posture,
     reach: Vec<(Point3<f64>, Posture)>,
+    /// The floor pick's solved posture, if the script has one.
+    pick: Option<Posture>,
     rng: ChaCha8Rng,
     next: u64,
     ticks: u64,
@@ -315,6 +418,11 @@ impl Simulation {
             let sol = solve_reach(&operator, &rest, &target, &config.reach)?;
             reach.push((target, sol.posture));
         }
+        // No random draws: a script without a pick is unchanged, one with it differs only there.
+        let pick = match &script.floor_pick {
+            Some(p) => Some(solve_reach(&operator, &rest, &p.target_m, &config.reach)?.posture),
+            None => None,
+        };
         let mut rng = ChaCha8Rng::seed_from_u64(config.seed);
         rng.set_stream(2);
         let period_secs = config.frame_period_nanos as f64 * 1e-9;
@@ -327,6 +435,7 @@ impl Simulation {
             rest,
             idle,
             reach,
+            pick,
             rng,
             next: 0,
             ticks,
@@ -358,6 +467,11 @@ impl Simulation {
         &self.reach
     }
 
+    /// The floor pick's solved posture, if the script has one.
+    pub fn floor_pick_posture(&self) -> Option<&Posture> {
+        self.pick.as_ref()
+    }
+
     /// The phase and posture at time `t_nanos` (pure: no randomness, no state).
     pub fn posture_at(&self, t_nanos: i64) -> (Phase, Posture, Option<Point3<f64>>) {
         let sc = &self.script;
@@ -371,6 +485,26 @@ impl Simulation {
         }
         t -= sc.idle_secs;
         let cycle_secs = sc.cycle_secs();
+        if let (Some(p), Some(pick)) = (&sc.floor_pick, &self.pick) {
+            let from = p.after_cycle as f64 * cycle_secs;
+            if t >= from {
+                let u = t - from;
+                if u < p.duration_secs() {
+                    let target = Some(p.target_m);
+                    let stage = |stage| Phase::FloorPick { stage };
+                    if u < p.reach_secs {
+                        let s = smoothstep(u / p.reach_secs.max(1e-9));
+                        return (stage(PickStage::Reach), self.rest.lerp(pick, s), target);
+                    }
+                    if u < p.reach_secs + p.hold_secs {
+                        return (stage(PickStage::Hold), *pick, target);
+                    }
+                    let s = smoothstep((u - p.reach_secs - p.hold_secs) / p.return_secs.max(1e-9));
+                    return (stage(PickStage::Return), pick.lerp(&self.rest, s), target);
+                }
+                t -= p.duration_secs();
+            }
+        }
         if sc.cycles > 0 && t < cycle_secs * sc.cycles as f64 {
             let cycle = ((t / cycle_secs).floor() as usize).min(sc.cycles - 1);
             let mut u = t - cycle as f64 * cycle_secs;

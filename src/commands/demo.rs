@@ -5,7 +5,9 @@
 //! The real session state machine fuses the views, measures the height, decides the class, verifies
 //! and locks the class's trajectory and runs RULA; a simulated controller follows the trajectory.
 //! Two faults are injected while working (one camera silent, then every camera) to show the degrade
-//! and the hold. The session is recorded to MCAP (Foxglove, rosbag2).
+//! and the hold. After the first handover the operator picks up a dropped part from low down (trunk
+//! bent far forward for 4 s, the robot not involved), so a RULA posture warning is raised and cleared
+//! (`--no-floor-pick` leaves it out). The session is recorded to MCAP (Foxglove, rosbag2).
 //!
 //! The shipped locks carry no approvals (a person signs them off on site), so the demo approves the
 //! current locks in a **temporary** folder, labelled as a demo approval; `trajectories/approvals/` is
@@ -29,7 +31,7 @@ use ergocell_ergonomics::HeightClass;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::View2;
 use ergocell_robot::{LockFile, TrajectoryClass};
-use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
+use ergocell_sim::{FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
 
 use super::UsageError;
@@ -63,6 +65,10 @@ pub struct Args {
     /// Do not inject the camera faults.
     #[arg(long)]
     pub no_faults: bool,
+    /// Leave out the floor pick (after the first handover cycle the operator bends down for a dropped
+    /// part, 0.40 m above the floor: a bad posture that raises a RULA warning).
+    #[arg(long)]
+    pub no_floor_pick: bool,
 }
 
 /// Wall-clock time at the binary's clock boundary (the session itself runs on the simulator's clock).
@@ -161,6 +167,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let geometry = load_geometry(&args.cell, &args.trajectories, true_class)?;
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
+    if !args.no_floor_pick {
+        script.floor_pick = Some(FloorPick::new(args.cycles.min(1)));
+    }
     if !(1.0..=120.0).contains(&args.fps) {
         return Err(UsageError(format!("--fps {} is outside 1..=120 Hz", args.fps)).into());
     }
@@ -193,12 +202,20 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         args.seed,
         args.out.display()
     );
+    if let Some(p) = &script.floor_pick {
+        say!(
+            "  floor pick after handover cycle {}: the operator bends down for a dropped part {:.2} m above the floor (robot not involved)",
+            p.after_cycle,
+            p.target_m.z
+        );
+    }
     say!();
 
     let stop = ctrl_c_flag();
     let mut sim = sim;
     let mut now = start;
     let mut sim_done = false;
+    let mut was_picking = false;
     let mut working_since: Option<i64> = None;
     let mut change_requested = false;
     let mut last_status = start;
@@ -216,7 +233,23 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let mut views = Vec::new();
         if !sim_done {
             match sim.step()? {
-                Some(tick) => views = tick.frame.views,
+                Some(tick) => {
+                    // The simulator's ground truth: when the operator bends down and stands up.
+                    let picking = matches!(tick.truth.phase, Phase::FloorPick { .. });
+                    if picking != was_picking {
+                        was_picking = picking;
+                        say!(
+                            "  t={:5.1} s  (simulator) {}",
+                            secs(now, start),
+                            if picking {
+                                "operator bends down for the dropped part (floor pick)"
+                            } else {
+                                "operator stands back up with the part"
+                            }
+                        );
+                    }
+                    views = tick.frame.views;
+                }
                 None => sim_done = true,
             }
         }
@@ -393,7 +426,7 @@ fn report(events: &[SessionEvent], now: i64, start: i64) {
             continue;
         }
         if let SessionEvent::Warning(w) = e {
-            if w.kind != ergocell_ergonomics::warnings::WarningKind::Raised {
+            if w.kind == ergocell_ergonomics::warnings::WarningKind::Changed {
                 continue;
             }
         }
