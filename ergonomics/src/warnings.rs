@@ -227,6 +227,13 @@ pub fn describe(region: BodyRegion, side: Option<Side>, i: &RulaInput) -> String
     }
 }
 
+fn lowercase_first(s: &str) -> String {
+    let mut c = s.chars();
+    c.next().map_or_else(String::new, |f| {
+        f.to_lowercase().collect::<String>() + c.as_str()
+    })
+}
+
 fn capitalise(s: &str) -> String {
     let mut c = s.chars();
     match c.next() {
@@ -297,18 +304,29 @@ impl WarningTracker {
                     _ => None,
                 };
                 if let Some(kind) = kind {
-                    let message = match kind {
-                        WarningKind::Cleared => format!(
-                            "{} back within limits",
-                            match side {
-                                Some(s) => format!(
-                                    "{} {}",
-                                    capitalise(s.name()),
-                                    region.name().replace('_', " ")
-                                ),
-                                None => capitalise(&region.name().replace('_', " ")),
-                            }
+                    let label = match side {
+                        Some(s) => format!(
+                            "{} {}",
+                            capitalise(s.name()),
+                            region.name().replace('_', " ")
                         ),
+                        None => capitalise(&region.name().replace('_', " ")),
+                    };
+                    let message = match kind {
+                        WarningKind::Cleared => format!("{label} back within limits"),
+                        // Stepping down one level at a time (hysteresis): say so, with the posture
+                        // now, not the advice for the posture that raised the warning.
+                        WarningKind::Changed if after < before => {
+                            let now = describe(*region, side, &assessment.input);
+                            let now = now.split(" — ").next().unwrap_or(&now);
+                            let now = now.strip_prefix(label.as_str()).map_or_else(
+                                || lowercase_first(now),
+                                |rest| rest.trim_start().to_owned(),
+                            );
+                            format!(
+                                "{label} easing: now {now} (warning level {after}, was {before}; it clears once the posture stays within limits)"
+                            )
+                        }
                         _ => format!(
                             "{} (action level {action_level}: {})",
                             describe(*region, side, &assessment.input),

@@ -752,3 +752,53 @@ fn the_smoother_passes_through_when_off_and_never_invents_a_value() {
     })
     .is_err());
 }
+
+#[test]
+fn an_easing_warning_says_it_is_easing_not_the_old_advice() {
+    // Trunk bent 70° (score 4) long enough to warn, then straightening through 40° (score 3, 1 s)
+    // to 3° (score 2): the warning steps down one level at a time (4 → 3 → cleared), each after the
+    // dwell, so the 4 → 3 step comes when the trunk is already at 3°. The step is a "changed" event that must not
+    // repeat the advice with the new angle (the demo printed "Trunk bent forward 1° — raise the work").
+    let trunk = |deg: f64, stamp_nanos: i64| {
+        PoseSpec {
+            trunk_flexion_rad: deg.to_radians(),
+            stamp_nanos,
+            ..PoseSpec::default()
+        }
+        .skeleton()
+    };
+    let mut assessor = assessor_for(&PoseSpec::default());
+    let mut warnings = WarningTracker::new(WarningConfig::default());
+    let mut events = Vec::new();
+    for k in 0..200 {
+        // Straightening up passes through the 20–60° band (score 3) on the way.
+        let deg = match k {
+            0..40 => 70.0,
+            40..50 => 40.0,
+            _ => 3.0,
+        };
+        let f: FrameAssessment = assessor.assess(&trunk(deg, k * FRAME)).unwrap();
+        events.extend(warnings.update(&f));
+    }
+    let t: Vec<_> = events
+        .iter()
+        .filter(|e| e.region == BodyRegion::Trunk)
+        .collect();
+    let kinds: Vec<_> = t.iter().map(|e| e.kind).collect();
+    assert_eq!(
+        kinds,
+        vec![
+            WarningKind::Raised,
+            WarningKind::Changed,
+            WarningKind::Cleared
+        ],
+        "{t:#?}"
+    );
+    let changed = &t[1].message;
+    assert!(
+        changed.starts_with("Trunk easing: now bent forward 3°"),
+        "{changed}"
+    );
+    assert!(!changed.contains("raise the work"), "{changed}");
+    assert!(t[0].message.contains("raise the work"), "{}", t[0].message);
+}
