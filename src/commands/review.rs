@@ -184,8 +184,9 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
 
 /// What the server holds: everything it can ever answer with.
 struct Served {
-    page: String,
-    json: String,
+    /// Shared, not copied, per request.
+    page: axum::body::Bytes,
+    json: axum::body::Bytes,
     /// `Host` values accepted; `None` when asked to serve the network.
     allowed_hosts: Option<Vec<String>>,
 }
@@ -211,8 +212,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let allowed_hosts =
             loopback.then(|| vec![addr.to_string(), format!("localhost:{}", addr.port())]);
         let served = Arc::new(Served {
-            page: page::served_page(&data),
-            json,
+            page: page::served_page(&data).into(),
+            json: json.into(),
             allowed_hosts,
         });
         let app = Router::new()
@@ -300,8 +301,8 @@ async fn guard(
     response
 }
 
-fn with_type(content_type: &'static str, body: String) -> Response {
-    ([(header::CONTENT_TYPE, content_type)], body).into_response()
+fn with_type(content_type: &'static str, body: impl Into<axum::body::Body>) -> Response {
+    ([(header::CONTENT_TYPE, content_type)], body.into()).into_response()
 }
 
 async fn index(State(s): State<Arc<Served>>) -> Response {
@@ -309,11 +310,11 @@ async fn index(State(s): State<Arc<Served>>) -> Response {
 }
 
 async fn script() -> Response {
-    with_type("text/javascript; charset=utf-8", page::REVIEW_JS.to_owned())
+    with_type("text/javascript; charset=utf-8", page::REVIEW_JS)
 }
 
 async fn stylesheet() -> Response {
-    with_type("text/css; charset=utf-8", page::REVIEW_CSS.to_owned())
+    with_type("text/css; charset=utf-8", page::REVIEW_CSS)
 }
 
 async fn review_json(State(s): State<Arc<Served>>) -> Response {
