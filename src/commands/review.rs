@@ -65,6 +65,10 @@ pub struct Args {
     /// Port (0 = any free port; the URL is printed).
     #[arg(long, default_value_t = 8765)]
     pub port: u16,
+    /// Also accept this `Host` (repeatable), e.g. `localhost:9000` for a browser reaching the
+    /// server through `ssh -L 9000:localhost:8765`. The server still listens on loopback only.
+    #[arg(long = "allow-host", value_name = "HOST:PORT")]
+    pub allow_hosts: Vec<String>,
 }
 
 #[derive(Debug, clap::Args)]
@@ -209,8 +213,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         // An IPv4-mapped loopback (::ffff:127.0.0.1) is loopback too.
         let loopback = args.bind.to_canonical().is_loopback();
         // The Host values a browser sends for the printed URL (and `localhost`), nothing else.
-        let allowed_hosts =
-            loopback.then(|| vec![addr.to_string(), format!("localhost:{}", addr.port())]);
+        let allowed_hosts = loopback.then(|| {
+            let mut hosts = vec![addr.to_string(), format!("localhost:{}", addr.port())];
+            hosts.extend(args.allow_hosts.iter().cloned());
+            hosts
+        });
         let served = Arc::new(Served {
             page: page::served_page(&data).into(),
             json: json.into(),
