@@ -466,19 +466,7 @@ fn the_allowed_host_is_the_bound_address_and_two_hosts_are_refused() {
         demo_recording(),
         &["--allow-host", "localhost:9000"],
     );
-    let port = server.port;
-    let status = |host: &str| {
-        let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
-        write!(
-            s,
-            "GET / HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n"
-        )
-        .unwrap();
-        let mut buf = String::new();
-        let _ = s.read_to_string(&mut buf);
-        buf.split_whitespace().nth(1).unwrap_or("").to_owned()
-    };
-    assert_eq!(status("localhost:9000"), "200");
-    assert_eq!(status("localhost:9001"), "403");
+    assert_eq!(get(server.port, "GET", "/", "localhost:9000").0, 200);
+    assert_eq!(get(server.port, "GET", "/", "localhost:9001").0, 403);
     drop(server);
 }

@@ -228,10 +228,8 @@ impl Reader {
                 }
             }
         }
-        if self.rec.complete && !bytes.ends_with(mcap::MAGIC) {
-            self.rec.complete = false;
-        }
         if !bytes.ends_with(mcap::MAGIC) {
+            self.rec.complete = false;
             self.rec.problems.push(format!(
                 "the file has no MCAP footer: the recording was cut short (a crash or a partial copy); {} messages were read up to its last complete chunk",
                 self.rec.messages

@@ -19,7 +19,6 @@ use std::sync::Arc;
 
 use anyhow::Context as _;
 use ergocell::recording::{self, topics, McapRecorder};
-use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
@@ -164,7 +163,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let lock = LockFile::from_toml_str(true_class, &lock_text)
         .map_err(|e| anyhow::anyhow!("{}: {e}", lock_path.display()))?;
     let [hx, hy, hz] = lock.summary.handover_station_m;
-    let geometry = load_geometry(&args.cell, &args.trajectories, true_class)?;
+    let geometry = provider
+        .robot_geometry(true_class)
+        .map_err(|e| anyhow::anyhow!(e))?;
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
     if !args.no_floor_pick {
@@ -395,29 +396,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         anyhow::bail!("the session did not end normally: {}", s.end_reason);
     }
     Ok(())
-}
-
-/// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
-pub fn load_geometry(
-    cell_path: &std::path::Path,
-    trajectories: &std::path::Path,
-    class: TrajectoryClass,
-) -> anyhow::Result<RobotGeometry> {
-    let read = |p: &std::path::Path| {
-        std::fs::read_to_string(p).with_context(|| format!("cannot read {}", p.display()))
-    };
-    let cell = read(cell_path)?;
-    let urdf_rel = ergocell_robot::CellConfig::from_toml_str(&cell)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", cell_path.display()))?
-        .robot
-        .urdf;
-    let urdf_path = cell_path
-        .parent()
-        .unwrap_or_else(|| std::path::Path::new("."))
-        .join(urdf_rel);
-    let spec_path = trajectories.join(format!("{class}.toml"));
-    RobotGeometry::from_texts(&cell, &read(&urdf_path)?, &read(&spec_path)?)
-        .map_err(|e| anyhow::anyhow!("robot geometry for the recording ({class}): {e}"))
 }
 
 fn report(events: &[SessionEvent], now: i64, start: i64) {

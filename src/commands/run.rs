@@ -262,7 +262,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                         if geometry.as_ref().map(|(c, _)| c) != class.as_ref() {
                             geometry = class.as_deref().and_then(|name| {
                                 let c = ergocell_robot::TrajectoryClass::ALL.into_iter().find(|c| c.to_string() == name)?;
-                                match super::demo::load_geometry(&args.config, &args.trajectories, c) {
+                                match FileTrajectories::new(&args.config, &args.trajectories, &approvals).robot_geometry(c) {
                                     Ok(g) => Some((name.to_owned(), g)),
                                     Err(e) => {
                                         tracing::warn!(error = %e, "no robot markers in the recording");

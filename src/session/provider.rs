@@ -10,6 +10,7 @@ use ergocell_robot::{
 };
 
 use super::TrajectoryProvider;
+use crate::robot_markers::RobotGeometry;
 
 /// Reads and verifies the locked trajectories.
 #[derive(Debug, Clone)]
@@ -39,8 +40,8 @@ impl FileTrajectories {
             .join(format!("{class}.lock.toml"))
     }
 
-    /// Reads the cell, the URDF and the class's trajectory file: the model and the current hashes.
-    fn current(&self, class: TrajectoryClass) -> Result<(RobotModel, InputHashes), String> {
+    /// The cell config (text and parsed), the URDF's path and its text.
+    fn cell_and_urdf(&self) -> Result<(String, CellConfig, PathBuf, String), String> {
         let cell_text = Self::read(&self.cell_path)?;
         let cell = CellConfig::from_toml_str(&cell_text)
             .map_err(|e| format!("{}: {e}", self.cell_path.display()))?;
@@ -50,6 +51,20 @@ impl FileTrajectories {
             .unwrap_or_else(|| Path::new("."))
             .join(&cell.robot.urdf);
         let urdf_text = Self::read(&urdf_path)?;
+        Ok((cell_text, cell, urdf_path, urdf_text))
+    }
+
+    /// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
+    pub fn robot_geometry(&self, class: TrajectoryClass) -> Result<RobotGeometry, String> {
+        let (cell_text, _, _, urdf_text) = self.cell_and_urdf()?;
+        let spec_text = Self::read(&self.trajectories_dir.join(format!("{class}.toml")))?;
+        RobotGeometry::from_texts(&cell_text, &urdf_text, &spec_text)
+            .map_err(|e| format!("robot geometry for the recording ({class}): {e}"))
+    }
+
+    /// Reads the cell, the URDF and the class's trajectory file: the model and the current hashes.
+    fn current(&self, class: TrajectoryClass) -> Result<(RobotModel, InputHashes), String> {
+        let (_, cell, urdf_path, urdf_text) = self.cell_and_urdf()?;
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
                 .map_err(|e| format!("{}: {e}", urdf_path.display()))?;
