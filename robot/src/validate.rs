@@ -29,11 +29,94 @@ mod anthropometry {
     pub const SHOULDER: f64 = 0.818;
     pub const CHIN: f64 = 0.870;
     pub const SHOULDER_WIDTH: f64 = 0.259;
-    /// Grasp height band for "light work 10–15 cm below the elbow", upper arm flexed 10–15°,
-    /// forearm 0–20° below horizontal (see /work/shared/reference/robot.md).
-    pub const GRASP_HEIGHT: [f64; 2] = [0.570, 0.638];
-    /// Forward of the shoulder joint for the same posture.
-    pub const GRASP_FORWARD: [f64; 2] = [0.22, 0.25];
+    pub const UPPER_ARM: f64 = 0.186;
+    pub const FOREARM: f64 = 0.146;
+    pub const HAND: f64 = 0.108;
+}
+
+/// The posture a handover point is derived for: RULA's score-1 zones of the upper and lower arm.
+///
+/// Upper arm flexed 0–20° (RULA upper arm 1: within 20° of the trunk line, on the flexion side, where
+/// a hand reaching forward is), forearm 0–20° below horizontal, elbow flexion 60–100° (RULA lower
+/// arm 1), the part held at the middle of the hand. Elbow flexion is 90° − (upper arm flexion +
+/// forearm angle below horizontal), so the elbow limit keeps their sum at most 30°.
+pub mod grasp_posture {
+    /// Upper arm flexion, radians: RULA's upper-arm score-1 zone on the flexion side.
+    pub const UPPER_ARM_FLEXION_RAD: [f64; 2] = [0.0, 20.0 * std::f64::consts::PI / 180.0];
+    /// Forearm angle below horizontal, radians.
+    pub const FOREARM_BELOW_HORIZONTAL_RAD: [f64; 2] = [0.0, 20.0 * std::f64::consts::PI / 180.0];
+    /// Elbow flexion, radians: RULA's lower-arm score-1 zone.
+    pub const ELBOW_FLEXION_RAD: [f64; 2] = [
+        60.0 * std::f64::consts::PI / 180.0,
+        100.0 * std::f64::consts::PI / 180.0,
+    ];
+}
+
+/// Where one handover point suits every operator of a class: height and forward distance of the grasp
+/// point, and the largest lateral offset, in the station frame (metres).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GraspBand {
+    /// Height above the floor, [low, high]; empty when low > high.
+    pub height_m: [f64; 2],
+    /// Forward of the shoulder joint, [near, far]; empty when near > far.
+    pub forward_m: [f64; 2],
+    /// Largest |lateral| offset: half the narrowest operator's shoulder width.
+    pub lateral_max_m: f64,
+}
+
+impl GraspBand {
+    /// Whether the station-frame point (forward, lateral, height) lies inside the band, edges
+    /// included.
+    pub fn contains(&self, forward_m: f64, lateral_m: f64, height_m: f64) -> bool {
+        (self.height_m[0]..=self.height_m[1]).contains(&height_m)
+            && (self.forward_m[0]..=self.forward_m[1]).contains(&forward_m)
+            && lateral_m.abs() <= self.lateral_max_m
+    }
+}
+
+/// Grasp height and forward reach of the [`grasp_posture`] zone, as fractions of stature:
+/// `([height_min, height_max], [forward_min, forward_max])`.
+///
+/// Shoulder joint at 0.818 H, upper arm 0.186 H, forearm 0.146 H, half the hand 0.054 H. The
+/// extremes lie on the zone's corners; the zone is swept on a 0.1° grid so the elbow limit is
+/// honoured wherever it cuts a corner off.
+pub fn grasp_fractions() -> ([f64; 2], [f64; 2]) {
+    use anthropometry::{FOREARM, HAND, SHOULDER, UPPER_ARM};
+    use grasp_posture::{ELBOW_FLEXION_RAD, FOREARM_BELOW_HORIZONTAL_RAD, UPPER_ARM_FLEXION_RAD};
+    let reach = FOREARM + 0.5 * HAND;
+    let steps = 200_u32;
+    let lerp = |[a, b]: [f64; 2], i: u32| a + (b - a) * f64::from(i) / f64::from(steps);
+    let (mut height, mut forward) = (
+        [f64::INFINITY, f64::NEG_INFINITY],
+        [f64::INFINITY, f64::NEG_INFINITY],
+    );
+    for i in 0..=steps {
+        let upper = lerp(UPPER_ARM_FLEXION_RAD, i);
+        for j in 0..=steps {
+            let below = lerp(FOREARM_BELOW_HORIZONTAL_RAD, j);
+            let elbow = std::f64::consts::FRAC_PI_2 - upper - below;
+            if !(ELBOW_FLEXION_RAD[0] - 1e-12..=ELBOW_FLEXION_RAD[1] + 1e-12).contains(&elbow) {
+                continue;
+            }
+            let h = SHOULDER - UPPER_ARM * upper.cos() - reach * below.sin();
+            let f = UPPER_ARM * upper.sin() + reach * below.cos();
+            height = [height[0].min(h), height[1].max(h)];
+            forward = [forward[0].min(f), forward[1].max(f)];
+        }
+    }
+    (height, forward)
+}
+
+/// The band one handover point must lie in to suit every operator of stature `h_min..=h_max`: the
+/// intersection of each operator's [`grasp_fractions`] scaled by stature, so the highest low edge
+/// (the tallest operator's) and the lowest high edge (the shortest's).
+pub fn grasp_band(h_min: f64, h_max: f64) -> GraspBand {
+    let (height, forward) = grasp_fractions();
+    GraspBand {
+        height_m: [height[0] * h_max, height[1] * h_min],
+        forward_m: [forward[0] * h_max, forward[1] * h_min],
+        lateral_max_m: 0.5 * anthropometry::SHOULDER_WIDTH * h_min,
+    }
 }
 
 /// Dense re-check: samples per knot interval (joint limits, Cartesian checks).
@@ -756,18 +839,10 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
 
     // Handover inside the class's band, and the final knot's FK on the target.
     let (h_min, h_max) = (spec.stature.min_m, spec.stature.max_m);
-    let height_band_m = [
-        anthropometry::GRASP_HEIGHT[0] * h_max,
-        anthropometry::GRASP_HEIGHT[1] * h_min,
-    ];
-    let forward_band_m = [
-        anthropometry::GRASP_FORWARD[0] * h_max,
-        anthropometry::GRASP_FORWARD[1] * h_min,
-    ];
-    let lateral_max_m = 0.5 * anthropometry::SHOULDER_WIDTH * h_min;
-    let inside_band = (height_band_m[0]..=height_band_m[1]).contains(&h.height_m)
-        && (forward_band_m[0]..=forward_band_m[1]).contains(&h.forward_m)
-        && h.lateral_m.abs() <= lateral_max_m;
+    let band = grasp_band(h_min, h_max);
+    let (height_band_m, forward_band_m, lateral_max_m) =
+        (band.height_m, band.forward_m, band.lateral_max_m);
+    let inside_band = band.contains(h.forward_m, h.lateral_m, h.height_m);
     let T_base_end = model.fk_flange_unchecked(&q[n - 1]) * T_flange_tcp;
     let (fk_dp, fk_dr) = pose_error(&T_base_end, &T_base_handover);
     if !inside_band {

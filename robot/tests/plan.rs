@@ -268,3 +268,34 @@ proptest! {
         assert_within_limits(&s, &spec, &locked, 16);
     }
 }
+
+#[test]
+fn the_grasp_band_is_the_arm_posture_zone_scaled_by_stature() {
+    use ergocell_robot::validate::{grasp_band, grasp_fractions};
+    // Known answer, by hand: shoulder joint 0.818 H, upper arm 0.186 H, forearm + half hand 0.200 H.
+    // Lowest: upper arm vertical, forearm 20° down; highest: upper arm 20°, forearm level.
+    let (height, forward) = grasp_fractions();
+    let d20 = 20f64.to_radians();
+    assert!((height[0] - (0.818 - 0.186 - 0.200 * d20.sin())).abs() < 1e-12);
+    assert!((height[1] - (0.818 - 0.186 * d20.cos())).abs() < 1e-12);
+    assert!((forward[0] - 0.200 * d20.cos()).abs() < 1e-12);
+    assert!((forward[1] - (0.186 * d20.sin() + 0.200)).abs() < 1e-12);
+    // The class band lies inside every operator's own band over the class, and touches the two ends'.
+    for (lo, hi) in [(1.50, 1.68), (1.68, 1.82), (1.82, 2.00)] {
+        let band = grasp_band(lo, hi);
+        assert!(band.height_m[0] < band.height_m[1] && band.forward_m[0] < band.forward_m[1]);
+        for k in 0..=20 {
+            let h = lo + (hi - lo) * f64::from(k) / 20.0;
+            assert!(band.height_m[0] >= height[0] * h - 1e-12);
+            assert!(band.height_m[1] <= height[1] * h + 1e-12);
+            assert!(band.forward_m[0] >= forward[0] * h - 1e-12);
+            assert!(band.forward_m[1] <= forward[1] * h + 1e-12);
+        }
+        assert!((band.height_m[0] - height[0] * hi).abs() < 1e-12);
+        assert!((band.height_m[1] - height[1] * lo).abs() < 1e-12);
+    }
+    // A class too wide for one point has an empty band, which no handover is inside.
+    let wide = grasp_band(1.40, 2.00);
+    assert!(wide.height_m[0] > wide.height_m[1]);
+    assert!(!wide.contains(0.3, 0.0, 0.5 * (wide.height_m[0] + wide.height_m[1])));
+}
