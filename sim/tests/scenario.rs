@@ -172,12 +172,13 @@ fn the_camera_behind_the_operator_sees_fewer_landmarks_than_a_front_one() {
 fn handovers() -> ergocell_sim::experiments::Handovers {
     ergocell_sim::experiments::Handovers {
         before_m: c2_handover(),
-        c1_m: Point3::new(0.38, -0.10, 0.97),
+        // trajectories/c1.toml, c3.toml (station frame = world frame in these tests)
+        c1_m: Point3::new(0.394, -0.10, 0.963),
         c2_m: c2_handover(),
-        c3_m: Point3::new(0.44, -0.10, 1.13),
-        c1_stature_m: [1.55, 1.68],
+        c3_m: Point3::new(0.478, -0.10, 1.169),
+        c1_stature_m: [1.50, 1.68],
         c2_stature_m: [1.68, 1.82],
-        c3_stature_m: [1.82, 1.95],
+        c3_stature_m: [1.82, 2.00],
     }
 }
 
@@ -248,7 +249,7 @@ fn adaptation_reports_operators_outside_the_validated_statures_as_not_served() {
     let r = ergocell_sim::experiments::adaptation(
         &setup(1),
         &handovers(),
-        &[1.50, 1.60, 2.00],
+        &[1.45, 1.60, 2.05],
         1,
         &mut none,
     )
@@ -256,12 +257,12 @@ fn adaptation_reports_operators_outside_the_validated_statures_as_not_served() {
     assert!(r.not_served_after[0]
         .as_ref()
         .unwrap()
-        .contains("1.55–1.68"));
+        .contains("1.50–1.68"));
     assert!(r.not_served_after[1].is_none());
     assert!(r.not_served_after[2]
         .as_ref()
         .unwrap()
-        .contains("1.82–1.95"));
+        .contains("1.82–2.00"));
     for i in [0, 2] {
         assert!(r.mean_grand_score_after[i].is_nan());
         assert!(r.true_mean_grand_score_after[i].is_nan());

@@ -4,12 +4,16 @@
 //! ergocell sim table1|adaptation|height|rula-agreement [--seed 1] [--cameras config/rig.toml | N]
 //!              [--noise-px 3] [--json] [--out-dir sim-out] [--cell config/cell.toml]
 //!              [--trajectories trajectories] [--operators N] [--cycles N]
+//!              [--before-handover 0.410,-0.100,1.055]
 //! ```
 //!
 //! Each experiment prints a table (or, with `--json`, one JSON object on stdout) and writes
 //! `<experiment>.json` and its SVG figures into `--out-dir`. The same seed gives byte-identical JSON.
 //! The handover points come from `trajectories/c1..c3.toml` (station frame) placed in the world with
-//! `config/cell.toml`'s `[station]`; "before adaptation" is the c2 point (set for a 1.75 m operator).
+//! `config/cell.toml`'s `[station]`. "Before adaptation" is one point for everyone, set for a 1.75 m
+//! operator: (0.410, −0.100, 1.055) m, the middle of the Grandjean band (upper arm 10–15°) for c2's
+//! statures, which was c2's handover until c2 moved to its band's high, far corner (2026-11). It is
+//! fixed here so that moving a class's point does not move the baseline it is compared with.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -92,6 +96,10 @@ pub struct Common {
     /// Handover cycles per operator (default 5).
     #[arg(long, global = true, default_value_t = 5)]
     pub cycles: usize,
+    /// adaptation: the handover point before adaptation, station frame `forward,lateral,height`
+    /// (metres). Default: the point the cell used for everyone, set for a 1.75 m operator.
+    #[arg(long, global = true, value_parser = parse_point, default_value = "0.410,-0.100,1.055")]
+    pub before_handover: [f64; 3],
     /// adaptation: also record an operator of this stature (metres) before and after as two session
     /// recordings, `adaptation_<h>m_before.mcap` / `_after.mcap` in `--out-dir`, for
     /// `ergocell report <before> --compare <after>`.
@@ -121,6 +129,20 @@ fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
     Ok(rig)
 }
 
+/// `forward,lateral,height` in metres, three finite numbers.
+fn parse_point(text: &str) -> Result<[f64; 3], String> {
+    let values: Vec<f64> = text
+        .split(',')
+        .map(|v| v.trim().parse::<f64>().map_err(|e| format!("{v:?}: {e}")))
+        .collect::<Result<_, _>>()?;
+    match values.as_slice() {
+        [f, l, h] if values.iter().all(|v| v.is_finite()) => Ok([*f, *l, *h]),
+        _ => Err(format!(
+            "expected three finite numbers forward,lateral,height (metres), got {text:?}"
+        )),
+    }
+}
+
 fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     let cell = CellConfig::from_toml_str(&read(&common.cell)?)
         .map_err(|e| UsageError(format!("{}: {e}", common.cell.display())))?;
@@ -135,8 +157,9 @@ fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
         points.push(T_world_station * Point3::new(h.forward_m, h.lateral_m, h.height_m));
         statures.push([spec.stature.min_m, spec.stature.max_m]);
     }
+    let [forward, lateral, height] = common.before_handover;
     Ok(Handovers {
-        before_m: points[1],
+        before_m: T_world_station * Point3::new(forward, lateral, height),
         c1_m: points[0],
         c2_m: points[1],
         c3_m: points[2],
