@@ -211,7 +211,7 @@ impl FusionEngine {
                 }
                 rejected_views += drop_off_body(&mut points, &masks);
                 if let Some(prior) = self.bone_prior.as_mut() {
-                    prior.observe(&points);
+                    prior.observe(&points, &information);
                     prior.refine(&mut points, &information);
                 }
                 for lm in Landmark::ALL {
