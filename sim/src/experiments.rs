@@ -352,6 +352,9 @@ impl Pipeline {
 struct Scored {
     grand: u8,
     regions: [u8; 6],
+    /// The assessor marked the score uncertain (a landmark it used is below its confidence floor, or
+    /// an input was held or never observed).
+    uncertain: bool,
 }
 
 fn headline(assessor: &mut RulaAssessor, s: &Skeleton3) -> Result<Option<Scored>, SimError> {
@@ -359,6 +362,7 @@ fn headline(assessor: &mut RulaAssessor, s: &Skeleton3) -> Result<Option<Scored>
     Ok(a.headline().map(|h| Scored {
         grand: h.scores.final_score,
         regions: BodyRegion::ALL.map(|r| r.score(&h.scores)),
+        uncertain: h.uncertain,
     }))
 }
 
@@ -691,6 +695,11 @@ pub struct RulaAgreement {
     pub grand_differs_with_regions_equal: usize,
     /// Frames scored by both.
     pub frames: usize,
+    /// Of those, the frames whose pipeline score the assessor marked uncertain, and the grand score's
+    /// exact agreement among them and among the rest: whether the flag tells the reviewer anything.
+    pub uncertain_frames: usize,
+    pub grand_exact_uncertain: f64,
+    pub grand_exact_certain: f64,
     pub statures_m: Vec<f64>,
 }
 
@@ -742,6 +751,8 @@ pub fn rula_agreement(
     let mut region_diff = [0i64; 6];
     let mut region_confusion = vec![vec![vec![0usize; 6]; 6]; 6];
     let mut grand_differs_with_regions_equal = 0;
+    // [certain, uncertain]: (frames, grand score equal)
+    let mut by_flag = [(0usize, 0usize); 2];
     let cfg = AssessmentConfig::new(up()?);
     for (i, &h) in statures_m.iter().enumerate() {
         let mut script = SessionScript::new(handovers.before_m);
@@ -781,6 +792,9 @@ pub fn rula_agreement(
                 }
                 grand_differs_with_regions_equal +=
                     usize::from(e.grand != t.grand && e.regions == t.regions);
+                let flag = &mut by_flag[usize::from(e.uncertain)];
+                flag.0 += 1;
+                flag.1 += usize::from(e.grand == t.grand);
                 frames += 1;
             }
         }
@@ -804,6 +818,9 @@ pub fn rula_agreement(
         region_confusion,
         grand_differs_with_regions_equal,
         frames,
+        uncertain_frames: by_flag[1].0,
+        grand_exact_uncertain: round6(by_flag[1].1 as f64 / by_flag[1].0.max(1) as f64),
+        grand_exact_certain: round6(by_flag[0].1 as f64 / by_flag[0].0.max(1) as f64),
         statures_m: statures_m.to_vec(),
     })
 }

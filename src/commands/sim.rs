@@ -487,6 +487,10 @@ fn print_agreement(r: &RulaAgreement) {
         "grand score differs with every region score equal (muscle use differs): {} frames",
         r.grand_differs_with_regions_equal
     );
+    println!(
+        "marked uncertain by the assessor: {} of {} frames; grand score exact {:.3} there, {:.3} elsewhere",
+        r.uncertain_frames, r.frames, r.grand_exact_uncertain, r.grand_exact_certain
+    );
 }
 
 // --------------------------------------------------------------------------------------------
