@@ -223,7 +223,8 @@ pub const BONES: [(Landmark, Landmark); 12] = [
 pub struct LandmarkEstimate {
     /// Position in the world frame, metres.
     pub position_m: Point3<f64>,
-    /// Tracking confidence in `0..=1` (from the detector's confidences and how many views agreed).
+    /// Tracking confidence in `0..=1`: for a fused landmark, the confidences of the views that placed
+    /// it, each weighted by itself (as the triangulator weights the views).
     pub confidence: f64,
     /// Root-mean-square reprojection error over the views used, pixels (`None` when not applicable,
     /// e.g. a ground-truth skeleton).
