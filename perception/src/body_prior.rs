@@ -107,7 +107,7 @@ pub struct BonePriorParams {
 
 impl Default for BonePriorParams {
     /// 1.5 cm about the median of the last 600 frames (20 s at 30 Hz), used from the 10th frame on;
-    /// 4 sweeps (the caliscope figures change by < 0.02 percentage points beyond that).
+    /// 6 sweeps (the caliscope figures change by < 0.02 percentage points beyond that).
     fn default() -> Self {
         Self {
             sigma_m: 0.015,
