@@ -636,18 +636,31 @@ fn line_chart(
             .filter(|(_, y)| y.is_finite())
             .map(|(a, b)| (*a, *b))
             .collect();
-        let style = if *dashed {
-            color.stroke_width(1)
+        // Solid: the noisy pipeline; dashed: the ground truth (the legend draws the same).
+        if *dashed {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    pts.clone(),
+                    7,
+                    5,
+                    color.stroke_width(2),
+                ))
+                .map_err(plot_err)?
+                .label(*name)
+                .legend(move |(x, y)| {
+                    EmptyElement::at((x, y))
+                        + PathElement::new(vec![(0, 0), (6, 0)], color.stroke_width(2))
+                        + PathElement::new(vec![(10, 0), (16, 0)], color.stroke_width(2))
+                });
         } else {
-            color.stroke_width(3)
-        };
-        chart
-            .draw_series(LineSeries::new(pts.clone(), style))
-            .map_err(plot_err)?
-            .label(*name)
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(3))
-            });
+            chart
+                .draw_series(LineSeries::new(pts.clone(), color.stroke_width(3)))
+                .map_err(plot_err)?
+                .label(*name)
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(3))
+                });
+        }
         chart
             .draw_series(pts.iter().map(|p| Circle::new(*p, 3, color.filled())))
             .map_err(plot_err)?;
