@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Regenerates docs/sim/ (issue 5): the four experiments of the digital twin at seed 1 with every default,
+# their JSON and SVG figures. The same seed gives byte-identical files, so after a change that moves a
+# number, rerun this and commit what changed; CI (`.ci/run`) fails when the committed files differ from
+# what the code produces.
+#   docs/sim/make.sh            regenerate docs/sim/
+#   docs/sim/make.sh --check    regenerate into a temporary folder and compare its JSON (the numbers;
+#                               the SVGs are drawn from them) with docs/sim/
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+bin=${ERGOCELL_BIN:-target/release/ergocell}
+[ -n "${ERGOCELL_BIN:-}" ] || cargo build --release --locked -p ergocell
+out=docs/sim
+if [ "${1:-}" = "--check" ]; then
+  out=$(mktemp -d)
+  trap 'rm -rf "$out"' EXIT
+fi
+for experiment in table1 adaptation height rula-agreement; do
+  "$bin" sim "$experiment" --seed 1 --out-dir "$out" >/dev/null
+done
+if [ "$out" != docs/sim ]; then
+  status=0
+  for f in "$out"/*.json; do
+    if ! cmp -s "$f" "docs/sim/$(basename "$f")"; then
+      echo "docs/sim/$(basename "$f") differs from what the code produces: run docs/sim/make.sh and commit" >&2
+      status=1
+    fi
+  done
+  [ "$status" = 0 ] && echo "docs/sim: the committed JSON is what the code produces (seed 1)"
+  exit "$status"
+fi
