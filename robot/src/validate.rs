@@ -52,8 +52,16 @@ pub mod grasp_posture {
     ];
 }
 
-/// Where one handover point suits every operator of a class: height and forward distance of the grasp
-/// point, and the largest lateral offset, in the station frame (metres).
+/// Where one handover point may lie for a class: height and forward distance of the grasp point, and
+/// the largest lateral offset, in the station frame (metres).
+///
+/// Each coordinate is within what some posture of the [`grasp_posture`] zone reaches for every
+/// stature of the class: a necessary condition, checked coordinate by coordinate. It is not
+/// sufficient: one operator's reachable set in the zone is not a box (its low-far and high-near
+/// corners are out of reach), so a point inside the band can need an elbow a little outside 60–100°
+/// or a forearm a little above level for some stature. [`ArmPosture::holding`] says which;
+/// the validation report lists it at both ends and the middle of the class, and the RULA outcome is
+/// what the digital twin measures (`ergocell sim adaptation`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct GraspBand {
     /// Height above the floor, [low, high]; empty when low > high.
@@ -71,6 +79,59 @@ impl GraspBand {
         (self.height_m[0]..=self.height_m[1]).contains(&height_m)
             && (self.forward_m[0]..=self.forward_m[1]).contains(&forward_m)
             && lateral_m.abs() <= self.lateral_max_m
+    }
+}
+
+/// One operator's arm holding a point, in the sagittal plane the band is derived in: shoulder joint at
+/// 0.818 H on the shoulder line, upper arm 0.186 H, forearm + half hand 0.200 H, elbow below the line
+/// from shoulder to hand (angles in radians, as in [`grasp_posture`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ArmPosture {
+    pub stature_m: f64,
+    pub upper_arm_flexion_rad: f64,
+    pub forearm_below_horizontal_rad: f64,
+    pub elbow_flexion_rad: f64,
+}
+
+impl ArmPosture {
+    /// The posture holding a point `forward_m` ahead of the shoulder line and `height_m` above the
+    /// floor; `None` when the two-link arm cannot reach it or an input is not finite.
+    pub fn holding(stature_m: f64, forward_m: f64, height_m: f64) -> Option<Self> {
+        use anthropometry::{FOREARM, HAND, SHOULDER, UPPER_ARM};
+        let (a, b) = (UPPER_ARM * stature_m, (FOREARM + 0.5 * HAND) * stature_m);
+        let (dx, dz) = (forward_m, SHOULDER * stature_m - height_m);
+        let d = dx.hypot(dz);
+        if !(d.is_finite() && d > 1e-9 && d <= a + b && d >= (a - b).abs()) {
+            return None;
+        }
+        // d² = a² + b² + 2ab·cos(elbow flexion); the upper arm sits β below the shoulder–hand line.
+        let elbow = ((d * d - a * a - b * b) / (2.0 * a * b))
+            .clamp(-1.0, 1.0)
+            .acos();
+        let beta = ((a * a + d * d - b * b) / (2.0 * a * d))
+            .clamp(-1.0, 1.0)
+            .acos();
+        let upper = dx.atan2(dz) - beta;
+        Some(Self {
+            stature_m,
+            upper_arm_flexion_rad: upper,
+            forearm_below_horizontal_rad: std::f64::consts::FRAC_PI_2 - upper - elbow,
+            elbow_flexion_rad: elbow,
+        })
+    }
+
+    /// Whether every angle lies in the [`grasp_posture`] zone (edges included, to 1e-9 rad).
+    pub fn in_zone(&self) -> bool {
+        use grasp_posture::{
+            ELBOW_FLEXION_RAD, FOREARM_BELOW_HORIZONTAL_RAD, UPPER_ARM_FLEXION_RAD,
+        };
+        let within = |[lo, hi]: [f64; 2], x: f64| (lo - 1e-9..=hi + 1e-9).contains(&x);
+        within(UPPER_ARM_FLEXION_RAD, self.upper_arm_flexion_rad)
+            && within(
+                FOREARM_BELOW_HORIZONTAL_RAD,
+                self.forearm_below_horizontal_rad,
+            )
+            && within(ELBOW_FLEXION_RAD, self.elbow_flexion_rad)
     }
 }
 
@@ -198,6 +259,9 @@ pub struct HandoverCheck {
     pub forward_band_m: [f64; 2],
     pub lateral_max_m: f64,
     pub inside_band: bool,
+    /// The planar arm holding the target at the class's shortest, middle and tallest stature
+    /// (information for the reviewer; `None` where the arm cannot reach it). See [`GraspBand`].
+    pub arm_postures: Vec<(f64, Option<ArmPosture>)>,
     /// FK of the final knot against the target.
     pub fk_position_error_m: f64,
     pub fk_orientation_error_rad: f64,
@@ -885,6 +949,15 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
             forward_band_m,
             lateral_max_m,
             inside_band,
+            arm_postures: [h_min, 0.5 * (h_min + h_max), h_max]
+                .into_iter()
+                .map(|stature| {
+                    (
+                        stature,
+                        ArmPosture::holding(stature, h.forward_m, h.height_m),
+                    )
+                })
+                .collect(),
             fk_position_error_m: fk_dp,
             fk_orientation_error_rad: fk_dr,
         },
@@ -1056,6 +1129,31 @@ impl fmt::Display for ValidationReport {
             h.fk_position_error_m * 1e3,
             h.fk_orientation_error_rad.to_degrees()
         )?;
+        for (stature, posture) in &h.arm_postures {
+            match posture {
+                Some(p) => writeln!(
+                    f,
+                    "  arm of a {stature:.2} m operator holding it (planar model): upper arm {:.1}°, forearm {:.1}° {} level, elbow {:.1}°{}",
+                    p.upper_arm_flexion_rad.to_degrees(),
+                    p.forearm_below_horizontal_rad.to_degrees().abs(),
+                    if p.forearm_below_horizontal_rad < 0.0 {
+                        "above"
+                    } else {
+                        "below"
+                    },
+                    p.elbow_flexion_rad.to_degrees(),
+                    if p.in_zone() {
+                        ""
+                    } else {
+                        " (outside the zone: upper arm 0–20°, forearm 0–20° down, elbow 60–100°)"
+                    }
+                )?,
+                None => writeln!(
+                    f,
+                    "  arm of a {stature:.2} m operator holding it (planar model): out of reach"
+                )?,
+            }
+        }
         let b = &self.boundary;
         writeln!(
             f,
