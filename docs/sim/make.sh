@@ -20,6 +20,11 @@ for experiment in table1 adaptation height rula-agreement; do
 done
 if [ "$out" != docs/sim ]; then
   status=0
+  if ! diff <(cd "$out" && ls -- *.json) <(cd docs/sim && ls -- *.json) >/dev/null; then
+    echo "docs/sim holds other JSON files than the experiments write:" >&2
+    diff <(cd "$out" && ls -- *.json) <(cd docs/sim && ls -- *.json) >&2 || true
+    status=1
+  fi
   for f in "$out"/*.json; do
     if ! cmp -s "$f" "docs/sim/$(basename "$f")"; then
       echo "docs/sim/$(basename "$f") differs from what the code produces: run docs/sim/make.sh and commit" >&2

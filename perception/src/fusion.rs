@@ -499,8 +499,8 @@ impl FusionEngine {
         }
         let estimate = LandmarkEstimate {
             position_m: p,
-            // The views' confidences, each counted by the weight the triangulator gave its view (its
-            // confidence): how sure the detector was of the views that place the point. A plain mean
+            // The views' confidences, each weighted by itself (the robust triangulator also weights each
+            // view by its confidence): how sure the detector was of the views that place the point. A plain mean
             // lets occluded guesses the triangulator hardly listened to make a well-placed landmark
             // look unsure (twin, 3 px: 39 % of frames "uncertain", mostly the right ear, and those
             // frames scored as well as the rest).

@@ -696,7 +696,8 @@ pub struct RulaAgreement {
     /// Frames scored by both.
     pub frames: usize,
     /// Of those, the frames whose pipeline score the assessor marked uncertain, and the grand score's
-    /// exact agreement among them and among the rest: whether the flag tells the reviewer anything.
+    /// exact agreement among them and among the rest (NaN, `null` in JSON, for an empty group):
+    /// whether the flag tells the reviewer anything.
     pub uncertain_frames: usize,
     pub grand_exact_uncertain: f64,
     pub grand_exact_certain: f64,
@@ -800,6 +801,14 @@ pub fn rula_agreement(
         }
         progress(i + 1, statures_m.len());
     }
+    // NaN (null in JSON) when no frame is in the group: no agreement to report.
+    let share = |(n, same): (usize, usize)| {
+        if n == 0 {
+            f64::NAN
+        } else {
+            round6(same as f64 / n as f64)
+        }
+    };
     Ok(RulaAgreement {
         grand_score: agreement(grand),
         action_level: agreement(level),
@@ -819,8 +828,8 @@ pub fn rula_agreement(
         grand_differs_with_regions_equal,
         frames,
         uncertain_frames: by_flag[1].0,
-        grand_exact_uncertain: round6(by_flag[1].1 as f64 / by_flag[1].0.max(1) as f64),
-        grand_exact_certain: round6(by_flag[0].1 as f64 / by_flag[0].0.max(1) as f64),
+        grand_exact_uncertain: share(by_flag[1]),
+        grand_exact_certain: share(by_flag[0]),
         statures_m: statures_m.to_vec(),
     })
 }

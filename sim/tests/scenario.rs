@@ -172,9 +172,10 @@ fn the_camera_behind_the_operator_sees_fewer_landmarks_than_a_front_one() {
 fn handovers() -> ergocell_sim::experiments::Handovers {
     ergocell_sim::experiments::Handovers {
         before_m: c2_handover(),
-        // trajectories/c1.toml, c3.toml (station frame = world frame in these tests)
+        // trajectories/c1..c3.toml (station frame = world frame in these tests); before: the point
+        // set for a 1.75 m operator (`--before-handover`'s default)
         c1_m: Point3::new(0.394, -0.10, 0.963),
-        c2_m: c2_handover(),
+        c2_m: Point3::new(0.410, -0.10, 1.080),
         c3_m: Point3::new(0.478, -0.10, 1.169),
         c1_stature_m: [1.50, 1.68],
         c2_stature_m: [1.68, 1.82],

@@ -223,8 +223,8 @@ pub const BONES: [(Landmark, Landmark); 12] = [
 pub struct LandmarkEstimate {
     /// Position in the world frame, metres.
     pub position_m: Point3<f64>,
-    /// Tracking confidence in `0..=1`: for a fused landmark, the confidences of the views that placed
-    /// it, each weighted by itself (as the triangulator weights the views).
+    /// Tracking confidence in `0..=1`: for a fused landmark, the mean of its views' detector
+    /// confidences, each weighted by itself (the robust triangulator also weights views by confidence).
     pub confidence: f64,
     /// Root-mean-square reprojection error over the views used, pixels (`None` when not applicable,
     /// e.g. a ground-truth skeleton).

@@ -12,7 +12,7 @@
 //! The handover points come from `trajectories/c1..c3.toml` (station frame) placed in the world with
 //! `config/cell.toml`'s `[station]`. "Before adaptation" is one point for everyone, set for a 1.75 m
 //! operator: (0.410, −0.100, 1.055) m, the middle of the Grandjean band (upper arm 10–15°) for c2's
-//! statures, which was c2's handover until c2 moved to its band's high, far corner (2026-11). It is
+//! statures, which was c2's handover until c2 moved to its band's top edge (2026-11). It is
 //! fixed here so that moving a class's point does not move the baseline it is compared with.
 
 use std::io::Write;
@@ -96,8 +96,9 @@ pub struct Common {
     /// Handover cycles per operator (default 5).
     #[arg(long, global = true, default_value_t = 5)]
     pub cycles: usize,
-    /// adaptation: the handover point before adaptation, station frame `forward,lateral,height`
-    /// (metres). Default: the point the cell used for everyone, set for a 1.75 m operator.
+    /// The handover point before adaptation, station frame `forward,lateral,height` (metres); also
+    /// where the operators of `height` and `rula-agreement` stand and reach. Default: the point the
+    /// cell used for everyone, set for a 1.75 m operator.
     #[arg(long, global = true, value_parser = parse_point, default_value = "0.410,-0.100,1.055")]
     pub before_handover: [f64; 3],
     /// adaptation: also record an operator of this stature (metres) before and after as two session
