@@ -154,7 +154,9 @@ impl BoneHistory {
         self.sum_along += sample.2;
         if self.order.len() > window {
             if let Some((l, corrected, along)) = self.order.pop_front() {
-                if let Some(i) = self.sorted.iter().position(|x| *x == corrected) {
+                // The sorted window holds this exact value: find it by bisection, not a scan.
+                let i = self.sorted.partition_point(|x| *x < corrected);
+                if self.sorted.get(i) == Some(&corrected) {
                     self.sorted.remove(i);
                 }
                 self.sum_l -= l;
