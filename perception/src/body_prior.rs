@@ -230,16 +230,14 @@ impl BonePrior {
         points: &[Option<Point3<f64>>; LANDMARK_COUNT],
         information: &[Matrix3<f64>; LANDMARK_COUNT],
     ) {
-        let covariance: Vec<Option<Matrix3<f64>>> = information
-            .iter()
-            .map(|l| {
-                if *l == Matrix3::zeros() {
-                    Some(Matrix3::zeros())
-                } else {
-                    l.try_inverse().filter(|c| c.iter().all(|v| v.is_finite()))
-                }
-            })
-            .collect();
+        let covariance: [Option<Matrix3<f64>>; LANDMARK_COUNT] = std::array::from_fn(|i| {
+            let l = information[i];
+            if l == Matrix3::zeros() {
+                Some(Matrix3::zeros())
+            } else {
+                l.try_inverse().filter(|c| c.iter().all(|v| v.is_finite()))
+            }
+        });
         for (b, (a, c)) in RIGID.iter().enumerate() {
             let (Some(pa), Some(pc)) = (points[a.index()], points[c.index()]) else {
                 continue;
