@@ -142,24 +142,22 @@ fn without_a_floor_pick_the_session_is_unchanged_and_with_one_only_shifted() {
         }
     }
     // the pick is validated
-    let mut script = *picking.script();
-    script.floor_pick = Some(FloorPick::new(3));
-    assert!(Simulation::new(
-        reference_rig(),
-        Operator::new(1.75).unwrap(),
-        script,
-        SimConfig::new(1)
-    )
-    .is_err());
-    script.floor_pick = Some(FloorPick {
-        hold_secs: f64::NAN,
-        ..FloorPick::new(2)
-    });
-    assert!(Simulation::new(
-        reference_rig(),
-        Operator::new(1.75).unwrap(),
-        script,
-        SimConfig::new(1)
-    )
-    .is_err());
+    let bad = [
+        FloorPick::new(3),
+        FloorPick {
+            hold_secs: f64::NAN,
+            ..FloorPick::new(2)
+        },
+    ];
+    for pick in bad {
+        let mut script = *picking.script();
+        script.floor_pick = Some(pick);
+        assert!(Simulation::new(
+            reference_rig(),
+            Operator::new(1.75).unwrap(),
+            script,
+            SimConfig::new(1)
+        )
+        .is_err());
+    }
 }
