@@ -427,16 +427,24 @@ impl FrameAssessment {
     }
 
     /// The worse side (higher grand score; ties go to the uncertain one, then the right), the
-    /// headline of the frame.
+    /// headline of the frame. See [`headline_side`].
     pub fn headline(&self) -> Option<&SideAssessment> {
-        match (&self.left, &self.right) {
-            (Some(l), Some(r)) => {
-                let key = |s: &SideAssessment| (s.scores.final_score, s.uncertain);
-                Some(if key(l) > key(r) { l } else { r })
-            }
-            (Some(l), None) => Some(l),
-            (None, r) => r.as_ref(),
-        }
+        let key = |s: &SideAssessment| (s.scores.final_score, s.uncertain);
+        headline_side(self.left.as_ref().map(key), self.right.as_ref().map(key))
+            .and_then(|side| self.side(side))
+    }
+}
+
+/// Which side is a frame's headline, from each scored side's `(grand score, uncertain)` (`None`: not
+/// scored): the higher grand score; on a tie the uncertain side, then the right. The one rule for
+/// [`FrameAssessment::headline`] and for summaries read back from a recording
+/// ([`crate::summary`]).
+pub fn headline_side(left: Option<(u8, bool)>, right: Option<(u8, bool)>) -> Option<Side> {
+    match (left, right) {
+        (Some(l), Some(r)) => Some(if l > r { Side::Left } else { Side::Right }),
+        (Some(_), None) => Some(Side::Left),
+        (None, Some(_)) => Some(Side::Right),
+        (None, None) => None,
     }
 }
 
@@ -766,7 +774,9 @@ impl RulaAssessor {
     }
 }
 
-/// A body region for summaries and warnings.
+/// The RULA body regions, the one table of them: summaries ([`crate::summary`]), warnings
+/// ([`crate::warnings`]), the simulator's experiments and the offline review all use it. The arm
+/// regions are scored per side ([`BodyRegion::is_sided`]); neck, trunk and legs once for the body.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BodyRegion {
@@ -808,6 +818,64 @@ impl BodyRegion {
         )
     }
 
+    /// The highest score RULA gives the region, every adjustment included (see [`crate::rula`]):
+    /// upper arm 6, lower arm 3, wrist 4, neck 6, trunk 6, legs 2. The lowest is 1.
+    pub const fn max_score(self) -> u8 {
+        match self {
+            BodyRegion::UpperArm | BodyRegion::Neck | BodyRegion::Trunk => 6,
+            BodyRegion::LowerArm => 3,
+            BodyRegion::Wrist => 4,
+            BodyRegion::Legs => 2,
+        }
+    }
+
+    /// The region whose score a landmark stands for (the review colours each joint by it), and the
+    /// side whose worksheet scores it: the landmark's own side ([`Landmark::side`]) for the arm
+    /// regions, `None` for neck, trunk and legs (scored once for the body). Face → neck, shoulders →
+    /// upper arm, elbows → lower arm, wrists and hands → wrist, hips → trunk, knees, ankles and feet →
+    /// legs.
+    pub const fn of_landmark(landmark: Landmark) -> (BodyRegion, Option<Side>) {
+        use Landmark as L;
+        let region = match landmark {
+            L::Nose
+            | L::LeftEyeInner
+            | L::LeftEye
+            | L::LeftEyeOuter
+            | L::RightEyeInner
+            | L::RightEye
+            | L::RightEyeOuter
+            | L::LeftEar
+            | L::RightEar
+            | L::MouthLeft
+            | L::MouthRight => BodyRegion::Neck,
+            L::LeftShoulder | L::RightShoulder => BodyRegion::UpperArm,
+            L::LeftElbow | L::RightElbow => BodyRegion::LowerArm,
+            L::LeftWrist
+            | L::RightWrist
+            | L::LeftPinky
+            | L::RightPinky
+            | L::LeftIndex
+            | L::RightIndex
+            | L::LeftThumb
+            | L::RightThumb => BodyRegion::Wrist,
+            L::LeftHip | L::RightHip => BodyRegion::Trunk,
+            L::LeftKnee
+            | L::RightKnee
+            | L::LeftAnkle
+            | L::RightAnkle
+            | L::LeftHeel
+            | L::RightHeel
+            | L::LeftFootIndex
+            | L::RightFootIndex => BodyRegion::Legs,
+        };
+        let side = if region.is_sided() {
+            landmark.side()
+        } else {
+            None
+        };
+        (region, side)
+    }
+
     /// The region's score (after adjustments) in a breakdown.
     pub fn score(self, s: &RulaScores) -> u8 {
         match self {
@@ -821,127 +889,70 @@ impl BodyRegion {
     }
 }
 
-/// Time shares of one region's scores.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct RegionShare {
-    pub region: BodyRegion,
-    pub side: Option<Side>,
-    /// `(score, share of scored time)`, by ascending score.
-    pub share_by_score: Vec<(u8, f64)>,
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rula::{score_worksheet, RulaInput, GRAND_SCORE_MAX};
 
-/// Summary of a session: time share per action level (of the headline side) and per region score.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SessionSummary {
-    pub frames: usize,
-    pub scored_frames: usize,
-    pub uncertain_frames: usize,
-    pub duration_secs: f64,
-    /// Share of scored time at action level 1..=4.
-    pub action_level_share: [f64; 4],
-    /// Share of the whole time with no score.
-    pub unscored_share: f64,
-    pub regions: Vec<RegionShare>,
-}
-
-/// Accumulates a [`SessionSummary`]. Each frame stands for the time until the next frame (capped at
-/// `max_frame_nanos`, so a gap in the recording is not attributed to the frame before it); the last
-/// frame stands for the median frame interval.
-#[derive(Debug, Clone)]
-pub struct SummaryBuilder {
-    max_frame_nanos: i64,
-    entries: Vec<SummaryEntry>,
-}
-
-/// One frame in a summary: stamp, headline (action level, uncertain), region scores.
-type SummaryEntry = (i64, Option<(u8, bool)>, Vec<(BodyRegion, Option<Side>, u8)>);
-
-impl SummaryBuilder {
-    pub fn new(max_frame_nanos: i64) -> Self {
-        Self {
-            max_frame_nanos,
-            entries: Vec::new(),
-        }
-    }
-
-    pub fn add(&mut self, frame: &FrameAssessment) {
-        let head = frame
-            .headline()
-            .map(|h| (h.scores.action_level, h.uncertain));
-        let mut regions = Vec::new();
-        for region in BodyRegion::ALL {
+    #[test]
+    fn every_landmark_stands_for_the_region_of_its_body_part_on_its_own_side() {
+        use Landmark as L;
+        let of = BodyRegion::of_landmark;
+        assert_eq!(
+            of(L::LeftShoulder),
+            (BodyRegion::UpperArm, Some(Side::Left))
+        );
+        assert_eq!(
+            of(L::RightShoulder),
+            (BodyRegion::UpperArm, Some(Side::Right))
+        );
+        assert_eq!(of(L::LeftElbow), (BodyRegion::LowerArm, Some(Side::Left)));
+        assert_eq!(of(L::RightWrist), (BodyRegion::Wrist, Some(Side::Right)));
+        assert_eq!(of(L::LeftPinky), (BodyRegion::Wrist, Some(Side::Left)));
+        assert_eq!(of(L::RightThumb), (BodyRegion::Wrist, Some(Side::Right)));
+        assert_eq!(of(L::Nose), (BodyRegion::Neck, None));
+        assert_eq!(of(L::MouthLeft), (BodyRegion::Neck, None));
+        assert_eq!(of(L::LeftHip), (BodyRegion::Trunk, None));
+        assert_eq!(of(L::RightFootIndex), (BodyRegion::Legs, None));
+        for lm in Landmark::ALL {
+            let (region, side) = of(lm);
+            assert_eq!(side.is_some(), region.is_sided(), "{lm}");
             if region.is_sided() {
-                for side in Side::BOTH {
-                    if let Some(s) = frame.side(side) {
-                        regions.push((region, Some(side), region.score(&s.scores)));
-                    }
-                }
-            } else if let Some(h) = frame.headline() {
-                regions.push((region, None, region.score(&h.scores)));
+                assert_eq!(side, lm.side(), "{lm}");
             }
+            let (mirror_region, mirror_side) = of(lm.mirrored());
+            assert_eq!(mirror_region, region, "{lm}");
+            assert_eq!(mirror_side, side.map(Side::other), "{lm}");
         }
-        self.entries.push((frame.stamp_nanos, head, regions));
     }
 
-    pub fn finish(&self) -> SessionSummary {
-        let n = self.entries.len();
-        let mut gaps: Vec<i64> = self
-            .entries
-            .windows(2)
-            .map(|w| (w[1].0 - w[0].0).clamp(0, self.max_frame_nanos))
-            .collect();
-        let mut sorted = gaps.clone();
-        sorted.sort_unstable();
-        let last = sorted.get(sorted.len() / 2).copied().unwrap_or(1).max(1);
-        gaps.push(last);
-        let total: f64 = gaps.iter().map(|&g| g as f64).sum();
-        let mut level = [0.0; 4];
-        let mut scored = 0.0;
-        let mut unscored = 0.0;
-        let mut region_time: std::collections::BTreeMap<
-            (BodyRegion, Option<Side>),
-            std::collections::BTreeMap<u8, f64>,
-        > = std::collections::BTreeMap::new();
-        let mut scored_frames = 0;
-        let mut uncertain_frames = 0;
-        for ((_, head, regions), &dt) in self.entries.iter().zip(&gaps) {
-            let dt = dt as f64;
-            match head {
-                Some((al, uncertain)) => {
-                    scored_frames += 1;
-                    uncertain_frames += usize::from(*uncertain);
-                    scored += dt;
-                    level[usize::from(al.clamp(&1, &4) - 1)] += dt;
-                }
-                None => unscored += dt,
-            }
-            for (region, side, score) in regions {
-                *region_time
-                    .entry((*region, *side))
-                    .or_default()
-                    .entry(*score)
-                    .or_default() += dt;
-            }
+    #[test]
+    fn the_worst_worksheet_reaches_every_regions_maximum_and_the_neutral_one_its_minimum() {
+        let worst = RulaInput {
+            upper_arm_flexion_deg: 120.0,
+            shoulder_raised: true,
+            upper_arm_abducted: true,
+            lower_arm_flexion_deg: 120.0,
+            lower_arm_across_midline_or_out_to_side: true,
+            wrist_flexion_deg: 30.0,
+            wrist_bent_from_midline: true,
+            neck_flexion_deg: -5.0,
+            neck_twisted: true,
+            neck_side_bending: true,
+            trunk_flexion_deg: 70.0,
+            trunk_twisted: true,
+            trunk_side_bending: true,
+            legs_supported_and_balanced: false,
+            ..RulaInput::neutral()
+        };
+        let scores = score_worksheet(&worst).unwrap().scores;
+        for region in BodyRegion::ALL {
+            assert_eq!(region.score(&scores), region.max_score(), "{region:?}");
         }
-        let share = |x: f64, of: f64| if of > 0.0 { x / of } else { 0.0 };
-        SessionSummary {
-            frames: n,
-            scored_frames,
-            uncertain_frames,
-            duration_secs: total * 1e-9,
-            action_level_share: level.map(|x| share(x, scored)),
-            unscored_share: share(unscored, total),
-            regions: region_time
-                .into_iter()
-                .map(|((region, side), by)| {
-                    let sum: f64 = by.values().sum();
-                    RegionShare {
-                        region,
-                        side,
-                        share_by_score: by.into_iter().map(|(s, t)| (s, share(t, sum))).collect(),
-                    }
-                })
-                .collect(),
+        assert_eq!(scores.final_score, GRAND_SCORE_MAX);
+        let neutral = score_worksheet(&RulaInput::neutral()).unwrap().scores;
+        for region in BodyRegion::ALL {
+            assert_eq!(region.score(&neutral), 1, "{region:?}");
         }
     }
 }

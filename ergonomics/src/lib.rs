@@ -10,6 +10,8 @@
 //! - [`height`]: stature from upright frames with two anthropometric estimators, and the height class
 //!   decision at session start.
 //! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.
+//! - [`summary`]: a session's time-weighted shares per action level, body-region score and grand
+//!   score — the one computation behind `ergocell rula track`'s summary and the offline review.
 //! - [`pose`]: synthetic skeletons posed to known angles, for tests and benchmarks.
 //!
 //! Depends only on [`ergocell_skeleton`]; knows nothing of cameras, ROS or the robot, and does no I/O:
@@ -22,6 +24,7 @@ pub mod assess;
 pub mod height;
 pub mod pose;
 pub mod rula;
+pub mod summary;
 pub mod tables;
 pub mod warnings;
 
@@ -31,26 +34,9 @@ pub use height::{HeightClass, HeightConfig, HeightDecision, HeightEstimator, Hei
 pub use rula::{score_worksheet, RulaInput, RulaScores, WristTwist};
 pub use warnings::{WarningConfig, WarningEvent, WarningTracker};
 
-/// Which side of the body (the person's own left and right).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Side {
-    Left,
-    Right,
-}
-
-impl Side {
-    /// Both sides, left first.
-    pub const BOTH: [Side; 2] = [Side::Left, Side::Right];
-
-    /// "left" / "right".
-    pub const fn name(self) -> &'static str {
-        match self {
-            Side::Left => "left",
-            Side::Right => "right",
-        }
-    }
-}
+/// Which side of the body (the person's own left and right): the skeleton's, so a landmark's side
+/// ([`ergocell_skeleton::Landmark::side`]) and a worksheet's side are one type.
+pub use ergocell_skeleton::Side;
 
 /// Everything that can go wrong in this crate. Outcomes (an undecided height class, an uncertain
 /// score) are not errors; they are values.

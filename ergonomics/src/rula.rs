@@ -337,6 +337,9 @@ pub fn legs_score(supported_and_balanced: bool) -> u8 {
     }
 }
 
+/// The highest grand score (Table C's largest entry); the lowest is 1.
+pub const GRAND_SCORE_MAX: u8 = 7;
+
 /// Action level of a grand score: 1–2 → 1, 3–4 → 2, 5–6 → 3, 7 → 4.
 pub fn action_level(final_score: u8) -> u8 {
     match final_score {

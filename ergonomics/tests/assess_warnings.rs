@@ -5,9 +5,10 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use ergocell_ergonomics::assess::{
-    AngleSmoother, BodyRegion, InputSource, MuscleUseConfig, MuscleUseTracker, SummaryBuilder,
+    AngleSmoother, BodyRegion, InputSource, MuscleUseConfig, MuscleUseTracker,
 };
 use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
+use ergocell_ergonomics::summary::SummaryBuilder;
 use ergocell_ergonomics::warnings::WarningKind;
 use ergocell_ergonomics::{
     AssessmentConfig, ErgonomicsError, FrameAssessment, RulaAssessor, Side, TaskConfig, UpVector,

@@ -1,14 +1,22 @@
 //! The recording's messages → the review's numbers ([`ReviewData`], the page's JSON, `version` 1).
 //!
 //! Frames are the recorded `OperatorPose` messages; each is joined with the `ErgonomicState` of the
-//! same log time (the session records both from one fused frame). Strain per landmark is the RULA
-//! band of the body region the landmark belongs to, scaled to 0..1 by that region's score range
-//! (shoulders → upper arm 1–6, elbows → lower arm 1–3, wrists and hands → wrist 1–4, face → neck 1–6,
-//! hips → trunk 1–6, knees, ankles and feet → legs 1–2). Angles are turned into degrees here, the
-//! report boundary.
+//! same capture stamp (the session records both from one fused frame). Strain per landmark is the
+//! RULA band of the body region the landmark stands for, on its own side
+//! ([`BodyRegion::of_landmark`]), scaled to 0..1 by that region's score range
+//! ([`BodyRegion::max_score`]). The lines drawn are the skeleton crate's [`DRAWN_BONES`]. The
+//! per-region rows are `ergocell rula track`'s summary ([`ergocell_ergonomics::summary`]) of the
+//! recorded scores: time-weighted, gaps not counted, so the two report the same numbers for one
+//! session. Angles are turned into degrees here, the report boundary.
 
 use ergocell_bridge::msg::{ErgonomicState, RulaSide, SessionState};
-use ergocell_skeleton::{Landmark, LANDMARK_COUNT};
+use ergocell_ergonomics::assess::BodyRegion;
+use ergocell_ergonomics::rula::{RulaScores, GRAND_SCORE_MAX};
+use ergocell_ergonomics::summary::{
+    GrandScoreShare, RegionShare, ScoredSide, SessionSummary, SummaryBuilder,
+    DEFAULT_MAX_FRAME_NANOS,
+};
+use ergocell_skeleton::{Landmark, Side, DRAWN_BONES, LANDMARK_COUNT};
 use serde::Serialize;
 
 use crate::read::{Recording, Stamped};
@@ -124,17 +132,20 @@ pub struct Warning {
     pub message: String,
 }
 
-/// One body region's scores over the scored frames.
+/// One body region's scores (or one side's grand score) over the time it was scored, from
+/// [`ergocell_ergonomics::summary`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RegionStats {
-    pub name: &'static str,
-    /// "left", "right", or "" for the neck, trunk and legs (scored the same on both sides).
+    /// The region's name in words ("upper arm"), or "grand score".
+    pub name: String,
+    /// "left", "right", or "" for the neck, trunk and legs (scored once for the body).
     pub side: &'static str,
     pub max_score: u8,
-    /// Mean score; `None` when never scored.
+    /// Time-weighted mean score; `None` when never scored.
     pub mean: Option<f64>,
-    /// Share of the scored frames at score 1..=max_score.
+    /// Share of the scored time at score 1..=max_score (time-weighted, gaps not counted).
     pub time_share: Vec<f64>,
+    /// Frames in which it was scored.
     pub samples: usize,
 }
 
@@ -154,153 +165,8 @@ pub struct AngleStats {
     pub score_edges_deg: Vec<f64>,
 }
 
-/// MediaPipe's `POSE_CONNECTIONS`: the lines drawn between BlazePose landmarks.
-pub const DRAWN_BONES: [[usize; 2]; 35] = [
-    [0, 1],
-    [1, 2],
-    [2, 3],
-    [3, 7],
-    [0, 4],
-    [4, 5],
-    [5, 6],
-    [6, 8],
-    [9, 10],
-    [11, 12],
-    [11, 13],
-    [13, 15],
-    [15, 17],
-    [15, 19],
-    [15, 21],
-    [17, 19],
-    [12, 14],
-    [14, 16],
-    [16, 18],
-    [16, 20],
-    [16, 22],
-    [18, 20],
-    [11, 23],
-    [12, 24],
-    [23, 24],
-    [23, 25],
-    [24, 26],
-    [25, 27],
-    [26, 28],
-    [27, 29],
-    [28, 30],
-    [29, 31],
-    [30, 32],
-    [27, 31],
-    [28, 32],
-];
-
-/// A RULA body region of one side's worksheet.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Region {
-    UpperArm,
-    LowerArm,
-    Wrist,
-    WristTwist,
-    Neck,
-    Trunk,
-    Legs,
-    Grand,
-}
-
-impl Region {
-    pub const ALL: [Region; 8] = [
-        Region::UpperArm,
-        Region::LowerArm,
-        Region::Wrist,
-        Region::WristTwist,
-        Region::Neck,
-        Region::Trunk,
-        Region::Legs,
-        Region::Grand,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Region::UpperArm => "upper arm",
-            Region::LowerArm => "lower arm",
-            Region::Wrist => "wrist",
-            Region::WristTwist => "wrist twist",
-            Region::Neck => "neck",
-            Region::Trunk => "trunk",
-            Region::Legs => "legs",
-            Region::Grand => "grand score",
-        }
-    }
-
-    /// The highest score RULA gives this region (McAtamney & Corlett 1993, with every adjustment).
-    pub fn max_score(self) -> u8 {
-        match self {
-            Region::UpperArm | Region::Neck | Region::Trunk => 6,
-            Region::LowerArm => 3,
-            Region::Wrist => 4,
-            Region::WristTwist | Region::Legs => 2,
-            Region::Grand => 7,
-        }
-    }
-
-    /// Scored the same for both sides (one body part).
-    fn is_central(self) -> bool {
-        matches!(self, Region::Neck | Region::Trunk | Region::Legs)
-    }
-
-    fn score(self, s: &RulaSide) -> u8 {
-        match self {
-            Region::UpperArm => s.upper_arm_score,
-            Region::LowerArm => s.lower_arm_score,
-            Region::Wrist => s.wrist_score,
-            Region::WristTwist => s.wrist_twist_score,
-            Region::Neck => s.neck_score,
-            Region::Trunk => s.trunk_score,
-            Region::Legs => s.legs_score,
-            Region::Grand => s.final_score,
-        }
-    }
-}
-
-/// Which side's worksheet a landmark's strain comes from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Sides {
-    Left,
-    Right,
-    /// The worse of the two (neck, trunk, legs).
-    Both,
-}
-
-/// The region (and side) whose score colours `landmark`.
-fn region_of(landmark: Landmark) -> (Region, Sides) {
-    let i = landmark.index();
-    // BlazePose: 1–3, 7, 9 are the left of the face; from 11 on, odd indices are the left side.
-    let left = if i <= 10 {
-        matches!(i, 1..=3 | 7 | 9)
-    } else {
-        i % 2 == 1
-    };
-    let side = match (i, left) {
-        (0, _) => Sides::Both,
-        (_, true) => Sides::Left,
-        (_, false) => Sides::Right,
-    };
-    let region = match i {
-        0..=10 => Region::Neck,
-        11 | 12 => Region::UpperArm,
-        13 | 14 => Region::LowerArm,
-        15..=22 => Region::Wrist,
-        23 | 24 => Region::Trunk,
-        _ => Region::Legs,
-    };
-    if region.is_central() {
-        (region, Sides::Both)
-    } else {
-        (region, side)
-    }
-}
-
 /// The strain of a region score, 0 (score 1) .. 1 (the region's maximum).
-fn strain_of(region: Region, score: u8) -> Option<f64> {
+fn strain_of(region: BodyRegion, score: u8) -> Option<f64> {
     if score == 0 {
         return None;
     }
@@ -312,18 +178,44 @@ fn scored(s: &RulaSide) -> Option<&RulaSide> {
     s.scored.then_some(s)
 }
 
+/// A recorded side as the summary reads it; `None` when not scored.
+fn scored_side(s: &RulaSide) -> Option<ScoredSide> {
+    scored(s).map(|s| ScoredSide {
+        scores: RulaScores {
+            upper_arm_score: s.upper_arm_score,
+            lower_arm_score: s.lower_arm_score,
+            wrist_score: s.wrist_score,
+            wrist_twist_score: s.wrist_twist_score,
+            posture_score_a: s.posture_score_a,
+            score_c_wrist_arm: s.score_c_wrist_arm,
+            neck_score: s.neck_score,
+            trunk_score: s.trunk_score,
+            legs_score: s.legs_score,
+            posture_score_b: s.posture_score_b,
+            score_d_neck_trunk_legs: s.score_d_neck_trunk_legs,
+            final_score: s.final_score,
+            action_level: s.action_level,
+        },
+        uncertain: s.uncertain,
+    })
+}
+
 /// Strain of every landmark in one frame.
 fn frame_strain(e: Option<&ErgonomicState>) -> Vec<Option<f64>> {
+    let (left, right) = e.map_or((None, None), |e| {
+        (scored_side(&e.left), scored_side(&e.right))
+    });
     Landmark::ALL
         .iter()
         .map(|&lm| {
-            let e = e?;
-            let (region, sides) = region_of(lm);
-            let of = |s: &RulaSide| scored(s).and_then(|s| strain_of(region, region.score(s)));
-            match sides {
-                Sides::Left => of(&e.left),
-                Sides::Right => of(&e.right),
-                Sides::Both => match (of(&e.left), of(&e.right)) {
+            let (region, side) = BodyRegion::of_landmark(lm);
+            let of =
+                |s: Option<ScoredSide>| s.and_then(|s| strain_of(region, region.score(&s.scores)));
+            match side {
+                Some(Side::Left) => of(left),
+                Some(Side::Right) => of(right),
+                // Scored once for the body: the worse of the two worksheets.
+                None => match (of(left), of(right)) {
                     (Some(a), Some(b)) => Some(a.max(b)),
                     (a, b) => a.or(b),
                 },
@@ -448,34 +340,18 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         ));
     }
 
-    // Regions over the scored frames of the recording (every ErgonomicState, whether or not its
-    // pose was recorded).
-    let mut regions = Vec::new();
-    for region in Region::ALL {
-        let sides: &[(&'static str, bool)] = if region.is_central() {
-            &[("", true)]
-        } else {
-            &[("left", true), ("right", false)]
-        };
-        for &(side_name, left) in sides {
-            let scores: Vec<u8> = ergonomics
-                .iter()
-                .filter_map(|e| {
-                    let e = &e.message;
-                    let s = if region.is_central() {
-                        scored(&e.right).or_else(|| scored(&e.left))
-                    } else if left {
-                        scored(&e.left)
-                    } else {
-                        scored(&e.right)
-                    }?;
-                    let v = region.score(s);
-                    (v >= 1).then_some(v)
-                })
-                .collect();
-            regions.push(region_stats(region, side_name, &scores));
-        }
+    // Regions over the scored time of the recording (every ErgonomicState, whether or not its
+    // pose was recorded), summarised as `ergocell rula track` does.
+    let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+    for e in &ergonomics {
+        let e = &e.message;
+        summary.add_scores(
+            e.header.stamp.to_nanos(),
+            scored_side(&e.left),
+            scored_side(&e.right),
+        );
     }
+    let regions = region_rows(&summary.finish());
 
     let angles = angle_samples
         .into_iter()
@@ -494,7 +370,10 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         },
         facts: facts(&rec.states, t0),
         landmarks: Landmark::ALL.iter().map(|l| l.name()).collect(),
-        bones: DRAWN_BONES.to_vec(),
+        bones: DRAWN_BONES
+            .iter()
+            .map(|(a, b)| [a.index(), b.index()])
+            .collect(),
         up: [0.0, 0.0, 1.0],
         frames,
         robot: robot(rec, t0),
@@ -525,24 +404,64 @@ fn header_or_log_time(h: &ergocell_bridge::msg::Header, log_time_nanos: u64) -> 
         .unwrap_or(log_time_nanos)
 }
 
-fn region_stats(region: Region, side: &'static str, scores: &[u8]) -> RegionStats {
-    let max = region.max_score();
-    let n = scores.len();
-    let mut counts = vec![0usize; usize::from(max)];
-    for &s in scores {
-        let i = usize::from(s.clamp(1, max) - 1);
-        counts[i] += 1;
+/// The page's rows: every body region (the arm regions per side), then each side's grand score,
+/// whether or not scored (a row never scored has no mean and no shares).
+fn region_rows(summary: &SessionSummary) -> Vec<RegionStats> {
+    let side_name = |side: Option<Side>| side.map_or("", Side::name);
+    let mut rows = Vec::new();
+    for region in BodyRegion::ALL {
+        let sides: &[Option<Side>] = if region.is_sided() {
+            &[Some(Side::Left), Some(Side::Right)]
+        } else {
+            &[None]
+        };
+        for &side in sides {
+            let share = summary.region(region, side);
+            rows.push(region_stats(
+                region.name().replace('_', " "),
+                side_name(side),
+                region.max_score(),
+                share.map_or(&[][..], |r| &r.share_by_score),
+                share.map_or(0, |r| r.frames),
+                share.and_then(RegionShare::mean_score),
+            ));
+        }
+    }
+    for side in Side::BOTH {
+        let share = summary.grand(side);
+        rows.push(region_stats(
+            "grand score".to_owned(),
+            side.name(),
+            GRAND_SCORE_MAX,
+            share.map_or(&[][..], |g| &g.share_by_score),
+            share.map_or(0, |g| g.frames),
+            share.and_then(GrandScoreShare::mean_score),
+        ));
+    }
+    rows
+}
+
+/// One row: `share_by_score` (sparse, from the summary) spread over scores 1..=`max` (a score
+/// outside the range, damaged data, is drawn at the nearest end).
+fn region_stats(
+    name: String,
+    side: &'static str,
+    max: u8,
+    share_by_score: &[(u8, f64)],
+    samples: usize,
+    mean: Option<f64>,
+) -> RegionStats {
+    let mut time_share = vec![0.0; usize::from(max)];
+    for &(score, share) in share_by_score {
+        time_share[usize::from(score.clamp(1, max) - 1)] += share;
     }
     RegionStats {
-        name: region.name(),
+        name,
         side,
         max_score: max,
-        mean: (n > 0).then(|| scores.iter().map(|&s| f64::from(s)).sum::<f64>() / n as f64),
-        time_share: counts
-            .iter()
-            .map(|&c| if n == 0 { 0.0 } else { c as f64 / n as f64 })
-            .collect(),
-        samples: n,
+        mean,
+        time_share,
+        samples,
     }
 }
 
@@ -661,38 +580,75 @@ fn robot(rec: &Recording, t0: u64) -> Robot {
 mod tests {
     use super::*;
 
-    #[test]
-    fn every_landmark_belongs_to_the_region_of_its_body_part() {
-        use Landmark as L;
-        assert_eq!(region_of(L::LeftShoulder), (Region::UpperArm, Sides::Left));
-        assert_eq!(
-            region_of(L::RightShoulder),
-            (Region::UpperArm, Sides::Right)
-        );
-        assert_eq!(region_of(L::LeftElbow), (Region::LowerArm, Sides::Left));
-        assert_eq!(region_of(L::RightWrist), (Region::Wrist, Sides::Right));
-        assert_eq!(region_of(L::LeftPinky), (Region::Wrist, Sides::Left));
-        assert_eq!(region_of(L::RightThumb), (Region::Wrist, Sides::Right));
-        assert_eq!(region_of(L::Nose), (Region::Neck, Sides::Both));
-        assert_eq!(region_of(L::LeftHip), (Region::Trunk, Sides::Both));
-        assert_eq!(region_of(L::RightFootIndex), (Region::Legs, Sides::Both));
-        // Left/right by BlazePose's index parity (odd = left from 11 on).
-        for lm in Landmark::ALL {
-            let (_, side) = region_of(lm);
-            if lm.index() >= 11 && side != Sides::Both {
-                assert_eq!(side == Sides::Left, lm.name().starts_with("left"), "{lm:?}");
-            }
+    /// A recorded side with every region at `score` (clamped to each region's range).
+    fn side_at(score: u8, final_score: u8) -> RulaSide {
+        RulaSide {
+            scored: true,
+            upper_arm_score: score.min(6),
+            lower_arm_score: score.min(3),
+            wrist_score: score.min(4),
+            wrist_twist_score: 1,
+            neck_score: score.min(6),
+            trunk_score: score.min(6),
+            legs_score: score.min(2),
+            final_score,
+            action_level: ergocell_ergonomics::rula::action_level(final_score),
+            ..RulaSide::default()
         }
     }
 
     #[test]
+    fn each_landmark_shows_its_own_sides_score_and_the_body_the_worse_one() {
+        // Left side at the lowest scores, right side at the highest.
+        let e = ErgonomicState {
+            left: side_at(1, 1),
+            right: side_at(6, 7),
+            ..ErgonomicState::default()
+        };
+        let strain = frame_strain(Some(&e));
+        let at = |lm: Landmark| strain[lm.index()];
+        for lm in [
+            Landmark::LeftShoulder,
+            Landmark::LeftElbow,
+            Landmark::LeftThumb,
+        ] {
+            assert_eq!(at(lm), Some(0.0), "{lm}");
+        }
+        for lm in [
+            Landmark::RightShoulder,
+            Landmark::RightElbow,
+            Landmark::RightThumb,
+        ] {
+            assert_eq!(at(lm), Some(1.0), "{lm}");
+        }
+        // Face, hips and legs: scored once for the body, shown at the worse worksheet.
+        for lm in [
+            Landmark::MouthLeft,
+            Landmark::LeftEye,
+            Landmark::LeftHip,
+            Landmark::LeftHeel,
+        ] {
+            assert_eq!(at(lm), Some(1.0), "{lm}");
+        }
+        // An unscored side shows nothing; no ergonomics at all, nothing anywhere.
+        let one_sided = ErgonomicState {
+            left: RulaSide::default(),
+            ..e
+        };
+        let strain = frame_strain(Some(&one_sided));
+        assert_eq!(strain[Landmark::LeftWrist.index()], None);
+        assert_eq!(strain[Landmark::Nose.index()], Some(1.0));
+        assert!(frame_strain(None).iter().all(Option::is_none));
+    }
+
+    #[test]
     fn strain_spans_zero_to_one_over_each_regions_score_range() {
-        for r in Region::ALL {
+        for r in BodyRegion::ALL {
             assert_eq!(strain_of(r, 1), Some(0.0));
             assert_eq!(strain_of(r, r.max_score()), Some(1.0));
             assert_eq!(strain_of(r, 0), None);
         }
-        assert_eq!(strain_of(Region::LowerArm, 2), Some(0.5));
+        assert_eq!(strain_of(BodyRegion::LowerArm, 2), Some(0.5));
     }
 
     #[test]
@@ -739,14 +695,44 @@ mod tests {
     }
 
     #[test]
-    fn region_shares_sum_to_one_and_mean_is_the_mean() {
-        let r = region_stats(Region::UpperArm, "left", &[1, 2, 2, 3]);
-        assert_eq!(r.time_share.len(), 6);
-        assert!((r.time_share.iter().sum::<f64>() - 1.0).abs() < 1e-12);
-        assert_eq!(r.time_share[1], 0.5);
-        assert_eq!(r.mean, Some(2.0));
-        let empty = region_stats(Region::Neck, "", &[]);
-        assert_eq!(empty.mean, None);
-        assert_eq!(empty.samples, 0);
+    fn rows_are_every_region_per_side_then_the_grand_scores_with_the_summarys_shares() {
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        // Left scored 0.3 s at 2 and 0.1 s at 3 (10 Hz); the right never.
+        for (k, score) in [2, 2, 2, 3].into_iter().enumerate() {
+            let t = k as i64 * 100_000_000;
+            b.add_scores(t, scored_side(&side_at(score, score)), None);
+        }
+        let rows = region_rows(&b.finish());
+        let names: Vec<String> = rows
+            .iter()
+            .map(|r| format!("{}|{}", r.name, r.side))
+            .collect();
+        assert_eq!(
+            names,
+            [
+                "upper arm|left",
+                "upper arm|right",
+                "lower arm|left",
+                "lower arm|right",
+                "wrist|left",
+                "wrist|right",
+                "neck|",
+                "trunk|",
+                "legs|",
+                "grand score|left",
+                "grand score|right"
+            ]
+        );
+        let ua = &rows[0];
+        assert_eq!((ua.max_score, ua.samples), (6, 4));
+        assert_eq!(ua.time_share, [0.0, 0.75, 0.25, 0.0, 0.0, 0.0]);
+        assert!((ua.mean.unwrap() - 2.25).abs() < 1e-12);
+        let right = &rows[1];
+        assert_eq!((right.samples, right.mean), (0, None));
+        assert!(right.time_share.iter().all(|&x| x == 0.0));
+        // Legs top out at 2.
+        assert_eq!(rows[8].time_share, [0.0, 1.0]);
+        assert_eq!(rows[9].max_score, 7);
+        assert!((rows[9].time_share.iter().sum::<f64>() - 1.0).abs() < 1e-12);
     }
 }

@@ -7,12 +7,46 @@
 //!
 //! Positions are in metres in the **world** frame of the cell calibration (see `ARCHITECTURE.md`).
 //! A landmark that no camera saw well enough is `None`, never a made-up point.
+//!
+//! The topology's tables live here, once, for every crate: the landmarks ([`Landmark`], with each
+//! one's [`Side`]), the lines drawn between them ([`DRAWN_BONES`], MediaPipe's connections) and the
+//! rigid bones whose length a reconstruction must keep ([`BONES`]).
 
 use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
 
 /// Number of landmarks in the BlazePose (MediaPipe Pose) topology.
 pub const LANDMARK_COUNT: usize = 33;
+
+/// Which side of the body: the person's own left and right (as in MediaPipe), not the camera's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Side {
+    Left,
+    Right,
+}
+
+impl Side {
+    /// Both sides, left first.
+    pub const BOTH: [Side; 2] = [Side::Left, Side::Right];
+
+    /// "left" / "right".
+    pub const fn name(self) -> &'static str {
+        match self {
+            Side::Left => "left",
+            Side::Right => "right",
+        }
+    }
+
+    /// The other side.
+    #[must_use]
+    pub const fn other(self) -> Side {
+        match self {
+            Side::Left => Side::Right,
+            Side::Right => Side::Left,
+        }
+    }
+}
 
 /// One MediaPipe BlazePose landmark; the discriminant is MediaPipe's index (0..=32).
 ///
@@ -117,6 +151,48 @@ impl Landmark {
             .and_then(Self::from_index)
     }
 
+    /// The side of the body the landmark is on; `None` for the nose, the one landmark on the
+    /// midline. Stated per landmark (not derived from MediaPipe's index order, which alternates
+    /// left/right only from the shoulders on).
+    pub const fn side(self) -> Option<Side> {
+        use Landmark as L;
+        match self {
+            L::Nose => None,
+            L::LeftEyeInner
+            | L::LeftEye
+            | L::LeftEyeOuter
+            | L::LeftEar
+            | L::MouthLeft
+            | L::LeftShoulder
+            | L::LeftElbow
+            | L::LeftWrist
+            | L::LeftPinky
+            | L::LeftIndex
+            | L::LeftThumb
+            | L::LeftHip
+            | L::LeftKnee
+            | L::LeftAnkle
+            | L::LeftHeel
+            | L::LeftFootIndex => Some(Side::Left),
+            L::RightEyeInner
+            | L::RightEye
+            | L::RightEyeOuter
+            | L::RightEar
+            | L::MouthRight
+            | L::RightShoulder
+            | L::RightElbow
+            | L::RightWrist
+            | L::RightPinky
+            | L::RightIndex
+            | L::RightThumb
+            | L::RightHip
+            | L::RightKnee
+            | L::RightAnkle
+            | L::RightHeel
+            | L::RightFootIndex => Some(Side::Right),
+        }
+    }
+
     /// The same landmark on the other side of the body (`Nose` maps to itself).
     #[must_use]
     pub const fn mirrored(self) -> Landmark {
@@ -200,6 +276,51 @@ const NAMES: [&str; LANDMARK_COUNT] = [
     "left_foot_index",
     "right_foot_index",
 ];
+
+/// The lines drawn between landmarks to show the skeleton: MediaPipe's `POSE_CONNECTIONS` (35),
+/// in its order — the face (eyes to ears, the mouth), the shoulders, each arm down to the hand's
+/// pinky, index and thumb, the trunk, and each leg down to the heel and the foot's tip. Drawing, not
+/// anatomy: for the bones whose length must stay constant see [`BONES`] (all of them are drawn).
+pub const DRAWN_BONES: [(Landmark, Landmark); 35] = {
+    use Landmark as L;
+    [
+        (L::Nose, L::LeftEyeInner),
+        (L::LeftEyeInner, L::LeftEye),
+        (L::LeftEye, L::LeftEyeOuter),
+        (L::LeftEyeOuter, L::LeftEar),
+        (L::Nose, L::RightEyeInner),
+        (L::RightEyeInner, L::RightEye),
+        (L::RightEye, L::RightEyeOuter),
+        (L::RightEyeOuter, L::RightEar),
+        (L::MouthLeft, L::MouthRight),
+        (L::LeftShoulder, L::RightShoulder),
+        (L::LeftShoulder, L::LeftElbow),
+        (L::LeftElbow, L::LeftWrist),
+        (L::LeftWrist, L::LeftPinky),
+        (L::LeftWrist, L::LeftIndex),
+        (L::LeftWrist, L::LeftThumb),
+        (L::LeftPinky, L::LeftIndex),
+        (L::RightShoulder, L::RightElbow),
+        (L::RightElbow, L::RightWrist),
+        (L::RightWrist, L::RightPinky),
+        (L::RightWrist, L::RightIndex),
+        (L::RightWrist, L::RightThumb),
+        (L::RightPinky, L::RightIndex),
+        (L::LeftShoulder, L::LeftHip),
+        (L::RightShoulder, L::RightHip),
+        (L::LeftHip, L::RightHip),
+        (L::LeftHip, L::LeftKnee),
+        (L::RightHip, L::RightKnee),
+        (L::LeftKnee, L::LeftAnkle),
+        (L::RightKnee, L::RightAnkle),
+        (L::LeftAnkle, L::LeftHeel),
+        (L::RightAnkle, L::RightHeel),
+        (L::LeftHeel, L::LeftFootIndex),
+        (L::RightHeel, L::RightFootIndex),
+        (L::LeftAnkle, L::LeftFootIndex),
+        (L::RightAnkle, L::RightFootIndex),
+    ]
+};
 
 /// The rigid bones whose length should not change over a recording: used to measure how consistent a
 /// 3D reconstruction is (per-bone length variation, coefficient of variation over frames).
@@ -422,6 +543,88 @@ mod tests {
                 assert_eq!(side_free(a), side_free(b));
                 assert_ne!(a, b);
             }
+        }
+    }
+
+    #[test]
+    fn each_landmark_is_on_the_side_its_name_says() {
+        for lm in Landmark::ALL {
+            let name = lm.name();
+            let expected = if name.contains("left") {
+                Some(Side::Left)
+            } else if name.contains("right") {
+                Some(Side::Right)
+            } else {
+                None
+            };
+            assert_eq!(lm.side(), expected, "{lm}");
+            assert_eq!(lm.mirrored().side(), expected.map(Side::other), "{lm}");
+        }
+        assert_eq!(Landmark::Nose.side(), None);
+        // The face breaks MediaPipe's odd = left rule: 9 (mouth_left) is left, 10 is right, and
+        // 4..=6 are right although 5 is odd.
+        assert_eq!(Landmark::MouthLeft.side(), Some(Side::Left));
+        assert_eq!(Landmark::RightEye.side(), Some(Side::Right));
+    }
+
+    /// MediaPipe's `POSE_CONNECTIONS` as index pairs, from its source.
+    const POSE_CONNECTIONS: [[usize; 2]; 35] = [
+        [0, 1],
+        [1, 2],
+        [2, 3],
+        [3, 7],
+        [0, 4],
+        [4, 5],
+        [5, 6],
+        [6, 8],
+        [9, 10],
+        [11, 12],
+        [11, 13],
+        [13, 15],
+        [15, 17],
+        [15, 19],
+        [15, 21],
+        [17, 19],
+        [12, 14],
+        [14, 16],
+        [16, 18],
+        [16, 20],
+        [16, 22],
+        [18, 20],
+        [11, 23],
+        [12, 24],
+        [23, 24],
+        [23, 25],
+        [24, 26],
+        [25, 27],
+        [26, 28],
+        [27, 29],
+        [28, 30],
+        [29, 31],
+        [30, 32],
+        [27, 31],
+        [28, 32],
+    ];
+
+    #[test]
+    fn drawn_bones_are_mediapipes_connections_mirror_symmetric_and_hold_every_rigid_bone() {
+        let as_index = |(a, b): (Landmark, Landmark)| [a.index(), b.index()];
+        assert_eq!(DRAWN_BONES.map(as_index), POSE_CONNECTIONS);
+        let drawn = |a: Landmark, b: Landmark| {
+            DRAWN_BONES
+                .iter()
+                .any(|&(x, y)| (x, y) == (a, b) || (y, x) == (a, b))
+        };
+        for (a, b) in DRAWN_BONES {
+            assert_ne!(a, b);
+            assert!(drawn(a.mirrored(), b.mirrored()), "{a}-{b} has no mirror");
+        }
+        for (a, b) in BONES {
+            assert!(drawn(a, b), "rigid bone {a}-{b} is not drawn");
+        }
+        // Every landmark is on the drawn skeleton.
+        for lm in Landmark::ALL {
+            assert!(DRAWN_BONES.iter().any(|&(a, b)| a == lm || b == lm), "{lm}");
         }
     }
 

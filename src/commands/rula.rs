@@ -15,8 +15,9 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
-use ergocell_ergonomics::assess::{BodyRegion, SideAssessment, SummaryBuilder};
+use ergocell_ergonomics::assess::{BodyRegion, SideAssessment};
 use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_worksheet};
+use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
 use ergocell_ergonomics::{
     AssessmentConfig, RulaAssessor, RulaScores, Side, TaskConfig, UpVector, WarningConfig,
     WarningTracker,
@@ -204,7 +205,8 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     config.task = task;
     let mut assessor = RulaAssessor::new(config).map_err(|e| UsageError(e.to_string()))?;
     let mut warnings = WarningTracker::new(WarningConfig::default());
-    let mut summary = SummaryBuilder::new(1_000_000_000);
+    // The one summary (time-weighted, gaps not counted), as `ergocell review` shows it.
+    let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
     let t0 = frames[0].stamp_nanos;
     let mut frame_docs = Vec::new();
     let mut events = Vec::new();

@@ -118,7 +118,7 @@ function shareBar(r, tag) {
       const pct = Math.max(0, Number(v) || 0) * 100;
       if (pct <= 0) return '';
       const label = pct >= 7 ? `${i + 1}` : '';
-      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${scoreCss(i + 1, max)}" title="score ${i + 1}: ${pct.toFixed(1)} % of scored frames">${label}</span>`;
+      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${scoreCss(i + 1, max)}" title="score ${i + 1}: ${pct.toFixed(1)} % of scored time">${label}</span>`;
     })
     .join('');
   return `<div class="sharebar">${tag ? `<span class="tag">${tag}</span>` : ''}<div class="bar">${segs}</div></div>`;
@@ -147,8 +147,8 @@ export function renderRegions(el, sessions) {
   }
   const cmp = sessions.length > 1;
   const head = cmp
-    ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num">max</th><th>Share of scored frames per score (A above B)</th></tr>`
-    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Share of scored frames per score</th></tr>`;
+    ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num">max</th><th>Share of scored time per score (A above B)</th></tr>`
+    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Share of scored time per score</th></tr>`;
   const body = keys
     .map((k) => {
       const rs = maps.map((m) => m.get(k));

@@ -1,0 +1,428 @@
+//! A session's RULA summary: for how much of the time each action level, body-region score and
+//! grand score held.
+//!
+//! This is the one computation of those shares. `ergocell rula track` feeds it the frames it assesses
+//! ([`SummaryBuilder::add`]); the offline review (`ergocell_review`) feeds it the scores read back
+//! from a recording ([`SummaryBuilder::add_scores`]). So one session gives the same numbers in both.
+//!
+//! How time is counted — what an ergonomist reads as "share of the time":
+//! - **Time-weighted**, not frame-counted: each frame stands for the time until the next frame, so a
+//!   stretch recorded at a higher frame rate does not weigh more.
+//! - **Gaps do not count.** An interval longer than `max_frame_nanos` ([`DEFAULT_MAX_FRAME_NANOS`],
+//!   1 s) is a gap in the recording (tracking lost, nothing recorded): the frame before it stands for
+//!   the typical frame interval (the median of the intervals that are not gaps), as the last frame
+//!   does — never for the gap.
+//! - A region's shares are of the time **that region was scored**: a side that could not be scored
+//!   is not "safe" and is not in the denominator. Time with no score at all is reported on its own
+//!   ([`SessionSummary::unscored_share`]).
+//! - The arm regions are per side; neck, trunk and legs (scored once for the body) and the action
+//!   level are the headline side's ([`crate::assess::headline_side`]: the worse one).
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use crate::assess::{headline_side, BodyRegion, FrameAssessment, SideAssessment};
+use crate::rula::RulaScores;
+use crate::Side;
+
+/// Default gap threshold: an interval between frames longer than 1 s is a gap, not frame time.
+pub const DEFAULT_MAX_FRAME_NANOS: i64 = 1_000_000_000;
+
+/// One scored side of one frame, as the summary reads it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ScoredSide {
+    pub scores: RulaScores,
+    /// The score rests on low-confidence landmarks or held inputs.
+    pub uncertain: bool,
+}
+
+impl From<&SideAssessment> for ScoredSide {
+    fn from(s: &SideAssessment) -> Self {
+        Self {
+            scores: s.scores,
+            uncertain: s.uncertain,
+        }
+    }
+}
+
+/// Time shares of one region's scores.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RegionShare {
+    pub region: BodyRegion,
+    /// The side for the arm regions; `None` for neck, trunk and legs.
+    pub side: Option<Side>,
+    /// `(score, share of scored time)`, by ascending score; only the scores that occurred.
+    pub share_by_score: Vec<(u8, f64)>,
+    /// Frames in which the region was scored.
+    pub frames: usize,
+}
+
+impl RegionShare {
+    /// The time-weighted mean score; `None` when no scored time.
+    pub fn mean_score(&self) -> Option<f64> {
+        mean_score(&self.share_by_score)
+    }
+}
+
+/// Time shares of one side's grand score.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GrandScoreShare {
+    pub side: Side,
+    /// `(grand score, share of the time the side was scored)`, by ascending score.
+    pub share_by_score: Vec<(u8, f64)>,
+    /// Frames in which the side was scored.
+    pub frames: usize,
+}
+
+impl GrandScoreShare {
+    /// The time-weighted mean grand score; `None` when no scored time.
+    pub fn mean_score(&self) -> Option<f64> {
+        mean_score(&self.share_by_score)
+    }
+}
+
+fn mean_score(share_by_score: &[(u8, f64)]) -> Option<f64> {
+    let total: f64 = share_by_score.iter().map(|(_, x)| x).sum();
+    (total > 0.0).then(|| {
+        share_by_score
+            .iter()
+            .map(|&(s, x)| f64::from(s) * x)
+            .sum::<f64>()
+            / total
+    })
+}
+
+/// Summary of a session: time share per action level (of the headline side), per region score and
+/// per grand score of each side.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SessionSummary {
+    pub frames: usize,
+    pub scored_frames: usize,
+    pub uncertain_frames: usize,
+    /// The time the frames stand for, gaps not counted.
+    pub duration_secs: f64,
+    /// Share of scored time at action level 1..=4.
+    pub action_level_share: [f64; 4],
+    /// Share of the whole time with no score.
+    pub unscored_share: f64,
+    /// The regions that were scored at least once, in [`BodyRegion`] order, left before right.
+    pub regions: Vec<RegionShare>,
+    /// Each side that was scored at least once, left before right.
+    pub grand_score: Vec<GrandScoreShare>,
+}
+
+impl SessionSummary {
+    /// One region's shares (`side` `None` for neck, trunk and legs); `None` when never scored.
+    pub fn region(&self, region: BodyRegion, side: Option<Side>) -> Option<&RegionShare> {
+        self.regions
+            .iter()
+            .find(|r| r.region == region && r.side == side)
+    }
+
+    /// One side's grand-score shares; `None` when never scored.
+    pub fn grand(&self, side: Side) -> Option<&GrandScoreShare> {
+        self.grand_score.iter().find(|g| g.side == side)
+    }
+}
+
+/// One frame in a summary: its stamp and each side's scores (`None`: not scored).
+#[derive(Debug, Clone, Copy)]
+struct Entry {
+    stamp_nanos: i64,
+    left: Option<ScoredSide>,
+    right: Option<ScoredSide>,
+}
+
+impl Entry {
+    fn side(&self, side: Side) -> Option<&ScoredSide> {
+        match side {
+            Side::Left => self.left.as_ref(),
+            Side::Right => self.right.as_ref(),
+        }
+    }
+
+    fn headline(&self) -> Option<&ScoredSide> {
+        let key = |s: &ScoredSide| (s.scores.final_score, s.uncertain);
+        headline_side(self.left.as_ref().map(key), self.right.as_ref().map(key))
+            .and_then(|side| self.side(side))
+    }
+}
+
+/// Accumulates a [`SessionSummary`] frame by frame (see the module docs for how time is counted).
+/// Frames may come in any order; they are put in time order when the summary is made.
+#[derive(Debug, Clone)]
+pub struct SummaryBuilder {
+    max_frame_nanos: i64,
+    entries: Vec<Entry>,
+}
+
+/// Time and frame count per score.
+#[derive(Debug, Clone, Default)]
+struct Tally {
+    time_by_score: BTreeMap<u8, f64>,
+    frames: usize,
+}
+
+impl Tally {
+    fn add(&mut self, score: u8, dt: f64) {
+        *self.time_by_score.entry(score).or_default() += dt;
+        self.frames += 1;
+    }
+
+    fn shares(&self) -> Vec<(u8, f64)> {
+        let sum: f64 = self.time_by_score.values().sum();
+        self.time_by_score
+            .iter()
+            .map(|(&s, &t)| (s, share(t, sum)))
+            .collect()
+    }
+}
+
+fn share(x: f64, of: f64) -> f64 {
+    if of > 0.0 {
+        x / of
+    } else {
+        0.0
+    }
+}
+
+impl SummaryBuilder {
+    /// `max_frame_nanos`: intervals between frames longer than this are gaps (see the module docs);
+    /// usually [`DEFAULT_MAX_FRAME_NANOS`].
+    pub fn new(max_frame_nanos: i64) -> Self {
+        Self {
+            max_frame_nanos,
+            entries: Vec::new(),
+        }
+    }
+
+    /// Adds one assessed frame.
+    pub fn add(&mut self, frame: &FrameAssessment) {
+        self.add_scores(
+            frame.stamp_nanos,
+            frame.left.as_ref().map(ScoredSide::from),
+            frame.right.as_ref().map(ScoredSide::from),
+        );
+    }
+
+    /// Adds one frame given by its scores, e.g. read back from a recording; `None` for a side that
+    /// was not scored.
+    pub fn add_scores(
+        &mut self,
+        stamp_nanos: i64,
+        left: Option<ScoredSide>,
+        right: Option<ScoredSide>,
+    ) {
+        self.entries.push(Entry {
+            stamp_nanos,
+            left,
+            right,
+        });
+    }
+
+    /// The time each frame stands for, nanoseconds, for frames in time order.
+    fn frame_times(&self, entries: &[Entry]) -> Vec<i64> {
+        let intervals: Vec<i64> = entries
+            .windows(2)
+            .map(|w| w[1].stamp_nanos.saturating_sub(w[0].stamp_nanos).max(0))
+            .collect();
+        let is_gap = |d: i64| d > self.max_frame_nanos;
+        let mut normal: Vec<i64> = intervals.iter().copied().filter(|&d| !is_gap(d)).collect();
+        normal.sort_unstable();
+        let typical = normal.get(normal.len() / 2).copied().unwrap_or(1).max(1);
+        let mut times: Vec<i64> = intervals
+            .into_iter()
+            .map(|d| if is_gap(d) { typical } else { d })
+            .collect();
+        if !entries.is_empty() {
+            times.push(typical);
+        }
+        times
+    }
+
+    pub fn finish(&self) -> SessionSummary {
+        let mut entries = self.entries.clone();
+        entries.sort_by_key(|e| e.stamp_nanos);
+        let times = self.frame_times(&entries);
+        let total: f64 = times.iter().map(|&t| t as f64).sum();
+        let mut level = [0.0; 4];
+        let mut scored = 0.0;
+        let mut unscored = 0.0;
+        let mut regions: BTreeMap<(BodyRegion, Option<Side>), Tally> = BTreeMap::new();
+        let mut grand: BTreeMap<Side, Tally> = BTreeMap::new();
+        let mut scored_frames = 0;
+        let mut uncertain_frames = 0;
+        for (e, &dt) in entries.iter().zip(&times) {
+            let dt = dt as f64;
+            let head = e.headline();
+            match head {
+                Some(h) => {
+                    scored_frames += 1;
+                    uncertain_frames += usize::from(h.uncertain);
+                    scored += dt;
+                    level[usize::from(h.scores.action_level.clamp(1, 4) - 1)] += dt;
+                }
+                None => unscored += dt,
+            }
+            for region in BodyRegion::ALL {
+                if region.is_sided() {
+                    for side in Side::BOTH {
+                        if let Some(s) = e.side(side) {
+                            regions
+                                .entry((region, Some(side)))
+                                .or_default()
+                                .add(region.score(&s.scores), dt);
+                        }
+                    }
+                } else if let Some(h) = head {
+                    regions
+                        .entry((region, None))
+                        .or_default()
+                        .add(region.score(&h.scores), dt);
+                }
+            }
+            for side in Side::BOTH {
+                if let Some(s) = e.side(side) {
+                    grand.entry(side).or_default().add(s.scores.final_score, dt);
+                }
+            }
+        }
+        SessionSummary {
+            frames: entries.len(),
+            scored_frames,
+            uncertain_frames,
+            duration_secs: total * 1e-9,
+            action_level_share: level.map(|x| share(x, scored)),
+            unscored_share: share(unscored, total),
+            regions: regions
+                .into_iter()
+                .map(|((region, side), t)| RegionShare {
+                    region,
+                    side,
+                    share_by_score: t.shares(),
+                    frames: t.frames,
+                })
+                .collect(),
+            grand_score: grand
+                .into_iter()
+                .map(|(side, t)| GrandScoreShare {
+                    side,
+                    share_by_score: t.shares(),
+                    frames: t.frames,
+                })
+                .collect(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rula::{score_worksheet, RulaInput};
+
+    const MS: i64 = 1_000_000;
+
+    fn side(upper_arm_flexion_deg: f64, neck_flexion_deg: f64) -> ScoredSide {
+        let input = RulaInput {
+            upper_arm_flexion_deg,
+            neck_flexion_deg,
+            ..RulaInput::neutral()
+        };
+        ScoredSide {
+            scores: score_worksheet(&input).unwrap().scores,
+            uncertain: false,
+        }
+    }
+
+    #[test]
+    fn shares_are_time_weighted_not_frame_counted() {
+        // Upper arm score 1 for one frame standing for 300 ms, then score 3 for three frames of 100 ms.
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        let low = side(0.0, 5.0);
+        let high = side(60.0, 5.0);
+        for (t, s) in [(0, low), (300, high), (400, high), (500, high)] {
+            b.add_scores(t * MS, Some(s), None);
+        }
+        let s = b.finish();
+        let ua = s.region(BodyRegion::UpperArm, Some(Side::Left)).unwrap();
+        // The last frame stands for the median interval (100 ms): 300 of 600 ms at score 1.
+        assert_eq!(ua.share_by_score, vec![(1, 0.5), (3, 0.5)]);
+        assert_eq!(ua.frames, 4);
+        assert_eq!(ua.mean_score(), Some(2.0));
+        assert!((s.duration_secs - 0.6).abs() < 1e-12);
+        assert!(s.region(BodyRegion::UpperArm, Some(Side::Right)).is_none());
+    }
+
+    #[test]
+    fn a_gap_counts_for_nothing() {
+        // 10 Hz, with 5 s of nothing after the second frame: that frame stands for 100 ms, not 5 s
+        // (nor the 1 s cap).
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        let low = side(0.0, 5.0);
+        let high = side(60.0, 25.0);
+        b.add_scores(0, Some(low), Some(low));
+        b.add_scores(100 * MS, Some(high), Some(high));
+        b.add_scores(5_100 * MS, Some(low), Some(low));
+        b.add_scores(5_200 * MS, Some(low), Some(low));
+        let s = b.finish();
+        assert!((s.duration_secs - 0.4).abs() < 1e-12, "{}", s.duration_secs);
+        let neck = s.region(BodyRegion::Neck, None).unwrap();
+        assert_eq!(neck.share_by_score, vec![(1, 0.75), (3, 0.25)]);
+        let g = s.grand(Side::Right).unwrap();
+        assert_eq!(g.frames, 4);
+        assert!((g.share_by_score.iter().map(|(_, x)| x).sum::<f64>() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn unscored_time_is_outside_the_region_shares_and_frames_may_come_in_any_order() {
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        let low = side(0.0, 5.0);
+        b.add_scores(200 * MS, None, None);
+        b.add_scores(0, Some(low), Some(low));
+        b.add_scores(100 * MS, Some(low), None);
+        b.add_scores(300 * MS, None, None);
+        let s = b.finish();
+        assert_eq!(s.frames, 4);
+        assert_eq!(s.scored_frames, 2);
+        assert_eq!(s.unscored_share, 0.5);
+        assert_eq!(s.action_level_share[0], 1.0);
+        let right = s.region(BodyRegion::Wrist, Some(Side::Right)).unwrap();
+        assert_eq!((right.frames, right.share_by_score.len()), (1, 1));
+        assert_eq!(right.share_by_score[0].1, 1.0);
+    }
+
+    #[test]
+    fn the_central_regions_are_the_headline_sides() {
+        // Left worse (grand score), so neck and trunk come from the left worksheet.
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        b.add_scores(0, Some(side(100.0, 25.0)), Some(side(0.0, 5.0)));
+        let s = b.finish();
+        let neck = s.region(BodyRegion::Neck, None).unwrap();
+        assert_eq!(neck.share_by_score, vec![(3, 1.0)]);
+        assert!(s
+            .regions
+            .windows(2)
+            .all(|w| (w[0].region, w[0].side) < (w[1].region, w[1].side)));
+    }
+
+    #[test]
+    fn nothing_in_gives_zeros_not_nan() {
+        let s = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS).finish();
+        assert_eq!(s.frames, 0);
+        assert_eq!(s.duration_secs, 0.0);
+        assert_eq!(s.unscored_share, 0.0);
+        assert!(s.regions.is_empty() && s.grand_score.is_empty());
+        // A negative gap threshold makes every interval a gap, without panicking.
+        let mut b = SummaryBuilder::new(-1);
+        b.add_scores(0, Some(side(0.0, 5.0)), None);
+        b.add_scores(MS, Some(side(0.0, 5.0)), None);
+        assert_eq!(
+            b.finish()
+                .region(BodyRegion::UpperArm, Some(Side::Left))
+                .unwrap()
+                .frames,
+            2
+        );
+    }
+}

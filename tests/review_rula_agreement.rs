@@ -1,0 +1,207 @@
+//! One recording, one set of numbers: `ergocell report` (the offline review's per-region rows) and
+//! `ergocell rula track` (its summary) report the same time shares per body-region score and per
+//! grand score, because both are `ergocell_ergonomics::summary`.
+//!
+//! The recording is a synthetic operator (`ergonomics::pose`) whose frame rate changes (10 Hz, then
+//! 30 Hz while reaching, so frame counts and time disagree), with a 3 s gap (no frames: not counted)
+//! and unscored frames at the start (nothing seen yet). The same skeletons go to `rula track` as a
+//! landmark file and, assessed as a session assesses them, into an MCAP recording (operator pose +
+//! RULA state, the session's messages) for `report`.
+
+// Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use ergocell::recording::{ergonomic_message, operator_pose_message, topics, McapRecorder};
+use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
+use ergocell_ergonomics::{AssessmentConfig, RulaAssessor, UpVector};
+use ergocell_skeleton::Skeleton3;
+use nalgebra::Vector3;
+
+const MS: i64 = 1_000_000;
+
+fn tmp(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name)
+}
+
+fn ergocell(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// The skeletons: 3 empty frames, 2 s relaxed at 10 Hz, 1 s reaching at 30 Hz (right arm up 60°,
+/// neck bent 25°), a 3 s gap, 1 s with the left arm up 100° and the neck bent 35° at 10 Hz.
+fn skeletons() -> Vec<Skeleton3> {
+    let relaxed = PoseSpec::default();
+    let reaching = PoseSpec {
+        neck_flexion_rad: 25f64.to_radians(),
+        right_arm: ArmPose {
+            flexion_rad: 60f64.to_radians(),
+            elbow_flexion_rad: 50f64.to_radians(),
+            ..ArmPose::default()
+        },
+        ..PoseSpec::default()
+    };
+    let overhead = PoseSpec {
+        neck_flexion_rad: 35f64.to_radians(),
+        left_arm: ArmPose {
+            flexion_rad: 100f64.to_radians(),
+            elbow_flexion_rad: 30f64.to_radians(),
+            ..ArmPose::default()
+        },
+        ..PoseSpec::default()
+    };
+    let mut t = 1_000 * MS;
+    let mut out = Vec::new();
+    let mut push = |spec: Option<&PoseSpec>, n: usize, dt: i64, t: &mut i64| {
+        for _ in 0..n {
+            out.push(spec.map_or_else(
+                || Skeleton3::empty(*t),
+                |s| {
+                    PoseSpec {
+                        stamp_nanos: *t,
+                        ..s.clone()
+                    }
+                    .skeleton()
+                },
+            ));
+            *t += dt;
+        }
+    };
+    push(None, 3, 100 * MS, &mut t);
+    push(Some(&relaxed), 20, 100 * MS, &mut t);
+    push(Some(&reaching), 30, 33 * MS, &mut t);
+    t += 3_000 * MS;
+    push(Some(&overhead), 10, 100 * MS, &mut t);
+    out
+}
+
+/// The report's data (what the page reads).
+fn report_data(html: &str) -> serde_json::Value {
+    let start = html.find("window.ERGOCELL_REVIEW_DATA = ").unwrap() + 30;
+    let end = start + html[start..].find(";</script>").unwrap();
+    serde_json::from_str(&html[start..end]).unwrap()
+}
+
+#[test]
+fn review_region_shares_are_rula_tracks_summary() {
+    let frames = skeletons();
+    let landmarks = tmp("agreement-landmarks.json");
+    std::fs::write(&landmarks, serde_json::to_string(&frames).unwrap()).unwrap();
+
+    // The session's recording of the same frames: assessed with `rula track`'s defaults.
+    let recording = tmp("agreement.mcap");
+    let mut assessor =
+        RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap())).unwrap();
+    let mut rec = McapRecorder::create(&recording).unwrap();
+    for s in &frames {
+        let a = assessor.assess(s).unwrap();
+        rec.write(
+            topics::OPERATOR_POSE,
+            s.stamp_nanos,
+            &operator_pose_message(s, Some(&a)),
+        )
+        .unwrap();
+        rec.write(topics::ERGONOMICS, s.stamp_nanos, &ergonomic_message(&a))
+            .unwrap();
+    }
+    rec.finish().unwrap();
+
+    let o = ergocell(&[
+        "rula",
+        "track",
+        "--landmarks",
+        landmarks.to_str().unwrap(),
+        "--up",
+        "0,0,1",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let track: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let summary = &track["summary"];
+
+    let html = tmp("agreement.html");
+    let o = ergocell(&[
+        "report",
+        recording.to_str().unwrap(),
+        "--out",
+        html.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let data = report_data(&std::fs::read_to_string(&html).unwrap());
+    let rows = data["sessions"][0]["regions"].as_array().unwrap();
+
+    // Every scored row of the review is a row of the summary, with the same shares and frames.
+    let mut compared = 0;
+    for row in rows {
+        let samples = row["samples"].as_u64().unwrap();
+        let side = row["side"].as_str().unwrap();
+        let name = row["name"].as_str().unwrap();
+        let expected = if name == "grand score" {
+            summary["grand_score"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|g| g["side"] == side)
+        } else {
+            summary["regions"].as_array().unwrap().iter().find(|r| {
+                r["region"] == name.replace(' ', "_")
+                    && (r["side"] == side || (side.is_empty() && r["side"].is_null()))
+            })
+        };
+        let Some(expected) = expected else {
+            assert_eq!(samples, 0, "{row} is not in the summary {summary}");
+            continue;
+        };
+        assert_eq!(samples, expected["frames"].as_u64().unwrap(), "{row}");
+        let share = row["time_share"].as_array().unwrap();
+        let mut from_summary = vec![0.0; share.len()];
+        for pair in expected["share_by_score"].as_array().unwrap() {
+            let score = pair[0].as_u64().unwrap() as usize;
+            from_summary[score - 1] = pair[1].as_f64().unwrap();
+        }
+        for (k, (a, b)) in share.iter().zip(&from_summary).enumerate() {
+            let a = a.as_f64().unwrap();
+            assert!(
+                (a - b).abs() < 1e-12,
+                "{name} {side} score {}: review {a}, rula track {b}",
+                k + 1
+            );
+        }
+        compared += 1;
+    }
+    let in_summary = summary["regions"].as_array().unwrap().len()
+        + summary["grand_score"].as_array().unwrap().len();
+    assert_eq!(compared, in_summary, "every summary row is on the page");
+    assert_eq!(
+        compared, 11,
+        "six regions (three per side) and two grand scores"
+    );
+
+    // The recording is one where frame counting would disagree: the right upper arm's share at its
+    // reaching score by frames is not its share by time.
+    let by_frames = {
+        let scored: Vec<u64> = track["frames"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|f| f["right"]["scores"]["upper_arm_score"].as_u64())
+            .collect();
+        scored.iter().filter(|&&s| s == 3).count() as f64 / scored.len() as f64
+    };
+    let ua_right = rows
+        .iter()
+        .find(|r| r["name"] == "upper arm" && r["side"] == "right")
+        .unwrap();
+    let by_time = ua_right["time_share"][2].as_f64().unwrap();
+    assert!(by_time > 0.0, "{ua_right}");
+    assert!(
+        (by_time - by_frames).abs() > 0.05,
+        "by time {by_time}, by frames {by_frames}"
+    );
+}
