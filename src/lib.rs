@@ -6,4 +6,5 @@
 pub mod recording;
 pub mod robot_markers;
 pub mod session;
+pub mod shipped;
 pub mod sim_record;

@@ -559,6 +559,47 @@ pub fn session_state_messages(
     out
 }
 
+/// The message on the controller's `joint_trajectory` topic for a command (a hold is the empty
+/// trajectory: the joint trajectory controller drops its goal and stops).
+///
+/// A trajectory goes out with a zero `header.stamp`: the joint trajectory controller then starts it
+/// on receipt, on its own clock. A stamp from this PC's clock would shift or cut the start if the
+/// two clocks disagree (a past stamp skips points). `stamp_nanos` only stamps the hold.
+pub fn command_message(
+    command: &crate::session::RobotCommand,
+    stamp_nanos: i64,
+) -> ergocell_bridge::msg::JointTrajectory {
+    use crate::session::RobotCommand;
+    use ergocell_bridge::msg::JointTrajectory;
+    match command {
+        RobotCommand::Execute { trajectory, .. } => leg_message(trajectory),
+        RobotCommand::Hold { .. } => JointTrajectory {
+            header: Header::new(stamp_nanos, ""),
+            ..JointTrajectory::default()
+        },
+    }
+}
+
+/// A leg of the locked trajectory as a `trajectory_msgs/JointTrajectory` (zero stamp).
+pub fn leg_message(leg: &crate::session::LegTrajectory) -> ergocell_bridge::msg::JointTrajectory {
+    use ergocell_bridge::msg::{Duration, JointTrajectory, JointTrajectoryPoint};
+    JointTrajectory {
+        header: Header::default(),
+        joint_names: leg.joint_names.clone(),
+        points: leg
+            .points
+            .iter()
+            .map(|p| JointTrajectoryPoint {
+                positions: p.positions_rad.clone(),
+                velocities: p.velocities_rad_s.clone(),
+                accelerations: p.accelerations_rad_s2.clone(),
+                effort: Vec::new(),
+                time_from_start: Duration::from_secs_f64(p.time_from_start_s),
+            })
+            .collect(),
+    }
+}
+
 /// Records a step's events: state changes, RULA state, warnings and robot commands.
 pub fn record_events(
     rec: &mut McapRecorder,
@@ -583,7 +624,7 @@ pub fn record_events(
             E::RobotCommandSent { command, .. } => rec.write(
                 topics::JOINT_TRAJECTORY,
                 now_nanos,
-                &command.to_message(now_nanos),
+                &command_message(command, now_nanos),
             )?,
             E::Warning(w) => rec.write(topics::WARNINGS, now_nanos, &warning_message(w))?,
             E::Frame {
@@ -653,7 +694,7 @@ pub fn describe(e: &crate::session::SessionEvent) -> String {
                 trajectory
                     .points
                     .last()
-                    .map_or(0.0, |p| p.time_from_start.as_secs_f64())
+                    .map_or(0.0, |p| p.time_from_start_s)
             ),
             RobotCommand::Hold { reason } => {
                 format!("robot ← HOLD (goal cancelled, not an e-stop): {reason}")

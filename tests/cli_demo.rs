@@ -78,3 +78,90 @@ fn demo_runs_a_whole_session_and_records_it() {
         assert!(topics.contains(t), "{t} not in {topics:?}");
     }
 }
+
+/// A fresh folder outside the repository, removed at the end.
+struct Scratch(std::path::PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("ergocell-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Self(dir)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// The binary carries its reference cell: run from a folder with no `config/` or `trajectories/`,
+/// the demo runs the whole session on the shipped files and writes its recording there.
+#[test]
+fn demo_runs_from_any_directory_on_the_shipped_files() {
+    let dir = Scratch::new("demo-anywhere");
+    assert!(!dir.0.join("config").exists());
+    let run = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&dir.0)
+        .args(["--log", "error", "demo", "--cycles", "1", "--no-faults"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(stdout.contains("session:        session_ended"), "{stdout}");
+    let rec = dir.0.join("ergocell-demo.mcap");
+    let bytes = std::fs::read(&rec).unwrap();
+    assert!(mcap::MessageStream::new(&bytes).unwrap().count() > 100);
+}
+
+/// An explicit path wins over the shipped file and must exist; a cell file with a typo'd key is
+/// refused with the file and the key's name, before anything runs.
+#[test]
+fn demo_refuses_a_missing_explicit_path_and_a_typo_in_the_cell_file() {
+    let dir = Scratch::new("demo-bad-cell");
+    let missing = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&dir.0)
+        .args(["demo", "--rig", "no-such-rig.toml"])
+        .output()
+        .unwrap();
+    assert!(!missing.status.success());
+    let err = String::from_utf8_lossy(&missing.stderr);
+    assert!(err.contains("no-such-rig.toml"), "{err}");
+
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let shipped = std::fs::read_to_string(root.join("config/cell.toml")).unwrap();
+    let cell = dir.0.join("cell.toml");
+    std::fs::write(
+        &cell,
+        shipped.replace(
+            "\n[station]\n",
+            "\n[session]\nexit_radius = 1.5\n\n[station]\n",
+        ),
+    )
+    .unwrap();
+    // The URDF is found beside the cell file.
+    std::fs::create_dir_all(dir.0.join("robots")).unwrap();
+    std::fs::copy(
+        root.join("config/robots/iiwa14_r820.urdf"),
+        dir.0.join("robots/iiwa14_r820.urdf"),
+    )
+    .unwrap();
+    let typo = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&dir.0)
+        .args(["demo", "--cell", "cell.toml"])
+        .output()
+        .unwrap();
+    assert!(!typo.status.success());
+    let err = String::from_utf8_lossy(&typo.stderr);
+    assert!(
+        err.contains("cell.toml") && err.contains("exit_radius"),
+        "{err}"
+    );
+    assert!(!dir.0.join("ergocell-demo.mcap").exists(), "nothing ran");
+}

@@ -9,9 +9,10 @@ use std::path::{Path, PathBuf};
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    LandmarkSource, Leg, RobotCommand, SessionConfig, SessionEvent, SessionMachine, SessionState,
+    LandmarkSource, Leg, RobotCommand, SessionEvent, SessionMachine, SessionState,
     TrajectoryProvider,
 };
+use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::TrajectoryClass;
@@ -79,11 +80,20 @@ struct Run {
 
 impl Run {
     fn new(name: &str, approve: Option<TrajectoryClass>, cycles: usize) -> Self {
+        Self::with_settings(name, approve, cycles, &CellSettings::default())
+    }
+
+    fn with_settings(
+        name: &str,
+        approve: Option<TrajectoryClass>,
+        cycles: usize,
+        settings: &CellSettings,
+    ) -> Self {
         let (names, home) = home();
         Self {
-            machine: SessionMachine::new(
+            machine: SessionMachine::from_settings(
                 rig(),
-                SessionConfig::default(),
+                settings,
                 Box::new(provider(name, approve)),
             )
             .unwrap(),
@@ -187,13 +197,20 @@ fn whole_session_with_refused_change_degrade_hold_recovery_and_end() {
             assert_eq!(*lock_sha256, sha);
             assert_eq!(trajectory.points.len(), 100);
             assert_eq!(trajectory.joint_names[0], "joint_1");
-            let wire = run.robot.received[0].1.to_message(123);
+            let wire = ergocell::recording::command_message(&run.robot.received[0].1, 123);
             assert_eq!(wire.header.stamp.to_nanos(), 0, "start on receipt");
-            assert_eq!(wire.points, trajectory.points);
-            let hold = RobotCommand::Hold {
-                reason: String::new(),
+            assert_eq!(wire.points.len(), trajectory.points.len());
+            for (w, p) in wire.points.iter().zip(&trajectory.points) {
+                assert_eq!(w.positions, p.positions_rad);
+                assert_eq!(w.velocities, p.velocities_rad_s);
+                assert!((w.time_from_start.as_secs_f64() - p.time_from_start_s).abs() < 1e-9);
             }
-            .to_message(123);
+            let hold = ergocell::recording::command_message(
+                &RobotCommand::Hold {
+                    reason: String::new(),
+                },
+                123,
+            );
             assert!(hold.points.is_empty() && hold.joint_names.is_empty());
         }
         other => panic!("expected the locked trajectory, got {other:?}"),
@@ -270,8 +287,8 @@ fn whole_session_with_refused_change_degrade_hold_recovery_and_end() {
         } => {
             assert_eq!(*lock_sha256, sha);
             let first = &trajectory.points[0];
-            assert_eq!(first.time_from_start.as_secs_f64(), 0.0);
-            assert!(first.velocities.iter().all(|v| *v == 0.0));
+            assert_eq!(first.time_from_start_s, 0.0);
+            assert!(first.velocities_rad_s.iter().all(|v| *v == 0.0));
         }
         other => panic!("expected the way home, got {other:?}"),
     }
@@ -484,9 +501,9 @@ fn an_operator_outside_the_validated_statures_never_moves_the_robot() {
     // 1.50–1.68 m only (trajectories/c1.toml): the session must end without moving the robot,
     // although c1's lock is approved.
     let (names, home) = home();
-    let mut machine = SessionMachine::new(
+    let mut machine = SessionMachine::from_settings(
         rig(),
-        SessionConfig::default(),
+        &CellSettings::default(),
         Box::new(provider("short-operator", Some(TrajectoryClass::C1))),
     )
     .unwrap();
@@ -543,9 +560,9 @@ fn an_operator_measured_while_walking_in_has_not_left_the_station() {
     // was sent home as soon as it reached the handover point. The robot must wait for them.
     const PERIOD_30HZ: i64 = 33_333_333;
     let (names, home) = home();
-    let mut machine = SessionMachine::new(
+    let mut machine = SessionMachine::from_settings(
         rig(),
-        SessionConfig::default(),
+        &CellSettings::default(),
         Box::new(provider("walking-in", Some(TrajectoryClass::C2))),
     )
     .unwrap();
@@ -622,4 +639,40 @@ fn an_operator_measured_while_walking_in_has_not_left_the_station() {
         machine.summary().end_reason
     );
     assert_eq!(machine.state(), SessionState::SessionEnded);
+}
+
+/// `[station]` of the cell file reaches the session: the same operator, who works at the world
+/// origin, leaves a station at the origin (the session ends, the robot home), but never stood at a
+/// station 3 m away, so losing them there is a loss of tracking (the robot is held), not a departure.
+#[test]
+fn a_station_offset_in_cell_toml_moves_the_operator_departure_decision() {
+    let shipped = std::fs::read_to_string(root().join("config/cell.toml")).unwrap();
+    let moved = shipped.replace("xyz_m = [0.0, 0.0, 0.0]", "xyz_m = [3.0, 0.0, 0.0]");
+    assert_ne!(
+        moved, shipped,
+        "the shipped station line changed: update this test"
+    );
+    let settings = CellSettings::from_toml_str(&moved, "cell.toml with the station moved").unwrap();
+    assert_eq!(settings.session.station_xy_m, [3.0, 0.0]);
+
+    let mut at_origin = Run::new("station-origin", Some(TrajectoryClass::C2), 1);
+    let mut away = Run::with_settings("station-away", Some(TrajectoryClass::C2), 1, &settings);
+    for run in [&mut at_origin, &mut away] {
+        run.run_until(60_000_000_000, &|m| m.state() == SessionState::SessionEnded);
+    }
+    assert_eq!(at_origin.machine.state(), SessionState::SessionEnded);
+    assert!(
+        at_origin
+            .machine
+            .summary()
+            .end_reason
+            .contains("operator left"),
+        "{}",
+        at_origin.machine.summary().end_reason
+    );
+    assert_eq!(away.machine.state(), SessionState::Held);
+    assert!(!away.machine.summary().ended);
+    // Up to the operator walking out the two sessions are the same (the station plays no part).
+    let class = |r: &Run| r.machine.summary().class.clone();
+    assert_eq!(class(&at_origin), class(&away));
 }

@@ -73,6 +73,11 @@ impl UpVector {
         Ok(Self(Unit::new_unchecked(v / n)))
     }
 
+    /// World z up (the reference cell's and the digital twin's convention).
+    pub fn z() -> Self {
+        Self(Vector3::z_axis())
+    }
+
     /// The unit vector.
     pub fn vector(&self) -> Vector3<f64> {
         self.0.into_inner()

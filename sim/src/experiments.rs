@@ -15,21 +15,29 @@
 //! - [`rula_agreement`]: per-frame RULA grand score and action level from the noisy pipeline vs from
 //!   ground truth: exact agreement `Po` and Cohen's κ.
 //!
+//! The noisy side of every experiment but Table 1 is the cell controller's own per-frame pipeline,
+//! [`ergocell_cell::Pipeline`] with its defaults: views pushed as they arrive at their tick
+//! (frame assembly, default fusion, the tracked gate, One-Euro filter, RULA with its smoothing, the
+//! height estimator on the unfiltered skeleton until its first decision) — the same type the
+//! session state machine runs, so these figures are the controller's. Each frame it releases is
+//! compared with the ground truth of the tick nearest its stamp. Table 1 compares fusion methods
+//! frame by frame, so it calls [`FusionEngine`] directly, without the filter.
+//!
 //! Each function takes the rig, the detector noise and a seed and returns plain values (no I/O); the
 //! binary prints, plots and writes JSON. Each session gets its own seed derived from the experiment's
 //! (`seed · 1000 + session`), so results are reproducible bit for bit and independent of run order.
 
 use std::collections::BTreeMap;
 
+use ergocell_cell::{Pipeline, PipelineConfig, TrackedFrame};
 use ergocell_ergonomics::assess::BodyRegion;
 use ergocell_ergonomics::rula::action_level;
 use ergocell_ergonomics::{
-    AssessmentConfig, HeightClass, HeightConfig, HeightEstimator, HeightStatus, RulaAssessor,
+    AssessmentConfig, FrameAssessment, HeightClass, HeightConfig, HeightStatus, RulaAssessor,
     UpVector,
 };
-use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
 use ergocell_perception::{CameraRig, FusionEngine, FusionMethod};
-use ergocell_skeleton::{Landmark, Skeleton3};
+use ergocell_skeleton::Landmark;
 use nalgebra::{Point3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -328,22 +336,47 @@ pub fn table1(
 // ---------------------------------------------------------------------------------------------
 // The noisy pipeline and RULA on it
 
-/// Default fusion → One-Euro filter: the reconstruction the cell controller runs.
-struct Pipeline {
-    engine: FusionEngine,
-    filter: OneEuroFilter,
+/// The cell controller's pipeline with its defaults on the experiment's rig.
+fn pipeline(setup: &Setup) -> Result<Pipeline, SimError> {
+    Ok(Pipeline::new(
+        setup.rig.clone(),
+        PipelineConfig::new(up()?),
+    )?)
 }
 
-impl Pipeline {
-    fn new(rig: &CameraRig) -> Result<Self, SimError> {
-        Ok(Self {
-            engine: FusionEngine::new(rig.clone(), FusionMethod::Default)?,
-            filter: OneEuroFilter::new(OneEuroParams::default()),
-        })
+/// Runs the controller's pipeline over a session's ticks as the session does (each tick's views
+/// pushed at the tick's time) and hands every tracked frame it releases to `f` with the index of the
+/// tick nearest the frame's stamp (views carry jittered capture stamps; frames wait for late cameras).
+/// Returns the pipeline, for its final state (the height).
+pub fn run_pipeline(
+    setup: &Setup,
+    ticks: &[Tick],
+    mut f: impl FnMut(usize, &TrackedFrame) -> Result<(), SimError>,
+) -> Result<Pipeline, SimError> {
+    let mut p = pipeline(setup)?;
+    for tick in ticks {
+        for output in p.push_views(tick.frame.stamp_nanos, tick.frame.views.clone()) {
+            let output = output?;
+            if let Some(tracked) = &output.tracked {
+                f(nearest_tick(ticks, output.stamp_nanos), tracked)?;
+            }
+        }
     }
-    fn skeleton(&mut self, tick: &Tick) -> Result<Skeleton3, SimError> {
-        let fused = self.engine.fuse(&tick.frame)?;
-        Ok(self.filter.filter(&fused.skeleton))
+    Ok(p)
+}
+
+/// Index of the tick whose time is nearest `stamp_nanos` (ticks in time order).
+fn nearest_tick(ticks: &[Tick], stamp_nanos: i64) -> usize {
+    let i = ticks.partition_point(|t| t.frame.stamp_nanos < stamp_nanos);
+    match (i.checked_sub(1), ticks.get(i)) {
+        (Some(j), Some(next))
+            if (stamp_nanos - ticks[j].frame.stamp_nanos).abs()
+                <= (next.frame.stamp_nanos - stamp_nanos).abs() =>
+        {
+            j
+        }
+        (Some(j), None) => j,
+        _ => i.min(ticks.len().saturating_sub(1)),
     }
 }
 
@@ -357,13 +390,29 @@ struct Scored {
     uncertain: bool,
 }
 
-fn headline(assessor: &mut RulaAssessor, s: &Skeleton3) -> Result<Option<Scored>, SimError> {
-    let a = assessor.assess(s)?;
-    Ok(a.headline().map(|h| Scored {
+fn scored(a: &FrameAssessment) -> Option<Scored> {
+    a.headline().map(|h| Scored {
         grand: h.scores.final_score,
         regions: BodyRegion::ALL.map(|r| r.score(&h.scores)),
         uncertain: h.uncertain,
-    }))
+    })
+}
+
+/// The pipeline's headline of a tracked frame.
+fn pipeline_headline(tracked: &TrackedFrame) -> Result<Option<Scored>, SimError> {
+    match &tracked.assessment {
+        Ok(a) => Ok(scored(a)),
+        Err(e) => Err(e.clone().into()),
+    }
+}
+
+/// The ground truth's headline of every tick (assessed in tick order, unsmoothed).
+fn truth_headlines(ticks: &[Tick]) -> Result<Vec<Option<Scored>>, SimError> {
+    let mut truth = RulaAssessor::new(truth_config(AssessmentConfig::new(up()?)))?;
+    ticks
+        .iter()
+        .map(|t| Ok(scored(&truth.assess(&t.truth.skeleton)?)))
+        .collect()
 }
 
 /// Result of [`adaptation`].
@@ -434,29 +483,20 @@ fn run_task(
     let mut script = SessionScript::new(handover);
     script.cycles = cycles;
     let ticks = simulate(setup, session, stature_m, &script)?;
-    let mut pipeline = Pipeline::new(&setup.rig)?;
-    let cfg = AssessmentConfig::new(up()?);
-    let (mut est, mut truth) = (
-        RulaAssessor::new(cfg)?,
-        RulaAssessor::new(truth_config(cfg))?,
-    );
+    let truth = truth_headlines(&ticks)?;
     let mut out = TaskRun {
         grand: Vec::new(),
         true_grand: Vec::new(),
         regions: Vec::new(),
         angles: Vec::new(),
     };
+    let holding = |t: &Tick| matches!(t.truth.phase, Phase::Hold { .. });
+    // The truth and its angles over every holding tick; the pipeline over the frames it released
+    // whose nearest tick is a holding one.
     let op = Operator::new(stature_m)?;
-    for tick in &ticks {
-        let s = pipeline.skeleton(tick)?;
-        let e = headline(&mut est, &s)?;
-        let t = headline(&mut truth, &tick.truth.skeleton)?;
-        if !matches!(tick.truth.phase, Phase::Hold { .. }) {
+    for (tick, t) in ticks.iter().zip(&truth) {
+        if !holding(tick) {
             continue;
-        }
-        if let Some(e) = e {
-            out.grand.push(f64::from(e.grand));
-            out.regions.push(e.regions.map(f64::from));
         }
         if let Some(t) = t {
             out.true_grand.push(f64::from(t.grand));
@@ -473,6 +513,15 @@ fn run_task(
             .map(f64::to_degrees),
         );
     }
+    run_pipeline(setup, &ticks, |k, tracked| {
+        if holding(&ticks[k]) {
+            if let Some(e) = pipeline_headline(tracked)? {
+                out.grand.push(f64::from(e.grand));
+                out.regions.push(e.regions.map(f64::from));
+            }
+        }
+        Ok(())
+    })?;
     Ok(out)
 }
 
@@ -620,13 +669,9 @@ pub fn height(
         script.idle_secs = idle_secs;
         script.walk_out_secs = 0.0;
         let ticks = simulate(setup, i, h, &script)?;
-        let mut pipeline = Pipeline::new(&setup.rig)?;
-        let mut estimator = HeightEstimator::new(cfg);
-        for tick in &ticks {
-            let s = pipeline.skeleton(tick)?;
-            estimator.push(&s);
-        }
-        let (estimated_m, decided_class) = match estimator.status() {
+        // The height as the session decides it: the pipeline's first decision, which is final.
+        let pipeline = run_pipeline(setup, &ticks, |_, _| Ok(()))?;
+        let (estimated_m, decided_class) = match pipeline.height_status() {
             HeightStatus::Decided(d) => (Some(d.estimate.height_m), Some(d.class)),
             HeightStatus::Measuring { estimate, .. } => (estimate.map(|e| e.height_m), None),
         };
@@ -754,24 +799,17 @@ pub fn rula_agreement(
     let mut grand_differs_with_regions_equal = 0;
     // [certain, uncertain]: (frames, grand score equal)
     let mut by_flag = [(0usize, 0usize); 2];
-    let cfg = AssessmentConfig::new(up()?);
     for (i, &h) in statures_m.iter().enumerate() {
         let mut script = SessionScript::new(handovers.before_m);
         script.cycles = cycles;
         let ticks = simulate(setup, i, h, &script)?;
-        let mut pipeline = Pipeline::new(&setup.rig)?;
-        let (mut est, mut truth) = (
-            RulaAssessor::new(cfg)?,
-            RulaAssessor::new(truth_config(cfg))?,
-        );
-        for tick in &ticks {
-            let s = pipeline.skeleton(tick)?;
-            let e = headline(&mut est, &s)?;
-            let t = headline(&mut truth, &tick.truth.skeleton)?;
-            if !at_station(tick.truth.phase) {
-                continue;
+        let truth = truth_headlines(&ticks)?;
+        run_pipeline(setup, &ticks, |k, tracked| {
+            let e = pipeline_headline(tracked)?;
+            if !at_station(ticks[k].truth.phase) {
+                return Ok(());
             }
-            if let (Some(e), Some(t)) = (e, t) {
+            if let (Some(e), Some(t)) = (e, truth[k]) {
                 let (ge, gt) = (
                     usize::from(e.grand.clamp(1, 7)),
                     usize::from(t.grand.clamp(1, 7)),
@@ -798,7 +836,8 @@ pub fn rula_agreement(
                 flag.1 += usize::from(e.grand == t.grand);
                 frames += 1;
             }
-        }
+            Ok(())
+        })?;
         progress(i + 1, statures_m.len());
     }
     // NaN (null in JSON) when no frame is in the group: no agreement to report.

@@ -86,4 +86,7 @@ pub enum SimError {
     /// The ergonomics crate refused a configuration (experiments).
     #[error(transparent)]
     Ergonomics(#[from] ergocell_ergonomics::ErgonomicsError),
+    /// The cell controller's pipeline could not be built on the rig (experiments).
+    #[error(transparent)]
+    Cell(#[from] ergocell_cell::CellError),
 }

@@ -21,10 +21,10 @@ use anyhow::Context as _;
 use ergocell::recording::{self, topics, McapRecorder};
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
-use ergocell::session::{
-    trajectory_class, RobotSink, SessionConfig, SessionEvent, SessionMachine, SessionState,
-};
+use ergocell::session::{trajectory_class, RobotSink, SessionEvent, SessionMachine, SessionState};
+use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
+use ergocell_cell::CellSettings;
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
 use ergocell_perception::rig_file::parse_rig;
@@ -37,15 +37,17 @@ use super::UsageError;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Camera rig (ergocell rig TOML).
-    #[arg(long, default_value = "config/rig.toml")]
-    pub rig: PathBuf,
-    /// Cell configuration (`[robot]`, `[station]`).
-    #[arg(long, default_value = "config/cell.toml")]
-    pub cell: PathBuf,
-    /// Folder of the trajectory files and `locks/`.
-    #[arg(long, default_value = "trajectories")]
-    pub trajectories: PathBuf,
+    /// Camera rig (ergocell rig TOML). Default: the reference cell's `config/rig.toml`, shipped in
+    /// the binary.
+    #[arg(long)]
+    pub rig: Option<PathBuf>,
+    /// Cell configuration (`config/cell.toml`: robot, station, session, pipeline, assessment, task).
+    /// Default: the shipped one (with its URDF).
+    #[arg(long)]
+    pub cell: Option<PathBuf>,
+    /// Folder of the trajectory files and `locks/`. Default: the shipped `trajectories/`.
+    #[arg(long)]
+    pub trajectories: Option<PathBuf>,
     /// The simulated operator's stature, metres.
     #[arg(long, default_value_t = 1.75)]
     pub stature_m: f64,
@@ -125,16 +127,33 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         ))
         .into());
     }
-    let rig_text = std::fs::read_to_string(&args.rig)
-        .with_context(|| format!("cannot read {}", args.rig.display()))?;
-    let (rig, _) = parse_rig(&rig_text, &args.rig.display().to_string())
-        .map_err(|e| UsageError(e.to_string()))?;
+    let (rig_text, rig_label) = match &args.rig {
+        Some(path) => (
+            std::fs::read_to_string(path)
+                .with_context(|| format!("cannot read {}", path.display()))?,
+            path.display().to_string(),
+        ),
+        None => (
+            shipped::file(std::path::Path::new(shipped::RIG))
+                .context("the shipped rig is missing from the binary")?
+                .to_owned(),
+            shipped::label(shipped::RIG),
+        ),
+    };
+    let (rig, _) = parse_rig(&rig_text, &rig_label).map_err(|e| UsageError(e.to_string()))?;
 
     // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
     let demo_dir =
         TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
     let approvals_dir = demo_dir.0.join("approvals");
-    let provider = FileTrajectories::new(&args.cell, &args.trajectories, &approvals_dir);
+    let provider = FileTrajectories::with_shipped_defaults(
+        args.cell.as_deref(),
+        args.trajectories.as_deref(),
+        &approvals_dir,
+    );
+    let cell_text = provider.cell_text().map_err(|e| UsageError(e.clone()))?;
+    let settings = CellSettings::from_toml_str(&cell_text, &provider.cell_label())
+        .map_err(|e| UsageError(e.to_string()))?;
     let start = wall_clock_nanos();
     say!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
     say!(
@@ -154,14 +173,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     // The simulated operator reaches for the handover point of their true class (the session itself
     // measures the height and decides the class from the cameras).
     let true_class = trajectory_class(HeightClass::of(args.stature_m, &ClassThresholds::default()));
-    let lock_path = args
-        .trajectories
-        .join("locks")
-        .join(format!("{true_class}.lock.toml"));
-    let lock_text = std::fs::read_to_string(&lock_path)
-        .with_context(|| format!("cannot read {}", lock_path.display()))?;
+    let lock_text = provider
+        .lock_text(true_class)
+        .map_err(|e| anyhow::anyhow!(e))?;
     let lock = LockFile::from_toml_str(true_class, &lock_text)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", lock_path.display()))?;
+        .map_err(|e| anyhow::anyhow!("lock of {true_class}: {e}"))?;
     let [hx, hy, hz] = lock.summary.handover_station_m;
     let geometry = provider
         .robot_geometry(true_class)
@@ -191,9 +207,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .map(|p| p.positions_rad.clone())
         .context("lock file without points")?;
     let mut robot = DummyRobot::new(lock.trajectory.joint_names.clone(), home);
-    let mut machine =
-        SessionMachine::new(rig.clone(), SessionConfig::default(), Box::new(provider))
-            .map_err(|e| anyhow::anyhow!(e))?;
+    let mut machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
+        .map_err(|e| UsageError(e.to_string()))?;
     let mut rec = McapRecorder::create(&args.out)?;
     say!(
         "  operator {:.2} m, {} handover cycles, {} cameras, seed {}; recording {}",

@@ -15,12 +15,12 @@ use anyhow::Context as _;
 use ergocell::recording::{self, topics, McapRecorder};
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    BackendError, RobotCommand, RobotSink, SessionConfig, SessionEvent, SessionMachine,
-    SessionState,
+    BackendError, RobotCommand, RobotSink, SessionEvent, SessionMachine, SessionState,
 };
 use ergocell_bridge::msg::{CameraLandmarks, JointState, JointTrajectory};
 use ergocell_bridge::transport::{publish, CellTopics, Publisher, RosConfig, RosNode};
 use ergocell_bridge::{cdr, qos};
+use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
 use futures::StreamExt as _;
 
@@ -96,7 +96,7 @@ struct RosRobot {
 impl RobotSink for RosRobot {
     fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError> {
         self.publisher
-            .publish(command.to_message(now_nanos))
+            .publish(recording::command_message(command, now_nanos))
             .map_err(|e| BackendError {
                 backend: "ROS 2 joint trajectory",
                 reason: format!("{e:?}"),
@@ -135,6 +135,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .with_context(|| format!("cannot read {}", args.config.display()))?;
     let ros = RosConfig::from_cell_toml(&cell_text)
         .map_err(|e| UsageError(format!("{}: {e}", args.config.display())))?;
+    let settings = CellSettings::from_toml_str(&cell_text, &args.config.display().to_string())
+        .map_err(|e| UsageError(e.to_string()))?;
     let rig_text = std::fs::read_to_string(&args.rig)
         .with_context(|| format!("cannot read {}", args.rig.display()))?;
     let (rig, _) = parse_rig(&rig_text, &args.rig.display().to_string())
@@ -155,7 +157,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .unwrap_or_else(|| args.trajectories.join("approvals"));
     let new_machine = || {
         let provider = FileTrajectories::new(&args.config, &args.trajectories, &approvals);
-        SessionMachine::new(rig.clone(), SessionConfig::default(), Box::new(provider))
+        SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
             .map_err(|e| anyhow::anyhow!(e))
     };
     let mut machine = new_machine()?;

@@ -9,7 +9,7 @@ use ergocell_robot::{
     ApprovedTrajectory, CellConfig, InputHashes, RobotModel, TrajectoryClass, TrajectorySpec,
 };
 
-use super::TrajectoryProvider;
+use super::{ProviderError, TrajectoryProvider};
 use crate::robot_markers::RobotGeometry;
 
 /// Reads and verifies the locked trajectories.
@@ -18,6 +18,10 @@ pub struct FileTrajectories {
     cell_path: PathBuf,
     trajectories_dir: PathBuf,
     approvals_dir: PathBuf,
+    /// The cell file and its URDF are the ones shipped in the binary ([`crate::shipped`]).
+    cell_shipped: bool,
+    /// The trajectory files and locks are the shipped ones.
+    trajectories_shipped: bool,
 }
 
 impl FileTrajectories {
@@ -27,11 +31,72 @@ impl FileTrajectories {
             cell_path: cell_path.to_owned(),
             trajectories_dir: trajectories_dir.to_owned(),
             approvals_dir: approvals_dir.to_owned(),
+            cell_shipped: false,
+            trajectories_shipped: false,
         }
     }
 
-    fn read(path: &Path) -> Result<String, String> {
+    /// `cell_path` / `trajectories_dir` of `None` are the files shipped in the binary; approvals are
+    /// always read from `approvals_dir` on disk.
+    pub fn with_shipped_defaults(
+        cell_path: Option<&Path>,
+        trajectories_dir: Option<&Path>,
+        approvals_dir: &Path,
+    ) -> Self {
+        Self {
+            cell_path: cell_path
+                .map_or_else(|| PathBuf::from(crate::shipped::CELL), Path::to_owned),
+            trajectories_dir: trajectories_dir.map_or_else(
+                || PathBuf::from(crate::shipped::TRAJECTORIES),
+                Path::to_owned,
+            ),
+            approvals_dir: approvals_dir.to_owned(),
+            cell_shipped: cell_path.is_none(),
+            trajectories_shipped: trajectories_dir.is_none(),
+        }
+    }
+
+    fn read_from(path: &Path, shipped: bool) -> Result<String, String> {
+        if shipped {
+            return crate::shipped::file(path)
+                .map(str::to_owned)
+                .ok_or_else(|| {
+                    format!(
+                        "{} is not among the files shipped in the binary",
+                        path.display()
+                    )
+                });
+        }
         std::fs::read_to_string(path).map_err(|e| format!("cannot read {}: {e}", path.display()))
+    }
+
+    /// A file of the cell (the cell file or its URDF).
+    fn read_cell(&self, path: &Path) -> Result<String, String> {
+        Self::read_from(path, self.cell_shipped)
+    }
+
+    /// A file of the trajectories folder (a trajectory file or a lock).
+    fn read(&self, path: &Path) -> Result<String, String> {
+        Self::read_from(path, self.trajectories_shipped)
+    }
+
+    /// The cell file's text.
+    pub fn cell_text(&self) -> Result<String, String> {
+        self.read_cell(&self.cell_path)
+    }
+
+    /// The cell file's name in messages.
+    pub fn cell_label(&self) -> String {
+        if self.cell_shipped {
+            crate::shipped::label(crate::shipped::CELL)
+        } else {
+            self.cell_path.display().to_string()
+        }
+    }
+
+    /// The lock file of `class`.
+    pub fn lock_text(&self, class: TrajectoryClass) -> Result<String, String> {
+        self.read(&self.lock_path(class))
     }
 
     fn lock_path(&self, class: TrajectoryClass) -> PathBuf {
@@ -42,7 +107,7 @@ impl FileTrajectories {
 
     /// The cell config (text and parsed), the URDF's path and its text.
     fn cell_and_urdf(&self) -> Result<(String, CellConfig, PathBuf, String), String> {
-        let cell_text = Self::read(&self.cell_path)?;
+        let cell_text = self.read_cell(&self.cell_path)?;
         let cell = CellConfig::from_toml_str(&cell_text)
             .map_err(|e| format!("{}: {e}", self.cell_path.display()))?;
         let urdf_path = self
@@ -50,14 +115,14 @@ impl FileTrajectories {
             .parent()
             .unwrap_or_else(|| Path::new("."))
             .join(&cell.robot.urdf);
-        let urdf_text = Self::read(&urdf_path)?;
+        let urdf_text = self.read_cell(&urdf_path)?;
         Ok((cell_text, cell, urdf_path, urdf_text))
     }
 
     /// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
     pub fn robot_geometry(&self, class: TrajectoryClass) -> Result<RobotGeometry, String> {
         let (cell_text, _, _, urdf_text) = self.cell_and_urdf()?;
-        let spec_text = Self::read(&self.trajectories_dir.join(format!("{class}.toml")))?;
+        let spec_text = self.read(&self.trajectories_dir.join(format!("{class}.toml")))?;
         RobotGeometry::from_texts(&cell_text, &urdf_text, &spec_text)
             .map_err(|e| format!("robot geometry for the recording ({class}): {e}"))
     }
@@ -68,7 +133,7 @@ impl FileTrajectories {
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
                 .map_err(|e| format!("{}: {e}", urdf_path.display()))?;
-        let spec_text = Self::read(&self.trajectories_dir.join(format!("{class}.toml")))?;
+        let spec_text = self.read(&self.trajectories_dir.join(format!("{class}.toml")))?;
         let hashes = InputHashes::new(
             spec_text.as_bytes(),
             urdf_text.as_bytes(),
@@ -93,7 +158,7 @@ impl FileTrajectories {
             ));
         }
         let (model, hashes) = self.current(class)?;
-        let lock_text = Self::read(&self.lock_path(class))?;
+        let lock_text = self.read(&self.lock_path(class))?;
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,
@@ -123,16 +188,16 @@ impl FileTrajectories {
 }
 
 impl TrajectoryProvider for FileTrajectories {
-    fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), String> {
+    fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
         let path = self.trajectories_dir.join(format!("{class}.toml"));
-        let spec = TrajectorySpec::from_toml_str(&Self::read(&path)?)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let spec = TrajectorySpec::from_toml_str(&self.read(&path).map_err(ProviderError)?)
+            .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
         Ok((spec.stature.min_m, spec.stature.max_m))
     }
 
-    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, String> {
-        let (model, hashes) = self.current(class)?;
-        let lock_text = Self::read(&self.lock_path(class))?;
+    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
+        let (model, hashes) = self.current(class).map_err(ProviderError)?;
+        let lock_text = self.read(&self.lock_path(class)).map_err(ProviderError)?;
         let approvals =
             std::fs::read_to_string(self.approvals_dir.join(format!("{class}.toml"))).ok();
         let inputs = VerifyInputs {
@@ -142,6 +207,6 @@ impl TrajectoryProvider for FileTrajectories {
             model: &model,
             approvals_toml: approvals.as_deref(),
         };
-        lock::verify(&inputs).map_err(|f| f.to_string())
+        lock::verify(&inputs).map_err(|f| ProviderError(f.to_string()))
     }
 }

@@ -1,10 +1,9 @@
 //! Test and simulator backends: a robot that follows trajectories by linear interpolation between knots
 //! and stops where it is on a hold, and a scripted landmark source.
 
-use ergocell_bridge::msg::JointTrajectory;
 use ergocell_perception::View2;
 
-use super::{BackendError, LandmarkSource, RobotCommand, RobotSink};
+use super::{BackendError, LandmarkSource, LegTrajectory, RobotCommand, RobotSink};
 
 /// A simulated robot controller: follows the last trajectory from the time it was received, stops
 /// where it is on a hold, and records every command.
@@ -12,7 +11,7 @@ use super::{BackendError, LandmarkSource, RobotCommand, RobotSink};
 pub struct DummyRobot {
     joint_names: Vec<String>,
     held_positions: Vec<f64>,
-    active: Option<(i64, JointTrajectory)>,
+    active: Option<(i64, LegTrajectory)>,
     /// Every command received, with its time.
     pub received: Vec<(i64, RobotCommand)>,
 }
@@ -50,26 +49,23 @@ impl DummyRobot {
                 .map(|(i, held)| i.and_then(|i| values.get(i).copied()).unwrap_or(*held))
                 .collect()
         };
-        if t >= last.time_from_start.as_secs_f64() {
-            return pick(&last.positions);
+        if t >= last.time_from_start_s {
+            return pick(&last.positions_rad);
         }
         let k = points
             .iter()
-            .position(|p| p.time_from_start.as_secs_f64() > t)
+            .position(|p| p.time_from_start_s > t)
             .unwrap_or(points.len() - 1);
         if k == 0 {
-            return pick(&points[0].positions);
+            return pick(&points[0].positions_rad);
         }
         let (a, b) = (&points[k - 1], &points[k]);
-        let (ta, tb) = (
-            a.time_from_start.as_secs_f64(),
-            b.time_from_start.as_secs_f64(),
-        );
+        let (ta, tb) = (a.time_from_start_s, b.time_from_start_s);
         let s = if tb > ta { (t - ta) / (tb - ta) } else { 1.0 };
         let mixed: Vec<f64> = a
-            .positions
+            .positions_rad
             .iter()
-            .zip(&b.positions)
+            .zip(&b.positions_rad)
             .map(|(x, y)| x + s * (y - x))
             .collect();
         pick(&mixed)

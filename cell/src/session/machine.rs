@@ -1,20 +1,19 @@
 //! The session state machine (see the module docs of [`crate::session`]).
 
-use ergocell_ergonomics::{
-    AssessmentConfig, HeightConfig, HeightDecision, HeightEstimator, RulaAssessor, UpVector,
-    WarningConfig, WarningTracker,
-};
-use ergocell_perception::temporal::FrameAssembler;
-use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
-use ergocell_perception::{CameraRig, FusionEngine, FusionMethod, View2};
+use ergocell_ergonomics::warnings::WarningKind;
+use ergocell_ergonomics::{HeightDecision, UpVector};
+use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{SessionLock, TrajectoryClass};
 use ergocell_skeleton::{Landmark, Skeleton3};
 use nalgebra::Point3;
 
 use super::{
-    trajectory_class, trajectory_message, Leg, RobotCommand, RobotSink, SessionConfig,
-    SessionEvent, SessionState, TrajectoryProvider,
+    leg_trajectory, trajectory_class, Leg, RobotCommand, RobotSink, SessionConfig, SessionEvent,
+    SessionState, TrajectoryProvider,
 };
+use crate::config::CellSettings;
+use crate::pipeline::{rig_up, FrameOutput, Pipeline, PipelineConfig, TrackedFrame};
+use crate::CellError;
 
 /// Per-camera health.
 #[derive(Debug, Clone)]
@@ -57,13 +56,8 @@ pub struct SessionSummary {
 pub struct SessionMachine {
     config: SessionConfig,
     pairs: Vec<(usize, usize)>,
-    assembler: FrameAssembler,
-    fusion: FusionEngine,
-    filter: OneEuroFilter,
+    pipeline: Pipeline,
     up: UpVector,
-    height: HeightEstimator,
-    assessor: RulaAssessor,
-    warnings: WarningTracker,
     provider: Box<dyn TrajectoryProvider>,
     state: SessionState,
     cameras: Vec<CameraHealth>,
@@ -84,16 +78,25 @@ pub struct SessionMachine {
 }
 
 impl SessionMachine {
-    /// A session on this rig. The rig's `up` is required (RULA and height need the world's vertical).
+    /// A session on this rig with the cell file's settings. The rig's `up` is required (RULA and
+    /// height need the world's vertical).
+    pub fn from_settings(
+        rig: CameraRig,
+        settings: &CellSettings,
+        provider: Box<dyn TrajectoryProvider>,
+    ) -> Result<Self, CellError> {
+        let pipeline = settings.pipeline(rig_up(&rig)?)?;
+        Self::new(rig, settings.session, pipeline, provider)
+    }
+
+    /// A session on this rig with these configurations.
     pub fn new(
         rig: CameraRig,
         config: SessionConfig,
+        pipeline: PipelineConfig,
         provider: Box<dyn TrajectoryProvider>,
-    ) -> Result<Self, String> {
-        let up = rig
-            .up()
-            .ok_or("the rig has no `up` vector: RULA and height need the world's vertical")?;
-        let up = UpVector::new(up).map_err(|e| e.to_string())?;
+    ) -> Result<Self, CellError> {
+        let up = rig_up(&rig)?;
         let pairs = rig.pairs().iter().map(|p| (p.left, p.right)).collect();
         let cameras = rig
             .cameras()
@@ -105,23 +108,11 @@ impl SessionMachine {
                 degraded: false,
             })
             .collect();
-        let assembler = FrameAssembler::new(
-            rig.len(),
-            config.assembly_tolerance_nanos,
-            config.assembly_max_wait_nanos,
-        );
-        let fusion = FusionEngine::new(rig, FusionMethod::Default).map_err(|e| e.to_string())?;
-        let assessor = RulaAssessor::new(AssessmentConfig::new(up)).map_err(|e| e.to_string())?;
         Ok(Self {
             config,
             pairs,
-            assembler,
-            fusion,
-            filter: OneEuroFilter::new(OneEuroParams::default()),
+            pipeline: Pipeline::new(rig, pipeline)?,
             up,
-            height: HeightEstimator::new(HeightConfig::new(up)),
-            assessor,
-            warnings: WarningTracker::new(WarningConfig::default()),
             provider,
             state: SessionState::WaitingForOperator,
             cameras,
@@ -247,33 +238,11 @@ impl SessionMachine {
             }
         }
         self.update_camera_health(now_nanos, &mut events);
-        let mut frames = Vec::new();
-        for view in views {
-            frames.extend(self.assembler.push(view, now_nanos));
-        }
-        frames.extend(self.assembler.poll(now_nanos));
-        for frame in &frames {
-            self.last_frame_stamp = Some(
-                self.last_frame_stamp
-                    .map_or(frame.stamp_nanos, |s| s.max(frame.stamp_nanos)),
-            );
-            let fused = match self.fusion.fuse(frame) {
-                Ok(f) => f,
-                Err(e) => {
-                    tracing::warn!(error = %e, "frame not fused");
-                    continue;
-                }
-            };
-            self.summary.frames_fused += 1;
-            if fused.skeleton.observed_count() < self.config.min_tracked_landmarks {
-                continue;
+        for output in self.pipeline.push_views(now_nanos, views) {
+            match output {
+                Ok(output) => self.on_frame(now_nanos, output, &mut events),
+                Err(e) => tracing::warn!(error = %e, "frame not fused"),
             }
-            self.summary.frames_tracked += 1;
-            let skeleton = self.filter.filter(&fused.skeleton);
-            if let Some(hips) = mid_hip(&skeleton) {
-                self.last_tracked = Some((frame.stamp_nanos, hips));
-            }
-            self.on_tracked_frame(now_nanos, &fused.skeleton, skeleton, &mut events);
         }
         self.pairs_tracking = self
             .pairs
@@ -329,11 +298,27 @@ impl SessionMachine {
         }
     }
 
+    /// One frame out of the pipeline: the session's bookkeeping and events.
+    fn on_frame(&mut self, now_nanos: i64, output: FrameOutput, events: &mut Vec<SessionEvent>) {
+        self.last_frame_stamp = Some(
+            self.last_frame_stamp
+                .map_or(output.stamp_nanos, |s| s.max(output.stamp_nanos)),
+        );
+        self.summary.frames_fused += 1;
+        let Some(tracked) = output.tracked else {
+            return;
+        };
+        self.summary.frames_tracked += 1;
+        if let Some(hips) = mid_hip(&tracked.skeleton) {
+            self.last_tracked = Some((output.stamp_nanos, hips));
+        }
+        self.on_tracked_frame(now_nanos, tracked, events);
+    }
+
     fn on_tracked_frame(
         &mut self,
         now_nanos: i64,
-        raw: &Skeleton3,
-        filtered: Skeleton3,
+        tracked: TrackedFrame,
         events: &mut Vec<SessionEvent>,
     ) {
         if self.state == SessionState::WaitingForOperator {
@@ -344,45 +329,21 @@ impl SessionMachine {
                 events,
             );
         }
-        if self.state == SessionState::MeasuringHeight {
-            // Height is measured at session start only, on the unfiltered fused skeleton.
-            if let Some(decision) = self.height.push(raw) {
-                let e = &decision.estimate;
-                self.summary.height_m = Some(e.height_m);
-                self.summary.height_uncertainty_m = Some(e.uncertainty_m);
-                self.summary.class = Some(decision.class.name().to_owned());
-                tracing::info!(
-                    height_m = e.height_m,
-                    uncertainty_m = e.uncertainty_m,
-                    class = decision.class.name(),
-                    "height class decided"
-                );
-                events.push(SessionEvent::ClassDecided {
-                    stamp_nanos: now_nanos,
-                    height_m: e.height_m,
-                    uncertainty_m: e.uncertainty_m,
-                    class: decision.class,
-                });
-                let reason = format!(
-                    "stature {:.3} ± {:.3} m → class {}",
-                    e.height_m,
-                    e.uncertainty_m,
-                    decision.class.name()
-                );
-                self.decision = Some(decision);
-                self.transition(now_nanos, SessionState::ClassDecided, &reason, events);
-            }
+        // The pipeline measures the height on the unfiltered skeleton until its first decision,
+        // which is final: the class is decided at session start only.
+        if let (SessionState::MeasuringHeight, Some(decision)) = (self.state, tracked.height) {
+            self.on_height_decided(now_nanos, decision, events);
         }
         // RULA in every state once an operator is tracked.
-        let assessment = match self.assessor.assess(&filtered) {
+        for w in tracked.warnings {
+            if w.kind == WarningKind::Raised {
+                self.summary.warnings_raised += 1;
+            }
+            tracing::info!(message = %w.message, "posture warning");
+            events.push(SessionEvent::Warning(w));
+        }
+        let assessment = match tracked.assessment {
             Ok(a) => {
-                for w in self.warnings.update(&a) {
-                    if w.kind == ergocell_ergonomics::warnings::WarningKind::Raised {
-                        self.summary.warnings_raised += 1;
-                    }
-                    tracing::info!(message = %w.message, "posture warning");
-                    events.push(SessionEvent::Warning(w));
-                }
                 if let Some(h) = a.headline() {
                     self.summary.max_action_level =
                         self.summary.max_action_level.max(h.scores.action_level);
@@ -395,10 +356,42 @@ impl SessionMachine {
             }
         };
         events.push(SessionEvent::Frame {
-            stamp_nanos: filtered.stamp_nanos,
-            skeleton: Box::new(filtered),
+            stamp_nanos: tracked.skeleton.stamp_nanos,
+            skeleton: Box::new(tracked.skeleton),
             assessment: assessment.map(Box::new),
         });
+    }
+
+    fn on_height_decided(
+        &mut self,
+        now_nanos: i64,
+        decision: HeightDecision,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        let e = &decision.estimate;
+        self.summary.height_m = Some(e.height_m);
+        self.summary.height_uncertainty_m = Some(e.uncertainty_m);
+        self.summary.class = Some(decision.class.name().to_owned());
+        tracing::info!(
+            height_m = e.height_m,
+            uncertainty_m = e.uncertainty_m,
+            class = decision.class.name(),
+            "height class decided"
+        );
+        events.push(SessionEvent::ClassDecided {
+            stamp_nanos: now_nanos,
+            height_m: e.height_m,
+            uncertainty_m: e.uncertainty_m,
+            class: decision.class,
+        });
+        let reason = format!(
+            "stature {:.3} ± {:.3} m → class {}",
+            e.height_m,
+            e.uncertainty_m,
+            decision.class.name()
+        );
+        self.decision = Some(decision);
+        self.transition(now_nanos, SessionState::ClassDecided, &reason, events);
     }
 
     /// Locking, holding, resuming, ending.
@@ -601,7 +594,7 @@ impl SessionMachine {
         let command = RobotCommand::Execute {
             leg,
             lock_sha256: approved.lock().lock_sha256.clone(),
-            trajectory: trajectory_message(approved, leg),
+            trajectory: leg_trajectory(approved, leg),
         };
         if self.send(now_nanos, robot, command, events) {
             self.motion = Motion::Moving(leg);

@@ -8,28 +8,29 @@
 //!
 //! [`SessionMachine`] is driven by the caller: each [`SessionMachine::step`] gets the time (an injected
 //! clock: the simulator's, a test's or the wall clock at the binary's boundary), the camera views that
-//! arrived since the last step, and a [`RobotSink`]. Backends implement two traits —
-//! [`LandmarkSource`] (camera landmarks in) and [`RobotSink`] (commands out, joint positions in) —
-//! the simulator ([`sim::SimSource`]), ROS 2 (the binary's `run`), and dummies for tests
-//! ([`dummy`]). Trajectories come only through a [`TrajectoryProvider`], which verifies the lock and
-//! its approval on every call.
+//! arrived since the last step, and a [`RobotSink`]. The machine owns one
+//! [`Pipeline`](crate::pipeline::Pipeline): every frame is fused, filtered, assessed and measured
+//! there, nowhere else. Backends implement two traits — [`LandmarkSource`] (camera landmarks in) and
+//! [`RobotSink`] (commands out, joint positions in) — with this crate's own types: no ROS message
+//! crosses into the core (the binary converts at its boundary). Trajectories come only through a
+//! [`TrajectoryProvider`], which verifies the lock and its approval on every call.
 //!
-//! The robot is **held** (goal cancelled: an empty `JointTrajectory`) when fewer than one stereo pair
-//! sees the operator or the newest frame is older than [`SessionConfig::max_frame_age_nanos`]. A hold
-//! is a software hold through the controller's normal interface, not an emergency stop.
+//! The robot is **held** (goal cancelled: on ROS an empty `JointTrajectory`) when fewer than one
+//! stereo pair sees the operator or the newest frame is older than
+//! [`SessionConfig::max_frame_age_nanos`]. A hold is a software hold through the controller's normal
+//! interface, not an emergency stop.
 
 pub mod dummy;
 mod machine;
-pub mod provider;
-pub mod sim;
 
 pub use machine::{SessionMachine, SessionSummary};
 
-use ergocell_bridge::msg::{Duration, Header, JointTrajectory, JointTrajectoryPoint};
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
 use ergocell_perception::View2;
 use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
 use ergocell_skeleton::Skeleton3;
+
+pub use crate::error::{BackendError, ProviderError};
 
 /// The session's states.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -78,6 +79,31 @@ pub enum Leg {
     ToHome,
 }
 
+/// One knot of a trajectory leg, in the order of [`LegTrajectory::joint_names`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct LegPoint {
+    pub positions_rad: Vec<f64>,
+    pub velocities_rad_s: Vec<f64>,
+    pub accelerations_rad_s2: Vec<f64>,
+    /// Time from the leg's start, seconds.
+    pub time_from_start_s: f64,
+}
+
+/// A leg of the locked trajectory, as the robot must run it (the binary turns it into the
+/// controller's message).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct LegTrajectory {
+    pub joint_names: Vec<String>,
+    pub points: Vec<LegPoint>,
+}
+
+impl LegTrajectory {
+    /// The leg's duration, seconds (0 for an empty leg).
+    pub fn duration_s(&self) -> f64 {
+        self.points.last().map_or(0.0, |p| p.time_from_start_s)
+    }
+}
+
 /// A command to the robot controller.
 #[derive(Debug, Clone, PartialEq)]
 pub enum RobotCommand {
@@ -85,31 +111,10 @@ pub enum RobotCommand {
     Execute {
         leg: Leg,
         lock_sha256: String,
-        trajectory: JointTrajectory,
+        trajectory: LegTrajectory,
     },
-    /// Cancel the goal / send an empty trajectory: the robot stops where it is. Not an emergency stop.
+    /// Cancel the goal: the robot stops where it is. Not an emergency stop.
     Hold { reason: String },
-}
-
-impl RobotCommand {
-    /// The message on the controller's `joint_trajectory` topic (a hold is the empty trajectory).
-    ///
-    /// A trajectory goes out with a zero `header.stamp`: the joint trajectory controller then starts it
-    /// on receipt, on its own clock. A stamp from this PC's clock would shift or cut the start if the
-    /// two clocks disagree (a past stamp skips points). `stamp_nanos` only stamps the hold.
-    pub fn to_message(&self, stamp_nanos: i64) -> JointTrajectory {
-        match self {
-            Self::Execute { trajectory, .. } => {
-                let mut t = trajectory.clone();
-                t.header.stamp = ergocell_bridge::msg::Time::default();
-                t
-            }
-            Self::Hold { .. } => JointTrajectory {
-                header: Header::new(stamp_nanos, ""),
-                ..JointTrajectory::default()
-            },
-        }
-    }
 }
 
 /// What happened in a step: logged with `tracing`, recorded, shown.
@@ -161,7 +166,9 @@ pub enum SessionEvent {
     },
 }
 
-/// Thresholds of the session. Times in integer nanoseconds, distances in metres.
+/// Bounds of the session (`[session]` of the cell file; the station from `[station]`). Times in
+/// integer nanoseconds, distances in metres. The per-frame pipeline's tunables are in
+/// [`PipelineConfig`](crate::pipeline::PipelineConfig).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SessionConfig {
     /// A camera whose last view arrived longer ago than this is stale (degraded, reported).
@@ -172,8 +179,6 @@ pub struct SessionConfig {
     pub max_frame_age_nanos: i64,
     /// A view "sees the operator" with at least this many landmarks.
     pub min_view_landmarks: usize,
-    /// The operator is tracked when the fused skeleton has at least this many landmarks.
-    pub min_tracked_landmarks: usize,
     /// Tracking must be back this long before a held robot resumes.
     pub resume_after_nanos: i64,
     /// An operator lost from view farther than this from the station (horizontally) has left the
@@ -183,10 +188,6 @@ pub struct SessionConfig {
     pub station_xy_m: [f64; 2],
     /// Joint tolerance for "the robot is at the trajectory's start / end", radians.
     pub at_knot_tolerance_rad: f64,
-    /// Frame assembly: stamps this close are one instant.
-    pub assembly_tolerance_nanos: i64,
-    /// Frame assembly: how long a frame waits for missing cameras.
-    pub assembly_max_wait_nanos: i64,
 }
 
 impl Default for SessionConfig {
@@ -195,13 +196,10 @@ impl Default for SessionConfig {
             camera_stale_nanos: 500_000_000,
             max_frame_age_nanos: 500_000_000,
             min_view_landmarks: 10,
-            min_tracked_landmarks: 20,
             resume_after_nanos: 500_000_000,
             exit_radius_m: 1.0,
             station_xy_m: [0.0, 0.0],
             at_knot_tolerance_rad: 0.01,
-            assembly_tolerance_nanos: 15_000_000,
-            assembly_max_wait_nanos: 40_000_000,
         }
     }
 }
@@ -223,18 +221,10 @@ pub trait RobotSink {
 
 /// Verified trajectories: every call re-reads and re-verifies the lock and its approval.
 pub trait TrajectoryProvider {
-    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, String>;
+    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError>;
     /// The statures `(min_m, max_m)` the class's trajectory was derived and validated for (written
     /// in its trajectory file, covered by the lock's hash).
-    fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), String>;
-}
-
-/// A backend (source or sink) failed.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{backend}: {reason}")]
-pub struct BackendError {
-    pub backend: &'static str,
-    pub reason: String,
+    fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError>;
 }
 
 /// The trajectory class a height class selects.
@@ -246,18 +236,16 @@ pub fn trajectory_class(class: HeightClass) -> TrajectoryClass {
     }
 }
 
-/// The locked trajectory as a `JointTrajectory` message, for one leg.
-pub fn trajectory_message(approved: &ApprovedTrajectory, leg: Leg) -> JointTrajectory {
+/// One leg of the locked trajectory.
+pub fn leg_trajectory(approved: &ApprovedTrajectory, leg: Leg) -> LegTrajectory {
     let points = approved.points();
     let total_s = points.last().map_or(0.0, |p| p.time_s);
-    let convert =
-        |p: &ergocell_robot::lock::LockPoint, time_s: f64, sign: f64| JointTrajectoryPoint {
-            positions: p.positions_rad.clone(),
-            velocities: p.velocities_rad_s.iter().map(|v| sign * v).collect(),
-            accelerations: p.accelerations_rad_s2.clone(),
-            effort: Vec::new(),
-            time_from_start: Duration::from_secs_f64(time_s),
-        };
+    let convert = |p: &ergocell_robot::lock::LockPoint, time_s: f64, sign: f64| LegPoint {
+        positions_rad: p.positions_rad.clone(),
+        velocities_rad_s: p.velocities_rad_s.iter().map(|v| sign * v).collect(),
+        accelerations_rad_s2: p.accelerations_rad_s2.clone(),
+        time_from_start_s: time_s,
+    };
     let points = match leg {
         Leg::ToHandover => points.iter().map(|p| convert(p, p.time_s, 1.0)).collect(),
         Leg::ToHome => points
@@ -266,8 +254,7 @@ pub fn trajectory_message(approved: &ApprovedTrajectory, leg: Leg) -> JointTraje
             .map(|p| convert(p, total_s - p.time_s, -1.0))
             .collect(),
     };
-    JointTrajectory {
-        header: Header::default(),
+    LegTrajectory {
         joint_names: approved.joint_names().to_vec(),
         points,
     }

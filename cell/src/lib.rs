@@ -1,0 +1,25 @@
+//! The cell controller's core, with no I/O and no ROS: the one per-frame pipeline, the session
+//! state machine that owns it, and the cell configuration.
+//!
+//! - [`pipeline`]: camera views → fused skeleton → filtered skeleton → RULA → warnings, and the
+//!   height at session start. Wired once, here; the session, the digital twin's experiments and the
+//!   offline commands all run [`Pipeline`].
+//! - [`session`]: the state machine from "waiting for an operator" to "session ended": height class,
+//!   the locked trajectory, holds and resumes, the operator's departure. Backends behind traits
+//!   ([`session::LandmarkSource`], [`session::RobotSink`], [`session::TrajectoryProvider`]) speak this
+//!   crate's types; the binary converts them to ROS messages at its boundary.
+//! - [`config`]: `config/cell.toml`, every tunable of the session, pipeline, assessment and task and
+//!   the station, strictly parsed (`deny_unknown_fields`) with errors that name the file, the key and
+//!   the value.
+//!
+//! Dependencies: perception, ergonomics, robot, skeleton. Not ROS (`ergocell_bridge`), not the
+//! simulator; `.ci/deps` checks it.
+
+pub mod config;
+mod error;
+pub mod pipeline;
+pub mod session;
+
+pub use config::CellSettings;
+pub use error::{BackendError, CellError, ProviderError};
+pub use pipeline::{FrameOutput, Pipeline, PipelineConfig, TrackedFrame};
