@@ -3,8 +3,9 @@
 //! seed paper's Figs. 7–9 for one person, readable by the ergonomics expert.
 //!
 //! Each recording is the digital twin's operator doing the task seen by the rig's cameras with
-//! pose-estimator noise, fused (default fusion + the cell's causal filter) and assessed (RULA,
-//! warnings) exactly as in a session; "before" reaches for the unadapted robot's handover point
+//! pose-estimator noise, run through the cell controller's own per-frame pipeline
+//! ([`ergocell_cell::Pipeline`], the defaults a session runs: fusion, tracked gate, filter, RULA,
+//! warnings); "before" reaches for the unadapted robot's handover point
 //! (set for a 1.75 m operator), "after" for the class-specific one. There is no robot motion in the
 //! simulator's task, so the recording holds the handover point and no TCP track.
 
@@ -12,14 +13,11 @@ use std::path::{Path, PathBuf};
 
 use crate::recording::{self, topics, McapRecorder, RecordingError};
 use ergocell_bridge::msg::{Header, SessionState};
+use ergocell_cell::{CellError, Pipeline};
 use ergocell_ergonomics::height::ClassThresholds;
-use ergocell_ergonomics::warnings::{WarningConfig, WarningTracker};
-use ergocell_ergonomics::{AssessmentConfig, HeightClass, RulaAssessor, UpVector};
-use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
-use ergocell_perception::{FusionEngine, FusionMethod};
+use ergocell_ergonomics::HeightClass;
 use ergocell_sim::experiments::{Handovers, Setup};
 use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
-use nalgebra::Vector3;
 
 /// A simulated session could not be recorded.
 #[derive(Debug, thiserror::Error)]
@@ -33,6 +31,8 @@ pub enum SimRecordError {
     Perception(#[from] ergocell_perception::PerceptionError),
     #[error("ergonomics: {0}")]
     Ergonomics(#[from] ergocell_ergonomics::ErgonomicsError),
+    #[error("pipeline: {0}")]
+    Cell(#[from] CellError),
     /// After adaptation the cell does not serve this operator (the session ends without moving the
     /// robot), so there is no task to record.
     #[error("a {stature_m:.2} m operator is outside the statures {min_m:.2}–{max_m:.2} m class {class}'s trajectory was validated for: after adaptation the cell does not serve them (the session ends without moving the robot), so there is no \"after\" task to record")]
@@ -143,10 +143,7 @@ pub fn record(
         ..SimConfig::new(setup.seed)
     };
     let sim = Simulation::new(setup.rig.clone(), Operator::new(stature_m)?, script, config)?;
-    let mut engine = FusionEngine::new(setup.rig.clone(), FusionMethod::Default)?;
-    let mut filter = OneEuroFilter::new(OneEuroParams::default());
-    let mut assessor = RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z())?))?;
-    let mut warnings = WarningTracker::new(WarningConfig::default());
+    let mut pipeline = Pipeline::with_defaults(setup.rig.clone())?;
     let mut rec = McapRecorder::create(path)?;
     let mut first = true;
     for tick in sim {
@@ -171,21 +168,24 @@ pub fn record(
             };
             rec.write(topics::SESSION_STATE, now, &state)?;
         }
-        let fused = engine.fuse(&tick.frame)?;
-        let skeleton = filter.filter(&fused.skeleton);
-        let assessment = assessor.assess(&skeleton)?;
-        rec.write(
-            topics::OPERATOR_POSE,
-            now,
-            &recording::operator_pose_message(&skeleton, Some(&assessment)),
-        )?;
-        rec.write(
-            topics::ERGONOMICS,
-            now,
-            &recording::ergonomic_message(&assessment),
-        )?;
-        for w in warnings.update(&assessment) {
-            rec.write(topics::WARNINGS, now, &recording::warning_message(&w))?;
+        for output in pipeline.push_views(now, tick.frame.views) {
+            let Some(tracked) = output?.tracked else {
+                continue;
+            };
+            let assessment = tracked.assessment?;
+            rec.write(
+                topics::OPERATOR_POSE,
+                now,
+                &recording::operator_pose_message(&tracked.skeleton, Some(&assessment)),
+            )?;
+            rec.write(
+                topics::ERGONOMICS,
+                now,
+                &recording::ergonomic_message(&assessment),
+            )?;
+            for w in &tracked.warnings {
+                rec.write(topics::WARNINGS, now, &recording::warning_message(w))?;
+            }
         }
         rec.write(
             topics::ROBOT_MARKERS,
