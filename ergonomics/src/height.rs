@@ -10,7 +10,8 @@
 //! of the trunk axis (a bowed head lowers the eyes and biases both estimators low).
 //!
 //! # Two estimators (Drillis & Contini 1966, as tabulated by Winter, *Biomechanics and Motor Control
-//! of Human Movement*; fractions of stature H)
+//! of Human Movement*; fractions of stature H, from the workspace's one table,
+//! [`ergocell_anthropometry`])
 //! - **Floor to eye**: eye height above the floor is 0.936 H, so `H = (eye − floor) / 0.936` — the
 //!   eye height plus the eye-to-vertex offset of 0.064 H. The eye height is the mean of the left and
 //!   right eye landmarks along up; the floor is the configured floor height along up or, when unknown,
@@ -49,6 +50,7 @@
 
 use std::collections::VecDeque;
 
+use ergocell_anthropometry::{from_heights, EYE_HEIGHT, FOREARM, SHANK, THIGH, TRUNK, UPPER_ARM};
 use ergocell_skeleton::{Landmark, Skeleton3};
 use nalgebra::{Point3, Vector3};
 use serde::{Deserialize, Serialize};
@@ -56,10 +58,8 @@ use serde::{Deserialize, Serialize};
 use crate::angles::UpVector;
 use crate::ErgonomicsError;
 
-/// Eye height over stature (Drillis & Contini).
-pub const EYE_HEIGHT_RATIO: f64 = 0.936;
 /// Ankle-to-eye chain over stature: shank 0.246 + thigh 0.245 + trunk 0.288 + shoulder-to-eye 0.118.
-pub const CHAIN_RATIO: f64 = 0.246 + 0.245 + 0.288 + (0.936 - 0.818);
+pub const CHAIN_RATIO: f64 = SHANK + THIGH + TRUNK + from_heights::EYE_ABOVE_SHOULDER;
 /// Assumed relative spread of the eye-height ratio between people.
 pub const EYE_MODEL_REL_SIGMA: f64 = 0.015;
 /// Assumed relative spread of the chain ratio between people.
@@ -70,16 +70,16 @@ pub const SEGMENT_MODEL_REL_SIGMA: f64 = 0.04;
 /// Segments of the posture-independent estimator and their lengths as fractions of stature
 /// (Drillis & Contini 1966).
 pub const SEGMENT_RATIOS: [(Landmark, Landmark, f64); 10] = [
-    (Landmark::LeftShoulder, Landmark::LeftElbow, 0.186),
-    (Landmark::RightShoulder, Landmark::RightElbow, 0.186),
-    (Landmark::LeftElbow, Landmark::LeftWrist, 0.146),
-    (Landmark::RightElbow, Landmark::RightWrist, 0.146),
-    (Landmark::LeftHip, Landmark::LeftKnee, 0.245),
-    (Landmark::RightHip, Landmark::RightKnee, 0.245),
-    (Landmark::LeftKnee, Landmark::LeftAnkle, 0.246),
-    (Landmark::RightKnee, Landmark::RightAnkle, 0.246),
-    (Landmark::LeftShoulder, Landmark::LeftHip, 0.288),
-    (Landmark::RightShoulder, Landmark::RightHip, 0.288),
+    (Landmark::LeftShoulder, Landmark::LeftElbow, UPPER_ARM),
+    (Landmark::RightShoulder, Landmark::RightElbow, UPPER_ARM),
+    (Landmark::LeftElbow, Landmark::LeftWrist, FOREARM),
+    (Landmark::RightElbow, Landmark::RightWrist, FOREARM),
+    (Landmark::LeftHip, Landmark::LeftKnee, THIGH),
+    (Landmark::RightHip, Landmark::RightKnee, THIGH),
+    (Landmark::LeftKnee, Landmark::LeftAnkle, SHANK),
+    (Landmark::RightKnee, Landmark::RightAnkle, SHANK),
+    (Landmark::LeftShoulder, Landmark::LeftHip, TRUNK),
+    (Landmark::RightShoulder, Landmark::RightHip, TRUNK),
 ];
 
 /// Height class thresholds, validated.
@@ -452,7 +452,7 @@ impl HeightEstimator {
         });
         let eye = eye_mid
             .zip(floor)
-            .map(|(e, f)| (up.height_of(&e) - f) / EYE_HEIGHT_RATIO)
+            .map(|(e, f)| (up.height_of(&e) - f) / EYE_HEIGHT)
             .filter(|h| *h > 0.0);
 
         let shank: Vec<f64> = [

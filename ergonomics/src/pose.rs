@@ -2,11 +2,12 @@
 //! the simulator crate).
 //!
 //! A [`PoseSpec`] builds the 33 BlazePose landmarks of a person of a given stature from the Drillis &
-//! Contini (1966) segment ratios (tabulated by Winter; see `shared/reference/robot.md`), in a body
-//! frame with x to the person's right, y forwards and z up, feet on the floor at z = 0; then maps it
-//! to the world with an arbitrary rotation and translation. The world "up" of the pose is
-//! [`PoseSpec::up`]. Every joint angle is applied as a rotation, so the angles the extractor should
-//! recover are exactly the ones set here (see [`crate::angles`] for the definitions).
+//! Contini (1966) segment ratios (tabulated by Winter; the workspace's one table,
+//! [`ergocell_anthropometry`]), in a body frame with x to the person's right, y forwards and z up,
+//! feet on the floor at z = 0; then maps it to the world with an arbitrary rotation and
+//! translation. The world "up" of the pose is [`PoseSpec::up`]. Every joint angle is applied as a
+//! rotation, so the angles the extractor should recover are exactly the ones set here (see
+//! [`crate::angles`] for the definitions).
 
 use ergocell_skeleton::{Landmark, Skeleton3, LANDMARK_COUNT};
 use nalgebra::{Point3, Rotation3, Vector3};
@@ -90,6 +91,10 @@ impl PoseSpec {
 
     /// The 33 landmark positions in the world frame.
     pub fn points(&self) -> [Point3<f64>; LANDMARK_COUNT] {
+        use ergocell_anthropometry::{
+            from_heights, ANKLE_HEIGHT, FOREARM, HAND, HIP_WIDTH, SHANK, SHOULDER_WIDTH, THIGH,
+            TRUNK, UPPER_ARM,
+        };
         use Landmark as L;
         let h = self.stature_m;
         let mut p = [Point3::origin(); LANDMARK_COUNT];
@@ -97,10 +102,10 @@ impl PoseSpec {
 
         // Legs, built from the floor up so that bent knees keep the feet on the floor.
         let half_k = self.knee_flexion_rad * 0.5;
-        let hip_x = 0.191 * h * 0.5;
-        let ankle_z = 0.039 * h;
-        let shank = Vector3::new(0.0, half_k.sin(), half_k.cos()) * (0.246 * h);
-        let thigh = Vector3::new(0.0, -half_k.sin(), half_k.cos()) * (0.245 * h);
+        let hip_x = HIP_WIDTH * h * 0.5;
+        let ankle_z = ANKLE_HEIGHT * h;
+        let shank = Vector3::new(0.0, half_k.sin(), half_k.cos()) * (SHANK * h);
+        let thigh = Vector3::new(0.0, -half_k.sin(), half_k.cos()) * (THIGH * h);
         for (sx, ankle, heel, toe, knee, hip) in [
             (
                 -1.0,
@@ -132,13 +137,13 @@ impl PoseSpec {
         let r_trunk =
             rx(-self.trunk_flexion_rad) * ry(self.trunk_side_bend_rad) * rz(self.trunk_twist_rad);
         let trunk = |v: Vector3<f64>| hip_mid + r_trunk * v;
-        let trunk_len = 0.288 * h;
-        let shoulder_x = 0.259 * h * 0.5;
+        let trunk_len = TRUNK * h;
+        let shoulder_x = SHOULDER_WIDTH * h * 0.5;
 
         // Head about the neck base (shoulder midpoint).
         let neck = Vector3::new(0.0, 0.0, trunk_len);
         let r_head = rx(-self.neck_flexion_rad) * rz(self.neck_twist_rad);
-        let eye_z = (0.936 - 0.818) * h;
+        let eye_z = from_heights::EYE_ABOVE_SHOULDER * h;
         let head = |v: Vector3<f64>| trunk(neck + r_head * v);
         set(
             L::Nose,
@@ -209,11 +214,11 @@ impl PoseSpec {
             let shoulder = Vector3::new(sx * shoulder_x, 0.0, trunk_len + arm.shoulder_raise_m);
             let r_upper = ry(-sx * arm.abduction_rad) * rx(arm.flexion_rad);
             let down = -Vector3::z();
-            let elbow = shoulder + r_upper * down * (0.186 * h);
+            let elbow = shoulder + r_upper * down * (UPPER_ARM * h);
             let r_fore = r_upper * rx(arm.elbow_flexion_rad);
-            let wrist = elbow + r_fore * down * (0.146 * h);
+            let wrist = elbow + r_fore * down * (FOREARM * h);
             let r_hand = r_fore * ry(sx * arm.wrist_flexion_rad) * rx(arm.wrist_deviation_rad);
-            let knuckles = 0.45 * 0.108 * h;
+            let knuckles = 0.45 * HAND * h;
             let half_width = 0.012 * h;
             set(ids[0], trunk(shoulder));
             set(ids[1], trunk(elbow));

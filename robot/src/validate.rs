@@ -7,6 +7,8 @@
 
 use std::fmt::{self, Write as _};
 
+// Fractions of stature (Drillis & Contini 1966, tabulated by Winter): the workspace's one table.
+use ergocell_anthropometry as anthropometry;
 use nalgebra::{Isometry3, Matrix3, Matrix6, Point3, Rotation3, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
@@ -22,17 +24,6 @@ use crate::RobotError;
 pub const SAFETY_NOTE: &str =
     "This validation and lock are a software guarantee on top of the robot's own \
 safety controller (safety configuration, monitored speeds and stops); they do not replace it.";
-
-/// Anthropometric fractions of stature (Drillis & Contini 1966, tabulated by Winter).
-mod anthropometry {
-    pub const HIP: f64 = 0.530;
-    pub const SHOULDER: f64 = 0.818;
-    pub const CHIN: f64 = 0.870;
-    pub const SHOULDER_WIDTH: f64 = 0.259;
-    pub const UPPER_ARM: f64 = 0.186;
-    pub const FOREARM: f64 = 0.146;
-    pub const HAND: f64 = 0.108;
-}
 
 /// The posture a handover point is derived for: RULA's score-1 zones of the upper and lower arm.
 ///
@@ -97,9 +88,9 @@ impl ArmPosture {
     /// The posture holding a point `forward_m` ahead of the shoulder line and `height_m` above the
     /// floor; `None` when the two-link arm cannot reach it or an input is not finite.
     pub fn holding(stature_m: f64, forward_m: f64, height_m: f64) -> Option<Self> {
-        use anthropometry::{FOREARM, HAND, SHOULDER, UPPER_ARM};
+        use anthropometry::{FOREARM, HAND, SHOULDER_HEIGHT, UPPER_ARM};
         let (a, b) = (UPPER_ARM * stature_m, (FOREARM + 0.5 * HAND) * stature_m);
-        let (dx, dz) = (forward_m, SHOULDER * stature_m - height_m);
+        let (dx, dz) = (forward_m, SHOULDER_HEIGHT * stature_m - height_m);
         let d = dx.hypot(dz);
         if !(d.is_finite() && d > 1e-9 && d <= a + b && d >= (a - b).abs()) {
             return None;
@@ -142,7 +133,7 @@ impl ArmPosture {
 /// extremes lie on the zone's corners; the zone is swept on a 0.1° grid so the elbow limit is
 /// honoured wherever it cuts a corner off.
 pub fn grasp_fractions() -> ([f64; 2], [f64; 2]) {
-    use anthropometry::{FOREARM, HAND, SHOULDER, UPPER_ARM};
+    use anthropometry::{FOREARM, HAND, SHOULDER_HEIGHT, UPPER_ARM};
     use grasp_posture::{ELBOW_FLEXION_RAD, FOREARM_BELOW_HORIZONTAL_RAD, UPPER_ARM_FLEXION_RAD};
     let reach = FOREARM + 0.5 * HAND;
     let steps = 200_u32;
@@ -159,7 +150,7 @@ pub fn grasp_fractions() -> ([f64; 2], [f64; 2]) {
             if !(ELBOW_FLEXION_RAD[0] - 1e-12..=ELBOW_FLEXION_RAD[1] + 1e-12).contains(&elbow) {
                 continue;
             }
-            let h = SHOULDER - UPPER_ARM * upper.cos() - reach * below.sin();
+            let h = SHOULDER_HEIGHT - UPPER_ARM * upper.cos() - reach * below.sin();
             let f = UPPER_ARM * upper.sin() + reach * below.cos();
             height = [height[0].min(h), height[1].max(h)];
             forward = [forward[0].min(f), forward[1].max(f)];
@@ -456,18 +447,18 @@ fn body_capsules(
     cell: &CellConfig,
     spec: &TrajectorySpec,
 ) -> Vec<(&'static str, Point3<f64>, Point3<f64>, f64)> {
-    use anthropometry::{CHIN, HIP, SHOULDER};
+    use anthropometry::{CHIN_HEIGHT, HIP_HEIGHT, SHOULDER_HEIGHT};
     let T_cell_station = cell.T_cell_station();
     let (h_min, h_max) = (spec.stature.min_m, spec.stature.max_m);
     let at = |z: f64| T_cell_station * Point3::new(0.0, 0.0, z);
     let r_head = spec.envelope.head_radius_m;
-    let head_lo = CHIN * h_min + r_head;
+    let head_lo = CHIN_HEIGHT * h_min + r_head;
     let head_hi = (h_max - r_head).max(head_lo);
     vec![
         (
             "torso",
-            at(HIP * h_min),
-            at(SHOULDER * h_max),
+            at(HIP_HEIGHT * h_min),
+            at(SHOULDER_HEIGHT * h_max),
             spec.envelope.torso_radius_m,
         ),
         ("head", at(head_lo), at(head_hi), r_head),

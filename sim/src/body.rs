@@ -3,13 +3,15 @@
 //!
 //! # Anthropometry
 //! Every segment is a fraction of stature `H` from Drillis & Contini (1966), *Body segment
-//! parameters*, as tabulated by Winter, *Biomechanics and Motor Control of Human Movement*
-//! (see `shared/reference/robot.md`): heights above the floor — ankle 0.039, knee 0.285, hip 0.530,
-//! shoulder 0.818, chin 0.870, eye 0.936; lengths — shoulder width 0.259, hip width 0.191, upper arm
-//! 0.186, forearm 0.146, hand 0.108, foot 0.152, thigh 0.245, shank 0.246, trunk 0.288. Standing
-//! upright, the model puts the eyes at exactly 0.936 H and the shoulder joints at 0.818 H, which is
-//! what the ergonomics height estimator inverts. Face offsets (nose, eyes, ears, mouth) follow the
-//! same layout as `ergocell_ergonomics::pose`, so both crates agree on where BlazePose puts them.
+//! parameters*, as tabulated by Winter, *Biomechanics and Motor Control of Human Movement*, Fig. 4.1:
+//! the workspace's one table, [`ergocell_anthropometry`] (heights above the floor — ankle 0.039,
+//! knee 0.285, hip 0.530, shoulder 0.818, eye 0.936; lengths — shoulder width 0.259, hip width 0.191,
+//! upper arm 0.186, forearm 0.146, hand 0.108, foot 0.152). Shank, thigh and trunk are the
+//! differences of the joint heights ([`ergocell_anthropometry::from_heights`]: 0.246, 0.245, 0.288),
+//! stacked on the ankle height, so standing upright the model puts the eyes at 0.936 H and the
+//! shoulder joints at 0.818 H (to rounding), which is what the ergonomics height estimator inverts.
+//! Face offsets (nose, eyes, ears, mouth) follow the same layout as `ergocell_ergonomics::pose`, so
+//! both crates agree on where BlazePose puts them.
 //!
 //! # Frames
 //! The body frame has its origin on the floor below the hip midpoint, x forward (where the operator
@@ -34,38 +36,6 @@ use nalgebra::{Point3, Rotation3, Vector3};
 use serde::Serialize;
 
 use crate::SimError;
-
-/// Drillis & Contini (1966) fractions of stature, as tabulated by Winter.
-pub mod ratios {
-    /// Ankle joint height.
-    pub const ANKLE_HEIGHT: f64 = 0.039;
-    /// Knee joint height.
-    pub const KNEE_HEIGHT: f64 = 0.285;
-    /// Hip joint (greater trochanter) height.
-    pub const HIP_HEIGHT: f64 = 0.530;
-    /// Shoulder joint height.
-    pub const SHOULDER_HEIGHT: f64 = 0.818;
-    /// Eye height.
-    pub const EYE_HEIGHT: f64 = 0.936;
-    /// Shoulder width (joint to joint).
-    pub const SHOULDER_WIDTH: f64 = 0.259;
-    /// Hip width (joint to joint).
-    pub const HIP_WIDTH: f64 = 0.191;
-    /// Upper arm (shoulder to elbow).
-    pub const UPPER_ARM: f64 = 0.186;
-    /// Forearm (elbow to wrist).
-    pub const FOREARM: f64 = 0.146;
-    /// Hand (wrist to fingertip).
-    pub const HAND: f64 = 0.108;
-    /// Foot length.
-    pub const FOOT: f64 = 0.152;
-    /// Thigh (hip to knee): 0.530 − 0.285.
-    pub const THIGH: f64 = HIP_HEIGHT - KNEE_HEIGHT;
-    /// Shank (knee to ankle): 0.285 − 0.039.
-    pub const SHANK: f64 = KNEE_HEIGHT - ANKLE_HEIGHT;
-    /// Trunk (hip to shoulder): 0.818 − 0.530.
-    pub const TRUNK: f64 = SHOULDER_HEIGHT - HIP_HEIGHT;
-}
 
 /// A simulated operator: stature and the segment lengths derived from it.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -125,7 +95,7 @@ impl Operator {
 
     /// Landmarks, grasp points and the torso/head geometry used for occlusion.
     pub(crate) fn kinematics(&self, q: &Posture) -> Kinematics {
-        use ratios as r;
+        use ergocell_anthropometry::{self as r, from_heights};
         use Landmark as L;
         let h = self.stature_m;
         let mut p = [Point3::origin(); LANDMARK_COUNT];
@@ -134,9 +104,11 @@ impl Operator {
         // Legs: thigh and shank angles from vertical (positive = forward), pelvis at the height that
         // puts the longer leg's ankle at its standing height.
         let leg = |hip_flex: f64, knee_flex: f64| {
-            let thigh = Vector3::new(hip_flex.sin(), 0.0, -hip_flex.cos()) * (r::THIGH * h);
+            let thigh =
+                Vector3::new(hip_flex.sin(), 0.0, -hip_flex.cos()) * (from_heights::THIGH * h);
             let shank_angle = hip_flex - knee_flex;
-            let shank = Vector3::new(shank_angle.sin(), 0.0, -shank_angle.cos()) * (r::SHANK * h);
+            let shank = Vector3::new(shank_angle.sin(), 0.0, -shank_angle.cos())
+                * (from_heights::SHANK * h);
             (thigh, shank)
         };
         let (tl, sl) = leg(q.left_leg.hip_flexion_rad, q.left_leg.knee_flexion_rad);
@@ -185,10 +157,10 @@ impl Operator {
         // Trunk about the hip midpoint.
         let r_trunk = ry(q.trunk_flexion_rad) * rx(q.trunk_side_bend_rad) * rz(q.trunk_twist_rad);
         let trunk = |v: Vector3<f64>| hip_mid + r_trunk * v;
-        let trunk_len = r::TRUNK * h;
+        let trunk_len = from_heights::TRUNK * h;
         let neck = Vector3::new(0.0, 0.0, trunk_len);
         let r_head = ry(q.neck_flexion_rad) * rz(q.neck_yaw_rad);
-        let eye_z = (r::EYE_HEIGHT - r::SHOULDER_HEIGHT) * h;
+        let eye_z = from_heights::EYE_ABOVE_SHOULDER * h;
         let head = |v: Vector3<f64>| trunk(neck + r_head * v);
         set(
             L::Nose,

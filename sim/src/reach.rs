@@ -19,9 +19,10 @@
 //! gaze (and [`ReachConfig::eye_up_rad`] upward) on their own, the neck the rest; looking down or
 //! ahead the head never flexes less than the base posture's habitual flexion.
 
+use ergocell_anthropometry as anthropometry;
 use nalgebra::{DMatrix, DVector, Point3};
 
-use crate::body::{ratios, Operator, Posture};
+use crate::body::{Operator, Posture};
 use crate::SimError;
 
 /// Weights, rest values and joint ranges of the reach solver. Radians.
@@ -268,7 +269,7 @@ fn d(x: f64) -> f64 {
 
 /// The longest reach of the working hand's grasp point from the shoulder, metres (arm straight).
 pub fn arm_reach_m(op: &Operator) -> f64 {
-    op.len(ratios::UPPER_ARM + ratios::FOREARM + 0.5 * 0.45 * ratios::HAND)
+    op.len(anthropometry::UPPER_ARM + anthropometry::FOREARM + 0.5 * 0.45 * anthropometry::HAND)
 }
 
 #[cfg(test)]
