@@ -25,6 +25,7 @@
 pub mod config;
 mod error;
 pub mod ik;
+pub mod layout;
 pub mod lock;
 pub mod model;
 pub mod pose;
@@ -33,6 +34,7 @@ pub mod validate;
 
 pub use config::{CellConfig, TrajectoryClass, TrajectorySpec};
 pub use error::RobotError;
+pub use layout::{TrajectoryFile, TrajectoryLayout};
 pub use lock::{ApprovedTrajectory, LockFile, SessionLock};
 pub use model::{JointLimits, RobotModel};
 pub use validate::{

@@ -16,6 +16,9 @@
 //! * A [`SessionLock`] holds one approved trajectory for a session; a request for another class is refused
 //!   and recorded until the session ends (operator gone and robot at home).
 //!
+//! Where these files live is [`crate::layout::TrajectoryLayout`]'s business; this module only parses
+//! and checks their text.
+//!
 //! The lock is a software guarantee on top of the robot's own safety controller, not a replacement.
 
 use std::fmt;

@@ -8,7 +8,9 @@ mod common;
 use std::path::{Path, PathBuf};
 
 use ergocell_robot::lock::{ApprovalsFile, LockFile};
-use ergocell_robot::{CellConfig, RobotModel, TrajectoryClass, TrajectorySpec};
+use ergocell_robot::{
+    CellConfig, RobotModel, TrajectoryClass, TrajectoryFile, TrajectoryLayout, TrajectorySpec,
+};
 
 fn files(dir: &Path, out: &mut Vec<PathBuf>) {
     for entry in std::fs::read_dir(dir).unwrap() {
@@ -24,21 +26,15 @@ fn files(dir: &Path, out: &mut Vec<PathBuf>) {
 #[test]
 fn every_file_in_config_and_trajectories_parses() {
     let root = common::repo_root();
+    let layout = TrajectoryLayout::new(root.join(TrajectoryLayout::DEFAULT_DIR));
     let mut all = Vec::new();
     files(&root.join("config"), &mut all);
-    files(&root.join("trajectories"), &mut all);
+    files(layout.dir(), &mut all);
     let mut checked = 0;
     for path in &all {
         let text =
             std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let name = path.file_name().unwrap().to_string_lossy().to_string();
-        let parent = path
-            .parent()
-            .unwrap()
-            .file_name()
-            .unwrap()
-            .to_string_lossy()
-            .to_string();
         match path.extension().and_then(|e| e.to_str()) {
             Some("toml") => {
                 let _: toml::Table =
@@ -46,18 +42,29 @@ fn every_file_in_config_and_trajectories_parses() {
                 if name == "cell.toml" {
                     CellConfig::from_toml_str(&text)
                         .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-                } else if parent == "trajectories" {
-                    let spec = TrajectorySpec::from_toml_str(&text)
-                        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-                    assert_eq!(format!("{}.toml", spec.class), name, "{}", path.display());
-                } else if parent == "locks" {
-                    let class: TrajectoryClass =
-                        name.trim_end_matches(".lock.toml").parse().unwrap();
-                    LockFile::from_toml_str(class, &text)
-                        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-                } else if parent == "approvals" {
-                    ApprovalsFile::from_toml_str(&text)
-                        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                } else if let Some((file, class)) = layout.identify(path) {
+                    match file {
+                        TrajectoryFile::Spec => {
+                            let spec = TrajectorySpec::from_toml_str(&text)
+                                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                            assert_eq!(spec.class, class, "{}", path.display());
+                        }
+                        TrajectoryFile::Lock => {
+                            LockFile::from_toml_str(class, &text)
+                                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                        }
+                        TrajectoryFile::Approvals => {
+                            ApprovalsFile::from_toml_str(&text)
+                                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                        }
+                    }
+                } else {
+                    assert!(
+                        !path.starts_with(layout.dir()),
+                        "{}: not a file of the trajectories layout (<class>.toml, \
+                         locks/<class>.lock.toml, approvals/<class>.toml)",
+                        path.display()
+                    );
                 }
             }
             Some("urdf") => {

@@ -267,7 +267,7 @@ fn the_committed_locks_match_the_committed_inputs() {
             &s.cell,
             env!("CARGO_PKG_VERSION"),
         );
-        let lock_text = common::read(&format!("trajectories/locks/{class}.lock.toml"));
+        let lock_text = common::read(common::layout().lock(class));
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,

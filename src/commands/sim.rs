@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
-use ergocell_robot::{CellConfig, TrajectorySpec};
+use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySpec};
 use ergocell_sim::experiments::{
     self, Adaptation, Handovers, HeightResult, RulaAgreement, Setup, Table1,
 };
@@ -88,7 +88,7 @@ pub struct Common {
     #[arg(long, global = true, default_value = "config/cell.toml")]
     pub cell: PathBuf,
     /// Folder with the class trajectories `c1.toml`, `c2.toml`, `c3.toml`.
-    #[arg(long, global = true, default_value = "trajectories")]
+    #[arg(long, global = true, default_value = TrajectoryLayout::DEFAULT_DIR)]
     pub trajectories: PathBuf,
     /// Operators to simulate (default per experiment: table1 5, height 60, rula-agreement 6).
     #[arg(long, global = true)]
@@ -150,8 +150,9 @@ fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     let T_world_station = cell.T_cell_station();
     let mut points = Vec::new();
     let mut statures = Vec::new();
-    for class in ["c1", "c2", "c3"] {
-        let path = common.trajectories.join(format!("{class}.toml"));
+    let layout = TrajectoryLayout::new(&common.trajectories);
+    for class in TrajectoryClass::ALL {
+        let path = layout.spec(class);
         let spec = TrajectorySpec::from_toml_str(&read(&path)?)
             .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
         let h = &spec.handover;

@@ -20,7 +20,7 @@ use anyhow::{bail, Context as _};
 use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
 use ergocell_robot::{
     plan_and_validate, CellConfig, InputHashes, PlanInputs, RobotModel, TrajectoryClass,
-    TrajectorySpec,
+    TrajectoryLayout, TrajectorySpec,
 };
 
 use super::UsageError;
@@ -31,7 +31,7 @@ pub struct Args {
     #[command(subcommand)]
     pub command: Sub,
     /// Directory of the trajectory files (`c1.toml`…); locks go to `<dir>/locks`, approvals to `<dir>/approvals`.
-    #[arg(long, global = true, default_value = "trajectories")]
+    #[arg(long, global = true, default_value = TrajectoryLayout::DEFAULT_DIR)]
     pub trajectories_dir: PathBuf,
     /// Cell configuration (its `[robot]` and `[station]` tables; the URDF path is relative to this file).
     #[arg(long, global = true, default_value = "config/cell.toml")]
@@ -92,7 +92,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
 
 /// The cell, the robot and the paths, read once.
 struct Context {
-    dir: PathBuf,
+    layout: TrajectoryLayout,
     cell: CellConfig,
     urdf_text: String,
     model: RobotModel,
@@ -113,26 +113,16 @@ impl Context {
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
                 .map_err(|e| UsageError(format!("{}: {e}", urdf_path.display())))?;
         Ok(Self {
-            dir: args.trajectories_dir.clone(),
+            layout: TrajectoryLayout::new(&args.trajectories_dir),
             cell,
             urdf_text,
             model,
         })
     }
 
-    fn spec_path(&self, class: TrajectoryClass) -> PathBuf {
-        self.dir.join(format!("{class}.toml"))
-    }
-    fn lock_path(&self, class: TrajectoryClass) -> PathBuf {
-        self.dir.join("locks").join(format!("{class}.lock.toml"))
-    }
-    fn approvals_path(&self, class: TrajectoryClass) -> PathBuf {
-        self.dir.join("approvals").join(format!("{class}.toml"))
-    }
-
     /// The class's trajectory file (its text and parsed spec) and the current input hashes.
     fn spec(&self, class: TrajectoryClass) -> anyhow::Result<(TrajectorySpec, InputHashes)> {
-        let path = self.spec_path(class);
+        let path = self.layout.spec(class);
         let text = read(&path)?;
         let spec = TrajectorySpec::from_toml_str(&text)
             .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
@@ -224,7 +214,7 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
                 }
             };
         let lock = LockFile::from_locked(&locked);
-        let path = ctx.lock_path(class);
+        let path = ctx.layout.lock(class);
         write(&path, &lock.to_toml()?)?;
         println!(
             "{class}: locked {} (lock_sha256 {})",
@@ -262,7 +252,7 @@ fn matches_validation(
 
 fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()> {
     let (spec, current) = ctx.spec(class)?;
-    let lock_path = ctx.lock_path(class);
+    let lock_path = ctx.layout.lock(class);
     let lock_text = read(&lock_path)
         .with_context(|| format!("run `ergocell trajectories lock --class {class}` first"))?;
     let inputs = VerifyInputs {
@@ -276,7 +266,7 @@ fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()
         lock::verify_integrity(&inputs).map_err(|f| anyhow::anyhow!("{f}\nrefusing to approve"))?;
     matches_validation(ctx, &spec, &current, &lock)
         .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?;
-    let approvals_path = ctx.approvals_path(class);
+    let approvals_path = ctx.layout.approvals(class);
     let mut file = if approvals_path.exists() {
         ApprovalsFile::from_toml_str(&read(&approvals_path)?)
             .map_err(|e| UsageError(format!("{}: {e}", approvals_path.display())))?
@@ -303,7 +293,7 @@ fn verify(
     let mut failed = Vec::new();
     for class in classes(class) {
         let (spec, current) = ctx.spec(class)?;
-        let lock_path = ctx.lock_path(class);
+        let lock_path = ctx.layout.lock(class);
         let Ok(lock_text) = fs::read_to_string(&lock_path) else {
             println!(
                 "{class}: FAIL\n  - no lock file {} (run `ergocell trajectories lock --class {class}`)",
@@ -312,7 +302,7 @@ fn verify(
             failed.push(class);
             continue;
         };
-        let approvals_path = ctx.approvals_path(class);
+        let approvals_path = ctx.layout.approvals(class);
         let approvals_text = fs::read_to_string(&approvals_path).ok();
         let inputs = VerifyInputs {
             class,

@@ -6,7 +6,8 @@ use std::path::{Path, PathBuf};
 
 use ergocell_robot::lock::{self, ApprovalsFile, VerifyInputs};
 use ergocell_robot::{
-    ApprovedTrajectory, CellConfig, InputHashes, RobotModel, TrajectoryClass, TrajectorySpec,
+    ApprovedTrajectory, CellConfig, InputHashes, RobotModel, TrajectoryClass, TrajectoryLayout,
+    TrajectorySpec,
 };
 
 use super::{ProviderError, TrajectoryProvider};
@@ -16,8 +17,8 @@ use crate::robot_markers::RobotGeometry;
 #[derive(Debug, Clone)]
 pub struct FileTrajectories {
     cell_path: PathBuf,
-    trajectories_dir: PathBuf,
-    approvals_dir: PathBuf,
+    /// The trajectories folder's files, approvals in the folder given (not necessarily inside it).
+    layout: TrajectoryLayout,
     /// The cell file and its URDF are the ones shipped in the binary ([`crate::shipped`]).
     cell_shipped: bool,
     /// The trajectory files and locks are the shipped ones.
@@ -29,8 +30,7 @@ impl FileTrajectories {
     pub fn new(cell_path: &Path, trajectories_dir: &Path, approvals_dir: &Path) -> Self {
         Self {
             cell_path: cell_path.to_owned(),
-            trajectories_dir: trajectories_dir.to_owned(),
-            approvals_dir: approvals_dir.to_owned(),
+            layout: TrajectoryLayout::new(trajectories_dir).with_approvals_dir(approvals_dir),
             cell_shipped: false,
             trajectories_shipped: false,
         }
@@ -46,11 +46,11 @@ impl FileTrajectories {
         Self {
             cell_path: cell_path
                 .map_or_else(|| PathBuf::from(crate::shipped::CELL), Path::to_owned),
-            trajectories_dir: trajectories_dir.map_or_else(
-                || PathBuf::from(crate::shipped::TRAJECTORIES),
-                Path::to_owned,
-            ),
-            approvals_dir: approvals_dir.to_owned(),
+            // Shipped: the relative `trajectories/…` paths are the keys of `crate::shipped::FILES`.
+            layout: TrajectoryLayout::new(
+                trajectories_dir.unwrap_or_else(|| Path::new(crate::shipped::TRAJECTORIES)),
+            )
+            .with_approvals_dir(approvals_dir),
             cell_shipped: cell_path.is_none(),
             trajectories_shipped: trajectories_dir.is_none(),
         }
@@ -96,13 +96,7 @@ impl FileTrajectories {
 
     /// The lock file of `class`.
     pub fn lock_text(&self, class: TrajectoryClass) -> Result<String, String> {
-        self.read(&self.lock_path(class))
-    }
-
-    fn lock_path(&self, class: TrajectoryClass) -> PathBuf {
-        self.trajectories_dir
-            .join("locks")
-            .join(format!("{class}.lock.toml"))
+        self.read(&self.layout.lock(class))
     }
 
     /// The cell config (text and parsed), the URDF's path and its text.
@@ -122,7 +116,7 @@ impl FileTrajectories {
     /// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
     pub fn robot_geometry(&self, class: TrajectoryClass) -> Result<RobotGeometry, String> {
         let (cell_text, _, _, urdf_text) = self.cell_and_urdf()?;
-        let spec_text = self.read(&self.trajectories_dir.join(format!("{class}.toml")))?;
+        let spec_text = self.read(&self.layout.spec(class))?;
         RobotGeometry::from_texts(&cell_text, &urdf_text, &spec_text)
             .map_err(|e| format!("robot geometry for the recording ({class}): {e}"))
     }
@@ -133,7 +127,7 @@ impl FileTrajectories {
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
                 .map_err(|e| format!("{}: {e}", urdf_path.display()))?;
-        let spec_text = self.read(&self.trajectories_dir.join(format!("{class}.toml")))?;
+        let spec_text = self.read(&self.layout.spec(class))?;
         let hashes = InputHashes::new(
             spec_text.as_bytes(),
             urdf_text.as_bytes(),
@@ -143,7 +137,7 @@ impl FileTrajectories {
         Ok((model, hashes))
     }
 
-    /// Writes a **demo** approval of the class's current lock into `self.approvals_dir` (which must
+    /// Writes a **demo** approval of the class's current lock into the approvals folder (which must
     /// not be the repository's `trajectories/approvals/`): integrity is verified first, exactly as
     /// `ergocell trajectories approve` does, and the approver is named as a demo.
     pub fn approve_for_demo(
@@ -151,14 +145,15 @@ impl FileTrajectories {
         class: TrajectoryClass,
         stamp_utc: &str,
     ) -> Result<String, String> {
-        if self.approvals_dir.ends_with("trajectories/approvals") {
+        let approvals_dir = self.layout.approvals_dir();
+        if approvals_dir.ends_with(TrajectoryLayout::default().approvals_dir()) {
             return Err(format!(
                 "refusing to write a demo approval into {}: demo approvals live in a temporary folder",
-                self.approvals_dir.display()
+                approvals_dir.display()
             ));
         }
         let (model, hashes) = self.current(class)?;
-        let lock_text = self.read(&self.lock_path(class))?;
+        let lock_text = self.read(&self.layout.lock(class))?;
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,
@@ -175,9 +170,9 @@ impl FileTrajectories {
         )
         .map_err(|e| e.to_string())?;
         let text = file.to_toml().map_err(|e| e.to_string())?;
-        std::fs::create_dir_all(&self.approvals_dir)
-            .map_err(|e| format!("cannot create {}: {e}", self.approvals_dir.display()))?;
-        let path = self.approvals_dir.join(format!("{class}.toml"));
+        std::fs::create_dir_all(approvals_dir)
+            .map_err(|e| format!("cannot create {}: {e}", approvals_dir.display()))?;
+        let path = self.layout.approvals(class);
         let text = format!(
             "# DEMO APPROVAL written by `ergocell demo` for the simulator. Not a safety sign-off;\n\
              # never copy into trajectories/approvals/.\n{text}"
@@ -189,7 +184,7 @@ impl FileTrajectories {
 
 impl TrajectoryProvider for FileTrajectories {
     fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
-        let path = self.trajectories_dir.join(format!("{class}.toml"));
+        let path = self.layout.spec(class);
         let spec = TrajectorySpec::from_toml_str(&self.read(&path).map_err(ProviderError)?)
             .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
         Ok((spec.stature.min_m, spec.stature.max_m))
@@ -197,9 +192,8 @@ impl TrajectoryProvider for FileTrajectories {
 
     fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
         let (model, hashes) = self.current(class).map_err(ProviderError)?;
-        let lock_text = self.read(&self.lock_path(class)).map_err(ProviderError)?;
-        let approvals =
-            std::fs::read_to_string(self.approvals_dir.join(format!("{class}.toml"))).ok();
+        let lock_text = self.read(&self.layout.lock(class)).map_err(ProviderError)?;
+        let approvals = std::fs::read_to_string(self.layout.approvals(class)).ok();
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,
