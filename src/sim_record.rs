@@ -11,7 +11,8 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::recording::{self, topics, McapRecorder, RecordingError};
+use crate::messages;
+use crate::recording::{topics, McapRecorder, RecordingError};
 use ergocell_bridge::msg::{Header, SessionState};
 use ergocell_cell::{CellError, Pipeline};
 use ergocell_ergonomics::height::ClassThresholds;
@@ -176,21 +177,21 @@ pub fn record(
             rec.write(
                 topics::OPERATOR_POSE,
                 now,
-                &recording::operator_pose_message(&tracked.skeleton, Some(&assessment)),
+                &messages::operator_pose_message(&tracked.skeleton, Some(&assessment)),
             )?;
             rec.write(
                 topics::ERGONOMICS,
                 now,
-                &recording::ergonomic_message(&assessment),
+                &messages::ergonomic_message(&assessment),
             )?;
             for w in &tracked.warnings {
-                rec.write(topics::WARNINGS, now, &recording::warning_message(w))?;
+                rec.write(topics::WARNINGS, now, &messages::warning_message(w))?;
             }
         }
         rec.write(
             topics::ROBOT_MARKERS,
             now,
-            &recording::robot_markers_message(now, None, Some(handover)),
+            &messages::robot_markers_message(now, None, Some(handover)),
         )?;
     }
     rec.finish()?;

@@ -107,7 +107,7 @@ fn skeleton_markers_hold_every_landmark_and_bone() {
     let mut sim =
         ergocell_sim::Simulation::new(rig, truth, script, ergocell_sim::SimConfig::new(1)).unwrap();
     let tick = sim.step().unwrap().unwrap();
-    let m = ergocell::recording::skeleton_message(&tick.truth.skeleton, 3);
+    let m = ergocell::messages::skeleton_message(&tick.truth.skeleton, 3);
     assert_eq!(m.markers.len(), 2);
     assert_eq!(m.markers[0].points.len(), 33);
     assert_eq!(

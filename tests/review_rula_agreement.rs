@@ -14,7 +14,8 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use ergocell::recording::{ergonomic_message, operator_pose_message, topics, McapRecorder};
+use ergocell::messages::{ergonomic_message, operator_pose_message};
+use ergocell::recording::{topics, McapRecorder};
 use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
 use ergocell_ergonomics::{AssessmentConfig, RulaAssessor, UpVector};
 use ergocell_skeleton::Skeleton3;

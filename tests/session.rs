@@ -197,7 +197,7 @@ fn whole_session_with_refused_change_degrade_hold_recovery_and_end() {
             assert_eq!(*lock_sha256, sha);
             assert_eq!(trajectory.points.len(), 100);
             assert_eq!(trajectory.joint_names[0], "joint_1");
-            let wire = ergocell::recording::command_message(&run.robot.received[0].1, 123);
+            let wire = ergocell::messages::command_message(&run.robot.received[0].1, 123);
             assert_eq!(wire.header.stamp.to_nanos(), 0, "start on receipt");
             assert_eq!(wire.points.len(), trajectory.points.len());
             for (w, p) in wire.points.iter().zip(&trajectory.points) {
@@ -205,7 +205,7 @@ fn whole_session_with_refused_change_degrade_hold_recovery_and_end() {
                 assert_eq!(w.velocities, p.velocities_rad_s);
                 assert!((w.time_from_start.as_secs_f64() - p.time_from_start_s).abs() < 1e-9);
             }
-            let hold = ergocell::recording::command_message(
+            let hold = ergocell::messages::command_message(
                 &RobotCommand::Hold {
                     reason: String::new(),
                 },
@@ -411,8 +411,8 @@ fn views_round_trip_through_the_camera_message() {
     let mut sim = simulation(1);
     let tick = (0..60).filter_map(|_| sim.step().unwrap()).last().unwrap();
     for v in &tick.frame.views {
-        let m = ergocell::recording::landmarks_message(&rig, v);
-        let back = ergocell::recording::view_from_message(&rig, &m).unwrap();
+        let m = ergocell::messages::landmarks_message(&rig, v);
+        let back = ergocell::messages::view_from_message(&rig, &m).unwrap();
         assert_eq!(back.camera, v.camera);
         assert_eq!(back.observed_count(), v.observed_count());
         for (a, b) in back.keypoints().iter().zip(v.keypoints()) {
@@ -593,7 +593,7 @@ fn an_operator_measured_while_walking_in_has_not_left_the_station() {
             // Published and recorded session states carry the state as of each event, in order,
             // although the machine is already working at the end of this step.
             let states: Vec<String> =
-                ergocell::recording::session_state_messages(&machine, now, &ev)
+                ergocell::messages::session_state_messages(&machine, now, &ev)
                     .into_iter()
                     .map(|m| m.state)
                     .collect();
@@ -675,4 +675,35 @@ fn a_station_offset_in_cell_toml_moves_the_operator_departure_decision() {
     // Up to the operator walking out the two sessions are the same (the station plays no part).
     let class = |r: &Run| r.machine.summary().class.clone();
     assert_eq!(class(&at_origin), class(&away));
+}
+
+#[test]
+fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
+    // With no folders given the provider looks its files up in the binary by relative path
+    // (`trajectories/c2.toml`, `trajectories/locks/c2.lock.toml`): the layout must keep building
+    // exactly those keys. Approvals are still read from, and written to, the folder given.
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("session-shipped");
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut shipped = FileTrajectories::with_shipped_defaults(None, None, &dir);
+    for class in TrajectoryClass::ALL {
+        let key = format!("trajectories/locks/{class}.lock.toml");
+        assert_eq!(
+            shipped.lock_text(class).unwrap(),
+            ergocell::shipped::file(Path::new(&key)).unwrap(),
+            "{key}"
+        );
+        assert!(
+            shipped.stature_bounds_m(class).is_ok(),
+            "trajectories/{class}.toml"
+        );
+        assert!(
+            shipped.verify(class).is_err(),
+            "{class} has no approval yet"
+        );
+        shipped
+            .approve_for_demo(class, "2026-01-01T00:00:00Z")
+            .unwrap();
+        assert!(dir.join(format!("{class}.toml")).exists());
+        assert_eq!(shipped.verify(class).unwrap().class(), class);
+    }
 }

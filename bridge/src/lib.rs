@@ -5,6 +5,7 @@
 //!   text for recordings.
 //! - [`cdr`]: the ROS 2 wire payload (XCDR1, little-endian, 4-byte encapsulation header).
 //! - [`qos`]: the QoS of every topic and why.
+//! - [`topics`]: the topic names (the `[ros]` defaults and every recording's).
 //! - [`transport`]: the `ros2-client` node, the cell's topics and the `[ros]` config table.
 //!
 //! The only library crate that touches the network; it knows nothing of cameras, ergonomics or the
@@ -13,6 +14,7 @@
 pub mod cdr;
 pub mod msg;
 pub mod qos;
+pub mod topics;
 #[cfg(feature = "transport")]
 pub mod transport;
 

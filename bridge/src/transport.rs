@@ -18,6 +18,7 @@ use crate::msg::{
     RosMessage, SessionState,
 };
 use crate::qos::{self, TopicQos};
+use crate::topics;
 use crate::BridgeError;
 
 /// `[ros]` of `config/cell.toml`.
@@ -57,34 +58,34 @@ pub struct RosConfig {
 }
 
 fn default_namespace() -> String {
-    "/ergocell".into()
+    topics::NAMESPACE.into()
 }
 fn default_node() -> String {
     "cell".into()
 }
 fn default_camera_topic() -> String {
-    "/ergocell/camera/{id}/landmarks".into()
+    topics::CAMERA_PATTERN.into()
 }
 fn default_joint_states() -> String {
-    "/joint_states".into()
+    topics::JOINT_STATES.into()
 }
 fn default_joint_trajectory() -> String {
-    "/joint_trajectory_controller/joint_trajectory".into()
+    topics::JOINT_TRAJECTORY.into()
 }
 fn default_action() -> String {
-    "/joint_trajectory_controller/follow_joint_trajectory".into()
+    topics::FOLLOW_JOINT_TRAJECTORY.into()
 }
 fn default_session_state() -> String {
-    "/ergocell/session_state".into()
+    topics::SESSION_STATE.into()
 }
 fn default_ergonomics() -> String {
-    "/ergocell/ergonomics".into()
+    topics::ERGONOMICS.into()
 }
 fn default_warnings() -> String {
-    "/ergocell/warnings".into()
+    topics::WARNINGS.into()
 }
 fn default_skeleton() -> String {
-    "/ergocell/skeleton".into()
+    topics::SKELETON.into()
 }
 
 #[derive(Deserialize)]

@@ -30,7 +30,7 @@ use ergocell_perception::FusionMethod;
 use ergocell_robot::config::StationConfig;
 use serde::Deserialize;
 
-use crate::pipeline::PipelineConfig;
+use crate::pipeline::{PipelineConfig, ReconstructionConfig};
 use crate::session::SessionConfig;
 use crate::CellError;
 
@@ -120,16 +120,18 @@ impl CellSettings {
         height.agree_fraction = h.agree_fraction;
         height.window_frames = h.window_frames;
         Ok(PipelineConfig {
-            fusion: p.fusion.method(),
-            filter: p.filter.then_some(OneEuroParams {
-                min_cutoff_hz: p.filter_min_cutoff_hz,
-                beta: p.filter_beta_per_m,
-                derivative_cutoff_hz: p.filter_derivative_cutoff_hz,
-                max_gap_nanos: nanos(p.filter_max_gap_s),
-            }),
-            min_tracked_landmarks: p.min_tracked_landmarks,
-            assembly_tolerance_nanos: nanos(p.assembly_tolerance_s),
-            assembly_max_wait_nanos: nanos(p.assembly_max_wait_s),
+            reconstruction: ReconstructionConfig {
+                fusion: p.fusion.method(),
+                filter: p.filter.then_some(OneEuroParams {
+                    min_cutoff_hz: p.filter_min_cutoff_hz,
+                    beta: p.filter_beta_per_m,
+                    derivative_cutoff_hz: p.filter_derivative_cutoff_hz,
+                    max_gap_nanos: nanos(p.filter_max_gap_s),
+                }),
+                min_tracked_landmarks: p.min_tracked_landmarks,
+                assembly_tolerance_nanos: nanos(p.assembly_tolerance_s),
+                assembly_max_wait_nanos: nanos(p.assembly_max_wait_s),
+            },
             assessment,
             warnings: WarningConfig {
                 hysteresis_rad: self.warnings.hysteresis_rad,
@@ -450,7 +452,7 @@ struct PipelineFile {
 impl Default for PipelineFile {
     fn default() -> Self {
         let f = OneEuroParams::default();
-        let p = PipelineConfig::defaults_without_up();
+        let p = ReconstructionConfig::default();
         Self {
             fusion: FusionName::Default,
             filter: true,

@@ -22,4 +22,7 @@ pub mod session;
 
 pub use config::CellSettings;
 pub use error::{BackendError, CellError, ProviderError};
-pub use pipeline::{FrameOutput, Pipeline, PipelineConfig, TrackedFrame};
+pub use pipeline::{
+    Assessment, FrameOutput, Pipeline, PipelineConfig, Reconstructed, Reconstruction,
+    ReconstructionConfig, TrackedFrame,
+};

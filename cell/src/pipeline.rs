@@ -13,10 +13,14 @@
 //! `[assessment]`, `[task]`, `[warnings]` and `[height]`), so a figure measured on the twin is a
 //! figure of the controller that ships.
 //!
-//! Entry points, from raw to late:
-//! - [`Pipeline::push_views`]: views as they arrive (the session, the experiments);
-//! - [`Pipeline::process_frame`]: a frame already time-aligned (an offline detections file);
-//! - [`Pipeline::process_fused`]: a skeleton already fused (a 3D landmarks file).
+//! Two named stages, composed once in [`Pipeline`]:
+//! - [`Reconstruction`]: assembly → fusion → tracked gate → filter. `ergocell triangulate` runs it
+//!   alone (an imported calibration may not know the world's vertical);
+//! - [`Assessment`]: RULA → warnings, and the height. `ergocell rula track` runs it alone on a 3D
+//!   landmarks file.
+//!
+//! [`Pipeline::push_views`] takes views as they arrive (the session, the experiments);
+//! [`Pipeline::process_frame`] a frame already time-aligned.
 //!
 //! The height is measured on the **unfiltered** fused skeleton (the filter's lag would bias a
 //! stature measured while the operator walks in) and only until the first decision, which is final:
@@ -36,12 +40,13 @@ use ergocell_skeleton::Skeleton3;
 
 use crate::CellError;
 
-/// Everything the pipeline is tuned by. Times in integer nanoseconds.
+/// The reconstruction stage's tunables: pixels to a tracked, filtered skeleton. Times in integer
+/// nanoseconds.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PipelineConfig {
+pub struct ReconstructionConfig {
     /// Which fusion (default: ergocell's robust N-view fusion with the bone prior).
     pub fusion: FusionMethod,
-    /// The causal One-Euro filter; `None` = no filter (a landmarks file that was filtered already).
+    /// The causal One-Euro filter; `None` = no filter.
     pub filter: Option<OneEuroParams>,
     /// A fused skeleton with fewer landmarks than this is not "the operator tracked": it is not
     /// filtered, assessed or measured (default 20 of 33).
@@ -50,6 +55,24 @@ pub struct PipelineConfig {
     pub assembly_tolerance_nanos: i64,
     /// Frame assembly: how long a frame waits for missing cameras (default 40 ms).
     pub assembly_max_wait_nanos: i64,
+}
+
+impl Default for ReconstructionConfig {
+    fn default() -> Self {
+        Self {
+            fusion: FusionMethod::Default,
+            filter: Some(OneEuroParams::default()),
+            min_tracked_landmarks: 20,
+            assembly_tolerance_nanos: 15_000_000,
+            assembly_max_wait_nanos: 40_000_000,
+        }
+    }
+}
+
+/// Everything the pipeline is tuned by.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PipelineConfig {
+    pub reconstruction: ReconstructionConfig,
     /// RULA (its `up` is the world's vertical).
     pub assessment: AssessmentConfig,
     pub warnings: WarningConfig,
@@ -61,20 +84,11 @@ impl PipelineConfig {
     /// Every default, on a world whose vertical is `up`.
     pub fn new(up: UpVector) -> Self {
         Self {
-            fusion: FusionMethod::Default,
-            filter: Some(OneEuroParams::default()),
-            min_tracked_landmarks: 20,
-            assembly_tolerance_nanos: 15_000_000,
-            assembly_max_wait_nanos: 40_000_000,
+            reconstruction: ReconstructionConfig::default(),
             assessment: AssessmentConfig::new(up),
             warnings: WarningConfig::default(),
             height: HeightConfig::new(up),
         }
-    }
-
-    /// The defaults of the up-independent fields (for the config file's defaults).
-    pub(crate) fn defaults_without_up() -> Self {
-        Self::new(UpVector::z())
     }
 }
 
@@ -111,38 +125,157 @@ impl TrackedFrame {
     }
 }
 
-/// The per-frame pipeline (see the module docs). One per operator session: its filter, smoother,
-/// warnings, bone prior and height estimator carry state from frame to frame.
+/// What the reconstruction stage made of one frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reconstructed {
+    /// The frame's stamp (its first view's capture time).
+    pub stamp_nanos: i64,
+    /// The fused skeleton, unfiltered, with the fusion's counts.
+    pub fused: FusedFrame,
+    /// The filtered skeleton when the operator is tracked (enough landmarks), else `None`.
+    pub tracked: Option<Skeleton3>,
+}
+
+/// The first stage: views → time-aligned frame → fused skeleton → tracked gate → causal filter.
+/// `ergocell triangulate` runs this stage alone (no world vertical needed); [`Pipeline`] runs it
+/// first.
 #[derive(Debug)]
-pub struct Pipeline {
-    config: PipelineConfig,
+pub struct Reconstruction {
+    config: ReconstructionConfig,
     assembler: FrameAssembler,
     fusion: FusionEngine,
     filter: Option<OneEuroFilter>,
+}
+
+impl Reconstruction {
+    pub fn new(rig: CameraRig, config: ReconstructionConfig) -> Result<Self, CellError> {
+        let assembler = FrameAssembler::new(
+            rig.len(),
+            config.assembly_tolerance_nanos,
+            config.assembly_max_wait_nanos,
+        );
+        Ok(Self {
+            assembler,
+            fusion: FusionEngine::new(rig, config.fusion)?,
+            filter: config.filter.map(OneEuroFilter::new),
+            config,
+        })
+    }
+
+    pub fn config(&self) -> &ReconstructionConfig {
+        &self.config
+    }
+
+    /// The rig the fusion runs on.
+    pub fn rig(&self) -> &CameraRig {
+        self.fusion.rig()
+    }
+
+    /// Views that arrived by `now_nanos` → the frames they complete (or whose wait expired), in
+    /// time order.
+    pub fn push_views(&mut self, now_nanos: i64, views: Vec<View2>) -> Vec<Frame2> {
+        let mut frames = Vec::new();
+        for view in views {
+            frames.extend(self.assembler.push(view, now_nanos));
+        }
+        frames.extend(self.assembler.poll(now_nanos));
+        frames
+    }
+
+    /// The frames still waiting for cameras (end of a stream).
+    pub fn flush(&mut self) -> Vec<Frame2> {
+        self.assembler.flush()
+    }
+
+    /// One time-aligned frame: fused, gated, filtered.
+    pub fn process_frame(&mut self, frame: &Frame2) -> Result<Reconstructed, PerceptionError> {
+        let fused = self.fusion.fuse(frame)?;
+        let tracked =
+            (fused.skeleton.observed_count() >= self.config.min_tracked_landmarks).then(|| {
+                match self.filter.as_mut() {
+                    Some(f) => f.filter(&fused.skeleton),
+                    None => fused.skeleton.clone(),
+                }
+            });
+        Ok(Reconstructed {
+            stamp_nanos: frame.stamp_nanos,
+            fused,
+            tracked,
+        })
+    }
+
+    /// Views that arrived after their frame was released (dropped).
+    pub fn late_views(&self) -> usize {
+        self.assembler.late_views()
+    }
+}
+
+/// The second stage: a tracked frame's RULA, warnings and the height. `ergocell rula track` runs
+/// this stage alone on a 3D landmarks file; [`Pipeline`] runs it on every tracked frame.
+#[derive(Debug)]
+pub struct Assessment {
     assessor: RulaAssessor,
     warnings: WarningTracker,
     height: HeightEstimator,
     height_decided: bool,
 }
 
-impl Pipeline {
-    /// A pipeline on `rig`.
-    pub fn new(rig: CameraRig, config: PipelineConfig) -> Result<Self, CellError> {
-        let assembler = FrameAssembler::new(
-            rig.len(),
-            config.assembly_tolerance_nanos,
-            config.assembly_max_wait_nanos,
-        );
-        let fusion = FusionEngine::new(rig, config.fusion)?;
-        let assessor = RulaAssessor::new(config.assessment)?;
+impl Assessment {
+    /// The stage with `config`'s assessment, warnings and height (its reconstruction part unused).
+    pub fn new(config: &PipelineConfig) -> Result<Self, CellError> {
         Ok(Self {
-            assembler,
-            fusion,
-            filter: config.filter.map(OneEuroFilter::new),
-            assessor,
+            assessor: RulaAssessor::new(config.assessment)?,
             warnings: WarningTracker::new(config.warnings),
             height: HeightEstimator::new(config.height),
             height_decided: false,
+        })
+    }
+
+    /// A tracked frame: the height measured on `raw` (unfiltered) until the first decision, RULA
+    /// and warnings on `filtered`.
+    pub fn process(&mut self, raw: &Skeleton3, filtered: Skeleton3) -> TrackedFrame {
+        let height = if self.height_decided {
+            None
+        } else {
+            let d = self.height.push(raw);
+            self.height_decided = d.is_some();
+            d
+        };
+        let assessment = self.assessor.assess(&filtered);
+        let warnings = match &assessment {
+            Ok(a) => self.warnings.update(a),
+            Err(_) => Vec::new(),
+        };
+        TrackedFrame {
+            skeleton: filtered,
+            assessment,
+            warnings,
+            height,
+        }
+    }
+
+    /// Where the height measurement stands (decided, or still measuring and why).
+    pub fn height_status(&self) -> HeightStatus {
+        self.height.status()
+    }
+}
+
+/// The per-frame pipeline (see the module docs): [`Reconstruction`] then [`Assessment`] on every
+/// tracked frame. One per operator session: its filter, smoother, warnings, bone prior and height
+/// estimator carry state from frame to frame.
+#[derive(Debug)]
+pub struct Pipeline {
+    config: PipelineConfig,
+    reconstruction: Reconstruction,
+    assessment: Assessment,
+}
+
+impl Pipeline {
+    /// A pipeline on `rig`.
+    pub fn new(rig: CameraRig, config: PipelineConfig) -> Result<Self, CellError> {
+        Ok(Self {
+            reconstruction: Reconstruction::new(rig, config.reconstruction.clone())?,
+            assessment: Assessment::new(&config)?,
             config,
         })
     }
@@ -160,7 +293,7 @@ impl Pipeline {
 
     /// The rig the fusion runs on.
     pub fn rig(&self) -> &CameraRig {
-        self.fusion.rig()
+        self.reconstruction.rig()
     }
 
     /// Views that arrived by `now_nanos`: every frame they complete (or whose wait expired) is run
@@ -170,81 +303,37 @@ impl Pipeline {
         now_nanos: i64,
         views: Vec<View2>,
     ) -> Vec<Result<FrameOutput, PerceptionError>> {
-        let mut frames = Vec::new();
-        for view in views {
-            frames.extend(self.assembler.push(view, now_nanos));
-        }
-        frames.extend(self.assembler.poll(now_nanos));
+        let frames = self.reconstruction.push_views(now_nanos, views);
         frames.iter().map(|f| self.process_frame(f)).collect()
     }
 
     /// Releases the frames still waiting for cameras (end of a stream) and runs them.
     pub fn flush(&mut self) -> Vec<Result<FrameOutput, PerceptionError>> {
-        let frames = self.assembler.flush();
+        let frames = self.reconstruction.flush();
         frames.iter().map(|f| self.process_frame(f)).collect()
     }
 
-    /// One time-aligned frame.
+    /// One time-aligned frame through both stages.
     pub fn process_frame(&mut self, frame: &Frame2) -> Result<FrameOutput, PerceptionError> {
-        let fused = self.fusion.fuse(frame)?;
-        Ok(self.after_fusion(frame.stamp_nanos, fused))
-    }
-
-    /// A skeleton fused elsewhere (a 3D landmarks file): the rest of the pipeline.
-    pub fn process_fused(&mut self, skeleton: Skeleton3) -> FrameOutput {
-        let stamp_nanos = skeleton.stamp_nanos;
-        let fused = FusedFrame {
-            skeleton,
-            rejected_views: 0,
-            undistortion_failures: 0,
-            cameras_present: 0,
-        };
-        self.after_fusion(stamp_nanos, fused)
-    }
-
-    fn after_fusion(&mut self, stamp_nanos: i64, fused: FusedFrame) -> FrameOutput {
-        let tracked = (fused.skeleton.observed_count() >= self.config.min_tracked_landmarks)
-            .then(|| self.tracked(&fused.skeleton));
-        FrameOutput {
-            stamp_nanos,
-            fused,
+        let r = self.reconstruction.process_frame(frame)?;
+        let tracked = r
+            .tracked
+            .map(|filtered| self.assessment.process(&r.fused.skeleton, filtered));
+        Ok(FrameOutput {
+            stamp_nanos: r.stamp_nanos,
+            fused: r.fused,
             tracked,
-        }
-    }
-
-    fn tracked(&mut self, raw: &Skeleton3) -> TrackedFrame {
-        let height = if self.height_decided {
-            None
-        } else {
-            let d = self.height.push(raw);
-            self.height_decided = d.is_some();
-            d
-        };
-        let skeleton = match self.filter.as_mut() {
-            Some(f) => f.filter(raw),
-            None => raw.clone(),
-        };
-        let assessment = self.assessor.assess(&skeleton);
-        let warnings = match &assessment {
-            Ok(a) => self.warnings.update(a),
-            Err(_) => Vec::new(),
-        };
-        TrackedFrame {
-            skeleton,
-            assessment,
-            warnings,
-            height,
-        }
+        })
     }
 
     /// Where the height measurement stands (decided, or still measuring and why).
     pub fn height_status(&self) -> HeightStatus {
-        self.height.status()
+        self.assessment.height_status()
     }
 
     /// Views that arrived after their frame was released (dropped).
     pub fn late_views(&self) -> usize {
-        self.assembler.late_views()
+        self.reconstruction.late_views()
     }
 }
 

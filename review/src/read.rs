@@ -16,14 +16,8 @@ use serde::de::DeserializeOwned;
 
 use crate::ReviewError;
 
-/// Topics the review reads (the recorder's names).
-pub mod topics {
-    pub const OPERATOR_POSE: &str = "/ergocell/operator_pose";
-    pub const ERGONOMICS: &str = "/ergocell/ergonomics";
-    pub const WARNINGS: &str = "/ergocell/warnings";
-    pub const SESSION_STATE: &str = "/ergocell/session_state";
-    pub const ROBOT_MARKERS: &str = "/ergocell/robot_markers";
-}
+/// Topics the review reads: the recorder's names, from the one table in the bridge.
+pub use ergocell_bridge::topics;
 
 /// A message and its log time (nanoseconds, the session clock).
 #[derive(Debug, Clone, PartialEq)]
@@ -288,7 +282,10 @@ impl Reader {
             ));
         }
         if rec.ergocell_messages() == 0 {
-            let ours = rec.channels.keys().any(|t| t.starts_with("/ergocell/"));
+            let ours = rec
+                .channels
+                .keys()
+                .any(|t| t.starts_with(topics::NAMESPACE));
             if !rec.complete || ours {
                 let mut reason = if rec.messages == 0 {
                     "no message could be read".to_owned()

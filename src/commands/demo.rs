@@ -18,6 +18,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
 use anyhow::Context as _;
+use ergocell::messages;
 use ergocell::recording::{self, topics, McapRecorder};
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
@@ -284,7 +285,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             }
         }
         for v in &views {
-            let m = recording::landmarks_message(&rig, v);
+            let m = messages::landmarks_message(&rig, v);
             rec.write(&topics::camera(&m.camera_id), now, &m)?;
         }
         let events = machine.step(now, views, &mut robot);
@@ -337,11 +338,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 rec.write(
                     topics::ROBOT_MARKERS,
                     now,
-                    &recording::robot_markers_message(
-                        now,
-                        Some(p),
-                        Some(geometry.handover_world()),
-                    ),
+                    &messages::robot_markers_message(now, Some(p), Some(geometry.handover_world())),
                 )?;
             }
         }
@@ -423,6 +420,6 @@ fn report(events: &[SessionEvent], now: i64, start: i64) {
                 continue;
             }
         }
-        say!("  t={:5.1} s  {}", secs(now, start), recording::describe(e));
+        say!("  t={:5.1} s  {}", secs(now, start), messages::describe(e));
     }
 }

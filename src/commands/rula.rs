@@ -15,13 +15,11 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
+use ergocell_cell::{Assessment, PipelineConfig};
 use ergocell_ergonomics::assess::{BodyRegion, SideAssessment};
 use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_worksheet};
 use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
-use ergocell_ergonomics::{
-    AssessmentConfig, RulaAssessor, RulaScores, Side, TaskConfig, UpVector, WarningConfig,
-    WarningTracker,
-};
+use ergocell_ergonomics::{AssessmentConfig, RulaScores, Side, TaskConfig, UpVector};
 use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
 use ergocell_skeleton::Skeleton3;
 use nalgebra::Vector3;
@@ -203,8 +201,11 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     config.floor_height_m = args.floor_height_m;
     config.min_confidence = args.min_confidence;
     config.task = task;
-    let mut assessor = RulaAssessor::new(config).map_err(|e| UsageError(e.to_string()))?;
-    let mut warnings = WarningTracker::new(WarningConfig::default());
+    // The cell controller's assessment stage (RULA → warnings) with its defaults, on the file's
+    // skeletons as they are (a file from `triangulate --filter causal` was filtered there).
+    let mut pipeline_config = PipelineConfig::new(config.up);
+    pipeline_config.assessment = config;
+    let mut stage = Assessment::new(&pipeline_config).map_err(|e| UsageError(e.to_string()))?;
     // The one summary (time-weighted, gaps not counted), as `ergocell review` shows it.
     let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
     let t0 = frames[0].stamp_nanos;
@@ -215,11 +216,12 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         println!("# configured (task config): force/load, wrist twist, arm supported, seated; muscle use: from the time series; the rest observed (\"uncertain\": an input held, not observed or of low confidence; --json lists each input's source)");
     }
     for (i, skeleton) in frames.iter().enumerate() {
-        let frame = assessor
-            .assess(skeleton)
+        let tracked = stage.process(skeleton, skeleton.clone());
+        let frame = tracked
+            .assessment
             .map_err(|e| UsageError(format!("{}: frame {i}: {e}", args.landmarks.display())))?;
         summary.add(&frame);
-        let new_events = warnings.update(&frame);
+        let new_events = tracked.warnings;
         let t = (frame.stamp_nanos - t0) as f64 * 1e-9;
         if args.json {
             frame_docs.push(serde_json::json!({

@@ -12,6 +12,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 
 use anyhow::Context as _;
+use ergocell::messages::{self, Outgoing};
 use ergocell::recording::{self, topics, McapRecorder};
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
@@ -96,7 +97,7 @@ struct RosRobot {
 impl RobotSink for RosRobot {
     fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError> {
         self.publisher
-            .publish(recording::command_message(command, now_nanos))
+            .publish(messages::command_message(command, now_nanos))
             .map_err(|e| BackendError {
                 backend: "ROS 2 joint trajectory",
                 reason: format!("{e:?}"),
@@ -151,10 +152,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .into());
         }
     }
-    let approvals = args
-        .approvals
-        .clone()
-        .unwrap_or_else(|| args.trajectories.join("approvals"));
+    let approvals = args.approvals.clone().unwrap_or_else(|| {
+        ergocell_robot::TrajectoryLayout::new(&args.trajectories)
+            .approvals_dir()
+            .to_owned()
+    });
     let new_machine = || {
         let provider = FileTrajectories::new(&args.config, &args.trajectories, &approvals);
         SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
@@ -198,7 +200,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let mut camera_stream =
             futures::stream::select_all(cameras.iter().map(|s| Box::pin(s.async_stream())));
         let mut joint_stream = Box::pin(joint_states.async_stream());
-        let mut geometry: Option<(String, ergocell::robot_markers::RobotGeometry)> = None;
+        let mut geometry: Option<(
+            ergocell_robot::TrajectoryClass,
+            ergocell::robot_markers::RobotGeometry,
+        )> = None;
         let mut last_marker_nanos = i64::MIN / 2;
         let mut tick = tokio::time::interval(std::time::Duration::from_millis(20));
         let interrupted = Arc::new(AtomicBool::new(false));
@@ -225,7 +230,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             ros.joint_trajectory_topic
         );
         out.session_state
-            .async_publish(recording::session_state_message(&machine, started, "started"))
+            .async_publish(messages::session_state_message(&machine, started, "started"))
             .await
             .map_err(|e| anyhow::anyhow!("publish session state: {e:?}"))?;
         loop {
@@ -239,7 +244,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                             if let Some(rec) = recorder.as_mut() {
                                 rec.write(&topics::camera(&m.camera_id), now_nanos(), &m)?;
                             }
-                            match recording::view_from_message(&rig, &m) {
+                            match messages::view_from_message(&rig, &m) {
                                 Ok(v) => vec![v],
                                 Err(e) => {
                                     rejected += 1;
@@ -260,12 +265,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                         let now = now_nanos();
                         rec.write(topics::JOINT_STATES, now, &js)?;
                         // The TCP and handover point once a class is locked, at most 20 Hz.
-                        let class = machine.summary().class.clone();
-                        if geometry.as_ref().map(|(c, _)| c) != class.as_ref() {
-                            geometry = class.as_deref().and_then(|name| {
-                                let c = ergocell_robot::TrajectoryClass::ALL.into_iter().find(|c| c.to_string() == name)?;
+                        let class = machine.locked_class();
+                        if geometry.as_ref().map(|(c, _)| *c) != class {
+                            geometry = class.and_then(|c| {
                                 match FileTrajectories::new(&args.config, &args.trajectories, &approvals).robot_geometry(c) {
-                                    Ok(g) => Some((name.to_owned(), g)),
+                                    Ok(g) => Some((c, g)),
                                     Err(e) => {
                                         tracing::warn!(error = %e, "no robot markers in the recording");
                                         None
@@ -280,7 +284,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                                     rec.write(
                                         topics::ROBOT_MARKERS,
                                         now,
-                                        &recording::robot_markers_message(now, Some(p), Some(g.handover_world())),
+                                        &messages::robot_markers_message(now, Some(p), Some(g.handover_world())),
                                     )?;
                                 }
                             }
@@ -296,20 +300,20 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             let now = now_nanos();
             if interrupted.load(Ordering::SeqCst) {
                 let events = machine.shutdown(now, &mut robot, "Ctrl-C");
-                publish_events(&machine, now, &events, &out)
-                    .await?;
+                let outgoing = messages::step_messages(&machine, now, &events);
+                publish_messages(&outgoing, &out).await?;
                 if let Some(rec) = recorder.as_mut() {
-                    recording::record_events(rec, &machine, now, &events)?;
+                    recording::record(rec, now, &outgoing)?;
                 }
                 break;
             }
             if let Some(limit) = args.max_secs {
                 if (now - started) as f64 * 1e-9 > limit {
                     let events = machine.shutdown(now, &mut robot, "--max-secs reached");
-                    publish_events(&machine, now, &events, &out)
-                        .await?;
+                    let outgoing = messages::step_messages(&machine, now, &events);
+                    publish_messages(&outgoing, &out).await?;
                     if let Some(rec) = recorder.as_mut() {
-                        recording::record_events(rec, &machine, now, &events)?;
+                        recording::record(rec, now, &outgoing)?;
                     }
                     break;
                 }
@@ -317,17 +321,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             let events = machine.step(now, views, &mut robot);
             for e in &events {
                 if !matches!(e, SessionEvent::Frame { .. }) {
-                    println!("  {}", recording::describe(e));
+                    println!("  {}", messages::describe(e));
                 }
             }
-            let published_frame =
-                publish_events(&machine, now, &events, &out)
-                    .await?;
+            let outgoing = messages::step_messages(&machine, now, &events);
+            let published_frame = publish_messages(&outgoing, &out).await?;
             if let (Some(t0), true) = (arrival, published_frame) {
                 latencies_ms.push(t0.elapsed().as_secs_f64() * 1e3);
             }
             if let Some(rec) = recorder.as_mut() {
-                recording::record_events(rec, &machine, now, &events)?;
+                recording::record(rec, now, &outgoing)?;
             }
             if machine.state() == SessionState::SessionEnded {
                 sessions_done += 1;
@@ -403,41 +406,21 @@ struct Outputs {
     skeleton: Publisher<ergocell_bridge::msg::MarkerArray>,
 }
 
-/// Publishes a step's events; true if a RULA state was published.
-async fn publish_events(
-    machine: &SessionMachine,
-    now: i64,
-    events: &[SessionEvent],
-    out: &Outputs,
-) -> anyhow::Result<bool> {
+/// Publishes a step's outgoing messages (the same ones the recorder writes); true if a RULA state
+/// was published. The robot command is the robot sink's to publish; the operator pose is recorded
+/// only.
+async fn publish_messages(messages: &[Outgoing], out: &Outputs) -> anyhow::Result<bool> {
     let mut frame = false;
-    let mut states = recording::session_state_messages(machine, now, events).into_iter();
-    for e in events {
-        match e {
-            SessionEvent::Frame {
-                skeleton,
-                assessment,
-                ..
-            } => {
-                if let Some(a) = assessment {
-                    publish(&out.ergonomics, recording::ergonomic_message(a)).await?;
-                    frame = true;
-                }
-                let level = assessment
-                    .as_ref()
-                    .and_then(|a| a.headline().map(|h| h.scores.action_level))
-                    .unwrap_or(0);
-                publish(&out.skeleton, recording::skeleton_message(skeleton, level)).await?;
+    for m in messages {
+        match m {
+            Outgoing::SessionState(m) => publish(&out.session_state, m.clone()).await?,
+            Outgoing::Ergonomics(m) => {
+                publish(&out.ergonomics, m.clone()).await?;
+                frame = true;
             }
-            SessionEvent::Warning(w) => {
-                publish(&out.warnings, recording::warning_message(w)).await?;
-            }
-            SessionEvent::RobotCommandSent { .. } => {}
-            _ => {
-                if let Some(m) = states.next() {
-                    publish(&out.session_state, m).await?;
-                }
-            }
+            Outgoing::Warning(m) => publish(&out.warnings, m.clone()).await?,
+            Outgoing::Skeleton(m) => publish(&out.skeleton, m.clone()).await?,
+            Outgoing::OperatorPose(_) | Outgoing::Trajectory(_) => {}
         }
     }
     Ok(frame)
@@ -463,7 +446,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         .map_err(|e| UsageError(format!("{}: {e}", args.recording.display())))?
     {
         let Ok(m) = m else { break };
-        if m.channel.topic.starts_with("/ergocell/camera/") {
+        if topics::camera_id(&m.channel.topic).is_some() {
             let lm: CameraLandmarks = cdr::decode(&m.data)
                 .map_err(|e| UsageError(format!("{}: {e}", args.recording.display())))?;
             frames.push((m.log_time, lm));

@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context as _};
+use ergocell_cell::{Reconstruction, ReconstructionConfig};
 use ergocell_perception::detections::{Frame2, ImportStats, View2};
 use ergocell_perception::import::{
     match_camera_folders, parse_caliscope_xy, parse_openpose_frame, OperatorSelector,
@@ -13,8 +14,8 @@ use ergocell_perception::metrics::{
     bone_length_variation_percent, bone_stats, median_reprojection_px,
 };
 use ergocell_perception::rig_file::parse_rig;
-use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
-use ergocell_perception::{CameraRig, FusionEngine, FusionMethod, KeypointFormat};
+use ergocell_perception::temporal::OneEuroParams;
+use ergocell_perception::{CameraRig, FusionMethod, KeypointFormat};
 use ergocell_skeleton::{Skeleton3, LANDMARK_COUNT};
 
 use super::UsageError;
@@ -97,21 +98,23 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         );
     }
 
-    let method = FusionMethod::from_name(&args.fusion).unwrap_or_default();
-    let mut engine = FusionEngine::new(rig, method)?;
-    let mut filter =
-        (args.filter == "causal").then(|| OneEuroFilter::new(OneEuroParams::default()));
+    // The cell controller's reconstruction stage with its defaults, but every frame written (no
+    // tracked gate: a file keeps what was seen) and the filter only when asked for.
+    let config = ReconstructionConfig {
+        fusion: FusionMethod::from_name(&args.fusion).unwrap_or_default(),
+        filter: (args.filter == "causal").then(OneEuroParams::default),
+        min_tracked_landmarks: 0,
+        ..ReconstructionConfig::default()
+    };
+    let mut reconstruction = Reconstruction::new(rig, config)?;
     let mut skeletons: Vec<Skeleton3> = Vec::with_capacity(frames.len());
     let mut rejected = 0;
     let mut undistortion_failures = 0;
     for frame in &frames {
-        let fused = engine.fuse(frame)?;
-        rejected += fused.rejected_views;
-        undistortion_failures += fused.undistortion_failures;
-        skeletons.push(match filter.as_mut() {
-            Some(f) => f.filter(&fused.skeleton),
-            None => fused.skeleton,
-        });
+        let r = reconstruction.process_frame(frame)?;
+        rejected += r.fused.rejected_views;
+        undistortion_failures += r.fused.undistortion_failures;
+        skeletons.push(r.tracked.unwrap_or(r.fused.skeleton));
     }
 
     let rate = estimate_rate_hz(&skeletons).unwrap_or(args.rate_hz);

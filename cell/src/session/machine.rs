@@ -151,6 +151,11 @@ impl SessionMachine {
             .map(|l| l.trajectory().lock().lock_sha256.as_str())
     }
 
+    /// The locked trajectory's class, once locked.
+    pub fn locked_class(&self) -> Option<TrajectoryClass> {
+        self.lock.as_ref().map(|l| l.trajectory().class())
+    }
+
     /// Who approved the locked trajectory (oldest approval first), once locked.
     pub fn approved_by(&self) -> Vec<String> {
         self.lock.as_ref().map_or_else(Vec::new, |l| {

@@ -1,0 +1,573 @@
+//! The ROS boundary: every conversion between the core's values (views, skeletons, assessments,
+//! warnings, robot commands, the session's state) and the bridge's ROS 2 messages, in one place, and
+//! the one mapping from a session step's events to the messages that leave the cell
+//! ([`step_messages`]), which `ergocell run`'s publisher and every recorder send alike.
+
+use ergocell_bridge::msg::{
+    CameraLandmarks, ErgonomicState, Header, JointTrajectory, MarkerArray, OperatorPose,
+    PostureWarning, RulaSide, SessionState,
+};
+use ergocell_ergonomics::{FrameAssessment, SideAssessment, WarningEvent};
+use ergocell_perception::{CameraRig, Keypoint2, View2};
+use ergocell_skeleton::LANDMARK_COUNT;
+
+use crate::session::{SessionEvent, SessionMachine};
+
+/// One message a session step sends out, by its role (the topic comes from the publisher's
+/// configuration or, in a recording, from [`ergocell_bridge::topics`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outgoing {
+    SessionState(SessionState),
+    Ergonomics(ErgonomicState),
+    Warning(PostureWarning),
+    Skeleton(MarkerArray),
+    OperatorPose(OperatorPose),
+    /// The command the robot sink was sent (recorded; the sink itself publishes it).
+    Trajectory(JointTrajectory),
+}
+
+/// The messages of one step's events, in event order: state changes and session facts become
+/// `SessionState` (each as of its event), a fused frame its skeleton markers, operator pose and RULA
+/// state, a warning its `PostureWarning`, a robot command its `JointTrajectory`.
+pub fn step_messages(
+    machine: &SessionMachine,
+    now_nanos: i64,
+    events: &[SessionEvent],
+) -> Vec<Outgoing> {
+    use SessionEvent as E;
+    let mut states = session_state_messages(machine, now_nanos, events).into_iter();
+    let mut out = Vec::new();
+    for e in events {
+        match e {
+            E::StateChanged { .. }
+            | E::ClassDecided { .. }
+            | E::TrajectoryLocked { .. }
+            | E::ChangeRefused { .. }
+            | E::CameraDegraded { .. }
+            | E::CameraRestored { .. } => {
+                if let Some(m) = states.next() {
+                    out.push(Outgoing::SessionState(m));
+                }
+            }
+            E::RobotCommandSent { command, .. } => {
+                out.push(Outgoing::Trajectory(command_message(command, now_nanos)));
+            }
+            E::Warning(w) => out.push(Outgoing::Warning(warning_message(w))),
+            E::Frame {
+                skeleton,
+                assessment,
+                ..
+            } => {
+                let level = assessment
+                    .as_ref()
+                    .and_then(|a| a.headline().map(|h| h.scores.action_level))
+                    .unwrap_or(0);
+                out.push(Outgoing::Skeleton(skeleton_message(skeleton, level)));
+                out.push(Outgoing::OperatorPose(operator_pose_message(
+                    skeleton,
+                    assessment.as_deref(),
+                )));
+                if let Some(a) = assessment {
+                    out.push(Outgoing::Ergonomics(ergonomic_message(a)));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// A camera's view as the Jetson publishes it: 33 entries in BlazePose order (unobserved: NaN pixels,
+/// visibility and presence 0), or none when nobody is detected.
+pub fn landmarks_message(rig: &CameraRig, view: &View2) -> CameraLandmarks {
+    let camera = rig.camera(view.camera);
+    let id = camera.map_or_else(|| format!("{}", view.camera), |c| c.id.as_str().to_owned());
+    let (w, h) = camera.map_or((0, 0), |c| (c.intrinsics.width_px, c.intrinsics.height_px));
+    let mut m = CameraLandmarks {
+        header: Header::new(view.stamp_nanos, &format!("camera_{id}")),
+        camera_id: id,
+        image_width: w,
+        image_height: h,
+        ..CameraLandmarks::default()
+    };
+    if view.observed_count() == 0 {
+        return m;
+    }
+    for k in view.keypoints() {
+        if let Some(k) = k {
+            let p = k.pixel();
+            m.x_px.push(p.x as f32);
+            m.y_px.push(p.y as f32);
+            m.visibility.push(k.confidence() as f32);
+            m.presence.push(1.0);
+        } else {
+            m.x_px.push(f32::NAN);
+            m.y_px.push(f32::NAN);
+            m.visibility.push(0.0);
+            m.presence.push(0.0);
+        }
+    }
+    m
+}
+
+/// Why a landmark message was not turned into a view.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum LandmarksRejected {
+    #[error("unknown camera `{0}` (not in the rig)")]
+    UnknownCamera(String),
+    #[error("camera `{camera}`: {got} landmarks, expected 0 or {LANDMARK_COUNT} in each array")]
+    BadLength { camera: String, got: usize },
+}
+
+/// A camera's message back to a view (the inverse of [`landmarks_message`]): a landmark is observed
+/// when its pixels are finite and its presence and visibility are positive; its confidence is the
+/// visibility.
+pub fn view_from_message(rig: &CameraRig, m: &CameraLandmarks) -> Result<View2, LandmarksRejected> {
+    let camera = rig
+        .index_of_name(&m.camera_id)
+        .ok_or_else(|| LandmarksRejected::UnknownCamera(m.camera_id.clone()))?;
+    let mut view = View2::empty(camera, m.header.stamp.to_nanos());
+    let n = m.x_px.len();
+    if n == 0 {
+        return Ok(view);
+    }
+    if n != LANDMARK_COUNT
+        || [m.y_px.len(), m.visibility.len(), m.presence.len()]
+            .iter()
+            .any(|&l| l != n)
+    {
+        return Err(LandmarksRejected::BadLength {
+            camera: m.camera_id.clone(),
+            got: n,
+        });
+    }
+    for lm in ergocell_skeleton::Landmark::ALL {
+        let i = lm.index();
+        let (x, y) = (f64::from(m.x_px[i]), f64::from(m.y_px[i]));
+        let (vis, pres) = (f64::from(m.visibility[i]), f64::from(m.presence[i]));
+        if pres > 0.0 && vis > 0.0 {
+            view.set(lm, Keypoint2::new(x, y, vis.min(1.0)).ok());
+        }
+    }
+    Ok(view)
+}
+
+fn side_message(side: Option<&SideAssessment>) -> RulaSide {
+    let Some(s) = side else {
+        return RulaSide::default();
+    };
+    let r = &s.scores;
+    RulaSide {
+        scored: true,
+        uncertain: s.uncertain,
+        upper_arm_score: r.upper_arm_score,
+        lower_arm_score: r.lower_arm_score,
+        wrist_score: r.wrist_score,
+        wrist_twist_score: r.wrist_twist_score,
+        posture_score_a: r.posture_score_a,
+        score_c_wrist_arm: r.score_c_wrist_arm,
+        neck_score: r.neck_score,
+        trunk_score: r.trunk_score,
+        legs_score: r.legs_score,
+        posture_score_b: r.posture_score_b,
+        score_d_neck_trunk_legs: r.score_d_neck_trunk_legs,
+        final_score: r.final_score,
+        action_level: r.action_level,
+    }
+}
+
+/// The fused skeleton as RViz/Foxglove markers in the `world` frame: the landmarks as a sphere list
+/// (colour by action level: green 1, yellow 2, orange 3, red 4) and the rigid bones as a line list.
+pub fn skeleton_message(
+    skeleton: &ergocell_skeleton::Skeleton3,
+    action_level: u8,
+) -> ergocell_bridge::msg::MarkerArray {
+    use ergocell_bridge::msg::{ColorRGBA, Marker, MarkerArray, Point, Vector3};
+    let color = match action_level {
+        0 => ColorRGBA {
+            r: 0.6,
+            g: 0.6,
+            b: 0.6,
+            a: 1.0,
+        },
+        1 => ColorRGBA {
+            r: 0.1,
+            g: 0.8,
+            b: 0.2,
+            a: 1.0,
+        },
+        2 => ColorRGBA {
+            r: 0.9,
+            g: 0.8,
+            b: 0.1,
+            a: 1.0,
+        },
+        3 => ColorRGBA {
+            r: 1.0,
+            g: 0.5,
+            b: 0.0,
+            a: 1.0,
+        },
+        _ => ColorRGBA {
+            r: 0.9,
+            g: 0.1,
+            b: 0.1,
+            a: 1.0,
+        },
+    };
+    let point = |p: nalgebra::Point3<f64>| Point {
+        x: p.x,
+        y: p.y,
+        z: p.z,
+    };
+    let joints = Marker {
+        header: Header::new(skeleton.stamp_nanos, "world"),
+        ns: "operator".to_owned(),
+        id: 0,
+        r#type: Marker::SPHERE_LIST,
+        action: Marker::ADD,
+        scale: Vector3 {
+            x: 0.04,
+            y: 0.04,
+            z: 0.04,
+        },
+        color,
+        points: ergocell_skeleton::Landmark::ALL
+            .iter()
+            .filter_map(|lm| skeleton.position(*lm))
+            .map(point)
+            .collect(),
+        ..Marker::default()
+    };
+    let bones = Marker {
+        header: Header::new(skeleton.stamp_nanos, "world"),
+        ns: "operator".to_owned(),
+        id: 1,
+        r#type: Marker::LINE_LIST,
+        action: Marker::ADD,
+        scale: Vector3 {
+            x: 0.015,
+            ..Vector3::default()
+        },
+        color,
+        points: ergocell_skeleton::BONES
+            .iter()
+            .filter_map(|(a, b)| Some([skeleton.position(*a)?, skeleton.position(*b)?]))
+            .flatten()
+            .map(point)
+            .collect(),
+        ..Marker::default()
+    };
+    MarkerArray {
+        markers: vec![joints, bones],
+    }
+}
+
+/// The joint angles recorded in [`OperatorPose::angle_names`], in this order.
+pub const ANGLE_NAMES: [&str; 16] = [
+    "trunk_flexion",
+    "trunk_side_bend",
+    "trunk_twist",
+    "neck_flexion",
+    "neck_side_bend",
+    "neck_twist",
+    "left_upper_arm_flexion",
+    "left_upper_arm_abduction",
+    "left_elbow_flexion",
+    "left_wrist_flexion",
+    "left_wrist_deviation",
+    "right_upper_arm_flexion",
+    "right_upper_arm_abduction",
+    "right_elbow_flexion",
+    "right_wrist_flexion",
+    "right_wrist_deviation",
+];
+
+/// The fused skeleton by landmark index (NaN where not fused) and, when the frame was assessed, the
+/// joint angles RULA was scored from (radians, NaN where not observed).
+pub fn operator_pose_message(
+    skeleton: &ergocell_skeleton::Skeleton3,
+    assessment: Option<&FrameAssessment>,
+) -> OperatorPose {
+    let mut m = OperatorPose {
+        header: Header::new(skeleton.stamp_nanos, "world"),
+        x: Vec::with_capacity(LANDMARK_COUNT),
+        y: Vec::with_capacity(LANDMARK_COUNT),
+        z: Vec::with_capacity(LANDMARK_COUNT),
+        ..OperatorPose::default()
+    };
+    for lm in ergocell_skeleton::Landmark::ALL {
+        let p = skeleton
+            .position(lm)
+            .unwrap_or_else(|| nalgebra::Point3::new(f64::NAN, f64::NAN, f64::NAN));
+        m.x.push(p.x);
+        m.y.push(p.y);
+        m.z.push(p.z);
+    }
+    if let Some(a) = assessment {
+        let b = &a.angles;
+        let values = [
+            b.trunk_flexion_rad,
+            b.trunk_side_bend_rad,
+            b.trunk_twist_rad,
+            b.neck_flexion_rad,
+            b.neck_side_bend_rad,
+            b.neck_twist_rad,
+            b.left.upper_arm_flexion_rad,
+            b.left.upper_arm_abduction_rad,
+            b.left.elbow_flexion_rad,
+            b.left.wrist_flexion_rad,
+            b.left.wrist_deviation_rad,
+            b.right.upper_arm_flexion_rad,
+            b.right.upper_arm_abduction_rad,
+            b.right.elbow_flexion_rad,
+            b.right.wrist_flexion_rad,
+            b.right.wrist_deviation_rad,
+        ];
+        m.angle_names = ANGLE_NAMES.iter().map(|&n| n.to_owned()).collect();
+        m.angle_rad = values.iter().map(|v| v.unwrap_or(f64::NAN)).collect();
+    }
+    m
+}
+
+/// The robot's TCP (sphere, id 0) and the locked handover point (sphere, id 1) as markers in the
+/// `world` frame, for Foxglove and `ergocell review`.
+pub fn robot_markers_message(
+    stamp_nanos: i64,
+    tcp_world: Option<nalgebra::Point3<f64>>,
+    handover_world: Option<nalgebra::Point3<f64>>,
+) -> ergocell_bridge::msg::MarkerArray {
+    use ergocell_bridge::msg::{ColorRGBA, Marker, MarkerArray, Point, Pose, Quaternion, Vector3};
+    let sphere = |id: i32, p: nalgebra::Point3<f64>, size: f64, color: ColorRGBA| Marker {
+        header: Header::new(stamp_nanos, "world"),
+        ns: "robot".to_owned(),
+        id,
+        r#type: Marker::SPHERE,
+        action: Marker::ADD,
+        pose: Pose {
+            position: Point {
+                x: p.x,
+                y: p.y,
+                z: p.z,
+            },
+            orientation: Quaternion::default(),
+        },
+        scale: Vector3 {
+            x: size,
+            y: size,
+            z: size,
+        },
+        color,
+        ..Marker::default()
+    };
+    let mut markers = Vec::new();
+    if let Some(p) = tcp_world {
+        markers.push(sphere(
+            0,
+            p,
+            0.06,
+            ColorRGBA {
+                r: 0.2,
+                g: 0.6,
+                b: 1.0,
+                a: 1.0,
+            },
+        ));
+    }
+    if let Some(h) = handover_world {
+        markers.push(sphere(
+            1,
+            h,
+            0.05,
+            ColorRGBA {
+                r: 1.0,
+                g: 0.2,
+                b: 0.8,
+                a: 0.8,
+            },
+        ));
+    }
+    MarkerArray { markers }
+}
+
+/// The per-frame RULA state.
+pub fn ergonomic_message(a: &FrameAssessment) -> ErgonomicState {
+    ErgonomicState {
+        header: Header::new(a.stamp_nanos, "world"),
+        left: side_message(a.left.as_ref()),
+        right: side_message(a.right.as_ref()),
+        action_level: a.headline().map_or(0, |h| h.scores.action_level),
+    }
+}
+
+/// A warning event.
+pub fn warning_message(w: &WarningEvent) -> PostureWarning {
+    let kind = match w.kind {
+        ergocell_ergonomics::warnings::WarningKind::Raised => "raised",
+        ergocell_ergonomics::warnings::WarningKind::Changed => "changed",
+        ergocell_ergonomics::warnings::WarningKind::Cleared => "cleared",
+    };
+    PostureWarning {
+        header: Header::new(w.stamp_nanos, "world"),
+        kind: kind.to_owned(),
+        region: w.region.name().to_owned(),
+        side: w.side.map_or(String::new(), |s| s.name().to_owned()),
+        region_score: w.region_score,
+        angle_deg: w.angle_deg.unwrap_or(f64::NAN),
+        action_level: w.action_level,
+        uncertain: w.uncertain,
+        message: w.message.clone(),
+    }
+}
+
+/// The session state message of `machine` now.
+pub fn session_state_message(
+    machine: &SessionMachine,
+    stamp_nanos: i64,
+    reason: &str,
+) -> SessionState {
+    let estimate = machine.decision().map(|d| &d.estimate);
+    SessionState {
+        header: Header::new(stamp_nanos, "world"),
+        state: machine.state().name().to_owned(),
+        reason: reason.to_owned(),
+        height_m: estimate.map_or(f64::NAN, |e| e.height_m),
+        height_uncertainty_m: estimate.map_or(f64::NAN, |e| e.uncertainty_m),
+        height_class: machine
+            .decision()
+            .map_or(String::new(), |d| d.class.name().to_owned()),
+        trajectory_sha256: machine.lock_sha256().unwrap_or_default().to_owned(),
+        robot_held: machine.hold_reason().is_some(),
+        cameras_fresh: u32::try_from(machine.cameras_fresh()).unwrap_or(u32::MAX),
+        stereo_pairs_tracking: u32::try_from(machine.pairs_tracking()).unwrap_or(u32::MAX),
+        trajectory_approved_by: machine.approved_by(),
+    }
+}
+
+/// The session-state message of each event that has one (state changes, class decided, lock,
+/// refused change, camera degraded/restored), in order, each with the state **as of that event**
+/// (by the end of the step the machine may have moved on: decided → locked → working in one step).
+pub fn session_state_messages(
+    machine: &SessionMachine,
+    now_nanos: i64,
+    events: &[SessionEvent],
+) -> Vec<SessionState> {
+    use SessionEvent as E;
+    let mut current = events
+        .iter()
+        .find_map(|e| match e {
+            E::StateChanged { from, .. } => Some(*from),
+            _ => None,
+        })
+        .unwrap_or_else(|| machine.state());
+    let mut out = Vec::new();
+    for e in events {
+        let reason = match e {
+            E::StateChanged { to, reason, .. } => {
+                current = *to;
+                reason.clone()
+            }
+            E::ClassDecided { .. }
+            | E::TrajectoryLocked { .. }
+            | E::ChangeRefused { .. }
+            | E::CameraDegraded { .. }
+            | E::CameraRestored { .. } => describe(e),
+            E::RobotCommandSent { .. } | E::Warning(_) | E::Frame { .. } => continue,
+        };
+        let mut m = session_state_message(machine, now_nanos, &reason);
+        current.name().clone_into(&mut m.state);
+        out.push(m);
+    }
+    out
+}
+
+/// The message on the controller's `joint_trajectory` topic for a command (a hold is the empty
+/// trajectory: the joint trajectory controller drops its goal and stops).
+///
+/// A trajectory goes out with a zero `header.stamp`: the joint trajectory controller then starts it
+/// on receipt, on its own clock. A stamp from this PC's clock would shift or cut the start if the
+/// two clocks disagree (a past stamp skips points). `stamp_nanos` only stamps the hold.
+pub fn command_message(
+    command: &crate::session::RobotCommand,
+    stamp_nanos: i64,
+) -> JointTrajectory {
+    use crate::session::RobotCommand;
+    use JointTrajectory;
+    match command {
+        RobotCommand::Execute { trajectory, .. } => leg_message(trajectory),
+        RobotCommand::Hold { .. } => JointTrajectory {
+            header: Header::new(stamp_nanos, ""),
+            ..JointTrajectory::default()
+        },
+    }
+}
+
+/// A leg of the locked trajectory as a `trajectory_msgs/JointTrajectory` (zero stamp).
+pub fn leg_message(leg: &crate::session::LegTrajectory) -> JointTrajectory {
+    use ergocell_bridge::msg::{Duration, JointTrajectory, JointTrajectoryPoint};
+    JointTrajectory {
+        header: Header::default(),
+        joint_names: leg.joint_names.clone(),
+        points: leg
+            .points
+            .iter()
+            .map(|p| JointTrajectoryPoint {
+                positions: p.positions_rad.clone(),
+                velocities: p.velocities_rad_s.clone(),
+                accelerations: p.accelerations_rad_s2.clone(),
+                effort: Vec::new(),
+                time_from_start: Duration::from_secs_f64(p.time_from_start_s),
+            })
+            .collect(),
+    }
+}
+
+/// One line for a person reading the terminal or the log.
+pub fn describe(e: &SessionEvent) -> String {
+    use crate::session::{RobotCommand, SessionEvent as E};
+    match e {
+        E::StateChanged {
+            from, to, reason, ..
+        } => format!("state {from} → {to}: {reason}"),
+        E::ClassDecided {
+            height_m,
+            uncertainty_m,
+            class,
+            ..
+        } => format!(
+            "height measured {height_m:.3} ± {uncertainty_m:.3} m → class {}",
+            class.name()
+        ),
+        E::TrajectoryLocked {
+            class,
+            lock_sha256,
+            approved_by,
+            ..
+        } => format!(
+            "trajectory {class} validated, verified and locked: sha256 {lock_sha256} (approved by {})",
+            approved_by.join(", ")
+        ),
+        E::ChangeRefused {
+            requested, reason, ..
+        } => format!("change to {requested} refused: {reason}"),
+        E::CameraDegraded { camera, why, .. } => format!("camera {camera} degraded: {why}"),
+        E::CameraRestored { camera, .. } => format!("camera {camera} restored"),
+        E::RobotCommandSent { command, .. } => match command {
+            RobotCommand::Execute {
+                leg, trajectory, ..
+            } => format!(
+                "robot ← trajectory {leg:?} ({} points, {:.1} s)",
+                trajectory.points.len(),
+                trajectory
+                    .points
+                    .last()
+                    .map_or(0.0, |p| p.time_from_start_s)
+            ),
+            RobotCommand::Hold { reason } => {
+                format!("robot ← HOLD (goal cancelled, not an e-stop): {reason}")
+            }
+        },
+        E::Warning(w) => format!("RULA warning: {}", w.message),
+        E::Frame { .. } => "frame".to_owned(),
+    }
+}
