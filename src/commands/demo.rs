@@ -22,7 +22,10 @@ use ergocell::messages;
 use ergocell::recording::{self, topics, McapRecorder};
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
-use ergocell::session::{trajectory_class, RobotSink, SessionEvent, SessionMachine, SessionState};
+use ergocell::session::sim::SimSource;
+use ergocell::session::{
+    trajectory_class, LandmarkSource, RobotSink, SessionEvent, SessionMachine, SessionState,
+};
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
 use ergocell_cell::CellSettings;
@@ -152,7 +155,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         args.trajectories.as_deref(),
         &approvals_dir,
     );
-    let cell_text = provider.cell_text().map_err(|e| UsageError(e.clone()))?;
+    let cell_text = provider
+        .cell_text()
+        .map_err(|e| UsageError(e.to_string()))?;
     let settings = CellSettings::from_toml_str(&cell_text, &provider.cell_label())
         .map_err(|e| UsageError(e.to_string()))?;
     let start = wall_clock_nanos();
@@ -229,7 +234,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     say!();
 
     let stop = ctrl_c_flag();
-    let mut sim = sim;
+    // The cameras: the simulator as a landmark source (a view arrives at its tick's time).
+    let mut source = SimSource::new(sim, Vec::new());
     let mut now = start;
     let mut sim_done = false;
     let mut was_picking = false;
@@ -249,10 +255,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         let mut views = Vec::new();
         if !sim_done {
-            match sim.step()? {
-                Some(tick) => {
+            match source.poll(now)? {
+                Some(v) => {
+                    views = v;
                     // The simulator's ground truth: when the operator bends down and stands up.
-                    let picking = matches!(tick.truth.phase, Phase::FloorPick { .. });
+                    let picking = source
+                        .last_tick
+                        .as_ref()
+                        .is_some_and(|t| matches!(t.truth.phase, Phase::FloorPick { .. }));
                     if picking != was_picking {
                         was_picking = picking;
                         say!(
@@ -265,7 +275,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                             }
                         );
                     }
-                    views = tick.frame.views;
                 }
                 None => sim_done = true,
             }

@@ -56,32 +56,33 @@ impl FileTrajectories {
         }
     }
 
-    fn read_from(path: &Path, shipped: bool) -> Result<String, String> {
+    fn read_from(path: &Path, shipped: bool) -> Result<String, ProviderError> {
         if shipped {
             return crate::shipped::file(path)
                 .map(str::to_owned)
                 .ok_or_else(|| {
-                    format!(
+                    ProviderError(format!(
                         "{} is not among the files shipped in the binary",
                         path.display()
-                    )
+                    ))
                 });
         }
-        std::fs::read_to_string(path).map_err(|e| format!("cannot read {}: {e}", path.display()))
+        std::fs::read_to_string(path)
+            .map_err(|e| ProviderError(format!("cannot read {}: {e}", path.display())))
     }
 
     /// A file of the cell (the cell file or its URDF).
-    fn read_cell(&self, path: &Path) -> Result<String, String> {
+    fn read_cell(&self, path: &Path) -> Result<String, ProviderError> {
         Self::read_from(path, self.cell_shipped)
     }
 
     /// A file of the trajectories folder (a trajectory file or a lock).
-    fn read(&self, path: &Path) -> Result<String, String> {
+    fn read(&self, path: &Path) -> Result<String, ProviderError> {
         Self::read_from(path, self.trajectories_shipped)
     }
 
     /// The cell file's text.
-    pub fn cell_text(&self) -> Result<String, String> {
+    pub fn cell_text(&self) -> Result<String, ProviderError> {
         self.read_cell(&self.cell_path)
     }
 
@@ -95,15 +96,15 @@ impl FileTrajectories {
     }
 
     /// The lock file of `class`.
-    pub fn lock_text(&self, class: TrajectoryClass) -> Result<String, String> {
+    pub fn lock_text(&self, class: TrajectoryClass) -> Result<String, ProviderError> {
         self.read(&self.layout.lock(class))
     }
 
     /// The cell config (text and parsed), the URDF's path and its text.
-    fn cell_and_urdf(&self) -> Result<(String, CellConfig, PathBuf, String), String> {
+    fn cell_and_urdf(&self) -> Result<(String, CellConfig, PathBuf, String), ProviderError> {
         let cell_text = self.read_cell(&self.cell_path)?;
         let cell = CellConfig::from_toml_str(&cell_text)
-            .map_err(|e| format!("{}: {e}", self.cell_path.display()))?;
+            .map_err(|e| ProviderError(format!("{}: {e}", self.cell_path.display())))?;
         let urdf_path = self
             .cell_path
             .parent()
@@ -114,19 +115,19 @@ impl FileTrajectories {
     }
 
     /// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
-    pub fn robot_geometry(&self, class: TrajectoryClass) -> Result<RobotGeometry, String> {
+    pub fn robot_geometry(&self, class: TrajectoryClass) -> Result<RobotGeometry, ProviderError> {
         let (cell_text, _, _, urdf_text) = self.cell_and_urdf()?;
         let spec_text = self.read(&self.layout.spec(class))?;
         RobotGeometry::from_texts(&cell_text, &urdf_text, &spec_text)
-            .map_err(|e| format!("robot geometry for the recording ({class}): {e}"))
+            .map_err(|e| ProviderError(format!("robot geometry for the recording ({class}): {e}")))
     }
 
     /// Reads the cell, the URDF and the class's trajectory file: the model and the current hashes.
-    fn current(&self, class: TrajectoryClass) -> Result<(RobotModel, InputHashes), String> {
+    fn current(&self, class: TrajectoryClass) -> Result<(RobotModel, InputHashes), ProviderError> {
         let (_, cell, urdf_path, urdf_text) = self.cell_and_urdf()?;
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
-                .map_err(|e| format!("{}: {e}", urdf_path.display()))?;
+                .map_err(|e| ProviderError(format!("{}: {e}", urdf_path.display())))?;
         let spec_text = self.read(&self.layout.spec(class))?;
         let hashes = InputHashes::new(
             spec_text.as_bytes(),
@@ -144,13 +145,13 @@ impl FileTrajectories {
         &self,
         class: TrajectoryClass,
         stamp_utc: &str,
-    ) -> Result<String, String> {
+    ) -> Result<String, ProviderError> {
         let approvals_dir = self.layout.approvals_dir();
         if approvals_dir.ends_with(TrajectoryLayout::default().approvals_dir()) {
-            return Err(format!(
+            return Err(ProviderError(format!(
                 "refusing to write a demo approval into {}: demo approvals live in a temporary folder",
                 approvals_dir.display()
-            ));
+            )));
         }
         let (model, hashes) = self.current(class)?;
         let lock_text = self.read(&self.layout.lock(class))?;
@@ -161,23 +162,25 @@ impl FileTrajectories {
             model: &model,
             approvals_toml: None,
         };
-        let lock = lock::verify_integrity(&inputs).map_err(|f| f.to_string())?;
+        let lock = lock::verify_integrity(&inputs).map_err(|f| ProviderError(f.to_string()))?;
         let mut file = ApprovalsFile::default();
         file.approve(
             &lock,
             "DEMO APPROVAL (ergocell demo, simulator only; not a safety engineer's sign-off)",
             stamp_utc,
         )
-        .map_err(|e| e.to_string())?;
-        let text = file.to_toml().map_err(|e| e.to_string())?;
-        std::fs::create_dir_all(approvals_dir)
-            .map_err(|e| format!("cannot create {}: {e}", approvals_dir.display()))?;
+        .map_err(|e| ProviderError(e.to_string()))?;
+        let text = file.to_toml().map_err(|e| ProviderError(e.to_string()))?;
+        std::fs::create_dir_all(approvals_dir).map_err(|e| {
+            ProviderError(format!("cannot create {}: {e}", approvals_dir.display()))
+        })?;
         let path = self.layout.approvals(class);
         let text = format!(
             "# DEMO APPROVAL written by `ergocell demo` for the simulator. Not a safety sign-off;\n\
              # never copy into trajectories/approvals/.\n{text}"
         );
-        std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        std::fs::write(&path, text)
+            .map_err(|e| ProviderError(format!("cannot write {}: {e}", path.display())))?;
         Ok(lock.lock_sha256)
     }
 }
@@ -185,14 +188,14 @@ impl FileTrajectories {
 impl TrajectoryProvider for FileTrajectories {
     fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
         let path = self.layout.spec(class);
-        let spec = TrajectorySpec::from_toml_str(&self.read(&path).map_err(ProviderError)?)
+        let spec = TrajectorySpec::from_toml_str(&self.read(&path)?)
             .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
         Ok((spec.stature.min_m, spec.stature.max_m))
     }
 
     fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
-        let (model, hashes) = self.current(class).map_err(ProviderError)?;
-        let lock_text = self.read(&self.layout.lock(class)).map_err(ProviderError)?;
+        let (model, hashes) = self.current(class)?;
+        let lock_text = self.read(&self.layout.lock(class))?;
         let approvals = std::fs::read_to_string(self.layout.approvals(class)).ok();
         let inputs = VerifyInputs {
             class,
