@@ -629,6 +629,8 @@ pub fn adaptation(
 pub struct HeightRow {
     pub true_m: f64,
     pub estimated_m: Option<f64>,
+    /// The estimate's stated uncertainty (1σ), metres: at the decision, or at the end when undecided.
+    pub uncertainty_m: Option<f64>,
     pub true_class: HeightClass,
     /// `None` = undecided.
     pub decided_class: Option<HeightClass>,
@@ -646,6 +648,13 @@ pub struct HeightResult {
     /// Operators given a wrong class.
     pub confidently_wrong: usize,
     pub undecided: usize,
+    /// The half-width of the stated interval in σ (the estimator's `decision_sigmas`).
+    pub interval_sigmas: f64,
+    /// Empirical coverage: the share of operators with an estimate whose true stature lies inside the
+    /// stated interval `estimate ± interval_sigmas · σ` (nominal ≈ 0.954 for 2σ of a normal error),
+    /// and inside `estimate ± σ` (nominal ≈ 0.683).
+    pub coverage: f64,
+    pub coverage_1sigma: f64,
     pub operators: Vec<HeightRow>,
 }
 
@@ -671,13 +680,16 @@ pub fn height(
         let ticks = simulate(setup, i, h, &script)?;
         // The height as the session decides it: the pipeline's first decision, which is final.
         let pipeline = run_pipeline(setup, &ticks, |_, _| Ok(()))?;
-        let (estimated_m, decided_class) = match pipeline.height_status() {
-            HeightStatus::Decided(d) => (Some(d.estimate.height_m), Some(d.class)),
-            HeightStatus::Measuring { estimate, .. } => (estimate.map(|e| e.height_m), None),
+        let (estimate, decided_class) = match pipeline.height_status() {
+            HeightStatus::Decided(d) => (Some(d.estimate), Some(d.class)),
+            HeightStatus::Measuring { estimate, .. } => (estimate, None),
         };
+        let estimated_m = estimate.as_ref().map(|e| e.height_m);
+        let uncertainty_m = estimate.as_ref().map(|e| round6(e.uncertainty_m));
         rows.push(HeightRow {
             true_m: h,
             estimated_m: estimated_m.map(round6),
+            uncertainty_m,
             true_class: HeightClass::of(h, &t),
             decided_class,
         });
@@ -695,7 +707,21 @@ pub fn height(
             (r.true_m - t.c1_below_m()).abs() > 0.02 && (r.true_m - t.c2_up_to_m()).abs() > 0.02
         })
         .collect();
+    let k = cfg.decision_sigmas;
+    let covered = |sigmas: f64| {
+        let with: Vec<bool> = rows
+            .iter()
+            .filter_map(|r| {
+                let (e, u) = (r.estimated_m?, r.uncertainty_m?);
+                Some((e - r.true_m).abs() <= sigmas * u)
+            })
+            .collect();
+        round6(with.iter().filter(|c| **c).count() as f64 / with.len().max(1) as f64)
+    };
     Ok(HeightResult {
+        interval_sigmas: k,
+        coverage: covered(k),
+        coverage_1sigma: covered(1.0),
         mae_m: round6(mean(&errors)),
         class_accuracy: round6(rows.iter().filter(correct).count() as f64 / count.max(1) as f64),
         class_accuracy_beyond_2cm: round6(

@@ -56,6 +56,7 @@ pub mod cameras;
 pub mod detector;
 pub mod experiments;
 pub mod reach;
+pub mod seeds;
 pub mod session;
 
 pub use body::{ArmPosture, LegPosture, Operator, Posture};

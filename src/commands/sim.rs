@@ -25,6 +25,7 @@ use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySp
 use ergocell_sim::experiments::{
     self, Adaptation, Handovers, HeightResult, RulaAgreement, Setup, Table1,
 };
+use ergocell_sim::seeds::{self, Goal, Spread};
 use ergocell_sim::{ring_rig, DetectorNoise, RingRigConfig};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::{Point3, Vector3};
@@ -71,6 +72,11 @@ pub struct Common {
     /// Seed of every random draw: the same seed gives byte-identical JSON.
     #[arg(long, global = true, default_value_t = 1)]
     pub seed: u64,
+    /// Run the experiment once per seed of `A..B` (both included) or of `1..N` for a count `N`, and
+    /// report each quantity's mean, standard deviation and worst seed and on how many seeds each
+    /// goal holds: `<experiment>_seeds.json` and `<experiment>_seeds*.svg`. Overrides `--seed`.
+    #[arg(long, global = true, value_parser = parse_seed_range)]
+    pub seeds: Option<SeedRange>,
     /// The camera rig: a calibration file (world z up, floor z = 0) or a number of cameras placed in
     /// stereo pairs around the station.
     #[arg(long, global = true, default_value = "config/rig.toml")]
@@ -106,6 +112,14 @@ pub struct Common {
     /// `ergocell report <before> --compare <after>`.
     #[arg(long, global = true)]
     pub record_height: Option<f64>,
+}
+
+/// The seeds of `--seeds`.
+#[derive(Debug, Clone)]
+pub struct SeedRange(pub Vec<u64>);
+
+fn parse_seed_range(text: &str) -> Result<SeedRange, String> {
+    ergocell_sim::seeds::parse_seeds(text).map(SeedRange)
 }
 
 fn read(path: &Path) -> anyhow::Result<String> {
@@ -189,6 +203,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
         );
     }
+    if let Some(SeedRange(seeds)) = &c.seeds {
+        return run_seeds(args, seeds);
+    }
     let setup = Setup {
         rig: load_rig(&c.cameras)?,
         noise: DetectorNoise {
@@ -206,11 +223,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     };
     std::fs::create_dir_all(&c.out_dir)
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
-    let statures = |n: usize| -> Vec<f64> {
-        (0..n)
-            .map(|i| ((1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64) * 1e6).round() / 1e6)
-            .collect()
-    };
     let (value, figures) = match args.experiment {
         Experiment::Table1 => {
             let r = experiments::table1(
@@ -346,6 +358,431 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .with_context(|| format!("writing {}", json_path.display()))?;
     if c.json {
         // A closed pipe (`| head`) is not an error worth a panic.
+        let mut out = std::io::stdout().lock();
+        if let Err(e) = writeln!(out, "{text}") {
+            if e.kind() != std::io::ErrorKind::BrokenPipe {
+                return Err(e).context("writing to stdout");
+            }
+        }
+    } else {
+        println!("wrote {}", json_path.display());
+        for f in figures {
+            println!("wrote {}", f.display());
+        }
+    }
+    Ok(())
+}
+
+/// `n` operators' statures, evenly from 1.55 to 1.95 m (table1 and rula-agreement).
+fn statures(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| ((1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64) * 1e6).round() / 1e6)
+        .collect()
+}
+
+fn spread_text(s: Option<&Spread>, scale: f64, digits: usize) -> String {
+    s.map_or_else(
+        || "—".to_owned(),
+        |s| {
+            format!(
+                "{:.d$} ± {:.d$} (worst {:.d$} on seed {})",
+                s.mean * scale,
+                s.sd * scale,
+                s.worst * scale,
+                s.worst_seed,
+                d = digits
+            )
+        },
+    )
+}
+
+fn print_goals(goals: &[Goal]) {
+    for g in goals {
+        println!(
+            "goal: {} — holds on {} of {} seeds",
+            g.goal, g.holds_on, g.seeds
+        );
+        for (seed, why) in &g.fails {
+            println!("  seed {seed}: {why}");
+        }
+    }
+}
+
+/// One run per seed; each seed's sessions are independent of the others'.
+fn each<T>(
+    seeds: &[u64],
+    pb: &ProgressBar,
+    mut f: impl FnMut(u64) -> Result<T, ergocell_sim::SimError>,
+) -> anyhow::Result<Vec<T>> {
+    let mut out = Vec::with_capacity(seeds.len());
+    for &s in seeds {
+        out.push(f(s)?);
+        pb.inc(1);
+    }
+    Ok(out)
+}
+
+/// `--seeds`: the experiment once per seed, summarised (see `ergocell_sim::seeds`).
+fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
+    let c = &args.common;
+    if !(c.noise_px.is_finite() && c.noise_px >= 0.0) {
+        return Err(
+            UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
+        );
+    }
+    let rig = load_rig(&c.cameras)?;
+    let noise = DetectorNoise {
+        pixel_sigma_px: c.noise_px,
+        ..DetectorNoise::default()
+    };
+    let handovers = load_handovers(c)?;
+    let name = args.experiment.name();
+    std::fs::create_dir_all(&c.out_dir)
+        .with_context(|| format!("creating {}", c.out_dir.display()))?;
+    let pb = ProgressBar::new(seeds.len() as u64);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} seeds {elapsed}")
+    {
+        pb.set_style(style);
+    }
+    pb.set_message(name.to_owned());
+    let setup = |seed: u64| Setup {
+        rig: rig.clone(),
+        noise,
+        seed,
+    };
+    let (value, figures) = match args.experiment {
+        Experiment::Table1 => {
+            let operators = statures(c.operators.unwrap_or(5));
+            let runs = each(seeds, &pb, |s| {
+                experiments::table1(&setup(s), &handovers, &operators, c.cycles, &mut |_, _| {})
+            })?;
+            pb.finish_and_clear();
+            let sum = seeds::table1(seeds, &runs);
+            if !c.json {
+                println!(
+                    "Table 1 over seeds {seeds:?}: RMSE per landmark, cm, mean ± s.d. (worst seed)"
+                );
+                for (i, lm) in sum.landmarks.iter().enumerate() {
+                    println!(
+                        "  {lm:<16} default {}  best pair {}  paper {}",
+                        spread_text(sum.default_rmse_m[i].as_ref(), 100.0, 2),
+                        spread_text(sum.best_pair_rmse_m[i].as_ref(), 100.0, 1),
+                        spread_text(sum.paper_rmse_m[i].as_ref(), 100.0, 1)
+                    );
+                }
+                print_goals(&sum.goals);
+            }
+            let path = c.out_dir.join("table1_seeds.svg");
+            let worst = |v: &[Option<f64>], hi: bool| {
+                let it = v.iter().flatten().copied();
+                100.0
+                    * if hi {
+                        it.fold(f64::NAN, f64::max)
+                    } else {
+                        it.fold(f64::NAN, f64::min)
+                    }
+            };
+            let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
+            let default_worst: Vec<f64> = runs
+                .iter()
+                .map(|r| worst(r.rmse_m.get("default_fusion").map_or(&[][..], |v| v), true))
+                .collect();
+            let pair_best: Vec<f64> = runs.iter().map(|r| worst(&r.best_pair(), false)).collect();
+            let paper_best: Vec<f64> = runs
+                .iter()
+                .map(|r| worst(r.rmse_m.get("paper_fusion").map_or(&[][..], |v| v), false))
+                .collect();
+            let top = pair_best
+                .iter()
+                .chain(&paper_best)
+                .chain(&default_worst)
+                .copied()
+                .filter(|v| v.is_finite())
+                .fold(1.0, f64::max);
+            line_chart(
+                &path,
+                "Table 1 per seed: the default fusion's worst landmark vs the others' best, cm",
+                "seed",
+                "RMSE, cm",
+                &x,
+                &[
+                    (
+                        "default fusion, worst landmark",
+                        &default_worst,
+                        COLORS[5],
+                        false,
+                    ),
+                    (
+                        "best single pair, best landmark",
+                        &pair_best,
+                        COLORS[3],
+                        false,
+                    ),
+                    ("paper fusion, best landmark", &paper_best, COLORS[4], false),
+                ],
+                (0.0, top * 1.1),
+            )?;
+            (serde_json::to_value(&sum)?, vec![path])
+        }
+        Experiment::Adaptation => {
+            let heights = experiments::adaptation_heights();
+            let runs = each(seeds, &pb, |s| {
+                experiments::adaptation(&setup(s), &handovers, &heights, c.cycles, &mut |_, _| {})
+            })?;
+            pb.finish_and_clear();
+            let sum = seeds::adaptation(seeds, &runs);
+            if !c.json {
+                println!("adaptation over seeds {seeds:?}: mean grand score while holding the part, mean ± s.d. (worst seed)");
+                for (i, h) in sum.heights_m.iter().enumerate() {
+                    println!(
+                        "  {h:.2} m  before {}  after {}  truth after {}",
+                        spread_text(sum.before[i].as_ref(), 1.0, 2),
+                        spread_text(sum.after[i].as_ref(), 1.0, 2),
+                        spread_text(sum.true_after[i].as_ref(), 1.0, 2)
+                    );
+                }
+                print_goals(&sum.goals);
+            }
+            let path = c.out_dir.join("adaptation_seeds.svg");
+            let col = |v: &[Option<Spread>], f: fn(&Spread) -> f64| -> Vec<f64> {
+                v.iter().map(|s| s.as_ref().map_or(f64::NAN, f)).collect()
+            };
+            let goal = vec![seeds::ADAPTATION_MAX_AFTER; sum.heights_m.len()];
+            line_chart(
+                &path,
+                &format!(
+                    "Adaptation over {} seeds: mean grand score while holding the part",
+                    seeds.len()
+                ),
+                "operator stature, m",
+                "mean RULA grand score",
+                &sum.heights_m,
+                &[
+                    (
+                        "before, mean over seeds",
+                        &col(&sum.before, |s| s.mean),
+                        COLORS[0],
+                        false,
+                    ),
+                    (
+                        "after, mean over seeds",
+                        &col(&sum.after, |s| s.mean),
+                        COLORS[5],
+                        false,
+                    ),
+                    (
+                        "after, worst seed",
+                        &col(&sum.after, |s| s.max),
+                        COLORS[4],
+                        false,
+                    ),
+                    (
+                        "truth after, worst seed",
+                        &col(&sum.true_after, |s| s.max),
+                        COLORS[4],
+                        true,
+                    ),
+                    ("goal ≤ 3.00", &goal, RED, true),
+                ],
+                (2.0, 4.5),
+            )?;
+            (serde_json::to_value(&sum)?, vec![path])
+        }
+        Experiment::Height => {
+            let runs = each(seeds, &pb, |s| {
+                experiments::height(
+                    &setup(s),
+                    &handovers,
+                    c.operators.unwrap_or(60),
+                    12.0,
+                    &mut |_, _| {},
+                )
+            })?;
+            pb.finish_and_clear();
+            let sum = seeds::height(seeds, &runs);
+            if !c.json {
+                println!("height over seeds {seeds:?} (mean ± s.d., worst seed):");
+                println!(
+                    "  MAE               {} cm",
+                    spread_text(sum.mae_m.as_ref(), 100.0, 2)
+                );
+                println!(
+                    "  right beyond 2 cm {}",
+                    spread_text(sum.class_accuracy_beyond_2cm.as_ref(), 1.0, 3)
+                );
+                println!(
+                    "  undecided         {}",
+                    spread_text(sum.undecided.as_ref(), 1.0, 1)
+                );
+                println!(
+                    "  coverage ±kσ      {}",
+                    spread_text(sum.coverage.as_ref(), 1.0, 3)
+                );
+                println!(
+                    "  coverage ±1σ      {}",
+                    spread_text(sum.coverage_1sigma.as_ref(), 1.0, 3)
+                );
+                println!(
+                    "  confidently wrong {} of {} operators",
+                    sum.confidently_wrong_total, sum.operators_total
+                );
+                print_goals(&sum.goals);
+            }
+            let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
+            let per = |s: Option<&Spread>, scale: f64| -> Vec<f64> {
+                s.map_or_else(
+                    || vec![f64::NAN; x.len()],
+                    |s| s.per_seed.iter().map(|v| v * scale).collect(),
+                )
+            };
+            let mae = c.out_dir.join("height_seeds_mae.svg");
+            line_chart(
+                &mae,
+                "Stature per seed: mean absolute error and undecided operators",
+                "seed",
+                "MAE, cm  |  undecided operators / 10",
+                &x,
+                &[
+                    ("MAE, cm", &per(sum.mae_m.as_ref(), 100.0), COLORS[5], false),
+                    (
+                        "undecided / 10",
+                        &per(sum.undecided.as_ref(), 0.1),
+                        COLORS[3],
+                        false,
+                    ),
+                    ("goal MAE ≤ 1.5 cm", &vec![1.5; x.len()], RED, true),
+                ],
+                (0.0, 2.0),
+            )?;
+            let cov = c.out_dir.join("height_seeds_coverage.svg");
+            line_chart(
+                &cov,
+                "Coverage of the stated stature interval per seed (share of operators whose truth lies inside)",
+                "seed",
+                "coverage",
+                &x,
+                &[
+                    ("±kσ (k = 2)", &per(sum.coverage.as_ref(), 1.0), COLORS[5], false),
+                    ("±1σ", &per(sum.coverage_1sigma.as_ref(), 1.0), COLORS[3], false),
+                    ("nominal 2σ 0.954", &vec![seeds::NOMINAL_2SIGMA; x.len()], RED, true),
+                    ("nominal 1σ 0.683", &vec![0.6827; x.len()], COLORS[0], true),
+                ],
+                (0.0, 1.05),
+            )?;
+            (serde_json::to_value(&sum)?, vec![mae, cov])
+        }
+        Experiment::RulaAgreement => {
+            let operators = statures(c.operators.unwrap_or(6));
+            let runs = each(seeds, &pb, |s| {
+                experiments::rula_agreement(
+                    &setup(s),
+                    &handovers,
+                    &operators,
+                    c.cycles,
+                    &mut |_, _| {},
+                )
+            })?;
+            pb.finish_and_clear();
+            let sum = seeds::rula_agreement(seeds, &runs);
+            if !c.json {
+                println!(
+                    "RULA agreement over seeds {seeds:?} at {} px (mean ± s.d., worst seed):",
+                    c.noise_px
+                );
+                println!(
+                    "  grand score exact  {}",
+                    spread_text(sum.grand_exact.as_ref(), 1.0, 3)
+                );
+                println!(
+                    "  grand score κ      {}",
+                    spread_text(sum.grand_kappa.as_ref(), 1.0, 3)
+                );
+                println!(
+                    "  action level exact {}",
+                    spread_text(sum.action_level_exact.as_ref(), 1.0, 3)
+                );
+                println!(
+                    "  action level κ     {}",
+                    spread_text(sum.action_level_kappa.as_ref(), 1.0, 3)
+                );
+                for (j, r) in sum.region_names.iter().enumerate() {
+                    println!(
+                        "  {r:<10} exact  {}",
+                        spread_text(sum.region_exact[j].as_ref(), 1.0, 3)
+                    );
+                }
+                print_goals(&sum.goals);
+            }
+            let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
+            let per = |s: Option<&Spread>| -> Vec<f64> {
+                s.map_or_else(|| vec![f64::NAN; x.len()], |s| s.per_seed.clone())
+            };
+            let path = c.out_dir.join("rula_agreement_seeds.svg");
+            line_chart(
+                &path,
+                &format!(
+                    "RULA agreement with ground truth per seed ({} px)",
+                    c.noise_px
+                ),
+                "seed",
+                "agreement",
+                &x,
+                &[
+                    (
+                        "grand score exact",
+                        &per(sum.grand_exact.as_ref()),
+                        COLORS[5],
+                        false,
+                    ),
+                    (
+                        "grand score κ",
+                        &per(sum.grand_kappa.as_ref()),
+                        COLORS[4],
+                        false,
+                    ),
+                    (
+                        "action level κ",
+                        &per(sum.action_level_kappa.as_ref()),
+                        COLORS[3],
+                        false,
+                    ),
+                    (
+                        "goal exact ≥ 0.90",
+                        &vec![seeds::RULA_EXACT_GOAL; x.len()],
+                        RED,
+                        true,
+                    ),
+                    (
+                        "goal κ > 0.84",
+                        &vec![seeds::RULA_KAPPA_GOAL; x.len()],
+                        COLORS[0],
+                        true,
+                    ),
+                ],
+                (0.5, 1.0),
+            )?;
+            (serde_json::to_value(&sum)?, vec![path])
+        }
+    };
+    let mut doc = value;
+    if let Some(obj) = doc.as_object_mut() {
+        obj.insert(
+            "setup".into(),
+            serde_json::json!({
+                "seeds": seeds,
+                "cameras": c.cameras,
+                "camera_count": rig.len(),
+                "noise": noise,
+                "cycles": c.cycles,
+                "handovers_m": handovers,
+            }),
+        );
+    }
+    let text = serde_json::to_string(&doc)?;
+    let json_path = c.out_dir.join(format!("{name}_seeds.json"));
+    std::fs::write(&json_path, format!("{text}\n"))
+        .with_context(|| format!("writing {}", json_path.display()))?;
+    if c.json {
         let mut out = std::io::stdout().lock();
         if let Err(e) = writeln!(out, "{text}") {
             if e.kind() != std::io::ErrorKind::BrokenPipe {

@@ -1,0 +1,474 @@
+//! The experiments over many seeds: each quantity's mean, standard deviation and worst seed, and
+//! each goal judged seed by seed ("holds on N of M seeds", with the seeds where it fails).
+//!
+//! A result tuned on one seed is a result about that seed: the binary's `--seeds A..B` runs an
+//! experiment once per seed (each seed's sessions are independent, so the same range gives
+//! byte-identical JSON) and summarises the runs here. Pure functions of the per-seed results; no I/O.
+
+use serde::Serialize;
+
+use crate::experiments::{Adaptation, HeightResult, RulaAgreement, Table1};
+
+/// Which direction is worse for a quantity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Worse {
+    Higher,
+    Lower,
+}
+
+/// One quantity over the seeds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Spread {
+    pub mean: f64,
+    /// Sample standard deviation (n − 1); 0 for one seed.
+    pub sd: f64,
+    pub min: f64,
+    pub max: f64,
+    /// The worst value and the seed that gave it (the first such seed on a tie).
+    pub worst: f64,
+    pub worst_seed: u64,
+    /// The value of each seed, in the order of `seeds`.
+    pub per_seed: Vec<f64>,
+}
+
+fn round6(x: f64) -> f64 {
+    (x * 1e6).round() / 1e6
+}
+
+/// The spread of `values` (one per seed, in the order of `seeds`); non-finite values (a quantity a
+/// seed did not produce) are left out of the statistics but kept in `per_seed`. `None` when no seed
+/// produced a finite value.
+pub fn spread(seeds: &[u64], values: &[f64], worse: Worse) -> Option<Spread> {
+    let finite: Vec<(u64, f64)> = seeds
+        .iter()
+        .zip(values)
+        .filter(|(_, v)| v.is_finite())
+        .map(|(s, v)| (*s, *v))
+        .collect();
+    let (first_seed, first) = *finite.first()?;
+    let n = finite.len() as f64;
+    let mean = finite.iter().map(|(_, v)| v).sum::<f64>() / n;
+    let sd = if finite.len() > 1 {
+        (finite.iter().map(|(_, v)| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt()
+    } else {
+        0.0
+    };
+    let (mut worst_seed, mut worst) = (first_seed, first);
+    for &(s, v) in &finite {
+        let is_worse = match worse {
+            Worse::Higher => v > worst,
+            Worse::Lower => v < worst,
+        };
+        if is_worse {
+            (worst_seed, worst) = (s, v);
+        }
+    }
+    Some(Spread {
+        mean: round6(mean),
+        sd: round6(sd),
+        min: round6(finite.iter().map(|(_, v)| *v).fold(f64::INFINITY, f64::min)),
+        max: round6(
+            finite
+                .iter()
+                .map(|(_, v)| *v)
+                .fold(f64::NEG_INFINITY, f64::max),
+        ),
+        worst: round6(worst),
+        worst_seed,
+        per_seed: values.iter().map(|v| round6(*v)).collect(),
+    })
+}
+
+/// A goal judged on every seed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Goal {
+    pub goal: String,
+    pub holds_on: usize,
+    pub seeds: usize,
+    /// The seeds where it does not hold, each with why.
+    pub fails: Vec<(u64, String)>,
+}
+
+impl Goal {
+    /// `check(seed index)` returns `None` when the goal holds on that seed, else why not.
+    fn judge(goal: &str, seeds: &[u64], mut check: impl FnMut(usize) -> Option<String>) -> Self {
+        let fails: Vec<(u64, String)> = seeds
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| check(i).map(|why| (*s, why)))
+            .collect();
+        Self {
+            goal: goal.to_owned(),
+            holds_on: seeds.len() - fails.len(),
+            seeds: seeds.len(),
+            fails,
+        }
+    }
+
+    pub fn holds_everywhere(&self) -> bool {
+        self.fails.is_empty()
+    }
+}
+
+/// Table 1 over seeds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Table1Seeds {
+    pub seeds: Vec<u64>,
+    pub landmarks: Vec<String>,
+    /// Per landmark: the default fusion's RMSE (m) over seeds.
+    pub default_rmse_m: Vec<Option<Spread>>,
+    /// Per landmark: the paper fusion's RMSE (m) over seeds.
+    pub paper_rmse_m: Vec<Option<Spread>>,
+    /// Per landmark: the best single stereo pair's RMSE (m) over seeds.
+    pub best_pair_rmse_m: Vec<Option<Spread>>,
+    pub goals: Vec<Goal>,
+}
+
+/// Summarises Table 1 runs, one per seed.
+pub fn table1(seeds: &[u64], runs: &[Table1]) -> Table1Seeds {
+    let landmarks = runs
+        .first()
+        .map(|r| r.landmarks.clone())
+        .unwrap_or_default();
+    let per_landmark = |pick: &dyn Fn(&Table1) -> Vec<Option<f64>>| -> Vec<Option<Spread>> {
+        (0..landmarks.len())
+            .map(|i| {
+                let v: Vec<f64> = runs
+                    .iter()
+                    .map(|r| pick(r).get(i).copied().flatten().unwrap_or(f64::NAN))
+                    .collect();
+                spread(seeds, &v, Worse::Higher)
+            })
+            .collect()
+    };
+    let of = |name: &'static str| move |r: &Table1| r.rmse_m.get(name).cloned().unwrap_or_default();
+    let n = landmarks.len();
+    let goals = vec![
+        Goal::judge(
+            "default fusion beats the best single stereo pair on every landmark",
+            seeds,
+            |i| {
+                let w = runs[i].wins("default_fusion", &runs[i].best_pair());
+                (w < n).then(|| format!("{w}/{n} landmarks"))
+            },
+        ),
+        Goal::judge(
+            "default fusion beats the paper fusion on every landmark",
+            seeds,
+            |i| {
+                let paper = runs[i]
+                    .rmse_m
+                    .get("paper_fusion")
+                    .cloned()
+                    .unwrap_or_default();
+                let w = runs[i].wins("default_fusion", &paper);
+                (w < n).then(|| format!("{w}/{n} landmarks"))
+            },
+        ),
+    ];
+    Table1Seeds {
+        seeds: seeds.to_vec(),
+        default_rmse_m: per_landmark(&of("default_fusion")),
+        paper_rmse_m: per_landmark(&of("paper_fusion")),
+        best_pair_rmse_m: per_landmark(&Table1::best_pair),
+        landmarks,
+        goals,
+    }
+}
+
+/// The adaptation experiment over seeds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AdaptationSeeds {
+    pub seeds: Vec<u64>,
+    pub heights_m: Vec<f64>,
+    /// Per height, the mean grand score over seeds: pipeline before/after, truth before/after.
+    pub before: Vec<Option<Spread>>,
+    pub after: Vec<Option<Spread>>,
+    pub true_before: Vec<Option<Spread>>,
+    pub true_after: Vec<Option<Spread>>,
+    pub goals: Vec<Goal>,
+}
+
+/// The grand-score goal after adaptation (RULA action level ≤ 2).
+pub const ADAPTATION_MAX_AFTER: f64 = 3.0;
+
+/// Summarises adaptation runs, one per seed.
+pub fn adaptation(seeds: &[u64], runs: &[Adaptation]) -> AdaptationSeeds {
+    let heights_m = runs
+        .first()
+        .map(|r| r.heights_m.clone())
+        .unwrap_or_default();
+    let per_height = |pick: &dyn Fn(&Adaptation) -> &Vec<f64>| -> Vec<Option<Spread>> {
+        (0..heights_m.len())
+            .map(|i| {
+                let v: Vec<f64> = runs
+                    .iter()
+                    .map(|r| pick(r).get(i).copied().unwrap_or(f64::NAN))
+                    .collect();
+                spread(seeds, &v, Worse::Higher)
+            })
+            .collect()
+    };
+    // Served heights only (a height outside every class's validated statures is not handed over).
+    let check = |r: &Adaptation, after: &[f64], before: &[f64], what: &str| -> Vec<String> {
+        let mut why = Vec::new();
+        for (i, h) in r.heights_m.iter().enumerate() {
+            let (a, b) = (after[i], before[i]);
+            if !a.is_finite() {
+                continue;
+            }
+            if a > ADAPTATION_MAX_AFTER {
+                why.push(format!(
+                    "{h:.2} m {what} after {a:.2} > {ADAPTATION_MAX_AFTER:.2}"
+                ));
+            }
+            if a > b {
+                why.push(format!("{h:.2} m {what} worse after ({b:.2} → {a:.2})"));
+            }
+        }
+        why
+    };
+    let goal = |name: &str, pick: &dyn Fn(&Adaptation) -> Vec<String>| {
+        Goal::judge(name, seeds, |i| {
+            let why = pick(&runs[i]);
+            (!why.is_empty()).then(|| why.join("; "))
+        })
+    };
+    let goals = vec![
+        goal(
+            "pipeline: every served height ≤ 3.00 after adaptation and never worse than before",
+            &|r| {
+                check(
+                    r,
+                    &r.mean_grand_score_after,
+                    &r.mean_grand_score_before,
+                    "pipeline",
+                )
+            },
+        ),
+        goal(
+            "truth: every served height ≤ 3.00 after adaptation and never worse than before",
+            &|r| {
+                check(
+                    r,
+                    &r.true_mean_grand_score_after,
+                    &r.true_mean_grand_score_before,
+                    "truth",
+                )
+            },
+        ),
+    ];
+    AdaptationSeeds {
+        seeds: seeds.to_vec(),
+        before: per_height(&|r| &r.mean_grand_score_before),
+        after: per_height(&|r| &r.mean_grand_score_after),
+        true_before: per_height(&|r| &r.true_mean_grand_score_before),
+        true_after: per_height(&|r| &r.true_mean_grand_score_after),
+        heights_m,
+        goals,
+    }
+}
+
+/// The height experiment over seeds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HeightSeeds {
+    pub seeds: Vec<u64>,
+    pub mae_m: Option<Spread>,
+    pub class_accuracy_beyond_2cm: Option<Spread>,
+    pub undecided: Option<Spread>,
+    pub coverage: Option<Spread>,
+    pub coverage_1sigma: Option<Spread>,
+    /// Operators given a wrong class, over every seed's whole population.
+    pub confidently_wrong_total: usize,
+    pub operators_total: usize,
+    pub goals: Vec<Goal>,
+}
+
+/// The MAE goal of the height experiment, metres.
+pub const HEIGHT_MAE_GOAL_M: f64 = 0.015;
+/// The nominal coverage of a ±2σ interval of a normal error.
+pub const NOMINAL_2SIGMA: f64 = 0.9545;
+
+/// Summarises height runs, one per seed.
+pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
+    let pick = |f: &dyn Fn(&HeightResult) -> f64| runs.iter().map(f).collect::<Vec<f64>>();
+    let goals = vec![
+        Goal::judge("MAE ≤ 1.5 cm", seeds, |i| {
+            let m = runs[i].mae_m;
+            (m.is_nan() || m > HEIGHT_MAE_GOAL_M).then(|| format!("MAE {:.2} cm", m * 100.0))
+        }),
+        Goal::judge(
+            "every operator beyond 2 cm of a boundary in the right class",
+            seeds,
+            |i| {
+                let a = runs[i].class_accuracy_beyond_2cm;
+                (a < 1.0).then(|| format!("{:.1} % right", a * 100.0))
+            },
+        ),
+        Goal::judge("no operator confidently in the wrong class", seeds, |i| {
+            let r = &runs[i];
+            let wrong: Vec<String> = r
+                .operators
+                .iter()
+                .filter(|o| o.decided_class.is_some_and(|c| c != o.true_class))
+                .map(|o| {
+                    format!(
+                        "{:.3} m {} → {} (estimated {})",
+                        o.true_m,
+                        o.true_class.name(),
+                        o.decided_class.map_or("-", |c| c.name()),
+                        o.estimated_m.map_or("-".to_owned(), |e| format!("{e:.3}"))
+                    )
+                })
+                .collect();
+            (!wrong.is_empty()).then(|| wrong.join("; "))
+        }),
+        Goal::judge(
+            "the stated ±kσ interval covers the truth at least at its nominal level (0.954 for 2σ)",
+            seeds,
+            |i| {
+                let c = runs[i].coverage;
+                (c < NOMINAL_2SIGMA).then(|| format!("coverage {c:.3}"))
+            },
+        ),
+    ];
+    HeightSeeds {
+        seeds: seeds.to_vec(),
+        mae_m: spread(seeds, &pick(&|r| r.mae_m), Worse::Higher),
+        class_accuracy_beyond_2cm: spread(
+            seeds,
+            &pick(&|r| r.class_accuracy_beyond_2cm),
+            Worse::Lower,
+        ),
+        undecided: spread(seeds, &pick(&|r| r.undecided as f64), Worse::Higher),
+        coverage: spread(seeds, &pick(&|r| r.coverage), Worse::Lower),
+        coverage_1sigma: spread(seeds, &pick(&|r| r.coverage_1sigma), Worse::Lower),
+        confidently_wrong_total: runs.iter().map(|r| r.confidently_wrong).sum(),
+        operators_total: runs.iter().map(|r| r.operators.len()).sum(),
+        goals,
+    }
+}
+
+/// The RULA-agreement experiment over seeds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RulaSeeds {
+    pub seeds: Vec<u64>,
+    pub grand_exact: Option<Spread>,
+    pub grand_kappa: Option<Spread>,
+    pub action_level_exact: Option<Spread>,
+    pub action_level_kappa: Option<Spread>,
+    /// Per region (upper_arm, lower_arm, wrist, neck, trunk, legs): exact agreement over seeds.
+    pub region_names: Vec<String>,
+    pub region_exact: Vec<Option<Spread>>,
+    pub goals: Vec<Goal>,
+}
+
+/// The grand score's κ goal (above the Kinect anchor, κ 0.84) and exact agreement goal.
+pub const RULA_KAPPA_GOAL: f64 = 0.84;
+pub const RULA_EXACT_GOAL: f64 = 0.90;
+
+/// Summarises RULA-agreement runs, one per seed.
+pub fn rula_agreement(seeds: &[u64], runs: &[RulaAgreement]) -> RulaSeeds {
+    let pick = |f: &dyn Fn(&RulaAgreement) -> f64| runs.iter().map(f).collect::<Vec<f64>>();
+    let region_names = runs
+        .first()
+        .map(|r| r.region_names.clone())
+        .unwrap_or_default();
+    let region_exact = (0..region_names.len())
+        .map(|j| {
+            spread(
+                seeds,
+                &pick(&|r| r.region_exact.get(j).copied().unwrap_or(f64::NAN)),
+                Worse::Lower,
+            )
+        })
+        .collect();
+    let goals = vec![
+        Goal::judge("grand score κ > 0.84", seeds, |i| {
+            let k = runs[i].grand_score.kappa;
+            (k.is_nan() || k <= RULA_KAPPA_GOAL).then(|| format!("κ {k:.3}"))
+        }),
+        Goal::judge("grand score exact agreement ≥ 0.90", seeds, |i| {
+            let e = runs[i].grand_score.exact;
+            (e.is_nan() || e < RULA_EXACT_GOAL).then(|| format!("exact {e:.3}"))
+        }),
+    ];
+    RulaSeeds {
+        seeds: seeds.to_vec(),
+        grand_exact: spread(seeds, &pick(&|r| r.grand_score.exact), Worse::Lower),
+        grand_kappa: spread(seeds, &pick(&|r| r.grand_score.kappa), Worse::Lower),
+        action_level_exact: spread(seeds, &pick(&|r| r.action_level.exact), Worse::Lower),
+        action_level_kappa: spread(seeds, &pick(&|r| r.action_level.kappa), Worse::Lower),
+        region_names,
+        region_exact,
+        goals,
+    }
+}
+
+/// Parses a seed range: `A..B` (inclusive of both ends, as the docs write 101..120) or a count `N`
+/// (seeds 1..=N).
+pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
+    let t = text.trim();
+    let (a, b) = match t.split_once("..") {
+        Some((a, b)) => {
+            let b = b.strip_prefix('=').unwrap_or(b);
+            (
+                a.trim().parse::<u64>().map_err(|e| format!("{a:?}: {e}"))?,
+                b.trim().parse::<u64>().map_err(|e| format!("{b:?}: {e}"))?,
+            )
+        }
+        None => (
+            1,
+            t.parse::<u64>()
+                .map_err(|e| format!("{t:?}: expected A..B or a count: {e}"))?,
+        ),
+    };
+    if a > b || b - a >= 10_000 {
+        return Err(format!(
+            "{t:?}: expected A..B with A ≤ B and at most 10000 seeds"
+        ));
+    }
+    Ok((a..=b).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    #[test]
+    fn spread_of_known_values() {
+        let s = spread(&[1, 2, 3, 4], &[2.0, 4.0, 4.0, 6.0], Worse::Higher).unwrap();
+        assert_eq!((s.mean, s.min, s.max), (4.0, 2.0, 6.0));
+        // Sample s.d. of 2, 4, 4, 6: sqrt(8/3).
+        assert!((s.sd - (8.0f64 / 3.0).sqrt()).abs() < 1e-6);
+        assert_eq!((s.worst, s.worst_seed), (6.0, 4));
+        let low = spread(&[1, 2, 3, 4], &[2.0, 4.0, 4.0, 6.0], Worse::Lower).unwrap();
+        assert_eq!((low.worst, low.worst_seed), (2.0, 1));
+        // NaN is left out of the statistics, kept in per_seed; nothing finite → None.
+        let n = spread(&[1, 2], &[f64::NAN, 1.0], Worse::Higher).unwrap();
+        assert_eq!((n.mean, n.sd, n.worst_seed), (1.0, 0.0, 2));
+        assert!(n.per_seed[0].is_nan());
+        assert!(spread(&[1], &[f64::NAN], Worse::Higher).is_none());
+    }
+
+    #[test]
+    fn seed_ranges_parse_inclusively_and_bad_ones_are_refused() {
+        assert_eq!(parse_seeds("101..104").unwrap(), vec![101, 102, 103, 104]);
+        assert_eq!(parse_seeds("3..=3").unwrap(), vec![3]);
+        assert_eq!(parse_seeds("3").unwrap(), vec![1, 2, 3]);
+        for bad in ["5..2", "a..b", "", "1..20000", "-1..3"] {
+            assert!(parse_seeds(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_goal_counts_the_seeds_it_holds_on_and_names_the_others() {
+        let g = Goal::judge("even", &[10, 11, 12], |i| {
+            (i % 2 == 1).then(|| "odd".into())
+        });
+        assert_eq!((g.holds_on, g.seeds), (2, 3));
+        assert_eq!(g.fails, vec![(11, "odd".to_owned())]);
+        assert!(!g.holds_everywhere());
+    }
+}
