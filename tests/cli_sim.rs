@@ -113,13 +113,24 @@ fn a_seed_range_gives_byte_identical_json_and_judges_each_goal_per_seed() {
     let dir = out_dir("sim_seeds");
     for experiment in ["height", "rula-agreement", "table1", "adaptation"] {
         let a = run(experiment, 1, &dir, &["--seeds", "5..6"]);
-        assert_eq!(a, run(experiment, 1, &dir, &["--seeds", "5..6"]), "{experiment}");
+        assert_eq!(
+            a,
+            run(experiment, 1, &dir, &["--seeds", "5..6"]),
+            "{experiment}"
+        );
         let v: serde_json::Value = serde_json::from_str(&a).unwrap();
-        assert_eq!(v["setup"]["seeds"], serde_json::json!([5, 6]), "{experiment}");
+        assert_eq!(
+            v["setup"]["seeds"],
+            serde_json::json!([5, 6]),
+            "{experiment}"
+        );
         let goals = v["goals"].as_array().unwrap();
         assert!(!goals.is_empty(), "{experiment}");
         for g in goals {
-            let (holds, of) = (g["holds_on"].as_u64().unwrap(), g["seeds"].as_u64().unwrap());
+            let (holds, of) = (
+                g["holds_on"].as_u64().unwrap(),
+                g["seeds"].as_u64().unwrap(),
+            );
             assert_eq!(of, 2);
             assert_eq!(holds + g["fails"].as_array().unwrap().len() as u64, of);
         }
