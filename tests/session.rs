@@ -707,3 +707,82 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
         assert_eq!(shipped.verify(class).unwrap().class(), class);
     }
 }
+
+/// The documented safe handling of an operator the cell cannot class: a 1.69 m operator's stated
+/// interval (± 2σ ≈ 4.5 cm) straddles the 1.68 m boundary, so the height stays undecided; 20 s
+/// after they were first tracked the session ends, and the robot never gets a trajectory.
+#[test]
+fn an_operator_whose_interval_straddles_a_boundary_ends_the_session_without_moving_the_robot() {
+    let (names, home) = home();
+    let mut machine = SessionMachine::from_settings(
+        rig(),
+        &CellSettings::default(),
+        Box::new(provider("undecided-operator", Some(TrajectoryClass::C2))),
+    )
+    .unwrap();
+    let mut robot = DummyRobot::new(names, home);
+    let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.08));
+    script.cycles = 3;
+    let mut sim = Simulation::new(
+        rig(),
+        Operator::new(1.69).unwrap(),
+        script,
+        SimConfig::new(13),
+    )
+    .unwrap();
+    let mut events = Vec::new();
+    let mut now = 0;
+    while now <= 60_000_000_000 && machine.state() != SessionState::SessionEnded {
+        let views = sim
+            .step()
+            .unwrap()
+            .map(|t| t.frame.views)
+            .unwrap_or_default();
+        events.extend(machine.step(now, views, &mut robot));
+        now += PERIOD;
+    }
+    assert!(
+        !events
+            .iter()
+            .any(|e| matches!(e, SessionEvent::ClassDecided { .. })),
+        "no class is decided for an operator the interval cannot place"
+    );
+    assert_eq!(machine.state(), SessionState::SessionEnded);
+    let reason = &machine.summary().end_reason;
+    assert!(
+        reason.contains("height undecided") && reason.contains("straddles"),
+        "{reason}"
+    );
+    let measuring = events
+        .iter()
+        .find_map(|e| match e {
+            SessionEvent::StateChanged {
+                to: SessionState::MeasuringHeight,
+                stamp_nanos,
+                ..
+            } => Some(*stamp_nanos),
+            _ => None,
+        })
+        .unwrap();
+    let ended = events
+        .iter()
+        .find_map(|e| match e {
+            SessionEvent::StateChanged {
+                to: SessionState::SessionEnded,
+                stamp_nanos,
+                ..
+            } => Some(*stamp_nanos),
+            _ => None,
+        })
+        .unwrap();
+    let timeout = CellSettings::default().session.height_timeout_nanos;
+    assert!(
+        (ended - measuring - timeout).abs() <= PERIOD,
+        "{measuring} → {ended}"
+    );
+    assert!(machine.lock_sha256().is_none());
+    assert!(robot
+        .received
+        .iter()
+        .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
+}

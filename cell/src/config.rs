@@ -116,8 +116,6 @@ impl CellSettings {
         height.upright_max_neck_flexion_rad = h.upright_max_neck_flexion_rad;
         height.min_frames = h.min_frames;
         height.decision_sigmas = h.decision_sigmas;
-        height.agree_frames = h.agree_frames;
-        height.agree_fraction = h.agree_fraction;
         height.window_frames = h.window_frames;
         Ok(PipelineConfig {
             reconstruction: ReconstructionConfig {
@@ -242,10 +240,8 @@ impl CellSettings {
             angle(key, v)?;
         }
         positive("height.decision_sigmas", h.decision_sigmas)?;
-        unit_interval("height.agree_fraction", h.agree_fraction)?;
         for (key, v) in [
             ("height.min_frames", h.min_frames),
-            ("height.agree_frames", h.agree_frames),
             ("height.window_frames", h.window_frames),
         ] {
             if v == 0 {
@@ -369,6 +365,7 @@ struct SessionFile {
     resume_after_s: f64,
     exit_radius_m: f64,
     at_knot_tolerance_rad: f64,
+    height_timeout_s: f64,
 }
 
 impl Default for SessionFile {
@@ -381,6 +378,7 @@ impl Default for SessionFile {
             resume_after_s: d.resume_after_nanos as f64 * 1e-9,
             exit_radius_m: d.exit_radius_m,
             at_knot_tolerance_rad: d.at_knot_tolerance_rad,
+            height_timeout_s: d.height_timeout_nanos as f64 * 1e-9,
         }
     }
 }
@@ -390,6 +388,8 @@ impl SessionFile {
         seconds("session.camera_stale_s", self.camera_stale_s)?;
         seconds("session.max_frame_age_s", self.max_frame_age_s)?;
         seconds("session.resume_after_s", self.resume_after_s)?;
+        positive("session.height_timeout_s", self.height_timeout_s)?;
+        seconds("session.height_timeout_s", self.height_timeout_s)?;
         positive("session.exit_radius_m", self.exit_radius_m)?;
         landmarks("session.min_view_landmarks", self.min_view_landmarks)?;
         positive("session.at_knot_tolerance_rad", self.at_knot_tolerance_rad)?;
@@ -411,6 +411,7 @@ impl SessionFile {
             exit_radius_m: self.exit_radius_m,
             station_xy_m: [station.xyz_m[0], station.xyz_m[1]],
             at_knot_tolerance_rad: self.at_knot_tolerance_rad,
+            height_timeout_nanos: nanos(self.height_timeout_s),
         })
     }
 }
@@ -543,8 +544,6 @@ struct HeightFile {
     upright_max_neck_flexion_rad: f64,
     min_frames: usize,
     decision_sigmas: f64,
-    agree_frames: usize,
-    agree_fraction: f64,
     window_frames: usize,
 }
 
@@ -561,8 +560,6 @@ impl Default for HeightFile {
             upright_max_neck_flexion_rad: h.upright_max_neck_flexion_rad,
             min_frames: h.min_frames,
             decision_sigmas: h.decision_sigmas,
-            agree_frames: h.agree_frames,
-            agree_fraction: h.agree_fraction,
             window_frames: h.window_frames,
         }
     }

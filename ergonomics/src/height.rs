@@ -42,11 +42,14 @@
 //!
 //! # Class decision
 //! Classes: c1 below 1.68 m, c2 from 1.68 to 1.82 m inclusive, c3 above (thresholds configurable). A
-//! class is decided when at least [`HeightConfig::min_frames`] upright frames were used and either the
-//! interval `H ± k·σ` (k = [`HeightConfig::decision_sigmas`]) lies inside one class, or at least
-//! [`HeightConfig::agree_frames`] upright frames were used and a fraction
-//! [`HeightConfig::agree_fraction`] of the per-frame estimates fall in one class. Until then the
-//! estimator keeps measuring and says why. The decision is emitted once, as a [`HeightDecision`].
+//! class is decided when at least [`HeightConfig::min_frames`] upright frames were used and the
+//! interval `H ± k·σ` (k = [`HeightConfig::decision_sigmas`]) lies inside one class — and only then:
+//! an interval that straddles a boundary is undecided, however many frames agree (the frames share
+//! the person's proportions and posture, so their agreement says nothing about the model's error; a
+//! fall-back on frame agreement decided operators within 1 cm of a boundary while stating σ ≈ 2.2 cm,
+//! against its own interval). Until then the estimator keeps measuring and says why (with the share
+//! of frames that favour one class, for information). The decision is emitted once, as a
+//! [`HeightDecision`].
 
 use std::collections::VecDeque;
 
@@ -174,10 +177,6 @@ pub struct HeightConfig {
     pub min_frames: usize,
     /// Half-width of the decision interval in σ (default 2).
     pub decision_sigmas: f64,
-    /// Upright frames needed for a decision by agreement (default 90).
-    pub agree_frames: usize,
-    /// Fraction of per-frame estimates that must agree on a class (default 0.95).
-    pub agree_fraction: f64,
     /// Upright frames kept (the most recent; default 600).
     pub window_frames: usize,
 }
@@ -195,8 +194,6 @@ impl HeightConfig {
             upright_max_neck_flexion_rad: 15f64.to_radians(),
             min_frames: 15,
             decision_sigmas: 2.0,
-            agree_frames: 90,
-            agree_fraction: 0.95,
             window_frames: 600,
         }
     }
@@ -227,10 +224,8 @@ pub struct HeightEstimate {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "basis", rename_all = "snake_case")]
 pub enum DecisionBasis {
-    /// `height ± k·σ` lies inside the class.
+    /// `height ± k·σ` lies inside the class (the only rule).
     Interval { sigmas: f64 },
-    /// Enough per-frame estimates agree.
-    FrameAgreement { fraction: f64 },
 }
 
 /// The class decision event.
@@ -565,26 +560,13 @@ impl HeightEstimator {
         let k = c.decision_sigmas;
         let lo = HeightClass::of(estimate.height_m - k * estimate.uncertainty_m, t);
         let hi = HeightClass::of(estimate.height_m + k * estimate.uncertainty_m, t);
-        if lo == hi {
-            return Some(HeightDecision {
-                stamp_nanos,
-                class: lo,
-                estimate,
-                basis: DecisionBasis::Interval { sigmas: k },
-            });
-        }
-        if self.window.len() >= c.agree_frames {
-            let (class, fraction) = self.agreement()?;
-            if fraction >= c.agree_fraction {
-                return Some(HeightDecision {
-                    stamp_nanos,
-                    class,
-                    estimate,
-                    basis: DecisionBasis::FrameAgreement { fraction },
-                });
-            }
-        }
-        None
+        // A straddling interval is undecided: the session's safe handling takes over.
+        (lo == hi).then_some(HeightDecision {
+            stamp_nanos,
+            class: lo,
+            estimate,
+            basis: DecisionBasis::Interval { sigmas: k },
+        })
     }
 
     /// The most common class among per-frame estimates and its share.
@@ -624,13 +606,11 @@ impl HeightEstimator {
                 format!("; {:.0}% of frames say {}", f * 100.0, cl.name())
             });
             format!(
-                "{:.3} ± {:.3} m ({k}σ) straddles a class boundary ({:.2} / {:.2} m){agree}; need {} upright frames with {:.0}% agreeing",
+                "{:.3} ± {:.3} m ({k}σ) straddles a class boundary ({:.2} / {:.2} m){agree}: undecided",
                 e.height_m,
                 k * e.uncertainty_m,
                 c.thresholds.c1_below_m,
                 c.thresholds.c2_up_to_m,
-                c.agree_frames,
-                c.agree_fraction * 100.0
             )
         } else {
             "no usable estimate".to_owned()

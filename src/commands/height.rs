@@ -89,14 +89,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     match &status {
         HeightStatus::Decided(d) => {
             print_estimate(&d.estimate);
-            let basis = match d.basis {
-                DecisionBasis::Interval { sigmas } => {
-                    format!("the ±{sigmas}σ interval lies inside the class")
-                }
-                DecisionBasis::FrameAgreement { fraction } => {
-                    format!("{:.0}% of upright frames agree", fraction * 100.0)
-                }
-            };
+            let DecisionBasis::Interval { sigmas } = d.basis;
+            let basis = format!("the ±{sigmas}σ interval lies inside the class");
             println!(
                 "class: {} (decided at frame {}: {basis})",
                 d.class.name(),

@@ -1,7 +1,7 @@
 //! The session state machine (see the module docs of [`crate::session`]).
 
 use ergocell_ergonomics::warnings::WarningKind;
-use ergocell_ergonomics::{HeightDecision, UpVector};
+use ergocell_ergonomics::{HeightDecision, HeightStatus, UpVector};
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{SessionLock, TrajectoryClass};
 use ergocell_skeleton::{Landmark, Skeleton3};
@@ -74,6 +74,8 @@ pub struct SessionMachine {
     operator_arrived: bool,
     pairs_tracking: usize,
     first_step_nanos: Option<i64>,
+    /// When the operator was first tracked (the height measurement started).
+    measuring_since: Option<i64>,
     summary: SessionSummary,
 }
 
@@ -127,6 +129,7 @@ impl SessionMachine {
             operator_arrived: false,
             pairs_tracking: 0,
             first_step_nanos: None,
+            measuring_since: None,
             summary: SessionSummary::default(),
         })
     }
@@ -327,6 +330,7 @@ impl SessionMachine {
         events: &mut Vec<SessionEvent>,
     ) {
         if self.state == SessionState::WaitingForOperator {
+            self.measuring_since = Some(now_nanos);
             self.transition(
                 now_nanos,
                 SessionState::MeasuringHeight,
@@ -406,6 +410,9 @@ impl SessionMachine {
         robot: &mut dyn RobotSink,
         events: &mut Vec<SessionEvent>,
     ) {
+        if self.state == SessionState::MeasuringHeight {
+            self.check_height_timeout(now_nanos, robot, events);
+        }
         if self.state == SessionState::ClassDecided {
             self.lock_trajectory(now_nanos, robot, events);
         }
@@ -504,6 +511,34 @@ impl SessionMachine {
                 Motion::Moving(_) => {}
             }
         }
+    }
+
+    /// The documented safe handling of an operator the cell cannot class: once the height is still
+    /// undecided `height_timeout_nanos` after the operator was first tracked (their interval
+    /// straddles a class boundary, or they never stood upright), the session ends and the robot
+    /// does not move.
+    fn check_height_timeout(
+        &mut self,
+        now_nanos: i64,
+        robot: &mut dyn RobotSink,
+        events: &mut Vec<SessionEvent>,
+    ) {
+        let Some(since) = self.measuring_since else {
+            return;
+        };
+        if now_nanos - since < self.config.height_timeout_nanos {
+            return;
+        }
+        let why = match self.pipeline.height_status() {
+            HeightStatus::Measuring { why, .. } => why,
+            HeightStatus::Decided(_) => return,
+        };
+        let why = format!(
+            "height undecided after {:.0} s ({why}): the cell cannot class this operator, so the \
+             robot does not move",
+            self.config.height_timeout_nanos as f64 * 1e-9
+        );
+        self.abort(now_nanos, robot, &why, events);
     }
 
     fn lock_trajectory(

@@ -188,6 +188,10 @@ pub struct SessionConfig {
     pub station_xy_m: [f64; 2],
     /// Joint tolerance for "the robot is at the trajectory's start / end", radians.
     pub at_knot_tolerance_rad: f64,
+    /// An operator whose height is still undecided this long after they were first tracked (their
+    /// stated interval straddles a class boundary, or they never stood upright) ends the session:
+    /// the robot does not move, and the reason says why.
+    pub height_timeout_nanos: i64,
 }
 
 impl Default for SessionConfig {
@@ -200,6 +204,7 @@ impl Default for SessionConfig {
             exit_radius_m: 1.0,
             station_xy_m: [0.0, 0.0],
             at_knot_tolerance_rad: 0.01,
+            height_timeout_nanos: 20_000_000_000,
         }
     }
 }
