@@ -69,6 +69,48 @@ fn home() -> (Vec<String>, Vec<f64>) {
     )
 }
 
+/// A whole session of one simulated operator of `stature_m` reaching for `handover`, on the cell
+/// file's defaults with `approve`'s lock approved, until it ends or `limit_nanos`.
+fn operator_session(
+    name: &str,
+    approve: TrajectoryClass,
+    stature_m: f64,
+    handover: Point3<f64>,
+    cycles: usize,
+    seed: u64,
+    limit_nanos: i64,
+) -> (SessionMachine, DummyRobot, Vec<SessionEvent>) {
+    let (names, home) = home();
+    let mut machine = SessionMachine::from_settings(
+        rig(),
+        &CellSettings::default(),
+        Box::new(provider(name, Some(approve))),
+    )
+    .unwrap();
+    let mut robot = DummyRobot::new(names, home);
+    let mut script = SessionScript::new(handover);
+    script.cycles = cycles;
+    let mut sim = Simulation::new(
+        rig(),
+        Operator::new(stature_m).unwrap(),
+        script,
+        SimConfig::new(seed),
+    )
+    .unwrap();
+    let mut events = Vec::new();
+    let mut now = 0;
+    while now <= limit_nanos && machine.state() != SessionState::SessionEnded {
+        let views = sim
+            .step()
+            .unwrap()
+            .map(|t| t.frame.views)
+            .unwrap_or_default();
+        events.extend(machine.step(now, views, &mut robot));
+        now += PERIOD;
+    }
+    (machine, robot, events)
+}
+
 struct Run {
     machine: SessionMachine,
     robot: DummyRobot,
@@ -500,34 +542,15 @@ fn an_operator_outside_the_validated_statures_never_moves_the_robot() {
     // 1.45 m is class c1 (below 1.68 m), but c1's trajectory was derived and validated for
     // 1.50–1.68 m only (trajectories/c1.toml): the session must end without moving the robot,
     // although c1's lock is approved.
-    let (names, home) = home();
-    let mut machine = SessionMachine::from_settings(
-        rig(),
-        &CellSettings::default(),
-        Box::new(provider("short-operator", Some(TrajectoryClass::C1))),
-    )
-    .unwrap();
-    let mut robot = DummyRobot::new(names, home);
-    let mut script = SessionScript::new(Point3::new(0.394, -0.10, 0.963));
-    script.cycles = 1;
-    let mut sim = Simulation::new(
-        rig(),
-        Operator::new(1.45).unwrap(),
-        script,
-        SimConfig::new(11),
-    )
-    .unwrap();
-    let mut events = Vec::new();
-    let mut now = 0;
-    while now <= 20_000_000_000 && machine.state() != SessionState::SessionEnded {
-        let views = sim
-            .step()
-            .unwrap()
-            .map(|t| t.frame.views)
-            .unwrap_or_default();
-        events.extend(machine.step(now, views, &mut robot));
-        now += PERIOD;
-    }
+    let (machine, robot, events) = operator_session(
+        "short-operator",
+        TrajectoryClass::C1,
+        1.45,
+        Point3::new(0.394, -0.10, 0.963),
+        1,
+        11,
+        20_000_000_000,
+    );
     let decided = events.iter().find_map(|e| match e {
         SessionEvent::ClassDecided {
             class, height_m, ..
@@ -713,34 +736,15 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
 /// after they were first tracked the session ends, and the robot never gets a trajectory.
 #[test]
 fn an_operator_whose_interval_straddles_a_boundary_ends_the_session_without_moving_the_robot() {
-    let (names, home) = home();
-    let mut machine = SessionMachine::from_settings(
-        rig(),
-        &CellSettings::default(),
-        Box::new(provider("undecided-operator", Some(TrajectoryClass::C2))),
-    )
-    .unwrap();
-    let mut robot = DummyRobot::new(names, home);
-    let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.08));
-    script.cycles = 3;
-    let mut sim = Simulation::new(
-        rig(),
-        Operator::new(1.69).unwrap(),
-        script,
-        SimConfig::new(13),
-    )
-    .unwrap();
-    let mut events = Vec::new();
-    let mut now = 0;
-    while now <= 60_000_000_000 && machine.state() != SessionState::SessionEnded {
-        let views = sim
-            .step()
-            .unwrap()
-            .map(|t| t.frame.views)
-            .unwrap_or_default();
-        events.extend(machine.step(now, views, &mut robot));
-        now += PERIOD;
-    }
+    let (machine, robot, events) = operator_session(
+        "undecided-operator",
+        TrajectoryClass::C2,
+        1.69,
+        Point3::new(0.41, -0.10, 1.08),
+        3,
+        13,
+        60_000_000_000,
+    );
     assert!(
         !events
             .iter()

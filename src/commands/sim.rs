@@ -338,22 +338,31 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             (value, figures)
         }
     };
-    let mut doc = value;
+    let setup_json = serde_json::json!({
+        "seed": c.seed,
+        "cameras": c.cameras,
+        "camera_count": setup.rig.len(),
+        "noise": setup.noise,
+        "cycles": c.cycles,
+        "handovers_m": handovers,
+    });
+    write_result(c, name, value, setup_json, &figures)
+}
+
+/// Adds `setup` to `doc`, writes `<file_stem>.json` into `--out-dir` and prints the JSON (`--json`)
+/// or the files written.
+fn write_result(
+    c: &Common,
+    file_stem: &str,
+    mut doc: serde_json::Value,
+    setup: serde_json::Value,
+    figures: &[PathBuf],
+) -> anyhow::Result<()> {
     if let Some(obj) = doc.as_object_mut() {
-        obj.insert(
-            "setup".into(),
-            serde_json::json!({
-                "seed": c.seed,
-                "cameras": c.cameras,
-                "camera_count": setup.rig.len(),
-                "noise": setup.noise,
-                "cycles": c.cycles,
-                "handovers_m": handovers,
-            }),
-        );
+        obj.insert("setup".into(), setup);
     }
     let text = serde_json::to_string(&doc)?;
-    let json_path = c.out_dir.join(format!("{name}.json"));
+    let json_path = c.out_dir.join(format!("{file_stem}.json"));
     std::fs::write(&json_path, format!("{text}\n"))
         .with_context(|| format!("writing {}", json_path.display()))?;
     if c.json {
@@ -425,11 +434,6 @@ fn each<T>(
 /// `--seeds`: the experiment once per seed, summarised (see `ergocell_sim::seeds`).
 fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
     let c = &args.common;
-    if !(c.noise_px.is_finite() && c.noise_px >= 0.0) {
-        return Err(
-            UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
-        );
-    }
     let rig = load_rig(&c.cameras)?;
     let noise = DetectorNoise {
         pixel_sigma_px: c.noise_px,
@@ -764,38 +768,15 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
             (serde_json::to_value(&sum)?, vec![path])
         }
     };
-    let mut doc = value;
-    if let Some(obj) = doc.as_object_mut() {
-        obj.insert(
-            "setup".into(),
-            serde_json::json!({
-                "seeds": seeds,
-                "cameras": c.cameras,
-                "camera_count": rig.len(),
-                "noise": noise,
-                "cycles": c.cycles,
-                "handovers_m": handovers,
-            }),
-        );
-    }
-    let text = serde_json::to_string(&doc)?;
-    let json_path = c.out_dir.join(format!("{name}_seeds.json"));
-    std::fs::write(&json_path, format!("{text}\n"))
-        .with_context(|| format!("writing {}", json_path.display()))?;
-    if c.json {
-        let mut out = std::io::stdout().lock();
-        if let Err(e) = writeln!(out, "{text}") {
-            if e.kind() != std::io::ErrorKind::BrokenPipe {
-                return Err(e).context("writing to stdout");
-            }
-        }
-    } else {
-        println!("wrote {}", json_path.display());
-        for f in figures {
-            println!("wrote {}", f.display());
-        }
-    }
-    Ok(())
+    let setup_json = serde_json::json!({
+        "seeds": seeds,
+        "cameras": c.cameras,
+        "camera_count": rig.len(),
+        "noise": noise,
+        "cycles": c.cycles,
+        "handovers_m": handovers,
+    });
+    write_result(c, &format!("{name}_seeds"), value, setup_json, &figures)
 }
 
 /// Pixel-noise levels of the RULA-agreement sweep, pixels.
