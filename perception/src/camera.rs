@@ -177,6 +177,18 @@ impl Distortion {
     }
 }
 
+/// The focal lengths [`Camera::new`] accepts, as multiples of the image's longer side in pixels:
+/// `0.05 ×` is a field of view of about 168° (beyond any pinhole lens; fisheyes are not supported),
+/// `100 ×` about 0.6° (beyond any lens that watches a person at a work cell). A value outside is a
+/// unit or export error (e.g. Qualisys' 1/64-pixel units, a metre focal length, `1e308`), which
+/// would otherwise surface only as infinite reprojection errors.
+pub const FOCAL_RANGE_PER_PX: (f64, f64) = (0.05, 100.0);
+
+/// How far outside the image [`Camera::new`] lets the principal point lie, as a fraction of the
+/// image's width (for `cx`) or height (for `cy`): `−0.5·w ≤ cx ≤ 1.5·w`, `−0.5·h ≤ cy ≤ 1.5·h`.
+/// Real lenses put it near the centre; farther out is a wrong image size or a swapped matrix.
+pub const PRINCIPAL_POINT_MARGIN: f64 = 0.5;
+
 /// One calibrated camera.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Camera {
@@ -188,7 +200,10 @@ pub struct Camera {
 }
 
 impl Camera {
-    /// A camera, validated: finite parameters, positive focal lengths and image size.
+    /// A camera, validated: finite parameters, a positive image size, focal lengths within
+    /// [`FOCAL_RANGE_PER_PX`] × the image's longer side, the principal point within
+    /// [`PRINCIPAL_POINT_MARGIN`] of the image, and a proper rotation. Errors name the field and
+    /// the value.
     pub fn new(
         id: CameraId,
         intrinsics: Intrinsics,
@@ -227,6 +242,40 @@ impl Camera {
                 "size",
                 f64::from(k.width_px.min(k.height_px)),
                 "image size must be positive",
+            );
+        }
+        // Sanity beyond finiteness (every format carries the image size, so it is always known).
+        let longest = f64::from(k.width_px.max(k.height_px));
+        for (field, value) in [("fx", k.fx), ("fy", k.fy)] {
+            if value < FOCAL_RANGE_PER_PX.0 * longest {
+                return bad(
+                    field,
+                    value,
+                    "focal length below 0.05 × the image's longer side (a field of view over 168°)",
+                );
+            }
+            if value > FOCAL_RANGE_PER_PX.1 * longest {
+                return bad(
+                    field,
+                    value,
+                    "focal length above 100 × the image's longer side (a field of view under 0.6°)",
+                );
+            }
+        }
+        let (w, h) = (f64::from(k.width_px), f64::from(k.height_px));
+        let m = PRINCIPAL_POINT_MARGIN;
+        if !(-m * w..=(1.0 + m) * w).contains(&k.cx) {
+            return bad(
+                "cx",
+                k.cx,
+                "principal point more than half the image width outside the image",
+            );
+        }
+        if !(-m * h..=(1.0 + m) * h).contains(&k.cy) {
+            return bad(
+                "cy",
+                k.cy,
+                "principal point more than half the image height outside the image",
             );
         }
         for (field, value) in ["k1", "k2", "p1", "p2", "k3"]

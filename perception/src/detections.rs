@@ -113,6 +113,24 @@ pub struct ImportStats {
     pub skipped_records: usize,
     /// Frames where more than one person was detected in some camera.
     pub multi_person_frames: usize,
+    /// (frame, camera) slots with no detection file at all (e.g. a deleted OpenPose JSON): that
+    /// camera is missing from that frame only.
+    pub missing_views: usize,
+}
+
+impl ImportStats {
+    /// One line for the user when anything was left out, `None` when the import was clean.
+    pub fn warning(&self) -> Option<String> {
+        if self.invalid_keypoints == 0 && self.skipped_records == 0 && self.missing_views == 0 {
+            return None;
+        }
+        Some(format!(
+            "{} invalid keypoints (NaN/inf pixel or confidence outside 0..1), {} unusable records \
+             (malformed or non-UTF-8 files, unparsable rows) and {} missing views (no file for that \
+             camera and frame) were left out",
+            self.invalid_keypoints, self.skipped_records, self.missing_views
+        ))
+    }
 }
 
 /// The 2D keypoint layouts ergocell reads, and how each maps onto BlazePose-33.

@@ -15,7 +15,7 @@ pub enum PerceptionError {
         message: String,
     },
     /// A camera parameter is non-finite or physically impossible.
-    #[error("camera `{camera}`: {field} = {value} is invalid ({why})")]
+    #[error("camera `{camera}`: {field} = {value:?} is invalid ({why})")]
     BadCameraParameter {
         camera: CameraId,
         field: &'static str,
@@ -34,6 +34,20 @@ pub enum PerceptionError {
     /// The rig has no cameras.
     #[error("the rig has no cameras")]
     EmptyRig,
+    /// Fusion needs at least two cameras; the rig has fewer.
+    #[error("the rig has {cameras} camera(s); fusing a 3D skeleton needs at least 2")]
+    TooFewCameras { cameras: usize },
+    /// Two cameras have (nearly) the same centre: no baseline, nothing can be triangulated from them.
+    #[error(
+        "cameras `{first}` and `{second}` are {distance_m:.6} m apart (closer than {limit_m} m): \
+         coincident centres, no baseline to triangulate from"
+    )]
+    CoincidentCameras {
+        first: CameraId,
+        second: CameraId,
+        distance_m: f64,
+        limit_m: f64,
+    },
     /// A point is behind the camera (or on its centre plane): it has no image.
     #[error("point is behind camera `{camera}` (depth {depth_m} m)")]
     BehindCamera { camera: CameraId, depth_m: f64 },

@@ -104,8 +104,13 @@ pub struct FusionEngine {
 type FrameObs = [Vec<Obs>; LANDMARK_COUNT];
 
 impl FusionEngine {
-    /// An engine for this rig (at most [`MAX_VIEWS`] cameras).
+    /// An engine for this rig (2 to [`MAX_VIEWS`] cameras: one camera cannot triangulate anything,
+    /// so a one-camera rig is an error here rather than a run of empty skeletons; coincident
+    /// cameras are refused by [`CameraRig::new`]).
     pub fn new(rig: CameraRig, method: FusionMethod) -> Result<Self> {
+        if rig.len() < 2 {
+            return Err(PerceptionError::TooFewCameras { cameras: rig.len() });
+        }
         if rig.len() > MAX_VIEWS {
             return Err(PerceptionError::Unsupported(format!(
                 "{} cameras (at most {MAX_VIEWS})",

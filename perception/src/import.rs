@@ -4,9 +4,15 @@
 //!   `{"people": [{"pose_keypoints_2d": [x0, y0, c0, x1, …]}]}`. Undetected keypoints are `0, 0, 0`.
 //!   Camera folders are matched to the calibration's cameras by name where they match, else in sorted
 //!   order, as Pose2Sim does ([`match_camera_folders`]). With several people in a frame the operator is
-//!   chosen by [`OperatorSelector`].
+//!   chosen by [`OperatorSelector`]. Frames are paired across cameras by the frame number in each
+//!   file name, not by file order ([`assemble_openpose`]), so a missing file is a missing view of
+//!   that frame only.
 //! - **caliscope** long CSV (`xy_*.csv`): `sync_index, port, frame_index, frame_time, point_id,
 //!   img_loc_x, img_loc_y`, BlazePose point ids, no confidence column (taken as 1).
+//!
+//! One bad record (a non-UTF-8 or malformed file, an unparsable row) is skipped and counted in
+//! [`ImportStats`], never fatal and never shifting the others; a file that cannot be read as its
+//! format at all (a required CSV column missing) is an error naming what is missing.
 
 use std::collections::BTreeMap;
 
@@ -195,21 +201,225 @@ pub fn match_camera_folders(
         .collect())
 }
 
-#[derive(Debug, Deserialize)]
-struct CaliscopeRow {
-    sync_index: i64,
-    port: i64,
-    frame_time: f64,
-    point_id: i64,
-    img_loc_x: Option<f64>,
-    img_loc_y: Option<f64>,
+/// One camera's OpenPose-style detection files as the caller read them from its folder.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct CameraFiles {
+    /// The rig camera this folder belongs to (see [`match_camera_folders`]).
+    pub camera: CameraIndex,
+    /// `(file name or path, raw bytes)` per file, in any order; the frame number is read from the
+    /// name's last path component ([`frame_number_of`]).
+    pub files: Vec<(String, Vec<u8>)>,
 }
 
+/// How [`assemble_openpose`] put the cameras' files together into frames.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FramePairing {
+    /// By the frame number in each file name: a missing file is a missing view of that frame only.
+    ByFrameNumber,
+    /// No file name carries a frame number: the `k`-th file (sorted by name) of every camera is
+    /// frame `k`, so a missing file shifts that camera's later frames (reported as a warning).
+    BySortedOrder,
+}
+
+/// The frames of an OpenPose-style folder set, and what was left out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OpenPoseImport {
+    /// One frame per frame number seen in any camera, in order; its stamp is
+    /// `(number − first number) / rate`.
+    pub frames: Vec<Frame2>,
+    pub pairing: FramePairing,
+    /// One line per file left out (not UTF-8, malformed JSON, no or a repeated frame number) and
+    /// per pairing caveat, naming the file: for the caller to show.
+    pub warnings: Vec<String>,
+}
+
+/// One camera's files by frame number (`None`: two files claimed that number).
+type FrameSlots<'a> = BTreeMap<u64, Option<&'a (String, Vec<u8>)>>;
+
+/// The frame number in a detection file's name: the last run of ASCII digits before `_keypoints`
+/// (OpenPose writes `<stem>_<12-digit frame>_keypoints.json`), or, without `_keypoints`, the last run
+/// of digits in the name without its extension (Pose2Sim and others: `cam01_000042.json`). `None`
+/// when there is no digit (or the number does not fit in a `u64`). Only the last path component
+/// counts, so digits in folder names are ignored.
+pub fn frame_number_of(file_name: &str) -> Option<u64> {
+    let base = file_name.rsplit(['/', '\\']).next().unwrap_or(file_name);
+    let stem = match base.rfind("_keypoints") {
+        Some(i) => &base[..i],
+        None => base.rsplit_once('.').map_or(base, |(stem, _)| stem),
+    };
+    let end = stem.rfind(|c: char| c.is_ascii_digit())? + 1;
+    let start = stem[..end]
+        .rfind(|c: char| !c.is_ascii_digit())
+        .map_or(0, |i| i + 1);
+    stem[start..end].parse().ok()
+}
+
+/// Assembles OpenPose-style per-camera files into time-aligned frames — the pure part of reading an
+/// OpenPose folder set (the caller lists the folders and reads the files).
+///
+/// Frames are paired by the frame number in each file name ([`frame_number_of`]), so a deleted file
+/// is a missing view in that frame only (counted in `stats.missing_views`), never a shift of the
+/// camera's later frames. Nothing in one file is fatal: a file that is not UTF-8, is not valid
+/// OpenPose JSON, has no frame number while others do, or repeats another file's frame number in the
+/// same camera is left out, counted in `stats.skipped_records` and named in the warnings. Only when no
+/// file carries a frame number are files paired by sorted name, with a warning. With several people
+/// in a view the operator is chosen by [`OperatorSelector`] (frames in order).
+///
+/// Errors only on a rate that is not a positive finite number.
+pub fn assemble_openpose(
+    cameras: &[CameraFiles],
+    format: KeypointFormat,
+    rate_hz: f64,
+    stats: &mut ImportStats,
+) -> Result<OpenPoseImport> {
+    if !(rate_hz.is_finite() && rate_hz > 0.0) {
+        return Err(parse_err(
+            "detections",
+            "rate_hz",
+            format!("{rate_hz} is not a positive frame rate"),
+        ));
+    }
+    let mut warnings = Vec::new();
+    let any_numbered = cameras
+        .iter()
+        .flat_map(|c| &c.files)
+        .any(|(name, _)| frame_number_of(name).is_some());
+    let pairing = if any_numbered || cameras.iter().all(|c| c.files.is_empty()) {
+        FramePairing::ByFrameNumber
+    } else {
+        warnings.push(
+            "no frame numbers in the detection file names: frames paired by sorted file order, \
+             so a missing file shifts that camera's later frames"
+                .to_owned(),
+        );
+        FramePairing::BySortedOrder
+    };
+    // camera → frame number → the one file of that frame (None: that number was repeated)
+    let mut by_camera: BTreeMap<CameraIndex, FrameSlots<'_>> = BTreeMap::new();
+    for c in cameras {
+        let slots = by_camera.entry(c.camera).or_default();
+        let mut files: Vec<&(String, Vec<u8>)> = c.files.iter().collect();
+        files.sort_by(|a, b| a.0.cmp(&b.0));
+        for (k, file) in files.into_iter().enumerate() {
+            let number = match pairing {
+                FramePairing::BySortedOrder => Some(k as u64),
+                FramePairing::ByFrameNumber => frame_number_of(&file.0),
+            };
+            let Some(number) = number else {
+                stats.skipped_records += 1;
+                warnings.push(format!(
+                    "skipping {}: no frame number in the file name",
+                    file.0
+                ));
+                continue;
+            };
+            match slots.get_mut(&number) {
+                None => {
+                    slots.insert(number, Some(file));
+                }
+                Some(slot) => {
+                    // Two files claim one frame of one camera: which one is right is a guess.
+                    if let Some(first) = slot.take() {
+                        stats.skipped_records += 1;
+                        warnings.push(format!(
+                            "skipping {}: another file of this camera has frame number {number}",
+                            first.0
+                        ));
+                    }
+                    stats.skipped_records += 1;
+                    warnings.push(format!(
+                        "skipping {}: another file of this camera has frame number {number}",
+                        file.0
+                    ));
+                }
+            }
+        }
+    }
+    let numbers: std::collections::BTreeSet<u64> = by_camera
+        .values()
+        .flat_map(|slots| slots.keys().copied())
+        .collect();
+    let first = numbers.first().copied().unwrap_or(0);
+    let mut selector = OperatorSelector::default();
+    let mut frames = Vec::with_capacity(numbers.len());
+    for number in numbers {
+        let stamp_nanos = ((number - first) as f64 / rate_hz * 1e9).round() as i64;
+        let mut views = Vec::new();
+        let mut several = false;
+        for (&camera, slots) in &by_camera {
+            let Some(slot) = slots.get(&number) else {
+                stats.missing_views += 1;
+                continue;
+            };
+            // A repeated frame number: already counted and named.
+            let Some((name, bytes)) = slot else { continue };
+            let text = match std::str::from_utf8(bytes) {
+                Ok(t) => t,
+                Err(e) => {
+                    stats.skipped_records += 1;
+                    warnings.push(format!(
+                        "skipping {name}: not UTF-8 text (invalid byte at offset {})",
+                        e.valid_up_to()
+                    ));
+                    continue;
+                }
+            };
+            let people = match parse_openpose_frame(text, name, format, stats) {
+                Ok(p) => p,
+                Err(e) => {
+                    stats.skipped_records += 1;
+                    warnings.push(format!("skipping {e}"));
+                    continue;
+                }
+            };
+            several |= people.len() > 1;
+            if let Some(i) = selector.select(camera, &people) {
+                views.push(View2::new(camera, stamp_nanos, people[i].keypoints));
+            }
+        }
+        if several {
+            stats.multi_person_frames += 1;
+        }
+        frames.push(Frame2 { stamp_nanos, views });
+    }
+    Ok(OpenPoseImport {
+        frames,
+        pairing,
+        warnings,
+    })
+}
+
+/// The columns of caliscope's `xy_*.csv` that ergocell reads (others, e.g. `frame_index` or
+/// `obj_loc_x`, are ignored). A file without one of them is an error naming it.
+pub const CALISCOPE_REQUIRED_COLUMNS: [&str; 6] = [
+    "sync_index",
+    "port",
+    "frame_time",
+    "point_id",
+    "img_loc_x",
+    "img_loc_y",
+];
+
 /// Parses caliscope's long `xy_*.csv` into one [`Frame2`] per `sync_index` (in order). `port` N maps
-/// to camera `cam_N` of the rig; rows for unknown ports or invalid points are skipped and counted.
-/// The frame's stamp is the earliest camera time of that sync index.
+/// to camera `cam_N` of the rig. See [`parse_caliscope_xy_bytes`].
 pub fn parse_caliscope_xy(
     text: &str,
+    source_name: &str,
+    rig: &CameraRig,
+    stats: &mut ImportStats,
+) -> Result<Vec<Frame2>> {
+    parse_caliscope_xy_bytes(text.as_bytes(), source_name, rig, stats)
+}
+
+/// Parses caliscope's long `xy_*.csv` from its raw bytes (so one non-UTF-8 row does not lose the
+/// file). A missing required column ([`CALISCOPE_REQUIRED_COLUMNS`]) is an error naming it; after
+/// that nothing is fatal: a row that cannot be used — a non-numeric or non-UTF-8 cell, a wrong number
+/// of fields, an unknown port or point id, a non-finite time — is skipped and counted in
+/// `stats.skipped_records`; an empty or non-finite pixel is an invalid keypoint. Rows are independent,
+/// so a skipped row never shifts another. The frame's stamp is the earliest camera time of that sync
+/// index.
+pub fn parse_caliscope_xy_bytes(
+    bytes: &[u8],
     source_name: &str,
     rig: &CameraRig,
     stats: &mut ImportStats,
@@ -217,32 +427,93 @@ pub fn parse_caliscope_xy(
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .trim(csv::Trim::All)
-        .from_reader(text.as_bytes());
+        .from_reader(bytes);
+    let headers = reader
+        .byte_headers()
+        .map_err(|e| parse_err(source_name, "(header)", e))?
+        .clone();
+    let header_list = headers
+        .iter()
+        .map(|h| String::from_utf8_lossy(h).into_owned())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let mut columns = [0usize; CALISCOPE_REQUIRED_COLUMNS.len()];
+    for (slot, name) in columns.iter_mut().zip(CALISCOPE_REQUIRED_COLUMNS) {
+        *slot = headers
+            .iter()
+            .position(|h| h.trim_ascii() == name.as_bytes())
+            .ok_or_else(|| {
+                parse_err(
+                    source_name,
+                    name,
+                    format!("required column `{name}` is missing (the header has: {header_list})"),
+                )
+            })?;
+    }
+    let [c_sync, c_port, c_time, c_point, c_x, c_y] = columns;
     let mut frames: BTreeMap<i64, BTreeMap<CameraIndex, View2>> = BTreeMap::new();
-    for (line, record) in reader.deserialize::<CaliscopeRow>().enumerate() {
-        let row = record.map_err(|e| parse_err(source_name, format!("row {}", line + 2), e))?;
-        let Some(camera) = rig.index_of_name(&format!("cam_{}", row.port)) else {
+    let mut record = csv::ByteRecord::new();
+    loop {
+        match reader.read_byte_record(&mut record) {
+            Ok(true) => {}
+            Ok(false) => break,
+            Err(e) => {
+                // A row with the wrong number of fields: that row only. Anything else (the reader
+                // cannot continue) ends the file here, keeping what was read.
+                stats.skipped_records += 1;
+                if matches!(e.kind(), csv::ErrorKind::UnequalLengths { .. }) {
+                    continue;
+                }
+                break;
+            }
+        }
+        let cell = |c: usize| {
+            record
+                .get(c)
+                .and_then(|b| std::str::from_utf8(b).ok())
+                .map(str::trim)
+        };
+        let int = |c: usize| cell(c).and_then(|t| t.parse::<i64>().ok());
+        let float = |c: usize| cell(c).and_then(|t| t.parse::<f64>().ok());
+        // An empty pixel cell is "not seen"; any other cell that does not parse spoils the row.
+        let pixel = |c: usize| match cell(c) {
+            Some("") => Some(None),
+            Some(t) => t.parse::<f64>().ok().map(Some),
+            None => None,
+        };
+        let (Some(sync_index), Some(port), Some(frame_time), Some(point_id), Some(u), Some(v)) = (
+            int(c_sync),
+            int(c_port),
+            float(c_time),
+            int(c_point),
+            pixel(c_x),
+            pixel(c_y),
+        ) else {
             stats.skipped_records += 1;
             continue;
         };
-        let Some(landmark) = usize::try_from(row.point_id)
+        let Some(camera) = rig.index_of_name(&format!("cam_{port}")) else {
+            stats.skipped_records += 1;
+            continue;
+        };
+        let Some(landmark) = usize::try_from(point_id)
             .ok()
             .and_then(ergocell_skeleton::Landmark::from_index)
         else {
             stats.skipped_records += 1;
             continue;
         };
-        if !row.frame_time.is_finite() {
+        if !frame_time.is_finite() {
             stats.skipped_records += 1;
             continue;
         }
-        let stamp_nanos = (row.frame_time * 1e9).round() as i64;
+        let stamp_nanos = (frame_time * 1e9).round() as i64;
         let view = frames
-            .entry(row.sync_index)
+            .entry(sync_index)
             .or_default()
             .entry(camera)
             .or_insert_with(|| View2::empty(camera, stamp_nanos));
-        match (row.img_loc_x, row.img_loc_y) {
+        match (u, v) {
             (Some(u), Some(v)) => match Keypoint2::new(u, v, 1.0) {
                 Ok(k) => view.set(landmark, Some(k)),
                 Err(_) => stats.invalid_keypoints += 1,
@@ -312,6 +583,109 @@ mod tests {
         assert_eq!(people[0].keypoints.iter().flatten().count(), 0);
         // BODY_25 has 21 points with a BlazePose equivalent (not: neck, mid-hip, small toes)
         assert_eq!(stats.invalid_keypoints, 21);
+    }
+
+    #[test]
+    fn openpose_frames_paired_by_frame_number_read_from_the_file_name() {
+        for (name, n) in [
+            ("video_000000000042_keypoints.json", Some(42)),
+            ("cam3/run2_000000000007_keypoints.json", Some(7)),
+            (
+                "C:\\data\\cam_10_json\\x_000000000011_keypoints.JSON",
+                Some(11),
+            ),
+            ("cam01_000123.json", Some(123)),
+            ("cam01.000124.json", Some(124)),
+            ("frame17_keypoints.json", Some(17)),
+            ("cam01_json/left.json", None),
+            ("keypoints.json", None),
+            ("f_99999999999999999999999_keypoints.json", None),
+        ] {
+            assert_eq!(frame_number_of(name), n, "{name}");
+        }
+    }
+
+    fn coco_file(name: &str, x: f64) -> (String, Vec<u8>) {
+        let values: Vec<String> = (0..17)
+            .flat_map(|i| [format!("{}", x + f64::from(i)), "50".into(), "0.9".into()])
+            .collect();
+        let json = format!(
+            "{{\"people\":[{{\"pose_keypoints_2d\":[{}]}}]}}",
+            values.join(",")
+        );
+        (name.to_owned(), json.into_bytes())
+    }
+
+    fn nose_x(frame: &Frame2, camera: CameraIndex) -> Option<f64> {
+        let view = frame.views.iter().find(|v| v.camera == camera)?;
+        view.get(Landmark::Nose).map(|k| k.pixel().x)
+    }
+
+    #[test]
+    fn openpose_frames_paired_by_frame_number_with_missing_repeated_and_unnumbered_files() {
+        let cameras = [
+            CameraFiles {
+                camera: 0,
+                files: vec![
+                    coco_file("a_000000000003_keypoints.json", 3.0),
+                    coco_file("a_000000000001_keypoints.json", 1.0),
+                    coco_file("a_000000000002_keypoints.json", 2.0),
+                ],
+            },
+            CameraFiles {
+                camera: 1,
+                // frame 2 deleted, frame 3 written twice, one file without a number
+                files: vec![
+                    coco_file("b_000000000001_keypoints.json", 101.0),
+                    coco_file("b_000000000003_keypoints.json", 103.0),
+                    coco_file("b2_000000000003_keypoints.json", 203.0),
+                    coco_file("notes.json", 999.0),
+                ],
+            },
+        ];
+        let mut stats = ImportStats::default();
+        let import = assemble_openpose(&cameras, KeypointFormat::Coco17, 10.0, &mut stats).unwrap();
+        assert_eq!(import.pairing, FramePairing::ByFrameNumber);
+        let f = &import.frames;
+        assert_eq!(f.len(), 3);
+        assert_eq!(
+            f.iter().map(|f| f.stamp_nanos).collect::<Vec<_>>(),
+            [0, 100_000_000, 200_000_000]
+        );
+        assert_eq!(
+            (nose_x(&f[0], 0), nose_x(&f[0], 1)),
+            (Some(1.0), Some(101.0))
+        );
+        assert_eq!((nose_x(&f[1], 0), nose_x(&f[1], 1)), (Some(2.0), None));
+        assert_eq!((nose_x(&f[2], 0), nose_x(&f[2], 1)), (Some(3.0), None));
+        assert_eq!(stats.missing_views, 1, "frame 2 of camera 1");
+        assert_eq!(
+            stats.skipped_records, 3,
+            "both frame-3 files and notes.json"
+        );
+        assert_eq!(import.warnings.len(), 3, "{:?}", import.warnings);
+        assert!(import.warnings.iter().any(|w| w.contains("notes.json")));
+        assert!(import
+            .warnings
+            .iter()
+            .any(|w| w.contains("b2_000000000003")));
+
+        // No numbers anywhere: the old sorted-order pairing, said out loud.
+        let plain = [CameraFiles {
+            camera: 0,
+            files: vec![coco_file("b.json", 2.0), coco_file("a.json", 1.0)],
+        }];
+        let import = assemble_openpose(&plain, KeypointFormat::Coco17, 10.0, &mut stats).unwrap();
+        assert_eq!(import.pairing, FramePairing::BySortedOrder);
+        assert_eq!(nose_x(&import.frames[0], 0), Some(1.0));
+        assert!(import.warnings[0].contains("sorted file order"));
+        assert!(assemble_openpose(&plain, KeypointFormat::Coco17, 0.0, &mut stats).is_err());
+        assert!(
+            assemble_openpose(&[], KeypointFormat::Coco17, 30.0, &mut stats)
+                .unwrap()
+                .frames
+                .is_empty()
+        );
     }
 
     #[test]

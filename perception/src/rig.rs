@@ -21,7 +21,11 @@ pub struct StereoPair {
     pub right: CameraIndex,
 }
 
-/// A validated set of cameras: unique ids, valid parameters, pairs that reference real cameras.
+/// Two camera centres closer than this (metres) are the same centre: [`CameraRig::new`] refuses them.
+pub const MIN_CAMERA_SEPARATION_M: f64 = 1e-3;
+
+/// A validated set of cameras: unique ids, valid parameters, distinct centres (at least
+/// [`MIN_CAMERA_SEPARATION_M`] apart), pairs that reference real cameras.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CameraRig {
     cameras: Vec<Camera>,
@@ -45,6 +49,22 @@ impl CameraRig {
         for (i, c) in cameras.iter().enumerate() {
             if cameras[..i].iter().any(|other| other.id == c.id) {
                 return Err(PerceptionError::DuplicateCamera(c.id.clone()));
+            }
+        }
+        // Two cameras at one centre (a duplicated entry, a failed extrinsic calibration) see every
+        // point along the same ray: nothing can be triangulated from them.
+        let centres: Vec<_> = cameras.iter().map(Camera::position_world).collect();
+        for (i, c) in centres.iter().enumerate() {
+            for (j, other) in centres[..i].iter().enumerate() {
+                let distance_m = (c - other).norm();
+                if distance_m < MIN_CAMERA_SEPARATION_M {
+                    return Err(PerceptionError::CoincidentCameras {
+                        first: cameras[j].id.clone(),
+                        second: cameras[i].id.clone(),
+                        distance_m,
+                        limit_m: MIN_CAMERA_SEPARATION_M,
+                    });
+                }
             }
         }
         let mut rig = Self {
@@ -150,7 +170,9 @@ mod tests {
     use crate::camera::{Distortion, Intrinsics};
     use nalgebra::Rotation3;
 
+    /// A camera whose centre depends on its name, so every test camera has its own centre.
     fn cam(name: &str) -> Camera {
+        let offset = name.bytes().map(f64::from).sum::<f64>() * 0.01;
         Camera::new(
             CameraId::new(name).unwrap(),
             Intrinsics {
@@ -164,7 +186,7 @@ mod tests {
             },
             Distortion::default(),
             Rotation3::identity(),
-            Vector3::zeros(),
+            Vector3::new(offset, 0.0, 0.0),
         )
         .unwrap()
     }

@@ -47,7 +47,10 @@ impl RobotModel {
     /// Parse a URDF and extract the serial chain from `base_link` to `flange_link`.
     ///
     /// Rejects prismatic/continuous/floating joints on the chain and joints without finite,
-    /// ordered position limits and positive velocity/effort limits.
+    /// ordered position limits and positive velocity/effort limits. Every joint of the file (on the
+    /// chain or not) is first checked for what `k`'s conversion would panic on or turn into NaN
+    /// (NaN or inverted limits, non-finite origins, zero or non-finite axes, ambiguous names): those
+    /// are errors naming the joint and the value, never a panic.
     pub fn from_urdf_str(
         urdf: &str,
         base_link: &str,
@@ -56,19 +59,9 @@ impl RobotModel {
         let robot = urdf_rs::read_from_string(urdf).map_err(|e| RobotError::Urdf {
             reason: e.to_string(),
         })?;
-        // `k` panics on a mimic joint whose leader is missing: check first.
-        for joint in &robot.joints {
-            if let Some(mimic) = &joint.mimic {
-                if !robot.joints.iter().any(|j| j.name == mimic.joint) {
-                    return Err(RobotError::UnsupportedUrdf {
-                        reason: format!(
-                            "joint `{}` mimics missing joint `{}`",
-                            joint.name, mimic.joint
-                        ),
-                    });
-                }
-            }
-        }
+        // `k`'s conversion panics on some inputs and silently turns others into NaN frames: check
+        // every joint of the file (not only the arm's) before handing it over.
+        check_urdf_for_k(&robot)?;
         if !robot.links.iter().any(|l| l.name == base_link) {
             return Err(RobotError::UnknownLink {
                 link: base_link.to_owned(),
@@ -327,6 +320,117 @@ impl RobotModel {
         ));
         points
     }
+}
+
+/// Checks a parsed URDF for everything `k` 0.32's `Chain::from(&urdf_rs::Robot)` panics on or turns
+/// into NaN without a word, so that [`RobotModel::from_urdf_str`] can refuse it with the joint and the
+/// value instead. Read from `k`'s `src/urdf.rs`:
+///
+/// - `Range::new(lower, upper)` asserts `lower <= upper` for every joint whose `upper - lower != 0`,
+///   so a NaN limit or `lower > upper` on any joint (fixed ones included) panics;
+/// - a mimic joint whose leader is missing panics (`unwrap_or_else(panic!)`);
+/// - a revolute/continuous/prismatic axis is normalised with `Unit::new_normalize`: a zero or NaN
+///   axis becomes NaN;
+/// - `<origin xyz rpy>` goes through unchecked: NaN or infinite values become NaN frames;
+/// - duplicate joint or link names, or a link that is the child of two joints, are silently
+///   resolved by whichever entry comes last in `k` (and first in our own limit lookup).
+///
+/// Velocity and effort limits must be finite and ≥ 0 here (0 is urdf-rs's default for joints without
+/// `<limit>`); the arm's own joints are held to the stricter rules of [`RobotModel::from_urdf_str`].
+fn check_urdf_for_k(robot: &urdf_rs::Robot) -> Result<(), RobotError> {
+    let unsupported = |reason: String| RobotError::UnsupportedUrdf { reason };
+    for (i, link) in robot.links.iter().enumerate() {
+        if robot.links[..i].iter().any(|l| l.name == link.name) {
+            return Err(unsupported(format!(
+                "link `{}` is defined more than once",
+                link.name
+            )));
+        }
+    }
+    for (i, joint) in robot.joints.iter().enumerate() {
+        let name = &joint.name;
+        if robot.joints[..i].iter().any(|j| &j.name == name) {
+            return Err(unsupported(format!(
+                "joint `{name}` is defined more than once"
+            )));
+        }
+        if let Some(other) = robot.joints[..i]
+            .iter()
+            .find(|j| j.child.link == joint.child.link)
+        {
+            return Err(unsupported(format!(
+                "link `{}` is the child of both joint `{}` and joint `{name}`",
+                joint.child.link, other.name
+            )));
+        }
+        if let Some(mimic) = &joint.mimic {
+            if !robot.joints.iter().any(|j| j.name == mimic.joint) {
+                return Err(unsupported(format!(
+                    "joint `{name}` mimics missing joint `{}`",
+                    mimic.joint
+                )));
+            }
+        }
+        let l = &joint.limit;
+        let bad_limit = |reason: String| RobotError::InvalidLimit {
+            joint: name.clone(),
+            reason,
+        };
+        for (what, value) in [("lower", l.lower), ("upper", l.upper)] {
+            if !value.is_finite() {
+                return Err(bad_limit(format!(
+                    "position limit {what} = {value} rad is not a finite number"
+                )));
+            }
+        }
+        if l.lower > l.upper {
+            return Err(bad_limit(format!(
+                "position limit lower = {} rad is above upper = {} rad",
+                l.lower, l.upper
+            )));
+        }
+        for (what, value, unit) in [
+            ("velocity", l.velocity, "rad/s"),
+            ("effort", l.effort, "Nm"),
+        ] {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(bad_limit(format!(
+                    "{what} limit = {value} {unit} is not a finite number ≥ 0"
+                )));
+            }
+        }
+        for (what, values) in [
+            ("origin xyz", &joint.origin.xyz.0),
+            ("origin rpy", &joint.origin.rpy.0),
+        ] {
+            if let Some(value) = values.iter().find(|v| !v.is_finite()) {
+                return Err(unsupported(format!(
+                    "joint `{name}`: {what} = {values:?} has the non-finite value {value}"
+                )));
+            }
+        }
+        let movable = matches!(
+            joint.joint_type,
+            urdf_rs::JointType::Revolute
+                | urdf_rs::JointType::Continuous
+                | urdf_rs::JointType::Prismatic
+        );
+        if movable {
+            let axis = &joint.axis.xyz.0;
+            if let Some(value) = axis.iter().find(|v| !v.is_finite()) {
+                return Err(unsupported(format!(
+                    "joint `{name}`: axis xyz = {axis:?} has the non-finite value {value}"
+                )));
+            }
+            let norm = Vector3::from(*axis).norm();
+            if !(norm > 1e-9 && norm.is_finite()) {
+                return Err(unsupported(format!(
+                    "joint `{name}`: axis xyz = {axis:?} is not a direction (length {norm})"
+                )));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// `T_flange_tcp` for a tool whose TCP sits at `offset_m` in the flange frame (no rotation).
