@@ -54,9 +54,12 @@ fn main() -> std::process::ExitCode {
     };
     let filter = tracing_subscriber::EnvFilter::try_new(cli.log.as_deref().unwrap_or(default_log))
         .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("warn"));
+    // Colour only for a person at a terminal: a redirected stderr (a log file, journald, a pipe) gets
+    // plain text.
     tracing_subscriber::fmt()
         .with_env_filter(filter)
         .with_writer(std::io::stderr)
+        .with_ansi(std::io::IsTerminal::is_terminal(&std::io::stderr()))
         .init();
     let result = match cli.command {
         Command::Demo(args) => commands::demo::run(&args),
@@ -74,7 +77,15 @@ fn main() -> std::process::ExitCode {
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
         Err(err) => {
-            eprintln!("error: {err:#}");
+            if err
+                .chain()
+                .any(<dyn std::error::Error>::is::<commands::signals::Stopped>)
+            {
+                // Not a failure of ours: the robot was held and the recording closed.
+                eprintln!("ergocell: {err:#}");
+            } else {
+                eprintln!("error: {err:#}");
+            }
             std::process::ExitCode::from(commands::exit_code(&err))
         }
     }

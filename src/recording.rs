@@ -46,12 +46,18 @@ pub struct McapRecorder {
 }
 
 impl McapRecorder {
-    /// Creates (truncates) the file.
+    /// Creates the file, truncating an existing one. The commands create their recordings with
+    /// [`McapRecorder::from_file`] on a file that overwrites only when asked (`--force`).
     pub fn create(path: &Path) -> Result<Self, RecordingError> {
         let file = File::create(path).map_err(|source| RecordingError::Io {
             path: path.display().to_string(),
             source,
         })?;
+        Self::from_file(file)
+    }
+
+    /// Records into an open, empty file.
+    pub fn from_file(file: File) -> Result<Self, RecordingError> {
         let options = mcap::WriteOptions::new()
             .profile("ros2")
             .compression(None)

@@ -51,6 +51,8 @@ fn stereo_writes_a_rig_with_the_sample_baseline() {
             "9x6",
             "--square-m",
             "0.025",
+            // The same file on every test run: overwritten on purpose.
+            "--force",
             "--out",
             out.to_str().unwrap(),
             "--format",
@@ -94,6 +96,7 @@ fn intrinsics_table_and_rig_file() {
         "intrinsics",
         "--images",
         &sample("left1*.jpg"),
+        "--force",
         "--out",
         out.to_str().unwrap(),
         "--id",

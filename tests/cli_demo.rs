@@ -15,7 +15,10 @@ fn demo_runs_a_whole_session_and_records_it() {
     let approvals_before = approvals.exists();
     let run = Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(root)
-        .args(["--log", "error", "demo", "--cycles", "1", "--out"])
+        // The same file on every test run: overwritten on purpose.
+        .args([
+            "--log", "error", "demo", "--cycles", "1", "--force", "--out",
+        ])
         .arg(&out)
         .output()
         .unwrap();

@@ -32,7 +32,7 @@ fn demo_recording() -> &'static Path {
         let out = tmp("review-demo.mcap");
         let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
             .current_dir(root())
-            .args(["demo", "--cycles", "1", "--seed", "7", "--out"])
+            .args(["demo", "--cycles", "1", "--seed", "7", "--force", "--out"])
             .arg(&out)
             .stdout(Stdio::null())
             .status()
@@ -407,11 +407,13 @@ fn a_recording_of_two_operators_is_reviewed_one_session_at_a_time() {
     let rec = two_sessions();
     let html = tmp("review-two.html");
     let run = |extra: &[&str]| {
+        // One page, written again for each session: overwritten on purpose.
         let mut args = vec![
             "report",
             rec.to_str().unwrap(),
             "--out",
             html.to_str().unwrap(),
+            "--force",
         ];
         args.extend_from_slice(extra);
         let o = ergocell(&args);

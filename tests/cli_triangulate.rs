@@ -181,6 +181,7 @@ fn caliscope_recording_gives_a_summary_and_json() {
         data.join("config.toml").to_str().unwrap(),
         "--detections",
         data.join("xy_pose33.csv").to_str().unwrap(),
+        "--force",
         "--out",
         out.to_str().unwrap(),
     ]);

@@ -58,7 +58,7 @@ fn skip_or_fail() -> bool {
 fn demo(out: &Path) {
     let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(root())
-        .args(["demo", "--cycles", "1", "--seed", "11", "--out"])
+        .args(["demo", "--cycles", "1", "--seed", "11", "--force", "--out"])
         .arg(out)
         .stdout(Stdio::null())
         .status()
@@ -139,6 +139,7 @@ fn report_opens_offline_from_file_in_headless_chromium() {
         .arg(&rec)
         .arg("--out")
         .arg(&html)
+        .arg("--force")
         .stdout(Stdio::null())
         .status()
         .unwrap();

@@ -132,6 +132,7 @@ fn review_region_shares_are_rula_tracks_summary() {
         recording.to_str().unwrap(),
         "--out",
         html.to_str().unwrap(),
+        "--force",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let data = report_data(&std::fs::read_to_string(&html).unwrap());

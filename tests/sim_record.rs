@@ -55,6 +55,7 @@ fn before_and_after_recordings_differ_in_the_handover_only_and_are_deterministic
         .arg(&after)
         .arg("--out")
         .arg(&html)
+        .arg("--force")
         .output()
         .unwrap();
     assert!(

@@ -12,7 +12,8 @@ bin=target/release/ergocell
 
 # The README's demo (default seed and cycles).
 "$bin" demo --out "$tmp/demo.mcap" >/dev/null
-"$bin" report "$tmp/demo.mcap" --out "$out/demo-report.html"
+# The committed report is regenerated in place: overwritten on purpose.
+"$bin" report "$tmp/demo.mcap" --out "$out/demo-report.html" --force
 "$bin" review "$tmp/demo.mcap" --port 0 >"$tmp/review.log" &
 server=$!
 for _ in $(seq 50); do grep -q '^review: ' "$tmp/review.log" && break; sleep 0.1; done

@@ -23,7 +23,7 @@ use ergocell_perception::{Camera, CameraId, CameraRig};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::{Point2, Rotation3, Vector3};
 
-use super::UsageError;
+use super::{output, UsageError};
 
 /// Arguments of `ergocell calibrate`.
 #[derive(Debug, clap::Args)]
@@ -50,9 +50,12 @@ pub struct BoardArgs {
     /// Side of one square, metres.
     #[arg(long, default_value_t = 0.025)]
     pub square_m: f64,
-    /// Output rig file.
+    /// Output rig file; an existing file is refused unless --force, and an input image always.
     #[arg(long)]
     pub out: PathBuf,
+    /// Overwrite an existing --out file.
+    #[arg(long)]
+    pub force: bool,
     /// Output format: ergocell's rig TOML (`config/` format) or the Anipose/Pose2Sim TOML.
     #[arg(long, default_value = "ergocell", value_parser = ["ergocell", "anipose"])]
     pub format: String,
@@ -118,6 +121,7 @@ fn run_intrinsics(args: &IntrinsicsArgs) -> anyhow::Result<()> {
     let board = board_of(&args.common)?;
     let id = camera_id(&args.id)?;
     let paths = list_images(&args.images)?;
+    check_out(&args.common, &paths)?;
     let results = detect_all(&paths, &board, false)?;
     let size = common_size(&results, &id)?;
     let used: Vec<usize> = (0..results.len())
@@ -171,6 +175,14 @@ fn run_stereo(args: &StereoArgs) -> anyhow::Result<()> {
     }
     let left_paths = list_images(&args.left)?;
     let right_paths = list_images(&args.right)?;
+    check_out(
+        &args.common,
+        &left_paths
+            .iter()
+            .chain(&right_paths)
+            .cloned()
+            .collect::<Vec<_>>(),
+    )?;
     if left_paths.len() != right_paths.len() {
         anyhow::bail!(UsageError(format!(
             "{} left images but {} right images: stereo images must pair up",
@@ -251,14 +263,20 @@ fn usage_if_bad_views(e: CalibrationError) -> anyhow::Error {
     }
 }
 
+/// The output is checked before any image is decoded: not an existing file (unless `--force`), never
+/// one of the images.
+fn check_out(common: &BoardArgs, images: &[PathBuf]) -> anyhow::Result<()> {
+    let inputs: Vec<(&str, &Path)> = images.iter().map(|p| ("image", p.as_path())).collect();
+    output::check("--out", &common.out, common.force, &inputs)
+}
+
 fn write_rig(rig: &CameraRig, common: &BoardArgs) -> anyhow::Result<()> {
     let text = if common.format == "anipose" {
         to_anipose_toml(rig)
     } else {
         to_ergocell_toml(rig)
     };
-    std::fs::write(&common.out, text)
-        .with_context(|| format!("writing {}", common.out.display()))?;
+    output::write("--out", &common.out, common.force, text.as_bytes())?;
     eprintln!("wrote {} ({} format)", common.out.display(), common.format);
     Ok(())
 }

@@ -9,13 +9,19 @@
 //! bent far forward for 4 s, the robot not involved), so a RULA posture warning is raised and cleared
 //! (`--no-floor-pick` leaves it out). The session is recorded to MCAP (Foxglove, rosbag2).
 //!
+//! The simulated session lasts as long as its script (walk in, height, the handover cycles, the floor
+//! pick, walk out) plus a margin for the robot's way home; a session still running then is stopped
+//! with the robot held and says so. Ctrl-C and SIGTERM stop it the same way (exit 130 / 143).
+//!
+//! The recording is never written over an existing file unless asked (`--force`): an existing
+//! `--out` is a usage error, and the default `ergocell-demo.mcap` moves on to the next free
+//! `ergocell-demo-N.mcap`.
+//!
 //! The shipped locks carry no approvals (a person signs them off on site), so the demo approves the
 //! current locks in a **temporary** folder, labelled as a demo approval; `trajectories/approvals/` is
 //! never written.
 
-use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
+use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 use ergocell::messages;
@@ -37,9 +43,26 @@ use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_sim::{FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
 
-use super::UsageError;
+use super::signals::{Signal, StopFlag, Stopped};
+use super::{output, UsageError};
+
+/// The default recording (with a number added when it exists: `ergocell-demo-2.mcap`, …).
+pub const DEFAULT_OUT: &str = "ergocell-demo.mcap";
+
+/// Simulated time after the script's end for the robot's way home and the exit detection; a session
+/// still running then is stopped (robot held), and the demo says so.
+pub const MARGIN_SECS: f64 = 30.0;
+
+/// Most handover cycles (about 85 minutes of simulated session).
+pub const MAX_CYCLES: usize = 1000;
 
 #[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Exit codes: 0 the session ended normally; 1 it did not (e.g. the time limit \
+    of the script + 30 s was reached: robot held); 2 bad input (an existing --out without --force); \
+    130 stopped by Ctrl-C (SIGINT), 143 stopped by SIGTERM — in both the robot is held and the \
+    recording closed with its summary and footer."
+)]
 pub struct Args {
     /// Camera rig (ergocell rig TOML). Default: the reference cell's `config/rig.toml`, shipped in
     /// the binary.
@@ -55,15 +78,20 @@ pub struct Args {
     /// The simulated operator's stature, metres.
     #[arg(long, default_value_t = 1.75)]
     pub stature_m: f64,
-    /// Handover cycles.
+    /// Handover cycles (0..=1000). The session may run for the script's duration (walk in, height,
+    /// cycles × 5 s, floor pick, walk out) plus 30 s; then it is stopped with the robot held.
     #[arg(long, default_value_t = 3)]
     pub cycles: usize,
     /// Simulation seed (same seed, same session).
     #[arg(long, default_value_t = 42)]
     pub seed: u64,
-    /// The MCAP recording to write.
-    #[arg(long, default_value = "ergocell-demo.mcap")]
-    pub out: PathBuf,
+    /// The MCAP recording to write; an existing file is refused unless --force. Default
+    /// `ergocell-demo.mcap`, or when it exists the next free `ergocell-demo-N.mcap` (printed).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Overwrite an existing recording (--out, or without it `ergocell-demo.mcap`).
+    #[arg(long)]
+    pub force: bool,
     /// Camera frame rate, Hz (the seed paper's cameras: 10 Hz).
     #[arg(long, default_value_t = 10.0)]
     pub fps: f64,
@@ -82,24 +110,6 @@ fn wall_clock_nanos() -> i64 {
     std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| i64::try_from(d.as_nanos()).unwrap_or(i64::MAX))
-}
-
-/// Sets the flag on Ctrl-C (a thread with a small tokio runtime waiting for the signal).
-fn ctrl_c_flag() -> Arc<AtomicBool> {
-    let flag = Arc::new(AtomicBool::new(false));
-    let f = flag.clone();
-    std::thread::spawn(move || {
-        let Ok(rt) = tokio::runtime::Builder::new_current_thread()
-            .enable_all()
-            .build()
-        else {
-            return;
-        };
-        if rt.block_on(tokio::signal::ctrl_c()).is_ok() {
-            f.store(true, Ordering::SeqCst);
-        }
-    });
-    flag
 }
 
 /// `println!` that ignores a closed stdout (`ergocell demo | head` must not panic).
@@ -123,14 +133,51 @@ fn secs(t: i64, start: i64) -> f64 {
     (t - start) as f64 * 1e-9
 }
 
+/// The recording's path: `--out` (refused if it exists, unless `--force`) or the default, numbered
+/// when it exists (unless `--force`); and whether the default was moved on to a numbered name.
+fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
+    let mut inputs: Vec<(&str, &Path)> = Vec::new();
+    if let Some(rig) = &args.rig {
+        inputs.push(("--rig", rig));
+    }
+    if let Some(cell) = &args.cell {
+        inputs.push(("--cell", cell));
+    }
+    if let Some(out) = &args.out {
+        output::check("--out", out, args.force, &inputs)?;
+        return Ok((out.clone(), false));
+    }
+    let default = PathBuf::from(DEFAULT_OUT);
+    output::check("--out", &default, true, &inputs)?;
+    if args.force {
+        return Ok((default, false));
+    }
+    let path = output::next_free(&default)?;
+    let moved = path != default;
+    Ok((path, moved))
+}
+
 pub fn run(args: &Args) -> anyhow::Result<()> {
+    // First of all: a stop signal from here on holds the robot and closes the recording.
+    let stop = StopFlag::install()?;
     if !(1.3..=2.2).contains(&args.stature_m) {
         return Err(UsageError(format!(
-            "--stature-m {} is outside 1.3..=2.2 m",
+            "--stature-m {:?} is outside 1.3..=2.2 m",
             args.stature_m
         ))
         .into());
     }
+    if !(1.0..=120.0).contains(&args.fps) {
+        return Err(UsageError(format!("--fps {:?} is outside 1..=120 Hz", args.fps)).into());
+    }
+    if args.cycles > MAX_CYCLES {
+        return Err(UsageError(format!(
+            "--cycles {} is more than {MAX_CYCLES}",
+            args.cycles
+        ))
+        .into());
+    }
+    let (out, moved) = output_path(args)?;
     let (rig_text, rig_label) = match &args.rig {
         Some(path) => (
             std::fs::read_to_string(path)
@@ -193,9 +240,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     if !args.no_floor_pick {
         script.floor_pick = Some(FloorPick::new(args.cycles.min(1)));
     }
-    if !(1.0..=120.0).contains(&args.fps) {
-        return Err(UsageError(format!("--fps {} is outside 1..=120 Hz", args.fps)).into());
-    }
+    // The session's time limit: the script, then the robot's way home.
+    let limit_secs = script.duration_secs() + MARGIN_SECS;
     let period_nanos = (1e9 / args.fps).round() as i64;
     let mut sim_config = SimConfig::new(args.seed);
     sim_config.frame_period_nanos = period_nanos;
@@ -215,14 +261,20 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut robot = DummyRobot::new(lock.trajectory.joint_names.clone(), home);
     let mut machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
         .map_err(|e| UsageError(e.to_string()))?;
-    let mut rec = McapRecorder::create(&args.out)?;
+    let mut rec = McapRecorder::from_file(output::create("--out", &out, args.force)?)?;
+    if moved {
+        say!(
+            "  {DEFAULT_OUT} exists (kept): recording into {} (--out names the file, --force overwrites)",
+            out.display()
+        );
+    }
     say!(
         "  operator {:.2} m, {} handover cycles, {} cameras, seed {}; recording {}",
         args.stature_m,
         args.cycles,
         rig.len(),
         args.seed,
-        args.out.display()
+        out.display()
     );
     if let Some(p) = &script.floor_pick {
         say!(
@@ -233,7 +285,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     say!();
 
-    let stop = ctrl_c_flag();
     // The cameras: the simulator as a landmark source (a view arrives at its tick's time).
     let mut source = SimSource::new(sim, Vec::new());
     let mut now = start;
@@ -242,13 +293,23 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut working_since: Option<i64> = None;
     let mut change_requested = false;
     let mut last_status = start;
-    let mut interrupted = false;
+    let mut interrupted: Option<Signal> = None;
     let mut rula = "RULA -".to_owned();
-    let limit = start + 120_000_000_000;
-    while machine.state() != SessionState::SessionEnded && now <= limit {
-        if stop.load(Ordering::SeqCst) {
-            interrupted = true;
-            let events = machine.shutdown(now, &mut robot, "Ctrl-C");
+    let limit = start + (limit_secs * 1e9).round() as i64;
+    while machine.state() != SessionState::SessionEnded {
+        if let Some(signal) = stop.get() {
+            interrupted = Some(signal);
+            let events = machine.shutdown(now, &mut robot, signal.name());
+            report(&events, now, start);
+            recording::record_events(&mut rec, &machine, now, &events)?;
+            break;
+        }
+        if now > limit {
+            let why = format!(
+                "the demo's time limit was reached: {limit_secs:.1} s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for the robot's way home)",
+                limit_secs - MARGIN_SECS
+            );
+            let events = machine.shutdown(now, &mut robot, &why);
             report(&events, now, start);
             recording::record_events(&mut rec, &machine, now, &events)?;
             break;
@@ -408,10 +469,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     say!("  ended:          {}", s.end_reason);
     say!(
         "  recording:      {} ({messages} messages; open in Foxglove or `ros2 bag info`)",
-        args.out.display()
+        out.display()
     );
-    if interrupted {
-        anyhow::bail!("interrupted: robot held, recording closed");
+    if let Some(signal) = interrupted {
+        return Err(Stopped {
+            signal,
+            what: format!("robot held, recording {} closed", out.display()),
+        }
+        .into());
     }
     if !s.ended {
         anyhow::bail!("the session did not end normally: {}", s.end_reason);

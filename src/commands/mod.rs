@@ -1,11 +1,15 @@
 //! One module per subcommand. Each exposes `Args` (clap) and `run(&Args) -> anyhow::Result<()>`.
+//! Shared by them: `output` (output files: `--force`, never an input) and `signals` (SIGINT and
+//! SIGTERM).
 
 pub mod calibrate;
 pub mod demo;
 pub mod height;
+pub mod output;
 pub mod review;
 pub mod rula;
 pub mod run;
+pub mod signals;
 pub mod sim;
 pub mod trajectories;
 pub mod triangulate;
@@ -15,9 +19,15 @@ pub mod triangulate;
 #[error("{0}")]
 pub struct UsageError(pub String);
 
-/// Exit code for an error: 2 for bad input, 1 for everything else.
+/// Exit code for an error: 130 / 143 for a command stopped by SIGINT / SIGTERM (robot held,
+/// recording closed: [`signals::Stopped`]), 2 for bad input, 1 for everything else.
 pub fn exit_code(err: &anyhow::Error) -> u8 {
-    if err.chain().any(<dyn std::error::Error>::is::<UsageError>) {
+    if let Some(stopped) = err
+        .chain()
+        .find_map(<dyn std::error::Error>::downcast_ref::<signals::Stopped>)
+    {
+        stopped.signal.exit_code()
+    } else if err.chain().any(<dyn std::error::Error>::is::<UsageError>) {
         2
     } else {
         1

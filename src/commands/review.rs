@@ -7,7 +7,10 @@
 //! request, so nothing but the given recording can be served. `--bind` serves elsewhere on request.
 //!
 //! `report` writes the same page as one self-contained HTML file (data, three.js, uPlot inlined)
-//! that opens offline and can be mailed; `--compare` puts a second session beside the first.
+//! that opens offline and can be mailed; `--compare` puts a second session beside the first. It never
+//! writes over an existing file unless asked (`--force`), and never over one of its recordings.
+//!
+//! Ctrl-C (SIGINT) and SIGTERM stop the server the same way: open requests are answered, exit 0.
 
 use std::io::Write as _;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
@@ -24,7 +27,7 @@ use axum::Router;
 use ergocell_review::read::split_sessions;
 use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
 
-use super::UsageError;
+use super::{output, signals, UsageError};
 
 /// `println!` that ignores a closed stdout: `ergocell review x.mcap | head -1` (or a test that reads
 /// only the URL line) must not bring the server down.
@@ -55,6 +58,11 @@ pub struct Input {
 }
 
 #[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Exit codes: 0 the server was stopped by Ctrl-C (SIGINT) or SIGTERM (open requests \
+    are answered first); 2 bad input (a recording that cannot be read, an address that cannot be \
+    listened on)."
+)]
 pub struct Args {
     #[command(flatten)]
     pub input: Input,
@@ -75,9 +83,13 @@ pub struct Args {
 pub struct ReportArgs {
     #[command(flatten)]
     pub input: Input,
-    /// The HTML file to write.
+    /// The HTML file to write; an existing file is refused unless --force, and a recording of the
+    /// report always.
     #[arg(long, default_value = "report.html")]
     pub out: PathBuf,
+    /// Overwrite an existing --out file.
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// Reads one recording and analyses its operator session `session` (1-based); what is wrong with it
@@ -173,10 +185,14 @@ fn summary(data: &ReviewData) -> String {
 }
 
 pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
+    let mut inputs = vec![("<recording>", args.input.recording.as_path())];
+    if let Some(other) = &args.input.compare {
+        inputs.push(("--compare", other.as_path()));
+    }
+    output::check("--out", &args.out, args.force, &inputs)?;
     let data = load_all(&args.input)?;
     let html = page::report_page(&data).context("serialising the review")?;
-    std::fs::write(&args.out, html.as_bytes())
-        .with_context(|| format!("cannot write {}", args.out.display()))?;
+    output::write("--out", &args.out, args.force, html.as_bytes())?;
     say!("{}", summary(&data));
     say!(
         "report: {} ({:.1} MB, self-contained: opens offline in any browser)",
@@ -204,6 +220,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .build()
         .context("tokio runtime")?;
     runtime.block_on(async {
+        // Installed before the server listens: SIGTERM (systemd, docker) stops it like Ctrl-C.
+        let stop = signals::stop_signal().context("installing the SIGINT/SIGTERM handlers")?;
         let listener = tokio::net::TcpListener::bind(SocketAddr::new(args.bind, args.port))
             .await
             .map_err(|e| {
@@ -242,13 +260,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         if !loopback {
             say!("  serving on {addr} to the network, as asked (--bind)");
         }
-        say!("  Ctrl-C stops the server");
+        say!("  Ctrl-C (or SIGTERM) stops the server");
         axum::serve(
             listener,
             app.into_make_service_with_connect_info::<SocketAddr>(),
         )
-        .with_graceful_shutdown(async {
-            let _ = tokio::signal::ctrl_c().await;
+        .with_graceful_shutdown(async move {
+            let signal = stop.await;
+            say!("review: stopped by {}", signal.name());
         })
         .await
         .context("review server")?;

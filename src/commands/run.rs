@@ -4,12 +4,13 @@
 //! `run` subscribes to one landmark topic per camera and to `/joint_states`, commands the robot on the
 //! joint trajectory controller's topic (a hold is an empty `JointTrajectory`: not an emergency stop),
 //! and publishes the session state, the RULA state and the warnings. Topic names and the DDS domain
-//! come from `[ros]` in the cell config; QoS from `ergocell_bridge::qos`. Ctrl-C holds the robot and
-//! closes the recording.
+//! come from `[ros]` in the cell config; QoS from `ergocell_bridge::qos`. Ctrl-C (SIGINT) and SIGTERM
+//! (systemd, `docker stop`, `timeout`) hold the robot (an empty trajectory, published), close the
+//! recording with its summary and footer, and exit with 130 / 143.
 
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
+use std::time::Duration;
 
 use anyhow::Context as _;
 use ergocell::messages::{self, Outgoing};
@@ -25,9 +26,23 @@ use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
 use futures::StreamExt as _;
 
-use super::UsageError;
+use super::signals::{Signal, StopFlag, Stopped};
+use super::{output, UsageError};
+
+/// The longest `--max-secs`: a year.
+const MAX_SECS_LIMIT: f64 = 365.0 * 24.0 * 3600.0;
+
+/// `replay --speed` bounds.
+const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.01..=100.0;
 
 #[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Exit codes: 0 the sessions ended normally (--sessions reached); 1 a session \
+    did not end normally (a trajectory that does not verify, --max-secs reached: robot held) or a \
+    failure; 2 bad input (an existing --record file without --force); 130 stopped by Ctrl-C \
+    (SIGINT), 143 stopped by SIGTERM (systemd: SuccessExitStatus=143) — in both the robot is held \
+    (empty trajectory published) and the recording closed with its summary and footer."
+)]
 pub struct Args {
     /// Cell configuration: `[robot]`, `[station]` and `[ros]`.
     #[arg(long, default_value = "config/cell.toml")]
@@ -41,10 +56,14 @@ pub struct Args {
     /// Folder of the approvals (default `<trajectories>/approvals`).
     #[arg(long)]
     pub approvals: Option<PathBuf>,
-    /// Record the session to this MCAP file.
+    /// Record the session to this MCAP file (an existing file is refused unless --force).
     #[arg(long)]
     pub record: Option<PathBuf>,
-    /// Stop (holding the robot) after this many seconds if the session has not ended.
+    /// Overwrite an existing --record file.
+    #[arg(long)]
+    pub force: bool,
+    /// Stop (holding the robot) after this many seconds if the session has not ended (> 0, at most
+    /// a year).
     #[arg(long)]
     pub max_secs: Option<f64>,
     /// Stop after this many sessions (default: one operator session after another until Ctrl-C). A
@@ -68,7 +87,7 @@ pub struct ReplayArgs {
     /// Cell configuration with the `[ros]` table.
     #[arg(long, default_value = "config/cell.toml")]
     pub config: PathBuf,
-    /// Playback speed factor (1 = as recorded).
+    /// Playback speed factor (1 = as recorded; 0.01..=100).
     #[arg(long, default_value_t = 1.0)]
     pub speed: f64,
 }
@@ -132,6 +151,25 @@ fn percentile(sorted: &[f64], p: f64) -> f64 {
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
+    if let Some(limit) = args.max_secs {
+        if !(limit.is_finite() && limit > 0.0 && limit <= MAX_SECS_LIMIT) {
+            return Err(UsageError(format!(
+                "--max-secs {limit:?}: must be a number of seconds > 0 and at most {MAX_SECS_LIMIT} (a year)"
+            ))
+            .into());
+        }
+    }
+    if let Some(record) = &args.record {
+        output::check(
+            "--record",
+            record,
+            args.force,
+            &[
+                ("--config", args.config.as_path()),
+                ("--rig", args.rig.as_path()),
+            ],
+        )?;
+    }
     let cell_text = std::fs::read_to_string(&args.config)
         .with_context(|| format!("cannot read {}", args.config.display()))?;
     let ros = RosConfig::from_cell_toml(&cell_text)
@@ -163,17 +201,27 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .map_err(|e| anyhow::anyhow!(e))
     };
     let mut machine = new_machine()?;
-    let mut recorder = args
-        .record
-        .as_deref()
-        .map(McapRecorder::create)
-        .transpose()?;
 
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()
         .build()
         .context("tokio runtime")?;
+    // From here on SIGINT and SIGTERM hold the robot and close the recording (before the recording
+    // and the DDS participant exist, so neither is left half made).
+    let (stop, stop_task) = {
+        let _context = runtime.enter();
+        StopFlag::spawn()?
+    };
+    let mut recorder = args
+        .record
+        .as_deref()
+        .map(|path| -> anyhow::Result<McapRecorder> {
+            Ok(McapRecorder::from_file(output::create(
+                "--record", path, args.force,
+            )?)?)
+        })
+        .transpose()?;
     let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name)?;
     runtime.spawn(node.spinner()?);
     let result = runtime.block_on(async {
@@ -205,16 +253,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             ergocell::robot_markers::RobotGeometry,
         )> = None;
         let mut last_marker_nanos = i64::MIN / 2;
-        let mut tick = tokio::time::interval(std::time::Duration::from_millis(20));
-        let interrupted = Arc::new(AtomicBool::new(false));
-        let ctrl_c = {
-            let flag = interrupted.clone();
-            tokio::spawn(async move {
-                if tokio::signal::ctrl_c().await.is_ok() {
-                    flag.store(true, Ordering::SeqCst);
-                }
-            })
-        };
+        let mut tick = tokio::time::interval(Duration::from_millis(20));
+        let mut interrupted: Option<Signal> = None;
         let started = now_nanos();
         let cpu0 = cpu_secs();
         let wall0 = instant();
@@ -298,8 +338,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 _ = tick.tick() => Vec::new(),
             };
             let now = now_nanos();
-            if interrupted.load(Ordering::SeqCst) {
-                let events = machine.shutdown(now, &mut robot, "Ctrl-C");
+            if let Some(signal) = stop.get() {
+                interrupted = Some(signal);
+                let events = machine.shutdown(now, &mut robot, signal.name());
+                for e in &events {
+                    println!("  {}", messages::describe(e));
+                }
                 let outgoing = messages::step_messages(&machine, now, &events);
                 publish_messages(&outgoing, &out).await?;
                 if let Some(rec) = recorder.as_mut() {
@@ -310,6 +354,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             if let Some(limit) = args.max_secs {
                 if (now - started) as f64 * 1e-9 > limit {
                     let events = machine.shutdown(now, &mut robot, "--max-secs reached");
+                    for e in &events {
+                        println!("  {}", messages::describe(e));
+                    }
                     let outgoing = messages::step_messages(&machine, now, &events);
                     publish_messages(&outgoing, &out).await?;
                     if let Some(rec) = recorder.as_mut() {
@@ -344,7 +391,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 break;
             }
         }
-        ctrl_c.abort();
         print_summary(&machine, rejected);
         if args.latency_report {
             latencies_ms.sort_by(f64::total_cmp);
@@ -362,24 +408,35 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 ))
             );
         }
-        if interrupted.load(Ordering::SeqCst) {
-            anyhow::bail!("interrupted: robot held");
+        if let Some(signal) = interrupted {
+            return Err(Stopped {
+                signal,
+                what: match &args.record {
+                    Some(p) => format!("robot held, recording {} closed", p.display()),
+                    None => "robot held".to_owned(),
+                },
+            }
+            .into());
         }
         if machine.state() == SessionState::SessionEnded && !machine.summary().ended {
             anyhow::bail!("session {}", machine.summary().end_reason);
         }
         anyhow::Ok(())
     });
+    stop_task.abort();
     // The node first (it tells the spinner to stop), then a moment for the spinner to finish while
     // the runtime still runs: every reader and writer says goodbye before the DDS participant goes.
     drop(node);
-    runtime.block_on(async { tokio::time::sleep(std::time::Duration::from_millis(100)).await });
+    runtime.block_on(async { tokio::time::sleep(Duration::from_millis(100)).await });
     drop(runtime);
-    result?;
-    if let Some(rec) = recorder {
-        rec.finish()?;
+    // The recording is closed (summary and footer) on every way out: a normal end, a signal, an error.
+    let closed = recorder.map(McapRecorder::finish).transpose();
+    match (result, closed) {
+        (Ok(()), Ok(_)) => Ok(()),
+        (Ok(()), Err(e)) => Err(anyhow::Error::new(e).context("closing the recording")),
+        (Err(e), Ok(_)) => Err(e),
+        (Err(e), Err(c)) => Err(e.context(format!("and the recording could not be closed: {c}"))),
     }
-    Ok(())
 }
 
 fn print_summary(machine: &SessionMachine, rejected: u64) {
@@ -430,8 +487,14 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     if !args.ros {
         return Err(UsageError("replay publishes over ROS 2: pass --ros".to_owned()).into());
     }
-    if !(args.speed > 0.0 && args.speed.is_finite()) {
-        return Err(UsageError(format!("--speed {} must be positive", args.speed)).into());
+    if !SPEED_RANGE.contains(&args.speed) {
+        return Err(UsageError(format!(
+            "--speed {:?}: must be a factor from {} to {}",
+            args.speed,
+            SPEED_RANGE.start(),
+            SPEED_RANGE.end()
+        ))
+        .into());
     }
     let cell_text = std::fs::read_to_string(&args.config)
         .with_context(|| format!("cannot read {}", args.config.display()))?;
@@ -475,14 +538,15 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
             publishers.insert(id.clone(), p);
         }
         // Give discovery a moment before the first frame.
-        tokio::time::sleep(std::time::Duration::from_millis(1500)).await;
+        tokio::time::sleep(Duration::from_millis(1500)).await;
         let t0_log = frames[0].0;
         let t0 = instant();
         let start = now_nanos();
         let mut sent = 0usize;
         for (log_time, mut m) in frames {
             let offset_secs = log_time.saturating_sub(t0_log) as f64 * 1e-9 / args.speed;
-            let due = std::time::Duration::from_secs_f64(offset_secs);
+            // Never a panic on a huge offset (a recording spanning centuries at a slow speed).
+            let due = Duration::try_from_secs_f64(offset_secs).unwrap_or(Duration::MAX);
             if let Some(wait) = due.checked_sub(t0.elapsed()) {
                 tokio::time::sleep(wait).await;
             }
@@ -503,7 +567,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     // The node first (it tells the spinner to stop), then a moment for the spinner to finish while
     // the runtime still runs: every reader and writer says goodbye before the DDS participant goes.
     drop(node);
-    runtime.block_on(async { tokio::time::sleep(std::time::Duration::from_millis(100)).await });
+    runtime.block_on(async { tokio::time::sleep(Duration::from_millis(100)).await });
     drop(runtime);
     result
 }

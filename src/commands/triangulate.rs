@@ -18,7 +18,7 @@ use ergocell_perception::temporal::OneEuroParams;
 use ergocell_perception::{CameraRig, FusionMethod, KeypointFormat};
 use ergocell_skeleton::{Skeleton3, LANDMARK_COUNT};
 
-use super::UsageError;
+use super::{output, UsageError};
 
 /// Arguments of `ergocell triangulate`.
 #[derive(Debug, clap::Args)]
@@ -44,14 +44,27 @@ pub struct Args {
     /// Frame rate of OpenPose detections (they carry no time stamps), Hz.
     #[arg(long, default_value_t = 30.0)]
     pub rate_hz: f64,
-    /// Output file: `.trc`, `.csv` or `.json`.
+    /// Output file: `.trc`, `.csv` or `.json`; an existing file is refused unless --force, and an
+    /// input (the calibration or the detections) always.
     #[arg(long)]
     pub out: PathBuf,
+    /// Overwrite an existing --out file.
+    #[arg(long)]
+    pub force: bool,
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let out_format =
         LandmarksFormat::from_path(&args.out).map_err(|e| UsageError(e.to_string()))?;
+    output::check(
+        "--out",
+        &args.out,
+        args.force,
+        &[
+            ("--calibration", args.calibration.as_path()),
+            ("--detections", args.detections.as_path()),
+        ],
+    )?;
     if !(args.rate_hz.is_finite() && args.rate_hz > 0.0) {
         bail!(UsageError(format!(
             "--rate-hz must be positive, got {}",
@@ -123,11 +136,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    std::fs::write(
+    output::write(
+        "--out",
         &args.out,
-        write_landmarks(&skeletons, out_format, &name, rate),
-    )
-    .with_context(|| format!("writing {}", args.out.display()))?;
+        args.force,
+        write_landmarks(&skeletons, out_format, &name, rate).as_bytes(),
+    )?;
 
     let triangulated: usize = skeletons.iter().map(Skeleton3::observed_count).sum();
     println!("frames:                   {}", skeletons.len());

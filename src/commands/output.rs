@@ -1,0 +1,115 @@
+//! Files the user names as outputs (`--out`, `--record`): an existing file is never overwritten
+//! unless asked (`--force`), and an output that is one of the command's inputs is refused, `--force`
+//! or not. Both checks run before the command does any work; the file itself is then created with
+//! [`create`], which without `--force` refuses a file that appeared in the meantime.
+
+use std::fs::File;
+use std::io::Write as _;
+use std::path::Path;
+
+use anyhow::Context as _;
+
+use super::UsageError;
+
+/// Checks the output `out` (given with `flag`, e.g. `--out`) against `inputs` (`(flag, path)`) and,
+/// unless `force`, against an existing file.
+pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> anyhow::Result<()> {
+    for (input_flag, input) in inputs {
+        if same_file(out, input) {
+            return Err(UsageError(format!(
+                "{flag} {} is also an input ({input_flag} {}): writing it would destroy the input, --force or not; choose another output file",
+                out.display(),
+                input.display()
+            ))
+            .into());
+        }
+    }
+    match std::fs::metadata(out) {
+        Ok(m) if m.is_dir() => Err(UsageError(format!(
+            "{flag} {} is a folder, not a file",
+            out.display()
+        ))
+        .into()),
+        Ok(_) if !force => Err(UsageError(format!(
+            "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
+            out.display()
+        ))
+        .into()),
+        _ => Ok(()),
+    }
+}
+
+/// True if `a` and `b` name the same existing file (canonical paths, or on Unix the same device
+/// and inode: a hard link or a symlink to it).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    if let (Ok(x), Ok(y)) = (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        if x == y {
+            return true;
+        }
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt as _;
+        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+            return x.dev() == y.dev() && x.ino() == y.ino();
+        }
+    }
+    false
+}
+
+/// Creates the output file: truncates an existing one only with `force`, and otherwise refuses a
+/// file that exists now (created since [`check`]).
+pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true);
+    if force {
+        options.create(true).truncate(true);
+    } else {
+        options.create_new(true);
+    }
+    options.open(out).map_err(|e| {
+        if e.kind() == std::io::ErrorKind::AlreadyExists {
+            UsageError(format!(
+                "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
+                out.display()
+            ))
+            .into()
+        } else {
+            anyhow::Error::new(e).context(format!("cannot create {}", out.display()))
+        }
+    })
+}
+
+/// Writes `bytes` to the output file (see [`create`]).
+pub fn write(flag: &str, out: &Path, force: bool, bytes: &[u8]) -> anyhow::Result<()> {
+    let mut file = create(flag, out, force)?;
+    file.write_all(bytes)
+        .and_then(|()| file.flush())
+        .with_context(|| format!("cannot write {}", out.display()))
+}
+
+/// The first free name of `default_name` in its folder: itself, then `<stem>-2.<ext>`, `-3`, … (the
+/// demo's default recording, so running the README's first command twice keeps the first session).
+pub fn next_free(default_name: &Path) -> anyhow::Result<std::path::PathBuf> {
+    if std::fs::symlink_metadata(default_name).is_err() {
+        return Ok(default_name.to_owned());
+    }
+    let stem = default_name
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let ext = default_name
+        .extension()
+        .map(|e| format!(".{}", e.to_string_lossy()))
+        .unwrap_or_default();
+    for n in 2..10_000 {
+        let candidate = default_name.with_file_name(format!("{stem}-{n}{ext}"));
+        if std::fs::symlink_metadata(&candidate).is_err() {
+            return Ok(candidate);
+        }
+    }
+    Err(UsageError(format!(
+        "{} and {stem}-2{ext} … {stem}-9999{ext} all exist: name the recording with --out",
+        default_name.display()
+    ))
+    .into())
+}
