@@ -229,3 +229,49 @@ fn malformed_calibration_and_unknown_output_format_exit_with_code_2() {
     ]);
     assert_eq!(code, 2, "{stderr}");
 }
+
+/// #18: OpenPose frames were paired by file order, so deleting one `*_keypoints.json` in one camera
+/// folder shifted every later frame of that camera. Now a missing file is one missing view: every
+/// frame still triangulates to its own true body.
+#[test]
+fn openpose_frames_paired_by_file_order_a_missing_file_no_longer_shifts_later_frames() {
+    let rig = reference_rig();
+    let dir = tmp("openpose_missing_file");
+    let truth = write_openpose(&dir, &rig, 6);
+    let cam0 = rig.cameras()[0].id.as_str().to_owned();
+    std::fs::remove_file(dir.join(format!("{cam0}_json/frame_000002_keypoints.json"))).unwrap();
+    let out = dir.join("out.trc");
+    let (code, stdout, stderr) = ergocell(&[
+        "triangulate",
+        "--calibration",
+        repo().join("config/rig.toml").to_str().unwrap(),
+        "--detections",
+        dir.to_str().unwrap(),
+        "--keypoints",
+        "body_25",
+        "--rate-hz",
+        "10",
+        "--force",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stdout}\n{stderr}");
+    assert!(
+        stderr.contains("missing"),
+        "the missing view is reported: {stderr}"
+    );
+    let frames = read_landmarks(
+        &std::fs::read_to_string(&out).unwrap(),
+        LandmarksFormat::Trc,
+        "out.trc",
+    )
+    .unwrap();
+    assert_eq!(frames.len(), 6);
+    for (k, (skeleton, truth)) in frames.iter().zip(&truth).enumerate() {
+        let p = skeleton.position(Landmark::LeftShoulder).unwrap();
+        assert!(
+            (p - truth[Landmark::LeftShoulder.index()]).norm() < 1e-3,
+            "frame {k}: {p}"
+        );
+    }
+}

@@ -5,9 +5,9 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context as _};
 use ergocell_cell::{Reconstruction, ReconstructionConfig};
-use ergocell_perception::detections::{Frame2, ImportStats, View2};
+use ergocell_perception::detections::{Frame2, ImportStats};
 use ergocell_perception::import::{
-    match_camera_folders, parse_caliscope_xy, parse_openpose_frame, OperatorSelector,
+    assemble_openpose, match_camera_folders, parse_caliscope_xy_bytes, CameraFiles,
 };
 use ergocell_perception::landmarks_file::{write_landmarks, LandmarksFormat};
 use ergocell_perception::metrics::{
@@ -90,9 +90,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut stats = ImportStats::default();
     let frames = if format == "caliscope" {
         let name = args.detections.display().to_string();
-        let text =
-            std::fs::read_to_string(&args.detections).with_context(|| format!("reading {name}"))?;
-        parse_caliscope_xy(&text, &name, &rig, &mut stats).map_err(|e| UsageError(e.to_string()))?
+        let bytes = std::fs::read(&args.detections).with_context(|| format!("reading {name}"))?;
+        parse_caliscope_xy_bytes(&bytes, &name, &rig, &mut stats)
+            .map_err(|e| UsageError(e.to_string()))?
     } else {
         let keypoints = KeypointFormat::from_name(&args.keypoints)
             .ok_or_else(|| UsageError(format!("unknown keypoint layout {}", args.keypoints)))?;
@@ -104,11 +104,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             args.detections.display()
         )));
     }
-    if stats.invalid_keypoints > 0 || stats.skipped_records > 0 {
-        eprintln!(
-            "warning: {} invalid keypoints (NaN/inf pixel or confidence outside 0..1) and {} unusable records were left out",
-            stats.invalid_keypoints, stats.skipped_records
-        );
+    if let Some(w) = stats.warning() {
+        eprintln!("warning: {w}");
     }
 
     // The cell controller's reconstruction stage with its defaults, but every frame written (no
@@ -187,6 +184,9 @@ fn estimate_rate_hz(skeletons: &[Skeleton3]) -> Option<f64> {
 
 /// Reads an OpenPose-layout folder: one sub-folder per camera, one JSON per frame (frame `k` is the
 /// `k`-th file in sorted order in every camera folder, as Pose2Sim synchronises them).
+/// At most this many per-file warnings are printed (the rest are counted).
+const MAX_WARNINGS: usize = 20;
+
 fn read_openpose(
     dir: &Path,
     rig: &CameraRig,
@@ -208,52 +208,40 @@ fn read_openpose(
         )));
     }
     let matched = match_camera_folders(&folders, rig).map_err(|e| UsageError(e.to_string()))?;
-    let mut per_camera: Vec<(usize, Vec<PathBuf>)> = Vec::new();
+    // Frames are paired by the frame number in each file name (perception::import::assemble_openpose):
+    // a missing file is a missing view of that frame only, never a shift of every later frame.
+    let mut cameras = Vec::new();
     for (folder, camera) in matched {
-        let mut files: Vec<PathBuf> = std::fs::read_dir(dir.join(&folder))?
+        let mut files = Vec::new();
+        for path in std::fs::read_dir(dir.join(&folder))?
             .filter_map(Result::ok)
             .map(|e| e.path())
             .filter(|p| {
                 p.extension()
                     .is_some_and(|e| e.eq_ignore_ascii_case("json"))
             })
-            .collect();
-        files.sort();
+        {
+            let bytes =
+                std::fs::read(&path).with_context(|| format!("reading {}", path.display()))?;
+            files.push((path.display().to_string(), bytes));
+        }
         eprintln!(
-            "camera {} ← {folder}/ ({} frames)",
+            "camera {} ← {folder}/ ({} files)",
             rig.cameras()[camera].id,
             files.len()
         );
-        per_camera.push((camera, files));
+        cameras.push(CameraFiles { camera, files });
     }
-    let n = per_camera.iter().map(|(_, f)| f.len()).max().unwrap_or(0);
-    let mut selector = OperatorSelector::default();
-    let mut frames = Vec::with_capacity(n);
-    for k in 0..n {
-        let stamp_nanos = (k as f64 / rate_hz * 1e9).round() as i64;
-        let mut views = Vec::new();
-        let mut several = false;
-        for (camera, files) in &per_camera {
-            let Some(path) = files.get(k) else { continue };
-            let name = path.display().to_string();
-            let text = std::fs::read_to_string(path).with_context(|| format!("reading {name}"))?;
-            let people = match parse_openpose_frame(&text, &name, format, stats) {
-                Ok(p) => p,
-                Err(e) => {
-                    eprintln!("warning: skipping {e}");
-                    stats.skipped_records += 1;
-                    continue;
-                }
-            };
-            several |= people.len() > 1;
-            if let Some(i) = selector.select(*camera, &people) {
-                views.push(View2::new(*camera, stamp_nanos, people[i].keypoints));
-            }
-        }
-        if several {
-            stats.multi_person_frames += 1;
-        }
-        frames.push(Frame2 { stamp_nanos, views });
+    let import = assemble_openpose(&cameras, format, rate_hz, stats)
+        .map_err(|e| UsageError(e.to_string()))?;
+    for w in import.warnings.iter().take(MAX_WARNINGS) {
+        eprintln!("warning: {w}");
     }
-    Ok(frames)
+    if import.warnings.len() > MAX_WARNINGS {
+        eprintln!(
+            "warning: … and {} more files left out",
+            import.warnings.len() - MAX_WARNINGS
+        );
+    }
+    Ok(import.frames)
 }
