@@ -267,6 +267,10 @@ impl FrameEstimate {
     }
 }
 
+/// Statures a person can have, metres: a per-frame estimate outside is not used (it is a unit or
+/// calibration error, not an operator).
+pub const HUMAN_STATURE_M: std::ops::RangeInclusive<f64> = 0.5..=2.5;
+
 /// Accumulates frames and decides the class once.
 #[derive(Debug, Clone)]
 pub struct HeightEstimator {
@@ -278,6 +282,9 @@ pub struct HeightEstimator {
     segment_frames: VecDeque<f64>,
     /// Per segment of [`SEGMENT_RATIOS`]: its stature estimates over the window.
     segment_values: Vec<VecDeque<f64>>,
+    /// Upright frames whose stature was outside [`HUMAN_STATURE_M`], and the last such value.
+    impossible_frames: usize,
+    last_impossible_m: Option<f64>,
 }
 
 fn mid(a: Point3<f64>, b: Point3<f64>) -> Point3<f64> {
@@ -326,6 +333,8 @@ impl HeightEstimator {
             decision: None,
             segment_frames: VecDeque::new(),
             segment_values: vec![VecDeque::new(); SEGMENT_RATIOS.len()],
+            impossible_frames: 0,
+            last_impossible_m: None,
         }
     }
 
@@ -488,7 +497,12 @@ impl HeightEstimator {
         self.push_segments(s);
         if self.is_upright(s) == Some(true) {
             let e = self.frame_estimate(s);
-            if e.combined().is_some() {
+            if let Some(h) = e.combined().filter(|h| !HUMAN_STATURE_M.contains(h)) {
+                // A physically impossible stature (a calibration in millimetres, a scaled file):
+                // never used, never classed; the status says so.
+                self.impossible_frames += 1;
+                self.last_impossible_m = Some(h);
+            } else if e.combined().is_some() {
                 self.window.push_back(e);
                 while self.window.len() > self.config.window_frames.max(1) {
                     self.window.pop_front();
@@ -595,7 +609,15 @@ impl HeightEstimator {
         let c = &self.config;
         let upright = self.window.len();
         let estimate = self.estimate();
-        let why = if upright < c.min_frames {
+        let why = if let (Some(h), true) = (self.last_impossible_m, upright < c.min_frames) {
+            format!(
+                "{} upright frames gave a physically impossible stature (e.g. {h:.3} m, outside \
+                 {:.1}–{:.1} m: landmarks in millimetres, or a mis-scaled calibration?): not used",
+                self.impossible_frames,
+                HUMAN_STATURE_M.start(),
+                HUMAN_STATURE_M.end()
+            )
+        } else if upright < c.min_frames {
             format!(
                 "{upright} upright frames of {} needed (stand straight, facing the cameras)",
                 c.min_frames

@@ -250,3 +250,38 @@ fn a_seated_operator_gets_a_segment_length_estimate_but_no_class() {
         "includes the model spread: {seg:?}"
     );
 }
+
+/// #18: `height` confidently classed a 1753 m or a 2 mm "operator" (a landmark file in millimetres,
+/// or scaled). A per-frame stature outside 0.5–2.5 m is never used: no class, and the status says why.
+#[test]
+fn height_of_a_physically_impossible_operator_is_never_classed() {
+    for scale in [1000.0, 0.001] {
+        let s = spec(1.753);
+        let mut est = estimator(&s);
+        for k in 0..200 {
+            let f = frame(&s, k);
+            let slots: Vec<_> = f
+                .slots()
+                .iter()
+                .map(|l| {
+                    l.map(|mut e| {
+                        e.position_m = Point3::from(e.position_m.coords * scale);
+                        e
+                    })
+                })
+                .collect();
+            let scaled = Skeleton3::try_from_slots(f.stamp_nanos, slots).unwrap();
+            assert!(
+                est.push(&scaled).is_none(),
+                "×{scale}: decided at frame {k}"
+            );
+        }
+        match est.status() {
+            HeightStatus::Measuring { why, estimate, .. } => {
+                assert!(why.contains("physically impossible"), "×{scale}: {why}");
+                assert!(estimate.is_none(), "×{scale}: {estimate:?}");
+            }
+            HeightStatus::Decided(d) => panic!("×{scale}: classed {d:?}"),
+        }
+    }
+}
