@@ -525,10 +525,12 @@ pub fn score_worksheet(input: &RulaInput) -> Result<WorksheetResult, ErgonomicsE
 /// An error names the entry (0-based index) and the field: a missing or unknown field, a value of the
 /// wrong type, or a value out of range.
 pub fn parse_worksheets(json: &str) -> Result<Vec<RulaInput>, ErgonomicsError> {
-    let value: serde_json::Value =
-        serde_json::from_str(json).map_err(|e| ErgonomicsError::WorksheetJson {
+    // A key given twice in one object is refused (serde_json's Value keeps the last one silently).
+    let value = serde_json::from_str::<UniqueKeys>(json)
+        .map_err(|e| ErgonomicsError::WorksheetJson {
             reason: e.to_string(),
-        })?;
+        })?
+        .0;
     let serde_json::Value::Array(entries) = value else {
         return Err(ErgonomicsError::WorksheetJson {
             reason: "expected a JSON array of worksheets".to_owned(),
@@ -539,6 +541,74 @@ pub fn parse_worksheets(json: &str) -> Result<Vec<RulaInput>, ErgonomicsError> {
         .enumerate()
         .map(|(index, entry)| parse_entry(index, entry))
         .collect()
+}
+
+/// The largest |angle| a worksheet may state, degrees: anything beyond is not a posture.
+pub const MAX_ABS_ANGLE_DEG: f64 = 360.0;
+
+/// A JSON value whose objects never repeat a key (else a deserialization error naming it).
+struct UniqueKeys(serde_json::Value);
+
+impl<'de> serde::Deserialize<'de> for UniqueKeys {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = UniqueKeys;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("JSON")
+            }
+            fn visit_bool<E>(self, v: bool) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(v.into()))
+            }
+            fn visit_i64<E>(self, v: i64) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(v.into()))
+            }
+            fn visit_u64<E>(self, v: u64) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(v.into()))
+            }
+            fn visit_f64<E>(self, v: f64) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(v.into()))
+            }
+            fn visit_str<E>(self, v: &str) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(v.into()))
+            }
+            fn visit_string<E>(self, v: String) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(v.into()))
+            }
+            fn visit_unit<E>(self) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(serde_json::Value::Null))
+            }
+            fn visit_none<E>(self) -> Result<UniqueKeys, E> {
+                Ok(UniqueKeys(serde_json::Value::Null))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<UniqueKeys, A::Error> {
+                let mut out = Vec::new();
+                while let Some(UniqueKeys(v)) = seq.next_element()? {
+                    out.push(v);
+                }
+                Ok(UniqueKeys(serde_json::Value::Array(out)))
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                mut map: A,
+            ) -> Result<UniqueKeys, A::Error> {
+                let mut out = serde_json::Map::new();
+                while let Some(key) = map.next_key::<String>()? {
+                    let UniqueKeys(v) = map.next_value()?;
+                    if out.insert(key.clone(), v).is_some() {
+                        return Err(serde::de::Error::custom(format!(
+                            "key `{key}` is given twice in one object: which one is meant?"
+                        )));
+                    }
+                }
+                Ok(UniqueKeys(serde_json::Value::Object(out)))
+            }
+        }
+        d.deserialize_any(V)
+    }
 }
 
 fn entry_error(index: usize, field: &str, reason: impl Into<String>) -> ErgonomicsError {
@@ -564,14 +634,18 @@ fn parse_entry(index: usize, entry: &serde_json::Value) -> Result<RulaInput, Erg
         };
         let ok = match field {
             "wrist_twist" => matches!(v.as_str(), Some("mid_range" | "end_of_range")),
-            f if f.ends_with("_deg") => v.as_f64().is_some(),
+            f if f.ends_with("_deg") => v
+                .as_f64()
+                .is_some_and(|d| (-MAX_ABS_ANGLE_DEG..=MAX_ABS_ANGLE_DEG).contains(&d)),
             f if f.starts_with("force_load_score") => v.as_u64().is_some_and(|n| n <= 3),
             _ => v.is_boolean(),
         };
         if !ok {
             let expected = match field {
                 "wrist_twist" => "\"mid_range\" or \"end_of_range\"",
-                f if f.ends_with("_deg") => "a number of degrees",
+                f if f.ends_with("_deg") => {
+                    "a number of degrees within ±360 (a physically possible angle)"
+                }
                 f if f.starts_with("force_load_score") => "an integer 0..=3",
                 _ => "true or false",
             };

@@ -517,3 +517,27 @@ fn score_edges_are_where_the_bands_change() {
     );
     assert!(score_edges_deg("knee_flexion", &th).is_none());
 }
+
+/// #18: `rula score` scored 1e9° as a plausible posture, and a key given twice silently kept the last.
+#[test]
+fn rula_score_refuses_an_impossible_angle_and_a_duplicate_key() {
+    let good = serde_json::to_value(vec![RulaInput::neutral()]).unwrap();
+    let mut entry = good[0].clone();
+    entry["upper_arm_flexion_deg"] = serde_json::json!(1e9);
+    let text = serde_json::to_string(&vec![entry]).unwrap();
+    let e = parse_worksheets(&text).unwrap_err().to_string();
+    assert!(
+        e.contains("upper_arm_flexion_deg") && e.contains("360"),
+        "{e}"
+    );
+    // ±360° is still accepted (a full turn is the limit of a posture, not a typo).
+    let mut edge = good[0].clone();
+    edge["upper_arm_flexion_deg"] = serde_json::json!(-360.0);
+    assert!(parse_worksheets(&serde_json::to_string(&vec![edge]).unwrap()).is_ok());
+    // A key given twice: refused, naming it.
+    let once = serde_json::to_string(&good).unwrap();
+    let twice = once.replacen('{', "{\"neck_flexion_deg\":5.0,", 1);
+    assert_ne!(once, twice);
+    let e = parse_worksheets(&twice).unwrap_err().to_string();
+    assert!(e.contains("neck_flexion_deg") && e.contains("twice"), "{e}");
+}
