@@ -43,6 +43,8 @@ pub struct McapRecorder {
     sequence: u32,
     last_flush_nanos: Option<i64>,
     messages: u64,
+    /// Messages were written since the last flush.
+    unflushed: bool,
 }
 
 impl McapRecorder {
@@ -63,14 +65,28 @@ impl McapRecorder {
             .compression(None)
             .library(concat!("ergocell ", env!("CARGO_PKG_VERSION")));
         let writer = options.create(BufWriter::new(file))?;
-        Ok(Self {
+        let mut rec = Self {
             writer,
             schemas: BTreeMap::new(),
             channels: BTreeMap::new(),
             sequence: 0,
             last_flush_nanos: None,
             messages: 0,
-        })
+            unflushed: false,
+        };
+        // The header on disk at once: a file killed before its first message is still an MCAP file.
+        rec.writer.flush()?;
+        Ok(rec)
+    }
+
+    /// Called on the session's clock whether or not messages arrive: whatever was written more than
+    /// a second ago is flushed, so a kill -9 loses at most the last second, however quiet the cell.
+    pub fn tick(&mut self, now_nanos: i64) -> Result<(), RecordingError> {
+        let last = *self.last_flush_nanos.get_or_insert(now_nanos);
+        if self.unflushed && now_nanos - last >= 1_000_000_000 {
+            self.flush(now_nanos)?;
+        }
+        Ok(())
     }
 
     /// Messages written so far.
@@ -99,6 +115,7 @@ impl McapRecorder {
             &data,
         )?;
         self.messages += 1;
+        self.unflushed = true;
         let last = *self.last_flush_nanos.get_or_insert(log_time_nanos);
         if log_time_nanos - last >= 1_000_000_000 {
             self.flush(log_time_nanos)?;
@@ -110,6 +127,7 @@ impl McapRecorder {
     pub fn flush(&mut self, log_time_nanos: i64) -> Result<(), RecordingError> {
         self.writer.flush()?;
         self.last_flush_nanos = Some(log_time_nanos);
+        self.unflushed = false;
         Ok(())
     }
 
@@ -173,4 +191,43 @@ pub fn record_events(
         now_nanos,
         &crate::messages::step_messages(machine, now_nanos, events),
     )
+}
+
+/// The camera landmarks of a recording, as far as it can be read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CameraReadout {
+    /// `(log time, message)` in file order.
+    pub frames: Vec<(u64, ergocell_bridge::msg::CameraLandmarks)>,
+    /// Why reading stopped early (a damaged chunk, a file cut mid-chunk), if it did.
+    pub damaged: Option<String>,
+    /// Camera messages that did not decode (skipped).
+    pub undecodable: usize,
+}
+
+/// Reads every camera-landmarks message of a recording (`ergocell replay`): a file cut by a crash is
+/// read up to its last complete chunk; a damaged record stops the reading and is reported, never
+/// silently; an undecodable message is skipped and counted.
+pub fn read_camera_landmarks(bytes: &[u8]) -> Result<CameraReadout, RecordingError> {
+    let options = enumset::EnumSet::only(mcap::read::Options::IgnoreEndMagic);
+    let mut out = CameraReadout {
+        frames: Vec::new(),
+        damaged: None,
+        undecodable: 0,
+    };
+    for m in mcap::read::MessageStream::new_with_options(bytes, options)? {
+        let m = match m {
+            Ok(m) => m,
+            Err(e) => {
+                out.damaged = Some(e.to_string());
+                break;
+            }
+        };
+        if topics::camera_id(&m.channel.topic).is_some() {
+            match cdr::decode::<ergocell_bridge::msg::CameraLandmarks>(&m.data) {
+                Ok(lm) => out.frames.push((m.log_time, lm)),
+                Err(_) => out.undecodable += 1,
+            }
+        }
+    }
+    Ok(out)
 }

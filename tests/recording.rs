@@ -126,3 +126,67 @@ fn skeleton_markers_hold_every_landmark_and_bone() {
         m
     );
 }
+
+/// #18: a recording was not flushed while no messages arrived (92 bytes after 8 s, unreadable after
+/// kill -9). The header is on disk at once, and `tick` on the session's clock flushes whatever was
+/// written more than a second ago, messages or not.
+#[test]
+fn a_recording_is_flushed_on_a_timer_while_no_messages_arrive() {
+    let read_on_disk = |p: &std::path::Path| -> Option<usize> {
+        let bytes = std::fs::read(p).unwrap();
+        let options = enumset::EnumSet::only(mcap::read::Options::IgnoreEndMagic);
+        let stream = mcap::read::MessageStream::new_with_options(&bytes, options).ok()?;
+        Some(stream.take_while(Result::is_ok).count())
+    };
+    let p = path("quiet.mcap");
+    let mut rec = McapRecorder::create(&p).unwrap();
+    assert_eq!(
+        read_on_disk(&p),
+        Some(0),
+        "the header is on disk before any message"
+    );
+    // Two messages in the first 200 ms, then silence: no write ever reaches the 1 s flush.
+    rec.write(topics::SESSION_STATE, 0, &state(0)).unwrap();
+    rec.write(topics::SESSION_STATE, 200_000_000, &state(1))
+        .unwrap();
+    rec.tick(500_000_000).unwrap();
+    assert_eq!(
+        read_on_disk(&p),
+        Some(0),
+        "not yet a second: still buffered"
+    );
+    rec.tick(1_100_000_000).unwrap();
+    assert_eq!(
+        read_on_disk(&p),
+        Some(2),
+        "flushed by the timer, with no new message"
+    );
+    drop(rec);
+}
+
+/// #18: `replay` of a damaged file warned of nothing. Reading a recording's camera messages reports
+/// where and why it stopped; a cut file gives what it holds.
+#[test]
+fn replay_of_a_damaged_file_says_where_it_stops() {
+    let p = path("replay-damaged.mcap");
+    let mut rec = McapRecorder::create(&p).unwrap();
+    let view = ergocell_bridge::msg::CameraLandmarks {
+        camera_id: "s1_left".into(),
+        ..Default::default()
+    };
+    for k in 0..30 {
+        rec.write(&topics::camera("s1_left"), k * 100_000_000, &view)
+            .unwrap();
+    }
+    rec.finish().unwrap();
+    let bytes = std::fs::read(&p).unwrap();
+    let whole = ergocell::recording::read_camera_landmarks(&bytes).unwrap();
+    assert_eq!(
+        (whole.frames.len(), whole.damaged.clone(), whole.undecodable),
+        (30, None, 0)
+    );
+    // Cut in the middle of the file (a crash, a partial copy): fewer messages, and why.
+    let cut = ergocell::recording::read_camera_landmarks(&bytes[..bytes.len() / 2]).unwrap();
+    assert!(cut.frames.len() < 30, "{}", cut.frames.len());
+    assert!(cut.damaged.is_some(), "the cut is reported");
+}

@@ -21,7 +21,7 @@ use ergocell::session::{
 };
 use ergocell_bridge::msg::{CameraLandmarks, JointState, JointTrajectory};
 use ergocell_bridge::transport::{publish, CellTopics, Publisher, RosConfig, RosNode};
-use ergocell_bridge::{cdr, qos};
+use ergocell_bridge::qos;
 use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
 use futures::StreamExt as _;
@@ -338,6 +338,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 _ = tick.tick() => Vec::new(),
             };
             let now = now_nanos();
+            // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
+            if let Some(rec) = recorder.as_mut() {
+                rec.tick(now)?;
+            }
             if let Some(signal) = stop.get() {
                 interrupted = Some(signal);
                 let events = machine.shutdown(now, &mut robot, signal.name());
@@ -503,17 +507,27 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     let bytes = std::fs::read(&args.recording)
         .with_context(|| format!("cannot read {}", args.recording.display()))?;
     // Camera messages in log-time order; a recording cut by a crash is read up to its last chunk.
-    let options = enumset::EnumSet::only(mcap::read::Options::IgnoreEndMagic);
-    let mut frames: Vec<(u64, CameraLandmarks)> = Vec::new();
-    for m in mcap::read::MessageStream::new_with_options(&bytes, options)
-        .map_err(|e| UsageError(format!("{}: {e}", args.recording.display())))?
-    {
-        let Ok(m) = m else { break };
-        if topics::camera_id(&m.channel.topic).is_some() {
-            let lm: CameraLandmarks = cdr::decode(&m.data)
-                .map_err(|e| UsageError(format!("{}: {e}", args.recording.display())))?;
-            frames.push((m.log_time, lm));
-        }
+    let recording::CameraReadout {
+        mut frames,
+        damaged,
+        undecodable,
+    } = recording::read_camera_landmarks(&bytes)
+        .map_err(|e| UsageError(format!("{}: {e}", args.recording.display())))?;
+    // A damaged or cut recording is replayed up to where it can be read, and says so.
+    if let Some(e) = damaged {
+        eprintln!(
+            "warning: {}: the recording cannot be read past {} camera messages ({e}); replaying \
+             those",
+            args.recording.display(),
+            frames.len()
+        );
+    }
+    if undecodable > 0 {
+        eprintln!(
+            "warning: {}: {undecodable} camera messages do not decode as CameraLandmarks and are \
+             skipped",
+            args.recording.display()
+        );
     }
     frames.sort_by_key(|(t, _)| *t);
     if frames.is_empty() {
