@@ -130,3 +130,111 @@ fn rula_track_and_height_on_a_synthetic_recording() {
     let (code, _, stderr) = ergocell(&["height", "--landmarks", p, "--up", "0,0,0"]);
     assert_eq!(code, 2, "{stderr}");
 }
+
+/// Issue row: `rula track` scored 0 of 100 frames of a recording from a detector without hand points
+/// (OpenPose BODY_25B; COCO-17, HALPE-26 and BODY_25 alike), with null sides and no reason. Ten
+/// frames of a BODY_25B skeleton (only the BlazePose landmarks its layout fills): every frame and side
+/// is scored, the wrist conservatively (RULA wrist score 3), uncertain, and the output says why.
+#[test]
+fn rula_track_scores_every_frame_of_a_detector_without_hand_points() {
+    use ergocell_perception::detections::KeypointFormat;
+    use ergocell_perception::landmarks_file::{write_landmarks, LandmarksFormat};
+    use ergocell_skeleton::Landmark;
+
+    let kept: Vec<Landmark> = KeypointFormat::Body25B
+        .mapping()
+        .iter()
+        .flatten()
+        .copied()
+        .collect();
+    let spec = PoseSpec {
+        neck_flexion_rad: 15f64.to_radians(),
+        right_arm: ArmPose {
+            flexion_rad: 50f64.to_radians(),
+            elbow_flexion_rad: 80f64.to_radians(),
+            ..ArmPose::default()
+        },
+        ..PoseSpec::default()
+    };
+    let frames: Vec<_> = (0..10)
+        .map(|k| {
+            let mut s = PoseSpec {
+                stamp_nanos: k * 100_000_000,
+                ..spec.clone()
+            }
+            .skeleton();
+            for lm in Landmark::ALL {
+                if !kept.contains(&lm) {
+                    s.set(lm, None).unwrap();
+                }
+            }
+            s
+        })
+        .collect();
+    let path = tmp("body25b-landmarks.json");
+    std::fs::write(
+        &path,
+        write_landmarks(&frames, LandmarksFormat::Json, "body25b", 10.0),
+    )
+    .unwrap();
+    let p = path.to_str().unwrap();
+
+    let (code, stdout, stderr) =
+        ergocell(&["rula", "track", "--json", "--landmarks", p, "--up", "0,0,1"]);
+    assert_eq!(code, 0, "{stderr}");
+    let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let docs = doc["frames"].as_array().unwrap();
+    assert_eq!(docs.len(), 10);
+    for (k, f) in docs.iter().enumerate() {
+        assert_eq!(f["unscored_reasons"], serde_json::json!([]), "frame {k}");
+        for side in ["left", "right"] {
+            let s = &f[side];
+            assert!(s.is_object(), "frame {k} {side} not scored: {f}");
+            assert_eq!(s["uncertain"], true, "frame {k} {side}");
+            assert_eq!(s["scores"]["wrist_score"], 3, "frame {k} {side}");
+            assert_eq!(s["sources"]["wrist_flexion_deg"], "conservative");
+            assert_eq!(s["sources"]["upper_arm_flexion_deg"], "observed");
+            let reasons = s["uncertain_reasons"].as_array().unwrap();
+            assert!(
+                reasons.iter().any(|r| {
+                    let r = r.as_str().unwrap();
+                    r.contains("wrist scored conservatively as 3")
+                        && r.contains(&format!("no {side}_index, {side}_pinky"))
+                }),
+                "frame {k} {side}: {reasons:?}"
+            );
+        }
+        assert_eq!(f["right"]["scores"]["upper_arm_score"], 3, "frame {k}: 50°");
+    }
+    assert_eq!(doc["summary"]["scored_frames"], 10);
+    assert_eq!(doc["summary"]["unscored_share"], 0.0);
+    // Nobody saw the wrists: no wrist warning.
+    assert!(
+        doc["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|w| w["region"] != "wrist"),
+        "{}",
+        doc["warnings"]
+    );
+
+    // The text output says why too, once while the reasons stay the same.
+    let (code, stdout, stderr) = ergocell(&["rula", "track", "--landmarks", p, "--up", "0,0,1"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(!stdout.contains("not scored"), "{stdout}");
+    for side in ["left", "right"] {
+        let why: Vec<&str> = stdout
+            .lines()
+            .filter(|l| l.contains(&format!("why {side} uncertain:")))
+            .collect();
+        assert_eq!(why.len(), 1, "{stdout}");
+        assert!(
+            why[0].contains("wrist scored conservatively as 3"),
+            "{}",
+            why[0]
+        );
+    }
+    assert!(stdout.contains("10 frames over"), "{stdout}");
+    assert!(stdout.contains("10 scored, 10 uncertain"), "{stdout}");
+}

@@ -15,8 +15,16 @@
 //! - **Time-series** input: muscle use, from [`MuscleUseTracker`] (posture held > 1 min, or an action
 //!   repeated ≥ 4 times a minute), driven by the frames' `stamp_nanos` — never by a wall clock.
 //! - **Held**: when a landmark is missing in this frame, the last observed value is used and the score
-//!   is marked uncertain. With nothing to hold, that side is not scored (`None`): "no score" is never
-//!   presented as "safe".
+//!   is marked uncertain. With nothing to hold, a yes/no adjustment is scored as not present and the
+//!   score is marked uncertain; a side without its upper arm or elbow angle (shoulder, elbow, wrist)
+//!   is not scored (`None`, with the reason in [`FrameAssessment::unscored_reasons`]): "no score" is
+//!   never presented as "safe".
+//! - **Conservative**: the wrist's flexion needs the hand (index and pinky), which most 2D keypoint
+//!   layouts in use do not have (OpenPose BODY_25 and BODY_25B, COCO-17, HALPE-26; see
+//!   `ergocell_perception::detections::KeypointFormat`). A wrist that was never observed does not
+//!   leave the side unscored: it is scored at the top flexion band, [`UNOBSERVED_WRIST_FLEXION_DEG`]
+//!   (wrist score 3, the rule and its reasons are there), the input's source is
+//!   [`InputSource::Conservative`], the score is uncertain and the reason says so.
 //! - Low tracking confidence (any landmark used below [`AssessmentConfig::min_confidence`]) marks the
 //!   score **uncertain**; it never changes (and so never lowers) the score.
 
@@ -31,7 +39,7 @@ use crate::angles::{
 use crate::height::median;
 use crate::rula::{
     neck_band, score_worksheet, trunk_band, upper_arm_band, RulaInput, RulaScores, ScoringNote,
-    WristTwist,
+    WristTwist, WRIST_EDGES_DEG,
 };
 use crate::{ErgonomicsError, Side};
 
@@ -348,6 +356,10 @@ pub enum InputSource {
     Held,
     /// Never observed; scored as "not present" (the score is uncertain).
     NotObserved,
+    /// Never observed, and an angle has no "not present": scored at the worksheet band that cannot
+    /// understate it (the score is uncertain). Only the wrist's flexion, see
+    /// [`UNOBSERVED_WRIST_FLEXION_DEG`].
+    Conservative,
     /// From the task config.
     Configured,
     /// From the time series of frames (muscle use).
@@ -356,6 +368,31 @@ pub enum InputSource {
 
 /// The source of each worksheet input, in [`RulaInput::FIELDS`] order.
 pub type InputSources = [(&'static str, InputSource); 21];
+
+/// The wrist flexion, degrees, at which a wrist that was never observed is scored: 15°, the lower edge
+/// of RULA's top wrist band, so step 3 gives it **wrist score 3** ("15° or more, flexion or
+/// extension"; McAtamney & Corlett, Applied Ergonomics 24(2), 1993, step 3; ergocell's band-edge
+/// convention puts 15° in the higher band, see [`crate::rula`]). Its source is
+/// [`InputSource::Conservative`].
+///
+/// The flexion needs the hand's index and pinky, which OpenPose BODY_25 and BODY_25B, COCO-17 and
+/// HALPE-26 do not have; without this rule every frame of those layouts was left unscored. Why 15°:
+/// - The flexion is an angle, and an angle has no "not present" to fall back on. Its lowest band
+///   (score 1, exactly neutral) would present an unseen wrist as safe, which the assessor never does;
+///   the top band is the worst the flexion can score, so the flexion part of the wrist score is never
+///   understated.
+/// - The radial/ulnar deviation (step 3's +1) is a yes/no adjustment, and the assessor scores every
+///   adjustment it never observed as not present, marking the score uncertain (a neck twist without a
+///   face, an abduction without an elbow). The wrist follows that rule: an unobserved wrist scores as
+///   a wrist seen at 15° or more without deviation, 3, not the region's maximum 4 (a deviated wrist
+///   is understated by that one point, as any unobserved adjustment is; the uncertain flag says so).
+///   Assuming a deviation nobody saw would score every frame of these layouts at the wrist's worst.
+/// - It counts in Table A and the grand score like an observed wrist, the side is marked uncertain
+///   with the reason, and the wrist raises no posture warning ([`crate::warnings`]): a warning tells
+///   the operator an angle and what to change, and nobody saw this one.
+/// - A wrist observed earlier is held like any other input ([`InputSource::Held`]); this value is
+///   only for a wrist with nothing to hold. When the hand is observed nothing changes.
+pub const UNOBSERVED_WRIST_FLEXION_DEG: f64 = WRIST_EDGES_DEG[1];
 
 /// One side's result for one frame.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -368,10 +405,21 @@ pub struct SideAssessment {
     pub sources: InputSources,
     pub muscle_use_arm_wrist: MuscleUse,
     pub muscle_use_neck_trunk_legs: MuscleUse,
-    /// True when tracking confidence was low or inputs were held / not observed. The score is still
-    /// the full score: uncertain never means lower.
+    /// True when tracking confidence was low or inputs were held / not observed / scored
+    /// conservatively. The score is still the full score: uncertain never means lower.
     pub uncertain: bool,
     pub uncertain_reasons: Vec<String>,
+}
+
+impl SideAssessment {
+    /// Where the worksheet input `field` (a [`RulaInput::FIELDS`] name) came from; `None` for an
+    /// unknown name.
+    pub fn source(&self, field: &str) -> Option<InputSource> {
+        self.sources
+            .iter()
+            .find(|(name, _)| *name == field)
+            .map(|(_, source)| *source)
+    }
 }
 
 /// The angle values (degrees) at which an angle's RULA contribution changes, for drawing over its
@@ -475,6 +523,28 @@ const FOOT_LANDMARKS: [Landmark; 6] = [
     Landmark::LeftFootIndex,
     Landmark::RightFootIndex,
 ];
+
+/// Why a side's wrist was scored conservatively: the hand landmarks this frame lacks (none of them
+/// ever observed, or the wrist would be held), and the score given.
+fn unobserved_wrist_reason(skeleton: &Skeleton3, side: Side, wrist_score: u8) -> String {
+    let [_, elbow, wrist, index, pinky, _] = arm_landmarks(side);
+    let missing: Vec<String> = [elbow, wrist, index, pinky]
+        .iter()
+        .filter(|lm| skeleton.get(**lm).is_none())
+        .map(ToString::to_string)
+        .collect();
+    let what = if missing.is_empty() {
+        "hand landmarks degenerate (index and pinky on the forearm's line)".to_owned()
+    } else {
+        format!("no {}", missing.join(", "))
+    };
+    format!(
+        "wrist_flexion_deg: wrist never observed ({what}; keypoint layouts without hand points, \
+         e.g. OpenPose BODY_25/BODY_25B, COCO-17, HALPE-26, have no index or pinky): wrist scored \
+         conservatively as {wrist_score} (flexion taken as {UNOBSERVED_WRIST_FLEXION_DEG}° or more, \
+         RULA's top wrist band; deviation as not present)"
+    )
+}
 
 fn merge(held: Option<f64>, now: Option<f64>) -> (Option<f64>, InputSource) {
     match (now, held) {
@@ -616,16 +686,20 @@ impl RulaAssessor {
             let (lat, lat_src) = merge(held.wrist_lateral_offset_m, now.wrist_lateral_offset_m);
             let (wf, wf_src) = merge(held.wrist_flexion_rad, now.wrist_flexion_rad);
             let (wd, wd_src) = merge(held.wrist_deviation_rad, now.wrist_deviation_rad);
-            let (Some((t_deg, n_deg)), Some(ua), Some(el), Some(wf), Some(mb)) =
-                (group_b, ua, el, wf, muscle_b)
+            let (Some((t_deg, n_deg)), Some(ua), Some(el), Some(mb)) = (group_b, ua, el, muscle_b)
             else {
                 if group_b.is_some() {
                     unscored_reasons.push(format!(
-                        "{} arm never observed (needs shoulder, elbow, wrist, index and pinky)",
+                        "{} arm never observed (needs shoulder, elbow and wrist)",
                         side.name()
                     ));
                 }
                 continue;
+            };
+            // Never observed: the top flexion band (see `UNOBSERVED_WRIST_FLEXION_DEG`).
+            let (wf_deg, wf_src) = match wf {
+                Some(wf) => (wf.to_degrees(), wf_src),
+                None => (UNOBSERVED_WRIST_FLEXION_DEG, InputSource::Conservative),
             };
             let shoulder_width = angles
                 .shoulder_width_m
@@ -635,7 +709,6 @@ impl RulaAssessor {
             let across_or_out = lat.is_some_and(|x| x < 0.0 || x > out_limit);
             let ua_deg = ua.to_degrees();
             let el_deg = el.to_degrees();
-            let wf_deg = wf.to_degrees();
             let relaxed_a = upper_arm_band(ua_deg) == 1;
             let i = match side {
                 Side::Left => 0,
@@ -700,7 +773,14 @@ impl RulaAssessor {
                     InputSource::NotObserved => {
                         Some(format!("{name}: never observed, scored as not present"))
                     }
-                    _ => None,
+                    InputSource::Conservative => Some(unobserved_wrist_reason(
+                        skeleton,
+                        side,
+                        result.scores.wrist_score,
+                    )),
+                    InputSource::Observed | InputSource::Configured | InputSource::TimeSeries => {
+                        None
+                    }
                 })
                 .collect();
             let arm = arm_landmarks(side);

@@ -6,7 +6,8 @@
 //!   shoulders, with the world's "up" taken from the cell config (never assumed).
 //! - [`assess`]: a frame-by-frame RULA assessor for both sides: angles + task config + a time-series
 //!   muscle-use tracker → a breakdown that says which inputs were observed and which configured, and
-//!   marks low-confidence scores "uncertain" (never lower).
+//!   marks low-confidence, held or conservatively scored inputs "uncertain" (never lower); a wrist the
+//!   keypoint layout has no hand points for is scored conservatively, not left unscored.
 //! - [`height`]: stature from upright frames with two anthropometric estimators, and the height class
 //!   decision at session start.
 //! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.

@@ -18,6 +18,10 @@
 //!   when a warning is raised, changes level or clears, in plain words with the angle, the advice and
 //!   the frame's RULA action level. Wrist warnings say that wrist scores are the least reliable part
 //!   of RULA (raters agree poorly, weighted κ ≈ 0.15–0.17).
+//! - A wrist that was never observed (a keypoint layout without hand points) is scored
+//!   conservatively ([`crate::assess::UNOBSERVED_WRIST_FLEXION_DEG`]) but raises no warning: a warning
+//!   states the angle and what to change, and nobody saw this wrist. Its score still counts in the
+//!   frame's grand score and action level, and the frame is uncertain.
 //!
 //! Time comes from the frames' `stamp_nanos`; nothing here reads a clock. The tracker knows nothing
 //! of the robot, so warnings keep running after a trajectory is locked.
@@ -26,7 +30,7 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use crate::assess::{BodyRegion, FrameAssessment};
+use crate::assess::{BodyRegion, FrameAssessment, InputSource};
 use crate::rula::{
     action_level_meaning, legs_score, lower_arm_score, neck_score, trunk_score, upper_arm_score,
     wrist_score, RulaInput,
@@ -275,6 +279,11 @@ impl WarningTracker {
                 vec![(None, head)]
             };
             for (side, assessment) in sides {
+                if *region == BodyRegion::Wrist
+                    && assessment.source("wrist_flexion_deg") == Some(InputSource::Conservative)
+                {
+                    continue;
+                }
                 let input = &assessment.input;
                 let angle = region_angle(*region, input);
                 let warn_at = self.config.warn_at[ri];

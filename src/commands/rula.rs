@@ -11,6 +11,12 @@
 //! the rig file the landmarks were triangulated with (`--rig`, default `config/rig.toml`, the
 //! reference cell: z-up, floor at z = 0). It is never assumed: a calibration without a stated up
 //! (caliscope, Anipose) needs `--up`.
+//!
+//! `track` always says why: a side that is not scored, or scored but uncertain (an input held, never
+//! observed, scored conservatively — a wrist the keypoint layout has no hand points for, e.g.
+//! OpenPose BODY_25B or COCO-17 — or of low confidence), comes with its reasons: in the text output on
+//! a `why` line whenever they change, in `--json` as each frame's `unscored_reasons` and each side's
+//! `uncertain_reasons`.
 
 use std::path::{Path, PathBuf};
 
@@ -168,8 +174,14 @@ fn side_text(s: Option<&SideAssessment>) -> String {
     }
 }
 
+/// The reasons a scored side is uncertain (none for an unscored or a certain side).
+fn why_uncertain(s: Option<&SideAssessment>) -> Vec<String> {
+    s.map(|a| a.uncertain_reasons.clone()).unwrap_or_default()
+}
+
 /// One side's breakdown as JSON: the scores, the worksheet that was scored, and where each input came
-/// from (observed, held, not observed, configured, time series) with the reasons a score is uncertain.
+/// from (observed, held, not observed, conservative, configured, time series) with the reasons a score
+/// is uncertain.
 fn side_json(s: &SideAssessment) -> serde_json::Value {
     let sources: serde_json::Map<String, serde_json::Value> = s
         .sources
@@ -213,8 +225,10 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     let mut events = Vec::new();
     if !args.json {
         println!("# time_s  left: final AL (regions) | right: ... ; UA upper arm, LA lower arm, WR wrist, TW twist, N neck, T trunk, L legs");
-        println!("# configured (task config): force/load, wrist twist, arm supported, seated; muscle use: from the time series; the rest observed (\"uncertain\": an input held, not observed or of low confidence; --json lists each input's source)");
+        println!("# configured (task config): force/load, wrist twist, arm supported, seated; muscle use: from the time series; the rest observed (\"uncertain\": an input held, not observed, scored conservatively or of low confidence; the reasons follow on a \"why\" line when they change; --json lists each input's source)");
     }
+    // The reasons last printed (text output): a side's uncertain reasons, the frame's unscored ones.
+    let mut last_why: [Vec<String>; 3] = Default::default();
     for (i, skeleton) in frames.iter().enumerate() {
         let tracked = stage.process(skeleton, skeleton.clone());
         let frame = tracked
@@ -228,6 +242,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
                 "stamp_nanos": frame.stamp_nanos,
                 "left": frame.left.as_ref().map(side_json),
                 "right": frame.right.as_ref().map(side_json),
+                "unscored_reasons": frame.unscored_reasons,
                 "headline": frame.headline().map(|h| h.side),
             }));
         } else {
@@ -237,6 +252,19 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
                 side_text(frame.left.as_ref()),
                 side_text(frame.right.as_ref())
             );
+            let why = [
+                ("left uncertain", why_uncertain(frame.left.as_ref())),
+                ("right uncertain", why_uncertain(frame.right.as_ref())),
+                ("not scored", frame.unscored_reasons.clone()),
+            ];
+            for ((label, reasons), last) in why.into_iter().zip(&mut last_why) {
+                if reasons != *last {
+                    if !reasons.is_empty() {
+                        println!("{t:8.3}  why {label}: {}", reasons.join("; "));
+                    }
+                    *last = reasons;
+                }
+            }
             for e in &new_events {
                 println!(
                     "{t:8.3}  WARNING {:?}: {}{}",

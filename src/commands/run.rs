@@ -20,8 +20,8 @@ use ergocell::session::{
     BackendError, RobotCommand, RobotSink, SessionEvent, SessionMachine, SessionState,
 };
 use ergocell_bridge::msg::{CameraLandmarks, JointState, JointTrajectory};
-use ergocell_bridge::transport::{publish, CellTopics, Publisher, RosConfig, RosNode};
 use ergocell_bridge::qos;
+use ergocell_bridge::transport::{publish, CellTopics, Publisher, RosConfig, RosNode};
 use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
 use futures::StreamExt as _;
