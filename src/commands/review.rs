@@ -10,12 +10,34 @@
 //! that opens offline and can be mailed; `--compare` puts a second session beside the first. It never
 //! writes over an existing file unless asked (`--force`), and never over one of its recordings.
 //!
-//! Ctrl-C (SIGINT) and SIGTERM stop the server the same way: open requests are answered, exit 0.
+//! The server bounds what a client can hold, so that slow, idle or half-open connections cannot
+//! starve it (nor exhaust its file descriptors: at `ulimit -n 128` it keeps serving):
+//! - **header timeout**, 10 s: a request's head (request line and headers) must arrive in full within
+//!   10 s of the connection opening or of the previous response; the clock restarts after each
+//!   response, so this is also the idle keep-alive timeout. Then the connection is closed.
+//! - **stall timeout**, 30 s: a connection on which no byte moved either way for 30 s is closed,
+//!   whatever it is doing (a client that stopped reading its response).
+//! - **at most 64 connections** at a time. The 65th is not refused: the open connection that has gone
+//!   longest without a request under way (idle keep-alive, or a head still coming) is closed to make
+//!   room, so a browser's request is answered at once even while others hold connections open
+//!   without asking anything. Only when all 64 are answering requests does the new one wait (in the
+//!   kernel's accept queue) for one of them to finish.
+//!
+//! Ctrl-C (SIGINT) and SIGTERM stop the server the same way: it stops accepting, closes the
+//! connections with no request under way (a half-sent request is not waited for), gives responses
+//! under way up to 1 s to finish, and exits 0.
 
+use std::collections::HashMap;
+use std::convert::Infallible;
+use std::future::Future;
 use std::io::Write as _;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::pin::{pin, Pin};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
+use std::task::{Context, Poll};
+use std::time::Duration;
 
 use anyhow::Context as _;
 use axum::extract::{ConnectInfo, Request, State};
@@ -26,6 +48,15 @@ use axum::routing::get;
 use axum::Router;
 use ergocell_review::read::split_sessions;
 use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
+use hyper::body::{Frame, Incoming, SizeHint};
+use hyper::service::Service as _;
+use hyper_util::rt::{TokioIo, TokioTimer};
+use hyper_util::service::TowerToHyperService;
+use tokio::io::{AsyncRead, AsyncWrite, ReadBuf};
+use tokio::net::{TcpListener, TcpStream};
+use tokio::sync::{watch, Notify, Semaphore};
+use tokio::task::JoinSet;
+use tokio::time::Instant;
 
 use super::{output, signals, UsageError};
 
@@ -59,9 +90,9 @@ pub struct Input {
 
 #[derive(Debug, clap::Args)]
 #[command(
-    after_help = "Exit codes: 0 the server was stopped by Ctrl-C (SIGINT) or SIGTERM (open requests \
-    are answered first); 2 bad input (a recording that cannot be read, an address that cannot be \
-    listened on)."
+    after_help = "Exit codes: 0 the server was stopped by Ctrl-C (SIGINT) or SIGTERM (responses \
+    under way get up to 1 s to finish); 2 bad input (a recording that cannot be read, an address \
+    that cannot be listened on)."
 )]
 pub struct Args {
     #[command(flatten)]
@@ -77,6 +108,22 @@ pub struct Args {
     /// server through `ssh -L 9000:localhost:8765`. The server still listens on loopback only.
     #[arg(long = "allow-host", value_name = "HOST:PORT")]
     pub allow_hosts: Vec<String>,
+    /// The header timeout in milliseconds (see the module docs); hidden, for the tests.
+    #[arg(
+        long = "header-timeout-ms",
+        hide = true,
+        default_value_t = 10_000,
+        value_parser = clap::value_parser!(u64).range(1..)
+    )]
+    pub header_timeout_ms: u64,
+    /// The stall timeout in milliseconds (see the module docs); hidden, for the tests.
+    #[arg(
+        long = "stall-timeout-ms",
+        hide = true,
+        default_value_t = 30_000,
+        value_parser = clap::value_parser!(u64).range(1..)
+    )]
+    pub stall_timeout_ms: u64,
 }
 
 #[derive(Debug, clap::Args)]
@@ -222,7 +269,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     runtime.block_on(async {
         // Installed before the server listens: SIGTERM (systemd, docker) stops it like Ctrl-C.
         let stop = signals::stop_signal().context("installing the SIGINT/SIGTERM handlers")?;
-        let listener = tokio::net::TcpListener::bind(SocketAddr::new(args.bind, args.port))
+        let listener = TcpListener::bind(SocketAddr::new(args.bind, args.port))
             .await
             .map_err(|e| {
                 UsageError(format!("cannot listen on {}:{}: {e}", args.bind, args.port))
@@ -261,18 +308,353 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             say!("  serving on {addr} to the network, as asked (--bind)");
         }
         say!("  Ctrl-C (or SIGTERM) stops the server");
-        axum::serve(
-            listener,
-            app.into_make_service_with_connect_info::<SocketAddr>(),
-        )
-        .with_graceful_shutdown(async move {
-            let signal = stop.await;
-            say!("review: stopped by {}", signal.name());
-        })
-        .await
-        .context("review server")?;
+        let limits = Limits {
+            header_timeout: Duration::from_millis(args.header_timeout_ms),
+            stall_timeout: Duration::from_millis(args.stall_timeout_ms),
+            max_connections: MAX_CONNECTIONS,
+            shutdown_grace: SHUTDOWN_GRACE,
+        };
+        serve(listener, app, limits, stop).await;
         anyhow::Ok(())
     })
+}
+
+/// Connections open at a time (see the module docs).
+const MAX_CONNECTIONS: usize = 64;
+/// How long responses under way may take to finish once a stop signal arrived.
+const SHUTDOWN_GRACE: Duration = Duration::from_secs(1);
+/// Pause before accepting again after `accept` failed for want of descriptors or memory.
+const ACCEPT_BACKOFF: Duration = Duration::from_millis(100);
+
+/// What a client can hold of the server (see the module docs).
+#[derive(Debug, Clone, Copy)]
+struct Limits {
+    header_timeout: Duration,
+    stall_timeout: Duration,
+    max_connections: usize,
+    shutdown_grace: Duration,
+}
+
+/// One open connection, as its task and the accept loop see it. Times are milliseconds since
+/// `epoch` (the runtime's monotonic clock).
+struct Conn {
+    epoch: Instant,
+    /// Requests read whose response hyper has not finished with (it drops the response body once it
+    /// has been written, or when the connection closes).
+    busy: AtomicUsize,
+    /// Since when no request has been under way: accepted, or its last response sent.
+    free_since_ms: AtomicU64,
+    /// When a byte was last read or written.
+    last_io_ms: AtomicU64,
+    /// Chosen to make room for a new connection (and not chosen twice).
+    evicted: AtomicBool,
+    close: Notify,
+}
+
+impl Conn {
+    fn new(epoch: Instant) -> Self {
+        let now = ms_since(epoch);
+        Self {
+            epoch,
+            busy: AtomicUsize::new(0),
+            free_since_ms: AtomicU64::new(now),
+            last_io_ms: AtomicU64::new(now),
+            evicted: AtomicBool::new(false),
+            close: Notify::new(),
+        }
+    }
+
+    fn touch(&self) {
+        self.last_io_ms
+            .store(ms_since(self.epoch), Ordering::Relaxed);
+    }
+}
+
+fn ms_since(epoch: Instant) -> u64 {
+    u64::try_from(epoch.elapsed().as_millis()).unwrap_or(u64::MAX)
+}
+
+/// The open connections, by id.
+type Conns = Arc<Mutex<HashMap<u64, Arc<Conn>>>>;
+
+/// Removes a connection from [`Conns`] when its task ends (or is aborted).
+struct Registered {
+    conns: Conns,
+    id: u64,
+}
+
+impl Drop for Registered {
+    fn drop(&mut self) {
+        self.conns
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .remove(&self.id);
+    }
+}
+
+/// Asks the connection that has gone longest without a request under way to close; false when every
+/// connection is answering a request.
+fn evict_longest_free(conns: &Conns) -> bool {
+    let conns = conns.lock().unwrap_or_else(PoisonError::into_inner);
+    let victim = conns
+        .values()
+        .filter(|c| c.busy.load(Ordering::SeqCst) == 0 && !c.evicted.load(Ordering::SeqCst))
+        .min_by_key(|c| c.free_since_ms.load(Ordering::SeqCst));
+    victim.is_some_and(|c| {
+        c.evicted.store(true, Ordering::SeqCst);
+        c.close.notify_one();
+        true
+    })
+}
+
+/// A request under way on a connection, from the moment hyper hands it over until its response body
+/// is dropped.
+struct Busy(Arc<Conn>);
+
+impl Busy {
+    fn new(conn: Arc<Conn>) -> Self {
+        conn.busy.fetch_add(1, Ordering::SeqCst);
+        Self(conn)
+    }
+}
+
+impl Drop for Busy {
+    fn drop(&mut self) {
+        let c = &self.0;
+        if c.busy.fetch_sub(1, Ordering::SeqCst) == 1 {
+            c.free_since_ms.store(ms_since(c.epoch), Ordering::SeqCst);
+        }
+    }
+}
+
+/// A response body that keeps its request counted as under way until hyper is done with it.
+struct Tracked {
+    body: axum::body::Body,
+    _busy: Busy,
+}
+
+impl axum::body::HttpBody for Tracked {
+    type Data = axum::body::Bytes;
+    type Error = axum::Error;
+
+    fn poll_frame(
+        self: Pin<&mut Self>,
+        cx: &mut Context<'_>,
+    ) -> Poll<Option<Result<Frame<Self::Data>, Self::Error>>> {
+        Pin::new(&mut self.get_mut().body).poll_frame(cx)
+    }
+
+    fn is_end_stream(&self) -> bool {
+        self.body.is_end_stream()
+    }
+
+    fn size_hint(&self) -> SizeHint {
+        self.body.size_hint()
+    }
+}
+
+/// The connection's socket, noting when bytes move (for the stall timeout).
+struct Watched {
+    stream: TcpStream,
+    conn: Arc<Conn>,
+}
+
+impl AsyncRead for Watched {
+    fn poll_read(
+        self: Pin<&mut Self>,
+        cx: &mut Context<'_>,
+        buf: &mut ReadBuf<'_>,
+    ) -> Poll<std::io::Result<()>> {
+        let this = self.get_mut();
+        let before = buf.filled().len();
+        let polled = Pin::new(&mut this.stream).poll_read(cx, buf);
+        if buf.filled().len() > before {
+            this.conn.touch();
+        }
+        polled
+    }
+}
+
+impl AsyncWrite for Watched {
+    fn poll_write(
+        self: Pin<&mut Self>,
+        cx: &mut Context<'_>,
+        buf: &[u8],
+    ) -> Poll<std::io::Result<usize>> {
+        let this = self.get_mut();
+        let polled = Pin::new(&mut this.stream).poll_write(cx, buf);
+        if matches!(polled, Poll::Ready(Ok(n)) if n > 0) {
+            this.conn.touch();
+        }
+        polled
+    }
+
+    fn poll_write_vectored(
+        self: Pin<&mut Self>,
+        cx: &mut Context<'_>,
+        bufs: &[std::io::IoSlice<'_>],
+    ) -> Poll<std::io::Result<usize>> {
+        let this = self.get_mut();
+        let polled = Pin::new(&mut this.stream).poll_write_vectored(cx, bufs);
+        if matches!(polled, Poll::Ready(Ok(n)) if n > 0) {
+            this.conn.touch();
+        }
+        polled
+    }
+
+    fn is_write_vectored(&self) -> bool {
+        self.stream.is_write_vectored()
+    }
+
+    fn poll_flush(self: Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<std::io::Result<()>> {
+        Pin::new(&mut self.get_mut().stream).poll_flush(cx)
+    }
+
+    fn poll_shutdown(self: Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<std::io::Result<()>> {
+        Pin::new(&mut self.get_mut().stream).poll_shutdown(cx)
+    }
+}
+
+/// Resolves once no byte has moved on the connection for `limit`.
+async fn stalled(conn: &Conn, limit: Duration) {
+    loop {
+        let last = Duration::from_millis(conn.last_io_ms.load(Ordering::Relaxed));
+        let quiet = conn.epoch.elapsed().saturating_sub(last);
+        if quiet >= limit {
+            return;
+        }
+        tokio::time::sleep(limit.saturating_sub(quiet)).await;
+    }
+}
+
+/// Serves `app` on `listener` within `limits` until `stop` resolves, then shuts down (see the module
+/// docs).
+async fn serve(
+    listener: TcpListener,
+    app: Router,
+    limits: Limits,
+    stop: impl Future<Output = signals::Signal>,
+) {
+    let epoch = Instant::now();
+    let slots = Arc::new(Semaphore::new(limits.max_connections));
+    let conns = Conns::default();
+    let (stopping, stop_rx) = watch::channel(false);
+    let mut tasks = JoinSet::new();
+    let mut stop = pin!(stop);
+    let mut next_id = 0_u64;
+    let signal = loop {
+        let (stream, peer) = tokio::select! {
+            signal = &mut stop => break signal,
+            Some(_) = tasks.join_next(), if !tasks.is_empty() => continue,
+            accepted = listener.accept() => match accepted {
+                Ok(accepted) => accepted,
+                Err(e) if is_connection_error(&e) => continue,
+                Err(e) => {
+                    // EMFILE, ENFILE, ENOBUFS: wait a little rather than spin.
+                    tracing::warn!("review server: cannot accept a connection: {e}");
+                    tokio::select! {
+                        signal = &mut stop => break signal,
+                        () = tokio::time::sleep(ACCEPT_BACKOFF) => continue,
+                    }
+                }
+            },
+        };
+        let permit = if let Ok(permit) = slots.clone().try_acquire_owned() {
+            permit
+        } else {
+            evict_longest_free(&conns);
+            tokio::select! {
+                signal = &mut stop => break signal,
+                permit = slots.clone().acquire_owned() => match permit {
+                    Ok(permit) => permit,
+                    Err(_) => continue, // never closed
+                },
+            }
+        };
+        let conn = Arc::new(Conn::new(epoch));
+        next_id += 1;
+        conns
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .insert(next_id, conn.clone());
+        let registered = Registered {
+            conns: conns.clone(),
+            id: next_id,
+        };
+        let (app, stop_rx) = (app.clone(), stop_rx.clone());
+        tasks.spawn(async move {
+            let _slot = permit;
+            let _registered = registered;
+            serve_connection(stream, peer, conn, app, limits, stop_rx).await;
+        });
+    };
+    say!("review: stopped by {}", signal.name());
+    drop(listener);
+    stopping.send_replace(true);
+    let _ = tokio::time::timeout(limits.shutdown_grace, async {
+        while tasks.join_next().await.is_some() {}
+    })
+    .await;
+    tasks.abort_all();
+}
+
+/// Errors of one incoming connection, not of the listener.
+fn is_connection_error(e: &std::io::Error) -> bool {
+    use std::io::ErrorKind::{ConnectionAborted, ConnectionRefused, ConnectionReset, Interrupted};
+    matches!(
+        e.kind(),
+        ConnectionAborted | ConnectionRefused | ConnectionReset | Interrupted
+    )
+}
+
+/// Serves one connection until it closes, times out (header or stall timeout), is evicted, or the
+/// server stops: then at once if no request is under way, else after its response (the caller cuts
+/// that short after the grace).
+async fn serve_connection(
+    stream: TcpStream,
+    peer: SocketAddr,
+    conn: Arc<Conn>,
+    app: Router,
+    limits: Limits,
+    mut stop: watch::Receiver<bool>,
+) {
+    let routed = TowerToHyperService::new(app);
+    let counted = conn.clone();
+    let service = hyper::service::service_fn(move |mut request: axum::http::Request<Incoming>| {
+        // What `into_make_service_with_connect_info` would add: the peer, for `guard`.
+        request.extensions_mut().insert(ConnectInfo(peer));
+        let busy = Busy::new(counted.clone());
+        let response = routed.call(request);
+        async move {
+            let response = response.await?;
+            Ok::<_, Infallible>(response.map(|body| Tracked { body, _busy: busy }))
+        }
+    });
+    let io = TokioIo::new(Watched {
+        stream,
+        conn: conn.clone(),
+    });
+    let mut http = hyper::server::conn::http1::Builder::new();
+    http.timer(TokioTimer::new())
+        .header_read_timeout(limits.header_timeout);
+    let mut served = pin!(http.serve_connection(io, service));
+    let mut stall = pin!(stalled(&conn, limits.stall_timeout));
+    let mut stopping = false;
+    loop {
+        tokio::select! {
+            // Done, or failed (header timeout, reset by the peer): closed either way.
+            _ = served.as_mut() => return,
+            () = &mut stall => return,
+            () = conn.close.notified() => return,
+            _ = stop.changed(), if !stopping => {
+                stopping = true;
+                if conn.busy.load(Ordering::SeqCst) == 0 {
+                    return;
+                }
+                served.as_mut().graceful_shutdown();
+            }
+        }
+    }
 }
 
 /// Refuses other hosts (peer not on loopback, or a `Host` that is not the printed address) unless the
