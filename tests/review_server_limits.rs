@@ -11,12 +11,14 @@
 // Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::io::{BufRead, BufReader, ErrorKind, Lines, Read, Write};
+use std::io::{BufReader, ErrorKind, Lines, Read, Write};
 use std::net::TcpStream;
 use std::path::{Path, PathBuf};
 use std::process::{Child, ChildStdout, Command, ExitStatus, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
+
+mod common;
 
 /// Wall-clock instant: these tests time a real server's timeouts and exit (no injected clock).
 #[allow(clippy::disallowed_methods)]
@@ -59,7 +61,7 @@ impl Server {
     /// child's pid is the server's), and waits for its URL.
     fn start(extra: &[&str], fd_limit: Option<u32>) -> Self {
         let rec = demo_recording();
-        let mut command = match fd_limit {
+        let command = match fd_limit {
             Some(n) => {
                 let mut c = Command::new("sh");
                 c.arg("-c")
@@ -69,26 +71,7 @@ impl Server {
             }
             None => Command::new(env!("CARGO_BIN_EXE_ergocell")),
         };
-        let mut child = command
-            .current_dir(root())
-            .arg("review")
-            .arg(rec)
-            .args(["--port", "0"])
-            .args(extra)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap();
-        let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
-        let url = loop {
-            let line = lines
-                .next()
-                .expect("server exited before printing its URL")
-                .unwrap();
-            if let Some(u) = line.strip_prefix("review: ") {
-                break u.to_owned();
-            }
-        };
+        let (child, url, lines) = common::spawn_review(command, &root(), rec, extra);
         let authority = url
             .trim_start_matches("http://")
             .trim_end_matches('/')

@@ -2,9 +2,9 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, dead_code)]
 
-use std::io::{BufRead, BufReader};
+use std::io::{BufRead, BufReader, Lines};
 use std::path::Path;
-use std::process::{Child, Command, Stdio};
+use std::process::{Child, ChildStdout, Command, Stdio};
 
 /// A running `ergocell review` and the URL it printed.
 pub struct ReviewServer {
@@ -18,27 +18,13 @@ pub struct ReviewServer {
 impl ReviewServer {
     /// Starts `ergocell review <rec> --port 0 <extra>` in `root` and waits for its URL.
     pub fn start(root: &Path, rec: &Path, extra: &[&str]) -> Self {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-            .current_dir(root)
-            .arg("review")
-            .arg(rec)
-            .args(["--port", "0"])
-            .args(extra)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap();
         // The reader is dropped after the URL line: the server must survive a closed stdout.
-        let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
-        let url = loop {
-            let line = lines
-                .next()
-                .expect("server exited before printing its URL")
-                .unwrap();
-            if let Some(u) = line.strip_prefix("review: ") {
-                break u.to_owned();
-            }
-        };
+        let (child, url, _lines) = spawn_review(
+            Command::new(env!("CARGO_BIN_EXE_ergocell")),
+            root,
+            rec,
+            extra,
+        );
         let authority = url
             .trim_start_matches("http://")
             .trim_end_matches('/')
@@ -51,6 +37,38 @@ impl ReviewServer {
             port,
         }
     }
+}
+
+/// Runs `command review <rec> --port 0 <extra>` in `root` (`command` is the binary, or a wrapper
+/// that `exec`s it) and reads its stdout up to the URL it prints: the child, the URL and the rest
+/// of its stdout.
+pub fn spawn_review(
+    mut command: Command,
+    root: &Path,
+    rec: &Path,
+    extra: &[&str],
+) -> (Child, String, Lines<BufReader<ChildStdout>>) {
+    let mut child = command
+        .current_dir(root)
+        .arg("review")
+        .arg(rec)
+        .args(["--port", "0"])
+        .args(extra)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+    let url = loop {
+        let line = lines
+            .next()
+            .expect("server exited before printing its URL")
+            .unwrap();
+        if let Some(u) = line.strip_prefix("review: ") {
+            break u.to_owned();
+        }
+    };
+    (child, url, lines)
 }
 
 impl Drop for ReviewServer {
