@@ -168,3 +168,29 @@ fn demo_refuses_a_missing_explicit_path_and_a_typo_in_the_cell_file() {
     );
     assert!(!dir.0.join("ergocell-demo.mcap").exists(), "nothing ran");
 }
+
+/// #18: a demo killed outright (kill -9) left its temporary folder behind. The next demo removes
+/// the folders of demo processes that are gone (and only those: a live one's stays).
+#[test]
+fn a_killed_demos_temp_folder_is_removed_by_the_next_demo() {
+    let tmp = Scratch::new("demo-tmpdir");
+    // pid_max is at most 4194304 on Linux: this process cannot exist.
+    let stale = tmp.0.join("ergocell-demo-4999999");
+    std::fs::create_dir_all(stale.join("approvals")).unwrap();
+    std::fs::write(stale.join("approvals/c2.toml"), "# DEMO APPROVAL\n").unwrap();
+    let live = tmp.0.join(format!("ergocell-demo-{}", std::process::id()));
+    std::fs::create_dir_all(live.join("approvals")).unwrap();
+    let run = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&tmp.0)
+        .env("TMPDIR", &tmp.0)
+        .args(["--log", "error", "demo", "--cycles", "1", "--no-faults"])
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(!stale.exists(), "the dead demo's folder is removed");
+    assert!(live.exists(), "a live process's folder is left alone");
+}

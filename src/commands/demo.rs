@@ -129,6 +129,37 @@ impl Drop for TempDir {
     }
 }
 
+/// The folders of demo runs that were killed outright (kill -9 leaves no chance to clean up) are
+/// removed by the next demo: `ergocell-demo-<pid>` in the temporary folder whose process is gone and
+/// which holds nothing but the demo's `approvals/`. Only where `/proc` tells which processes live.
+fn remove_stale_demo_dirs(tmp: &std::path::Path) {
+    if !std::path::Path::new("/proc/self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(tmp) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(pid) = name
+            .to_str()
+            .and_then(|n| n.strip_prefix("ergocell-demo-"))
+            .and_then(|p| p.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        if pid == std::process::id() || std::path::Path::new(&format!("/proc/{pid}")).exists() {
+            continue;
+        }
+        let path = entry.path();
+        let only_approvals = std::fs::read_dir(&path)
+            .is_ok_and(|mut it| it.all(|f| f.is_ok_and(|f| f.file_name() == "approvals")));
+        if only_approvals {
+            let _ = std::fs::remove_dir_all(&path);
+        }
+    }
+}
+
 fn secs(t: i64, start: i64) -> f64 {
     (t - start) as f64 * 1e-9
 }
@@ -194,6 +225,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let (rig, _) = parse_rig(&rig_text, &rig_label).map_err(|e| UsageError(e.to_string()))?;
 
     // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
+    remove_stale_demo_dirs(&std::env::temp_dir());
     let demo_dir =
         TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
     let approvals_dir = demo_dir.0.join("approvals");
