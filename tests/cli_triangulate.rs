@@ -121,11 +121,9 @@ fn write_openpose(
     truth
 }
 
-#[test]
-fn openpose_body25_folders_triangulate_to_the_true_body_and_ignore_the_bystander() {
-    let rig = reference_rig();
-    let dir = tmp("openpose_body25");
-    let truth = write_openpose(&dir, &rig, 6);
+/// `ergocell triangulate` of a BODY_25 OpenPose folder (10 Hz) on the reference rig into
+/// `<dir>/out.trc`: stdout, stderr and the frames read back; the command must succeed.
+fn triangulate_body25(dir: &Path) -> (String, String, Vec<ergocell_skeleton::Skeleton3>) {
     let out = dir.join("out.trc");
     let (code, stdout, stderr) = ergocell(&[
         "triangulate",
@@ -137,17 +135,27 @@ fn openpose_body25_folders_triangulate_to_the_true_body_and_ignore_the_bystander
         "body_25",
         "--rate-hz",
         "10",
+        "--force",
         "--out",
         out.to_str().unwrap(),
     ]);
     assert_eq!(code, 0, "{stdout}\n{stderr}");
-    assert!(stdout.contains("frames:                   6"), "{stdout}");
     let frames = read_landmarks(
         &std::fs::read_to_string(&out).unwrap(),
         LandmarksFormat::Trc,
         "out.trc",
     )
     .unwrap();
+    (stdout, stderr, frames)
+}
+
+#[test]
+fn openpose_body25_folders_triangulate_to_the_true_body_and_ignore_the_bystander() {
+    let rig = reference_rig();
+    let dir = tmp("openpose_body25");
+    let truth = write_openpose(&dir, &rig, 6);
+    let (stdout, _, frames) = triangulate_body25(&dir);
+    assert!(stdout.contains("frames:                   6"), "{stdout}");
     assert_eq!(frames.len(), 6);
     let mut compared = 0;
     for (skeleton, truth) in frames.iter().zip(&truth) {
@@ -240,32 +248,11 @@ fn openpose_frames_paired_by_file_order_a_missing_file_no_longer_shifts_later_fr
     let truth = write_openpose(&dir, &rig, 6);
     let cam0 = rig.cameras()[0].id.as_str().to_owned();
     std::fs::remove_file(dir.join(format!("{cam0}_json/frame_000002_keypoints.json"))).unwrap();
-    let out = dir.join("out.trc");
-    let (code, stdout, stderr) = ergocell(&[
-        "triangulate",
-        "--calibration",
-        repo().join("config/rig.toml").to_str().unwrap(),
-        "--detections",
-        dir.to_str().unwrap(),
-        "--keypoints",
-        "body_25",
-        "--rate-hz",
-        "10",
-        "--force",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert_eq!(code, 0, "{stdout}\n{stderr}");
+    let (_, stderr, frames) = triangulate_body25(&dir);
     assert!(
         stderr.contains("missing"),
         "the missing view is reported: {stderr}"
     );
-    let frames = read_landmarks(
-        &std::fs::read_to_string(&out).unwrap(),
-        LandmarksFormat::Trc,
-        "out.trc",
-    )
-    .unwrap();
     assert_eq!(frames.len(), 6);
     for (k, (skeleton, truth)) in frames.iter().zip(&truth).enumerate() {
         let p = skeleton.position(Landmark::LeftShoulder).unwrap();

@@ -76,7 +76,6 @@ impl CellSettings {
         let file: CellFile = toml::from_str(text).map_err(|e| err(e.to_string()))?;
         // [robot] and [station] are the robot crate's: validated by it, as the locks read them.
         ergocell_robot::CellConfig::from_toml_str(text).map_err(|e| err(e.to_string()))?;
-        let _ = (&file.robot, &file.ros);
         let settings = Self {
             session: file.session.to_config(&file.station).map_err(err)?,
             station: file.station,
@@ -338,9 +337,13 @@ fn landmarks(key: &str, v: usize) -> Result<(), String> {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct CellFile {
+    // [robot] and [ros] are their owners' (validated by the robot crate, read by the bridge): named
+    // here only so that `deny_unknown_fields` knows them.
+    #[allow(dead_code)]
     robot: toml::Table,
     station: StationConfig,
     #[serde(default)]
+    #[allow(dead_code)]
     ros: Option<toml::Table>,
     #[serde(default)]
     session: SessionFile,

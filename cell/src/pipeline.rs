@@ -26,7 +26,6 @@
 //! stature measured while the operator walks in) and only until the first decision, which is final:
 //! the class is decided once per session. RULA runs on the filtered skeleton of every tracked frame.
 
-use ergocell_ergonomics::warnings::WarningKind;
 use ergocell_ergonomics::{
     AssessmentConfig, ErgonomicsError, FrameAssessment, HeightConfig, HeightDecision,
     HeightEstimator, HeightStatus, RulaAssessor, UpVector, WarningConfig, WarningEvent,
@@ -116,15 +115,6 @@ pub struct TrackedFrame {
     pub height: Option<HeightDecision>,
 }
 
-impl TrackedFrame {
-    /// Warnings of this frame that were raised (not changed or cleared).
-    pub fn raised(&self) -> impl Iterator<Item = &WarningEvent> {
-        self.warnings
-            .iter()
-            .filter(|w| w.kind == WarningKind::Raised)
-    }
-}
-
 /// What the reconstruction stage made of one frame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Reconstructed {
@@ -182,11 +172,6 @@ impl Reconstruction {
         frames
     }
 
-    /// The frames still waiting for cameras (end of a stream).
-    pub fn flush(&mut self) -> Vec<Frame2> {
-        self.assembler.flush()
-    }
-
     /// One time-aligned frame: fused, gated, filtered.
     pub fn process_frame(&mut self, frame: &Frame2) -> Result<Reconstructed, PerceptionError> {
         let fused = self.fusion.fuse(frame)?;
@@ -202,11 +187,6 @@ impl Reconstruction {
             fused,
             tracked,
         })
-    }
-
-    /// Views that arrived after their frame was released (dropped).
-    pub fn late_views(&self) -> usize {
-        self.assembler.late_views()
     }
 }
 
@@ -307,12 +287,6 @@ impl Pipeline {
         frames.iter().map(|f| self.process_frame(f)).collect()
     }
 
-    /// Releases the frames still waiting for cameras (end of a stream) and runs them.
-    pub fn flush(&mut self) -> Vec<Result<FrameOutput, PerceptionError>> {
-        let frames = self.reconstruction.flush();
-        frames.iter().map(|f| self.process_frame(f)).collect()
-    }
-
     /// One time-aligned frame through both stages.
     pub fn process_frame(&mut self, frame: &Frame2) -> Result<FrameOutput, PerceptionError> {
         let r = self.reconstruction.process_frame(frame)?;
@@ -329,11 +303,6 @@ impl Pipeline {
     /// Where the height measurement stands (decided, or still measuring and why).
     pub fn height_status(&self) -> HeightStatus {
         self.assessment.height_status()
-    }
-
-    /// Views that arrived after their frame was released (dropped).
-    pub fn late_views(&self) -> usize {
-        self.reconstruction.late_views()
     }
 }
 

@@ -57,7 +57,6 @@ pub struct SessionMachine {
     config: SessionConfig,
     pairs: Vec<(usize, usize)>,
     pipeline: Pipeline,
-    up: UpVector,
     provider: Box<dyn TrajectoryProvider>,
     state: SessionState,
     cameras: Vec<CameraHealth>,
@@ -98,7 +97,8 @@ impl SessionMachine {
         pipeline: PipelineConfig,
         provider: Box<dyn TrajectoryProvider>,
     ) -> Result<Self, CellError> {
-        let up = rig_up(&rig)?;
+        // RULA and the height need the world's vertical: a rig without one cannot carry a session.
+        rig_up(&rig)?;
         let pairs = rig.pairs().iter().map(|p| (p.left, p.right)).collect();
         let cameras = rig
             .cameras()
@@ -114,7 +114,6 @@ impl SessionMachine {
             config,
             pairs,
             pipeline: Pipeline::new(rig, pipeline)?,
-            up,
             provider,
             state: SessionState::WaitingForOperator,
             cameras,
@@ -806,7 +805,7 @@ impl SessionMachine {
 
     /// The world's up vector the session uses.
     pub fn up(&self) -> &UpVector {
-        &self.up
+        &self.pipeline.config().assessment.up
     }
 }
 
