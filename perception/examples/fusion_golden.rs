@@ -82,6 +82,7 @@ fn compare(a: &Path, b: &Path) {
     let a = std::fs::read_to_string(a).unwrap();
     let b = std::fs::read_to_string(b).unwrap();
     let (mut worst, mut worst_at, mut presence, mut counts, mut values) = (0.0_f64, "", 0, 0, 0);
+    let mut per_run: std::collections::BTreeMap<&str, f64> = std::collections::BTreeMap::new();
     for (la, lb) in a.lines().zip(b.lines()) {
         let (ka, va) = la.rsplit_once(' ').unwrap();
         let (kb, vb) = lb.rsplit_once(' ').unwrap();
@@ -94,12 +95,20 @@ fn compare(a: &Path, b: &Path) {
         let (x, y): (f64, f64) = (va.parse().unwrap(), vb.parse().unwrap());
         if x.is_nan() != y.is_nan() {
             presence += 1;
-        } else if !x.is_nan() && (x - y).abs() > worst {
-            worst = (x - y).abs();
-            worst_at = ka;
+        } else if !x.is_nan() {
+            let run = ka.split(' ').next().unwrap_or("");
+            let e = per_run.entry(run).or_default();
+            *e = e.max((x - y).abs());
+            if (x - y).abs() > worst {
+                worst = (x - y).abs();
+                worst_at = ka;
+            }
         }
     }
     assert_eq!(a.lines().count(), b.lines().count(), "different lengths");
+    for (run, w) in &per_run {
+        println!("{run:>20}: largest change {w:.3e} m");
+    }
     println!(
         "{values} coordinates: largest change {worst:.3e} m (at {worst_at}); {presence} present in one only; {counts} frames with a different rejected-view count"
     );

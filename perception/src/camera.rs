@@ -154,7 +154,8 @@ impl Distortion {
             let dx = 2.0 * self.p1 * x * y + self.p2 * (r2 + 2.0 * x * x);
             let dy = self.p1 * (r2 + 2.0 * y * y) + 2.0 * self.p2 * x * y;
             if radial.abs() > 1e-6 {
-                Vector2::new((x - dx) / radial, (y - dy) / radial)
+                let inv = 1.0 / radial;
+                Vector2::new((x - dx) * inv, (y - dy) * inv)
             } else {
                 d
             }
@@ -162,7 +163,16 @@ impl Distortion {
         for _ in 0..50 {
             let (value, jacobian) = self.distort_with_jacobian(p);
             let residual = value - d;
-            let step = jacobian.try_inverse()? * residual;
+            // the 2×2 inverse written out: one division, not one per entry
+            let det = jacobian[(0, 0)] * jacobian[(1, 1)] - jacobian[(0, 1)] * jacobian[(1, 0)];
+            if det == 0.0 || !det.is_finite() {
+                return None;
+            }
+            let inv_det = 1.0 / det;
+            let step = Vector2::new(
+                (jacobian[(1, 1)] * residual.x - jacobian[(0, 1)] * residual.y) * inv_det,
+                (jacobian[(0, 0)] * residual.y - jacobian[(1, 0)] * residual.x) * inv_det,
+            );
             p -= step;
             if !(p.x.is_finite() && p.y.is_finite()) {
                 return None;
@@ -174,6 +184,67 @@ impl Distortion {
             }
         }
         ((self.distort(p) - d).norm() < 1e-9).then_some(p)
+    }
+}
+
+impl Distortion {
+    /// [`Distortion::undistort`] of many points at once, in place: `points[i]` becomes its
+    /// undistorted value, or `None`. The same iteration (OpenCV's first iterate, then Newton until a
+    /// step is below 1e-6) run in lockstep: two Newton steps for every point in straight loops with
+    /// no data-dependent branch, so the processor overlaps the points' long dependency chains
+    /// (one point alone is latency-bound: 45 ns on the CI machine); a point whose second step is not
+    /// yet below 1e-6, or whose iteration failed, is redone by [`Distortion::undistort`]. A point
+    /// that `undistort` would have accepted after one step gets one more (smaller than 1e-12):
+    /// the same answer to ≈ 1e-13.
+    pub fn undistort_many(&self, points: &mut [Option<Vector2<f64>>]) {
+        const LANES: usize = 16;
+        if self.is_zero() {
+            return;
+        }
+        for chunk in points.chunks_mut(LANES) {
+            let n = chunk.len();
+            let mut d = [Vector2::zeros(); LANES];
+            let mut p = [Vector2::zeros(); LANES];
+            let mut last = [f64::INFINITY; LANES];
+            for k in 0..n {
+                // absent points run through the lanes as the origin and are left as they are
+                d[k] = chunk[k].unwrap_or_else(Vector2::zeros);
+                let (x, y) = (d[k].x, d[k].y);
+                let r2 = x * x + y * y;
+                let radial = 1.0 + r2 * (self.k1 + r2 * (self.k2 + r2 * self.k3));
+                let dx = 2.0 * self.p1 * x * y + self.p2 * (r2 + 2.0 * x * x);
+                let dy = self.p1 * (r2 + 2.0 * y * y) + 2.0 * self.p2 * x * y;
+                let inv = 1.0 / radial;
+                p[k] = if radial.abs() > 1e-6 {
+                    Vector2::new((x - dx) * inv, (y - dy) * inv)
+                } else {
+                    d[k]
+                };
+            }
+            for _ in 0..2 {
+                for k in 0..n {
+                    let (value, j) = self.distort_with_jacobian(p[k]);
+                    let r = value - d[k];
+                    let det = j[(0, 0)] * j[(1, 1)] - j[(0, 1)] * j[(1, 0)];
+                    let inv_det = 1.0 / det;
+                    let step = Vector2::new(
+                        (j[(1, 1)] * r.x - j[(0, 1)] * r.y) * inv_det,
+                        (j[(0, 0)] * r.y - j[(1, 0)] * r.x) * inv_det,
+                    );
+                    p[k] -= step;
+                    // NaN (a zero determinant, an overflow) fails the test below
+                    last[k] = step.norm_squared();
+                }
+            }
+            for k in 0..n {
+                let Some(original) = chunk[k] else { continue };
+                chunk[k] = if last[k] < 1e-12 && p[k].x.is_finite() && p[k].y.is_finite() {
+                    Some(p[k])
+                } else {
+                    self.undistort(original)
+                };
+            }
+        }
     }
 }
 
@@ -477,6 +548,51 @@ mod tests {
             let back = cam.pixel_to_normalized(&px).unwrap();
             assert_relative_eq!(back, n, epsilon = 1e-10);
         }
+    }
+
+    #[test]
+    fn undistorting_many_points_agrees_with_one_at_a_time() {
+        let d = Distortion {
+            k1: -0.338,
+            k2: 0.0967,
+            p1: -0.00135,
+            p2: 0.00316,
+            k3: -0.00375,
+        };
+        // a grid over a 16:9 image's normalized extent, beyond its corners, and points outside the
+        // model's valid range (where both must fail alike)
+        let mut pts: Vec<Option<Vector2<f64>>> = Vec::new();
+        for i in 0..41 {
+            for j in 0..23 {
+                let x = -1.2 + 2.4 * f64::from(i) / 40.0;
+                let y = -0.7 + 1.4 * f64::from(j) / 22.0;
+                pts.push(Some(Vector2::new(x, y)));
+            }
+        }
+        pts.extend([
+            None,
+            Some(Vector2::new(40.0, -30.0)),
+            Some(Vector2::new(1e200, 0.0)),
+            None,
+        ]);
+        let mut many = pts.clone();
+        d.undistort_many(&mut many);
+        let mut failed = 0;
+        for (p, m) in pts.iter().zip(&many) {
+            match (p.and_then(|p| d.undistort(p)), m) {
+                (Some(a), Some(b)) => assert_relative_eq!(a, *b, epsilon = 1e-12),
+                (None, None) => failed += 1,
+                (a, b) => panic!("{p:?}: one at a time {a:?}, many {b:?}"),
+            }
+        }
+        assert!(
+            failed >= 3,
+            "the absent and the out-of-range points: {failed}"
+        );
+        // with no distortion nothing changes
+        let mut same = pts.clone();
+        Distortion::default().undistort_many(&mut same);
+        assert_eq!(same, pts);
     }
 
     #[test]

@@ -192,6 +192,7 @@ impl FusionEngine {
                 let mut views = std::mem::take(&mut self.scratch_views);
                 let mut points = [None; LANDMARK_COUNT];
                 let mut information = [Matrix3::zeros(); LANDMARK_COUNT];
+                let mut covariance = [None; LANDMARK_COUNT];
                 let mut masks = [0u64; LANDMARK_COUNT];
                 for lm in Landmark::ALL {
                     let o = &obs[lm.index()];
@@ -212,11 +213,15 @@ impl FusionEngine {
                     rejected_views += views.len() - t.views_used() as usize;
                     points[lm.index()] = Some(t.point);
                     information[lm.index()] = t.information;
+                    // what the prior's `covariance_of` computes, already inverted (information
+                    // from a triangulation is never all zeros)
+                    covariance[lm.index()] =
+                        Some(t.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
                     masks[lm.index()] = t.used_mask;
                 }
                 rejected_views += drop_off_body(&mut points, &masks);
                 if let Some(prior) = self.bone_prior.as_mut() {
-                    prior.observe(&points, &information);
+                    prior.observe_with_covariance(&points, &covariance);
                     prior.refine(&mut points, &information);
                 }
                 for lm in Landmark::ALL {
@@ -342,15 +347,30 @@ impl FusionEngine {
         let mut failures = 0;
         for view in &frame.views {
             let camera = &self.rig.cameras()[view.camera];
-            for (i, k) in view.keypoints().iter().enumerate() {
-                let Some(k) = k else { continue };
-                match camera.pixel_to_normalized(&k.pixel()) {
-                    Ok(n) => obs[i].push(Obs {
+            let k = &camera.intrinsics;
+            // distorted normalized coordinates of every keypoint, then all undistorted at once
+            let mut points: [Option<Vector2<f64>>; LANDMARK_COUNT] = [None; LANDMARK_COUNT];
+            for (slot, kp) in points.iter_mut().zip(view.keypoints()) {
+                let Some(kp) = kp else { continue };
+                let px = kp.pixel();
+                if px.x.is_finite() && px.y.is_finite() {
+                    let yd = (px.y - k.cy) / k.fy;
+                    *slot = Some(Vector2::new((px.x - k.cx - k.skew * yd) / k.fx, yd));
+                } else {
+                    failures += 1;
+                }
+            }
+            camera.distortion.undistort_many(&mut points);
+            for (i, (kp, n)) in view.keypoints().iter().zip(points).enumerate() {
+                let Some(kp) = kp else { continue };
+                match n {
+                    Some(n) => obs[i].push(Obs {
                         camera: view.camera,
                         normalized: n,
-                        confidence: k.confidence(),
+                        confidence: kp.confidence(),
                     }),
-                    Err(_) => failures += 1,
+                    None if kp.pixel().x.is_finite() && kp.pixel().y.is_finite() => failures += 1,
+                    None => {}
                 }
             }
         }

@@ -184,6 +184,8 @@ pub struct Triangulated {
     /// last Gauss–Newton step. Depth along narrow-baseline rays is weakly constrained; this says how
     /// weakly, per direction.
     pub information: Matrix3<f64>,
+    /// `information⁻¹` (m²): the covariance of `point` under the noise model.
+    pub covariance: Matrix3<f64>,
 }
 
 impl Triangulated {
@@ -262,9 +264,10 @@ impl RobustTriangulator {
                 views: mask.count_ones() as usize,
             });
         }
+        let pixel_terms = self.pixel_terms(views, mask);
         let mut point = self.linear_estimate(views, mask)?;
         let mut information;
-        (point, information) = self.refine(views, mask, point)?;
+        (point, information) = self.refine(views, &pixel_terms, mask, point)?;
         // Cheirality: a view that puts the point behind its camera is dropped.
         loop {
             let behind = iter_mask(mask).find(|&i| depth(&views[i], &point) <= 0.0);
@@ -276,43 +279,55 @@ impl RobustTriangulator {
                 });
             }
             point = self.linear_estimate(views, mask)?;
-            (point, information) = self.refine(views, mask, point)?;
+            (point, information) = self.refine(views, &pixel_terms, mask, point)?;
         }
-        // Greedy outlier-view rejection.
-        while mask.count_ones() > 2 {
-            let (worst, err) = iter_mask(mask)
-                .map(|i| {
-                    (
-                        i,
-                        self.whitened(&views[i], &point)
-                            .map_or(f64::INFINITY, |r| r.norm()),
-                    )
-                })
-                .fold(
-                    (usize::MAX, -1.0),
-                    |best, x| if x.1 > best.1 { x } else { best },
-                );
-            if err <= self.outlier_sigmas {
-                break;
+        // Greedy outlier-view rejection, and the pixel error of the views kept: one projection of
+        // the point per view and round.
+        let (sq, conf) = loop {
+            let judge = mask.count_ones() > 2;
+            let (mut worst, mut worst_err) = (usize::MAX, -1.0);
+            let (mut sq, mut conf, mut behind) = (0.0, 0.0, false);
+            for i in iter_mask(mask) {
+                let v = &views[i];
+                let pc = v.R_camera_world * point.coords + v.t_camera_world;
+                let err = if pc.z > 1e-9 {
+                    let ex = pc.x / pc.z - v.normalized.x;
+                    let ey = pc.y / pc.z - v.normalized.y;
+                    let (px, py) = (ex * v.focal_px.x, ey * v.focal_px.y);
+                    sq += px * px + py * py;
+                    conf += v.confidence;
+                    if judge {
+                        let s2 = self.variance_normalized(&pixel_terms[i], 1.0 / pc.z);
+                        (ex * ex / s2.x + ey * ey / s2.y).sqrt()
+                    } else {
+                        0.0
+                    }
+                } else {
+                    behind = true;
+                    f64::INFINITY
+                };
+                if err > worst_err {
+                    (worst, worst_err) = (i, err);
+                }
             }
-            mask &= !(1 << worst);
-            (point, information) = self.refine(views, mask, point)?;
-        }
-        let (mut sq, mut conf) = (0.0, 0.0);
-        for i in iter_mask(mask) {
-            let r = residual_px(&views[i], &point).ok_or(PerceptionError::Degenerate)?;
-            sq += r.norm_squared();
-            conf += views[i].confidence;
-        }
-        let sigma_m = information
-            .try_inverse()
-            .map_or(f64::INFINITY, |cov| cov.trace().max(0.0).sqrt());
-        if sigma_m.is_nan() || sigma_m > self.max_position_sigma_m {
+            if judge && worst_err > self.outlier_sigmas {
+                mask &= !(1 << worst);
+                (point, information) = self.refine(views, &pixel_terms, mask, point)?;
+                continue;
+            }
+            if behind {
+                return Err(PerceptionError::Degenerate);
+            }
+            break (sq, conf);
+        };
+        let covariance = information.try_inverse();
+        let sigma_m = covariance.map_or(f64::INFINITY, |cov| cov.trace().max(0.0).sqrt());
+        let Some(covariance) = covariance.filter(|_| sigma_m <= self.max_position_sigma_m) else {
             return Err(PerceptionError::Unconstrained {
                 sigma_m,
                 limit_m: self.max_position_sigma_m,
             });
-        }
+        };
         let n = f64::from(mask.count_ones());
         Ok(Triangulated {
             point,
@@ -320,82 +335,89 @@ impl RobustTriangulator {
             used_mask: mask,
             mean_confidence: conf / n,
             information,
+            covariance,
         })
     }
 
-    /// Per-axis standard deviation of a view's error in normalized image units at depth `z`.
-    fn sigma_normalized(&self, v: &NormalizedView, z: f64) -> Vector2<f64> {
-        let body = self.body_noise_m / z;
-        Vector2::new(
-            ((self.pixel_noise_px / v.focal_px.x).powi(2) + body * body).sqrt(),
-            ((self.pixel_noise_px / v.focal_px.y).powi(2) + body * body).sqrt(),
-        )
+    /// Per view, the pixel floor of the noise model in normalized units, squared, per axis:
+    /// `(σ_px / f)²` (the part of σ that does not depend on depth).
+    fn pixel_terms(&self, views: &[NormalizedView], mask: u64) -> [Vector2<f64>; MAX_VIEWS] {
+        let mut out = [Vector2::zeros(); MAX_VIEWS];
+        for i in iter_mask(mask) {
+            let f = &views[i].focal_px;
+            let (a, b) = (self.pixel_noise_px / f.x, self.pixel_noise_px / f.y);
+            out[i] = Vector2::new(a * a, b * b);
+        }
+        out
     }
 
-    /// A view's residual in standard deviations of the noise model; `None` behind the camera.
-    fn whitened(&self, v: &NormalizedView, p: &Point3<f64>) -> Option<Vector2<f64>> {
-        let pc = v.R_camera_world * p.coords + v.t_camera_world;
-        (pc.z > 1e-9).then(|| {
-            let s = self.sigma_normalized(v, pc.z);
-            Vector2::new(
-                (pc.x / pc.z - v.normalized.x) / s.x,
-                (pc.y / pc.z - v.normalized.y) / s.y,
-            )
-        })
+    /// Per-axis variance of a view's error in normalized image units at inverse depth `inv_z`,
+    /// from its [`Self::pixel_terms`] entry.
+    #[inline]
+    fn variance_normalized(&self, pixel_term: &Vector2<f64>, inv_z: f64) -> Vector2<f64> {
+        let body = self.body_noise_m * inv_z;
+        let body2 = body * body;
+        Vector2::new(pixel_term.x + body2, pixel_term.y + body2)
     }
 
     /// Iteratively reweighted Gauss–Newton on the whitened, confidence-weighted, Huber-robust error.
     fn refine(
         &self,
         views: &[NormalizedView],
+        pixel_terms: &[Vector2<f64>; MAX_VIEWS],
         mask: u64,
         start: Point3<f64>,
     ) -> Result<(Point3<f64>, Matrix3<f64>)> {
-        // σ of each view at the starting depth (depths change by millimetres during refinement, σ by
-        // far less than its own uncertainty): computed once, not per iteration.
-        let mut sigma = [Vector2::zeros(); MAX_VIEWS];
+        // 1/σ of each view at the starting depth (depths change by millimetres during refinement,
+        // σ by far less than its own uncertainty): computed once, not per iteration.
+        let mut inv_sigma = [Vector2::zeros(); MAX_VIEWS];
         for i in iter_mask(mask) {
             let z = depth(&views[i], &start);
-            sigma[i] = self.sigma_normalized(&views[i], if z > 1e-9 { z } else { 1.0 });
+            let s2 =
+                self.variance_normalized(&pixel_terms[i], if z > 1e-9 { 1.0 / z } else { 1.0 });
+            inv_sigma[i] = Vector2::new(1.0 / s2.x.sqrt(), 1.0 / s2.y.sqrt());
         }
+        let huber2 = self.huber_sigmas * self.huber_sigmas;
         let mut x = start;
         let mut information = Matrix3::zeros();
         for _ in 0..self.iterations {
-            let mut h = Matrix3::zeros();
+            let mut h = Sym3::default();
             let mut g = Vector3::zeros();
             for i in iter_mask(mask) {
                 let v = &views[i];
-                let pc = v.R_camera_world * x.coords + v.t_camera_world;
+                let r = &v.R_camera_world;
+                let pc = r * x.coords + v.t_camera_world;
                 if pc.z <= 1e-9 {
                     continue;
                 }
                 let inv_z = 1.0 / pc.z;
-                let (sx, sy) = (1.0 / sigma[i].x, 1.0 / sigma[i].y);
-                let r = Vector2::new(
-                    (pc.x * inv_z - v.normalized.x) * sx,
-                    (pc.y * inv_z - v.normalized.y) * sy,
-                );
-                let norm2 = r.norm_squared();
-                let huber = if norm2 > self.huber_sigmas * self.huber_sigmas {
+                let (u, w) = (pc.x * inv_z, pc.y * inv_z);
+                let (sx, sy) = (inv_sigma[i].x, inv_sigma[i].y);
+                let (r0, r1) = ((u - v.normalized.x) * sx, (w - v.normalized.y) * sy);
+                let norm2 = r0 * r0 + r1 * r1;
+                let huber = if norm2 > huber2 {
                     self.huber_sigmas / norm2.sqrt()
                 } else {
                     1.0
                 };
-                let w = v.confidence * huber;
-                // d(whitened residual)/d(p_camera)
-                let jp = nalgebra::Matrix2x3::new(
-                    inv_z * sx,
-                    0.0,
-                    -pc.x * inv_z * inv_z * sx,
-                    0.0,
-                    inv_z * sy,
-                    -pc.y * inv_z * inv_z * sy,
+                let weight = v.confidence * huber;
+                // rows of d(whitened residual)/d(p_world): (R₀ − u·R₂)/z·sx and (R₁ − w·R₂)/z·sy
+                let (ax, ay) = (inv_z * sx, inv_z * sy);
+                let j0 = Vector3::new(
+                    (r[(0, 0)] - u * r[(2, 0)]) * ax,
+                    (r[(0, 1)] - u * r[(2, 1)]) * ax,
+                    (r[(0, 2)] - u * r[(2, 2)]) * ax,
                 );
-                let j = jp * v.R_camera_world;
-                let jw = j.transpose() * w;
-                h += jw * j;
-                g += jw * r;
+                let j1 = Vector3::new(
+                    (r[(1, 0)] - w * r[(2, 0)]) * ay,
+                    (r[(1, 1)] - w * r[(2, 1)]) * ay,
+                    (r[(1, 2)] - w * r[(2, 2)]) * ay,
+                );
+                h.add_outer(&j0, weight);
+                h.add_outer(&j1, weight);
+                g += j0 * (weight * r0) + j1 * (weight * r1);
             }
+            let h = h.to_matrix();
             let step = solve_normal3(&h, &g)?;
             information = h;
             x -= step;
@@ -415,39 +437,109 @@ impl RobustTriangulator {
     /// round knows no depth and uses the body term only; the second uses the first round's depths.
     fn linear_estimate(&self, views: &[NormalizedView], mask: u64) -> Result<Point3<f64>> {
         let mut point: Option<Point3<f64>> = None;
+        let body2 = self.body_noise_m * self.body_noise_m;
         for _round in 0..2 {
-            let mut ata = Matrix3::zeros();
+            let mut ata = Sym3::default();
             let mut atb = Vector3::zeros();
             for i in iter_mask(mask) {
                 let v = &views[i];
                 let r = &v.R_camera_world;
                 let t = &v.t_camera_world;
-                let z = point
-                    .map(|p| (r.row(2) * p.coords)[0] + t.z)
-                    .filter(|z| *z > 1e-6);
+                let r2 = Vector3::new(r[(2, 0)], r[(2, 1)], r[(2, 2)]);
+                let z = point.map(|p| r2.dot(&p.coords) + t.z).filter(|z| *z > 1e-6);
                 let f = 0.5 * (v.focal_px.x + v.focal_px.y);
                 let sigma_m = match z {
                     Some(z) => {
-                        ((self.pixel_noise_px * z / f).powi(2) + self.body_noise_m.powi(2)).sqrt()
+                        let a = self.pixel_noise_px * z / f;
+                        (a * a + body2).sqrt()
                     }
                     None => self.body_noise_m.max(1e-3),
                 };
                 let w = v.confidence.sqrt() / sigma_m;
                 for (c, axis) in [(v.normalized.x, 0usize), (v.normalized.y, 1usize)] {
                     // (c·r3 − r_axis)·X = −(c·t3 − t_axis): the error c·Z − X_axis, metres at the point
-                    let row = (r.row(2) * c - r.row(axis)) * w;
+                    let row = Vector3::new(
+                        (r2.x * c - r[(axis, 0)]) * w,
+                        (r2.y * c - r[(axis, 1)]) * w,
+                        (r2.z * c - r[(axis, 2)]) * w,
+                    );
                     let rhs = -(c * t.z - t[axis]) * w;
-                    ata += row.transpose() * row;
-                    atb += row.transpose() * rhs;
+                    ata.add_outer(&row, 1.0);
+                    atb += row * rhs;
                 }
             }
-            let p = Point3::from(solve_normal3(&ata, &atb)?);
+            let p = Point3::from(solve_normal3(&ata.to_matrix(), &atb)?);
             if !p.coords.iter().all(|x| x.is_finite()) {
                 return Err(PerceptionError::Degenerate);
             }
             point = Some(p);
         }
         point.ok_or(PerceptionError::Degenerate)
+    }
+}
+
+/// A symmetric 3×3 matrix accumulated from outer products, its six distinct entries only.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Sym3 {
+    xx: f64,
+    xy: f64,
+    xz: f64,
+    yy: f64,
+    yz: f64,
+    zz: f64,
+}
+
+impl Sym3 {
+    /// Adds `w·v·vᵀ`.
+    #[inline]
+    pub(crate) fn add_outer(&mut self, v: &Vector3<f64>, w: f64) {
+        let (a, b, c) = (v.x * w, v.y * w, v.z * w);
+        self.xx += a * v.x;
+        self.xy += a * v.y;
+        self.xz += a * v.z;
+        self.yy += b * v.y;
+        self.yz += b * v.z;
+        self.zz += c * v.z;
+    }
+
+    /// The symmetric part of a matrix (its upper triangle).
+    pub(crate) fn from_matrix(m: &Matrix3<f64>) -> Self {
+        Self {
+            xx: m[(0, 0)],
+            xy: m[(0, 1)],
+            xz: m[(0, 2)],
+            yy: m[(1, 1)],
+            yz: m[(1, 2)],
+            zz: m[(2, 2)],
+        }
+    }
+
+    fn to_matrix(self) -> Matrix3<f64> {
+        Matrix3::new(
+            self.xx, self.xy, self.xz, self.xy, self.yy, self.yz, self.xz, self.yz, self.zz,
+        )
+    }
+
+    /// `self⁻¹·b` by the adjugate, or `None` when the matrix is singular or not finite.
+    #[inline]
+    pub(crate) fn solve(&self, b: &Vector3<f64>) -> Option<Vector3<f64>> {
+        let (a, bb, c, d, e, f) = (self.xx, self.xy, self.xz, self.yy, self.yz, self.zz);
+        let c00 = d * f - e * e;
+        let c01 = c * e - bb * f;
+        let c02 = bb * e - c * d;
+        let c11 = a * f - c * c;
+        let c12 = bb * c - a * e;
+        let c22 = a * d - bb * bb;
+        let det = a * c00 + bb * c01 + c * c02;
+        if !det.is_finite() || det == 0.0 {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        Some(Vector3::new(
+            (c00 * b.x + c01 * b.y + c02 * b.z) * inv_det,
+            (c01 * b.x + c11 * b.y + c12 * b.z) * inv_det,
+            (c02 * b.x + c12 * b.y + c22 * b.z) * inv_det,
+        ))
     }
 }
 
@@ -482,17 +574,6 @@ fn solve_normal3(m: &Matrix3<f64>, b: &Vector3<f64>) -> Result<Vector3<f64>> {
 
 fn depth(v: &NormalizedView, p: &Point3<f64>) -> f64 {
     (v.R_camera_world.row(2) * p.coords)[0] + v.t_camera_world.z
-}
-
-/// Pixel residual of one view (undistorted pinhole model); `None` when the point is behind it.
-fn residual_px(v: &NormalizedView, p: &Point3<f64>) -> Option<Vector2<f64>> {
-    let pc = v.R_camera_world * p.coords + v.t_camera_world;
-    (pc.z > 1e-9).then(|| {
-        Vector2::new(
-            (pc.x / pc.z - v.normalized.x) * v.focal_px.x,
-            (pc.y / pc.z - v.normalized.y) * v.focal_px.y,
-        )
-    })
 }
 
 /// Indices of the set bits of `mask`.
