@@ -128,6 +128,8 @@ impl Default for BonePriorParams {
 struct SortedWindow {
     /// Globally sorted: every value of block `k` ≤ every value of block `k + 1`; no block empty.
     blocks: Vec<Vec<f64>>,
+    /// `blocks[k]`'s last (largest) value, side by side so a search touches one array.
+    lasts: Vec<f64>,
     /// Emptied blocks kept for reuse (no allocation once the window is warm).
     spare: Vec<Vec<f64>>,
     len: usize,
@@ -142,8 +144,7 @@ impl SortedWindow {
 
     /// The first block whose last value is ≥ `x` (where `x` goes, or where its first copy lies).
     fn block_for(&self, x: f64) -> usize {
-        self.blocks
-            .partition_point(|b| b.last().is_some_and(|last| *last < x))
+        self.lasts.partition_point(|last| *last < x)
     }
 
     fn insert(&mut self, x: f64) {
@@ -151,6 +152,7 @@ impl SortedWindow {
             let mut b = self.spare.pop().unwrap_or_default();
             b.push(x);
             self.blocks.push(b);
+            self.lasts.push(x);
             self.len = 1;
             return;
         }
@@ -163,7 +165,13 @@ impl SortedWindow {
             let mut upper = self.spare.pop().unwrap_or_default();
             upper.extend_from_slice(&block[Self::MAX_BLOCK / 2..]);
             block.truncate(Self::MAX_BLOCK / 2);
+            let lower_last = block[Self::MAX_BLOCK / 2 - 1];
+            let upper_last = upper[upper.len() - 1];
             self.blocks.insert(k + 1, upper);
+            self.lasts[k] = lower_last;
+            self.lasts.insert(k + 1, upper_last);
+        } else {
+            self.lasts[k] = block[block.len() - 1];
         }
     }
 
@@ -179,8 +187,11 @@ impl SortedWindow {
         }
         block.remove(i);
         self.len -= 1;
-        if block.is_empty() {
+        if let Some(last) = block.last() {
+            self.lasts[k] = *last;
+        } else {
             let empty = self.blocks.remove(k);
+            self.lasts.remove(k);
             self.spare.push(empty);
         }
         true
@@ -216,6 +227,7 @@ impl SortedWindow {
             b.clear();
             self.spare.push(b);
         }
+        self.lasts.clear();
         self.len = 0;
     }
 }

@@ -378,34 +378,47 @@ impl FusionEngine {
     }
 
     fn pair_estimates(&self, obs: &FrameObs) -> Vec<[Option<Point3<f64>>; LANDMARK_COUNT]> {
-        self.rig
-            .pairs()
-            .iter()
-            .map(|pair| {
-                std::array::from_fn(|i| {
-                    let l = obs[i].iter().find(|o| o.camera == pair.left)?;
-                    let r = obs[i].iter().find(|o| o.camera == pair.right)?;
-                    let mut acc = DltAccumulator::default();
-                    acc.add_view(
-                        &self.cameras[l.camera].pose,
-                        &Point2::from(l.normalized),
-                        1.0,
-                    );
-                    acc.add_view(
-                        &self.cameras[r.camera].pose,
-                        &Point2::from(r.normalized),
-                        1.0,
-                    );
-                    let p = acc.solve().ok()?;
-                    // a pair estimate behind either camera is no estimate
-                    let in_front = [l.camera, r.camera].iter().all(|&c| {
-                        let cam = &self.cameras[c];
-                        (cam.R_camera_world.row(2) * p.coords)[0] + cam.t_camera_world.z > 0.0
-                    });
-                    in_front.then_some(p)
-                })
-            })
-            .collect()
+        // every (pair, landmark) both cameras see, accumulated, then all solved at once
+        let mut jobs: Vec<(usize, usize, usize, usize)> = Vec::new();
+        let mut accs: Vec<DltAccumulator> = Vec::new();
+        for (j, pair) in self.rig.pairs().iter().enumerate() {
+            for (i, o) in obs.iter().enumerate() {
+                let Some(l) = o.iter().find(|o| o.camera == pair.left) else {
+                    continue;
+                };
+                let Some(r) = o.iter().find(|o| o.camera == pair.right) else {
+                    continue;
+                };
+                let mut acc = DltAccumulator::default();
+                acc.add_view(
+                    &self.cameras[l.camera].pose,
+                    &Point2::from(l.normalized),
+                    1.0,
+                );
+                acc.add_view(
+                    &self.cameras[r.camera].pose,
+                    &Point2::from(r.normalized),
+                    1.0,
+                );
+                jobs.push((j, i, l.camera, r.camera));
+                accs.push(acc);
+            }
+        }
+        let mut solved = vec![Err(PerceptionError::Degenerate); accs.len()];
+        DltAccumulator::solve_many(&accs, &mut solved);
+        let mut out = vec![[None; LANDMARK_COUNT]; self.rig.pairs().len()];
+        for ((j, i, left, right), p) in jobs.into_iter().zip(solved) {
+            let Ok(p) = p else { continue };
+            // a pair estimate behind either camera is no estimate
+            let in_front = [left, right].iter().all(|&c| {
+                let cam = &self.cameras[c];
+                (cam.R_camera_world.row(2) * p.coords)[0] + cam.t_camera_world.z > 0.0
+            });
+            if in_front {
+                out[j][i] = Some(p);
+            }
+        }
+        out
     }
 
     /// The paper's graph-Laplacian fusion of the per-pair estimates.

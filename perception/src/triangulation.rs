@@ -86,7 +86,33 @@ impl DltAccumulator {
         if self.views < 2 {
             return Err(PerceptionError::TooFewViews { views: self.views });
         }
-        let h = smallest_right_singular_vector(&self.r);
+        let mut h = [None];
+        smallest_right_singular_vectors_of_triangular(&[self.r], &mut h);
+        Self::point_from(h[0].unwrap_or_else(|| smallest_right_singular_vector(&self.r)))
+    }
+
+    /// Solves many accumulators at once (the inverse iterations run in lockstep, see
+    /// [`smallest_right_singular_vectors_of_triangular`]); `out[i]` is `accs[i].solve()`.
+    pub fn solve_many(accs: &[DltAccumulator], out: &mut [Result<Point3<f64>>]) {
+        const LANES: usize = 16;
+        for (accs, out) in accs.chunks(LANES).zip(out.chunks_mut(LANES)) {
+            let mut rs = [Matrix4::zeros(); LANES];
+            for (r, a) in rs.iter_mut().zip(accs) {
+                *r = a.r;
+            }
+            let mut hs = [None; LANES];
+            smallest_right_singular_vectors_of_triangular(&rs[..accs.len()], &mut hs[..accs.len()]);
+            for ((o, a), h) in out.iter_mut().zip(accs).zip(hs) {
+                *o = if a.views < 2 {
+                    Err(PerceptionError::TooFewViews { views: a.views })
+                } else {
+                    Self::point_from(h.unwrap_or_else(|| smallest_right_singular_vector(&a.r)))
+                };
+            }
+        }
+    }
+
+    fn point_from(h: Vector4<f64>) -> Result<Point3<f64>> {
         let scale = h.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
         if h[3].abs() <= 1e-12 * scale || h[3].is_nan() {
             return Err(PerceptionError::Degenerate);
@@ -96,6 +122,132 @@ impl DltAccumulator {
             Ok(p)
         } else {
             Err(PerceptionError::Degenerate)
+        }
+    }
+}
+
+/// The right singular vector of an upper-triangular 4×4 `R` for its smallest singular value, by
+/// inverse iteration on `RᵀR` (two triangular solves a step), or `None` when that would not be
+/// reliable — a (near-)zero diagonal entry, or no convergence within 40 steps because the two
+/// smallest singular values are close — and the caller falls back to the Jacobi SVD.
+///
+/// Each step shrinks the error by `(σ₄/σ₃)²`; a DLT of a well-posed point has σ₄ (the noise) far
+/// below σ₃ (the parallax), so this converges in a handful of steps (8.7 on the bench's stereo
+/// pairs) where the Jacobi SVD takes five or six sweeps of six rotations (it was 73 % of the paper
+/// fusion's time). It stops when a step changes the unit vector by less than 1e-15: the same
+/// vector as the SVD's to rounding.
+pub fn smallest_right_singular_vector_of_triangular(r: &Matrix4<f64>) -> Option<Vector4<f64>> {
+    let mut out = [None];
+    smallest_right_singular_vectors_of_triangular(&[*r], &mut out);
+    out[0]
+}
+
+/// [`smallest_right_singular_vector_of_triangular`] of many factors, `out[i]` for `rs[i]`: the
+/// iterations run in lockstep, so the processor overlaps the factors' dependency chains (one
+/// factor's iteration is a chain of ~20 dependent multiply-adds); each stops at its own test.
+pub fn smallest_right_singular_vectors_of_triangular(
+    rs: &[Matrix4<f64>],
+    out: &mut [Option<Vector4<f64>>],
+) {
+    // Per factor: its upper triangle, the diagonal's reciprocals, the current unit vector, and
+    // whether it is still iterating.
+    struct Lane {
+        r: [f64; 10],
+        inv: [f64; 4],
+        x: [f64; 4],
+        active: bool,
+    }
+    fn unit(z: [f64; 4]) -> Option<[f64; 4]> {
+        let n2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2] + z[3] * z[3];
+        if !(n2.is_finite() && n2 > 0.0) {
+            return None;
+        }
+        let inv = 1.0 / n2.sqrt();
+        Some([z[0] * inv, z[1] * inv, z[2] * inv, z[3] * inv])
+    }
+    // R z = y, backward; `r` = [r00 r01 r02 r03 r11 r12 r13 r22 r23 r33]
+    fn back(r: &[f64; 10], inv: &[f64; 4], y: [f64; 4]) -> [f64; 4] {
+        let z3 = y[3] * inv[3];
+        let z2 = (y[2] - r[8] * z3) * inv[2];
+        let z1 = (y[1] - r[5] * z2 - r[6] * z3) * inv[1];
+        let z0 = (y[0] - r[1] * z1 - r[2] * z2 - r[3] * z3) * inv[0];
+        [z0, z1, z2, z3]
+    }
+    // Rᵀ y = x, forward
+    fn forward(r: &[f64; 10], inv: &[f64; 4], x: [f64; 4]) -> [f64; 4] {
+        let y0 = x[0] * inv[0];
+        let y1 = (x[1] - r[1] * y0) * inv[1];
+        let y2 = (x[2] - r[2] * y0 - r[5] * y1) * inv[2];
+        let y3 = (x[3] - r[3] * y0 - r[6] * y1 - r[8] * y2) * inv[3];
+        [y0, y1, y2, y3]
+    }
+    const LANES: usize = 16;
+    for (rs, out) in rs.chunks(LANES).zip(out.chunks_mut(LANES)) {
+        let mut lanes: [Lane; LANES] = std::array::from_fn(|_| Lane {
+            r: [0.0; 10],
+            inv: [0.0; 4],
+            x: [0.0; 4],
+            active: false,
+        });
+        for ((lane, r), o) in lanes.iter_mut().zip(rs).zip(out.iter_mut()) {
+            *o = None;
+            let scale = r.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+            let diag = [r[(0, 0)], r[(1, 1)], r[(2, 2)], r[(3, 3)]];
+            if !(scale.is_finite() && scale > 0.0) || diag.iter().any(|d| d.abs() <= 1e-10 * scale)
+            {
+                continue;
+            }
+            lane.r = [
+                r[(0, 0)],
+                r[(0, 1)],
+                r[(0, 2)],
+                r[(0, 3)],
+                r[(1, 1)],
+                r[(1, 2)],
+                r[(1, 3)],
+                r[(2, 2)],
+                r[(2, 3)],
+                r[(3, 3)],
+            ];
+            lane.inv = diag.map(|d| 1.0 / d);
+            // start from R⁻¹e₄, the direction a small last pivot points to
+            if let Some(x) = unit(back(&lane.r, &lane.inv, [0.0, 0.0, 0.0, 1.0])) {
+                lane.x = x;
+                lane.active = true;
+            }
+        }
+        let lanes = &mut lanes[..rs.len()];
+        for _ in 0..40 {
+            let mut any = false;
+            for (lane, o) in lanes.iter_mut().zip(out.iter_mut()) {
+                if !lane.active {
+                    continue;
+                }
+                // x ← R⁻¹R⁻ᵀx, normalised; the iteration keeps the sign (RᵀR is positive
+                // definite), so successive vectors compare directly
+                let Some(z) = unit(back(
+                    &lane.r,
+                    &lane.inv,
+                    forward(&lane.r, &lane.inv, lane.x),
+                )) else {
+                    lane.active = false;
+                    continue;
+                };
+                let change = (z[0] - lane.x[0]).powi(2)
+                    + (z[1] - lane.x[1]).powi(2)
+                    + (z[2] - lane.x[2]).powi(2)
+                    + (z[3] - lane.x[3]).powi(2);
+                lane.x = z;
+                if change < 1e-30 {
+                    lane.active = false;
+                    *o = Some(Vector4::new(z[0], z[1], z[2], z[3]));
+                } else {
+                    any = true;
+                }
+            }
+            if !any {
+                break;
+            }
         }
     }
 }
@@ -732,6 +884,53 @@ mod tests {
             let u = nalgebra::DVector::from_column_slice(&r).normalize();
             assert!((&a * u).norm() >= best - 1e-9);
         }
+    }
+
+    #[test]
+    fn inverse_iteration_agrees_with_the_jacobi_svd_or_declines() {
+        // Triangular factors of DLT matrices of two and three noisy views of random points (the
+        // paper's stereo pairs and more), and ill-posed ones (nearly parallel rays): wherever the
+        // inverse iteration answers, it is the SVD's vector (up to sign) to 1e-12.
+        let mut seed = 99u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let (mut answered, mut declined) = (0, 0);
+        for case in 0..2000 {
+            let p = Point3::new(next(), next(), 1.0 + next());
+            let spread = if case % 10 == 0 { 1e-7 } else { 3.0 };
+            let eyes: Vec<Point3<f64>> = (0..2 + case % 2)
+                .map(|_| Point3::new(3.0 + next() * spread, next() * spread, 1.5 + next()))
+                .collect();
+            let mut acc = DltAccumulator::default();
+            for v in views_of(&p, &eyes) {
+                let mut m = Matrix3x4::zeros();
+                m.fixed_slice_mut::<3, 3>(0, 0).copy_from(&v.R_camera_world);
+                m.fixed_slice_mut::<3, 1>(0, 3).copy_from(&v.t_camera_world);
+                let noisy = v.normalized + Vector2::new(next(), next()) * 0.01;
+                acc.add_view(&m, &Point2::from(noisy), 1.0);
+            }
+            let jacobi = smallest_right_singular_vector(&acc.r);
+            match smallest_right_singular_vector_of_triangular(&acc.r) {
+                Some(v) => {
+                    answered += 1;
+                    let aligned = if v.dot(&jacobi) < 0.0 { -v } else { v };
+                    assert!(
+                        (aligned - jacobi).norm() < 1e-12,
+                        "case {case}: {v} vs {jacobi}"
+                    );
+                }
+                None => declined += 1,
+            }
+        }
+        assert!(answered > 1500, "answered {answered}, declined {declined}");
+        // a singular factor is left to the SVD
+        let mut r = Matrix4::identity();
+        r[(3, 3)] = 0.0;
+        assert_eq!(smallest_right_singular_vector_of_triangular(&r), None);
     }
 
     #[test]
