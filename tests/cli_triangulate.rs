@@ -262,3 +262,53 @@ fn openpose_frames_paired_by_file_order_a_missing_file_no_longer_shifts_later_fr
         );
     }
 }
+
+#[test]
+fn triangulate_streams_into_a_temporary_file_and_reads_an_unsorted_csv_whole() {
+    // The output appears only when complete (written beside it as `.<name>.partial-<pid>`, then
+    // moved): no temporary file is left, an existing output is refused before any work, and a CSV
+    // whose rows are out of sync_index order is read whole with a note and the same result.
+    let data = repo().join("../shared/data/caliscope-4cam");
+    let dir = tmp("streaming");
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = std::fs::read_to_string(data.join("xy_pose33.csv")).unwrap();
+    let mut lines: Vec<&str> = text.lines().collect();
+    let moved = lines.remove(1);
+    lines.push(moved);
+    let unsorted = dir.join("unsorted.csv");
+    std::fs::write(&unsorted, lines.join("\n")).unwrap();
+    let run = |detections: &Path, out: &Path| {
+        ergocell(&[
+            "triangulate",
+            "--calibration",
+            data.join("config.toml").to_str().unwrap(),
+            "--detections",
+            detections.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let (sorted_out, unsorted_out) = (dir.join("sorted.trc"), dir.join("unsorted.trc"));
+    let (code, stdout, stderr) = run(&data.join("xy_pose33.csv"), &sorted_out);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("throughput:"), "{stdout}");
+    assert!(!stderr.contains("read first"), "{stderr}");
+    let (code, _, stderr) = run(&unsorted, &unsorted_out);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stderr.contains("not in sync_index order"), "{stderr}");
+    let strip_name = |p: &Path| {
+        let t = std::fs::read_to_string(p).unwrap();
+        t.split_once('\n').unwrap().1.to_owned()
+    };
+    assert_eq!(strip_name(&sorted_out), strip_name(&unsorted_out));
+    let (code, _, stderr) = run(&unsorted, &unsorted_out);
+    assert_eq!(code, 2, "{stderr}");
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(
+        names.iter().all(|n| !n.contains("partial")),
+        "a temporary file was left: {names:?}"
+    );
+}

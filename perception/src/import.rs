@@ -233,9 +233,6 @@ pub struct OpenPoseImport {
     pub warnings: Vec<String>,
 }
 
-/// One camera's files by frame number (`None`: two files claimed that number).
-type FrameSlots<'a> = BTreeMap<u64, Option<&'a (String, Vec<u8>)>>;
-
 /// The frame number in a detection file's name: the last run of ASCII digits before `_keypoints`
 /// (OpenPose writes `<stem>_<12-digit frame>_keypoints.json`), or, without `_keypoints`, the last run
 /// of digits in the name without its extension (Pose2Sim and others: `cam01_000042.json`). `None`
@@ -272,121 +269,203 @@ pub fn assemble_openpose(
     rate_hz: f64,
     stats: &mut ImportStats,
 ) -> Result<OpenPoseImport> {
-    if !(rate_hz.is_finite() && rate_hz > 0.0) {
-        return Err(parse_err(
-            "detections",
-            "rate_hz",
-            format!("{rate_hz} is not a positive frame rate"),
-        ));
-    }
-    let mut warnings = Vec::new();
-    let any_numbered = cameras
+    let names: Vec<(CameraIndex, Vec<String>)> = cameras
         .iter()
-        .flat_map(|c| &c.files)
-        .any(|(name, _)| frame_number_of(name).is_some());
-    let pairing = if any_numbered || cameras.iter().all(|c| c.files.is_empty()) {
-        FramePairing::ByFrameNumber
-    } else {
-        warnings.push(
-            "no frame numbers in the detection file names: frames paired by sorted file order, \
-             so a missing file shifts that camera's later frames"
-                .to_owned(),
+        .map(|c| (c.camera, c.files.iter().map(|(n, _)| n.clone()).collect()))
+        .collect();
+    let contents: BTreeMap<(CameraIndex, &str), &[u8]> = cameras
+        .iter()
+        .flat_map(|c| {
+            c.files
+                .iter()
+                .map(move |(n, b)| ((c.camera, n.as_str()), b.as_slice()))
+        })
+        .collect();
+    let mut plan = OpenPosePlan::new(&names, format, rate_hz, stats)?;
+    let mut frames = Vec::with_capacity(plan.frame_count());
+    for k in 0..plan.frame_count() {
+        let frame = plan.frame(
+            k,
+            |camera, name| {
+                contents
+                    .get(&(camera, name))
+                    .map(|b| b.to_vec())
+                    .ok_or_else(|| "not given".to_owned())
+            },
+            stats,
         );
-        FramePairing::BySortedOrder
-    };
-    // camera → frame number → the one file of that frame (None: that number was repeated)
-    let mut by_camera: BTreeMap<CameraIndex, FrameSlots<'_>> = BTreeMap::new();
-    for c in cameras {
-        let slots = by_camera.entry(c.camera).or_default();
-        let mut files: Vec<&(String, Vec<u8>)> = c.files.iter().collect();
-        files.sort_by(|a, b| a.0.cmp(&b.0));
-        for (k, file) in files.into_iter().enumerate() {
-            let number = match pairing {
-                FramePairing::BySortedOrder => Some(k as u64),
-                FramePairing::ByFrameNumber => frame_number_of(&file.0),
-            };
-            let Some(number) = number else {
-                stats.skipped_records += 1;
-                warnings.push(format!(
-                    "skipping {}: no frame number in the file name",
-                    file.0
-                ));
-                continue;
-            };
-            match slots.get_mut(&number) {
-                None => {
-                    slots.insert(number, Some(file));
-                }
-                Some(slot) => {
-                    // Two files claim one frame of one camera: which one is right is a guess.
-                    if let Some(first) = slot.take() {
+        frames.extend(frame);
+    }
+    Ok(OpenPoseImport {
+        frames,
+        pairing: plan.pairing,
+        warnings: plan.warnings,
+    })
+}
+
+/// The pairing of an OpenPose-style folder set, made from the file names alone, so the frames can
+/// then be read one at a time ([`OpenPosePlan::frame`]): what `ergocell triangulate` streams a long
+/// recording with (memory grows with the number of file names, not with their contents).
+/// [`assemble_openpose`] is this plan run over files already in memory.
+#[derive(Debug, Clone)]
+pub struct OpenPosePlan {
+    /// How the files were paired.
+    pub pairing: FramePairing,
+    /// One line per file left out and per pairing caveat, naming the file (grows as frames are
+    /// read: a file that cannot be read or parsed is named when its frame is assembled).
+    pub warnings: Vec<String>,
+    format: KeypointFormat,
+    rate_hz: f64,
+    /// camera → frame number → the one file of that frame (`None`: that number was repeated)
+    by_camera: BTreeMap<CameraIndex, BTreeMap<u64, Option<String>>>,
+    numbers: Vec<u64>,
+    selector: OperatorSelector,
+}
+
+impl OpenPosePlan {
+    /// Pairs the cameras' file names (see [`assemble_openpose`] for the rules). Errors only on a
+    /// rate that is not a positive finite number.
+    pub fn new(
+        cameras: &[(CameraIndex, Vec<String>)],
+        format: KeypointFormat,
+        rate_hz: f64,
+        stats: &mut ImportStats,
+    ) -> Result<Self> {
+        if !(rate_hz.is_finite() && rate_hz > 0.0) {
+            return Err(parse_err(
+                "detections",
+                "rate_hz",
+                format!("{rate_hz} is not a positive frame rate"),
+            ));
+        }
+        let mut warnings = Vec::new();
+        let any_numbered = cameras
+            .iter()
+            .flat_map(|c| &c.1)
+            .any(|name| frame_number_of(name).is_some());
+        let pairing = if any_numbered || cameras.iter().all(|c| c.1.is_empty()) {
+            FramePairing::ByFrameNumber
+        } else {
+            warnings.push(
+                "no frame numbers in the detection file names: frames paired by sorted file order, \
+                 so a missing file shifts that camera's later frames"
+                    .to_owned(),
+            );
+            FramePairing::BySortedOrder
+        };
+        let mut by_camera: BTreeMap<CameraIndex, BTreeMap<u64, Option<String>>> = BTreeMap::new();
+        for (camera, names) in cameras {
+            let slots = by_camera.entry(*camera).or_default();
+            let mut files: Vec<&String> = names.iter().collect();
+            files.sort();
+            for (k, file) in files.into_iter().enumerate() {
+                let number = match pairing {
+                    FramePairing::BySortedOrder => Some(k as u64),
+                    FramePairing::ByFrameNumber => frame_number_of(file),
+                };
+                let Some(number) = number else {
+                    stats.skipped_records += 1;
+                    warnings.push(format!("skipping {file}: no frame number in the file name"));
+                    continue;
+                };
+                match slots.get_mut(&number) {
+                    None => {
+                        slots.insert(number, Some(file.clone()));
+                    }
+                    Some(slot) => {
+                        // Two files claim one frame of one camera: which one is right is a guess.
+                        if let Some(first) = slot.take() {
+                            stats.skipped_records += 1;
+                            warnings.push(format!(
+                                "skipping {first}: another file of this camera has frame number {number}"
+                            ));
+                        }
                         stats.skipped_records += 1;
                         warnings.push(format!(
-                            "skipping {}: another file of this camera has frame number {number}",
-                            first.0
+                            "skipping {file}: another file of this camera has frame number {number}"
                         ));
                     }
-                    stats.skipped_records += 1;
-                    warnings.push(format!(
-                        "skipping {}: another file of this camera has frame number {number}",
-                        file.0
-                    ));
                 }
             }
         }
+        let numbers: std::collections::BTreeSet<u64> = by_camera
+            .values()
+            .flat_map(|slots| slots.keys().copied())
+            .collect();
+        Ok(Self {
+            pairing,
+            warnings,
+            format,
+            rate_hz,
+            by_camera,
+            numbers: numbers.into_iter().collect(),
+            selector: OperatorSelector::default(),
+        })
     }
-    let numbers: std::collections::BTreeSet<u64> = by_camera
-        .values()
-        .flat_map(|slots| slots.keys().copied())
-        .collect();
-    let first = numbers.first().copied().unwrap_or(0);
-    let mut selector = OperatorSelector::default();
-    let mut frames = Vec::with_capacity(numbers.len());
-    for number in numbers {
-        let stamp_nanos = ((number - first) as f64 / rate_hz * 1e9).round() as i64;
+
+    /// Number of frames (one per frame number seen in any camera).
+    pub fn frame_count(&self) -> usize {
+        self.numbers.len()
+    }
+
+    /// Assembles frame `k` (frames in order: the operator selection follows them), reading each of
+    /// its files with `read(camera, name)`; a file that cannot be read or parsed is left out,
+    /// counted and named in [`Self::warnings`]. `None` for `k` beyond the last frame.
+    pub fn frame(
+        &mut self,
+        k: usize,
+        mut read: impl FnMut(CameraIndex, &str) -> std::result::Result<Vec<u8>, String>,
+        stats: &mut ImportStats,
+    ) -> Option<Frame2> {
+        let number = *self.numbers.get(k)?;
+        let first = self.numbers.first().copied().unwrap_or(0);
+        let stamp_nanos = ((number - first) as f64 / self.rate_hz * 1e9).round() as i64;
         let mut views = Vec::new();
         let mut several = false;
-        for (&camera, slots) in &by_camera {
+        for (&camera, slots) in &self.by_camera {
             let Some(slot) = slots.get(&number) else {
                 stats.missing_views += 1;
                 continue;
             };
             // A repeated frame number: already counted and named.
-            let Some((name, bytes)) = slot else { continue };
-            let text = match std::str::from_utf8(bytes) {
+            let Some(name) = slot else { continue };
+            let bytes = match read(camera, name) {
+                Ok(b) => b,
+                Err(e) => {
+                    stats.skipped_records += 1;
+                    self.warnings.push(format!("skipping {name}: {e}"));
+                    continue;
+                }
+            };
+            let text = match std::str::from_utf8(&bytes) {
                 Ok(t) => t,
                 Err(e) => {
                     stats.skipped_records += 1;
-                    warnings.push(format!(
+                    self.warnings.push(format!(
                         "skipping {name}: not UTF-8 text (invalid byte at offset {})",
                         e.valid_up_to()
                     ));
                     continue;
                 }
             };
-            let people = match parse_openpose_frame(text, name, format, stats) {
+            let people = match parse_openpose_frame(text, name, self.format, stats) {
                 Ok(p) => p,
                 Err(e) => {
                     stats.skipped_records += 1;
-                    warnings.push(format!("skipping {e}"));
+                    self.warnings.push(format!("skipping {e}"));
                     continue;
                 }
             };
             several |= people.len() > 1;
-            if let Some(i) = selector.select(camera, &people) {
+            if let Some(i) = self.selector.select(camera, &people) {
                 views.push(View2::new(camera, stamp_nanos, people[i].keypoints));
             }
         }
         if several {
             stats.multi_person_frames += 1;
         }
-        frames.push(Frame2 { stamp_nanos, views });
+        Some(Frame2 { stamp_nanos, views })
     }
-    Ok(OpenPoseImport {
-        frames,
-        pairing,
-        warnings,
-    })
 }
 
 /// The columns of caliscope's `xy_*.csv` that ergocell reads (others, e.g. `frame_index` or
@@ -424,111 +503,275 @@ pub fn parse_caliscope_xy_bytes(
     rig: &CameraRig,
     stats: &mut ImportStats,
 ) -> Result<Vec<Frame2>> {
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(true)
-        .trim(csv::Trim::All)
-        .from_reader(bytes);
-    let headers = reader
-        .byte_headers()
-        .map_err(|e| parse_err(source_name, "(header)", e))?
-        .clone();
-    let header_list = headers
-        .iter()
-        .map(|h| String::from_utf8_lossy(h).into_owned())
-        .collect::<Vec<_>>()
-        .join(", ");
-    let mut columns = [0usize; CALISCOPE_REQUIRED_COLUMNS.len()];
-    for (slot, name) in columns.iter_mut().zip(CALISCOPE_REQUIRED_COLUMNS) {
-        *slot = headers
-            .iter()
-            .position(|h| h.trim_ascii() == name.as_bytes())
-            .ok_or_else(|| {
-                parse_err(
-                    source_name,
-                    name,
-                    format!("required column `{name}` is missing (the header has: {header_list})"),
-                )
-            })?;
-    }
-    let [c_sync, c_port, c_time, c_point, c_x, c_y] = columns;
+    let mut rows = CaliscopeRows::new(bytes, source_name)?;
     let mut frames: BTreeMap<i64, BTreeMap<CameraIndex, View2>> = BTreeMap::new();
-    let mut record = csv::ByteRecord::new();
-    loop {
-        match reader.read_byte_record(&mut record) {
-            Ok(true) => {}
-            Ok(false) => break,
-            Err(e) => {
-                // A row with the wrong number of fields: that row only. Anything else (the reader
-                // cannot continue) ends the file here, keeping what was read.
-                stats.skipped_records += 1;
-                if matches!(e.kind(), csv::ErrorKind::UnequalLengths { .. }) {
-                    continue;
+    while let Some(row) = rows.next_row(rig, stats) {
+        add_row(frames.entry(row.sync_index).or_default(), &row, stats);
+    }
+    Ok(frames.into_values().map(frame_of).collect())
+}
+
+/// One usable row of caliscope's `xy_*.csv`.
+struct CaliscopeRow {
+    sync_index: i64,
+    camera: CameraIndex,
+    stamp_nanos: i64,
+    landmark: ergocell_skeleton::Landmark,
+    /// `None`: an empty pixel cell (not seen).
+    pixel: Option<(f64, f64)>,
+}
+
+/// The rows of caliscope's `xy_*.csv`, checked and parsed one at a time (the shared part of the
+/// in-memory and the streaming reader).
+struct CaliscopeRows<R: std::io::Read> {
+    reader: csv::Reader<R>,
+    columns: [usize; CALISCOPE_REQUIRED_COLUMNS.len()],
+    record: csv::ByteRecord,
+    done: bool,
+}
+
+impl<R: std::io::Read> CaliscopeRows<R> {
+    /// Reads the header; a missing required column is an error naming it.
+    fn new(reader: R, source_name: &str) -> Result<Self> {
+        let mut reader = csv::ReaderBuilder::new()
+            .has_headers(true)
+            .trim(csv::Trim::All)
+            .from_reader(reader);
+        let headers = reader
+            .byte_headers()
+            .map_err(|e| parse_err(source_name, "(header)", e))?
+            .clone();
+        let header_list = headers
+            .iter()
+            .map(|h| String::from_utf8_lossy(h).into_owned())
+            .collect::<Vec<_>>()
+            .join(", ");
+        let mut columns = [0usize; CALISCOPE_REQUIRED_COLUMNS.len()];
+        for (slot, name) in columns.iter_mut().zip(CALISCOPE_REQUIRED_COLUMNS) {
+            *slot = headers
+                .iter()
+                .position(|h| h.trim_ascii() == name.as_bytes())
+                .ok_or_else(|| {
+                    parse_err(
+                        source_name,
+                        name,
+                        format!(
+                            "required column `{name}` is missing (the header has: {header_list})"
+                        ),
+                    )
+                })?;
+        }
+        Ok(Self {
+            reader,
+            columns,
+            record: csv::ByteRecord::new(),
+            done: false,
+        })
+    }
+
+    /// The next usable row; rows that cannot be used are counted in `stats` and skipped.
+    fn next_row(&mut self, rig: &CameraRig, stats: &mut ImportStats) -> Option<CaliscopeRow> {
+        let [c_sync, c_port, c_time, c_point, c_x, c_y] = self.columns;
+        while !self.done {
+            match self.reader.read_byte_record(&mut self.record) {
+                Ok(true) => {}
+                Ok(false) => {
+                    self.done = true;
+                    break;
                 }
-                break;
+                Err(e) => {
+                    // A row with the wrong number of fields: that row only. Anything else (the
+                    // reader cannot continue) ends the file here, keeping what was read.
+                    stats.skipped_records += 1;
+                    if matches!(e.kind(), csv::ErrorKind::UnequalLengths { .. }) {
+                        continue;
+                    }
+                    self.done = true;
+                    break;
+                }
+            }
+            let record = &self.record;
+            let cell = |c: usize| {
+                record
+                    .get(c)
+                    .and_then(|b| std::str::from_utf8(b).ok())
+                    .map(str::trim)
+            };
+            let int = |c: usize| cell(c).and_then(|t| t.parse::<i64>().ok());
+            let float = |c: usize| cell(c).and_then(|t| t.parse::<f64>().ok());
+            // An empty pixel cell is "not seen"; any other cell that does not parse spoils the row.
+            let pixel = |c: usize| match cell(c) {
+                Some("") => Some(None),
+                Some(t) => t.parse::<f64>().ok().map(Some),
+                None => None,
+            };
+            let (Some(sync_index), Some(port), Some(frame_time), Some(point_id), Some(u), Some(v)) = (
+                int(c_sync),
+                int(c_port),
+                float(c_time),
+                int(c_point),
+                pixel(c_x),
+                pixel(c_y),
+            ) else {
+                stats.skipped_records += 1;
+                continue;
+            };
+            let Some(camera) = rig.index_of_name(&format!("cam_{port}")) else {
+                stats.skipped_records += 1;
+                continue;
+            };
+            let Some(landmark) = usize::try_from(point_id)
+                .ok()
+                .and_then(ergocell_skeleton::Landmark::from_index)
+            else {
+                stats.skipped_records += 1;
+                continue;
+            };
+            if !frame_time.is_finite() {
+                stats.skipped_records += 1;
+                continue;
+            }
+            return Some(CaliscopeRow {
+                sync_index,
+                camera,
+                stamp_nanos: (frame_time * 1e9).round() as i64,
+                landmark,
+                pixel: u.zip(v),
+            });
+        }
+        None
+    }
+}
+
+/// Adds one row to its frame's views.
+fn add_row(views: &mut BTreeMap<CameraIndex, View2>, row: &CaliscopeRow, stats: &mut ImportStats) {
+    let view = views
+        .entry(row.camera)
+        .or_insert_with(|| View2::empty(row.camera, row.stamp_nanos));
+    match row.pixel {
+        Some((u, v)) => match Keypoint2::new(u, v, 1.0) {
+            Ok(k) => view.set(row.landmark, Some(k)),
+            Err(_) => stats.invalid_keypoints += 1,
+        },
+        None => stats.invalid_keypoints += 1,
+    }
+}
+
+/// A frame from its views; its stamp is the earliest camera time.
+fn frame_of(views: BTreeMap<CameraIndex, View2>) -> Frame2 {
+    let views: Vec<View2> = views.into_values().collect();
+    let stamp_nanos = views.iter().map(|v| v.stamp_nanos).min().unwrap_or(0);
+    Frame2 { stamp_nanos, views }
+}
+
+/// What [`scan_caliscope_xy`] found: enough to decide how to read the file and to announce how
+/// many frames it holds (a TRC header states the count before the first frame).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CaliscopeScan {
+    /// Distinct `sync_index` values (the frames [`parse_caliscope_xy_bytes`] would return).
+    pub frames: usize,
+    /// The rows' `sync_index` never decreases, so [`CaliscopeStream`] reads the file in one pass
+    /// with the same result as [`parse_caliscope_xy_bytes`]. (caliscope writes it so.)
+    pub sorted: bool,
+}
+
+/// A first, cheap pass over caliscope's `xy_*.csv`: only the `sync_index` column is parsed.
+/// Errors as [`parse_caliscope_xy_bytes`] does on a missing column.
+pub fn scan_caliscope_xy<R: std::io::Read>(reader: R, source_name: &str) -> Result<CaliscopeScan> {
+    let mut rows = CaliscopeRows::new(reader, source_name)?;
+    let c_sync = rows.columns[0];
+    let (mut frames, mut sorted, mut last) = (0usize, true, None::<i64>);
+    let mut seen_unsorted = std::collections::BTreeSet::new();
+    loop {
+        match rows.reader.read_byte_record(&mut rows.record) {
+            Ok(true) => {}
+            Err(e) if matches!(e.kind(), csv::ErrorKind::UnequalLengths { .. }) => continue,
+            Ok(false) | Err(_) => break,
+        }
+        let Some(sync) = rows
+            .record
+            .get(c_sync)
+            .and_then(|b| std::str::from_utf8(b).ok())
+            .and_then(|t| t.trim().parse::<i64>().ok())
+        else {
+            continue;
+        };
+        if sorted {
+            match last {
+                Some(l) if sync < l => {
+                    // from here on count distinct values exactly (an unsorted file is read whole
+                    // anyway)
+                    sorted = false;
+                    seen_unsorted.insert(sync);
+                }
+                Some(l) if sync == l => {}
+                _ => {
+                    frames += 1;
+                    last = Some(sync);
+                    seen_unsorted.insert(sync);
+                }
+            }
+        } else {
+            seen_unsorted.insert(sync);
+        }
+    }
+    if !sorted {
+        frames = seen_unsorted.len();
+    }
+    Ok(CaliscopeScan { frames, sorted })
+}
+
+/// caliscope's `xy_*.csv` read as a stream of frames, for a file whose `sync_index` never decreases
+/// ([`scan_caliscope_xy`]): one frame is held at a time, so memory does not grow with the length.
+/// For such a file the frames equal [`parse_caliscope_xy_bytes`]'s; a row whose `sync_index` is
+/// below the frame being assembled (the file was not sorted after all) is skipped and counted in
+/// [`CaliscopeStream::stats`] as a skipped record.
+pub struct CaliscopeStream<'r, R: std::io::Read> {
+    rows: CaliscopeRows<R>,
+    rig: &'r CameraRig,
+    stats: ImportStats,
+    current: Option<(i64, BTreeMap<CameraIndex, View2>)>,
+}
+
+impl<'r, R: std::io::Read> CaliscopeStream<'r, R> {
+    /// Reads the header; a missing required column is an error naming it.
+    pub fn new(reader: R, source_name: &str, rig: &'r CameraRig) -> Result<Self> {
+        Ok(Self {
+            rows: CaliscopeRows::new(reader, source_name)?,
+            rig,
+            stats: ImportStats::default(),
+            current: None,
+        })
+    }
+
+    /// What was left out so far.
+    pub fn stats(&self) -> ImportStats {
+        self.stats
+    }
+}
+
+impl<R: std::io::Read> Iterator for CaliscopeStream<'_, R> {
+    type Item = Frame2;
+
+    fn next(&mut self) -> Option<Frame2> {
+        while let Some(row) = self.rows.next_row(self.rig, &mut self.stats) {
+            match &mut self.current {
+                Some((sync, views)) if *sync == row.sync_index => {
+                    add_row(views, &row, &mut self.stats);
+                }
+                Some((sync, _)) if row.sync_index < *sync => self.stats.skipped_records += 1,
+                _ => {
+                    let mut views = BTreeMap::new();
+                    add_row(&mut views, &row, &mut self.stats);
+                    let done = self.current.replace((row.sync_index, views));
+                    if let Some((_, views)) = done {
+                        return Some(frame_of(views));
+                    }
+                }
             }
         }
-        let cell = |c: usize| {
-            record
-                .get(c)
-                .and_then(|b| std::str::from_utf8(b).ok())
-                .map(str::trim)
-        };
-        let int = |c: usize| cell(c).and_then(|t| t.parse::<i64>().ok());
-        let float = |c: usize| cell(c).and_then(|t| t.parse::<f64>().ok());
-        // An empty pixel cell is "not seen"; any other cell that does not parse spoils the row.
-        let pixel = |c: usize| match cell(c) {
-            Some("") => Some(None),
-            Some(t) => t.parse::<f64>().ok().map(Some),
-            None => None,
-        };
-        let (Some(sync_index), Some(port), Some(frame_time), Some(point_id), Some(u), Some(v)) = (
-            int(c_sync),
-            int(c_port),
-            float(c_time),
-            int(c_point),
-            pixel(c_x),
-            pixel(c_y),
-        ) else {
-            stats.skipped_records += 1;
-            continue;
-        };
-        let Some(camera) = rig.index_of_name(&format!("cam_{port}")) else {
-            stats.skipped_records += 1;
-            continue;
-        };
-        let Some(landmark) = usize::try_from(point_id)
-            .ok()
-            .and_then(ergocell_skeleton::Landmark::from_index)
-        else {
-            stats.skipped_records += 1;
-            continue;
-        };
-        if !frame_time.is_finite() {
-            stats.skipped_records += 1;
-            continue;
-        }
-        let stamp_nanos = (frame_time * 1e9).round() as i64;
-        let view = frames
-            .entry(sync_index)
-            .or_default()
-            .entry(camera)
-            .or_insert_with(|| View2::empty(camera, stamp_nanos));
-        match (u, v) {
-            (Some(u), Some(v)) => match Keypoint2::new(u, v, 1.0) {
-                Ok(k) => view.set(landmark, Some(k)),
-                Err(_) => stats.invalid_keypoints += 1,
-            },
-            _ => stats.invalid_keypoints += 1,
-        }
+        self.current.take().map(|(_, views)| frame_of(views))
     }
-    Ok(frames
-        .into_values()
-        .map(|views| {
-            let views: Vec<View2> = views.into_values().collect();
-            let stamp_nanos = views.iter().map(|v| v.stamp_nanos).min().unwrap_or(0);
-            Frame2 { stamp_nanos, views }
-        })
-        .collect())
 }
 
 #[cfg(test)]

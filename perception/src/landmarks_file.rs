@@ -52,10 +52,116 @@ pub fn write_landmarks(
     name: &str,
     rate_hz: f64,
 ) -> String {
-    match format {
-        LandmarksFormat::Json => serde_json::to_string(frames).unwrap_or_else(|_| "[]".to_owned()),
-        LandmarksFormat::Csv => write_csv(frames),
-        LandmarksFormat::Trc => write_trc(frames, name, rate_hz),
+    let mut encoder = LandmarksEncoder::new(format, name, rate_hz, frames.len());
+    let mut out = encoder.header();
+    for f in frames {
+        encoder.frame_into(f, &mut out);
+    }
+    out.push_str(&encoder.footer());
+    out
+}
+
+/// A landmark file written piece by piece — the header, one frame at a time, the footer — so a long
+/// recording is written as it is triangulated (memory flat in its length). The pieces concatenated
+/// are exactly [`write_landmarks`]'s text. The frame count is stated up front (a TRC header holds
+/// it); the frames pushed must be that many.
+#[derive(Debug, Clone)]
+pub struct LandmarksEncoder {
+    format: LandmarksFormat,
+    name: String,
+    rate_hz: f64,
+    frame_count: usize,
+    written: usize,
+    t0: Option<i64>,
+    /// CSV: the header row is written with the first row (a file with no rows is empty).
+    csv_header_done: bool,
+}
+
+impl LandmarksEncoder {
+    /// An encoder for `frame_count` frames.
+    pub fn new(format: LandmarksFormat, name: &str, rate_hz: f64, frame_count: usize) -> Self {
+        Self {
+            format,
+            name: name.to_owned(),
+            rate_hz,
+            frame_count,
+            written: 0,
+            t0: None,
+            csv_header_done: false,
+        }
+    }
+
+    /// Frames encoded so far.
+    pub fn frames_written(&self) -> usize {
+        self.written
+    }
+
+    /// The text before the first frame.
+    pub fn header(&self) -> String {
+        match self.format {
+            LandmarksFormat::Json => "[".to_owned(),
+            LandmarksFormat::Csv => String::new(),
+            LandmarksFormat::Trc => trc_header(&self.name, self.rate_hz, self.frame_count),
+        }
+    }
+
+    /// Appends one frame's text to `out`.
+    pub fn frame_into(&mut self, s: &Skeleton3, out: &mut String) {
+        let t0 = *self.t0.get_or_insert(s.stamp_nanos);
+        let i = self.written;
+        self.written += 1;
+        match self.format {
+            LandmarksFormat::Json => {
+                if i > 0 {
+                    out.push(',');
+                }
+                out.push_str(&serde_json::to_string(s).unwrap_or_else(|_| "null".to_owned()));
+            }
+            LandmarksFormat::Csv => {
+                let mut w = csv::WriterBuilder::new()
+                    .has_headers(!self.csv_header_done)
+                    .from_writer(Vec::new());
+                for lm in Landmark::ALL {
+                    if let Some(e) = s.get(lm) {
+                        let _ = w.serialize(CsvRow {
+                            frame: i,
+                            time_s: (s.stamp_nanos - t0) as f64 * 1e-9,
+                            landmark: lm.name().to_owned(),
+                            x_m: e.position_m.x,
+                            y_m: e.position_m.y,
+                            z_m: e.position_m.z,
+                            confidence: e.confidence,
+                            reprojection_error_px: e.reprojection_error_px,
+                            views: e.views,
+                        });
+                        self.csv_header_done = true;
+                    }
+                }
+                out.push_str(
+                    &String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default(),
+                );
+            }
+            LandmarksFormat::Trc => {
+                let _ = write!(out, "{}\t{:.6}", i + 1, (s.stamp_nanos - t0) as f64 * 1e-9);
+                for lm in Landmark::ALL {
+                    match s.position(lm) {
+                        Some(p) => {
+                            let _ = write!(out, "\t{:.6}\t{:.6}\t{:.6}", p.x, p.y, p.z);
+                        }
+                        None => out.push_str("\t\t\t"),
+                    }
+                }
+                out.push('\n');
+            }
+        }
+    }
+
+    /// The text after the last frame.
+    pub fn footer(&self) -> String {
+        match self.format {
+            LandmarksFormat::Json => "]".to_owned(),
+            LandmarksFormat::Csv | LandmarksFormat::Trc => String::new(),
+        }
     }
 }
 
@@ -87,29 +193,6 @@ struct CsvRow {
     views: u32,
 }
 
-fn write_csv(frames: &[Skeleton3]) -> String {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let t0 = frames.first().map_or(0, |f| f.stamp_nanos);
-    for (i, s) in frames.iter().enumerate() {
-        for lm in Landmark::ALL {
-            if let Some(e) = s.get(lm) {
-                let _ = w.serialize(CsvRow {
-                    frame: i,
-                    time_s: (s.stamp_nanos - t0) as f64 * 1e-9,
-                    landmark: lm.name().to_owned(),
-                    x_m: e.position_m.x,
-                    y_m: e.position_m.y,
-                    z_m: e.position_m.z,
-                    confidence: e.confidence,
-                    reprojection_error_px: e.reprojection_error_px,
-                    views: e.views,
-                });
-            }
-        }
-    }
-    String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
-}
-
 fn read_csv(text: &str, source_name: &str) -> Result<Vec<Skeleton3>> {
     let mut reader = csv::Reader::from_reader(text.as_bytes());
     let mut frames: BTreeMap<usize, Skeleton3> = BTreeMap::new();
@@ -139,9 +222,8 @@ fn read_csv(text: &str, source_name: &str) -> Result<Vec<Skeleton3>> {
     Ok(frames.into_values().collect())
 }
 
-fn write_trc(frames: &[Skeleton3], name: &str, rate_hz: f64) -> String {
+fn trc_header(name: &str, rate_hz: f64, n: usize) -> String {
     let mut out = String::new();
-    let n = frames.len();
     let _ = writeln!(out, "PathFileType\t4\t(X/Y/Z)\t{name}");
     let _ = writeln!(out, "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames");
     let _ = writeln!(
@@ -158,19 +240,6 @@ fn write_trc(frames: &[Skeleton3], name: &str, rate_hz: f64) -> String {
         let _ = write!(out, "\tX{i}\tY{i}\tZ{i}");
     }
     out.push_str("\n\n");
-    let t0 = frames.first().map_or(0, |f| f.stamp_nanos);
-    for (i, s) in frames.iter().enumerate() {
-        let _ = write!(out, "{}\t{:.6}", i + 1, (s.stamp_nanos - t0) as f64 * 1e-9);
-        for lm in Landmark::ALL {
-            match s.position(lm) {
-                Some(p) => {
-                    let _ = write!(out, "\t{:.6}\t{:.6}\t{:.6}", p.x, p.y, p.z);
-                }
-                None => out.push_str("\t\t\t"),
-            }
-        }
-        out.push('\n');
-    }
     out
 }
 

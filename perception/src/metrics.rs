@@ -111,6 +111,122 @@ pub fn median_reprojection_px(frames: &[Skeleton3]) -> Option<f64> {
     median(&errors)
 }
 
+/// The same measures accumulated one frame at a time, for a recording too long to hold (`ergocell
+/// triangulate` of hours): bone lengths by Welford's running mean and variance (the figures of
+/// [`bone_stats`] to rounding), the reprojection error's median from a histogram of 0.001 px bins up
+/// to [`StreamingStats::MAX_REPROJECTION_PX`] (the median to ±0.0005 px). Memory: 4 MB, whatever the
+/// length.
+#[derive(Debug, Clone)]
+pub struct StreamingStats {
+    bones: [(usize, f64, f64); BONES.len()],
+    histogram: Vec<u32>,
+    reprojections: u64,
+    frames: usize,
+    landmarks: usize,
+}
+
+impl Default for StreamingStats {
+    fn default() -> Self {
+        Self {
+            bones: [(0, 0.0, 0.0); BONES.len()],
+            histogram: vec![0; Self::BINS + 1],
+            reprojections: 0,
+            frames: 0,
+            landmarks: 0,
+        }
+    }
+}
+
+impl StreamingStats {
+    /// Reprojection errors above this (pixels) share one overflow bin.
+    pub const MAX_REPROJECTION_PX: f64 = 1000.0;
+    const BIN_PX: f64 = 0.001;
+    const BINS: usize = 1_000_000;
+
+    /// Adds one frame.
+    pub fn push(&mut self, s: &Skeleton3) {
+        self.frames += 1;
+        self.landmarks += s.observed_count();
+        for (acc, &(a, b)) in self.bones.iter_mut().zip(BONES.iter()) {
+            if let Some(l) = s.bone_length_m(a, b) {
+                // Welford: count, mean, sum of squared deviations
+                acc.0 += 1;
+                let d = l - acc.1;
+                acc.1 += d / acc.0 as f64;
+                acc.2 += d * (l - acc.1);
+            }
+        }
+        for e in s.slots().iter().flatten() {
+            if let Some(r) = e.reprojection_error_px.filter(|r| !r.is_nan()) {
+                let bin = if r >= 0.0 {
+                    ((r / Self::BIN_PX) as usize).min(Self::BINS)
+                } else {
+                    0
+                };
+                self.histogram[bin] += 1;
+                self.reprojections += 1;
+            }
+        }
+    }
+
+    /// Frames added.
+    pub fn frames(&self) -> usize {
+        self.frames
+    }
+
+    /// Landmarks observed over all frames.
+    pub fn landmarks(&self) -> usize {
+        self.landmarks
+    }
+
+    /// As [`bone_stats`].
+    pub fn bone_stats(&self) -> Vec<BoneStats> {
+        self.bones
+            .iter()
+            .zip(BONES.iter())
+            .filter(|(&(n, mean, _), _)| n >= 2 && mean > 0.0)
+            .map(|(&(n, mean, m2), &bone)| BoneStats {
+                bone,
+                frames: n,
+                mean_m: mean,
+                cv_percent: 100.0 * (m2 / (n as f64 - 1.0)).max(0.0).sqrt() / mean,
+            })
+            .collect()
+    }
+
+    /// As [`bone_length_variation_percent`].
+    pub fn bone_length_variation_percent(&self) -> Option<f64> {
+        let stats = self.bone_stats();
+        (!stats.is_empty())
+            .then(|| stats.iter().map(|s| s.cv_percent).sum::<f64>() / stats.len() as f64)
+    }
+
+    /// As [`median_reprojection_px`], to ±0.0005 px (the centre of the median's bin; the mean of
+    /// the two middle bins' centres for an even count).
+    pub fn median_reprojection_px(&self) -> Option<f64> {
+        let n = self.reprojections;
+        if n == 0 {
+            return None;
+        }
+        let centre = |bin: usize| (bin as f64 + 0.5) * Self::BIN_PX;
+        let kth = |k: u64| {
+            let mut seen = 0u64;
+            for (bin, &c) in self.histogram.iter().enumerate() {
+                seen += u64::from(c);
+                if seen > k {
+                    return centre(bin);
+                }
+            }
+            centre(Self::BINS)
+        };
+        Some(if n.is_multiple_of(2) {
+            0.5 * (kth(n / 2 - 1) + kth(n / 2))
+        } else {
+            kth(n / 2)
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -137,6 +253,51 @@ mod tests {
             "{cv}"
         );
         assert_eq!(bone_length_variation_percent(&[]), None);
+    }
+
+    #[test]
+    fn streaming_stats_agree_with_the_whole_recording_measures() {
+        // a skeleton whose bones stretch differently every frame, with reprojection errors spread
+        // over 0–40 px
+        let frames: Vec<Skeleton3> = (0..301)
+            .map(|k| {
+                let s = 1.0 + 0.07 * ((k * 13) % 11) as f64 / 11.0;
+                let pts: [Option<Point3<f64>>; ergocell_skeleton::LANDMARK_COUNT] =
+                    std::array::from_fn(|i| {
+                        ((k + i) % 9 != 0)
+                            .then(|| Point3::new(i as f64 * 0.1 * s, 0.01 * i as f64, 1.0))
+                    });
+                let mut sk = Skeleton3::from_optional_points(k as i64, &pts).unwrap();
+                for lm in Landmark::ALL {
+                    if let Some(mut e) = sk.get(lm).cloned() {
+                        let i = lm.index();
+                        e.reprojection_error_px =
+                            Some(((k * 31 + i * 7) % 400) as f64 * 0.1 + 0.0123);
+                        sk.set(lm, Some(e)).unwrap();
+                    }
+                }
+                sk
+            })
+            .collect();
+        let mut st = StreamingStats::default();
+        for f in &frames {
+            st.push(f);
+        }
+        assert_eq!(st.frames(), 301);
+        let (whole, streamed) = (bone_stats(&frames), st.bone_stats());
+        assert_eq!(whole.len(), streamed.len());
+        for (a, b) in whole.iter().zip(&streamed) {
+            assert_eq!((a.bone, a.frames), (b.bone, b.frames));
+            assert!(
+                (a.mean_m - b.mean_m).abs() < 1e-12 && (a.cv_percent - b.cv_percent).abs() < 1e-9
+            );
+        }
+        let exact = median_reprojection_px(&frames).unwrap();
+        assert!(
+            (st.median_reprojection_px().unwrap() - exact).abs() <= 0.0005 + 1e-12,
+            "{exact}"
+        );
+        assert_eq!(StreamingStats::default().median_reprojection_px(), None);
     }
 
     #[test]

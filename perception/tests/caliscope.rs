@@ -149,3 +149,42 @@ fn default_fusion_has_less_bone_length_variation_than_the_papers_and_plain_dlt()
         "default {all_default} vs undistorted DLT {all_weighted} over all bones"
     );
 }
+
+#[test]
+fn the_streaming_reader_gives_the_frames_of_the_whole_file_parse() {
+    let (rig, frames) = load();
+    let text = read("xy_pose33.csv");
+    let scan =
+        ergocell_perception::import::scan_caliscope_xy(text.as_bytes(), "xy_pose33.csv").unwrap();
+    assert_eq!(
+        scan,
+        ergocell_perception::import::CaliscopeScan {
+            frames: 267,
+            sorted: true
+        }
+    );
+    let mut stream =
+        ergocell_perception::import::CaliscopeStream::new(text.as_bytes(), "xy_pose33.csv", &rig)
+            .unwrap();
+    let streamed: Vec<Frame2> = stream.by_ref().collect();
+    assert_eq!(streamed, frames);
+    assert_eq!(stream.stats(), {
+        let mut stats = ImportStats::default();
+        parse_caliscope_xy(&text, "xy_pose33.csv", &rig, &mut stats).unwrap();
+        stats
+    });
+    // Rows out of sync_index order: the scan says so (and counts the frames), the stream skips
+    // what arrives late and counts it, the whole-file parse keeps it.
+    let mut lines: Vec<&str> = text.lines().collect();
+    let moved = lines.remove(1); // a row of sync 0, moved to the end
+    lines.push(moved);
+    let unsorted = lines.join("\n");
+    let scan =
+        ergocell_perception::import::scan_caliscope_xy(unsorted.as_bytes(), "u.csv").unwrap();
+    assert_eq!((scan.frames, scan.sorted), (267, false));
+    let mut stream =
+        ergocell_perception::import::CaliscopeStream::new(unsorted.as_bytes(), "u.csv", &rig)
+            .unwrap();
+    assert_eq!(stream.by_ref().count(), 267);
+    assert_eq!(stream.stats().skipped_records, 1);
+}

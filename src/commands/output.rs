@@ -80,6 +80,107 @@ pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
     })
 }
 
+/// An output written piece by piece into a temporary file beside it (`.<name>.partial-<pid>`),
+/// which [`Partial::finish`] moves onto the output: until then an existing output is untouched,
+/// and a run that fails or is stopped leaves no half-written file (the temporary one is removed
+/// when dropped unfinished). Without `force`, an output that appeared meanwhile is not replaced.
+#[derive(Debug)]
+pub struct Partial {
+    flag: String,
+    out: std::path::PathBuf,
+    temp: std::path::PathBuf,
+    file: Option<std::io::BufWriter<File>>,
+    force: bool,
+}
+
+impl Partial {
+    /// Creates the temporary file (and checks, as [`create`] does, that without `force` the output
+    /// does not exist yet).
+    pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<Self> {
+        if !force && std::fs::symlink_metadata(out).is_ok() {
+            return Err(UsageError(format!(
+                "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
+                out.display()
+            ))
+            .into());
+        }
+        let name = out
+            .file_name()
+            .map_or_else(|| "output".into(), |n| n.to_string_lossy().into_owned());
+        let temp = out.with_file_name(format!(".{name}.partial-{}", std::process::id()));
+        let file = std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&temp)
+            .with_context(|| format!("cannot create {}", temp.display()))?;
+        Ok(Self {
+            flag: flag.to_owned(),
+            out: out.to_owned(),
+            temp,
+            file: Some(std::io::BufWriter::new(file)),
+            force,
+        })
+    }
+
+    /// Appends bytes.
+    pub fn write(&mut self, bytes: &[u8]) -> anyhow::Result<()> {
+        match self.file.as_mut() {
+            Some(f) => f
+                .write_all(bytes)
+                .with_context(|| format!("cannot write {}", self.temp.display())),
+            None => Ok(()),
+        }
+    }
+
+    /// Flushes and moves the temporary file onto the output.
+    pub fn finish(mut self) -> anyhow::Result<()> {
+        let Some(file) = self.file.take() else {
+            return Ok(());
+        };
+        let file = file
+            .into_inner()
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {}", self.temp.display(), e.error()))?;
+        file.sync_all()
+            .with_context(|| format!("cannot write {}", self.temp.display()))?;
+        drop(file);
+        if self.force {
+            std::fs::rename(&self.temp, &self.out)
+                .with_context(|| format!("cannot move the output to {}", self.out.display()))?;
+        } else {
+            // a hard link fails if the output appeared meanwhile: never replaced unasked
+            if let Err(e) = std::fs::hard_link(&self.temp, &self.out) {
+                let _ = std::fs::remove_file(&self.temp);
+                if e.kind() == std::io::ErrorKind::AlreadyExists {
+                    return Err(UsageError(format!(
+                        "{} {}: the file appeared while it was being written; pass --force to overwrite it, or choose another file",
+                        self.flag,
+                        self.out.display()
+                    ))
+                    .into());
+                }
+                return Err(
+                    anyhow::Error::new(e).context(format!("cannot create {}", self.out.display()))
+                );
+            }
+            let _ = std::fs::remove_file(&self.temp);
+        }
+        Ok(())
+    }
+
+    /// Removes the temporary file; the output stays as it was.
+    pub fn discard(&mut self) {
+        if self.file.take().is_some() {
+            let _ = std::fs::remove_file(&self.temp);
+        }
+    }
+}
+
+impl Drop for Partial {
+    fn drop(&mut self) {
+        self.discard();
+    }
+}
+
 /// Writes `bytes` to the output file (see [`create`]).
 pub fn write(flag: &str, out: &Path, force: bool, bytes: &[u8]) -> anyhow::Result<()> {
     let mut file = create(flag, out, force)?;

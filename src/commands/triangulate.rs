@@ -1,5 +1,6 @@
 //! `ergocell triangulate`: 2D detections + calibration → one 3D position per landmark per frame, and a
-//! summary (frames, landmarks triangulated, median reprojection error, bone-length variation).
+//! summary (frames, landmarks triangulated, median reprojection error, bone-length variation,
+//! throughput). Streamed: a recording of any length is read, fused and written one frame at a time.
 
 use std::path::{Path, PathBuf};
 
@@ -7,17 +8,17 @@ use anyhow::{bail, Context as _};
 use ergocell_cell::{Reconstruction, ReconstructionConfig};
 use ergocell_perception::detections::{Frame2, ImportStats};
 use ergocell_perception::import::{
-    assemble_openpose, match_camera_folders, parse_caliscope_xy_bytes, CameraFiles,
+    match_camera_folders, parse_caliscope_xy_bytes, scan_caliscope_xy, CaliscopeStream,
+    OpenPosePlan,
 };
-use ergocell_perception::landmarks_file::{write_landmarks, LandmarksFormat};
-use ergocell_perception::metrics::{
-    bone_length_variation_percent, bone_stats, median_reprojection_px,
-};
+use ergocell_perception::landmarks_file::{LandmarksEncoder, LandmarksFormat};
+use ergocell_perception::metrics::StreamingStats;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::temporal::OneEuroParams;
 use ergocell_perception::{CameraRig, FusionMethod, KeypointFormat};
 use ergocell_skeleton::{Skeleton3, LANDMARK_COUNT};
 
+use super::signals::{StopFlag, Stopped};
 use super::{output, UsageError};
 
 /// Arguments of `ergocell triangulate`.
@@ -87,25 +88,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         None if args.detections.is_dir() => "openpose".to_owned(),
         None => "caliscope".to_owned(),
     };
-    let mut stats = ImportStats::default();
-    let frames = if format == "caliscope" {
-        let name = args.detections.display().to_string();
-        let bytes = std::fs::read(&args.detections).with_context(|| format!("reading {name}"))?;
-        parse_caliscope_xy_bytes(&bytes, &name, &rig, &mut stats)
-            .map_err(|e| UsageError(e.to_string()))?
+    let mut source = if format == "caliscope" {
+        FrameSource::caliscope(&args.detections, &rig)?
     } else {
         let keypoints = KeypointFormat::from_name(&args.keypoints)
             .ok_or_else(|| UsageError(format!("unknown keypoint layout {}", args.keypoints)))?;
-        read_openpose(&args.detections, &rig, keypoints, args.rate_hz, &mut stats)?
+        FrameSource::openpose(&args.detections, &rig, keypoints, args.rate_hz)?
     };
-    if frames.is_empty() {
+    let frame_count = source.frame_count();
+    if frame_count == 0 {
         bail!(UsageError(format!(
             "{}: no frames found",
             args.detections.display()
         )));
-    }
-    if let Some(w) = stats.warning() {
-        eprintln!("warning: {w}");
     }
 
     // The cell controller's reconstruction stage with its defaults, but every frame written (no
@@ -116,48 +111,123 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         min_tracked_landmarks: 0,
         ..ReconstructionConfig::default()
     };
-    let mut reconstruction = Reconstruction::new(rig, config)?;
-    let mut skeletons: Vec<Skeleton3> = Vec::with_capacity(frames.len());
-    let mut rejected = 0;
-    let mut undistortion_failures = 0;
-    for frame in &frames {
-        let r = reconstruction.process_frame(frame)?;
-        rejected += r.fused.rejected_views;
-        undistortion_failures += r.fused.undistortion_failures;
-        skeletons.push(r.tracked.unwrap_or(r.fused.skeleton));
-    }
-
-    let rate = estimate_rate_hz(&skeletons).unwrap_or(args.rate_hz);
+    let mut reconstruction = Reconstruction::new(rig.clone(), config)?;
     let name = args
         .out
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    output::write(
-        "--out",
-        &args.out,
-        args.force,
-        write_landmarks(&skeletons, out_format, &name, rate).as_bytes(),
-    )?;
+    // Streamed: frames are read, fused and written one at a time into a temporary file beside
+    // --out, renamed onto it at the end (a failed or stopped run leaves no half-written --out). The
+    // TRC header states the rate: estimated from the first RATE_FRAMES fused frames, which are
+    // held back until then.
+    let mut out = output::Partial::create("--out", &args.out, args.force)?;
+    let stop = StopFlag::install()?;
+    // the binary's wall clock, for the throughput figure only
+    #[allow(clippy::disallowed_methods)]
+    let started = std::time::Instant::now();
+    let mut stats = StreamingStats::default();
+    let mut held: Vec<Skeleton3> = Vec::new();
+    let mut encoder: Option<LandmarksEncoder> = None;
+    let mut text = String::new();
+    let (mut rejected, mut undistortion_failures) = (0, 0);
+    let progress = progress_bar(frame_count);
+    for frame in source.by_ref() {
+        if let Some(signal) = stop.get() {
+            out.discard();
+            return Err(Stopped {
+                signal,
+                what: format!(
+                    "{} of {frame_count} frames triangulated, {} not written",
+                    stats.frames(),
+                    args.out.display()
+                ),
+            }
+            .into());
+        }
+        let r = reconstruction.process_frame(&frame)?;
+        rejected += r.fused.rejected_views;
+        undistortion_failures += r.fused.undistortion_failures;
+        let skeleton = r.tracked.unwrap_or(r.fused.skeleton);
+        stats.push(&skeleton);
+        progress.inc(1);
+        if let Some(e) = encoder.as_mut() {
+            e.frame_into(&skeleton, &mut text);
+            if text.len() > 1 << 20 {
+                out.write(text.as_bytes())?;
+                text.clear();
+            }
+        } else {
+            held.push(skeleton);
+            if held.len() == RATE_FRAMES {
+                encoder = Some(start_encoder(
+                    &held,
+                    out_format,
+                    &name,
+                    args.rate_hz,
+                    frame_count,
+                    &mut text,
+                ));
+                held.clear();
+            }
+        }
+    }
+    let e = encoder.get_or_insert_with(|| {
+        start_encoder(
+            &held,
+            out_format,
+            &name,
+            args.rate_hz,
+            frame_count,
+            &mut text,
+        )
+    });
+    held.clear();
+    let written = e.frames_written();
+    text.push_str(&e.footer());
+    out.write(text.as_bytes())?;
+    progress.finish_and_clear();
+    let elapsed = started.elapsed().as_secs_f64();
+    if written != frame_count {
+        out.discard();
+        bail!(
+            "{}: {frame_count} frames announced, {written} read (the detections changed while being read?)",
+            args.detections.display()
+        );
+    }
+    out.finish()?;
+    for w in source.warnings().iter().take(MAX_WARNINGS) {
+        eprintln!("warning: {w}");
+    }
+    if source.warnings().len() > MAX_WARNINGS {
+        eprintln!(
+            "warning: … and {} more files left out",
+            source.warnings().len() - MAX_WARNINGS
+        );
+    }
+    if let Some(w) = source.stats().warning() {
+        eprintln!("warning: {w}");
+    }
 
-    let triangulated: usize = skeletons.iter().map(Skeleton3::observed_count).sum();
-    println!("frames:                   {}", skeletons.len());
+    let frames = stats.frames();
+    let triangulated = stats.landmarks();
+    println!("frames:                   {frames}");
     println!(
         "landmarks triangulated:   {triangulated} of {} ({:.1}%)",
-        skeletons.len() * LANDMARK_COUNT,
-        100.0 * triangulated as f64 / (skeletons.len() * LANDMARK_COUNT) as f64
+        frames * LANDMARK_COUNT,
+        100.0 * triangulated as f64 / (frames * LANDMARK_COUNT) as f64
     );
     println!(
         "fusion:                   {} (filter: {})",
         args.fusion, args.filter
     );
-    if let Some(m) = median_reprojection_px(&skeletons) {
+    if let Some(m) = stats.median_reprojection_px() {
         println!("median reprojection err:  {m:.2} px");
     }
     println!("views rejected:           {rejected} (outliers or behind the camera), {undistortion_failures} keypoints outside the lens model");
-    if let Some(cv) = bone_length_variation_percent(&skeletons) {
+    if let Some(cv) = stats.bone_length_variation_percent() {
         println!("bone-length variation:    {cv:.2}% (mean coefficient of variation over bones)");
-        for b in bone_stats(&skeletons) {
+        for b in stats.bone_stats() {
             println!(
                 "  {:>15} – {:<15} {:>6.3} m  ±{:>5.2}%  ({} frames)",
                 b.bone.0.name(),
@@ -168,8 +238,196 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             );
         }
     }
+    println!(
+        "throughput:               {:.0} frames/s ({frames} frames in {elapsed:.2} s: reading, fusion and writing)",
+        frames as f64 / elapsed.max(1e-9)
+    );
     println!("wrote {}", args.out.display());
     Ok(())
+}
+
+/// Fused frames held back to estimate the frame rate a TRC header states (the whole recording when
+/// it is shorter; the old, in-memory command used them all).
+const RATE_FRAMES: usize = 1000;
+
+/// The encoder, its header and the held-back frames into `text`.
+fn start_encoder(
+    held: &[Skeleton3],
+    format: LandmarksFormat,
+    name: &str,
+    fallback_rate_hz: f64,
+    frame_count: usize,
+    text: &mut String,
+) -> LandmarksEncoder {
+    let rate = estimate_rate_hz(held).unwrap_or(fallback_rate_hz);
+    let mut e = LandmarksEncoder::new(format, name, rate, frame_count);
+    text.push_str(&e.header());
+    for s in held {
+        e.frame_into(s, text);
+    }
+    e
+}
+
+/// A progress bar on stderr when it is a terminal (hidden otherwise: no escape codes in logs).
+fn progress_bar(frames: usize) -> indicatif::ProgressBar {
+    use std::io::IsTerminal as _;
+    if !std::io::stderr().is_terminal() {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(frames as u64);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} frames  {per_sec}  eta {eta}")
+    {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// Where the frames come from: read one at a time (caliscope CSV in `sync_index` order, OpenPose
+/// folders), or, for a CSV whose rows are not in order, the whole file parsed first.
+enum FrameSource<'r> {
+    Stream {
+        frames: CaliscopeStream<'r, std::io::BufReader<std::fs::File>>,
+        count: usize,
+    },
+    Memory {
+        frames: std::vec::IntoIter<Frame2>,
+        count: usize,
+        stats: ImportStats,
+    },
+    OpenPose {
+        plan: OpenPosePlan,
+        next: usize,
+        stats: ImportStats,
+    },
+}
+
+impl<'r> FrameSource<'r> {
+    fn caliscope(path: &Path, rig: &'r CameraRig) -> anyhow::Result<Self> {
+        let name = path.display().to_string();
+        let open = || {
+            std::fs::File::open(path)
+                .map(std::io::BufReader::new)
+                .with_context(|| format!("reading {name}"))
+        };
+        let scan = scan_caliscope_xy(open()?, &name).map_err(|e| UsageError(e.to_string()))?;
+        if scan.sorted {
+            let frames =
+                CaliscopeStream::new(open()?, &name, rig).map_err(|e| UsageError(e.to_string()))?;
+            return Ok(Self::Stream {
+                frames,
+                count: scan.frames,
+            });
+        }
+        eprintln!("note: {name}: rows not in sync_index order, so the whole file is read first");
+        let bytes = std::fs::read(path).with_context(|| format!("reading {name}"))?;
+        let mut stats = ImportStats::default();
+        let frames = parse_caliscope_xy_bytes(&bytes, &name, rig, &mut stats)
+            .map_err(|e| UsageError(e.to_string()))?;
+        Ok(Self::Memory {
+            count: frames.len(),
+            frames: frames.into_iter(),
+            stats,
+        })
+    }
+
+    /// Lists the camera folders and their files (names only; each file is read when its frame
+    /// is).
+    fn openpose(
+        dir: &Path,
+        rig: &CameraRig,
+        format: KeypointFormat,
+        rate_hz: f64,
+    ) -> anyhow::Result<Self> {
+        let mut folders = Vec::new();
+        for entry in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
+            let entry = entry?;
+            if entry.file_type()?.is_dir() {
+                folders.push(entry.file_name().to_string_lossy().into_owned());
+            }
+        }
+        if folders.is_empty() {
+            bail!(UsageError(format!(
+                "{}: no camera folders inside",
+                dir.display()
+            )));
+        }
+        let matched = match_camera_folders(&folders, rig).map_err(|e| UsageError(e.to_string()))?;
+        // Frames are paired by the frame number in each file name (perception::import::
+        // OpenPosePlan): a missing file is a missing view of that frame only, never a shift of
+        // every later frame.
+        let mut cameras = Vec::new();
+        for (folder, camera) in matched {
+            let mut files = Vec::new();
+            for entry in std::fs::read_dir(dir.join(&folder))?.filter_map(Result::ok) {
+                let path = entry.path();
+                if path
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+                {
+                    files.push(path.display().to_string());
+                }
+            }
+            eprintln!(
+                "camera {} ← {folder}/ ({} files)",
+                rig.cameras()[camera].id,
+                files.len()
+            );
+            cameras.push((camera, files));
+        }
+        let mut stats = ImportStats::default();
+        let plan = OpenPosePlan::new(&cameras, format, rate_hz, &mut stats)
+            .map_err(|e| UsageError(e.to_string()))?;
+        Ok(Self::OpenPose {
+            plan,
+            next: 0,
+            stats,
+        })
+    }
+
+    fn frame_count(&self) -> usize {
+        match self {
+            Self::Stream { count, .. } | Self::Memory { count, .. } => *count,
+            Self::OpenPose { plan, .. } => plan.frame_count(),
+        }
+    }
+
+    fn stats(&self) -> ImportStats {
+        match self {
+            Self::Stream { frames, .. } => frames.stats(),
+            Self::Memory { stats, .. } | Self::OpenPose { stats, .. } => *stats,
+        }
+    }
+
+    fn warnings(&self) -> &[String] {
+        match self {
+            Self::OpenPose { plan, .. } => &plan.warnings,
+            _ => &[],
+        }
+    }
+}
+
+impl Iterator for FrameSource<'_> {
+    type Item = Frame2;
+
+    fn next(&mut self) -> Option<Frame2> {
+        match self {
+            Self::Stream { frames, .. } => frames.next(),
+            Self::Memory { frames, .. } => frames.next(),
+            Self::OpenPose {
+                plan, next, stats, ..
+            } => {
+                let k = *next;
+                *next += 1;
+                // the file names are full paths (as listed)
+                plan.frame(
+                    k,
+                    |_, name| std::fs::read(name).map_err(|e| format!("cannot read it: {e}")),
+                    stats,
+                )
+            }
+        }
+    }
 }
 
 /// The frame rate implied by the stamps (median frame interval).
@@ -182,66 +440,5 @@ fn estimate_rate_hz(skeletons: &[Skeleton3]) -> Option<f64> {
     ergocell_perception::metrics::median(&dts).map(|dt| 1.0 / dt)
 }
 
-/// Reads an OpenPose-layout folder: one sub-folder per camera, one JSON per frame (frame `k` is the
-/// `k`-th file in sorted order in every camera folder, as Pose2Sim synchronises them).
 /// At most this many per-file warnings are printed (the rest are counted).
 const MAX_WARNINGS: usize = 20;
-
-fn read_openpose(
-    dir: &Path,
-    rig: &CameraRig,
-    format: KeypointFormat,
-    rate_hz: f64,
-    stats: &mut ImportStats,
-) -> anyhow::Result<Vec<Frame2>> {
-    let mut folders = Vec::new();
-    for entry in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
-        let entry = entry?;
-        if entry.file_type()?.is_dir() {
-            folders.push(entry.file_name().to_string_lossy().into_owned());
-        }
-    }
-    if folders.is_empty() {
-        bail!(UsageError(format!(
-            "{}: no camera folders inside",
-            dir.display()
-        )));
-    }
-    let matched = match_camera_folders(&folders, rig).map_err(|e| UsageError(e.to_string()))?;
-    // Frames are paired by the frame number in each file name (perception::import::assemble_openpose):
-    // a missing file is a missing view of that frame only, never a shift of every later frame.
-    let mut cameras = Vec::new();
-    for (folder, camera) in matched {
-        let mut files = Vec::new();
-        for path in std::fs::read_dir(dir.join(&folder))?
-            .filter_map(Result::ok)
-            .map(|e| e.path())
-            .filter(|p| {
-                p.extension()
-                    .is_some_and(|e| e.eq_ignore_ascii_case("json"))
-            })
-        {
-            let bytes =
-                std::fs::read(&path).with_context(|| format!("reading {}", path.display()))?;
-            files.push((path.display().to_string(), bytes));
-        }
-        eprintln!(
-            "camera {} ← {folder}/ ({} files)",
-            rig.cameras()[camera].id,
-            files.len()
-        );
-        cameras.push(CameraFiles { camera, files });
-    }
-    let import = assemble_openpose(&cameras, format, rate_hz, stats)
-        .map_err(|e| UsageError(e.to_string()))?;
-    for w in import.warnings.iter().take(MAX_WARNINGS) {
-        eprintln!("warning: {w}");
-    }
-    if import.warnings.len() > MAX_WARNINGS {
-        eprintln!(
-            "warning: … and {} more files left out",
-            import.warnings.len() - MAX_WARNINGS
-        );
-    }
-    Ok(import.frames)
-}
