@@ -142,11 +142,6 @@ impl SortedWindow {
         self.len
     }
 
-    /// The first block whose last value is ≥ `x` (where `x` goes, or where its first copy lies).
-    fn block_for(&self, x: f64) -> usize {
-        self.lasts.partition_point(|last| *last < x)
-    }
-
     fn insert(&mut self, x: f64) {
         if self.blocks.is_empty() {
             let mut b = self.spare.pop().unwrap_or_default();
@@ -156,9 +151,14 @@ impl SortedWindow {
             self.len = 1;
             return;
         }
-        let k = self.block_for(x).min(self.blocks.len() - 1);
+        // after any equal values (a bone's length repeats exactly when a frame does): the last
+        // block they reach, at its end — no values moved
+        let k = self
+            .lasts
+            .partition_point(|last| *last <= x)
+            .min(self.blocks.len() - 1);
         let block = &mut self.blocks[k];
-        let at = block.partition_point(|v| *v < x);
+        let at = block.partition_point(|v| *v <= x);
         block.insert(at, x);
         self.len += 1;
         if block.len() > Self::MAX_BLOCK {
@@ -175,16 +175,26 @@ impl SortedWindow {
         }
     }
 
-    /// Removes one copy of `x`; false (nothing removed) when `x` is not held.
+    /// Removes one copy of `x` (the last, so a run of equal values loses its end and nothing
+    /// moves); false (nothing removed) when `x` is not held.
     fn remove(&mut self, x: f64) -> bool {
-        let k = self.block_for(x);
-        let Some(block) = self.blocks.get_mut(k) else {
+        // blocks before `k` end at or below x: the last copy is in block k or ends block k − 1
+        let k = self.lasts.partition_point(|last| *last <= x);
+        let found = self
+            .blocks
+            .get(k)
+            .and_then(|b| {
+                let i = b.partition_point(|v| *v <= x);
+                (i > 0 && b[i - 1] == x).then(|| (k, i - 1))
+            })
+            .or_else(|| {
+                let prev = k.checked_sub(1)?;
+                (self.lasts[prev] == x).then(|| (prev, self.blocks[prev].len() - 1))
+            });
+        let Some((k, i)) = found else {
             return false;
         };
-        let i = block.partition_point(|v| *v < x);
-        if block.get(i) != Some(&x) {
-            return false;
-        }
+        let block = &mut self.blocks[k];
         block.remove(i);
         self.len -= 1;
         if let Some(last) = block.last() {
