@@ -556,3 +556,21 @@ fn log_has_no_ansi_colour_when_stderr_is_not_a_terminal() {
     assert!(stderr.contains("INFO"), "no log lines: {stderr}");
     assert!(!stderr.contains('\u{1b}'), "ANSI escape in: {stderr:?}");
 }
+
+/// Row "~13 rustdds ERROR lines on every clean exit": `run` ends (here at `--max-secs`, the robot
+/// held) without one ERROR line: the DDS participant outlives every reader and writer
+/// (`RosNode::participant`).
+#[test]
+fn run_exits_without_rustdds_error_lines() {
+    let o = ergocell(
+        &root(),
+        &["run", "--config", "config/cell.toml", "--max-secs", "2"],
+    );
+    let stderr = text(&o.stderr);
+    assert!(
+        stderr.contains("--max-secs reached (robot held)"),
+        "the session ran and ended: {stderr}"
+    );
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains(" ERROR ")).collect();
+    assert!(errors.is_empty(), "ERROR lines on exit: {errors:#?}");
+}

@@ -149,6 +149,15 @@ pub struct RosNode {
 }
 
 impl RosNode {
+    /// A handle on the node's DDS participant. Hold it until the node, every reader and writer,
+    /// and the runtime that spun them are dropped, then drop it: the participant's event loop
+    /// then outlives every entity, which says goodbye to it (ros2-client 0.12 drops its context's
+    /// participant before the node's own parameter-service readers and writers, and each of those
+    /// then logs "Cannot remove Writer/Reader …: Disconnected" at ERROR level on a clean exit).
+    pub fn participant(&self) -> ros2_client::dds::rustdds::DomainParticipant {
+        self._context.domain_participant()
+    }
+
     /// Creates the node; spawn [`RosNode::spinner`] on the runtime before use.
     pub fn new(domain_id: u16, namespace: &str, name: &str) -> Result<Self, BridgeError> {
         let context = Context::with_options(ContextOptions::new().domain_id(domain_id))

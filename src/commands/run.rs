@@ -223,6 +223,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         })
         .transpose()?;
     let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name)?;
+    let participant = node.participant();
     runtime.spawn(node.spinner()?);
     let result = runtime.block_on(async {
         let CellTopics {
@@ -433,6 +434,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     drop(node);
     runtime.block_on(async { tokio::time::sleep(Duration::from_millis(100)).await });
     drop(runtime);
+    // the participant last: every entity has been removed from it (RosNode::participant)
+    drop(participant);
     // The recording is closed (summary and footer) on every way out: a normal end, a signal, an error.
     let closed = recorder.map(McapRecorder::finish).transpose();
     match (result, closed) {
@@ -543,6 +546,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         .build()
         .context("tokio runtime")?;
     let mut node = RosNode::new(ros.domain_id, &ros.namespace, "replay")?;
+    let participant = node.participant();
     runtime.spawn(node.spinner()?);
     let result = runtime.block_on(async {
         let mut publishers = std::collections::BTreeMap::new();
@@ -583,5 +587,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     drop(node);
     runtime.block_on(async { tokio::time::sleep(Duration::from_millis(100)).await });
     drop(runtime);
+    // the participant last: every entity has been removed from it (RosNode::participant)
+    drop(participant);
     result
 }
