@@ -145,7 +145,7 @@ fn ros_err(what: &str) -> impl Fn(String) -> BridgeError + '_ {
 /// A ROS 2 node with helpers to make typed publishers and subscriptions.
 pub struct RosNode {
     pub node: Node,
-    _context: Context,
+    context: Context,
 }
 
 impl RosNode {
@@ -155,7 +155,7 @@ impl RosNode {
     /// participant before the node's own parameter-service readers and writers, and each of those
     /// then logs "Cannot remove Writer/Reader …: Disconnected" at ERROR level on a clean exit).
     pub fn participant(&self) -> ros2_client::dds::rustdds::DomainParticipant {
-        self._context.domain_participant()
+        self.context.domain_participant()
     }
 
     /// Creates the node; spawn [`RosNode::spinner`] on the runtime before use.
@@ -167,10 +167,7 @@ impl RosNode {
         let node = context
             .new_node(node_name, NodeOptions::new().enable_rosout(false))
             .map_err(|e| BridgeError::Ros(format!("node: {e:?}")))?;
-        Ok(Self {
-            node,
-            _context: context,
-        })
+        Ok(Self { node, context })
     }
 
     /// The spinner future (discovery, parameters); spawn it on the runtime.
