@@ -8,7 +8,8 @@
 # Asserts, Cyclone → ergocell: the camera landmarks were fused, the height class decided, the session
 # ended after the operator left; ergocell → Cyclone: the locked trajectory (100 points, joint_1..7,
 # the lock's hash in the session state), the hold (empty trajectory), the way home and the fused
-# skeleton (MarkerArray) arrived.
+# skeleton (MarkerArray) arrived. Fault injection: `run --record` killed with SIGKILL mid-session, its
+# recording read up to the last second before the kill.
 # Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
 # Measured on the dev machine (2 vCPUs shared with other builds; release; ros2-client 0.12.1, RustDDS
 # 0.15.1, cyclonedds 11.0.1), 2026-11-23, four runs: p50 0.13–0.18 ms, p99 0.29–1.96 ms, max ≤ 4.3 ms,
@@ -55,6 +56,55 @@ unshare -n -- bash -c '
   # Without an approval the session is aborted and run exits 1: expected here.
   if wait "$run"; then echo "run exit 0" >> "$2/replay-run.log"; else echo "run exit $?" >> "$2/replay-run.log"; fi
 ' _ "$bin" "$tmp"
+
+# Fault injection (#18): `run --record` killed with SIGKILL mid-session while the Cyclone peer plays
+# the cameras and the controller. The recording (no summary, no footer: nothing ran on the way out)
+# must read up to the last second before the kill: the recorder flushes on a one-second timer
+# whatever the traffic.
+unshare -n -- bash -c '
+  set -euo pipefail
+  ip link set lo up
+  ip link set lo multicast on
+  ip route add 224.0.0.0/4 dev lo
+  "$1" --log "error" run --config config/cell.toml --trajectories "$2/traj" --max-secs 60 \
+      --record "$2/killed.mcap" > "$2/killed-run.log" 2>&1 &
+  run=$!
+  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 30 > /dev/null 2>&1 &
+  replay=$!
+  sleep 12
+  date +%s%N > "$2/killed-at"
+  kill -KILL "$run" || echo "run had exited before the kill" >> "$2/killed-at.note"
+  wait "$run" 2>/dev/null || true
+  kill "$replay" 2>/dev/null || true
+  wait "$replay" 2>/dev/null || true
+' _ "$bin" "$tmp"
+python3 - "$tmp/killed.mcap" "$tmp/killed-at" <<'PY'
+import os, sys
+from mcap.records import Channel, Message
+from mcap.stream_reader import StreamReader
+killed_at = int(open(sys.argv[2]).read())
+count, last, topics, channels = 0, 0, set(), {}
+try:
+    with open(sys.argv[1], "rb") as f:
+        # record by record, as a reader recovering a cut file must: the last record is incomplete
+        for record in StreamReader(f, skip_magic=False, record_size_limit=None).records:
+            if isinstance(record, Channel):
+                channels[record.id] = record.topic
+            elif isinstance(record, Message):
+                count += 1
+                last = max(last, record.log_time)
+                topics.add(channels.get(record.channel_id, "?"))
+except Exception as e:  # the cut end of the file: everything before it was read
+    print(f"killed recording: read stops at the cut ({type(e).__name__})")
+gap = (killed_at - last) * 1e-9
+print(f"killed recording: {count} messages on {len(topics)} topics, the last {gap:.2f} s before SIGKILL")
+exited = os.path.exists(sys.argv[2] + ".note")
+if exited:
+    print("run had exited before the kill: the test did not run")
+ok = not exited and count > 100 and any("camera" in t for t in topics) and 0 <= gap <= 1.5
+print(("ok   " if ok else "FAIL ") + "run killed by SIGKILL mid-session: its recording reads up to the last second")
+sys.exit(0 if ok else 1)
+PY
 
 cat "$tmp/run.log"
 python3 - "$tmp/peer.json" "$tmp/run.log" "$tmp/replay-run.log" <<'PY'
