@@ -269,7 +269,7 @@ mod tests {
                     });
                 let mut sk = Skeleton3::from_optional_points(k as i64, &pts).unwrap();
                 for lm in Landmark::ALL {
-                    if let Some(mut e) = sk.get(lm).cloned() {
+                    if let Some(mut e) = sk.get(lm).copied() {
                         let i = lm.index();
                         e.reprojection_error_px =
                             Some(((k * 31 + i * 7) % 400) as f64 * 0.1 + 0.0123);

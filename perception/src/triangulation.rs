@@ -672,9 +672,10 @@ impl Sym3 {
         )
     }
 
-    /// `self⁻¹·b` by the adjugate, or `None` when the matrix is singular or not finite.
+    /// The distinct cofactors `[c00, c01, c02, c11, c12, c22]` (the adjugate of a symmetric
+    /// matrix is symmetric) and the determinant.
     #[inline]
-    pub(crate) fn solve(&self, b: &Vector3<f64>) -> Option<Vector3<f64>> {
+    fn adjugate(&self) -> ([f64; 6], f64) {
         let (a, bb, c, d, e, f) = (self.xx, self.xy, self.xz, self.yy, self.yz, self.zz);
         let c00 = d * f - e * e;
         let c01 = c * e - bb * f;
@@ -683,6 +684,13 @@ impl Sym3 {
         let c12 = bb * c - a * e;
         let c22 = a * d - bb * bb;
         let det = a * c00 + bb * c01 + c * c02;
+        ([c00, c01, c02, c11, c12, c22], det)
+    }
+
+    /// `self⁻¹·b` by the adjugate, or `None` when the matrix is singular or not finite.
+    #[inline]
+    pub(crate) fn solve(&self, b: &Vector3<f64>) -> Option<Vector3<f64>> {
+        let ([c00, c01, c02, c11, c12, c22], det) = self.adjugate();
         if !det.is_finite() || det == 0.0 {
             return None;
         }
@@ -699,22 +707,9 @@ impl Sym3 {
 /// refusing a (numerically) rank-deficient one: parallel rays or a single camera position give no
 /// depth, and a solve would return garbage instead of an error.
 fn solve_normal3(m: &Matrix3<f64>, b: &Vector3<f64>) -> Result<Vector3<f64>> {
-    let (a, bb, c, d, e, f) = (
-        m[(0, 0)],
-        m[(0, 1)],
-        m[(0, 2)],
-        m[(1, 1)],
-        m[(1, 2)],
-        m[(2, 2)],
-    );
-    // cofactors of the symmetric matrix [a bb c; bb d e; c e f]
-    let c00 = d * f - e * e;
-    let c01 = c * e - bb * f;
-    let c02 = bb * e - c * d;
-    let c11 = a * f - c * c;
-    let c12 = bb * c - a * e;
-    let c22 = a * d - bb * bb;
-    let det = a * c00 + bb * c01 + c * c02;
+    let sym = Sym3::from_matrix(m);
+    let ([c00, c01, c02, c11, c12, c22], det) = sym.adjugate();
+    let (a, d, f) = (sym.xx, sym.yy, sym.zz);
     // det / (product of the diagonal) ≤ 1 for a PSD matrix; tiny means (near) singular
     let scale = a * d * f;
     if !(det.is_finite() && scale.is_finite()) || scale <= 0.0 || det <= 1e-12 * scale {

@@ -130,6 +130,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut held: Vec<Skeleton3> = Vec::new();
     let mut encoder: Option<LandmarksEncoder> = None;
     let mut text = String::new();
+    // the encoder, once the frame rate is known: the header and the held frames into `text`
+    let start = |held: &mut Vec<Skeleton3>, text: &mut String| {
+        let rate = estimate_rate_hz(held).unwrap_or(args.rate_hz);
+        let mut e = LandmarksEncoder::new(out_format, &name, rate, frame_count);
+        text.push_str(&e.header());
+        for s in held.drain(..) {
+            e.frame_into(&s, text);
+        }
+        e
+    };
     let (mut rejected, mut undistortion_failures) = (0, 0);
     let progress = progress_bar(frame_count);
     for frame in source.by_ref() {
@@ -159,30 +169,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             }
         } else {
             held.push(skeleton);
-            if held.len() == RATE_FRAMES {
-                encoder = Some(start_encoder(
-                    &held,
-                    out_format,
-                    &name,
-                    args.rate_hz,
-                    frame_count,
-                    &mut text,
-                ));
-                held.clear();
-            }
+        }
+        if held.len() == RATE_FRAMES {
+            encoder = Some(start(&mut held, &mut text));
         }
     }
-    let e = encoder.get_or_insert_with(|| {
-        start_encoder(
-            &held,
-            out_format,
-            &name,
-            args.rate_hz,
-            frame_count,
-            &mut text,
-        )
-    });
-    held.clear();
+    let e = encoder.get_or_insert_with(|| start(&mut held, &mut text));
     let written = e.frames_written();
     text.push_str(&e.footer());
     out.write(text.as_bytes())?;
@@ -249,24 +241,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
 /// Fused frames held back to estimate the frame rate a TRC header states (the whole recording when
 /// it is shorter; the old, in-memory command used them all).
 const RATE_FRAMES: usize = 1000;
-
-/// The encoder, its header and the held-back frames into `text`.
-fn start_encoder(
-    held: &[Skeleton3],
-    format: LandmarksFormat,
-    name: &str,
-    fallback_rate_hz: f64,
-    frame_count: usize,
-    text: &mut String,
-) -> LandmarksEncoder {
-    let rate = estimate_rate_hz(held).unwrap_or(fallback_rate_hz);
-    let mut e = LandmarksEncoder::new(format, name, rate, frame_count);
-    text.push_str(&e.header());
-    for s in held {
-        e.frame_into(s, text);
-    }
-    e
-}
 
 /// A progress bar on stderr when it is a terminal (hidden otherwise: no escape codes in logs).
 fn progress_bar(frames: usize) -> indicatif::ProgressBar {

@@ -21,14 +21,9 @@ from pathlib import Path
 import cv2
 import numpy as np
 
-# BlazePose 33 landmark names (MediaPipe order), Pose2Sim-style spelling.
-BLAZEPOSE_33_NAMES = [
-    "Nose", "LEyeInner", "LEye", "LEyeOuter", "REyeInner", "REye", "REyeOuter",
-    "LEar", "REar", "LMouth", "RMouth", "LShoulder", "RShoulder", "LElbow",
-    "RElbow", "LWrist", "RWrist", "LPinky", "RPinky", "LIndex", "RIndex",
-    "LThumb", "RThumb", "LHip", "RHip", "LKnee", "RKnee", "LAnkle", "RAnkle",
-    "LHeel", "RHeel", "LBigToe", "RBigToe",
-]
+# BlazePose 33 landmark names (MediaPipe order), Pose2Sim-style spelling: the timing script's list
+# (this script's folder is on sys.path when it runs).
+from triangulate_timing import BLAZEPOSE_33_NAMES  # noqa: E402
 
 
 def body_pose(t):
