@@ -9,7 +9,8 @@
 # ended after the operator left; ergocell → Cyclone: the locked trajectory (100 points, joint_1..7,
 # the lock's hash in the session state), the hold (empty trajectory), the way home and the fused
 # skeleton (MarkerArray) arrived. Fault injection: `run --record` killed with SIGKILL mid-session, its
-# recording read up to the last second before the kill.
+# recording read up to the last second before the kill; the disk filling while recording (ENOSPC):
+# the robot held and the session ended saying why.
 # Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
 # Measured on the dev machine (2 vCPUs shared with other builds; release; ros2-client 0.12.1, RustDDS
 # 0.15.1, cyclonedds 11.0.1), 2026-11-23, four runs: p50 0.13–0.18 ms, p99 0.29–1.96 ms, max ≤ 4.3 ms,
@@ -103,6 +104,41 @@ if exited:
     print("run had exited before the kill: the test did not run")
 ok = not exited and count > 100 and any("camera" in t for t in topics) and 0 <= gap <= 1.5
 print(("ok   " if ok else "FAIL ") + "run killed by SIGKILL mid-session: its recording reads up to the last second")
+sys.exit(0 if ok else 1)
+PY
+
+# Fault injection (#18): the disk fills while `run` records (a 256 kB tmpfs in a private mount
+# namespace). The session must hold the robot and end saying why (ENOSPC), the controller must get
+# the hold, and run must exit 1. (Whether the last session state reaches the peer before run exits
+# depends on how far discovery got when the disk filled: printed, not asserted.)
+unshare -m -n -- bash -c '
+  set -euo pipefail
+  ip link set lo up
+  ip link set lo multicast on
+  ip route add 224.0.0.0/4 dev lo
+  mkdir -p "$2/full"
+  mount -t tmpfs -o size=256k tmpfs "$2/full"
+  "$1" --log "error" run --config config/cell.toml --trajectories "$2/traj" --max-secs 60 \
+      --record "$2/full/session.mcap" > "$2/full-run.log" 2>&1 &
+  run=$!
+  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 25 > "$2/full-peer.json" 2>/dev/null &
+  peer=$!
+  if wait "$run"; then echo "run exit 0" >> "$2/full-run.log"; else echo "run exit $?" >> "$2/full-run.log"; fi
+  umount "$2/full"
+  wait "$peer" || true
+' _ "$bin" "$tmp"
+python3 - "$tmp/full-run.log" "$tmp/full-peer.json" <<'PY'
+import json, sys
+log = open(sys.argv[1]).read()
+peer = json.load(open(sys.argv[2]))
+ok = ("robot ← HOLD" in log and "recording failed" in log and "No space left on device" in log
+      and "run exit 1" in log and peer["holds"] >= 1)
+print(f"disk full: {[l for l in log.splitlines() if l.startswith('error:')]}; controller got {peer['holds']} hold(s), states {peer['states']}")
+print(("ok   " if ok else "FAIL ") + "disk full while recording: the robot held, the session ended saying why (ENOSPC)")
+if not ok:
+    print(f"  hold logged {'robot ← HOLD' in log}, reason {'recording failed' in log}, ENOSPC {'No space left on device' in log}, "
+          f"exit 1 {'run exit 1' in log}, peer states {peer['states']}")
+    print(log[-2000:])
 sys.exit(0 if ok else 1)
 PY
 

@@ -213,15 +213,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let _context = runtime.enter();
         StopFlag::spawn()?
     };
-    let mut recorder = args
-        .record
-        .as_deref()
-        .map(|path| -> anyhow::Result<McapRecorder> {
-            Ok(McapRecorder::from_file(output::create(
-                "--record", path, args.force,
-            )?)?)
-        })
-        .transpose()?;
+    let mut recording = Recording {
+        recorder: args
+            .record
+            .as_deref()
+            .map(|path| -> anyhow::Result<McapRecorder> {
+                Ok(McapRecorder::from_file(output::create(
+                    "--record", path, args.force,
+                )?)?)
+            })
+            .transpose()?,
+        failure: None,
+        reported: false,
+    };
     let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name)?;
     let participant = node.participant();
     runtime.spawn(node.spinner()?);
@@ -282,9 +286,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     match item {
                         Ok((m, _info)) => {
                             let m: CameraLandmarks = m;
-                            if let Some(rec) = recorder.as_mut() {
-                                rec.write(&topics::camera(&m.camera_id), now_nanos(), &m)?;
-                            }
+                            recording.with(|rec| rec.write(&topics::camera(&m.camera_id), now_nanos(), &m));
                             match messages::view_from_message(&rig, &m) {
                                 Ok(v) => vec![v],
                                 Err(e) => {
@@ -302,9 +304,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
                 Some(Ok((js, _))) = joint_stream.next() => {
                     let js: JointState = js;
-                    if let Some(rec) = recorder.as_mut() {
+                    if recording.is_on() {
                         let now = now_nanos();
-                        rec.write(topics::JOINT_STATES, now, &js)?;
+                        recording.with(|rec| rec.write(topics::JOINT_STATES, now, &js));
                         // The TCP and handover point once a class is locked, at most 20 Hz.
                         let class = machine.locked_class();
                         if geometry.as_ref().map(|(c, _)| *c) != class {
@@ -322,11 +324,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                             if now - last_marker_nanos >= 50_000_000 {
                                 if let Some(p) = g.tcp_world(&js) {
                                     last_marker_nanos = now;
-                                    rec.write(
+                                    recording.with(|rec| rec.write(
                                         topics::ROBOT_MARKERS,
                                         now,
                                         &messages::robot_markers_message(now, Some(p), Some(g.handover_world())),
-                                    )?;
+                                    ));
                                 }
                             }
                         }
@@ -340,8 +342,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             };
             let now = now_nanos();
             // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
-            if let Some(rec) = recorder.as_mut() {
-                rec.tick(now)?;
+            recording.with(|rec| rec.tick(now));
+            // A recording that cannot be written (disk full, the disk gone) holds the robot and ends
+            // the session with the reason: a cell that records must not run on unrecorded.
+            if let Some(why) = recording.new_failure() {
+                let events = machine.shutdown(now, &mut robot, &format!("recording failed: {why}"));
+                for e in &events {
+                    println!("  {}", messages::describe(e));
+                }
+                let outgoing = messages::step_messages(&machine, now, &events);
+                publish_messages(&outgoing, &out).await?;
+                break;
             }
             if let Some(signal) = stop.get() {
                 interrupted = Some(signal);
@@ -351,9 +362,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
                 let outgoing = messages::step_messages(&machine, now, &events);
                 publish_messages(&outgoing, &out).await?;
-                if let Some(rec) = recorder.as_mut() {
-                    recording::record(rec, now, &outgoing)?;
-                }
+                recording.with(|rec| recording::record(rec, now, &outgoing));
                 break;
             }
             if let Some(limit) = args.max_secs {
@@ -364,9 +373,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     }
                     let outgoing = messages::step_messages(&machine, now, &events);
                     publish_messages(&outgoing, &out).await?;
-                    if let Some(rec) = recorder.as_mut() {
-                        recording::record(rec, now, &outgoing)?;
-                    }
+                    recording.with(|rec| recording::record(rec, now, &outgoing));
                     break;
                 }
             }
@@ -381,9 +388,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             if let (Some(t0), true) = (arrival, published_frame) {
                 latencies_ms.push(t0.elapsed().as_secs_f64() * 1e3);
             }
-            if let Some(rec) = recorder.as_mut() {
-                recording::record(rec, now, &outgoing)?;
-            }
+            recording.with(|rec| recording::record(rec, now, &outgoing));
             if machine.state() == SessionState::SessionEnded {
                 sessions_done += 1;
                 let more = args.sessions.is_none_or(|n| sessions_done < n);
@@ -437,12 +442,76 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     // the participant last: every entity has been removed from it (RosNode::participant)
     drop(participant);
     // The recording is closed (summary and footer) on every way out: a normal end, a signal, an error.
-    let closed = recorder.map(McapRecorder::finish).transpose();
+    let closed = match recording.failure {
+        // nothing more is written into a failed recording: what reached the disk stays readable
+        // (the session's own error says why it ended)
+        Some(_) => {
+            eprintln!(
+                "note: the recording holds what was written before it failed, without its footer"
+            );
+            Ok(None)
+        }
+        None => recording
+            .recorder
+            .map(McapRecorder::finish)
+            .transpose()
+            .map_err(|e| anyhow::Error::new(e).context("closing the recording")),
+    };
     match (result, closed) {
         (Ok(()), Ok(_)) => Ok(()),
-        (Ok(()), Err(e)) => Err(anyhow::Error::new(e).context("closing the recording")),
-        (Err(e), Ok(_)) => Err(e),
+        (Ok(()), Err(e)) | (Err(e), Ok(_)) => Err(e),
         (Err(e), Err(c)) => Err(e.context(format!("and the recording could not be closed: {c}"))),
+    }
+}
+
+/// `run`'s recording: the recorder while it works, and the first write error, after which nothing
+/// more is written (and the session is held: the loop checks [`Recording::new_failure`]).
+struct Recording {
+    recorder: Option<McapRecorder>,
+    failure: Option<String>,
+    reported: bool,
+}
+
+impl Recording {
+    /// Recording, and nothing has failed.
+    fn is_on(&self) -> bool {
+        self.recorder.is_some() && self.failure.is_none()
+    }
+
+    /// Runs one write; its error is kept (logged once) instead of ending the loop unheld.
+    fn with(
+        &mut self,
+        write: impl FnOnce(&mut McapRecorder) -> Result<(), recording::RecordingError>,
+    ) {
+        if !self.is_on() {
+            return;
+        }
+        if let Some(rec) = self.recorder.as_mut() {
+            if let Err(e) = write(rec) {
+                // the whole chain: "MCAP: I/O error …: No space left on device (os error 28)"
+                let mut why = e.to_string();
+                let mut source = std::error::Error::source(&e);
+                while let Some(s) = source {
+                    let text = s.to_string();
+                    if !why.contains(&text) {
+                        why = format!("{why}: {text}");
+                    }
+                    source = s.source();
+                }
+                tracing::error!(error = %why, "the recording cannot be written");
+                self.failure = Some(why);
+            }
+        }
+    }
+
+    /// The failure, the first time it is asked for after it happened.
+    fn new_failure(&mut self) -> Option<String> {
+        if self.reported {
+            return None;
+        }
+        let f = self.failure.clone()?;
+        self.reported = true;
+        Some(f)
     }
 }
 
