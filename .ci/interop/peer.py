@@ -15,6 +15,7 @@ stdout at the end.
 """
 
 import json
+import os
 import sys
 import time
 import tomllib
@@ -189,6 +190,10 @@ def stamp(ns):
     return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
 
 
+# PEER_STORM=N: send every camera message N times over (malformed ones mixed in); 1 = no storm.
+STORM = max(1, int(os.environ.get("PEER_STORM", "1")))
+
+
 def main():
     recording, lock_path, timeout_s = sys.argv[1], sys.argv[2], float(sys.argv[3])
     with open(lock_path, "rb") as f:
@@ -285,6 +290,23 @@ def main():
             m.header.stamp = stamp(wall0 + (log_time - t_log0))
             cams[m.camera_id].write(m)
             report["camera_messages_sent"] += 1
+            # A storm (PEER_STORM=N): N − 1 more messages per camera message, cycling through a
+            # duplicate, a wrong-length one, one with NaN pixels and one naming an unknown camera.
+            for k in range(STORM - 1):
+                kind = k % 4
+                if kind == 0:
+                    bad = m
+                elif kind == 1:
+                    bad = CameraLandmarks(m.header, m.camera_id, m.image_width, m.image_height,
+                                          m.x_px[:5], m.y_px, m.visibility, m.presence)
+                elif kind == 2:
+                    bad = CameraLandmarks(m.header, m.camera_id, m.image_width, m.image_height,
+                                          [float("nan")] * len(m.x_px), m.y_px, m.visibility, m.presence)
+                else:
+                    bad = CameraLandmarks(m.header, "no_such_camera", m.image_width, m.image_height,
+                                          m.x_px, m.y_px, m.visibility, m.presence)
+                cams[m.camera_id].write(bad)
+                report["storm_messages_sent"] = report.get("storm_messages_sent", 0) + 1
             i += 1
         for traj in traj_reader.take(N=10):
             if not isinstance(traj, JointTrajectory):  # InvalidSample: a writer went away

@@ -10,7 +10,8 @@
 # the lock's hash in the session state), the hold (empty trajectory), the way home and the fused
 # skeleton (MarkerArray) arrived. Fault injection: `run --record` killed with SIGKILL mid-session, its
 # recording read up to the last second before the kill; the disk filling while recording (ENOSPC):
-# the robot held and the session ended saying why.
+# the robot held and the session ended saying why; a camera message storm (10x, malformed messages
+# mixed in): classed, ended, rejected, latency and memory bounded.
 # Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
 # Measured on the dev machine (2 vCPUs shared with other builds; release; ros2-client 0.12.1, RustDDS
 # 0.15.1, cyclonedds 11.0.1), 2026-11-23, four runs: p50 0.13–0.18 ms, p99 0.29–1.96 ms, max ≤ 4.3 ms,
@@ -139,6 +140,39 @@ if not ok:
     print(f"  hold logged {'robot ← HOLD' in log}, reason {'recording failed' in log}, ENOSPC {'No space left on device' in log}, "
           f"exit 1 {'run exit 1' in log}, peer states {peer['states']}")
     print(log[-2000:])
+sys.exit(0 if ok else 1)
+PY
+
+# Fault injection (#18): a camera message storm — every camera message sent 10 times, malformed ones
+# (wrong length, NaN pixels, an unknown camera id) mixed with duplicates. The session must still
+# class the operator and end normally, reject the malformed messages, and keep its latency and memory
+# bounded (peak RSS by GNU time).
+unshare -n -- bash -c '
+  set -euo pipefail
+  ip link set lo up
+  ip link set lo multicast on
+  ip route add 224.0.0.0/4 dev lo
+  /usr/bin/time -f "%M" -o "$2/storm-rss" "$1" --log "error" run --config config/cell.toml \
+      --rig config/rig.toml --trajectories "$2/traj" --sessions 1 --max-secs 90 --latency-report \
+      > "$2/storm-run.log" 2>&1 &
+  run=$!
+  PEER_STORM=10 python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 90 > "$2/storm-peer.json"
+  wait "$run"
+' _ "$bin" "$tmp"
+python3 - "$tmp/storm-run.log" "$tmp/storm-peer.json" "$tmp/storm-rss" <<'PY'
+import json, re, sys
+log = open(sys.argv[1]).read()
+peer = json.load(open(sys.argv[2]))
+rss_mb = int(open(sys.argv[3]).read().split()[-1]) / 1024
+rejected = int(re.search(r"(\d+) camera message\(s\) rejected", log).group(1))
+lat = re.search(r"p50 = ([\d.]+) ms, p99 = ([\d.]+) ms, max = ([\d.]+) ms", log)
+p50, p99, mx = (float(x) for x in lat.groups())
+print(f"storm: {peer['camera_messages_sent']} + {peer.get('storm_messages_sent', 0)} camera messages sent, "
+      f"{rejected} rejected; latency p50 {p50:.3f} ms, p99 {p99:.3f} ms, max {mx:.1f} ms; peak RSS {rss_mb:.0f} MB")
+ok = ("class c2" in log and "operator left" in log and rejected > 1000 and p99 < 50 and rss_mb < 300)
+print(("ok   " if ok else "FAIL ") + "camera message storm (10x, malformed mixed in): classed, ended, rejected, latency and memory bounded")
+if not ok:
+    print(log[-3000:])
 sys.exit(0 if ok else 1)
 PY
 
