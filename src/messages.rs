@@ -110,18 +110,29 @@ pub fn landmarks_message(rig: &CameraRig, view: &View2) -> CameraLandmarks {
 }
 
 /// Why a landmark message was not turned into a view.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum LandmarksRejected {
     #[error("unknown camera `{0}` (not in the rig)")]
     UnknownCamera(String),
     #[error("camera `{camera}`: {got} landmarks, expected 0 or {LANDMARK_COUNT} in each array")]
     BadLength { camera: String, got: usize },
+    /// A landmark said to be present and visible at a non-finite pixel: the node is broken, and
+    /// nothing else in its message is trusted either (an unobserved landmark has NaN pixels with
+    /// presence and visibility 0).
+    #[error("camera `{camera}`: landmark {landmark} present at a non-finite pixel ({x}, {y})")]
+    NonFinitePixel {
+        camera: String,
+        landmark: &'static str,
+        x: f32,
+        y: f32,
+    },
 }
 
 /// A camera's message back to a view (the inverse of [`landmarks_message`]): a landmark is observed
-/// when its pixels are finite and its presence and visibility are positive; its confidence is the
-/// visibility.
+/// when its presence and visibility are positive; its confidence is the visibility. A message is
+/// rejected whole when it names a camera not in the rig, its arrays are not 0 or 33 long, or a
+/// landmark it says is present has a non-finite pixel.
 pub fn view_from_message(rig: &CameraRig, m: &CameraLandmarks) -> Result<View2, LandmarksRejected> {
     let camera = rig
         .index_of_name(&m.camera_id)
@@ -146,6 +157,14 @@ pub fn view_from_message(rig: &CameraRig, m: &CameraLandmarks) -> Result<View2, 
         let (x, y) = (f64::from(m.x_px[i]), f64::from(m.y_px[i]));
         let (vis, pres) = (f64::from(m.visibility[i]), f64::from(m.presence[i]));
         if pres > 0.0 && vis > 0.0 {
+            if !(x.is_finite() && y.is_finite()) {
+                return Err(LandmarksRejected::NonFinitePixel {
+                    camera: m.camera_id.clone(),
+                    landmark: lm.name(),
+                    x: m.x_px[i],
+                    y: m.y_px[i],
+                });
+            }
             view.set(lm, Keypoint2::new(x, y, vis.min(1.0)).ok());
         }
     }

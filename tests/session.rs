@@ -465,6 +465,34 @@ fn views_round_trip_through_the_camera_message() {
     }
     let mut source = ergocell::session::dummy::ScriptedSource::default();
     assert!(source.poll(0).unwrap().is_none());
+    // Malformed messages are rejected whole, each with its reason (the CI's message storm sends
+    // all three): a NaN pixel on a landmark said to be present is a broken node, not an empty view.
+    let v = &tick.frame.views[0];
+    let good = ergocell::messages::landmarks_message(&rig, v);
+    let mut nan = good.clone();
+    nan.x_px[11] = f32::NAN;
+    nan.presence[11] = 1.0;
+    nan.visibility[11] = 0.9;
+    let mut short = good.clone();
+    short.x_px.truncate(5);
+    let mut stranger = good.clone();
+    stranger.camera_id = "no_such_camera".into();
+    for (m, needle) in [
+        (&nan, "left_shoulder present at a non-finite pixel"),
+        (&short, "5 landmarks"),
+        (&stranger, "unknown camera `no_such_camera`"),
+    ] {
+        let e = ergocell::messages::view_from_message(&rig, m).unwrap_err();
+        assert!(e.to_string().contains(needle), "{e}");
+    }
+    // an unobserved landmark (NaN, presence 0) is simply not seen
+    let mut unseen = good.clone();
+    unseen.x_px[11] = f32::NAN;
+    unseen.presence[11] = 0.0;
+    let back = ergocell::messages::view_from_message(&rig, &unseen).unwrap();
+    assert!(back
+        .get(ergocell_skeleton::Landmark::LeftShoulder)
+        .is_none());
 }
 
 #[test]
