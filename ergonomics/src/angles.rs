@@ -392,6 +392,28 @@ fn legs(s: &Skeleton3, up: &UpVector, floor_height_m: Option<f64>) -> Option<Leg
 }
 
 /// Extracts every angle of one frame. `floor_height_m` is the floor's height along `up`, when known.
+/// How clearly each upper arm points backwards rather than sideways or forwards, for
+/// [`crate::RulaAssessor`]'s hysteresis on the flexion/extension sign: `(−â·f − |â·r|) / |â⊥|`, with
+/// `â⊥` the arm's part across the trunk axis, in `[−√2, 1]` — positive where [`body_angles`] counts
+/// extension, 0 on the back/side diagonal, where the sign of a hanging arm flips from one frame to
+/// the next with the detector's noise (seen on real data: ±26°). `None` when the arm is not below
+/// shoulder level (never extension), hangs straight along the trunk (no direction, no sign to
+/// keep) or is not observed. `[left, right]`.
+pub fn upper_arm_backwardness(s: &Skeleton3) -> [Option<f64>; 2] {
+    let Some(fr) = trunk_frame(s) else {
+        return [None, None];
+    };
+    [Side::Left, Side::Right].map(|side| {
+        let lm = side_landmarks(side);
+        let a = unit(s.position(lm.elbow)? - s.position(lm.shoulder)?)?;
+        if a.dot(&fr.t) >= 0.0 {
+            return None;
+        }
+        let across = (a - fr.t * a.dot(&fr.t)).norm();
+        (across > 1e-3).then(|| (-a.dot(&fr.f) - a.dot(&fr.r).abs()) / across)
+    })
+}
+
 pub fn body_angles(s: &Skeleton3, up: &UpVector, floor_height_m: Option<f64>) -> BodyAngles {
     let frame = trunk_frame(s);
     let mut out = BodyAngles {

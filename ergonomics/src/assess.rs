@@ -506,7 +506,18 @@ pub struct RulaAssessor {
     muscle_b: MuscleUseTracker,
     smoother: AngleSmoother,
     last_stamp: Option<i64>,
+    /// Per side (`[left, right]`), whether the upper arm currently counts as extended backwards
+    /// (see [`UPPER_ARM_SIGN_BAND`]).
+    arm_backward: [bool; 2],
 }
+
+/// Hysteresis of the upper arm's flexion/extension sign, in units of
+/// [`crate::angles::upper_arm_backwardness`]: once counted as flexion, an arm counts as extension
+/// only when its backwardness exceeds this, and back only below its negative — about ±10° of
+/// direction around the back/side diagonal, where a hanging arm's sign otherwise flips with the
+/// detector's noise. The score is the same either way below 45° of elevation; above it extension
+/// scores lower, so starting from flexion never understates.
+pub const UPPER_ARM_SIGN_BAND: f64 = 0.25;
 
 const TRUNK_LANDMARKS: [Landmark; 4] = [
     Landmark::LeftHip,
@@ -601,6 +612,7 @@ impl RulaAssessor {
             muscle_b: MuscleUseTracker::new(config.muscle),
             smoother: AngleSmoother::new(config.smoothing_window_nanos),
             last_stamp: None,
+            arm_backward: [false; 2],
         })
     }
 
@@ -620,7 +632,29 @@ impl RulaAssessor {
             }
         }
         self.last_stamp = Some(stamp);
-        let observed = body_angles(skeleton, &self.config.up, self.config.floor_height_m);
+        let mut observed = body_angles(skeleton, &self.config.up, self.config.floor_height_m);
+        let backwardness = crate::angles::upper_arm_backwardness(skeleton);
+        for ((side, backward), margin) in [&mut observed.left, &mut observed.right]
+            .into_iter()
+            .zip(self.arm_backward.iter_mut())
+            .zip(backwardness)
+        {
+            let Some(flexion) = side.upper_arm_flexion_rad else {
+                continue;
+            };
+            *backward = match margin {
+                Some(m) if m > UPPER_ARM_SIGN_BAND => true,
+                Some(m) if m < -UPPER_ARM_SIGN_BAND => false,
+                Some(_) => *backward,
+                // above shoulder level, straight down: as the frame says
+                None => flexion < 0.0,
+            };
+            side.upper_arm_flexion_rad = Some(if *backward {
+                -flexion.abs()
+            } else {
+                flexion.abs()
+            });
+        }
         let angles = self.smoother.push(stamp, &observed);
         let th = self.config.thresholds;
         let task = self.config.task;
