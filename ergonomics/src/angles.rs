@@ -22,7 +22,10 @@
 //!   `a = elbow − shoulder` from the trunk's downward axis, `acos(â·(−t))`, in `0..=π`. It is counted
 //!   as **extension** (negative) when the arm is below shoulder level and points more backwards than
 //!   sideways (`â·t < 0` and `−â·f > |â·r|`). An arm raised sideways therefore scores by its elevation
-//!   (and the abduction adjustment adds 1), which never under-states the risk.
+//!   (and the abduction adjustment adds 1), which never under-states the risk. Near the back/side
+//!   diagonal that sign is decided with hysteresis over frames by [`crate::RulaAssessor`]
+//!   ([`upper_arm_backwardness`], `assess::UPPER_ARM_SIGN_BAND`); one frame alone (this module,
+//!   `rula score`) uses the rule as stated.
 //! - **Upper-arm abduction**: `asin(â·o)`, the angle of the arm out of the trunk's sagittal plane,
 //!   towards the outside (negative = across the chest).
 //! - **Shoulder raise ratio**: distance from the shoulder to the ear on the same side divided by the
