@@ -24,7 +24,7 @@
 //!   sideways (`â·t < 0` and `−â·f > |â·r|`). An arm raised sideways therefore scores by its elevation
 //!   (and the abduction adjustment adds 1), which never under-states the risk. Near the back/side
 //!   diagonal that sign is decided with hysteresis over frames by [`crate::RulaAssessor`]
-//!   ([`upper_arm_backwardness`], `assess::UPPER_ARM_SIGN_BAND`); one frame alone (this module,
+//!   ([`SideAngles::upper_arm_backwardness`], `assess::UPPER_ARM_SIGN_BAND`); one frame alone (this module,
 //!   `rula score`) uses the rule as stated.
 //! - **Upper-arm abduction**: `asin(â·o)`, the angle of the arm out of the trunk's sagittal plane,
 //!   towards the outside (negative = across the chest).
@@ -97,6 +97,15 @@ impl UpVector {
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct SideAngles {
     pub upper_arm_flexion_rad: Option<f64>,
+    /// How clearly the upper arm points backwards rather than sideways or forwards, for
+    /// [`crate::RulaAssessor`]'s hysteresis on the flexion/extension sign: `(−â·f − |â·r|) / |â⊥|`,
+    /// with `â⊥` the arm's part across the trunk axis, in `[−√2, 1]` — positive where the sign rule
+    /// above counts extension, 0 on the back/side diagonal, where the sign of a hanging arm flips
+    /// from one frame to the next with the detector's noise. `None` when the arm is not below
+    /// shoulder level (never extension), hangs straight along the trunk (no direction, no sign to
+    /// keep) or is not observed. Not an angle of the worksheet: not serialised.
+    #[serde(skip)]
+    pub upper_arm_backwardness: Option<f64>,
     pub upper_arm_abduction_rad: Option<f64>,
     pub shoulder_raise_ratio: Option<f64>,
     pub elbow_flexion_rad: Option<f64>,
@@ -275,6 +284,9 @@ fn side_angles(s: &Skeleton3, frame: Option<&TrunkFrame>, side: Side) -> SideAng
             let elevation = a.dot(&-fr.t).clamp(-1.0, 1.0).acos();
             let backwards = -a.dot(&fr.f) > a.dot(&fr.r).abs() && a.dot(&fr.t) < 0.0;
             out.upper_arm_flexion_rad = Some(if backwards { -elevation } else { elevation });
+            let across = (a - fr.t * a.dot(&fr.t)).norm();
+            out.upper_arm_backwardness = (a.dot(&fr.t) < 0.0 && across > 1e-3)
+                .then(|| (-a.dot(&fr.f) - a.dot(&fr.r).abs()) / across);
             out.upper_arm_abduction_rad = Some(a.dot(&o).clamp(-1.0, 1.0).asin());
         }
     }
@@ -395,28 +407,6 @@ fn legs(s: &Skeleton3, up: &UpVector, floor_height_m: Option<f64>) -> Option<Leg
 }
 
 /// Extracts every angle of one frame. `floor_height_m` is the floor's height along `up`, when known.
-/// How clearly each upper arm points backwards rather than sideways or forwards, for
-/// [`crate::RulaAssessor`]'s hysteresis on the flexion/extension sign: `(−â·f − |â·r|) / |â⊥|`, with
-/// `â⊥` the arm's part across the trunk axis, in `[−√2, 1]` — positive where [`body_angles`] counts
-/// extension, 0 on the back/side diagonal, where the sign of a hanging arm flips from one frame to
-/// the next with the detector's noise (seen on real data: ±26°). `None` when the arm is not below
-/// shoulder level (never extension), hangs straight along the trunk (no direction, no sign to
-/// keep) or is not observed. `[left, right]`.
-pub fn upper_arm_backwardness(s: &Skeleton3) -> [Option<f64>; 2] {
-    let Some(fr) = trunk_frame(s) else {
-        return [None, None];
-    };
-    [Side::Left, Side::Right].map(|side| {
-        let lm = side_landmarks(side);
-        let a = unit(s.position(lm.elbow)? - s.position(lm.shoulder)?)?;
-        if a.dot(&fr.t) >= 0.0 {
-            return None;
-        }
-        let across = (a - fr.t * a.dot(&fr.t)).norm();
-        (across > 1e-3).then(|| (-a.dot(&fr.f) - a.dot(&fr.r).abs()) / across)
-    })
-}
-
 pub fn body_angles(s: &Skeleton3, up: &UpVector, floor_height_m: Option<f64>) -> BodyAngles {
     let frame = trunk_frame(s);
     let mut out = BodyAngles {

@@ -512,7 +512,7 @@ pub struct RulaAssessor {
 }
 
 /// Hysteresis of the upper arm's flexion/extension sign, in units of
-/// [`crate::angles::upper_arm_backwardness`]: once counted as flexion, an arm counts as extension
+/// [`crate::SideAngles::upper_arm_backwardness`]: once counted as flexion, an arm counts as extension
 /// only when its backwardness exceeds this, and back only below its negative — about ±10° of
 /// direction around the back/side diagonal, where a hanging arm's sign otherwise flips with the
 /// detector's noise. The score is the same either way below 45° of elevation; above it extension
@@ -633,16 +633,14 @@ impl RulaAssessor {
         }
         self.last_stamp = Some(stamp);
         let mut observed = body_angles(skeleton, &self.config.up, self.config.floor_height_m);
-        let backwardness = crate::angles::upper_arm_backwardness(skeleton);
-        for ((side, backward), margin) in [&mut observed.left, &mut observed.right]
+        for (side, backward) in [&mut observed.left, &mut observed.right]
             .into_iter()
             .zip(self.arm_backward.iter_mut())
-            .zip(backwardness)
         {
             let Some(flexion) = side.upper_arm_flexion_rad else {
                 continue;
             };
-            *backward = match margin {
+            *backward = match side.upper_arm_backwardness {
                 Some(m) if m > UPPER_ARM_SIGN_BAND => true,
                 Some(m) if m < -UPPER_ARM_SIGN_BAND => false,
                 Some(_) => *backward,
