@@ -11,8 +11,7 @@ use std::collections::BTreeMap;
 use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::sync::OnceLock;
+use std::process::Command;
 
 mod common;
 use common::ReviewServer;
@@ -27,19 +26,7 @@ fn tmp(name: &str) -> PathBuf {
 
 /// One short demo session, recorded once for all tests of this file.
 fn demo_recording() -> &'static Path {
-    static REC: OnceLock<PathBuf> = OnceLock::new();
-    REC.get_or_init(|| {
-        let out = tmp("review-demo.mcap");
-        let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-            .current_dir(root())
-            .args(["demo", "--cycles", "1", "--seed", "7", "--force", "--out"])
-            .arg(&out)
-            .stdout(Stdio::null())
-            .status()
-            .unwrap();
-        assert!(status.success(), "demo failed");
-        out
-    })
+    common::demo_recording("review-demo.mcap")
 }
 
 fn ergocell(args: &[&str]) -> std::process::Output {

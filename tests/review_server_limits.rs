@@ -14,8 +14,7 @@
 use std::io::{BufReader, ErrorKind, Lines, Read, Write};
 use std::net::TcpStream;
 use std::path::{Path, PathBuf};
-use std::process::{Child, ChildStdout, Command, ExitStatus, Stdio};
-use std::sync::OnceLock;
+use std::process::{Child, ChildStdout, Command, ExitStatus};
 use std::time::{Duration, Instant};
 
 mod common;
@@ -32,19 +31,7 @@ fn root() -> PathBuf {
 
 /// One short demo session, recorded once for all tests of this file.
 fn demo_recording() -> &'static Path {
-    static REC: OnceLock<PathBuf> = OnceLock::new();
-    REC.get_or_init(|| {
-        let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("review-limits-demo.mcap");
-        let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-            .current_dir(root())
-            .args(["demo", "--cycles", "1", "--seed", "7", "--force", "--out"])
-            .arg(&out)
-            .stdout(Stdio::null())
-            .status()
-            .unwrap();
-        assert!(status.success(), "demo failed");
-        out
-    })
+    common::demo_recording("review-limits-demo.mcap")
 }
 
 /// A running `ergocell review <demo> --port 0 <extra>`, killed on drop.

@@ -13,14 +13,13 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use ergocell_ergonomics::assess::{BodyRegion, InputSource, UNOBSERVED_WRIST_FLEXION_DEG};
-use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
+use ergocell_ergonomics::pose::PoseSpec;
 use ergocell_ergonomics::{
     AssessmentConfig, FrameAssessment, RulaAssessor, Side, SideAssessment, UpVector, WarningConfig,
     WarningTracker,
 };
 use ergocell_perception::detections::KeypointFormat;
 use ergocell_skeleton::{Landmark, Skeleton3};
-use nalgebra::{Rotation3, Vector3};
 
 const FRAME: i64 = 100_000_000;
 
@@ -31,25 +30,6 @@ const LAYOUTS: [(KeypointFormat, &str); 4] = [
     (KeypointFormat::Coco17, "COCO-17"),
     (KeypointFormat::Halpe26, "HALPE-26"),
 ];
-
-/// Right arm reaching (100° up, elbow 20°, wrist flexed 25°), trunk 30° and neck 25° forward, the
-/// left arm hanging with a straight wrist, in a rotated and shifted world: the golden pose of
-/// `ergonomics/tests/assess_warnings.rs` (`both_sides_are_scored_and_the_worse_is_the_headline`).
-fn reaching() -> PoseSpec {
-    PoseSpec {
-        trunk_flexion_rad: 30f64.to_radians(),
-        neck_flexion_rad: 25f64.to_radians(),
-        right_arm: ArmPose {
-            flexion_rad: 100f64.to_radians(),
-            elbow_flexion_rad: 20f64.to_radians(),
-            wrist_flexion_rad: 25f64.to_radians(),
-            ..ArmPose::default()
-        },
-        world_rotation: Rotation3::from_euler_angles(1.2, 0.3, -0.7),
-        world_translation: Vector3::new(0.5, 0.5, 2.0),
-        ..PoseSpec::default()
-    }
-}
 
 /// The skeleton with only the landmarks `layout` fills (what triangulating its detections gives).
 fn as_seen_by(layout: KeypointFormat, full: &Skeleton3) -> Skeleton3 {
@@ -122,7 +102,7 @@ fn the_layouts_have_no_hand_points_but_everything_else_the_worksheet_needs() {
 /// conservative value, uncertain, with the reason; every other region as the full skeleton scores it.
 #[test]
 fn rula_track_scored_0_of_100_frames_of_a_detector_without_hand_points() {
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     let full = assess_frames(&spec, None, 100);
     for (layout, name) in LAYOUTS {
         let frames = assess_frames(&spec, Some(layout), 100);
@@ -214,7 +194,7 @@ fn rula_track_scored_0_of_100_frames_of_a_detector_without_hand_points() {
 /// is conservative, nothing uncertain.
 #[test]
 fn a_full_blazepose_skeleton_scores_exactly_as_before() {
-    let f = &assess_frames(&reaching(), None, 1)[0];
+    let f = &assess_frames(&PoseSpec::reaching(), None, 1)[0];
     let [l, r] = both(f);
     assert_eq!(r.scores.upper_arm_score, 4, "100° flexion");
     assert_eq!(l.scores.upper_arm_score, 1, "hanging");
@@ -233,7 +213,7 @@ fn a_full_blazepose_skeleton_scores_exactly_as_before() {
     assert_eq!(f.headline().unwrap().side, Side::Right);
 
     // Upright with the left arm reaching: (3, 2), as in `ergonomics/tests/assess_warnings.rs`.
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     let left_reach = PoseSpec {
         left_arm: spec.right_arm,
         right_arm: PoseSpec::default().right_arm,
@@ -250,7 +230,7 @@ fn a_full_blazepose_skeleton_scores_exactly_as_before() {
 /// conservative value is only for a wrist never observed.
 #[test]
 fn a_hand_seen_before_is_held_not_scored_conservatively() {
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     let mut a = assessor(&spec);
     let at = |k: i64| {
         PoseSpec {
@@ -282,7 +262,7 @@ fn a_hand_seen_before_is_held_not_scored_conservatively() {
 /// the regions the layout sees warn as on the full skeleton.
 #[test]
 fn an_unobserved_wrist_raises_no_warning() {
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     for (layout, name) in LAYOUTS {
         let mut tracker = WarningTracker::new(WarningConfig::default());
         let mut full_tracker = WarningTracker::new(WarningConfig::default());

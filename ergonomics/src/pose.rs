@@ -84,6 +84,25 @@ fn rz(a: f64) -> Rotation3<f64> {
 }
 
 impl PoseSpec {
+    /// The golden reaching pose the assessment tests score: right arm 100° up, elbow 20°, wrist
+    /// flexed 25°; trunk 30° and neck 25° forward; the left arm hanging with a straight wrist; in a
+    /// rotated and shifted world (so no test relies on z being up).
+    pub fn reaching() -> Self {
+        Self {
+            trunk_flexion_rad: 30f64.to_radians(),
+            neck_flexion_rad: 25f64.to_radians(),
+            right_arm: ArmPose {
+                flexion_rad: 100f64.to_radians(),
+                elbow_flexion_rad: 20f64.to_radians(),
+                wrist_flexion_rad: 25f64.to_radians(),
+                ..ArmPose::default()
+            },
+            world_rotation: Rotation3::from_euler_angles(1.2, 0.3, -0.7),
+            world_translation: Vector3::new(0.5, 0.5, 2.0),
+            ..Self::default()
+        }
+    }
+
     /// The world's up vector for this pose.
     pub fn up(&self) -> Vector3<f64> {
         self.world_rotation * Vector3::z()

@@ -15,7 +15,7 @@ use ergocell_ergonomics::{
     WarningConfig, WarningTracker, WristTwist,
 };
 use ergocell_skeleton::{Landmark, Skeleton3};
-use nalgebra::{Rotation3, Vector3};
+use nalgebra::Vector3;
 
 const SEC: i64 = 1_000_000_000;
 const FRAME: i64 = SEC / 10;
@@ -32,25 +32,9 @@ fn at(spec: &PoseSpec, stamp_nanos: i64) -> Skeleton3 {
     .skeleton()
 }
 
-fn reaching() -> PoseSpec {
-    PoseSpec {
-        trunk_flexion_rad: 30f64.to_radians(),
-        neck_flexion_rad: 25f64.to_radians(),
-        right_arm: ArmPose {
-            flexion_rad: 100f64.to_radians(),
-            elbow_flexion_rad: 20f64.to_radians(),
-            wrist_flexion_rad: 25f64.to_radians(),
-            ..ArmPose::default()
-        },
-        world_rotation: Rotation3::from_euler_angles(1.2, 0.3, -0.7),
-        world_translation: Vector3::new(0.5, 0.5, 2.0),
-        ..PoseSpec::default()
-    }
-}
-
 #[test]
 fn both_sides_are_scored_and_the_worse_is_the_headline() {
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     let f = assessor_for(&spec).assess(&spec.skeleton()).unwrap();
     let (l, r) = (f.left.as_ref().unwrap(), f.right.as_ref().unwrap());
     assert_eq!(r.scores.upper_arm_score, 4, "100° flexion");
@@ -138,7 +122,7 @@ fn with_confidence(s: &Skeleton3, lm: Landmark, confidence: f64) -> Skeleton3 {
 
 #[test]
 fn low_confidence_makes_the_score_uncertain_never_lower() {
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     let sure = assessor_for(&spec).assess(&spec.skeleton()).unwrap();
     let shaky = with_confidence(&spec.skeleton(), Landmark::RightWrist, 0.2);
     let unsure = assessor_for(&spec).assess(&shaky).unwrap();
@@ -161,7 +145,7 @@ fn low_confidence_makes_the_score_uncertain_never_lower() {
 
 #[test]
 fn missing_landmarks_are_held_or_leave_the_side_unscored() {
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     let mut assessor = assessor_for(&spec);
     let mut first = at(&spec, 0);
     first.set(Landmark::RightElbow, None).unwrap();
@@ -381,7 +365,7 @@ fn a_warning_clears_only_inside_the_margin_and_after_the_dwell() {
 
 #[test]
 fn session_summary_shares_add_up() {
-    let spec = reaching();
+    let spec = PoseSpec::reaching();
     let mut assessor = assessor_for(&spec);
     let mut summary = SummaryBuilder::new(SEC);
     for k in 0..20 {

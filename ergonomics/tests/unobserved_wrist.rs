@@ -13,10 +13,9 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use ergocell_ergonomics::assess::{InputSource, UNOBSERVED_WRIST_FLEXION_DEG};
-use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
+use ergocell_ergonomics::pose::PoseSpec;
 use ergocell_ergonomics::{AssessmentConfig, RulaAssessor, Side, UpVector};
 use ergocell_skeleton::{Landmark, Skeleton3};
-use nalgebra::{Rotation3, Vector3};
 
 const FRAME: i64 = 100_000_000;
 
@@ -29,22 +28,11 @@ const HAND_POINTS: [Landmark; 6] = [
     Landmark::RightThumb,
 ];
 
-/// The golden reaching pose of `assess_warnings.rs`: right arm 100° up, elbow 20°, wrist 25°; trunk
-/// 30°, neck 25°; left arm hanging, wrist straight; rotated, shifted world.
+/// The golden reaching pose (`PoseSpec::reaching`) at a time.
 fn reaching(stamp_nanos: i64) -> PoseSpec {
     PoseSpec {
-        trunk_flexion_rad: 30f64.to_radians(),
-        neck_flexion_rad: 25f64.to_radians(),
-        right_arm: ArmPose {
-            flexion_rad: 100f64.to_radians(),
-            elbow_flexion_rad: 20f64.to_radians(),
-            wrist_flexion_rad: 25f64.to_radians(),
-            ..ArmPose::default()
-        },
-        world_rotation: Rotation3::from_euler_angles(1.2, 0.3, -0.7),
-        world_translation: Vector3::new(0.5, 0.5, 2.0),
         stamp_nanos,
-        ..PoseSpec::default()
+        ..PoseSpec::reaching()
     }
 }
 

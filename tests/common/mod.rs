@@ -1,10 +1,12 @@
-//! Shared by the review tests: a running `ergocell review`, killed on drop.
+//! Shared by the review tests: a running `ergocell review`, killed on drop, and the demo session
+//! they review.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, dead_code)]
 
 use std::io::{BufRead, BufReader, Lines};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Child, ChildStdout, Command, Stdio};
+use std::sync::OnceLock;
 
 /// A running `ergocell review` and the URL it printed.
 pub struct ReviewServer {
@@ -76,4 +78,22 @@ impl Drop for ReviewServer {
         let _ = self.child.kill();
         let _ = self.child.wait();
     }
+}
+
+/// One short demo session (one cycle, seed 7), recorded once per test binary as
+/// `<CARGO_TARGET_TMPDIR>/<file>` (the first call's name is the one used).
+pub fn demo_recording(file: &str) -> &'static Path {
+    static REC: OnceLock<PathBuf> = OnceLock::new();
+    REC.get_or_init(|| {
+        let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(file);
+        let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["demo", "--cycles", "1", "--seed", "7", "--force", "--out"])
+            .arg(&out)
+            .stdout(Stdio::null())
+            .status()
+            .unwrap();
+        assert!(status.success(), "demo failed");
+        out
+    })
 }
