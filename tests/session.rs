@@ -30,9 +30,13 @@ fn rig() -> CameraRig {
     parse_rig(&text, "config/rig.toml").unwrap().0
 }
 
-/// A provider on the repository's files with a demo approval of `approve` in a fresh temp folder.
+/// A provider on the repository's files with a demo approval of `approve` in a fresh temp folder
+/// of its own (numbered: tests running in parallel may ask for the same `name`, e.g. `home()`, and
+/// must not remove each other's approvals).
 fn provider(name: &str, approve: Option<TrajectoryClass>) -> FileTrajectories {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("session-{name}"));
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("session-{name}-{n}"));
     let _ = std::fs::remove_dir_all(&dir);
     let p = FileTrajectories::new(
         &root().join("config/cell.toml"),
