@@ -5,6 +5,7 @@
 
 pub mod messages;
 pub mod recording;
+pub mod review_server;
 pub mod robot_markers;
 pub mod session;
 pub mod shipped;
