@@ -101,6 +101,54 @@ fn now_nanos() -> i64 {
         .map_or(0, |d| i64::try_from(d.as_nanos()).unwrap_or(i64::MAX))
 }
 
+/// `run`'s clock: the wall clock read once at start, advanced by the monotonic clock. Everything the
+/// session times — stale cameras, hold, resume and departure bounds, the height timeout, `--max-secs`,
+/// the recording's log times and the stamps ergocell publishes — runs on it, so a step of the system
+/// clock during a session (an NTP correction, someone setting the time) moves none of them: the step
+/// is noticed on the next tick and reported once, and the session goes on as if nothing happened.
+/// (The cameras' stamps are their own clock's: a camera whose clock steps is handled by the staleness
+/// and fusion windows, which compare arrival times on this clock.)
+struct SessionClock {
+    wall0_nanos: i64,
+    mono0: std::time::Instant,
+    /// The wall clock minus this clock when last reported (0 at start).
+    reported_offset_nanos: i64,
+}
+
+/// A wall clock that departs from the session clock by more than this since the last report is a step.
+const WALL_STEP_NANOS: i64 = 1_000_000_000;
+
+impl SessionClock {
+    fn start() -> Self {
+        Self::anchored(now_nanos(), instant())
+    }
+
+    fn anchored(wall0_nanos: i64, mono0: std::time::Instant) -> Self {
+        Self {
+            wall0_nanos,
+            mono0,
+            reported_offset_nanos: 0,
+        }
+    }
+
+    /// Nanoseconds since the Unix epoch, on the session's monotonic time line.
+    fn now(&self) -> i64 {
+        let elapsed = i64::try_from(self.mono0.elapsed().as_nanos()).unwrap_or(i64::MAX);
+        self.wall0_nanos.saturating_add(elapsed)
+    }
+
+    /// The step of the wall clock (`wall_nanos`, read at session time `now`) since the last one
+    /// reported, in nanoseconds, when it exceeds [`WALL_STEP_NANOS`]; then it is the new reference.
+    fn wall_step(&mut self, wall_nanos: i64, now: i64) -> Option<i64> {
+        let offset = wall_nanos.saturating_sub(now);
+        let step = offset.saturating_sub(self.reported_offset_nanos);
+        (step.abs() > WALL_STEP_NANOS).then(|| {
+            self.reported_offset_nanos = offset;
+            step
+        })
+    }
+}
+
 /// Monotonic instant for latency measurements.
 #[allow(clippy::disallowed_methods)]
 fn instant() -> std::time::Instant {
@@ -260,7 +308,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let mut last_marker_nanos = i64::MIN / 2;
         let mut tick = tokio::time::interval(Duration::from_millis(20));
         let mut interrupted: Option<Signal> = None;
-        let started = now_nanos();
+        let mut clock = SessionClock::start();
+        let started = clock.now();
         let cpu0 = cpu_secs();
         let wall0 = instant();
         let mut latencies_ms: Vec<f64> = Vec::new();
@@ -286,7 +335,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     match item {
                         Ok((m, _info)) => {
                             let m: CameraLandmarks = m;
-                            recording.with(|rec| rec.write(&topics::camera(&m.camera_id), now_nanos(), &m));
+                            recording.with(|rec| rec.write(&topics::camera(&m.camera_id), clock.now(), &m));
                             match messages::view_from_message(&rig, &m) {
                                 Ok(v) => vec![v],
                                 Err(e) => {
@@ -305,7 +354,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 Some(Ok((js, _))) = joint_stream.next() => {
                     let js: JointState = js;
                     if recording.is_on() {
-                        let now = now_nanos();
+                        let now = clock.now();
                         recording.with(|rec| rec.write(topics::JOINT_STATES, now, &js));
                         // The TCP and handover point once a class is locked, at most 20 Hz.
                         let class = machine.locked_class();
@@ -340,7 +389,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
                 _ = tick.tick() => Vec::new(),
             };
-            let now = now_nanos();
+            let now = clock.now();
+            if let Some(step) = clock.wall_step(now_nanos(), now) {
+                println!(
+                    "  wall clock stepped by {:+.3} s: session timing goes on unchanged (monotonic)",
+                    step as f64 * 1e-9
+                );
+                tracing::warn!(step_s = step as f64 * 1e-9, "wall clock stepped");
+            }
             // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
             recording.with(|rec| rec.tick(now));
             // A recording that cannot be written (disk full, the disk gone) holds the robot and ends
@@ -659,4 +715,30 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     // the participant last: every entity has been removed from it (RosNode::participant)
     drop(participant);
     result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::SessionClock;
+
+    #[test]
+    fn session_clock_reports_each_wall_clock_step_once_and_ignores_drift() {
+        let mono0 = super::instant();
+        let mut clock = SessionClock::anchored(1_000_000_000_000, mono0);
+        let now = clock.now();
+        assert!(now >= 1_000_000_000_000);
+        // Drift under a second: not a step.
+        assert_eq!(clock.wall_step(now + 400_000_000, now), None);
+        // One hour forward: reported once, then the new reference.
+        let hour = 3_600_000_000_000;
+        assert_eq!(clock.wall_step(now + hour, now), Some(hour));
+        assert_eq!(clock.wall_step(now + hour + 200_000_000, now), None);
+        // Back by ten minutes from there.
+        assert_eq!(
+            clock.wall_step(now + hour - 600_000_000_000, now),
+            Some(-600_000_000_000)
+        );
+        // The session clock never went back, whatever the wall clock did.
+        assert!(clock.now() >= now);
+    }
 }
