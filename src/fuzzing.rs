@@ -1,0 +1,332 @@
+//! Entry points of the coverage-guided fuzz targets (`fuzz/`), one per parser that reads outside data,
+//! shared with the corpus replay test (`tests/fuzz_corpus.rs`) so that CI runs every committed corpus
+//! input and every crash found through exactly the code the fuzzer ran.
+//!
+//! Each entry takes arbitrary bytes and must return: a parse error is a fine answer, a panic, a hang
+//! or an abort is a bug. Where a parse succeeds, each also checks a property the parser promises
+//! (a round trip, a value range, a header on every answer), so the fuzzer finds silent garbage too,
+//! not only crashes. The entries use `assert!` on purpose: an assertion here is the fuzzer's finding.
+//!
+//! Targets (the same names as `fuzz/fuzz_targets/*.rs`): [`rig`] (ergocell TOML, Anipose TOML and
+//! caliscope TOML rigs, chosen by content as `--calibration` does), [`openpose_json`],
+//! [`caliscope_csv`], [`landmarks_file`] (JSON, CSV, TRC), [`urdf`] (through our loader and `k`),
+//! [`trajectory_toml`], [`cell_toml`] (both crates' readers of `config/cell.toml`), [`lock_toml`],
+//! [`approvals_toml`], [`mcap_recording`] (the review's and `replay`'s readers), [`cdr_messages`]
+//! (every message `bridge` decodes), [`rula_json`] (`rula score` worksheets and tables) and
+//! [`review_request`] (raw HTTP/1 bytes into the review server).
+#![allow(clippy::missing_panics_doc)]
+
+use std::net::{Ipv4Addr, SocketAddr};
+use std::sync::{Arc, OnceLock};
+use std::time::Duration;
+
+use ergocell_bridge::msg;
+use ergocell_perception::detections::ImportStats;
+use ergocell_perception::detections::Keypoint2;
+use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
+use ergocell_perception::{import, rig_file, CameraRig, KeypointFormat};
+use ergocell_robot::lock::{ApprovalsFile, LockFile};
+use ergocell_robot::{CellConfig, RobotModel, TrajectoryClass, TrajectorySpec};
+
+use crate::review_server::{self, Limits, Served};
+
+fn text(data: &[u8]) -> Option<&str> {
+    std::str::from_utf8(data).ok()
+}
+
+/// The shipped rig (four cameras `cam_0`…), which the CSV target reads against.
+fn shipped_rig() -> &'static CameraRig {
+    static RIG: OnceLock<CameraRig> = OnceLock::new();
+    RIG.get_or_init(|| {
+        let text =
+            crate::shipped::file(std::path::Path::new(crate::shipped::RIG)).unwrap_or_default();
+        match rig_file::parse_rig(text, "config/rig.toml") {
+            Ok((rig, _)) => rig,
+            Err(e) => panic!("the shipped rig does not parse: {e}"),
+        }
+    })
+}
+
+/// A rig file of any format `parse_rig` recognises. A rig that parses has finite, positive focal
+/// lengths on every camera (what the parser promises to check).
+pub fn rig(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    if let Ok((rig, _format)) = rig_file::parse_rig(text, "fuzz") {
+        for camera in rig.cameras() {
+            let k = &camera.intrinsics;
+            assert!(
+                k.fx.is_finite() && k.fy.is_finite() && k.fx > 0.0 && k.fy > 0.0,
+                "a parsed rig has a non-finite or non-positive focal length: {k:?}"
+            );
+        }
+    }
+}
+
+/// One OpenPose JSON frame, read in each keypoint layout. Every person returned has only finite
+/// pixels.
+pub fn openpose_json(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    for format in [
+        KeypointFormat::BlazePose33,
+        KeypointFormat::Body25,
+        KeypointFormat::Body25B,
+        KeypointFormat::Coco17,
+        KeypointFormat::Halpe26,
+    ] {
+        let mut stats = ImportStats::default();
+        if let Ok(people) = import::parse_openpose_frame(text, "fuzz", format, &mut stats) {
+            for person in &people {
+                assert_finite_pixels(person.keypoints.iter().flatten());
+            }
+        }
+    }
+}
+
+/// caliscope's long `xy_*.csv`, raw bytes. Every keypoint kept has a finite pixel, and a camera is
+/// seen at most once per frame.
+pub fn caliscope_csv(data: &[u8]) {
+    let mut stats = ImportStats::default();
+    if let Ok(frames) = import::parse_caliscope_xy_bytes(data, "fuzz", shipped_rig(), &mut stats) {
+        for frame in &frames {
+            let mut cameras: Vec<_> = frame.views.iter().map(|v| v.camera).collect();
+            cameras.sort_unstable();
+            cameras.dedup();
+            assert_eq!(
+                cameras.len(),
+                frame.views.len(),
+                "a camera twice in one frame"
+            );
+            for view in &frame.views {
+                assert_finite_pixels(view.keypoints().iter().flatten());
+            }
+        }
+    }
+}
+
+fn assert_finite_pixels<'a>(keypoints: impl Iterator<Item = &'a Keypoint2>) {
+    for k in keypoints {
+        let p = k.pixel();
+        assert!(
+            p.x.is_finite() && p.y.is_finite(),
+            "non-finite pixel kept: {k:?}"
+        );
+    }
+}
+
+/// A 3D landmark recording (JSON, CSV, TRC: the first byte picks the reader).
+pub fn landmarks_file(data: &[u8]) {
+    let Some((&selector, rest)) = data.split_first() else {
+        return;
+    };
+    let Some(text) = text(rest) else { return };
+    let format = match selector % 3 {
+        0 => LandmarksFormat::Json,
+        1 => LandmarksFormat::Csv,
+        _ => LandmarksFormat::Trc,
+    };
+    let _ = read_landmarks(text, format, "fuzz");
+}
+
+/// A URDF through `RobotModel::from_urdf_str` (our checks, then `k`'s conversion). A model that
+/// loads has ordered, finite limits on every joint, and forward kinematics at the middle of the
+/// limits is finite.
+pub fn urdf(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    if let Ok(model) = RobotModel::from_urdf_str(text, "link_0", "flange") {
+        let mid: Vec<f64> = model
+            .joints()
+            .iter()
+            .map(|j| {
+                assert!(
+                    j.lower_rad.is_finite()
+                        && j.upper_rad.is_finite()
+                        && j.lower_rad <= j.upper_rad,
+                    "a loaded joint has bad limits: {j:?}"
+                );
+                0.5 * (j.lower_rad + j.upper_rad)
+            })
+            .collect();
+        if let Ok(T_base_flange) = model.fk_flange(&mid) {
+            assert!(
+                T_base_flange
+                    .translation
+                    .vector
+                    .iter()
+                    .all(|v| v.is_finite()),
+                "forward kinematics is not finite"
+            );
+        }
+    }
+}
+
+/// A class trajectory file (`trajectories/c*.toml`).
+pub fn trajectory_toml(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    let _ = TrajectorySpec::from_toml_str(text);
+}
+
+/// The cell file, through both readers (the robot's section, the whole cell's settings).
+pub fn cell_toml(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    let _ = CellConfig::from_toml_str(text);
+    let _ = ergocell_cell::CellSettings::from_toml_str(text, "fuzz");
+}
+
+/// A lock file. A lock that parses re-serialises to one that parses to the same lock (its hash is
+/// recomputed on the way in, so the round trip also checks the hash is stable).
+pub fn lock_toml(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    for class in [
+        TrajectoryClass::C1,
+        TrajectoryClass::C2,
+        TrajectoryClass::C3,
+    ] {
+        if let Ok(lock) = LockFile::from_toml_str(class, text) {
+            let written = match lock.to_toml() {
+                Ok(written) => written,
+                Err(e) => panic!("a parsed lock does not serialise: {e}"),
+            };
+            match LockFile::from_toml_str(class, &written) {
+                Ok(again) => assert_eq!(again, lock, "lock round trip changed it"),
+                Err(e) => panic!("a written lock does not parse: {e}"),
+            }
+        }
+    }
+}
+
+/// An approvals file: parsed, and its hash chain checked.
+pub fn approvals_toml(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    if let Ok(file) = ApprovalsFile::from_toml_str(text) {
+        let _ = file.check_chain();
+    }
+}
+
+/// A session recording (MCAP), through the review's reader and `replay`'s camera reader.
+pub fn mcap_recording(data: &[u8]) {
+    if let Ok(recording) = ergocell_review::read_recording(data) {
+        let _ = ergocell_review::read::split_sessions(&recording);
+    }
+    let _ = crate::recording::read_camera_landmarks(data);
+}
+
+fn cdr_round_trip<M>(payload: &[u8])
+where
+    M: serde::Serialize + serde::de::DeserializeOwned + PartialEq + std::fmt::Debug,
+{
+    if let Ok(message) = ergocell_bridge::cdr::decode::<M>(payload) {
+        let encoded = match ergocell_bridge::cdr::encode(&message) {
+            Ok(encoded) => encoded,
+            Err(e) => panic!("a decoded message does not encode: {e}"),
+        };
+        match ergocell_bridge::cdr::decode::<M>(&encoded) {
+            // NaN fields make `==` false on an exact round trip: compare the encodings instead.
+            Ok(again) => assert!(
+                again == message || ergocell_bridge::cdr::encode(&again).ok() == Some(encoded),
+                "CDR round trip changed the message"
+            ),
+            Err(e) => panic!("an encoded message does not decode: {e}"),
+        }
+    }
+}
+
+/// A CDR payload as each message `bridge` decodes (the first byte picks the type): what decodes
+/// encodes and decodes back to the same message.
+pub fn cdr_messages(data: &[u8]) {
+    let Some((&selector, payload)) = data.split_first() else {
+        return;
+    };
+    match selector % 8 {
+        0 => cdr_round_trip::<msg::CameraLandmarks>(payload),
+        1 => cdr_round_trip::<msg::JointState>(payload),
+        2 => cdr_round_trip::<msg::JointTrajectory>(payload),
+        3 => cdr_round_trip::<msg::SessionState>(payload),
+        4 => cdr_round_trip::<msg::ErgonomicState>(payload),
+        5 => cdr_round_trip::<msg::PostureWarning>(payload),
+        6 => cdr_round_trip::<msg::OperatorPose>(payload),
+        _ => cdr_round_trip::<msg::MarkerArray>(payload),
+    }
+}
+
+/// `rula score` input: worksheets JSON and tables JSON.
+pub fn rula_json(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    if let Ok(worksheets) = ergocell_ergonomics::rula::parse_worksheets(text) {
+        for input in &worksheets {
+            let _ = ergocell_ergonomics::rula::score_worksheet(input);
+        }
+    }
+    let _ = ergocell_ergonomics::tables::parse_tables(text);
+}
+
+fn runtime() -> &'static tokio::runtime::Runtime {
+    static RUNTIME: OnceLock<tokio::runtime::Runtime> = OnceLock::new();
+    RUNTIME.get_or_init(|| {
+        match tokio::runtime::Builder::new_current_thread()
+            .enable_time()
+            .build()
+        {
+            Ok(runtime) => runtime,
+            Err(e) => panic!("tokio runtime: {e}"),
+        }
+    })
+}
+
+/// Raw bytes from a client on loopback into the review server (hyper's HTTP/1 parser, the Host and
+/// method guard, the routes), the client closing its side after sending them. The server must
+/// finish the connection (no hang: a 5 s limit, far beyond its 1 s header timeout here), answer in
+/// HTTP/1 (the request's version), and put its security headers on every page it serves.
+pub fn review_request(data: &[u8]) {
+    use tokio::io::{AsyncReadExt as _, AsyncWriteExt as _};
+    let served = Arc::new(Served::new(
+        "<!doctype html><title>fuzz</title>",
+        "{}",
+        Some(vec![
+            "127.0.0.1:8765".to_owned(),
+            "localhost:8765".to_owned(),
+        ]),
+    ));
+    let app = review_server::router(served);
+    let limits = Limits {
+        header_timeout: Duration::from_secs(1),
+        stall_timeout: Duration::from_secs(2),
+        max_connections: 1,
+        shutdown_grace: Duration::from_millis(10),
+    };
+    let peer = SocketAddr::from((Ipv4Addr::LOCALHOST, 40_000));
+    let (mut client, server) = tokio::io::duplex(1 << 16);
+    let exchange = async move {
+        let serving = review_server::serve_io(server, peer, app, limits);
+        let talking = async {
+            let _ = client.write_all(data).await;
+            let _ = client.shutdown().await;
+            let mut answer = Vec::new();
+            let _ = client.read_to_end(&mut answer).await;
+            answer
+        };
+        let ((), answer) = tokio::join!(serving, talking);
+        answer
+    };
+    let outcome =
+        runtime().block_on(async { tokio::time::timeout(Duration::from_secs(5), exchange).await });
+    let Ok(answer) = outcome else {
+        panic!("the review server did not finish a closed connection within 5 s");
+    };
+    if answer.is_empty() {
+        return;
+    }
+    assert!(
+        answer.starts_with(b"HTTP/1.1 ") || answer.starts_with(b"HTTP/1.0 "),
+        "not an HTTP/1 answer: {:?}",
+        String::from_utf8_lossy(&answer[..answer.len().min(64)])
+    );
+    let text = String::from_utf8_lossy(&answer).to_ascii_lowercase();
+    for response in text.split("http/1.").skip(1) {
+        if response.get(2..5) == Some("200") {
+            assert!(
+                response.contains("content-security-policy:"),
+                "a 200 response without its security headers"
+            );
+        }
+    }
+}

@@ -1,0 +1,130 @@
+//! Replays the committed fuzz corpus (`fuzz/corpus/<target>/`) and every committed crash
+//! (`fuzz/artifacts/<target>/`) through the same entry points the fuzz targets call
+//! (`ergocell::fuzzing`), as ordinary tests: a parser change that brings back a crash, or breaks a
+//! property an entry checks, fails CI without a fuzzer.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::path::{Path, PathBuf};
+
+type Entry = fn(&[u8]);
+
+const TARGETS: &[(&str, Entry)] = &[
+    ("rig", ergocell::fuzzing::rig),
+    ("openpose_json", ergocell::fuzzing::openpose_json),
+    ("caliscope_csv", ergocell::fuzzing::caliscope_csv),
+    ("landmarks_file", ergocell::fuzzing::landmarks_file),
+    ("urdf", ergocell::fuzzing::urdf),
+    ("trajectory_toml", ergocell::fuzzing::trajectory_toml),
+    ("cell_toml", ergocell::fuzzing::cell_toml),
+    ("lock_toml", ergocell::fuzzing::lock_toml),
+    ("approvals_toml", ergocell::fuzzing::approvals_toml),
+    ("mcap_recording", ergocell::fuzzing::mcap_recording),
+    ("cdr_messages", ergocell::fuzzing::cdr_messages),
+    ("rula_json", ergocell::fuzzing::rula_json),
+    ("review_request", ergocell::fuzzing::review_request),
+];
+
+fn fuzz_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz")
+}
+
+fn files(dir: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.is_file())
+        .collect();
+    files.sort();
+    files
+}
+
+fn replay(name: &str, entry: Entry) -> usize {
+    let mut count = 0;
+    for sub in ["corpus", "artifacts"] {
+        for path in files(&fuzz_dir().join(sub).join(name)) {
+            let data = std::fs::read(&path).unwrap();
+            let outcome = std::panic::catch_unwind(|| entry(&data));
+            assert!(outcome.is_ok(), "{name}: {} fails", path.display());
+            count += 1;
+        }
+    }
+    count
+}
+
+/// Every target the fuzz crate builds is replayed here, and has a corpus.
+#[test]
+fn every_fuzz_target_is_replayed_and_has_a_corpus() {
+    let mut built: Vec<String> = files(&fuzz_dir().join("fuzz_targets"))
+        .iter()
+        .filter_map(|p| Some(p.file_stem()?.to_str()?.to_owned()))
+        .collect();
+    built.sort();
+    let mut replayed: Vec<String> = TARGETS.iter().map(|(n, _)| (*n).to_owned()).collect();
+    replayed.sort();
+    assert_eq!(built, replayed);
+    for (name, _) in TARGETS {
+        assert!(
+            !files(&fuzz_dir().join("corpus").join(name)).is_empty(),
+            "{name} has no corpus"
+        );
+    }
+}
+
+macro_rules! replay_tests {
+    ($($name:ident),* $(,)?) => {$(
+        #[test]
+        fn $name() {
+            let entry = TARGETS
+                .iter()
+                .find(|(n, _)| *n == stringify!($name))
+                .map(|(_, e)| *e)
+                .unwrap();
+            assert!(replay(stringify!($name), entry) > 0);
+        }
+    )*};
+}
+
+replay_tests!(
+    rig,
+    openpose_json,
+    caliscope_csv,
+    landmarks_file,
+    urdf,
+    trajectory_toml,
+    cell_toml,
+    lock_toml,
+    approvals_toml,
+    mcap_recording,
+    cdr_messages,
+    rula_json,
+    review_request,
+);
+
+/// The seeds are real inputs of their parsers (so the fuzzer starts from inside the accepted
+/// language, not from garbage), and the entries refuse broken inputs without a panic.
+#[test]
+fn seeds_parse_and_broken_inputs_are_refused_without_panicking() {
+    for name in [
+        "seed_ergocell_rig.toml",
+        "seed_anipose.toml",
+        "seed_caliscope_config.toml",
+    ] {
+        let text = std::fs::read_to_string(fuzz_dir().join("corpus/rig").join(name)).unwrap();
+        ergocell_perception::rig_file::parse_rig(&text, name).unwrap();
+        ergocell::fuzzing::rig(&text.as_bytes()[..text.len() / 2]);
+    }
+    for class in ["c1", "c2", "c3"] {
+        let path = fuzz_dir().join(format!("corpus/lock_toml/seed_{class}.lock.toml"));
+        let text = std::fs::read_to_string(path).unwrap();
+        let class: ergocell_robot::TrajectoryClass =
+            serde_json::from_value(serde_json::json!(class)).unwrap();
+        ergocell_robot::lock::LockFile::from_toml_str(class, &text).unwrap();
+    }
+    ergocell::fuzzing::review_request(b"GET / HTTP/1.1\r\nHost: 127.0.0.1:8765\r\n\r\n");
+    ergocell::fuzzing::review_request(b"\x00\xff garbage");
+    ergocell::fuzzing::cdr_messages(&[0, 0, 1, 0, 0, 255, 255, 255, 255]);
+    ergocell::fuzzing::lock_toml(b"format = 3\n[[[");
+}
