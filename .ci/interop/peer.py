@@ -207,6 +207,10 @@ def main():
             if channel.topic.startswith("/ergocell/camera/"):
                 frames.append((message.log_time, CameraLandmarks.deserialize(message.data)))
     frames.sort(key=lambda x: x[0])
+    # PEER_SKIP_S=S: start the playback S seconds into the recording (a camera node restarting
+    # mid-session continues the operator's session, it does not start it again).
+    skip_ns = int(float(os.environ.get("PEER_SKIP_S", "0")) * 1e9)
+    frames = [f for f in frames if f[0] - frames[0][0] >= skip_ns]
 
     dp = DomainParticipant(0)
     sensor = Qos(Policy.Reliability.BestEffort, Policy.Durability.Volatile, Policy.History.KeepLast(5))

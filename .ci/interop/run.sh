@@ -11,7 +11,9 @@
 # skeleton (MarkerArray) arrived. Fault injection: `run --record` killed with SIGKILL mid-session, its
 # recording read up to the last second before the kill; the disk filling while recording (ENOSPC):
 # the robot held and the session ended saying why; a camera message storm (10x, malformed messages
-# mixed in): classed, ended, rejected, latency and memory bounded.
+# mixed in): classed, ended, rejected, latency and memory bounded; the Cyclone peer killed and
+# restarted mid-session: the new participant matched; the wall clock jumping (libfaketime): reported,
+# nothing timed by it.
 # Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
 # Measured on the dev machine (2 vCPUs shared with other builds; release; ros2-client 0.12.1, RustDDS
 # 0.15.1, cyclonedds 11.0.1), 2026-11-23, four runs: p50 0.13–0.18 ms, p99 0.29–1.96 ms, max ≤ 4.3 ms,
@@ -171,6 +173,90 @@ print(f"storm: {peer['camera_messages_sent']} + {peer.get('storm_messages_sent',
       f"{rejected} rejected; latency p50 {p50:.3f} ms, p99 {p99:.3f} ms, max {mx:.1f} ms; peak RSS {rss_mb:.0f} MB")
 ok = ("class c2" in log and "operator left" in log and rejected > 1000 and p99 < 50 and rss_mb < 300)
 print(("ok   " if ok else "FAIL ") + "camera message storm (10x, malformed mixed in): classed, ended, rejected, latency and memory bounded")
+if not ok:
+    print(log[-3000:])
+sys.exit(0 if ok else 1)
+PY
+
+# Fault injection (#18): the DDS peer restarting. The Cyclone peer (cameras and controller) is killed
+# with SIGKILL 5 s into the session (the class decided, the robot on its way to the handover), and a
+# new one (a new participant: new GUID, no goodbye from the old one) starts 3 s later and goes on
+# with the session from where the recording was then (PEER_SKIP_S). ergocell must hold the robot
+# while the cameras are gone, match the new participant both ways (fuse its cameras, command its
+# controller, which restarts with the robot at home, as after homing it) and end the session
+# normally. The session it plays has no injected camera faults (`demo --no-faults`): a camera stall
+# while the robot moves would leave it held between knots, which needs the pendant, by design.
+"$bin" --log error demo --cycles 1 --fps 30 --no-faults --out "$tmp/clean.mcap" > /dev/null
+unshare -n -- bash -c '
+  set -euo pipefail
+  ip link set lo up
+  ip link set lo multicast on
+  ip route add 224.0.0.0/4 dev lo
+  "$1" --log "error" run --config config/cell.toml --rig config/rig.toml --trajectories "$2/traj" \
+      --sessions 1 --max-secs 100 > "$2/restart-run.log" 2>&1 &
+  run=$!
+  python3 .ci/interop/peer.py "$2/clean.mcap" trajectories/locks/c2.lock.toml 90 > /dev/null 2>&1 &
+  first=$!
+  sleep 5
+  kill -KILL "$first"; wait "$first" 2>/dev/null || true
+  sleep 3
+  PEER_SKIP_S=8 python3 .ci/interop/peer.py "$2/clean.mcap" trajectories/locks/c2.lock.toml 85 > "$2/restart-peer.json"
+  if wait "$run"; then echo "run exit 0" >> "$2/restart-run.log"; else echo "run exit $?" >> "$2/restart-run.log"; fi
+' _ "$bin" "$tmp"
+python3 - "$tmp/restart-run.log" "$tmp/restart-peer.json" <<'PY'
+import json, sys
+log = open(sys.argv[1]).read()
+peer = json.load(open(sys.argv[2]))
+events = [l.strip() for l in log.splitlines() if l.startswith("  ") and ("camera" in l or "held" in l or "class" in l)]
+print(f"peer restart: the new peer got {len(peer['trajectories'])} trajectories, {peer['holds']} hold(s), states {peer['states']}")
+ok = ("class c2" in log and "working → held: newest frame older" in log and "operator left" in log
+      and "run exit 0" in log and len(peer["trajectories"]) >= 2
+      and peer["states"][-1:] == ["session_ended"])
+print(("ok   " if ok else "FAIL ") + "DDS peer killed and restarted mid-session: the new participant matched both ways, the session ended normally")
+if not ok:
+    print(log[-3000:])
+sys.exit(0 if ok else 1)
+PY
+
+# Fault injection (#18): the wall clock jumping. `run` under libfaketime (Debian's faketime; only the
+# realtime clock is faked, DONT_FAKE_MONOTONIC=1): 6 s into the session its wall clock jumps 1 h
+# forward, 6 s later to 10 min behind the true time. The peer's clock does not move. The session must
+# report both steps, time nothing by them (no stale cameras, no --max-secs, no hold) and end
+# normally; the recording's log times never go back.
+faketime_lib=$(ls /usr/lib/*/faketime/libfaketimeMT.so.1 | head -1)
+echo "+0" > "$tmp/faketime"
+unshare -n -- bash -c '
+  set -euo pipefail
+  ip link set lo up
+  ip link set lo multicast on
+  ip route add 224.0.0.0/4 dev lo
+  LD_PRELOAD="$3" FAKETIME_TIMESTAMP_FILE="$2/faketime" FAKETIME_NO_CACHE=1 DONT_FAKE_MONOTONIC=1 \
+    "$1" --log "error" run --config config/cell.toml --rig config/rig.toml --trajectories "$2/traj" \
+      --sessions 1 --max-secs 90 --record "$2/jump.mcap" > "$2/jump-run.log" 2>&1 &
+  run=$!
+  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 90 > "$2/jump-peer.json" &
+  peer=$!
+  sleep 6; echo "+3600" > "$2/faketime"
+  sleep 6; echo "-600" > "$2/faketime"
+  wait "$peer"
+  if wait "$run"; then echo "run exit 0" >> "$2/jump-run.log"; else echo "run exit $?" >> "$2/jump-run.log"; fi
+' _ "$bin" "$tmp" "$faketime_lib"
+python3 - "$tmp/jump-run.log" "$tmp/jump-peer.json" "$tmp/jump.mcap" <<'PY'
+import json, re, sys
+from mcap.reader import make_reader
+log = open(sys.argv[1]).read()
+peer = json.load(open(sys.argv[2]))
+steps = [float(x) for x in re.findall(r"wall clock stepped by ([+-][\d.]+) s", log)]
+with open(sys.argv[3], "rb") as f:
+    times = [m.log_time for _, _, m in make_reader(f).iter_messages(log_time_order=False)]
+backwards = sum(1 for a, b in zip(times, times[1:]) if b < a)
+span = (max(times) - min(times)) * 1e-9 if times else 0
+print(f"clock jump: steps reported {steps}; recording {len(times)} messages over {span:.1f} s, {backwards} going back; "
+      f"peer states {peer['states']}")
+ok = (len(steps) == 2 and abs(steps[0] - 3600) < 2 and abs(steps[1] + 4200) < 2
+      and "class c2" in log and "operator left" in log and "--max-secs" not in log and "run exit 0" in log
+      and backwards == 0 and span < 120 and peer["states"][-1:] == ["session_ended"])
+print(("ok   " if ok else "FAIL ") + "wall clock jumped +1 h then -70 min mid-session: both reported, nothing timed by them, the session ended normally")
 if not ok:
     print(log[-3000:])
 sys.exit(0 if ok else 1)
