@@ -128,6 +128,7 @@ impl CellSettings {
                 min_tracked_landmarks: p.min_tracked_landmarks,
                 assembly_tolerance_nanos: nanos(p.assembly_tolerance_s),
                 assembly_max_wait_nanos: nanos(p.assembly_max_wait_s),
+                ..ReconstructionConfig::default()
             },
             assessment,
             warnings: WarningConfig {

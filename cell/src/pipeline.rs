@@ -31,6 +31,9 @@ use ergocell_ergonomics::{
     HeightEstimator, HeightStatus, RulaAssessor, UpVector, WarningConfig, WarningEvent,
     WarningTracker,
 };
+use ergocell_perception::camera_health::{
+    frame_residuals, CameraResidualMonitor, OutOfCalibration, ResidualMonitorConfig,
+};
 use ergocell_perception::temporal::{FrameAssembler, OneEuroFilter, OneEuroParams};
 use ergocell_perception::{
     CameraRig, Frame2, FusedFrame, FusionEngine, FusionMethod, PerceptionError, View2,
@@ -54,6 +57,9 @@ pub struct ReconstructionConfig {
     pub assembly_tolerance_nanos: i64,
     /// Frame assembly: how long a frame waits for missing cameras (default 40 ms).
     pub assembly_max_wait_nanos: i64,
+    /// Finding cameras knocked out of calibration by their reprojection residuals, which are then
+    /// left out of fusion (default on, [`ResidualMonitorConfig::default`]); `None` = never.
+    pub residual_monitor: Option<ResidualMonitorConfig>,
 }
 
 impl Default for ReconstructionConfig {
@@ -64,6 +70,7 @@ impl Default for ReconstructionConfig {
             min_tracked_landmarks: 20,
             assembly_tolerance_nanos: 15_000_000,
             assembly_max_wait_nanos: 40_000_000,
+            residual_monitor: Some(ResidualMonitorConfig::default()),
         }
     }
 }
@@ -100,6 +107,8 @@ pub struct FrameOutput {
     pub fused: FusedFrame,
     /// `None` when the operator is not tracked in this frame (too few landmarks).
     pub tracked: Option<TrackedFrame>,
+    /// A camera this frame found out of calibration (left out of fusion from the next frame on).
+    pub out_of_calibration: Option<OutOfCalibration>,
 }
 
 /// The rest of the pipeline for a frame in which the operator is tracked.
@@ -124,6 +133,8 @@ pub struct Reconstructed {
     pub fused: FusedFrame,
     /// The filtered skeleton when the operator is tracked (enough landmarks), else `None`.
     pub tracked: Option<Skeleton3>,
+    /// A camera this frame found out of calibration (left out of fusion from the next frame on).
+    pub out_of_calibration: Option<OutOfCalibration>,
 }
 
 /// The first stage: views → time-aligned frame → fused skeleton → tracked gate → causal filter.
@@ -135,6 +146,9 @@ pub struct Reconstruction {
     assembler: FrameAssembler,
     fusion: FusionEngine,
     filter: Option<OneEuroFilter>,
+    monitor: Option<CameraResidualMonitor>,
+    /// The frame without the cameras found out of calibration (reused).
+    kept: Frame2,
 }
 
 impl Reconstruction {
@@ -146,8 +160,15 @@ impl Reconstruction {
         );
         Ok(Self {
             assembler,
+            monitor: config
+                .residual_monitor
+                .map(|c| CameraResidualMonitor::new(rig.len(), c)),
             fusion: FusionEngine::new(rig, config.fusion)?,
             filter: config.filter.map(OneEuroFilter::new),
+            kept: Frame2 {
+                stamp_nanos: 0,
+                views: Vec::new(),
+            },
             config,
         })
     }
@@ -173,8 +194,33 @@ impl Reconstruction {
     }
 
     /// One time-aligned frame: fused, gated, filtered.
+    /// Cameras found out of calibration are left out of the fusion; every camera's views are still
+    /// compared with the fused skeleton.
     pub fn process_frame(&mut self, frame: &Frame2) -> Result<Reconstructed, PerceptionError> {
-        let fused = self.fusion.fuse(frame)?;
+        let fused = match &self.monitor {
+            Some(m) if m.flagged().next().is_some() => {
+                self.kept.stamp_nanos = frame.stamp_nanos;
+                self.kept.views.clear();
+                self.kept.views.extend(
+                    frame
+                        .views
+                        .iter()
+                        .filter(|v| !m.is_flagged(v.camera))
+                        .cloned(),
+                );
+                self.fusion.fuse(&self.kept)?
+            }
+            _ => self.fusion.fuse(frame)?,
+        };
+        let out_of_calibration = self.monitor.as_mut().and_then(|m| {
+            let residuals = frame_residuals(
+                self.fusion.rig(),
+                frame,
+                &fused.skeleton,
+                m.config().min_landmarks,
+            );
+            m.observe(frame.stamp_nanos, &residuals)
+        });
         let tracked =
             (fused.skeleton.observed_count() >= self.config.min_tracked_landmarks).then(|| {
                 match self.filter.as_mut() {
@@ -186,6 +232,7 @@ impl Reconstruction {
             stamp_nanos: frame.stamp_nanos,
             fused,
             tracked,
+            out_of_calibration,
         })
     }
 }
@@ -297,6 +344,7 @@ impl Pipeline {
             stamp_nanos: r.stamp_nanos,
             fused: r.fused,
             tracked,
+            out_of_calibration: r.out_of_calibration,
         })
     }
 

@@ -17,6 +17,7 @@
 
 pub mod body_prior;
 pub mod camera;
+pub mod camera_health;
 pub mod detections;
 pub mod error;
 pub mod fusion;

@@ -306,6 +306,32 @@ pub struct SimConfig {
     pub start_nanos: i64,
     pub noise: DetectorNoise,
     pub reach: ReachConfig,
+    /// A camera knocked out of its calibration mid-session (default none).
+    pub bump: Option<CameraBump>,
+}
+
+/// A camera bumped at `from_nanos`: from then on it sees the scene through a pose rotated by
+/// `rotation_rad` (axis × angle, in the camera's own frame, about its optical centre), while the
+/// rig — its calibration — stays as it was. What a knock on the mount does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CameraBump {
+    pub camera: CameraIndex,
+    pub from_nanos: i64,
+    pub rotation_rad: [f64; 3],
+}
+
+impl CameraBump {
+    /// `camera` as it sees the world after this bump.
+    pub fn apply(&self, camera: &ergocell_perception::Camera) -> ergocell_perception::Camera {
+        let [x, y, z] = self.rotation_rad;
+        let delta = nalgebra::UnitQuaternion::from_scaled_axis(nalgebra::Vector3::new(x, y, z));
+        let centre = camera.position_world();
+        let rotation = delta * camera.T_camera_world.rotation;
+        let translation = -(rotation * centre.coords);
+        let mut bumped = camera.clone();
+        bumped.T_camera_world = nalgebra::Isometry3::from_parts(translation.into(), rotation);
+        bumped
+    }
 }
 
 impl SimConfig {
@@ -317,6 +343,7 @@ impl SimConfig {
             start_nanos: 0,
             noise: DetectorNoise::default(),
             reach: ReachConfig::default(),
+            bump: None,
         }
     }
 }
@@ -634,8 +661,13 @@ impl Simulation {
                 self.truth_at(stamp)?.posture
             };
             let kin = self.operator.kinematics(&posture);
+            let bumped = self
+                .config
+                .bump
+                .filter(|b| b.camera == k && stamp >= b.from_nanos)
+                .map(|b| b.apply(camera));
             views.push(render_view(
-                camera,
+                bumped.as_ref().unwrap_or(camera),
                 k,
                 stamp,
                 &kin,

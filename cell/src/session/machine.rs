@@ -46,6 +46,8 @@ pub struct SessionSummary {
     pub warnings_raised: u32,
     pub changes_refused: u32,
     pub camera_degradations: u32,
+    /// Cameras found out of calibration by their reprojection residuals (left out of fusion).
+    pub cameras_out_of_calibration: Vec<String>,
     pub max_action_level: u8,
     pub robot_commands: u32,
     pub ended: bool,
@@ -307,6 +309,24 @@ impl SessionMachine {
 
     /// One frame out of the pipeline: the session's bookkeeping and events.
     fn on_frame(&mut self, now_nanos: i64, output: FrameOutput, events: &mut Vec<SessionEvent>) {
+        if let Some(o) = &output.out_of_calibration {
+            if let Some(c) = self.cameras.get(o.camera) {
+                let why = format!(
+                    "out of calibration (bumped?): its views lie {:.1} px from the fused skeleton, \
+                     the other cameras' {:.1} px (medians over {} frames); left out of fusion for \
+                     the rest of the session: recalibrate it",
+                    o.residual_px, o.others_px, o.frames
+                );
+                tracing::warn!(camera = %c.name, %why, "camera out of calibration");
+                self.summary.camera_degradations += 1;
+                self.summary.cameras_out_of_calibration.push(c.name.clone());
+                events.push(SessionEvent::CameraDegraded {
+                    stamp_nanos: now_nanos,
+                    camera: c.name.clone(),
+                    why,
+                });
+            }
+        }
         self.last_frame_stamp = Some(
             self.last_frame_stamp
                 .map_or(output.stamp_nanos, |s| s.max(output.stamp_nanos)),
