@@ -40,7 +40,7 @@ use ergocell_ergonomics::HeightClass;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::View2;
 use ergocell_robot::{LockFile, TrajectoryClass};
-use ergocell_sim::{FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
+use ergocell_sim::{CameraBump, FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
 
 use super::signals::{Signal, StopFlag, Stopped};
@@ -53,8 +53,8 @@ pub const DEFAULT_OUT: &str = "ergocell-demo.mcap";
 /// still running then is stopped (robot held), and the demo says so.
 pub const MARGIN_SECS: f64 = 30.0;
 
-/// Most handover cycles (about 85 minutes of simulated session).
-pub const MAX_CYCLES: usize = 1000;
+/// Most handover cycles (about 14 hours of simulated session: a long shift, for `--soak-report`).
+pub const MAX_CYCLES: usize = 10_000;
 
 #[derive(Debug, clap::Args)]
 #[command(
@@ -78,7 +78,7 @@ pub struct Args {
     /// The simulated operator's stature, metres.
     #[arg(long, default_value_t = 1.75)]
     pub stature_m: f64,
-    /// Handover cycles (0..=1000). The session may run for the script's duration (walk in, height,
+    /// Handover cycles (0..=10000; 5760 ≈ an 8-hour shift). The session may run for the script's duration (walk in, height,
     /// cycles × 5 s, floor pick, walk out) plus 30 s; then it is stopped with the robot held.
     #[arg(long, default_value_t = 3)]
     pub cycles: usize,
@@ -102,6 +102,23 @@ pub struct Args {
     /// part, 0.40 m above the floor: a bad posture that raises a RULA warning).
     #[arg(long)]
     pub no_floor_pick: bool,
+    /// Bump this camera (its id, e.g. `s2_left`) out of its calibration mid-session: from
+    /// `--bump-at-s` on it sees the scene panned by `--bump-deg` while the rig stays as calibrated.
+    /// The session must find it by its reprojection residuals, leave it out and ask for a
+    /// recalibration.
+    #[arg(long, value_name = "CAMERA")]
+    pub bump_camera: Option<String>,
+    /// The bump's angle, degrees (a pan about the camera's vertical image axis).
+    #[arg(long, default_value_t = 1.5, requires = "bump_camera")]
+    pub bump_deg: f64,
+    /// When the bump happens, seconds after the session starts.
+    #[arg(long, default_value_t = 12.0, requires = "bump_camera")]
+    pub bump_at_s: f64,
+    /// A soak's figures: every `--soak-report` minutes of simulated time (and at the end) the
+    /// process's resident memory and the wall time of the session steps (p50, p99, max) over that
+    /// span, to see memory flat and no drift in timing over a long shift (e.g. `--cycles 5760`).
+    #[arg(long, value_name = "MINUTES", value_parser = clap::value_parser!(u64).range(1..=1440))]
+    pub soak_report: Option<u64>,
 }
 
 /// Wall-clock time at the binary's clock boundary (the session itself runs on the simulator's clock).
@@ -118,6 +135,48 @@ macro_rules! say {
         use std::io::Write as _;
         let _ = writeln!(std::io::stdout(), $($t)*);
     }};
+}
+
+/// Resident memory of this process, MiB (Linux `/proc/self/status`; `None` elsewhere).
+fn rss_mib() -> Option<f64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib / 1024.0)
+}
+
+/// Monotonic instant at the binary's clock boundary, for the soak's step timing.
+#[allow(clippy::disallowed_methods)]
+fn instant() -> std::time::Instant {
+    std::time::Instant::now()
+}
+
+/// The soak report's accumulator: step wall times since the last line.
+struct Soak {
+    every_nanos: i64,
+    next_nanos: i64,
+    steps_us: Vec<f64>,
+}
+
+impl Soak {
+    fn line(&mut self, elapsed_h: f64) {
+        self.steps_us.sort_by(f64::total_cmp);
+        let q = |p: f64| {
+            self.steps_us
+                .get(((self.steps_us.len() as f64 - 1.0) * p).round() as usize)
+                .copied()
+                .unwrap_or(f64::NAN)
+        };
+        say!(
+            "  soak: t={elapsed_h:6.2} h  RSS {} MiB  step p50 {:.0} µs  p99 {:.0} µs  max {:.0} µs  ({} steps)",
+            rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}")),
+            q(0.5),
+            q(0.99),
+            q(1.0),
+            self.steps_us.len()
+        );
+        self.steps_us.clear();
+    }
 }
 
 /// The demo's temporary folder (its demo approvals), removed on every way out, a panic included.
@@ -278,6 +337,28 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut sim_config = SimConfig::new(args.seed);
     sim_config.frame_period_nanos = period_nanos;
     sim_config.start_nanos = start;
+    if let Some(name) = &args.bump_camera {
+        let camera = rig.index_of_name(name).ok_or_else(|| {
+            UsageError(format!("--bump-camera {name}: no such camera in the rig"))
+        })?;
+        if !(args.bump_deg.is_finite() && args.bump_deg.abs() <= 45.0) {
+            anyhow::bail!(UsageError(format!(
+                "--bump-deg {}: expected a finite angle within ±45°",
+                args.bump_deg
+            )));
+        }
+        if !(args.bump_at_s.is_finite() && (0.0..=86_400.0).contains(&args.bump_at_s)) {
+            anyhow::bail!(UsageError(format!(
+                "--bump-at-s {}: expected 0..=86400 s",
+                args.bump_at_s
+            )));
+        }
+        sim_config.bump = Some(CameraBump {
+            camera,
+            from_nanos: start + (args.bump_at_s * 1e9) as i64,
+            rotation_rad: [0.0, args.bump_deg.to_radians(), 0.0],
+        });
+    }
     let sim = Simulation::new(
         rig.clone(),
         Operator::new(args.stature_m)?,
@@ -328,7 +409,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut interrupted: Option<Signal> = None;
     let mut rula = "RULA -".to_owned();
     let limit = start + (limit_secs * 1e9).round() as i64;
+    let mut soak = args.soak_report.map(|minutes| {
+        let every_nanos = i64::try_from(minutes).unwrap_or(1) * 60_000_000_000;
+        Soak {
+            every_nanos,
+            next_nanos: start + every_nanos,
+            steps_us: Vec::new(),
+        }
+    });
+    if soak.is_some() {
+        say!(
+            "  soak: t=  0.00 h  RSS {} MiB",
+            rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}"))
+        );
+    }
     while machine.state() != SessionState::SessionEnded {
+        let step_started = instant();
         if let Some(signal) = stop.get() {
             interrupted = Some(signal);
             let events = machine.shutdown(now, &mut robot, signal.name());
@@ -455,7 +551,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 machine.pairs_tracking()
             );
         }
+        if let Some(soak) = soak.as_mut() {
+            soak.steps_us
+                .push(step_started.elapsed().as_secs_f64() * 1e6);
+            if now >= soak.next_nanos {
+                soak.next_nanos += soak.every_nanos;
+                soak.line(secs(now, start) / 3600.0);
+            }
+        }
         now += period_nanos;
+    }
+    if let Some(soak) = soak.as_mut() {
+        soak.line(secs(now, start) / 3600.0);
     }
     let messages = rec.finish()?;
     drop(demo_dir);
@@ -497,6 +604,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         s.holds,
         s.changes_refused
     );
+    if !s.cameras_out_of_calibration.is_empty() {
+        say!(
+            "  recalibrate:    {} (out of calibration, left out of fusion)",
+            s.cameras_out_of_calibration.join(", ")
+        );
+    }
     say!("  robot commands: {}", s.robot_commands);
     say!("  ended:          {}", s.end_reason);
     say!(

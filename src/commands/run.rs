@@ -585,6 +585,12 @@ fn print_summary(machine: &SessionMachine, rejected: u64) {
         rejected,
         s.end_reason
     );
+    if !s.cameras_out_of_calibration.is_empty() {
+        println!(
+            "recalibrate: {} (found out of calibration during the session, left out of fusion)",
+            s.cameras_out_of_calibration.join(", ")
+        );
+    }
 }
 
 /// The cell's outputs.
