@@ -201,20 +201,10 @@ fn a_killed_demos_temp_folder_is_removed_by_the_next_demo() {
 #[test]
 fn demo_finds_a_bumped_camera_and_asks_for_its_recalibration() {
     let dir = Scratch::new("demo-bump");
-    let run = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(&dir.0)
-        .args([
-            "--log",
-            "error",
-            "demo",
-            "--cycles",
-            "1",
-            "--no-faults",
-            "--bump-camera",
-            "s3_right",
-        ])
-        .output()
-        .unwrap();
+    let run = demo_in(
+        &dir.0,
+        &["--cycles", "1", "--no-faults", "--bump-camera", "s3_right"],
+    );
     let stdout = String::from_utf8_lossy(&run.stdout);
     assert!(run.status.success(), "{stdout}");
     let found = stdout
@@ -244,24 +234,23 @@ fn demo_finds_a_bumped_camera_and_asks_for_its_recalibration() {
 
 /// Issue #18's soak, short (this is a debug build): `--soak-report` prints resident memory and step
 /// times; over 40 handover cycles at 2 Hz (≈ 3.6 min of simulated shift) memory stays within 8 MiB
-/// of its first report, and a line is printed per simulated minute. (The 8-hour figures are in the notes: `--cycles 5760 --soak-report 60`.)
+/// of its first report, and a line is printed per simulated minute. (The 8-hour figures are in the
+/// README: `--cycles 5760 --soak-report 60`.)
 #[test]
 fn demo_soak_report_shows_memory_flat_over_a_long_session() {
     let dir = Scratch::new("demo-soak");
-    let run = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(&dir.0)
-        .args([
-            "--log",
-            "error",
-            "demo",
+    let run = demo_in(
+        &dir.0,
+        &[
             "--cycles",
-            "200",
+            "40",
+            "--fps",
+            "2",
             "--no-faults",
             "--soak-report",
-            "2",
-        ])
-        .output()
-        .unwrap();
+            "1",
+        ],
+    );
     let stdout = String::from_utf8_lossy(&run.stdout);
     assert!(run.status.success(), "{stdout}");
     let rss: Vec<f64> = stdout
@@ -278,4 +267,14 @@ fn demo_soak_report_shows_memory_flat_over_a_long_session() {
         last - first < 8.0,
         "RSS grew from {first} to {last} MiB:\n{stdout}"
     );
+}
+
+/// `ergocell --log error demo <args>` run in `dir`.
+fn demo_in(dir: &Path, args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(dir)
+        .args(["--log", "error", "demo"])
+        .args(args)
+        .output()
+        .unwrap()
 }
