@@ -20,7 +20,9 @@ mod zstd;
 
 /// Utility function for checking u64 lengths from MCAP files.
 pub(crate) fn check_len(len: u64, limit: Option<usize>) -> Option<usize> {
-    let len_as_usize: usize = len.try_into().ok()?;
+    // ergocell patch (ERGOCELL-PATCH.md): no length near usize::MAX, so that adding a record's
+    // 9-byte opcode-and-length prefix to it can never overflow.
+    let len_as_usize: usize = len.try_into().ok().filter(|l| *l <= usize::MAX / 2)?;
     match limit {
         Some(limit) if len_as_usize > limit => None,
         _ => Some(len_as_usize),

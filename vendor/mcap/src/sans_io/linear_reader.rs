@@ -744,15 +744,16 @@ impl LinearReader {
                             let len = u64::from_le_bytes(opcode_len_buf[1..].try_into().unwrap());
                             let len = check!(check_len(len, self.options.record_length_limit)
                                 .ok_or(McapError::RecordTooLarge { opcode, len }));
-                            if (OPCODE_LEN_SIZE + len) as u64 > state.compressed_remaining {
-                                return Some(Err(McapError::UnexpectedEoc));
-                            }
-                            let opcode_len_data = consume!(OPCODE_LEN_SIZE + len);
+                            let record_len = match OPCODE_LEN_SIZE.checked_add(len) {
+                                Some(n) if n as u64 <= state.compressed_remaining => n,
+                                _ => return Some(Err(McapError::UnexpectedEoc)),
+                            };
+                            let opcode_len_data = consume!(record_len);
                             let data = &opcode_len_data[OPCODE_LEN_SIZE..];
                             if let Some(hasher) = state.uncompressed_data_hasher.as_mut() {
                                 hasher.update(opcode_len_data);
                             }
-                            state.compressed_remaining -= (OPCODE_LEN_SIZE + len) as u64;
+                            state.compressed_remaining -= record_len as u64;
                             return Some(Ok(LinearReadEvent::Record { data, opcode }));
                         }
                         Some(decompressor) => {
