@@ -15,8 +15,22 @@ fn reference_rig() -> CameraRig {
         .0
 }
 
-/// Runs a twin session (two handover cycles) through the reconstruction stage; returns when each
-/// camera was found out of calibration (seconds after the start) and its residuals.
+/// The seeds reported: 6..=11 by default (a debug build runs a twin session in about 2 s), or
+/// `ERGOCELL_BUMP_SEEDS=A..B`; the README's figures are `ERGOCELL_BUMP_SEEDS=6..25 cargo test --release
+/// --test bumped_camera`. Seeds 1..=5 were used for tuning and are never reported.
+fn reported_seeds() -> std::ops::RangeInclusive<u64> {
+    let Ok(text) = std::env::var("ERGOCELL_BUMP_SEEDS") else {
+        return 6..=11;
+    };
+    let (a, b) = text.split_once("..").expect("ERGOCELL_BUMP_SEEDS=A..B");
+    let (a, b): (u64, u64) = (a.parse().unwrap(), b.parse().unwrap());
+    assert!(a >= 6, "seeds 1..=5 were used for tuning");
+    a..=b
+}
+
+/// Runs a twin session (two handover cycles) through the reconstruction stage — with a bump, until
+/// 8 s after it — and returns when each camera was found out of calibration (seconds after the
+/// start) and its residuals.
 fn session(seed: u64, bump: Option<CameraBump>) -> Vec<(usize, f64, f64, f64)> {
     let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.055));
     script.cycles = 2;
@@ -30,6 +44,9 @@ fn session(seed: u64, bump: Option<CameraBump>) -> Vec<(usize, f64, f64, f64)> {
     let mut found = Vec::new();
     for tick in sim {
         let tick = tick.unwrap();
+        if bump.is_some_and(|b| tick.frame.stamp_nanos > b.from_nanos + 8_000_000_000) {
+            break;
+        }
         let out = r.process_frame(&tick.frame).unwrap();
         if let Some(o) = out.out_of_calibration {
             found.push((
@@ -58,13 +75,13 @@ fn bump(seed: u64, deg: f64, tilt: bool) -> CameraBump {
     }
 }
 
-/// Tuned (the monitor's defaults) on seeds 1..=5 with pans; reported here on seeds 6..=25, pans and
-/// tilts of 1°, 1.5° and 2°: every bump is found, on the bumped camera, within 5 s (measured: the slowest 3.6 s), and nothing else
-/// is flagged.
+/// Tuned (the monitor's defaults) on seeds 1..=5 with pans; reported on [`reported_seeds`], pans and
+/// tilts of 1°, 1.5° and 2°: every bump is found, on the bumped camera, within 5 s, and nothing else
+/// is flagged (measured on seeds 6..=25: 120 of 120, median 1.0 s, the slowest 3.6 s).
 #[test]
 fn a_bumped_camera_is_found_within_seconds_on_every_seed() {
     let mut delays = Vec::new();
-    for seed in 6..=25 {
+    for seed in reported_seeds() {
         for deg in [1.0, 1.5, 2.0] {
             for tilt in [false, true] {
                 let b = bump(seed, deg, tilt);
@@ -95,10 +112,10 @@ fn a_bumped_camera_is_found_within_seconds_on_every_seed() {
     );
 }
 
-/// Calibrated cameras are never flagged: 20 twin sessions without a bump.
+/// Calibrated cameras are never flagged: whole twin sessions without a bump (20 of 20 on seeds 6..=25).
 #[test]
 fn calibrated_twin_cameras_are_never_flagged() {
-    for seed in 6..=25 {
+    for seed in reported_seeds() {
         assert_eq!(session(seed, None), vec![], "seed {seed}");
     }
 }
