@@ -74,7 +74,7 @@ impl Served {
     }
 }
 
-/// The routes: the page, its script and stylesheet, the analysis JSON, behind [`guard`].
+/// The routes: the page, its script and stylesheet, the analysis JSON, behind the Host and method guard.
 pub fn router(served: Arc<Served>) -> Router {
     Router::new()
         .route("/", get(index))
