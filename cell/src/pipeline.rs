@@ -32,7 +32,7 @@ use ergocell_ergonomics::{
     WarningTracker,
 };
 use ergocell_perception::camera_health::{
-    frame_residuals, CameraResidualMonitor, OutOfCalibration, ResidualMonitorConfig,
+    CameraResidualMonitor, OutOfCalibration, ResidualMonitorConfig,
 };
 use ergocell_perception::temporal::{FrameAssembler, OneEuroFilter, OneEuroParams};
 use ergocell_perception::{
@@ -212,15 +212,10 @@ impl Reconstruction {
             }
             _ => self.fusion.fuse(frame)?,
         };
-        let out_of_calibration = self.monitor.as_mut().and_then(|m| {
-            let residuals = frame_residuals(
-                self.fusion.rig(),
-                frame,
-                &fused.skeleton,
-                m.config().min_landmarks,
-            );
-            m.observe(frame.stamp_nanos, &residuals)
-        });
+        let out_of_calibration = self
+            .monitor
+            .as_mut()
+            .and_then(|m| m.observe_frame(self.fusion.rig(), frame, &fused.skeleton));
         let tracked =
             (fused.skeleton.observed_count() >= self.config.min_tracked_landmarks).then(|| {
                 match self.filter.as_mut() {

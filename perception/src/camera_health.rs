@@ -5,7 +5,7 @@
 //! against a few pixels of detector noise for a calibrated camera.
 //!
 //! [`CameraResidualMonitor`] keeps, per camera, the per-frame median reprojection residual of its
-//! views against the fused skeleton ([`frame_residuals`]) over a sliding time window, and its own
+//! views against the fused skeleton ([`CameraResidualMonitor::observe_frame`]) over a sliding time window, and its own
 //! baseline (the median of its first frames). A camera is flagged when its window median exceeds an
 //! absolute floor and has risen well above both its own baseline and the other cameras' window
 //! medians (a camera that is simply noisier than the others keeps its own, higher baseline), or lies
@@ -21,6 +21,7 @@ use std::collections::VecDeque;
 use ergocell_skeleton::{Landmark, Skeleton3};
 
 use crate::detections::Frame2;
+use crate::metrics::median_in_place;
 use crate::rig::{CameraIndex, CameraRig};
 
 /// The monitor's tunables. Defaults: 2 s window of at least 10 frames, a 6 px floor, twice the
@@ -72,49 +73,6 @@ pub struct OutOfCalibration {
     pub frames: usize,
 }
 
-/// Per camera: the median pixel distance between its observed keypoints and the fused skeleton's
-/// landmarks projected into it (`None`: fewer than `min_landmarks` to compare, or no view).
-pub fn frame_residuals(
-    rig: &CameraRig,
-    frame: &Frame2,
-    skeleton: &Skeleton3,
-    min_landmarks: usize,
-) -> Vec<Option<f64>> {
-    let mut out = vec![None; rig.len()];
-    let mut distances = Vec::with_capacity(Landmark::ALL.len());
-    for view in &frame.views {
-        let Some(camera) = rig.cameras().get(view.camera) else {
-            continue;
-        };
-        distances.clear();
-        for landmark in Landmark::ALL {
-            let (Some(k), Some(p)) = (view.get(landmark), skeleton.position(landmark)) else {
-                continue;
-            };
-            if let Ok(projected) = camera.project(&p) {
-                let d = (projected - k.pixel()).norm();
-                if d.is_finite() {
-                    distances.push(d);
-                }
-            }
-        }
-        if distances.len() >= min_landmarks.max(1) {
-            out[view.camera] = Some(median(&mut distances));
-        }
-    }
-    out
-}
-
-fn median(values: &mut [f64]) -> f64 {
-    values.sort_unstable_by(f64::total_cmp);
-    let n = values.len();
-    if n % 2 == 1 {
-        values[n / 2]
-    } else {
-        0.5 * (values[n / 2 - 1] + values[n / 2])
-    }
-}
-
 /// Finds cameras whose views stopped agreeing with the fused skeleton (see the module docs).
 #[derive(Debug, Clone)]
 pub struct CameraResidualMonitor {
@@ -124,6 +82,9 @@ pub struct CameraResidualMonitor {
     first: Vec<Vec<f64>>,
     baselines: Vec<Option<f64>>,
     flagged: Vec<bool>,
+    /// Per-frame buffers, reused (no allocation on the hot path once warm).
+    residuals: Vec<Option<f64>>,
+    medians: Vec<Option<f64>>,
     scratch: Vec<f64>,
 }
 
@@ -135,6 +96,8 @@ impl CameraResidualMonitor {
             first: vec![Vec::new(); cameras],
             baselines: vec![None; cameras],
             flagged: vec![false; cameras],
+            residuals: vec![None; cameras],
+            medians: vec![None; cameras],
             scratch: Vec::new(),
         }
     }
@@ -165,11 +128,48 @@ impl CameraResidualMonitor {
         }
         self.scratch.clear();
         self.scratch.extend(window.iter().map(|(_, r)| *r));
-        Some(median(&mut self.scratch))
+        median_in_place(&mut self.scratch)
     }
 
-    /// One frame's residuals (from [`frame_residuals`]) at `stamp_nanos`; returns the camera newly
-    /// found out of calibration, if one is.
+    /// One fused frame: each camera's median pixel distance between its observed keypoints and the
+    /// fused skeleton's landmarks projected into it (counted when at least `min_landmarks` compare),
+    /// then [`Self::observe`]. Returns the camera newly found out of calibration, if one is.
+    pub fn observe_frame(
+        &mut self,
+        rig: &CameraRig,
+        frame: &Frame2,
+        skeleton: &Skeleton3,
+    ) -> Option<OutOfCalibration> {
+        let mut residuals = std::mem::take(&mut self.residuals);
+        residuals.clear();
+        residuals.resize(rig.len(), None);
+        for view in &frame.views {
+            let Some(camera) = rig.cameras().get(view.camera) else {
+                continue;
+            };
+            self.scratch.clear();
+            for landmark in Landmark::ALL {
+                let (Some(k), Some(p)) = (view.get(landmark), skeleton.position(landmark)) else {
+                    continue;
+                };
+                if let Ok(projected) = camera.project(&p) {
+                    let d = (projected - k.pixel()).norm();
+                    if d.is_finite() {
+                        self.scratch.push(d);
+                    }
+                }
+            }
+            if self.scratch.len() >= self.config.min_landmarks.max(1) {
+                residuals[view.camera] = median_in_place(&mut self.scratch);
+            }
+        }
+        let found = self.observe(frame.stamp_nanos, &residuals);
+        self.residuals = residuals;
+        found
+    }
+
+    /// One frame's per-camera residuals (pixels; `None`: not seen) at `stamp_nanos`; returns the
+    /// camera newly found out of calibration, if one is.
     pub fn observe(
         &mut self,
         stamp_nanos: i64,
@@ -183,7 +183,7 @@ impl CameraResidualMonitor {
                     let first = &mut self.first[k];
                     first.push(*r);
                     if first.len() >= self.config.baseline_frames.max(1) {
-                        self.baselines[k] = Some(median(first));
+                        self.baselines[k] = median_in_place(first);
                         *first = Vec::new();
                     }
                 }
@@ -197,30 +197,40 @@ impl CameraResidualMonitor {
         if unflagged < 4 {
             return None;
         }
-        let medians: Vec<Option<f64>> = (0..self.windows.len())
-            .map(|k| {
-                if self.flagged[k] {
-                    None
-                } else {
-                    self.window_median(k)
-                }
-            })
-            .collect();
+        let mut medians = std::mem::take(&mut self.medians);
+        medians.clear();
+        for k in 0..self.windows.len() {
+            let m = if self.flagged[k] {
+                None
+            } else {
+                self.window_median(k)
+            };
+            medians.push(m);
+        }
+        let found = self.judge(&medians);
+        self.medians = medians;
+        found
+    }
+
+    /// The worst camera of these window medians, if it is out of calibration (then flagged).
+    fn judge(&mut self, medians: &[Option<f64>]) -> Option<OutOfCalibration> {
         let (worst, worst_px) = medians
             .iter()
             .enumerate()
             .filter_map(|(k, m)| m.map(|m| (k, m)))
             .max_by(|a, b| a.1.total_cmp(&b.1))?;
-        let mut others: Vec<f64> = medians
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| *k != worst)
-            .filter_map(|(_, m)| *m)
-            .collect();
-        if others.len() < 2 {
+        self.scratch.clear();
+        self.scratch.extend(
+            medians
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| *k != worst)
+                .filter_map(|(_, m)| *m),
+        );
+        if self.scratch.len() < 2 {
             return None;
         }
-        let others_px = median(&mut others);
+        let others_px = median_in_place(&mut self.scratch)?;
         let c = &self.config;
         let baseline_px = self.baselines[worst];
         let risen = baseline_px.is_some_and(|b| worst_px > c.ratio * b.max(others_px));

@@ -85,10 +85,16 @@ pub fn common_bone_variation_percent(recordings: &[&[Skeleton3]]) -> Option<(Vec
 /// Median of a list (`None` when empty); NaNs are ignored.
 pub fn median(values: &[f64]) -> Option<f64> {
     let mut v: Vec<f64> = values.iter().copied().filter(|x| !x.is_nan()).collect();
+    median_in_place(&mut v)
+}
+
+/// Median of a list without NaNs, sorting it in place (`None` when empty): no allocation, for
+/// per-frame use.
+pub fn median_in_place(v: &mut [f64]) -> Option<f64> {
     if v.is_empty() {
         return None;
     }
-    v.sort_by(f64::total_cmp);
+    v.sort_unstable_by(f64::total_cmp);
     let m = v.len() / 2;
     Some(if v.len().is_multiple_of(2) {
         0.5 * (v[m - 1] + v[m])
