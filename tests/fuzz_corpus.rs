@@ -8,21 +8,34 @@ use std::path::{Path, PathBuf};
 
 type Entry = fn(&[u8]);
 
-const TARGETS: &[(&str, Entry)] = &[
-    ("rig", ergocell::fuzzing::rig),
-    ("openpose_json", ergocell::fuzzing::openpose_json),
-    ("caliscope_csv", ergocell::fuzzing::caliscope_csv),
-    ("landmarks_file", ergocell::fuzzing::landmarks_file),
-    ("urdf", ergocell::fuzzing::urdf),
-    ("trajectory_toml", ergocell::fuzzing::trajectory_toml),
-    ("cell_toml", ergocell::fuzzing::cell_toml),
-    ("lock_toml", ergocell::fuzzing::lock_toml),
-    ("approvals_toml", ergocell::fuzzing::approvals_toml),
-    ("mcap_recording", ergocell::fuzzing::mcap_recording),
-    ("cdr_messages", ergocell::fuzzing::cdr_messages),
-    ("rula_json", ergocell::fuzzing::rula_json),
-    ("review_request", ergocell::fuzzing::review_request),
-];
+/// Every target: one replay test each, and the table the completeness test checks.
+macro_rules! targets {
+    ($($name:ident),* $(,)?) => {
+        const TARGETS: &[&str] = &[$(stringify!($name)),*];
+        $(
+            #[test]
+            fn $name() {
+                assert!(replay(stringify!($name), ergocell::fuzzing::$name) > 0);
+            }
+        )*
+    };
+}
+
+targets!(
+    rig,
+    openpose_json,
+    caliscope_csv,
+    landmarks_file,
+    urdf,
+    trajectory_toml,
+    cell_toml,
+    lock_toml,
+    approvals_toml,
+    mcap_recording,
+    cdr_messages,
+    rula_json,
+    review_request,
+);
 
 fn fuzz_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz")
@@ -67,46 +80,16 @@ fn every_fuzz_target_is_replayed_and_has_a_corpus() {
         .filter_map(|p| Some(p.file_stem()?.to_str()?.to_owned()))
         .collect();
     built.sort();
-    let mut replayed: Vec<String> = TARGETS.iter().map(|(n, _)| (*n).to_owned()).collect();
+    let mut replayed: Vec<String> = TARGETS.iter().map(|n| (*n).to_owned()).collect();
     replayed.sort();
     assert_eq!(built, replayed);
-    for (name, _) in TARGETS {
+    for name in TARGETS {
         assert!(
             !files(&fuzz_dir().join("corpus").join(name)).is_empty(),
             "{name} has no corpus"
         );
     }
 }
-
-macro_rules! replay_tests {
-    ($($name:ident),* $(,)?) => {$(
-        #[test]
-        fn $name() {
-            let entry = TARGETS
-                .iter()
-                .find(|(n, _)| *n == stringify!($name))
-                .map(|(_, e)| *e)
-                .unwrap();
-            assert!(replay(stringify!($name), entry) > 0);
-        }
-    )*};
-}
-
-replay_tests!(
-    rig,
-    openpose_json,
-    caliscope_csv,
-    landmarks_file,
-    urdf,
-    trajectory_toml,
-    cell_toml,
-    lock_toml,
-    approvals_toml,
-    mcap_recording,
-    cdr_messages,
-    rula_json,
-    review_request,
-);
 
 /// The seeds are real inputs of their parsers (so the fuzzer starts from inside the accepted
 /// language, not from garbage), and the entries refuse broken inputs without a panic.
