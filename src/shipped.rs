@@ -1,5 +1,5 @@
 //! The shipped configuration, embedded in the binary: the reference cell's rig, cell file, robot
-//! URDF, the three class trajectories and their locks, as they were in the repository at build time.
+//! URDF, the trusted approvers' files (trusting no one), the three class trajectories and their locks, as they were in the repository at build time.
 //!
 //! They are the defaults of the commands that need a cell (`ergocell demo`), so the binary works
 //! from any directory and after `cargo install --path .`. An explicit path always wins, and a
@@ -13,6 +13,14 @@ pub const FILES: &[(&str, &str)] = &[
     (
         "config/robots/iiwa14_r820.urdf",
         include_str!("../config/robots/iiwa14_r820.urdf"),
+    ),
+    (
+        "config/approvers/allowed_signers",
+        include_str!("../config/approvers/allowed_signers"),
+    ),
+    (
+        "config/approvers/revoked_keys",
+        include_str!("../config/approvers/revoked_keys"),
     ),
     (
         "trajectories/c1.toml",

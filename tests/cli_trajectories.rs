@@ -38,6 +38,59 @@ fn fresh_cell(name: &str) -> PathBuf {
     dir
 }
 
+const ALICE: &str = "alice@plant.example";
+const BOB: &str = "bob@plant.example";
+
+/// Writes an Ed25519 key made from `seed` as `<dir>/<name>` (OpenSSH private key, mode 0600, as
+/// ssh-keygen writes it) and returns its allowed-signers line for `principal`.
+fn key_file(dir: &Path, name: &str, seed: u8, principal: &str) -> String {
+    use ergocell_robot::signing;
+    let key = signing::key_from_seed(&[seed; 32], name);
+    let path = dir.join(name);
+    std::fs::write(&path, signing::private_key_openssh(&key).unwrap()).unwrap();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600)).unwrap();
+    }
+    format!(
+        "{principal} namespaces=\"{}\" {}\n",
+        signing::APPROVAL_NAMESPACE,
+        signing::public_key_openssh(&key).unwrap()
+    )
+}
+
+/// A fresh cell whose config/approvers/allowed_signers trusts alice and bob; their keys (and
+/// mallory's, trusted by no one) in `<dir>/keys/`.
+fn fresh_cell_with_approvers(name: &str) -> PathBuf {
+    let dir = fresh_cell(name);
+    let keys = dir.join("keys");
+    std::fs::create_dir_all(&keys).unwrap();
+    let alice = key_file(&keys, "alice", 1, ALICE);
+    let bob = key_file(&keys, "bob", 2, BOB);
+    key_file(&keys, "mallory", 3, "mallory@elsewhere.example");
+    std::fs::write(
+        dir.join("config/approvers/allowed_signers"),
+        format!("# test approvers\n{alice}{bob}"),
+    )
+    .unwrap();
+    dir
+}
+
+/// `ssh-keygen`, when this machine has it; CI sets ERGOCELL_REQUIRE_SSH_KEYGEN=1 so it cannot be skipped.
+fn ssh_keygen() -> Option<&'static str> {
+    let found = Command::new("ssh-keygen").arg("-?").output().is_ok();
+    if !found {
+        assert!(
+            std::env::var_os("ERGOCELL_REQUIRE_SSH_KEYGEN").is_none(),
+            "ERGOCELL_REQUIRE_SSH_KEYGEN is set but ssh-keygen is not installed"
+        );
+        eprintln!("ssh-keygen not found: skipping the OpenSSH interop checks");
+        return None;
+    }
+    Some("ssh-keygen")
+}
+
 fn ergocell(dir: &Path, args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(dir)
@@ -53,7 +106,7 @@ fn ergocell(dir: &Path, args: &[&str]) -> (i32, String, String) {
 
 #[test]
 fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
-    let dir = fresh_cell("trajectories_workflow");
+    let dir = fresh_cell_with_approvers("trajectories_workflow");
 
     let (code, out, _) = ergocell(&dir, &["trajectories", "validate", "--class", "c2"]);
     assert_eq!(code, 0, "{out}");
@@ -96,16 +149,19 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
             "--class",
             "c2",
             "--by",
-            "Test Engineer",
+            ALICE,
+            "--key",
+            "keys/alice",
         ],
     );
     assert_eq!(code, 0, "{out}{err}");
     let approvals = std::fs::read_to_string(dir.join("trajectories/approvals/c2.toml")).unwrap();
-    assert!(approvals.contains("approved_by = \"Test Engineer\""));
+    assert!(approvals.contains(&format!("approved_by = \"{ALICE}\"")));
+    assert!(approvals.contains("-----BEGIN SSH SIGNATURE-----"));
     let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 0, "{out}");
     assert!(
-        out.contains("c2: OK") && out.contains("Test Engineer"),
+        out.contains("c2: OK") && out.contains(ALICE) && out.contains("signature verified"),
         "{out}"
     );
 
@@ -129,7 +185,16 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
     // An edited trajectory cannot be approved either.
     let (code, _, err) = ergocell(
         &dir,
-        &["trajectories", "approve", "--class", "c2", "--by", "X"],
+        &[
+            "trajectories",
+            "approve",
+            "--class",
+            "c2",
+            "--by",
+            ALICE,
+            "--key",
+            "keys/alice",
+        ],
     );
     assert_eq!(code, 1);
     assert!(err.contains("refusing to approve"), "{err}");
@@ -142,7 +207,7 @@ fn a_hand_edited_and_rehashed_lock_is_neither_approved_nor_verified() {
     use ergocell_robot::lock::LockFile;
     use ergocell_robot::TrajectoryClass;
 
-    let dir = fresh_cell("trajectories_forged_lock");
+    let dir = fresh_cell_with_approvers("trajectories_forged_lock");
     let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c1"]);
     assert_eq!(code, 0, "{out}{err}");
     let (code, out, _) = ergocell(
@@ -169,7 +234,16 @@ fn a_hand_edited_and_rehashed_lock_is_neither_approved_nor_verified() {
 
     let (code, _, err) = ergocell(
         &dir,
-        &["trajectories", "approve", "--class", "c1", "--by", "X"],
+        &[
+            "trajectories",
+            "approve",
+            "--class",
+            "c1",
+            "--by",
+            ALICE,
+            "--key",
+            "keys/alice",
+        ],
     );
     assert_eq!(code, 1);
     assert!(
@@ -201,4 +275,283 @@ fn an_unknown_class_is_a_usage_error() {
     let (code, _, err) = ergocell(&dir, &["trajectories", "validate", "--class", "c9"]);
     assert_eq!(code, 2);
     assert!(err.contains("unknown trajectory class"), "{err}");
+}
+
+fn approve(dir: &Path, class: &str, by: &str, key: &str) -> (i32, String, String) {
+    ergocell(
+        dir,
+        &[
+            "trajectories",
+            "approve",
+            "--class",
+            class,
+            "--by",
+            by,
+            "--key",
+            key,
+        ],
+    )
+}
+
+/// The forgeries of issue 16 through the command line: an outsider's key, someone else's key, a
+/// name that draws a fake line, a hand-written entry, an edited last entry, a removed entry, a revoked
+/// key and a trust file edited without re-locking — each refused, naming why. And OpenSSH agrees:
+/// `ssh-keygen -Y verify` accepts what `approve` wrote, and `approve --signed` takes what
+/// `ssh-keygen -Y sign` made.
+#[test]
+fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
+    let dir = fresh_cell_with_approvers("trajectories_signed");
+    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let approvals = dir.join("trajectories/approvals/c2.toml");
+
+    // An outsider's key, and a trusted key used under another engineer's name.
+    let (code, _, err) = approve(&dir, "c2", "mallory@elsewhere.example", "keys/mallory");
+    assert_eq!(code, 1);
+    assert!(err.contains("is not a trusted approver's key"), "{err}");
+    let (code, _, err) = approve(&dir, "c2", ALICE, "keys/bob");
+    assert!(
+        code == 1 && err.contains("not for `alice@plant.example`"),
+        "{err}"
+    );
+    // A name that would print a fake verdict line.
+    let (code, _, err) = approve(
+        &dir,
+        "c2",
+        "Alice\nc3: OK — approved\u{1b}[31m",
+        "keys/alice",
+    );
+    assert!(
+        code == 1 && err.contains("control character") && !err.contains("\nc3: OK"),
+        "{err}"
+    );
+    assert!(!approvals.exists());
+
+    // A hand-written entry (the 64-zero chain start, no valid signature) is refused.
+    std::fs::create_dir_all(approvals.parent().unwrap()).unwrap();
+    let lock_sha = {
+        let text = std::fs::read_to_string(dir.join("trajectories/locks/c2.lock.toml")).unwrap();
+        ergocell_robot::LockFile::from_toml_str(ergocell_robot::TrajectoryClass::C2, &text)
+            .unwrap()
+            .lock_sha256
+    };
+    std::fs::write(
+        &approvals,
+        format!(
+            "[[approval]]\nclass = \"c2\"\nlock_sha256 = \"{lock_sha}\"\napproved_by = \"Dr.\\nc3: OK\"\n\
+             approved_at_utc = \"1999-01-01T00:00:00Z\"\nprevious_sha256 = \"{}\"\n\
+             signature = \"-----BEGIN SSH SIGNATURE-----\\nAAAA\\n-----END SSH SIGNATURE-----\"\n",
+            "0".repeat(64)
+        ),
+    )
+    .unwrap();
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("refused: the signature is not an SSH signature")
+            && out.contains("Dr.\\nc3: OK")
+            && !out.contains("\nc3: OK"),
+        "{out}"
+    );
+    std::fs::remove_file(&approvals).unwrap();
+
+    // Alice approves; the approval verifies.
+    let (code, out, err) = approve(&dir, "c2", ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    let good = std::fs::read_to_string(&approvals).unwrap();
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}");
+
+    // OpenSSH checks the approval with the cell's own trust file.
+    if let Some(keygen) = ssh_keygen() {
+        let (code, message, err) = ergocell(
+            &dir,
+            &[
+                "trajectories",
+                "approval-message",
+                "--class",
+                "c2",
+                "--entry",
+                "0",
+                "--signature-out",
+                "entry0.sig",
+            ],
+        );
+        assert_eq!(code, 0, "{err}");
+        let verify = |message: &str| {
+            use std::io::Write as _;
+            let mut child = Command::new(keygen)
+                .current_dir(&dir)
+                .args([
+                    "-Y",
+                    "verify",
+                    "-f",
+                    "config/approvers/allowed_signers",
+                    "-I",
+                    ALICE,
+                    "-n",
+                    ergocell_robot::signing::APPROVAL_NAMESPACE,
+                    "-s",
+                    "entry0.sig",
+                    "-r",
+                    "config/approvers/revoked_keys",
+                ])
+                .stdin(std::process::Stdio::piped())
+                .stdout(std::process::Stdio::piped())
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .unwrap();
+            child
+                .stdin
+                .take()
+                .unwrap()
+                .write_all(message.as_bytes())
+                .unwrap();
+            let out = child.wait_with_output().unwrap();
+            (
+                out.status.success(),
+                String::from_utf8_lossy(&out.stdout).into_owned(),
+            )
+        };
+        let (ok, said) = verify(&message);
+        assert!(
+            ok && said.contains("Good \"ergocell-trajectory-approval\" signature"),
+            "{said}"
+        );
+        let (ok, _) = verify(&message.replace("c2", "c3"));
+        assert!(!ok, "ssh-keygen must refuse an edited message");
+
+        // Two steps: ergocell writes the message, ssh-keygen signs it, ergocell appends it.
+        let (code, out, err) = ergocell(
+            &dir,
+            &[
+                "trajectories",
+                "approve",
+                "--class",
+                "c2",
+                "--by",
+                BOB,
+                "--message-out",
+                "bob.txt",
+            ],
+        );
+        assert_eq!(code, 0, "{out}{err}");
+        let signed = Command::new(keygen)
+            .current_dir(&dir)
+            .args([
+                "-Y",
+                "sign",
+                "-f",
+                "keys/bob",
+                "-n",
+                ergocell_robot::signing::APPROVAL_NAMESPACE,
+                "bob.txt",
+            ])
+            .output()
+            .unwrap();
+        assert!(
+            signed.status.success(),
+            "{}",
+            String::from_utf8_lossy(&signed.stderr)
+        );
+        let (code, out, err) = ergocell(
+            &dir,
+            &[
+                "trajectories",
+                "approve",
+                "--class",
+                "c2",
+                "--signed",
+                "bob.txt",
+            ],
+        );
+        assert_eq!(code, 0, "{out}{err}");
+        let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+        assert!(
+            code == 0 && out.contains(ALICE) && out.contains(BOB),
+            "{out}"
+        );
+        // The same signed message cannot be appended twice (the chain moved on).
+        let (code, _, err) = ergocell(
+            &dir,
+            &[
+                "trajectories",
+                "approve",
+                "--class",
+                "c2",
+                "--signed",
+                "bob.txt",
+            ],
+        );
+        assert!(code == 1 && err.contains("write a new message"), "{err}");
+        std::fs::write(&approvals, &good).unwrap();
+    }
+
+    // The last entry edited (its time): the chain cannot see it, the signature does.
+    std::fs::write(
+        &approvals,
+        good.replacen("approved_at_utc = \"20", "approved_at_utc = \"19", 1),
+    )
+    .unwrap();
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        code == 1 && out.contains("the signature does not match the entry"),
+        "{out}"
+    );
+    // Its time replaced by words.
+    let words = regex_free_replace_time(&good, "not a time at all");
+    std::fs::write(&approvals, words).unwrap();
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        code == 1 && out.contains("is not an RFC 3339 time"),
+        "{out}"
+    );
+    // The entry removed: nothing approves the lock.
+    std::fs::write(&approvals, "").unwrap();
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        code == 1 && out.contains("no approval for lock sha256"),
+        "{out}"
+    );
+    std::fs::write(&approvals, &good).unwrap();
+
+    // Alice's key revoked, without re-locking: the lock sees the edited trust file.
+    let alice_pub = ergocell_robot::signing::public_key_openssh(
+        &ergocell_robot::signing::key_from_seed(&[1; 32], "alice"),
+    )
+    .unwrap();
+    let revoked = dir.join("config/approvers/revoked_keys");
+    let mut text = std::fs::read_to_string(&revoked).unwrap();
+    text.push_str(&alice_pub);
+    text.push('\n');
+    std::fs::write(&revoked, text).unwrap();
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        code == 1
+            && out.contains("revoked approvers' keys approvers/revoked_keys")
+            && out.contains("changed since the lock was written"),
+        "{out}"
+    );
+    // Re-locked: alice can no longer approve, and her old approval does not carry over.
+    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, _, err) = approve(&dir, "c2", ALICE, "keys/alice");
+    assert!(code == 1 && err.contains("is revoked"), "{err}");
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert!(code == 1 && out.contains("none for this hash"), "{out}");
+}
+
+/// `good` with its (only) approved_at_utc value replaced by `value`.
+fn regex_free_replace_time(good: &str, value: &str) -> String {
+    good.lines()
+        .map(|l| {
+            if l.starts_with("approved_at_utc = ") {
+                format!("approved_at_utc = \"{value}\"")
+            } else {
+                l.to_owned()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+        + "\n"
 }

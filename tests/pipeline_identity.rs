@@ -52,7 +52,9 @@ fn the_session_and_the_experiments_run_one_pipeline() {
         &root().join("config/cell.toml"),
         &root().join("trajectories"),
         &approvals,
-    );
+    )
+    .with_demo_key(&[7; 32])
+    .unwrap();
     provider
         .approve_for_demo(TrajectoryClass::C2, "2026-01-01T00:00:00Z")
         .unwrap();

@@ -42,7 +42,9 @@ fn provider(name: &str, approve: Option<TrajectoryClass>) -> FileTrajectories {
         &root().join("config/cell.toml"),
         &root().join("trajectories"),
         &dir,
-    );
+    )
+    .with_demo_key(&[7; 32])
+    .unwrap();
     if let Some(class) = approve {
         p.approve_for_demo(class, "2026-01-01T00:00:00Z").unwrap();
     }
@@ -739,7 +741,7 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
     // exactly those keys. Approvals are still read from, and written to, the folder given.
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("session-shipped");
     let _ = std::fs::remove_dir_all(&dir);
-    let mut shipped = FileTrajectories::with_shipped_defaults(None, None, &dir);
+    let shipped = FileTrajectories::with_shipped_defaults(None, None, &dir);
     for class in TrajectoryClass::ALL {
         let key = format!("trajectories/locks/{class}.lock.toml");
         assert_eq!(
@@ -747,6 +749,11 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
             ergocell::shipped::file(Path::new(&key)).unwrap(),
             "{key}"
         );
+    }
+    // The shipped approvers trust no one: a demo trusts its own throwaway key (and re-locks under it,
+    // after checking the shipped locks hold the same trajectories).
+    let mut shipped = shipped.with_demo_key(&[7; 32]).unwrap();
+    for class in TrajectoryClass::ALL {
         assert!(
             shipped.stature_bounds_m(class).is_ok(),
             "trajectories/{class}.toml"

@@ -27,10 +27,18 @@ trap 'rm -rf "$tmp"' EXIT
 # The session the cameras will replay: the simulator at 30 Hz, one handover cycle, with the faults.
 "$bin" --log error demo --cycles 1 --fps 30 --out "$tmp/session.mcap" > "$tmp/demo.log"
 
-# Approvals for this test only, beside a copy of the trajectories (never trajectories/approvals/).
-mkdir -p "$tmp/traj"
-cp trajectories/c*.toml "$tmp/traj/" && cp -r trajectories/locks "$tmp/traj/"
-"$bin" trajectories --trajectories-dir "$tmp/traj" approve --class c2 --by "interop test (not a sign-off)" > /dev/null
+# A signed approval for this test only (never trajectories/approvals/): a copy of the cell whose
+# approvers' file trusts one throwaway key made here by ssh-keygen, c2 re-locked under that trust file
+# (a lock covers it) and approved with the key.
+mkdir -p "$tmp/traj" "$tmp/cell"
+cp -r config/. "$tmp/cell/"
+cp trajectories/c*.toml "$tmp/traj/"
+ssh-keygen -q -t ed25519 -N "" -C "ergocell interop test key (not a sign-off)" -f "$tmp/interop_key"
+printf 'interop@ci.invalid namespaces="ergocell-trajectory-approval" %s\n' "$(cat "$tmp/interop_key.pub")" \
+  > "$tmp/cell/approvers/allowed_signers"
+"$bin" trajectories --cell "$tmp/cell/cell.toml" --trajectories-dir "$tmp/traj" lock --class c2 > /dev/null
+"$bin" trajectories --cell "$tmp/cell/cell.toml" --trajectories-dir "$tmp/traj" approve --class c2 \
+  --by interop@ci.invalid --key "$tmp/interop_key" > /dev/null
 
 export CYCLONEDDS_URI="file://$PWD/.ci/interop/cyclonedds.xml"
 export RUST_LOG=warn
@@ -39,10 +47,10 @@ unshare -n -- bash -c '
   ip link set lo up
   ip link set lo multicast on
   ip route add 224.0.0.0/4 dev lo
-  "$1" --log "warn,rustdds=error" run --config config/cell.toml --rig config/rig.toml \
+  "$1" --log "warn,rustdds=error" run --config "$2/cell/cell.toml" --rig config/rig.toml \
       --trajectories "$2/traj" --sessions 1 --max-secs 90 --latency-report > "$2/run.log" 2> "$2/run.err" &
   run=$!
-  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 90 > "$2/peer.json"
+  python3 .ci/interop/peer.py "$2/session.mcap" "$2/traj/locks/c2.lock.toml" 90 > "$2/peer.json"
   wait "$run"
 ' _ "$bin" "$tmp"
 
@@ -70,10 +78,10 @@ unshare -n -- bash -c '
   ip link set lo up
   ip link set lo multicast on
   ip route add 224.0.0.0/4 dev lo
-  "$1" --log "error" run --config config/cell.toml --trajectories "$2/traj" --max-secs 60 \
+  "$1" --log "error" run --config "$2/cell/cell.toml" --trajectories "$2/traj" --max-secs 60 \
       --record "$2/killed.mcap" > "$2/killed-run.log" 2>&1 &
   run=$!
-  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 30 > /dev/null 2>&1 &
+  python3 .ci/interop/peer.py "$2/session.mcap" "$2/traj/locks/c2.lock.toml" 30 > /dev/null 2>&1 &
   replay=$!
   sleep 12
   date +%s%N > "$2/killed-at"
@@ -121,10 +129,10 @@ unshare -m -n -- bash -c '
   ip route add 224.0.0.0/4 dev lo
   mkdir -p "$2/full"
   mount -t tmpfs -o size=256k tmpfs "$2/full"
-  "$1" --log "error" run --config config/cell.toml --trajectories "$2/traj" --max-secs 60 \
+  "$1" --log "error" run --config "$2/cell/cell.toml" --trajectories "$2/traj" --max-secs 60 \
       --record "$2/full/session.mcap" > "$2/full-run.log" 2>&1 &
   run=$!
-  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 25 > "$2/full-peer.json" 2>/dev/null &
+  python3 .ci/interop/peer.py "$2/session.mcap" "$2/traj/locks/c2.lock.toml" 25 > "$2/full-peer.json" 2>/dev/null &
   peer=$!
   if wait "$run"; then echo "run exit 0" >> "$2/full-run.log"; else echo "run exit $?" >> "$2/full-run.log"; fi
   umount "$2/full"
@@ -154,11 +162,11 @@ unshare -n -- bash -c '
   ip link set lo up
   ip link set lo multicast on
   ip route add 224.0.0.0/4 dev lo
-  /usr/bin/time -f "%M" -o "$2/storm-rss" "$1" --log "error" run --config config/cell.toml \
+  /usr/bin/time -f "%M" -o "$2/storm-rss" "$1" --log "error" run --config "$2/cell/cell.toml" \
       --rig config/rig.toml --trajectories "$2/traj" --sessions 1 --max-secs 90 --latency-report \
       > "$2/storm-run.log" 2>&1 &
   run=$!
-  PEER_STORM=10 python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 90 > "$2/storm-peer.json"
+  PEER_STORM=10 python3 .ci/interop/peer.py "$2/session.mcap" "$2/traj/locks/c2.lock.toml" 90 > "$2/storm-peer.json"
   wait "$run"
 ' _ "$bin" "$tmp"
 python3 - "$tmp/storm-run.log" "$tmp/storm-peer.json" "$tmp/storm-rss" <<'PY'
@@ -192,15 +200,15 @@ unshare -n -- bash -c '
   ip link set lo up
   ip link set lo multicast on
   ip route add 224.0.0.0/4 dev lo
-  "$1" --log "error" run --config config/cell.toml --rig config/rig.toml --trajectories "$2/traj" \
+  "$1" --log "error" run --config "$2/cell/cell.toml" --rig config/rig.toml --trajectories "$2/traj" \
       --sessions 1 --max-secs 100 > "$2/restart-run.log" 2>&1 &
   run=$!
-  python3 .ci/interop/peer.py "$2/clean.mcap" trajectories/locks/c2.lock.toml 90 > /dev/null 2>&1 &
+  python3 .ci/interop/peer.py "$2/clean.mcap" "$2/traj/locks/c2.lock.toml" 90 > /dev/null 2>&1 &
   first=$!
   sleep 5
   kill -KILL "$first"; wait "$first" 2>/dev/null || true
   sleep 3
-  PEER_SKIP_S=8 python3 .ci/interop/peer.py "$2/clean.mcap" trajectories/locks/c2.lock.toml 85 > "$2/restart-peer.json"
+  PEER_SKIP_S=8 python3 .ci/interop/peer.py "$2/clean.mcap" "$2/traj/locks/c2.lock.toml" 85 > "$2/restart-peer.json"
   if wait "$run"; then echo "run exit 0" >> "$2/restart-run.log"; else echo "run exit $?" >> "$2/restart-run.log"; fi
 ' _ "$bin" "$tmp"
 python3 - "$tmp/restart-run.log" "$tmp/restart-peer.json" <<'PY'
@@ -231,10 +239,10 @@ unshare -n -- bash -c '
   ip link set lo multicast on
   ip route add 224.0.0.0/4 dev lo
   LD_PRELOAD="$3" FAKETIME_TIMESTAMP_FILE="$2/faketime" FAKETIME_NO_CACHE=1 DONT_FAKE_MONOTONIC=1 \
-    "$1" --log "error" run --config config/cell.toml --rig config/rig.toml --trajectories "$2/traj" \
+    "$1" --log "error" run --config "$2/cell/cell.toml" --rig config/rig.toml --trajectories "$2/traj" \
       --sessions 1 --max-secs 90 --record "$2/jump.mcap" > "$2/jump-run.log" 2>&1 &
   run=$!
-  python3 .ci/interop/peer.py "$2/session.mcap" trajectories/locks/c2.lock.toml 90 > "$2/jump-peer.json" &
+  python3 .ci/interop/peer.py "$2/session.mcap" "$2/traj/locks/c2.lock.toml" 90 > "$2/jump-peer.json" &
   peer=$!
   sleep 6; echo "+3600" > "$2/faketime"
   sleep 6; echo "-600" > "$2/faketime"

@@ -34,7 +34,16 @@ fn bench(c: &mut Criterion) {
     for class in TrajectoryClass::ALL {
         let text = read(&format!("trajectories/{class}.toml"));
         let spec = TrajectorySpec::from_toml_str(&text).unwrap();
-        let hashes = InputHashes::new(text.as_bytes(), urdf.as_bytes(), &cell, "bench");
+        let hashes = InputHashes::new(
+            text.as_bytes(),
+            urdf.as_bytes(),
+            &cell,
+            ergocell_robot::TrustFiles {
+                allowed_signers: b"",
+                revoked_keys: b"",
+            },
+            "bench",
+        );
         let inputs = PlanInputs {
             model: &model,
             cell: &cell,

@@ -74,6 +74,17 @@ pub enum RobotError {
         lock_sha256: String,
         detail: String,
     },
+    /// An approval of the lock is there but cannot be trusted (bad signature, untrusted or revoked
+    /// key, malformed time, …): the lock is refused.
+    #[error("{class}: approval entry {entry} (approved by {approved_by}) refused: {reason}")]
+    ApprovalRefused {
+        class: String,
+        /// 0-based index in the approvals file.
+        entry: usize,
+        /// The entry's name, control characters escaped.
+        approved_by: String,
+        reason: String,
+    },
     /// The robot is not where the trajectory starts.
     #[error("joint `{joint}` is at {current_rad:.4} rad but the trajectory starts at {start_rad:.4} rad")]
     StartMismatch {

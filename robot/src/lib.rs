@@ -11,6 +11,8 @@
 //!   [`LockedTrajectory`] only when the QP is `Solved` and every check passes.
 //! * [`lock`]: lock files, approvals, verification, the [`lock::ApprovedTrajectory`] the controller may
 //!   send and the per-session [`lock::SessionLock`].
+//! * [`signing`]: who may approve (OpenSSH allowed signers, revoked keys) and the exact bytes an
+//!   approval's SSH signature covers.
 //!
 //! The library reads no files: it parses strings, and the binary reads files and the clock. It knows
 //! nothing of cameras, ergonomics or ROS. The lock is a software guarantee on top of the robot's own
@@ -30,6 +32,7 @@ pub mod lock;
 pub mod model;
 pub mod pose;
 pub mod qp;
+pub mod signing;
 pub mod validate;
 
 pub use config::{CellConfig, TrajectoryClass, TrajectorySpec};
@@ -37,6 +40,8 @@ pub use error::RobotError;
 pub use layout::{TrajectoryFile, TrajectoryLayout};
 pub use lock::{ApprovedTrajectory, LockFile, SessionLock};
 pub use model::{JointLimits, RobotModel};
+pub use signing::TrustedSigners;
 pub use validate::{
-    plan_and_validate, InputHashes, LockedTrajectory, PlanInputs, Validation, ValidationReport,
+    plan_and_validate, InputHashes, LockedTrajectory, PlanInputs, TrustFiles, Validation,
+    ValidationReport,
 };

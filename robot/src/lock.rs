@@ -5,12 +5,16 @@
 //!   `lock_sha256`: the SHA-256 of the canonical JSON of everything else in the file. Editing any byte of
 //!   the content changes that hash; editing an input changes an input hash.
 //! * An **approvals file** (`trajectories/approvals/<class>.toml`) is append-only: each `[[approval]]`
-//!   records who signed off which `lock_sha256`, and when (UTC, RFC 3339, taken by the binary), and the
-//!   SHA-256 of the previous entry, so the file is a hash chain and an edited or removed entry is caught.
-//!   (A signature with a key the engineer holds would be stronger; not implemented yet.)
-//! * [`verify`] checks the lock's own hash, every input hash against the current files, the locked samples
-//!   against the current URDF's limits, and that an approval names exactly this lock hash. Only then does
-//!   it hand out an [`ApprovedTrajectory`], the only thing the controller may send.
+//!   records who signed off which `lock_sha256`, and when (UTC, RFC 3339, taken by the binary), the
+//!   SHA-256 of the previous entry (so the file is a hash chain and an edited or removed earlier entry
+//!   is caught), and the approver's **SSH signature** over exactly those fields
+//!   ([`crate::signing::approval_message`]): without the private key of a trusted approver no one can
+//!   write an approval, edit one (the last included) or move one to another lock.
+//! * [`verify`] checks the lock's own hash, every input hash against the current files (the trusted
+//!   approvers' files among them), the locked samples against the current URDF's limits, and that an
+//!   approval of exactly this lock hash carries a valid signature by a trusted, unrevoked key for its
+//!   principal. Only then does it hand out an [`ApprovedTrajectory`], the only thing the controller
+//!   may send.
 //! * [`check_matches_validation`] ties the samples to validation: the review commands re-plan from the
 //!   current inputs and refuse a lock (hand-edited and re-hashed, say) that does not hold that result.
 //! * A [`SessionLock`] holds one approved trajectory for a session; a request for another class is refused
@@ -27,11 +31,12 @@ use serde::{Deserialize, Serialize};
 
 use crate::config::TrajectoryClass;
 use crate::model::RobotModel;
+use crate::signing::{self, ApprovalClaim, TrustedSigners};
 use crate::validate::{sha256_hex, InputHashes, LockedTrajectory, SAFETY_NOTE};
 use crate::RobotError;
 
 /// Version tag of the lock format.
-pub const LOCK_FORMAT: &str = "ergocell-trajectory-lock/1";
+pub const LOCK_FORMAT: &str = "ergocell-trajectory-lock/2";
 
 /// Headline numbers of the validation, kept in the lock for the reviewer.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -159,7 +164,7 @@ impl LockFile {
         Ok(format!(
             "# ergocell trajectory lock for class {} — written by `ergocell trajectories lock`.\n\
              # Do not edit: `ergocell trajectories verify` recomputes lock_sha256 over this content and the\n\
-             # input hashes over the current files. Approve with `ergocell trajectories approve --class {} --by <name>`.\n\
+             # input hashes over the current files. Approve with `ergocell trajectories approve --class {} --by <principal> --key <ssh key>`.\n\
              # Units: radians, rad/s, rad/s², seconds, metres.\n\n{body}",
             self.class, self.class
         ))
@@ -199,15 +204,35 @@ impl LockFile {
 pub struct Approval {
     pub class: TrajectoryClass,
     pub lock_sha256: String,
+    /// The approver's principal, as the allowed-signers file lists it.
     pub approved_by: String,
     /// RFC 3339 UTC, taken from the clock by the binary.
     pub approved_at_utc: String,
     /// SHA-256 of the previous entry (canonical JSON), 64 zeros for the first: the file is a hash chain,
     /// so an edited or removed earlier entry is detected.
     pub previous_sha256: String,
+    /// The approver's SSH signature (armored SSHSIG, namespace
+    /// [`signing::APPROVAL_NAMESPACE`]) over [`Approval::message`].
+    pub signature: String,
 }
 
 impl Approval {
+    /// The fields the signature covers.
+    pub fn claim(&self) -> ApprovalClaim<'_> {
+        ApprovalClaim {
+            class: self.class.as_str(),
+            lock_sha256: &self.lock_sha256,
+            approved_by: &self.approved_by,
+            approved_at_utc: &self.approved_at_utc,
+            previous_sha256: &self.previous_sha256,
+        }
+    }
+
+    /// The exact bytes the signature covers (`ssh-keygen -Y verify` reads them on its standard input).
+    pub fn message(&self) -> String {
+        signing::approval_message(&self.claim())
+    }
+
     /// SHA-256 of this entry's canonical JSON (what the next entry's `previous_sha256` records).
     pub fn entry_sha256(&self) -> String {
         sha256_hex(&serde_json::to_vec(self).unwrap_or_default())
@@ -249,7 +274,7 @@ impl ApprovalsFile {
                 return Err(RobotError::Config {
                     reason: format!(
                         "approvals hash chain broken at entry {i} (approved by {}): an earlier entry was edited or removed",
-                        entry.approved_by
+                        signing::printable(&entry.approved_by)
                     ),
                 });
             }
@@ -258,31 +283,117 @@ impl ApprovalsFile {
         Ok(())
     }
 
-    /// Append a sign-off of `lock` (which must have passed [`verify_integrity`]).
+    /// The `previous_sha256` the next entry must record (the chain's head).
+    pub fn head_sha256(&self) -> String {
+        self.approval
+            .last()
+            .map_or_else(|| CHAIN_START.to_owned(), Approval::entry_sha256)
+    }
+
+    /// Append a sign-off of `lock` (which must have passed [`verify_integrity`]) by `principal` at
+    /// `approved_at_utc`, signed with `key` (which `trusted` must list for `principal`, unrevoked).
     pub fn approve(
         &mut self,
         lock: &LockFile,
-        approved_by: &str,
+        principal: &str,
         approved_at_utc: &str,
+        trusted: &TrustedSigners,
+        key: &ssh_key::PrivateKey,
     ) -> Result<&Approval, RobotError> {
-        let name = approved_by.trim();
-        if name.is_empty() {
-            return Err(RobotError::Config {
-                reason: "an approval needs the approver's name (--by)".to_owned(),
-            });
+        let principal = principal.trim();
+        signing::check_principal(principal)?;
+        signing::check_utc_time(approved_at_utc).map_err(|reason| RobotError::Config { reason })?;
+        self.check_chain()?;
+        let previous_sha256 = self.head_sha256();
+        let claim = ApprovalClaim {
+            class: lock.class.as_str(),
+            lock_sha256: &lock.lock_sha256,
+            approved_by: principal,
+            approved_at_utc,
+            previous_sha256: &previous_sha256,
+        };
+        let signature = trusted.sign(&claim, key)?;
+        self.push_checked(
+            Approval {
+                class: lock.class,
+                lock_sha256: lock.lock_sha256.clone(),
+                approved_by: principal.to_owned(),
+                approved_at_utc: approved_at_utc.to_owned(),
+                previous_sha256,
+                signature,
+            },
+            lock,
+            trusted,
+        )
+    }
+
+    /// Append an approval signed outside ergocell (`ssh-keygen -Y sign` over the message that
+    /// [`signing::approval_message`] wrote): `message` must be such a message for exactly `lock` and
+    /// this file's current head, and `signature` valid for it.
+    pub fn append_signed(
+        &mut self,
+        lock: &LockFile,
+        message: &str,
+        signature: &str,
+        trusted: &TrustedSigners,
+    ) -> Result<&Approval, RobotError> {
+        let [class, lock_sha256, approved_by, approved_at_utc, previous_sha256] =
+            signing::parse_approval_message(message)?;
+        let refuse = |reason: String| RobotError::Config {
+            reason: format!("the signed message does not fit: {reason}"),
+        };
+        if class != lock.class.as_str() {
+            return Err(refuse(format!(
+                "it approves class {}, not {}",
+                signing::printable(&class),
+                lock.class
+            )));
+        }
+        if lock_sha256 != lock.lock_sha256 {
+            return Err(refuse(format!(
+                "it approves lock {}, the current lock is {} (re-lock since? write a new message)",
+                signing::printable(&lock_sha256),
+                lock.lock_sha256
+            )));
         }
         self.check_chain()?;
-        let previous_sha256 = self
-            .approval
-            .last()
-            .map_or_else(|| CHAIN_START.to_owned(), Approval::entry_sha256);
-        self.approval.push(Approval {
-            class: lock.class,
-            lock_sha256: lock.lock_sha256.clone(),
-            approved_by: name.to_owned(),
-            approved_at_utc: approved_at_utc.to_owned(),
-            previous_sha256,
-        });
+        if previous_sha256 != self.head_sha256() {
+            return Err(refuse(
+                "its previous_sha256 is not the approvals file's last entry (another approval was \
+                 added since the message was written: write a new message)"
+                    .to_owned(),
+            ));
+        }
+        self.push_checked(
+            Approval {
+                class: lock.class,
+                lock_sha256,
+                approved_by,
+                approved_at_utc,
+                previous_sha256,
+                signature: signature.trim().to_owned() + "\n",
+            },
+            lock,
+            trusted,
+        )
+    }
+
+    /// Verifies `entry`'s signature like [`verify`] will, then appends it.
+    fn push_checked(
+        &mut self,
+        entry: Approval,
+        lock: &LockFile,
+        trusted: &TrustedSigners,
+    ) -> Result<&Approval, RobotError> {
+        trusted
+            .verify(&entry.claim(), &entry.signature)
+            .map_err(|reason| RobotError::ApprovalRefused {
+                class: lock.class.to_string(),
+                entry: self.approval.len(),
+                approved_by: signing::printable(&entry.approved_by),
+                reason,
+            })?;
+        self.approval.push(entry);
         Ok(&self.approval[self.approval.len() - 1])
     }
 }
@@ -298,6 +409,8 @@ pub struct VerifyInputs<'a> {
     pub model: &'a RobotModel,
     /// The approvals file's text, `None` if it does not exist.
     pub approvals_toml: Option<&'a str>,
+    /// The approvers the cell trusts now (from the files whose hashes are in `current_inputs`).
+    pub trusted: &'a TrustedSigners,
 }
 
 /// Every problem found for one class.
@@ -395,6 +508,22 @@ pub fn verify_integrity(inputs: &VerifyInputs<'_>) -> Result<LockFile, VerifyFai
             "cell config ([robot]/[station])".to_owned(),
             &l.cell_sha256,
             &c.cell_sha256,
+        ),
+        (
+            format!(
+                "trusted approvers' file {} (a key added or removed: re-lock and re-approve)",
+                signing::ALLOWED_SIGNERS
+            ),
+            &l.allowed_signers_sha256,
+            &c.allowed_signers_sha256,
+        ),
+        (
+            format!(
+                "revoked approvers' keys {} (re-lock and re-approve)",
+                signing::REVOKED_KEYS
+            ),
+            &l.revoked_keys_sha256,
+            &c.revoked_keys_sha256,
         ),
         (
             "ergocell version".to_owned(),
@@ -592,7 +721,7 @@ pub fn verify(inputs: &VerifyInputs<'_>) -> Result<ApprovedTrajectory, VerifyFai
     let Some(text) = inputs.approvals_toml else {
         return Err(not_approved(format!(
             "no approvals file trajectories/approvals/{class}.toml; a safety engineer runs \
-             `ergocell trajectories approve --class {class} --by <name>` after reviewing the lock"
+             `ergocell trajectories approve --class {class} --by <principal> --key <ssh key>` after reviewing the lock"
         )));
     };
     let file = ApprovalsFile::from_toml_str(text)
@@ -601,12 +730,29 @@ pub fn verify(inputs: &VerifyInputs<'_>) -> Result<ApprovedTrajectory, VerifyFai
             class,
             problems: vec![e],
         })?;
-    let approvals: Vec<Approval> = file
-        .approval
-        .iter()
-        .filter(|a| a.class == class && a.lock_sha256 == lock.lock_sha256)
-        .cloned()
-        .collect();
+    let mut approvals = Vec::new();
+    let mut refused = Vec::new();
+    for (i, a) in file.approval.iter().enumerate() {
+        if a.class != class || a.lock_sha256 != lock.lock_sha256 {
+            continue;
+        }
+        match inputs.trusted.verify(&a.claim(), &a.signature) {
+            Ok(()) => approvals.push(a.clone()),
+            Err(reason) => refused.push(RobotError::ApprovalRefused {
+                class: class.to_string(),
+                entry: i,
+                approved_by: signing::printable(&a.approved_by),
+                reason,
+            }),
+        }
+    }
+    // One forged or broken approval of this lock refuses the lock, whatever else the file holds.
+    if !refused.is_empty() {
+        return Err(VerifyFailure {
+            class,
+            problems: refused,
+        });
+    }
     if approvals.is_empty() {
         return Err(not_approved(format!(
             "the approvals file has {} entries, none for this hash (an approval of an earlier lock does not carry over)",

@@ -187,6 +187,15 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
     s
 }
 
+/// The bytes of the approvers' trust files ([`crate::signing`]), which every lock covers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TrustFiles<'a> {
+    /// [`crate::signing::ALLOWED_SIGNERS`]'s bytes.
+    pub allowed_signers: &'a [u8],
+    /// [`crate::signing::REVOKED_KEYS`]'s bytes.
+    pub revoked_keys: &'a [u8],
+}
+
 /// Hashes of everything a trajectory depends on.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -197,6 +206,11 @@ pub struct InputHashes {
     pub urdf_sha256: String,
     /// SHA-256 of [`CellConfig::canonical_bytes`] (the `[robot]` and `[station]` tables).
     pub cell_sha256: String,
+    /// SHA-256 of the trusted approvers' file ([`crate::signing::ALLOWED_SIGNERS`]): adding a key
+    /// is a change the lock sees.
+    pub allowed_signers_sha256: String,
+    /// SHA-256 of the revocation list ([`crate::signing::REVOKED_KEYS`]).
+    pub revoked_keys_sha256: String,
     /// The ergocell binary's version.
     pub ergocell_version: String,
     /// This crate's version (the planner and checks).
@@ -208,12 +222,15 @@ impl InputHashes {
         trajectory_file: &[u8],
         urdf_file: &[u8],
         cell: &CellConfig,
+        trust: TrustFiles<'_>,
         ergocell_version: &str,
     ) -> Self {
         Self {
             trajectory_sha256: sha256_hex(trajectory_file),
             urdf_sha256: sha256_hex(urdf_file),
             cell_sha256: sha256_hex(&cell.canonical_bytes()),
+            allowed_signers_sha256: sha256_hex(trust.allowed_signers),
+            revoked_keys_sha256: sha256_hex(trust.revoked_keys),
             ergocell_version: ergocell_version.to_owned(),
             planner_version: env!("CARGO_PKG_VERSION").to_owned(),
         }
@@ -2038,7 +2055,7 @@ mod tests {
         assert_eq!(
             f.outside_band.as_deref(),
             Some(
-                "handover (forward 0.410, lateral -0.100, height 1.150) m is outside the class band: \
+                "handover (forward 0.425, lateral -0.100, height 1.150) m is outside the class band: \
                  height 1.026–1.081 m, forward 0.342–0.443 m, |lateral| ≤ 0.218 m"
             )
         );

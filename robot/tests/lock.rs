@@ -43,7 +43,14 @@ fn inputs<'a>(
         current_inputs: current,
         model,
         approvals_toml: approvals,
+        trusted: trusted(),
     }
+}
+
+/// The test approvers (alice and bob), parsed once.
+fn trusted() -> &'static ergocell_robot::TrustedSigners {
+    static T: std::sync::OnceLock<ergocell_robot::TrustedSigners> = std::sync::OnceLock::new();
+    T.get_or_init(|| common::signers().trusted)
 }
 
 /// A fresh directory under the system temp dir (no wall clock: pid + test name).
@@ -95,16 +102,23 @@ fn an_approval_in_a_temp_dir_verifies_and_binds_to_exactly_that_hash() {
 
     let dir = temp_dir("approval");
     let path = dir.join("c2.toml");
+    let t = common::signers();
     let mut approvals = ApprovalsFile::default();
     approvals
-        .approve(&lock, "Test Engineer", "2026-01-01T00:00:00Z")
+        .approve(
+            &lock,
+            common::ALICE,
+            "2026-01-01T00:00:00Z",
+            &t.trusted,
+            &t.alice,
+        )
         .unwrap();
     std::fs::write(&path, approvals.to_toml().unwrap()).unwrap();
     let approvals_text = std::fs::read_to_string(&path).unwrap();
 
     let approved = lock::verify(&inputs(&toml, &current, &s.model, Some(&approvals_text))).unwrap();
     assert_eq!(approved.class(), CLASS);
-    assert_eq!(approved.approvals()[0].approved_by, "Test Engineer");
+    assert_eq!(approved.approvals()[0].approved_by, common::ALICE);
     assert_eq!(approved.points().len(), 100);
 
     // An approval of another hash does not carry over.
@@ -117,11 +131,17 @@ fn an_approval_in_a_temp_dir_verifies_and_binds_to_exactly_that_hash() {
 
     // A second approval chains to the first; editing the first breaks the chain.
     approvals
-        .approve(&lock, "Second Engineer", "2026-01-02T00:00:00Z")
+        .approve(
+            &lock,
+            common::BOB,
+            "2026-01-02T00:00:00Z",
+            &t.trusted,
+            &t.bob,
+        )
         .unwrap();
     let chained = approvals.to_toml().unwrap();
     lock::verify(&inputs(&toml, &current, &s.model, Some(&chained))).unwrap();
-    let forged = chained.replacen("Test Engineer", "Other Person", 1);
+    let forged = chained.replacen("2026-01-01T00:00:00Z", "2025-01-01T00:00:00Z", 1);
     let failure = lock::verify(&inputs(&toml, &current, &s.model, Some(&forged))).unwrap_err();
     assert!(
         failure.to_string().contains("hash chain broken at entry 1"),
@@ -130,7 +150,7 @@ fn an_approval_in_a_temp_dir_verifies_and_binds_to_exactly_that_hash() {
 
     // An empty name is refused.
     assert!(ApprovalsFile::default()
-        .approve(&lock, "  ", "2026-01-01T00:00:00Z")
+        .approve(&lock, "  ", "2026-01-01T00:00:00Z", &t.trusted, &t.alice)
         .is_err());
     let _ = std::fs::remove_dir_all(dir);
 }
@@ -141,9 +161,16 @@ fn editing_one_byte_of_the_trajectory_file_makes_verify_fail() {
     let text = common::spec_text(CLASS);
     let lock = lock_for(&s, &text);
     let toml = lock.to_toml().unwrap();
+    let t = common::signers();
     let mut approvals = ApprovalsFile::default();
     approvals
-        .approve(&lock, "Test Engineer", "2026-01-01T00:00:00Z")
+        .approve(
+            &lock,
+            common::ALICE,
+            "2026-01-01T00:00:00Z",
+            &t.trusted,
+            &t.alice,
+        )
         .unwrap();
     let approvals_text = approvals.to_toml().unwrap();
 
@@ -199,13 +226,15 @@ fn a_changed_urdf_or_cell_config_makes_verify_fail() {
     let lock = lock_for(&s, &text);
     let toml = lock.to_toml().unwrap();
     let urdf = s.urdf.replacen("effort=\"320\"", "effort=\"321\"", 1);
-    let current = InputHashes::new(text.as_bytes(), urdf.as_bytes(), &s.cell, "test");
+    let mut current = common::hashes(&s, &text);
+    current.urdf_sha256 = ergocell_robot::validate::sha256_hex(urdf.as_bytes());
     let failure = lock::verify_integrity(&inputs(&toml, &current, &s.model, None)).unwrap_err();
     assert!(failure.to_string().contains("URDF changed"), "{failure}");
 
     let mut cell = s.cell.clone();
     cell.robot.base_xyz_m[0] += 0.001;
-    let current = InputHashes::new(text.as_bytes(), s.urdf.as_bytes(), &cell, "test");
+    let mut current = common::hashes(&s, &text);
+    current.cell_sha256 = ergocell_robot::validate::sha256_hex(&cell.canonical_bytes());
     let failure = lock::verify_integrity(&inputs(&toml, &current, &s.model, None)).unwrap_err();
     assert!(failure.to_string().contains("cell config"), "{failure}");
 }
@@ -226,9 +255,16 @@ fn the_session_lock_refuses_changes_until_the_session_ends() {
     let lock = lock_for(&s, &text);
     let toml = lock.to_toml().unwrap();
     let current = common::hashes(&s, &text);
+    let t = common::signers();
     let mut approvals = ApprovalsFile::default();
     approvals
-        .approve(&lock, "Test Engineer", "2026-01-01T00:00:00Z")
+        .approve(
+            &lock,
+            common::ALICE,
+            "2026-01-01T00:00:00Z",
+            &t.trusted,
+            &t.alice,
+        )
         .unwrap();
     let approvals_text = approvals.to_toml().unwrap();
     let approved = lock::verify(&inputs(&toml, &current, &s.model, Some(&approvals_text))).unwrap();
@@ -259,12 +295,18 @@ fn the_committed_locks_match_the_committed_inputs() {
     // The shipped locks (trajectories/locks/) must stay in step with the trajectory files, URDF and
     // cell config: edit an input, and this test tells you to re-run `ergocell trajectories lock`.
     let s = common::shipped();
+    let (allowed, revoked) = common::shipped_trust();
+    let shipped_trust = ergocell_robot::TrustedSigners::parse(&allowed, &revoked).unwrap();
     for class in TrajectoryClass::ALL {
         let text = common::spec_text(class);
         let current = InputHashes::new(
             text.as_bytes(),
             s.urdf.as_bytes(),
             &s.cell,
+            ergocell_robot::TrustFiles {
+                allowed_signers: allowed.as_bytes(),
+                revoked_keys: revoked.as_bytes(),
+            },
             env!("CARGO_PKG_VERSION"),
         );
         let lock_text = common::read(common::layout().lock(class));
@@ -274,6 +316,7 @@ fn the_committed_locks_match_the_committed_inputs() {
             current_inputs: &current,
             model: &s.model,
             approvals_toml: None,
+            trusted: &shipped_trust,
         };
         if let Err(f) = lock::verify_integrity(&inputs) {
             panic!("{f}\nre-run `ergocell trajectories lock` and have the locks re-approved");

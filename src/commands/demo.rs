@@ -288,11 +288,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let demo_dir =
         TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
     let approvals_dir = demo_dir.0.join("approvals");
+    // A throwaway Ed25519 key made for this run from the OS's randomness; the run trusts it alone.
+    let mut seed = [0u8; 32];
+    getrandom::fill(&mut seed)
+        .map_err(|e| anyhow::anyhow!("no OS randomness for the demo key: {e}"))?;
     let provider = FileTrajectories::with_shipped_defaults(
         args.cell.as_deref(),
         args.trajectories.as_deref(),
         &approvals_dir,
-    );
+    )
+    .with_demo_key(&seed)
+    .map_err(|e| anyhow::anyhow!("demo approvals: {e}"))?;
     let cell_text = provider
         .cell_text()
         .map_err(|e| UsageError(e.to_string()))?;
@@ -301,16 +307,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let start = wall_clock_nanos();
     say!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
     say!(
-        "  DEMO APPROVAL: the shipped locks are approved for this run only, in {}",
+        "  DEMO APPROVAL: the shipped trajectories are re-locked and approved for this run only, in {},",
         approvals_dir.display()
     );
-    say!("  (a simulator-only sign-off; a real cell needs a safety engineer's `ergocell trajectories approve`)");
+    say!(
+        "  signed by a throwaway Ed25519 key made for this run ({}), the only key this run trusts",
+        ergocell::session::provider::DEMO_PRINCIPAL
+    );
+    say!("  (a simulator-only sign-off; a real cell trusts its engineers' keys in config/approvers/ and needs `ergocell trajectories approve`)");
+    let stamp = ergocell_robot::signing::rfc3339_utc(start.div_euclid(1_000_000_000))
+        .map_err(|e| anyhow::anyhow!(e))?;
     for class in TrajectoryClass::ALL {
         provider
-            .approve_for_demo(
-                class,
-                &format!("demo run at unix {}s", start / 1_000_000_000),
-            )
+            .approve_for_demo(class, &stamp)
             .map_err(|e| anyhow::anyhow!("{class}: {e}"))?;
     }
 

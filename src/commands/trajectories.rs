@@ -3,8 +3,17 @@
 //! ```text
 //! ergocell trajectories validate [--class c2] [--json]   plan + check, print the report; non-zero on rejection
 //! ergocell trajectories lock [--class c2]                write trajectories/locks/<class>.lock.toml
-//! ergocell trajectories approve --class c2 --by <name>   append a sign-off of the lock's hash to
+//! ergocell trajectories approve --class c2 --by <principal> --key ~/.ssh/id_ed25519
+//!                                                        sign off the lock's hash (SSH signature) in
 //!                                                        trajectories/approvals/<class>.toml
+//! ergocell trajectories approve --class c2 --by <principal> --message-out approval.txt
+//!   ssh-keygen -Y sign -f ~/.ssh/id_ed25519 -n ergocell-trajectory-approval approval.txt
+//! ergocell trajectories approve --class c2 --signed approval.txt   (reads approval.txt.sig)
+//!                                                        the same with a passphrase, an agent or a
+//!                                                        hardware key: ssh-keygen signs
+//! ergocell trajectories approval-message --class c2 --entry 0
+//!                                                        print what entry 0 signed, for
+//!                                                        `ssh-keygen -Y verify`
 //! ergocell trajectories verify [--class c2] [--allow-unapproved]
 //!                                                        lock hash, input hashes, limits, approvals agree,
 //!                                                        and the lock holds what validation produces now
@@ -18,9 +27,10 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context as _};
 use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
+use ergocell_robot::signing::{self, printable, TrustedSigners};
 use ergocell_robot::{
     plan_and_validate, CellConfig, InputHashes, PlanInputs, RobotModel, TrajectoryClass,
-    TrajectoryLayout, TrajectorySpec,
+    TrajectoryLayout, TrajectorySpec, TrustFiles,
 };
 
 use super::UsageError;
@@ -54,13 +64,41 @@ pub enum Sub {
         #[arg(long, value_parser = parse_class)]
         class: Option<TrajectoryClass>,
     },
-    /// Record a safety engineer's sign-off of the current lock's hash (after an integrity check).
+    /// Record a safety engineer's signed sign-off of the current lock's hash (after an integrity
+    /// check): with `--key`, or in two steps with `--message-out` and then `--signed`.
     Approve {
         #[arg(long, value_parser = parse_class)]
         class: TrajectoryClass,
-        /// The approver's name.
+        /// The approver's principal, exactly as config/approvers/allowed_signers lists it (with
+        /// `--key` or `--message-out`).
+        #[arg(long, required_unless_present = "signed")]
+        by: Option<String>,
+        /// Sign with this OpenSSH Ed25519 private key (not passphrase-protected; for one that is, or
+        /// an agent or hardware key, use `--message-out` and `ssh-keygen -Y sign`).
+        #[arg(long, conflicts_with_all = ["message_out", "signed"])]
+        key: Option<PathBuf>,
+        /// Write the message to sign to this new file (never overwritten) and stop: sign it with
+        /// `ssh-keygen -Y sign -f <key> -n ergocell-trajectory-approval <file>`, then `--signed <file>`.
+        #[arg(long, conflicts_with = "signed")]
+        message_out: Option<PathBuf>,
+        /// Append the approval of this message file, signed by `ssh-keygen` into `<file>.sig`.
+        #[arg(long, conflicts_with = "by")]
+        signed: Option<PathBuf>,
+        /// The signature file for `--signed` (default `<message>.sig`).
+        #[arg(long, requires = "signed")]
+        signature: Option<PathBuf>,
+    },
+    /// Print the exact message an approval entry signed (pipe it into `ssh-keygen -Y verify`), and
+    /// with `--signature-out` write its signature to a new file.
+    ApprovalMessage {
+        #[arg(long, value_parser = parse_class)]
+        class: TrajectoryClass,
+        /// 0-based entry in trajectories/approvals/<class>.toml.
         #[arg(long)]
-        by: String,
+        entry: usize,
+        /// Also write the entry's armored signature to this new file.
+        #[arg(long)]
+        signature_out: Option<PathBuf>,
     },
     /// Check that lock files, input hashes, limits and approvals agree; exits non-zero on any problem.
     Verify {
@@ -82,7 +120,38 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     match &args.command {
         Sub::Validate { class, json } => validate(&ctx, *class, *json),
         Sub::Lock { class } => lock_classes(&ctx, *class),
-        Sub::Approve { class, by } => approve(&ctx, *class, by),
+        Sub::Approve {
+            class,
+            by,
+            key,
+            message_out,
+            signed,
+            signature,
+        } => {
+            let how = match (key, message_out, signed) {
+                (Some(key), None, None) => ApproveHow::Key(key),
+                (None, Some(out), None) => ApproveHow::MessageOut(out),
+                (None, None, Some(message)) => ApproveHow::Signed {
+                    message,
+                    signature: signature
+                        .clone()
+                        .unwrap_or_else(|| with_suffix(message, ".sig")),
+                },
+                _ => {
+                    return Err(UsageError(
+                        "approve needs one of --key <private key>, --message-out <file> or --signed <file>"
+                            .to_owned(),
+                    )
+                    .into())
+                }
+            };
+            approve(&ctx, *class, by.as_deref(), how)
+        }
+        Sub::ApprovalMessage {
+            class,
+            entry,
+            signature_out,
+        } => approval_message(&ctx, *class, *entry, signature_out.as_deref()),
         Sub::Verify {
             class,
             allow_unapproved,
@@ -96,6 +165,9 @@ struct Context {
     cell: CellConfig,
     urdf_text: String,
     model: RobotModel,
+    /// The trusted approvers' files' texts (allowed signers, revoked keys) and their parse.
+    trust_texts: (String, String),
+    trusted: TrustedSigners,
 }
 
 impl Context {
@@ -112,11 +184,25 @@ impl Context {
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
                 .map_err(|e| UsageError(format!("{}: {e}", urdf_path.display())))?;
+        let dir = args.cell.parent().unwrap_or_else(|| Path::new("."));
+        let allowed_path = dir.join(signing::ALLOWED_SIGNERS);
+        let revoked_path = dir.join(signing::REVOKED_KEYS);
+        let allowed = read(&allowed_path)?;
+        let revoked = read(&revoked_path)?;
+        let trusted = TrustedSigners::parse(&allowed, &revoked).map_err(|e| {
+            UsageError(format!(
+                "{} / {}: {e}",
+                allowed_path.display(),
+                revoked_path.display()
+            ))
+        })?;
         Ok(Self {
             layout: TrajectoryLayout::new(&args.trajectories_dir),
             cell,
             urdf_text,
             model,
+            trust_texts: (allowed, revoked),
+            trusted,
         })
     }
 
@@ -138,6 +224,10 @@ impl Context {
             text.as_bytes(),
             self.urdf_text.as_bytes(),
             &self.cell,
+            TrustFiles {
+                allowed_signers: self.trust_texts.0.as_bytes(),
+                revoked_keys: self.trust_texts.1.as_bytes(),
+            },
             env!("CARGO_PKG_VERSION"),
         );
         Ok((spec, hashes))
@@ -221,7 +311,7 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
             path.display(),
             lock.lock_sha256
         );
-        println!("    review it, then: ergocell trajectories approve --class {class} --by <name>");
+        println!("    review it, then: ergocell trajectories approve --class {class} --by <principal> --key <ssh key>");
     }
     if failed.is_empty() {
         Ok(())
@@ -250,7 +340,31 @@ fn matches_validation(
     lock::check_matches_validation(lock, &validated).map_err(|e| e.to_string())
 }
 
-fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()> {
+/// How `approve` gets its signature.
+enum ApproveHow<'a> {
+    /// Sign here with this private key file.
+    Key(&'a Path),
+    /// Write the message to sign and stop.
+    MessageOut(&'a Path),
+    /// Append the message signed by `ssh-keygen`.
+    Signed {
+        message: &'a Path,
+        signature: PathBuf,
+    },
+}
+
+fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
+    let mut s = path.as_os_str().to_owned();
+    s.push(suffix);
+    PathBuf::from(s)
+}
+
+fn approve(
+    ctx: &Context,
+    class: TrajectoryClass,
+    by: Option<&str>,
+    how: ApproveHow<'_>,
+) -> anyhow::Result<()> {
     let (spec, current) = ctx.spec(class)?;
     let lock_path = ctx.layout.lock(class);
     let lock_text = read(&lock_path)
@@ -261,6 +375,7 @@ fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()
         current_inputs: &current,
         model: &ctx.model,
         approvals_toml: None,
+        trusted: &ctx.trusted,
     };
     let lock =
         lock::verify_integrity(&inputs).map_err(|f| anyhow::anyhow!("{f}\nrefusing to approve"))?;
@@ -273,15 +388,78 @@ fn approve(ctx: &Context, class: TrajectoryClass, by: &str) -> anyhow::Result<()
     } else {
         ApprovalsFile::default()
     };
-    let approval = file.approve(&lock, by, &now_rfc3339())?.clone();
+    let approval = match how {
+        ApproveHow::Key(key_path) => {
+            let by = by.unwrap_or_default();
+            let key = signing::private_key_from_openssh(&read(key_path)?)
+                .map_err(|e| UsageError(format!("{}: {e}", key_path.display())))?;
+            file.approve(&lock, by, &now_rfc3339()?, &ctx.trusted, &key)
+                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?
+                .clone()
+        }
+        ApproveHow::MessageOut(out) => {
+            let by = by.unwrap_or_default().trim();
+            signing::check_principal(by)?;
+            file.check_chain()?;
+            let previous = file.head_sha256();
+            let time = now_rfc3339()?;
+            let message = signing::approval_message(&signing::ApprovalClaim {
+                class: class.as_str(),
+                lock_sha256: &lock.lock_sha256,
+                approved_by: by,
+                approved_at_utc: &time,
+                previous_sha256: &previous,
+            });
+            write_new(out, &message)?;
+            println!(
+                "{class}: wrote the approval message to {} — sign it with\n  ssh-keygen -Y sign -f <your key> -n {} {}\nthen: ergocell trajectories approve --class {class} --signed {}",
+                out.display(),
+                signing::APPROVAL_NAMESPACE,
+                out.display(),
+                out.display()
+            );
+            return Ok(());
+        }
+        ApproveHow::Signed { message, signature } => {
+            let text = read(message)?;
+            let sig = read(&signature)?;
+            file.append_signed(&lock, &text, &sig, &ctx.trusted)
+                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?
+                .clone()
+        }
+    };
     write(&approvals_path, &file.to_toml()?)?;
     println!(
-        "{class}: approved by {} at {} — lock_sha256 {} — recorded in {}",
-        approval.approved_by,
+        "{class}: approved by {} at {} (signature verified) — lock_sha256 {} — recorded in {}",
+        printable(&approval.approved_by),
         approval.approved_at_utc,
         approval.lock_sha256,
         approvals_path.display()
     );
+    Ok(())
+}
+
+fn approval_message(
+    ctx: &Context,
+    class: TrajectoryClass,
+    entry: usize,
+    signature_out: Option<&Path>,
+) -> anyhow::Result<()> {
+    let path = ctx.layout.approvals(class);
+    let file = ApprovalsFile::from_toml_str(&read(&path)?)
+        .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+    let Some(a) = file.approval.get(entry) else {
+        return Err(UsageError(format!(
+            "{} has {} entries; there is no entry {entry}",
+            path.display(),
+            file.approval.len()
+        ))
+        .into());
+    };
+    if let Some(out) = signature_out {
+        write_new(out, &a.signature)?;
+    }
+    print!("{}", a.message());
     Ok(())
 }
 
@@ -310,6 +488,7 @@ fn verify(
             current_inputs: &current,
             model: &ctx.model,
             approvals_toml: approvals_text.as_deref(),
+            trusted: &ctx.trusted,
         };
         // Integrity holds: the samples must also be what validation produces from these inputs.
         if let Ok(lock) = lock::verify_integrity(&inputs) {
@@ -324,7 +503,13 @@ fn verify(
                 let names: Vec<String> = approved
                     .approvals()
                     .iter()
-                    .map(|a| format!("{} at {}", a.approved_by, a.approved_at_utc))
+                    .map(|a| {
+                        format!(
+                            "{} at {} (signature verified)",
+                            printable(&a.approved_by),
+                            printable(&a.approved_at_utc)
+                        )
+                    })
                     .collect();
                 println!(
                     "{class}: OK — lock_sha256 {} — approved by {}",
@@ -374,28 +559,23 @@ fn write(path: &Path, text: &str) -> anyhow::Result<()> {
     fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
 }
 
+/// Writes `text` to a file that must not exist yet (never overwrites: the user's data is kept).
+fn write_new(path: &Path, text: &str) -> anyhow::Result<()> {
+    use std::io::Write as _;
+    let mut f = fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .with_context(|| format!("cannot create {} (it must not exist yet)", path.display()))?;
+    f.write_all(text.as_bytes())
+        .with_context(|| format!("cannot write {}", path.display()))
+}
+
 /// Current UTC time as RFC 3339 (the binary is the only place that reads the clock).
 #[allow(clippy::disallowed_methods)]
-fn now_rfc3339() -> String {
+fn now_rfc3339() -> anyhow::Result<String> {
     let secs = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
-    let days = (secs / 86_400) as i64;
-    let rem = secs % 86_400;
-    // Civil from days (Howard Hinnant's algorithm).
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z.rem_euclid(146_097);
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    format!(
-        "{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z",
-        rem / 3600,
-        (rem % 3600) / 60,
-        rem % 60
-    )
+    Ok(signing::rfc3339_utc(i64::try_from(secs)?)?)
 }

@@ -4,10 +4,11 @@
 
 use std::path::{Path, PathBuf};
 
-use ergocell_robot::lock::{self, ApprovalsFile, VerifyInputs};
+use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
+use ergocell_robot::signing::{self, TrustedSigners};
 use ergocell_robot::{
-    ApprovedTrajectory, CellConfig, InputHashes, RobotModel, TrajectoryClass, TrajectoryLayout,
-    TrajectorySpec,
+    plan_and_validate, ApprovedTrajectory, CellConfig, InputHashes, PlanInputs, RobotModel,
+    TrajectoryClass, TrajectoryLayout, TrajectorySpec, TrustFiles,
 };
 
 use super::{ProviderError, TrajectoryProvider};
@@ -23,7 +24,21 @@ pub struct FileTrajectories {
     cell_shipped: bool,
     /// The trajectory files and locks are the shipped ones.
     trajectories_shipped: bool,
+    /// `ergocell demo` (and tests): a throwaway key trusted instead of the cell's approvers.
+    demo: Option<DemoSigner>,
 }
+
+/// The demo's throwaway approver: its key, the one-line trust list naming it, and the locks made
+/// under that trust list (a lock covers the trust files, so the shipped locks do not apply to it).
+#[derive(Debug, Clone)]
+struct DemoSigner {
+    key: signing::PrivateKey,
+    allowed_signers: String,
+    locks: Vec<(TrajectoryClass, String)>,
+}
+
+/// The principal of the demo's throwaway key.
+pub const DEMO_PRINCIPAL: &str = "ergocell-demo-key@simulator.invalid";
 
 impl FileTrajectories {
     /// `approvals_dir` holds `<class>.toml` approvals (normally `<trajectories_dir>/approvals`).
@@ -33,6 +48,7 @@ impl FileTrajectories {
             layout: TrajectoryLayout::new(trajectories_dir).with_approvals_dir(approvals_dir),
             cell_shipped: false,
             trajectories_shipped: false,
+            demo: None,
         }
     }
 
@@ -53,6 +69,7 @@ impl FileTrajectories {
             .with_approvals_dir(approvals_dir),
             cell_shipped: cell_path.is_none(),
             trajectories_shipped: trajectories_dir.is_none(),
+            demo: None,
         }
     }
 
@@ -95,8 +112,13 @@ impl FileTrajectories {
         }
     }
 
-    /// The lock file of `class`.
+    /// The lock file of `class` (in a demo, the lock made under the demo's trust list).
     pub fn lock_text(&self, class: TrajectoryClass) -> Result<String, ProviderError> {
+        if let Some(demo) = &self.demo {
+            if let Some((_, text)) = demo.locks.iter().find(|(c, _)| *c == class) {
+                return Ok(text.clone());
+            }
+        }
         self.read(&self.layout.lock(class))
     }
 
@@ -122,20 +144,119 @@ impl FileTrajectories {
             .map_err(|e| ProviderError(format!("robot geometry for the recording ({class}): {e}")))
     }
 
-    /// Reads the cell, the URDF and the class's trajectory file: the model and the current hashes.
-    fn current(&self, class: TrajectoryClass) -> Result<(RobotModel, InputHashes), ProviderError> {
+    /// The trusted approvers' files (`approvers/allowed_signers` and `approvers/revoked_keys` beside
+    /// the cell file; in a demo, the demo key's one-line list and no revocations).
+    fn trust_texts(&self) -> Result<(String, String), ProviderError> {
+        if let Some(demo) = &self.demo {
+            return Ok((demo.allowed_signers.clone(), String::new()));
+        }
+        let dir = self.cell_path.parent().unwrap_or_else(|| Path::new("."));
+        let read = |name: &str| {
+            self.read_cell(&dir.join(name)).map_err(|e| {
+                ProviderError(format!(
+                    "{e} (the cell's trusted approvers: config/approvers/ in the repository shows the format)"
+                ))
+            })
+        };
+        Ok((
+            read(signing::ALLOWED_SIGNERS)?,
+            read(signing::REVOKED_KEYS)?,
+        ))
+    }
+
+    /// Reads the cell, the URDF, the trusted approvers and the class's trajectory file: the model, the
+    /// current hashes, the trust list, the cell and the spec.
+    fn current(&self, class: TrajectoryClass) -> Result<Current, ProviderError> {
         let (_, cell, urdf_path, urdf_text) = self.cell_and_urdf()?;
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
                 .map_err(|e| ProviderError(format!("{}: {e}", urdf_path.display())))?;
-        let spec_text = self.read(&self.layout.spec(class))?;
+        let spec_path = self.layout.spec(class);
+        let spec_text = self.read(&spec_path)?;
+        let spec = TrajectorySpec::from_toml_str(&spec_text)
+            .map_err(|e| ProviderError(format!("{}: {e}", spec_path.display())))?;
+        let (allowed, revoked) = self.trust_texts()?;
+        let trusted = TrustedSigners::parse(&allowed, &revoked)
+            .map_err(|e| ProviderError(format!("trusted approvers: {e}")))?;
         let hashes = InputHashes::new(
             spec_text.as_bytes(),
             urdf_text.as_bytes(),
             &cell,
+            TrustFiles {
+                allowed_signers: allowed.as_bytes(),
+                revoked_keys: revoked.as_bytes(),
+            },
             env!("CARGO_PKG_VERSION"),
         );
-        Ok((model, hashes))
+        Ok(Current {
+            model,
+            hashes,
+            trusted,
+            cell,
+            spec,
+        })
+    }
+
+    /// For `ergocell demo` and tests: trust only a throwaway Ed25519 key made from `seed` (principal
+    /// [`DEMO_PRINCIPAL`]) instead of the cell's approvers, and lock every class under that trust list
+    /// in memory. Each demo lock is checked to hold exactly the samples of the lock on disk (or
+    /// shipped), so the demo runs the reviewed trajectory; only its trust inputs differ.
+    pub fn with_demo_key(mut self, seed: &[u8; 32]) -> Result<Self, ProviderError> {
+        let key = signing::key_from_seed(seed, "ergocell demo (throwaway key, simulator only)");
+        let public = signing::public_key_openssh(&key).map_err(|e| ProviderError(e.to_string()))?;
+        let allowed_signers = format!(
+            "{DEMO_PRINCIPAL} namespaces=\"{}\" {public}\n",
+            signing::APPROVAL_NAMESPACE
+        );
+        self.demo = Some(DemoSigner {
+            key,
+            allowed_signers,
+            locks: Vec::new(),
+        });
+        let mut locks = Vec::new();
+        for class in TrajectoryClass::ALL {
+            let c = self.current(class)?;
+            let locked = plan_and_validate(&PlanInputs {
+                model: &c.model,
+                cell: &c.cell,
+                spec: &c.spec,
+                hashes: &c.hashes,
+            })
+            .and_then(ergocell_robot::Validation::into_locked)
+            .map_err(|e| ProviderError(format!("{class}: demo lock: {e}")))?;
+            let reviewed = self.read(&self.layout.lock(class))?;
+            let reviewed = LockFile::from_toml_str(class, &reviewed)
+                .map_err(|e| ProviderError(format!("{class}: {e}")))?;
+            // The reviewed lock covers the cell's approvers files; everything else must be the same
+            // inputs, and the samples the same trajectory.
+            let mut expected = locked.inputs().clone();
+            expected
+                .allowed_signers_sha256
+                .clone_from(&reviewed.inputs.allowed_signers_sha256);
+            expected
+                .revoked_keys_sha256
+                .clone_from(&reviewed.inputs.revoked_keys_sha256);
+            if reviewed.inputs != expected {
+                return Err(ProviderError(format!(
+                    "{class}: the lock on disk was made from other inputs than the current trajectory file, URDF, cell or version: re-lock it"
+                )));
+            }
+            let mut reviewed = reviewed;
+            reviewed.inputs = locked.inputs().clone();
+            lock::check_matches_validation(&reviewed, &locked).map_err(|e| {
+                ProviderError(format!(
+                    "{class}: the lock on disk is not what validation produces now: {e}"
+                ))
+            })?;
+            let text = LockFile::from_locked(&locked)
+                .to_toml()
+                .map_err(|e| ProviderError(e.to_string()))?;
+            locks.push((class, text));
+        }
+        if let Some(demo) = &mut self.demo {
+            demo.locks = locks;
+        }
+        Ok(self)
     }
 
     /// Writes a **demo** approval of the class's current lock into the approvals folder (which must
@@ -153,23 +274,25 @@ impl FileTrajectories {
                 approvals_dir.display()
             )));
         }
-        let (model, hashes) = self.current(class)?;
-        let lock_text = self.read(&self.layout.lock(class))?;
+        let Some(demo) = &self.demo else {
+            return Err(ProviderError(
+                "a demo approval needs the demo key (FileTrajectories::with_demo_key)".to_owned(),
+            ));
+        };
+        let c = self.current(class)?;
+        let lock_text = self.lock_text(class)?;
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,
-            current_inputs: &hashes,
-            model: &model,
+            current_inputs: &c.hashes,
+            model: &c.model,
             approvals_toml: None,
+            trusted: &c.trusted,
         };
         let lock = lock::verify_integrity(&inputs).map_err(|f| ProviderError(f.to_string()))?;
         let mut file = ApprovalsFile::default();
-        file.approve(
-            &lock,
-            "DEMO APPROVAL (ergocell demo, simulator only; not a safety engineer's sign-off)",
-            stamp_utc,
-        )
-        .map_err(|e| ProviderError(e.to_string()))?;
+        file.approve(&lock, DEMO_PRINCIPAL, stamp_utc, &c.trusted, &demo.key)
+            .map_err(|e| ProviderError(e.to_string()))?;
         let text = file.to_toml().map_err(|e| ProviderError(e.to_string()))?;
         std::fs::create_dir_all(approvals_dir).map_err(|e| {
             ProviderError(format!("cannot create {}: {e}", approvals_dir.display()))
@@ -194,8 +317,13 @@ impl TrajectoryProvider for FileTrajectories {
     }
 
     fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
-        let (model, hashes) = self.current(class)?;
-        let lock_text = self.read(&self.layout.lock(class))?;
+        let Current {
+            model,
+            hashes,
+            trusted,
+            ..
+        } = self.current(class)?;
+        let lock_text = self.lock_text(class)?;
         let approvals = std::fs::read_to_string(self.layout.approvals(class)).ok();
         let inputs = VerifyInputs {
             class,
@@ -203,7 +331,17 @@ impl TrajectoryProvider for FileTrajectories {
             current_inputs: &hashes,
             model: &model,
             approvals_toml: approvals.as_deref(),
+            trusted: &trusted,
         };
         lock::verify(&inputs).map_err(|f| ProviderError(f.to_string()))
     }
+}
+
+/// What [`FileTrajectories::current`] read.
+struct Current {
+    model: RobotModel,
+    hashes: InputHashes,
+    trusted: TrustedSigners,
+    cell: CellConfig,
+    spec: TrajectorySpec,
 }

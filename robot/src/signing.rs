@@ -1,0 +1,484 @@
+//! Signed approvals: who may sign off a locked trajectory, and the exact bytes they sign.
+//!
+//! An approval is an OpenSSH signature (`SSHSIG`, Ed25519) over [`approval_message`], so an engineer
+//! signs with the SSH key they already hold (`ssh-keygen -Y sign`, an agent, a hardware key) and anyone
+//! can check an approval with `ssh-keygen -Y verify` and the cell's own trust file, without ergocell.
+//! The cryptography is the `ssh-key` crate's (RustCrypto); nothing here is a primitive of our own.
+//!
+//! The cell trusts the keys in two files beside its cell config, both covered by every lock
+//! ([`crate::InputHashes`]), so adding or revoking a key is a change that needs a re-lock and a review:
+//! - `approvers/allowed_signers` ([`ALLOWED_SIGNERS`]): OpenSSH's allowed-signers format
+//!   (`ssh-keygen(1)`, "ALLOWED SIGNERS"): `principals [options] ssh-ed25519 <base64> [comment]`.
+//!   Principals are exact names (no wildcards); the one option honoured is `namespaces="…"` (the key
+//!   then counts only if it lists [`APPROVAL_NAMESPACE`]); `cert-authority`, `valid-after` and
+//!   `valid-before` are refused rather than silently ignored. Only Ed25519 keys.
+//! - `approvers/revoked_keys` ([`REVOKED_KEYS`]): one OpenSSH public key per line, the plain-list form
+//!   that `ssh-keygen -Y verify -r` also reads. A listed key's approvals are refused, whatever the
+//!   allowed-signers file says.
+
+use std::fmt;
+
+use ssh_key::{HashAlg, LineEnding, PublicKey, SshSig};
+
+/// An SSH private key (re-exported from `ssh-key`, so callers need no second copy of the crate).
+pub use ssh_key::PrivateKey;
+
+use crate::RobotError;
+
+/// The SSHSIG namespace of an approval (`ssh-keygen -Y sign -n …`): a signature made for anything
+/// else (a git commit, a file) is never an approval.
+pub const APPROVAL_NAMESPACE: &str = "ergocell-trajectory-approval";
+
+/// The trust file, relative to the cell config's folder.
+pub const ALLOWED_SIGNERS: &str = "approvers/allowed_signers";
+
+/// The revocation list, relative to the cell config's folder.
+pub const REVOKED_KEYS: &str = "approvers/revoked_keys";
+
+/// First line of every approval message (its format version).
+const MESSAGE_HEADER: &str = "ergocell trajectory approval v1";
+
+/// The fields an approval signs, in the order they are written.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ApprovalClaim<'a> {
+    pub class: &'a str,
+    pub lock_sha256: &'a str,
+    pub approved_by: &'a str,
+    pub approved_at_utc: &'a str,
+    pub previous_sha256: &'a str,
+}
+
+/// The exact bytes an approval's signature covers: the class, the lock's hash, the approver's
+/// principal, the time and the previous entry's hash, one `key: value` line each after a version line.
+/// Editing any of them (or moving a signature to another lock, class or place in the chain) breaks it.
+pub fn approval_message(claim: &ApprovalClaim<'_>) -> String {
+    format!(
+        "{MESSAGE_HEADER}\nclass: {}\nlock_sha256: {}\napproved_by: {}\napproved_at_utc: {}\nprevious_sha256: {}\n",
+        claim.class, claim.lock_sha256, claim.approved_by, claim.approved_at_utc, claim.previous_sha256
+    )
+}
+
+/// Parses a message written by [`approval_message`] back into its fields (for the two-step flow, where
+/// the engineer signs the message file with `ssh-keygen` and hands back message and signature).
+pub fn parse_approval_message(text: &str) -> Result<[String; 5], RobotError> {
+    let bad = |reason: String| RobotError::Config {
+        reason: format!("not an approval message: {reason}"),
+    };
+    let mut lines = text.lines();
+    if lines.next() != Some(MESSAGE_HEADER) {
+        return Err(bad(format!("the first line is not `{MESSAGE_HEADER}`")));
+    }
+    let mut out: [String; 5] = Default::default();
+    for (slot, key) in out.iter_mut().zip([
+        "class",
+        "lock_sha256",
+        "approved_by",
+        "approved_at_utc",
+        "previous_sha256",
+    ]) {
+        let line = lines
+            .next()
+            .ok_or_else(|| bad(format!("no `{key}:` line")))?;
+        let value = line
+            .strip_prefix(key)
+            .and_then(|rest| rest.strip_prefix(": "))
+            .ok_or_else(|| bad(format!("expected `{key}: …`, found `{}`", printable(line))))?;
+        value.clone_into(slot);
+    }
+    if lines.next().is_some() {
+        return Err(bad("text after the last field".to_owned()));
+    }
+    if approval_message(&ApprovalClaim {
+        class: &out[0],
+        lock_sha256: &out[1],
+        approved_by: &out[2],
+        approved_at_utc: &out[3],
+        previous_sha256: &out[4],
+    }) != text
+    {
+        return Err(bad(
+            "not byte for byte what `approve --message-out` writes".to_owned()
+        ));
+    }
+    Ok(out)
+}
+
+/// `text` with every control character (newline, escape, …) and every non-ASCII whitespace escaped,
+/// for printing a name that came from a file: a name cannot forge an extra line or colour a terminal.
+pub fn printable(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() || (c.is_whitespace() && c != ' ') {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Checks that `principal` can be an approver's name: non-empty, no whitespace, no control
+/// characters, no comma or quote (the allowed-signers syntax), no wildcard.
+pub fn check_principal(principal: &str) -> Result<(), RobotError> {
+    let bad = |why: &str| RobotError::Config {
+        reason: format!("approver `{}` {why}", printable(principal)),
+    };
+    if principal.is_empty() {
+        return Err(bad("is empty"));
+    }
+    if principal
+        .chars()
+        .any(|c| c.is_control() || c.is_whitespace())
+    {
+        return Err(bad("contains whitespace or a control character"));
+    }
+    if principal.contains([',', '"', '*', '?', '!']) {
+        return Err(bad(
+            "contains one of , \" * ? ! (a principal is one exact name, as in allowed_signers)",
+        ));
+    }
+    Ok(())
+}
+
+/// One key the cell trusts, with the principals it may sign as.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TrustedKey {
+    pub principals: Vec<String>,
+    pub key: PublicKey,
+    /// 1-based line in the allowed-signers file.
+    pub line: usize,
+}
+
+/// The keys the cell trusts for approvals, and the revoked ones.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct TrustedSigners {
+    keys: Vec<TrustedKey>,
+    revoked: Vec<PublicKey>,
+}
+
+/// `SHA256:…` fingerprint, as `ssh-keygen -l` prints it.
+pub fn fingerprint(key: &PublicKey) -> String {
+    key.fingerprint(HashAlg::Sha256).to_string()
+}
+
+impl TrustedSigners {
+    /// Parses the allowed-signers file and the revocation list (see the module docs for what each
+    /// may hold). Any line it cannot honour exactly is an error naming the line: trust is never
+    /// guessed.
+    pub fn parse(allowed_signers: &str, revoked_keys: &str) -> Result<Self, RobotError> {
+        let mut keys = Vec::new();
+        for (i, raw) in allowed_signers.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            keys.push(parse_allowed_signer(line, i + 1)?);
+        }
+        let mut revoked = Vec::new();
+        for (i, raw) in revoked_keys.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let key = PublicKey::from_openssh(line).map_err(|e| RobotError::Config {
+                reason: format!(
+                    "{REVOKED_KEYS} line {}: not an OpenSSH public key ({e})",
+                    i + 1
+                ),
+            })?;
+            revoked.push(key);
+        }
+        Ok(Self { keys, revoked })
+    }
+
+    /// The trusted keys.
+    pub fn keys(&self) -> &[TrustedKey] {
+        &self.keys
+    }
+
+    /// Whether `key` is on the revocation list.
+    pub fn is_revoked(&self, key: &PublicKey) -> bool {
+        self.revoked.iter().any(|r| r.key_data() == key.key_data())
+    }
+
+    /// Signs `claim` with `key`, after checking that the key is trusted for the claim's principal and
+    /// not revoked (a signature the cell would refuse is never written). Returns the armored
+    /// signature (`-----BEGIN SSH SIGNATURE-----`).
+    pub fn sign(&self, claim: &ApprovalClaim<'_>, key: &PrivateKey) -> Result<String, RobotError> {
+        let public = key.public_key();
+        self.check_signer(claim.approved_by, public)?;
+        let message = approval_message(claim);
+        let sig = key
+            .sign(APPROVAL_NAMESPACE, HashAlg::Sha512, message.as_bytes())
+            .map_err(|e| RobotError::Config {
+                reason: format!("signing failed: {e}"),
+            })?;
+        sig.to_pem(LineEnding::LF).map_err(|e| RobotError::Config {
+            reason: format!("cannot armor the signature: {e}"),
+        })
+    }
+
+    /// Checks one approval: its time is RFC 3339 UTC, `signature` is an SSHSIG in the approval
+    /// namespace, by a key the allowed-signers file lists for `claim.approved_by`, not revoked, over
+    /// exactly [`approval_message`]`(claim)`. The error says which of these failed.
+    pub fn verify(&self, claim: &ApprovalClaim<'_>, signature: &str) -> Result<(), String> {
+        check_utc_time(claim.approved_at_utc)?;
+        let sig = SshSig::from_pem(signature.trim())
+            .map_err(|e| format!("the signature is not an SSH signature ({e})"))?;
+        if sig.namespace() != APPROVAL_NAMESPACE {
+            return Err(format!(
+                "the signature was made for namespace `{}`, not `{APPROVAL_NAMESPACE}`",
+                printable(sig.namespace())
+            ));
+        }
+        let public = PublicKey::from(sig.public_key().clone());
+        self.check_signer(claim.approved_by, &public)
+            .map_err(|e| e.to_string())?;
+        public
+            .verify(APPROVAL_NAMESPACE, approval_message(claim).as_bytes(), &sig)
+            .map_err(|_| {
+                "the signature does not match the entry (its class, lock hash, name, time or \
+                 previous hash was edited, or the signature was made for another entry)"
+                    .to_owned()
+            })
+    }
+
+    fn check_signer(&self, principal: &str, key: &PublicKey) -> Result<(), RobotError> {
+        check_principal(principal)?;
+        let fp = fingerprint(key);
+        if self.is_revoked(key) {
+            return Err(RobotError::Config {
+                reason: format!("key {fp} is revoked ({REVOKED_KEYS})"),
+            });
+        }
+        let listed = self
+            .keys
+            .iter()
+            .filter(|k| k.key.key_data() == key.key_data())
+            .collect::<Vec<_>>();
+        if listed.is_empty() {
+            return Err(RobotError::Config {
+                reason: format!(
+                    "key {fp} is not a trusted approver's key (not in {ALLOWED_SIGNERS})"
+                ),
+            });
+        }
+        if !listed
+            .iter()
+            .any(|k| k.principals.iter().any(|p| p == principal))
+        {
+            return Err(RobotError::Config {
+                reason: format!(
+                    "key {fp} is trusted for {}, not for `{}` ({ALLOWED_SIGNERS})",
+                    listed
+                        .iter()
+                        .flat_map(|k| k.principals.iter().map(|p| format!("`{p}`")))
+                        .collect::<Vec<_>>()
+                        .join(", "),
+                    printable(principal)
+                ),
+            });
+        }
+        Ok(())
+    }
+}
+
+impl fmt::Display for TrustedKey {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} ({}, line {})",
+            self.principals.join(","),
+            fingerprint(&self.key),
+            self.line
+        )
+    }
+}
+
+/// Checks `text` is an RFC 3339 time in UTC (`…Z` or `+00:00`).
+pub fn check_utc_time(text: &str) -> Result<(), String> {
+    let t = time::OffsetDateTime::parse(text, &time::format_description::well_known::Rfc3339)
+        .map_err(|e| {
+            format!(
+                "approved_at_utc `{}` is not an RFC 3339 time ({e})",
+                printable(text)
+            )
+        })?;
+    if !t.offset().is_utc() {
+        return Err(format!(
+            "approved_at_utc `{}` is not in UTC",
+            printable(text)
+        ));
+    }
+    Ok(())
+}
+
+/// Splits an allowed-signers line into fields on whitespace, keeping double-quoted runs whole.
+fn fields(line: &str) -> Result<Vec<&str>, String> {
+    let mut out = Vec::new();
+    let mut start = None;
+    let mut quoted = false;
+    for (i, c) in line.char_indices() {
+        match (c, quoted) {
+            ('"', _) => {
+                quoted = !quoted;
+                start.get_or_insert(i);
+            }
+            (c, false) if c.is_whitespace() => {
+                if let Some(s) = start.take() {
+                    out.push(&line[s..i]);
+                }
+            }
+            _ => {
+                start.get_or_insert(i);
+            }
+        }
+    }
+    if quoted {
+        return Err("unterminated quote".to_owned());
+    }
+    if let Some(s) = start {
+        out.push(&line[s..]);
+    }
+    Ok(out)
+}
+
+/// Splits an options field on the commas outside double quotes (`namespaces="a,b",cert-authority`).
+fn split_options(options: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    let mut quoted = false;
+    for (i, c) in options.char_indices() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => {
+                out.push(&options[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    out.push(&options[start..]);
+    out
+}
+
+fn parse_allowed_signer(line: &str, number: usize) -> Result<TrustedKey, RobotError> {
+    let bad = |reason: String| RobotError::Config {
+        reason: format!("{ALLOWED_SIGNERS} line {number}: {reason}"),
+    };
+    let f = fields(line).map_err(bad)?;
+    let Some((principals, rest)) = f.split_first() else {
+        return Err(bad("empty".to_owned()));
+    };
+    let (options, rest) = match rest.first() {
+        Some(t) if !t.starts_with("ssh-") && !t.starts_with("ecdsa-") && !t.starts_with("sk-") => {
+            (Some(*t), &rest[1..])
+        }
+        _ => (None, rest),
+    };
+    let [keytype, base64, ..] = rest else {
+        return Err(bad(
+            "expected `principals [options] keytype base64-key [comment]`".to_owned(),
+        ));
+    };
+    if *keytype != "ssh-ed25519" {
+        return Err(bad(format!(
+            "key type `{}`: only ssh-ed25519 keys may approve",
+            printable(keytype)
+        )));
+    }
+    if let Some(options) = options {
+        for option in split_options(options) {
+            let (name, value) = option.split_once('=').unwrap_or((option, ""));
+            match name.to_ascii_lowercase().as_str() {
+                "namespaces" => {
+                    let list = value.trim_matches('"');
+                    if !list.split(',').any(|n| n == APPROVAL_NAMESPACE) {
+                        return Err(bad(format!(
+                            "namespaces=\"{}\" does not list `{APPROVAL_NAMESPACE}`: this key may not approve",
+                            printable(list)
+                        )));
+                    }
+                }
+                other => {
+                    return Err(bad(format!(
+                        "option `{}` is not supported by ergocell (only namespaces=\"…\"); \
+                         remove it or use the revocation list to retire a key",
+                        printable(other)
+                    )))
+                }
+            }
+        }
+    }
+    let principals: Vec<String> = principals.split(',').map(str::to_owned).collect();
+    for p in &principals {
+        check_principal(p).map_err(|e| bad(e.to_string()))?;
+    }
+    let key = PublicKey::from_openssh(&format!("{keytype} {base64}"))
+        .map_err(|e| bad(format!("not an OpenSSH public key ({e})")))?;
+    Ok(TrustedKey {
+        principals,
+        key,
+        line: number,
+    })
+}
+
+/// An Ed25519 SSH key from a 32-byte seed (the demo's throwaway key, tests' fixed keys).
+pub fn key_from_seed(seed: &[u8; 32], comment: &str) -> PrivateKey {
+    let mut key = PrivateKey::from(ssh_key::private::Ed25519Keypair::from_seed(seed));
+    key.set_comment(comment);
+    key
+}
+
+/// Parses an OpenSSH private key (`-----BEGIN OPENSSH PRIVATE KEY-----`). A passphrase-protected key
+/// is refused with the way round it: sign the approval message with `ssh-keygen` (which asks for the
+/// passphrase, or uses the agent) and hand the signature back.
+pub fn private_key_from_openssh(text: &str) -> Result<PrivateKey, RobotError> {
+    let key = PrivateKey::from_openssh(text).map_err(|e| RobotError::Config {
+        reason: format!("not an OpenSSH private key ({e})"),
+    })?;
+    if key.is_encrypted() {
+        return Err(RobotError::Config {
+            reason:
+                "the key is passphrase-protected: write the message with `approve --message-out`, \
+                     sign it with `ssh-keygen -Y sign`, then `approve --signed`"
+                    .to_owned(),
+        });
+    }
+    if key.algorithm() != ssh_key::Algorithm::Ed25519 {
+        return Err(RobotError::Config {
+            reason: format!("only ssh-ed25519 keys may approve, not {}", key.algorithm()),
+        });
+    }
+    Ok(key)
+}
+
+/// The key's public half as one OpenSSH line (`ssh-ed25519 AAAA… comment`).
+pub fn public_key_openssh(key: &PrivateKey) -> Result<String, RobotError> {
+    key.public_key()
+        .to_openssh()
+        .map_err(|e| RobotError::Config {
+            reason: format!("cannot encode the public key: {e}"),
+        })
+}
+
+/// The key's private half in OpenSSH's format (for writing a generated key to a file).
+pub fn private_key_openssh(key: &PrivateKey) -> Result<String, RobotError> {
+    key.to_openssh(LineEnding::LF)
+        .map(|s| s.to_string())
+        .map_err(|e| RobotError::Config {
+            reason: format!("cannot encode the private key: {e}"),
+        })
+}
+
+/// RFC 3339 UTC of a Unix time in whole seconds (`2026-12-02T02:30:00Z`), as approvals record it.
+pub fn rfc3339_utc(unix_secs: i64) -> Result<String, RobotError> {
+    let t =
+        time::OffsetDateTime::from_unix_timestamp(unix_secs).map_err(|e| RobotError::Config {
+            reason: format!("unix time {unix_secs} is out of range ({e})"),
+        })?;
+    t.format(&time::format_description::well_known::Rfc3339)
+        .map_err(|e| RobotError::Config {
+            reason: format!("cannot format unix time {unix_secs}: {e}"),
+        })
+}

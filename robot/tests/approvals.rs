@@ -1,0 +1,308 @@
+//! Signed approvals (issue 16): each way of forging or moving an approval is refused with a message
+//! that names it; a valid one verifies. Keys come from fixed seeds.
+
+// Test helpers panic on purpose: a panic is the failure report.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+mod common;
+
+use ergocell_robot::lock::{self, Approval, ApprovalsFile, LockFile, VerifyInputs};
+use ergocell_robot::signing::{self, ApprovalClaim, TrustedSigners};
+use ergocell_robot::{plan_and_validate, InputHashes, PlanInputs, TrajectoryClass};
+
+const CLASS: TrajectoryClass = TrajectoryClass::C2;
+
+struct Fixture {
+    s: common::Shipped,
+    t: common::Approvers,
+    lock: LockFile,
+    lock_toml: String,
+    current: InputHashes,
+}
+
+fn fixture() -> Fixture {
+    let s = common::shipped();
+    let t = common::signers();
+    let text = common::spec_text(CLASS);
+    let current = common::hashes_with_trust(&s, &text, &t);
+    let spec = common::spec(CLASS);
+    let locked = plan_and_validate(&PlanInputs {
+        model: &s.model,
+        cell: &s.cell,
+        spec: &spec,
+        hashes: &current,
+    })
+    .unwrap()
+    .into_locked()
+    .unwrap();
+    let lock = LockFile::from_locked(&locked);
+    let lock_toml = lock.to_toml().unwrap();
+    Fixture {
+        s,
+        t,
+        lock,
+        lock_toml,
+        current,
+    }
+}
+
+fn verify(f: &Fixture, approvals: &str, trusted: &TrustedSigners) -> Result<(), String> {
+    lock::verify(&VerifyInputs {
+        class: CLASS,
+        lock_toml: &f.lock_toml,
+        current_inputs: &f.current,
+        model: &f.s.model,
+        approvals_toml: Some(approvals),
+        trusted,
+    })
+    .map(|_| ())
+    .map_err(|e| e.to_string())
+}
+
+fn approved(f: &Fixture) -> ApprovalsFile {
+    let mut file = ApprovalsFile::default();
+    file.approve(
+        &f.lock,
+        common::ALICE,
+        "2026-12-01T10:00:00Z",
+        &f.t.trusted,
+        &f.t.alice,
+    )
+    .unwrap();
+    file
+}
+
+/// Re-chains `entries` (each `previous_sha256` the hash of the one before), as a forger with no key
+/// but a text editor and `sha256sum` could.
+fn rechain(mut entries: Vec<Approval>) -> String {
+    let mut previous = "0".repeat(64);
+    for e in &mut entries {
+        e.previous_sha256.clone_from(&previous);
+        previous = e.entry_sha256();
+    }
+    ApprovalsFile { approval: entries }.to_toml().unwrap()
+}
+
+#[test]
+fn a_valid_signed_approval_verifies_and_its_message_names_every_signed_field() {
+    let f = fixture();
+    let file = approved(&f);
+    verify(&f, &file.to_toml().unwrap(), &f.t.trusted).unwrap();
+    let m = file.approval[0].message();
+    for field in [
+        "class: c2",
+        &format!("lock_sha256: {}", f.lock.lock_sha256),
+        "approved_by: alice@plant.example",
+        "approved_at_utc: 2026-12-01T10:00:00Z",
+        &format!("previous_sha256: {}", "0".repeat(64)),
+    ] {
+        assert!(m.contains(field), "{m}");
+    }
+    assert_eq!(
+        signing::parse_approval_message(&m).unwrap()[2],
+        common::ALICE
+    );
+}
+
+#[test]
+fn an_untrusted_key_cannot_approve_nor_sign_as_a_trusted_name() {
+    let f = fixture();
+    let err = ApprovalsFile::default()
+        .approve(
+            &f.lock,
+            common::ALICE,
+            "2026-12-01T10:00:00Z",
+            &f.t.trusted,
+            &f.t.mallory,
+        )
+        .unwrap_err();
+    assert!(
+        err.to_string().contains("is not a trusted approver's key"),
+        "{err}"
+    );
+    // Mallory signs with her own key under a trust list that includes her, then the entry is
+    // checked against the cell's: refused, naming her key's fingerprint.
+    let with_mallory = TrustedSigners::parse(
+        &format!(
+            "{}{}",
+            f.t.allowed_signers,
+            common::allowed_line(common::ALICE, &f.t.mallory)
+        ),
+        "",
+    )
+    .unwrap();
+    let mut file = ApprovalsFile::default();
+    file.approve(
+        &f.lock,
+        common::ALICE,
+        "2026-12-01T10:00:00Z",
+        &with_mallory,
+        &f.t.mallory,
+    )
+    .unwrap();
+    let err = verify(&f, &file.to_toml().unwrap(), &f.t.trusted).unwrap_err();
+    let fp = signing::fingerprint(f.t.mallory.public_key());
+    assert!(
+        err.contains("is not a trusted approver's key") && err.contains(&fp),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_signature_over_another_locks_hash_is_refused() {
+    let f = fixture();
+    // Alice's genuine approval of another lock (another hash), moved onto this lock.
+    let mut other = f.lock.clone();
+    other.lock_sha256 = "ab".repeat(32);
+    let mut file = ApprovalsFile::default();
+    file.approve(
+        &other,
+        common::ALICE,
+        "2026-12-01T10:00:00Z",
+        &f.t.trusted,
+        &f.t.alice,
+    )
+    .unwrap();
+    let mut moved = file.approval.clone();
+    moved[0].lock_sha256.clone_from(&f.lock.lock_sha256);
+    let err = verify(&f, &rechain(moved), &f.t.trusted).unwrap_err();
+    assert!(
+        err.contains("the signature does not match the entry"),
+        "{err}"
+    );
+    // Left as it was, it approves the other hash only.
+    let err = verify(&f, &file.to_toml().unwrap(), &f.t.trusted).unwrap_err();
+    assert!(err.contains("none for this hash"), "{err}");
+}
+
+#[test]
+fn edited_and_removed_entries_are_refused() {
+    let f = fixture();
+    let mut file = approved(&f);
+    file.approve(
+        &f.lock,
+        common::BOB,
+        "2026-12-01T11:00:00Z",
+        &f.t.trusted,
+        &f.t.bob,
+    )
+    .unwrap();
+    verify(&f, &file.to_toml().unwrap(), &f.t.trusted).unwrap();
+    // The last entry edited and the chain recomputed: its signature no longer matches.
+    let mut edited = file.approval.clone();
+    edited[1].approved_at_utc = "2026-12-01T12:00:00Z".to_owned();
+    let err = verify(&f, &rechain(edited), &f.t.trusted).unwrap_err();
+    assert!(
+        err.contains("entry 1") && err.contains("does not match"),
+        "{err}"
+    );
+    // The first entry removed: the chain breaks at the next.
+    let removed = ApprovalsFile {
+        approval: file.approval[1..].to_vec(),
+    };
+    let err = verify(&f, &removed.to_toml().unwrap(), &f.t.trusted).unwrap_err();
+    assert!(err.contains("hash chain broken at entry 0"), "{err}");
+    // Both removed: not approved.
+    let err = verify(&f, "", &f.t.trusted).unwrap_err();
+    assert!(err.contains("no approval for lock sha256"), "{err}");
+}
+
+#[test]
+fn a_revoked_key_and_a_foreign_namespace_are_refused() {
+    let f = fixture();
+    let file = approved(&f).to_toml().unwrap();
+    let alice_pub = signing::public_key_openssh(&f.t.alice).unwrap();
+    let revoked = TrustedSigners::parse(&f.t.allowed_signers, &alice_pub).unwrap();
+    let err = verify(&f, &file, &revoked).unwrap_err();
+    assert!(err.contains("is revoked"), "{err}");
+
+    // A genuine SSH signature by alice over the same bytes, but made for git (`-n git`).
+    let mut entries = approved(&f).approval;
+    let sig =
+        f.t.alice
+            .sign(
+                "git",
+                ssh_key::HashAlg::Sha512,
+                entries[0].message().as_bytes(),
+            )
+            .unwrap()
+            .to_pem(ssh_key::LineEnding::LF)
+            .unwrap();
+    entries[0].signature = sig;
+    let err = verify(&f, &rechain(entries), &f.t.trusted).unwrap_err();
+    assert!(err.contains("namespace `git`"), "{err}");
+}
+
+#[test]
+fn a_time_that_is_not_rfc3339_utc_is_refused_at_approve_and_at_verify() {
+    let f = fixture();
+    let err = ApprovalsFile::default()
+        .approve(
+            &f.lock,
+            common::ALICE,
+            "not a time at all",
+            &f.t.trusted,
+            &f.t.alice,
+        )
+        .unwrap_err();
+    assert!(err.to_string().contains("not an RFC 3339 time"), "{err}");
+    let claim = ApprovalClaim {
+        class: "c2",
+        lock_sha256: &f.lock.lock_sha256,
+        approved_by: common::ALICE,
+        approved_at_utc: "2026-12-01T10:00:00+01:00",
+        previous_sha256: &"0".repeat(64),
+    };
+    let sig = f.t.trusted.sign(&claim, &f.t.alice).unwrap();
+    assert!(f
+        .t
+        .trusted
+        .verify(&claim, &sig)
+        .unwrap_err()
+        .contains("not in UTC"));
+}
+
+#[test]
+fn the_trust_file_refuses_what_it_cannot_honour_exactly() {
+    let t = common::signers();
+    let line = common::allowed_line(common::ALICE, &t.alice);
+    for (edit, expect) in [
+        (
+            line.replace(common::ALICE, "*@plant.example"),
+            "contains one of",
+        ),
+        (
+            line.replace("namespaces=", "cert-authority,namespaces="),
+            "option `cert-authority`",
+        ),
+        (
+            line.replace(signing::APPROVAL_NAMESPACE, "git"),
+            "does not list",
+        ),
+        (line.replace("ssh-ed25519", "ssh-rsa"), "only ssh-ed25519"),
+        (line.replace("AAAA", "!!!!"), "not an OpenSSH public key"),
+    ] {
+        let err = TrustedSigners::parse(&edit, "").unwrap_err();
+        assert!(err.to_string().contains(expect), "{edit}: {err}");
+    }
+    // Two principals on one key, and a quoted namespace list with several entries, are honoured.
+    let two = line
+        .replace(common::ALICE, "alice@plant.example,a.smith@plant.example")
+        .replace(
+            &format!("\"{}\"", signing::APPROVAL_NAMESPACE),
+            &format!("\"git,{}\"", signing::APPROVAL_NAMESPACE),
+        );
+    let parsed = TrustedSigners::parse(&two, "").unwrap();
+    assert_eq!(parsed.keys()[0].principals.len(), 2);
+    assert_eq!(
+        signing::printable("Alice\nc3: OK\u{1b}[31m"),
+        "Alice\\nc3: OK\\u{1b}[31m"
+    );
+}
+
+#[test]
+fn the_shipped_trust_file_trusts_no_one_and_parses() {
+    let (allowed, revoked) = common::shipped_trust();
+    let t = TrustedSigners::parse(&allowed, &revoked).unwrap();
+    assert!(t.keys().is_empty());
+}
