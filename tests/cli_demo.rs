@@ -37,7 +37,8 @@ fn demo_runs_a_whole_session_and_records_it() {
     for expected in [
         "DEMO APPROVAL",
         "→ class c2",
-        &format!("locked: sha256 {sha}"),
+        &format!("= the shipped lock {sha}, same samples"),
+        "locked: sha256 ",
         "robot ← HOLD",
         "state held → working",
         "change to c3 refused",

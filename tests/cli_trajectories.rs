@@ -348,9 +348,20 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
     let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 1, "{out}");
     assert!(
-        out.contains("refused: the signature is not an SSH signature")
-            && out.contains("Dr.\\nc3: OK")
+        out.contains("refused: invalid configuration: approver `Dr.\\nc3: OK` contains whitespace")
             && !out.contains("\nc3: OK"),
+        "{out}"
+    );
+    // The same with a well-formed name: the signature is what fails.
+    let text = std::fs::read_to_string(&approvals).unwrap();
+    std::fs::write(
+        &approvals,
+        text.replace("Dr.\\nc3: OK", "dr.chief@plant.example"),
+    )
+    .unwrap();
+    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        code == 1 && out.contains("refused: the signature is not an SSH signature"),
         "{out}"
     );
     std::fs::remove_file(&approvals).unwrap();

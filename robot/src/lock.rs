@@ -176,8 +176,12 @@ impl LockFile {
             class: class.to_string(),
             reason,
         };
-        let lock: Self =
-            toml::from_str(text).map_err(|e| corrupt(format!("does not parse: {e}")))?;
+        let lock: Self = toml::from_str(text).map_err(|e| {
+            corrupt(format!(
+                "does not parse: {}",
+                signing::printable(&e.to_string())
+            ))
+        })?;
         if lock.format != LOCK_FORMAT {
             return Err(corrupt(format!(
                 "format `{}`, expected `{LOCK_FORMAT}`",
@@ -252,7 +256,10 @@ pub struct ApprovalsFile {
 impl ApprovalsFile {
     pub fn from_toml_str(text: &str) -> Result<Self, RobotError> {
         toml::from_str(text).map_err(|e| RobotError::Config {
-            reason: format!("approvals file does not parse: {e}"),
+            reason: format!(
+                "approvals file does not parse: {}",
+                signing::printable(&e.to_string())
+            ),
         })
     }
 

@@ -103,18 +103,27 @@ pub fn parse_approval_message(text: &str) -> Result<[String; 5], RobotError> {
     Ok(out)
 }
 
-/// `text` with every control character (newline, escape, …) and every non-ASCII whitespace escaped,
-/// for printing a name that came from a file: a name cannot forge an extra line or colour a terminal.
+/// `text` with everything but printable ASCII and the space escaped (`\n`, `\u{1b}`, `\u{202e}`, …),
+/// for printing what came from a file: it cannot forge an extra line, move the cursor, colour a
+/// terminal or reorder the text around it.
 pub fn printable(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
-        if c.is_control() || (c.is_whitespace() && c != ' ') {
-            out.extend(c.escape_default());
-        } else {
+        if c == ' ' || c.is_ascii_graphic() {
             out.push(c);
+        } else {
+            out.extend(c.escape_default());
         }
     }
     out
+}
+
+/// Whether `text` is a SHA-256 in lowercase hex, as every hash in a lock or approval is written.
+pub fn is_sha256_hex(text: &str) -> bool {
+    text.len() == 64
+        && text
+            .bytes()
+            .all(|b| b.is_ascii_digit() || (b'a'..=b'f').contains(&b))
 }
 
 /// Checks that `principal` can be an approver's name: non-empty, no whitespace, no control
@@ -126,11 +135,10 @@ pub fn check_principal(principal: &str) -> Result<(), RobotError> {
     if principal.is_empty() {
         return Err(bad("is empty"));
     }
-    if principal
-        .chars()
-        .any(|c| c.is_control() || c.is_whitespace())
-    {
-        return Err(bad("contains whitespace or a control character"));
+    if principal.chars().any(|c| !c.is_ascii_graphic()) {
+        return Err(bad(
+            "contains whitespace, a control character or a non-ASCII character",
+        ));
     }
     if principal.contains([',', '"', '*', '?', '!']) {
         return Err(bad(
@@ -222,7 +230,7 @@ impl TrustedSigners {
     /// namespace, by a key the allowed-signers file lists for `claim.approved_by`, not revoked, over
     /// exactly [`approval_message`]`(claim)`. The error says which of these failed.
     pub fn verify(&self, claim: &ApprovalClaim<'_>, signature: &str) -> Result<(), String> {
-        check_utc_time(claim.approved_at_utc)?;
+        check_claim(claim)?;
         let sig = SshSig::from_pem(signature.trim())
             .map_err(|e| format!("the signature is not an SSH signature ({e})"))?;
         if sig.namespace() != APPROVAL_NAMESPACE {
@@ -310,37 +318,53 @@ pub fn check_utc_time(text: &str) -> Result<(), String> {
             printable(text)
         ));
     }
+    if rfc3339_utc(t.unix_timestamp()).ok().as_deref() != Some(text) {
+        return Err(format!(
+            "approved_at_utc `{}` is not written as YYYY-MM-DDTHH:MM:SSZ",
+            printable(text)
+        ));
+    }
     Ok(())
 }
 
-/// Splits an allowed-signers line into fields on whitespace, keeping double-quoted runs whole.
-fn fields(line: &str) -> Result<Vec<&str>, String> {
-    let mut out = Vec::new();
-    let mut start = None;
+/// Checks the fields of a claim read from a file before they are shown or trusted: the principal,
+/// the time, and both hashes as lowercase hex.
+pub fn check_claim(claim: &ApprovalClaim<'_>) -> Result<(), String> {
+    check_principal(claim.approved_by).map_err(|e| e.to_string())?;
+    check_utc_time(claim.approved_at_utc)?;
+    for (name, value) in [
+        ("lock_sha256", claim.lock_sha256),
+        ("previous_sha256", claim.previous_sha256),
+    ] {
+        if !is_sha256_hex(value) {
+            return Err(format!(
+                "{name} `{}` is not a SHA-256 in lowercase hex",
+                printable(value)
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The next field of an allowed-signers line (split on spaces and tabs, as OpenSSH does, keeping
+/// double-quoted runs whole) and the rest of the line after it.
+fn next_field(line: &str) -> Result<Option<(&str, &str)>, String> {
+    let line = line.trim_start_matches([' ', '\t']);
+    if line.is_empty() {
+        return Ok(None);
+    }
     let mut quoted = false;
     for (i, c) in line.char_indices() {
-        match (c, quoted) {
-            ('"', _) => {
-                quoted = !quoted;
-                start.get_or_insert(i);
-            }
-            (c, false) if c.is_whitespace() => {
-                if let Some(s) = start.take() {
-                    out.push(&line[s..i]);
-                }
-            }
-            _ => {
-                start.get_or_insert(i);
-            }
+        match c {
+            '"' => quoted = !quoted,
+            ' ' | '\t' if !quoted => return Ok(Some((&line[..i], &line[i..]))),
+            _ => {}
         }
     }
     if quoted {
         return Err("unterminated quote".to_owned());
     }
-    if let Some(s) = start {
-        out.push(&line[s..]);
-    }
-    Ok(out)
+    Ok(Some((line, "")))
 }
 
 /// Splits an options field on the commas outside double quotes (`namespaces="a,b",cert-authority`).
@@ -366,22 +390,20 @@ fn parse_allowed_signer(line: &str, number: usize) -> Result<TrustedKey, RobotEr
     let bad = |reason: String| RobotError::Config {
         reason: format!("{ALLOWED_SIGNERS} line {number}: {reason}"),
     };
-    let f = fields(line).map_err(bad)?;
-    let Some((principals, rest)) = f.split_first() else {
-        return Err(bad("empty".to_owned()));
+    let shape = || bad("expected `principals [options] keytype base64-key [comment]`".to_owned());
+    let (principals, rest) = next_field(line).map_err(bad)?.ok_or_else(shape)?;
+    let (second, rest) = next_field(rest).map_err(bad)?.ok_or_else(shape)?;
+    let is_keytype =
+        |t: &str| t.starts_with("ssh-") || t.starts_with("ecdsa-") || t.starts_with("sk-");
+    let (options, keytype, rest) = if is_keytype(second) {
+        (None, second, rest)
+    } else {
+        let (keytype, rest) = next_field(rest).map_err(bad)?.ok_or_else(shape)?;
+        (Some(second), keytype, rest)
     };
-    let (options, rest) = match rest.first() {
-        Some(t) if !t.starts_with("ssh-") && !t.starts_with("ecdsa-") && !t.starts_with("sk-") => {
-            (Some(*t), &rest[1..])
-        }
-        _ => (None, rest),
-    };
-    let [keytype, base64, ..] = rest else {
-        return Err(bad(
-            "expected `principals [options] keytype base64-key [comment]`".to_owned(),
-        ));
-    };
-    if *keytype != "ssh-ed25519" {
+    // The key; the rest of the line is its comment, whatever it holds.
+    let (base64, _comment) = next_field(rest).map_err(bad)?.ok_or_else(shape)?;
+    if keytype != "ssh-ed25519" {
         return Err(bad(format!(
             "key type `{}`: only ssh-ed25519 keys may approve",
             printable(keytype)
@@ -393,6 +415,12 @@ fn parse_allowed_signer(line: &str, number: usize) -> Result<TrustedKey, RobotEr
             match name.to_ascii_lowercase().as_str() {
                 "namespaces" => {
                     let list = value.trim_matches('"');
+                    if list.contains(['!', '*', '?']) {
+                        return Err(bad(format!(
+                            "namespaces=\"{}\": patterns are not supported, list the namespaces exactly",
+                            printable(list)
+                        )));
+                    }
                     if !list.split(',').any(|n| n == APPROVAL_NAMESPACE) {
                         return Err(bad(format!(
                             "namespaces=\"{}\" does not list `{APPROVAL_NAMESPACE}`: this key may not approve",
@@ -421,6 +449,17 @@ fn parse_allowed_signer(line: &str, number: usize) -> Result<TrustedKey, RobotEr
         key,
         line: number,
     })
+}
+
+/// A 32-byte key seed derived from a label and a number (SHA-256 of both): the demo's key from its
+/// `--seed`, so the same seed gives the same demo lock hashes. Anyone can derive it again, so such a key
+/// proves nothing outside the run that trusts it.
+pub fn derived_seed(label: &str, n: u64) -> [u8; 32] {
+    use sha2::Digest as _;
+    let mut h = sha2::Sha256::new();
+    h.update(label.as_bytes());
+    h.update(n.to_le_bytes());
+    h.finalize().into()
 }
 
 /// An Ed25519 SSH key from a 32-byte seed (the demo's throwaway key, tests' fixed keys).

@@ -260,6 +260,18 @@ fn a_time_that_is_not_rfc3339_utc_is_refused_at_approve_and_at_verify() {
         .verify(&claim, &sig)
         .unwrap_err()
         .contains("not in UTC"));
+    // One instant, one spelling: RFC 3339's other forms (a newline or `t` for the `T`, fractions,
+    // `+00:00`) are refused, so no time carries a line break into a message or a terminal.
+    for other in [
+        "2026-12-01\n10:00:00Z",
+        "2026-12-01t10:00:00z",
+        "2026-12-01T10:00:00.5Z",
+        "2026-12-01T10:00:00+00:00",
+    ] {
+        let e = signing::check_utc_time(other).unwrap_err();
+        assert!(!e.contains('\n'), "{e}");
+    }
+    signing::check_utc_time("2026-12-01T10:00:00Z").unwrap();
 }
 
 #[test]
@@ -281,6 +293,17 @@ fn the_trust_file_refuses_what_it_cannot_honour_exactly() {
         ),
         (line.replace("ssh-ed25519", "ssh-rsa"), "only ssh-ed25519"),
         (line.replace("AAAA", "!!!!"), "not an OpenSSH public key"),
+        (
+            line.replace(
+                &format!("\"{}\"", signing::APPROVAL_NAMESPACE),
+                &format!("\"!{0},{0}\"", signing::APPROVAL_NAMESPACE),
+            ),
+            "patterns are not supported",
+        ),
+        (
+            line.replace(common::ALICE, "j\u{fc}rgen@plant.example"),
+            "non-ASCII",
+        ),
     ] {
         let err = TrustedSigners::parse(&edit, "").unwrap_err();
         assert!(err.to_string().contains(expect), "{edit}: {err}");
@@ -294,9 +317,15 @@ fn the_trust_file_refuses_what_it_cannot_honour_exactly() {
         );
     let parsed = TrustedSigners::parse(&two, "").unwrap();
     assert_eq!(parsed.keys()[0].principals.len(), 2);
+    // Tabs separate fields as spaces do; the comment may hold anything, a quote included.
+    let tabbed = format!(
+        "{}\tcomment with a \" quote",
+        line.trim_end().replacen(' ', "\t", 1)
+    );
+    assert_eq!(TrustedSigners::parse(&tabbed, "").unwrap().keys().len(), 1);
     assert_eq!(
-        signing::printable("Alice\nc3: OK\u{1b}[31m"),
-        "Alice\\nc3: OK\\u{1b}[31m"
+        signing::printable("Alice\nc3: OK\u{1b}[31m\u{202e}"),
+        "Alice\\nc3: OK\\u{1b}[31m\\u{202e}"
     );
 }
 

@@ -188,6 +188,36 @@ impl Drop for TempDir {
     }
 }
 
+/// Creates `path` as a new directory only this user can enter (0700). One left by an earlier process
+/// with this pid is replaced; a symlink or a file there (another user's trap) is refused.
+fn private_dir(path: &std::path::Path) -> anyhow::Result<()> {
+    let mut builder = std::fs::DirBuilder::new();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::DirBuilderExt;
+        builder.mode(0o700);
+    }
+    match builder.create(path) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+            let meta = std::fs::symlink_metadata(path)
+                .with_context(|| format!("inspecting {}", path.display()))?;
+            if meta.file_type().is_symlink() || !meta.is_dir() {
+                anyhow::bail!(
+                    "{} exists and is not a directory of ours: refusing to use it",
+                    path.display()
+                );
+            }
+            std::fs::remove_dir_all(path)
+                .with_context(|| format!("removing the stale {}", path.display()))?;
+            builder
+                .create(path)
+                .with_context(|| format!("creating {}", path.display()))
+        }
+        Err(e) => Err(e).with_context(|| format!("creating {}", path.display())),
+    }
+}
+
 /// The folders of demo runs that were killed outright (kill -9 leaves no chance to clean up) are
 /// removed by the next demo: `ergocell-demo-<pid>` in the temporary folder whose process is gone and
 /// which holds nothing but the demo's `approvals/`. Only where `/proc` tells which processes live.
@@ -287,11 +317,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     remove_stale_demo_dirs(&std::env::temp_dir());
     let demo_dir =
         TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
+    private_dir(&demo_dir.0)?;
     let approvals_dir = demo_dir.0.join("approvals");
-    // A throwaway Ed25519 key made for this run from the OS's randomness; the run trusts it alone.
-    let mut seed = [0u8; 32];
-    getrandom::fill(&mut seed)
-        .map_err(|e| anyhow::anyhow!("no OS randomness for the demo key: {e}"))?;
+    // A throwaway Ed25519 key derived from the demo's seed (same seed, same demo locks); the run
+    // trusts it alone.
+    let seed = ergocell_robot::signing::derived_seed("ergocell demo approval key v1", args.seed);
     let provider = FileTrajectories::with_shipped_defaults(
         args.cell.as_deref(),
         args.trajectories.as_deref(),
@@ -311,9 +341,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         approvals_dir.display()
     );
     say!(
-        "  signed by a throwaway Ed25519 key made for this run ({}), the only key this run trusts",
+        "  signed by a throwaway Ed25519 key derived from seed {} ({}), the only key this run trusts",
+        args.seed,
         ergocell::session::provider::DEMO_PRINCIPAL
     );
+    for (class, demo_sha, reviewed_sha) in provider.demo_locks() {
+        say!("  {class}: demo lock {demo_sha} = the shipped lock {reviewed_sha}, same samples, re-locked under the demo key");
+    }
     say!("  (a simulator-only sign-off; a real cell trusts its engineers' keys in config/approvers/ and needs `ergocell trajectories approve`)");
     let stamp = ergocell_robot::signing::rfc3339_utc(start.div_euclid(1_000_000_000))
         .map_err(|e| anyhow::anyhow!(e))?;

@@ -456,6 +456,9 @@ fn approval_message(
         ))
         .into());
     };
+    // Only well-formed fields are shown (they come from a file anyone may have edited).
+    signing::check_claim(&a.claim())
+        .map_err(|e| UsageError(format!("{} entry {entry}: {e}", path.display())))?;
     if let Some(out) = signature_out {
         write_new(out, &a.signature)?;
     }

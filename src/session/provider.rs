@@ -34,7 +34,8 @@ pub struct FileTrajectories {
 struct DemoSigner {
     key: signing::PrivateKey,
     allowed_signers: String,
-    locks: Vec<(TrajectoryClass, String)>,
+    /// Per class: the demo lock's text, its hash and the reviewed (shipped or on-disk) lock's hash.
+    locks: Vec<(TrajectoryClass, String, String, String)>,
 }
 
 /// The principal of the demo's throwaway key.
@@ -115,7 +116,7 @@ impl FileTrajectories {
     /// The lock file of `class` (in a demo, the lock made under the demo's trust list).
     pub fn lock_text(&self, class: TrajectoryClass) -> Result<String, ProviderError> {
         if let Some(demo) = &self.demo {
-            if let Some((_, text)) = demo.locks.iter().find(|(c, _)| *c == class) {
+            if let Some((_, text, _, _)) = demo.locks.iter().find(|(c, ..)| *c == class) {
                 return Ok(text.clone());
             }
         }
@@ -197,6 +198,16 @@ impl FileTrajectories {
         })
     }
 
+    /// In a demo: per class, the demo lock's hash and the reviewed lock's hash it stands for.
+    pub fn demo_locks(&self) -> Vec<(TrajectoryClass, String, String)> {
+        self.demo.as_ref().map_or_else(Vec::new, |d| {
+            d.locks
+                .iter()
+                .map(|(c, _, demo, reviewed)| (*c, demo.clone(), reviewed.clone()))
+                .collect()
+        })
+    }
+
     /// For `ergocell demo` and tests: trust only a throwaway Ed25519 key made from `seed` (principal
     /// [`DEMO_PRINCIPAL`]) instead of the cell's approvers, and lock every class under that trust list
     /// in memory. Each demo lock is checked to hold exactly the samples of the lock on disk (or
@@ -248,10 +259,16 @@ impl FileTrajectories {
                     "{class}: the lock on disk is not what validation produces now: {e}"
                 ))
             })?;
-            let text = LockFile::from_locked(&locked)
+            let demo_lock = LockFile::from_locked(&locked);
+            let text = demo_lock
                 .to_toml()
                 .map_err(|e| ProviderError(e.to_string()))?;
-            locks.push((class, text));
+            locks.push((
+                class,
+                text,
+                demo_lock.lock_sha256.clone(),
+                reviewed.lock_sha256.clone(),
+            ));
         }
         if let Some(demo) = &mut self.demo {
             demo.locks = locks;
