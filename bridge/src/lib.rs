@@ -14,6 +14,7 @@
 pub mod cdr;
 pub mod msg;
 pub mod qos;
+pub mod scope;
 pub mod topics;
 #[cfg(feature = "transport")]
 pub mod transport;

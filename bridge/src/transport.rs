@@ -8,8 +8,7 @@
 
 pub use ros2_client::Publisher;
 use ros2_client::{
-    Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, QosProfile,
-    Subscription,
+    Context, MessageTypeName, Name, Node, NodeName, NodeOptions, QosProfile, Subscription,
 };
 use serde::Deserialize;
 
@@ -18,6 +17,7 @@ use crate::msg::{
     RosMessage, SessionState,
 };
 use crate::qos::{self, TopicQos};
+use crate::scope::{DiscoveryRange, NetworkScope};
 use crate::topics;
 use crate::BridgeError;
 
@@ -55,6 +55,14 @@ pub struct RosConfig {
     /// The fused skeleton (`visualization_msgs/MarkerArray`, Jazzy layout) for RViz and Foxglove.
     #[serde(default = "default_skeleton")]
     pub skeleton_topic: String,
+    /// How far discovery reaches (`subnet`, `localhost`, `off`, `system_default`); the environment's
+    /// `ROS_AUTOMATIC_DISCOVERY_RANGE` must agree when both are set ([`crate::scope`]).
+    #[serde(default)]
+    pub discovery_range: Option<DiscoveryRange>,
+    /// The cell network's interfaces, by this machine's IPv4 address on each: DDS multicasts and
+    /// advertises only there (default: every interface).
+    #[serde(default)]
+    pub interfaces: Option<Vec<std::net::Ipv4Addr>>,
 }
 
 fn default_namespace() -> String {
@@ -158,9 +166,24 @@ impl RosNode {
         self.context.domain_participant()
     }
 
-    /// Creates the node; spawn [`RosNode::spinner`] on the runtime before use.
-    pub fn new(domain_id: u16, namespace: &str, name: &str) -> Result<Self, BridgeError> {
-        let context = Context::with_options(ContextOptions::new().domain_id(domain_id))
+    /// Creates the node, its DDS participant confined to `scope`; spawn [`RosNode::spinner`] on
+    /// the runtime before use.
+    pub fn new(
+        domain_id: u16,
+        namespace: &str,
+        name: &str,
+        scope: &NetworkScope,
+    ) -> Result<Self, BridgeError> {
+        let (only, same_host) = scope.participant_filter();
+        let mut builder = ros2_client::dds::rustdds::DomainParticipantBuilder::new(domain_id)
+            .same_host_loopback(same_host);
+        if let Some(addrs) = only {
+            builder = builder.with_only_networks(addrs);
+        }
+        let participant = builder
+            .build()
+            .map_err(|e| BridgeError::Ros(format!("DDS participant ({scope}): {e:?}")))?;
+        let context = Context::from_domain_participant(participant)
             .map_err(|e| BridgeError::Ros(format!("DDS context: {e:?}")))?;
         let node_name = NodeName::new(namespace, name)
             .map_err(|e| BridgeError::Ros(format!("node name {namespace}/{name}: {e:?}")))?;

@@ -274,7 +274,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         failure: None,
         reported: false,
     };
-    let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name)?;
+    let scope = network_scope(&ros)?;
+    let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name, &scope)?;
     let participant = node.participant();
     runtime.spawn(node.spinner()?);
     let result = runtime.block_on(async {
@@ -316,7 +317,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let mut rejected = 0u64;
         let mut sessions_done = 0u32;
         println!(
-            "ergocell run: node {}/{} on DDS domain {}, {} camera topics, robot on {}",
+            "ergocell run: node {}/{} on DDS domain {} ({scope}), {} camera topics, robot on {}",
             ros.namespace,
             ros.node_name,
             ros.domain_id,
@@ -676,7 +677,8 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         .enable_all()
         .build()
         .context("tokio runtime")?;
-    let mut node = RosNode::new(ros.domain_id, &ros.namespace, "replay")?;
+    let scope = network_scope(&ros)?;
+    let mut node = RosNode::new(ros.domain_id, &ros.namespace, "replay", &scope)?;
     let participant = node.participant();
     runtime.spawn(node.spinner()?);
     let result = runtime.block_on(async {
@@ -721,6 +723,22 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     // the participant last: every entity has been removed from it (RosNode::participant)
     drop(participant);
     result
+}
+
+/// The DDS participant's network scope from `[ros]` and the ROS 2 environment variables
+/// (`ROS_AUTOMATIC_DISCOVERY_RANGE`, `ROS_STATIC_PEERS`, `ROS_LOCALHOST_ONLY`).
+fn network_scope(ros: &RosConfig) -> anyhow::Result<ergocell_bridge::scope::NetworkScope> {
+    let var = |name: &str| std::env::var(name).ok();
+    let env = ergocell_bridge::scope::ScopeEnv {
+        automatic_discovery_range: var("ROS_AUTOMATIC_DISCOVERY_RANGE"),
+        static_peers: var("ROS_STATIC_PEERS"),
+        localhost_only: var("ROS_LOCALHOST_ONLY"),
+    };
+    Ok(ergocell_bridge::scope::NetworkScope::resolve(
+        ros.discovery_range,
+        ros.interfaces.as_deref(),
+        &env,
+    )?)
 }
 
 #[cfg(test)]
