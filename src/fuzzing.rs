@@ -199,7 +199,20 @@ pub fn approvals_toml(data: &[u8]) {
     let Some(text) = text(data) else { return };
     if let Ok(file) = ApprovalsFile::from_toml_str(text) {
         let _ = file.check_chain();
+        // Every entry's claim and signature through the verifier (no key is trusted: refused, never
+        // a panic), and its message through the two-step flow's parser: a round trip.
+        let nobody = ergocell_robot::TrustedSigners::default();
+        for a in &file.approval {
+            assert!(nobody.verify(&a.claim(), &a.signature).is_err());
+            if ergocell_robot::signing::check_claim(&a.claim()).is_ok() {
+                let fields = ergocell_robot::signing::parse_approval_message(&a.message())
+                    .unwrap_or_else(|e| panic!("a checked claim's message must parse: {e}"));
+                assert_eq!(fields[2], a.approved_by);
+            }
+        }
     }
+    // The same bytes as an allowed-signers file and a revocation list.
+    let _ = ergocell_robot::TrustedSigners::parse(text, text);
 }
 
 /// A session recording (MCAP), through the review's reader and `replay`'s camera reader.
