@@ -43,6 +43,8 @@ enum Command {
     Report(commands::review::ReportArgs),
     /// The seed paper's experiments on the digital twin: table1, adaptation, height, rula-agreement.
     Sim(commands::sim::Args),
+    /// DDS Security (SROS2): create the cell's keystore and enclaves.
+    Security(commands::security::Args),
 }
 
 fn main() -> std::process::ExitCode {
@@ -73,6 +75,7 @@ fn main() -> std::process::ExitCode {
         Command::Sim(args) => commands::sim::run(&args),
         Command::Review(args) => commands::review::run(&args),
         Command::Report(args) => commands::review::report(&args),
+        Command::Security(args) => commands::security::run(&args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

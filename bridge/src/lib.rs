@@ -15,6 +15,8 @@ pub mod cdr;
 pub mod msg;
 pub mod qos;
 pub mod scope;
+#[cfg(feature = "transport")]
+pub mod security;
 pub mod topics;
 #[cfg(feature = "transport")]
 pub mod transport;

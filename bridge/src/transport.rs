@@ -63,6 +63,13 @@ pub struct RosConfig {
     /// advertises only there (default: every interface).
     #[serde(default)]
     pub interfaces: Option<Vec<std::net::Ipv4Addr>>,
+    /// Refuse to start `run` or `replay --ros` without DDS Security (SROS2).
+    #[serde(default)]
+    pub security_required: bool,
+    /// The SROS2 keystore (relative to the cell file's folder); `--keystore` and
+    /// `ROS_SECURITY_KEYSTORE` take precedence ([`crate::security::resolve_security`]).
+    #[serde(default)]
+    pub keystore: Option<std::path::PathBuf>,
 }
 
 fn default_namespace() -> String {
@@ -150,6 +157,16 @@ fn ros_err(what: &str) -> impl Fn(String) -> BridgeError + '_ {
     move |e| BridgeError::Ros(format!("{what}: {e}"))
 }
 
+/// The files of an SROS2 enclave folder that DDS Security reads.
+pub const ENCLAVE_FILES: [&str; 6] = [
+    "identity_ca.cert.pem",
+    "cert.pem",
+    "key.pem",
+    "permissions_ca.cert.pem",
+    "governance.p7s",
+    "permissions.p7s",
+];
+
 /// A ROS 2 node with helpers to make typed publishers and subscriptions.
 pub struct RosNode {
     pub node: Node,
@@ -166,19 +183,38 @@ impl RosNode {
         self.context.domain_participant()
     }
 
-    /// Creates the node, its DDS participant confined to `scope`; spawn [`RosNode::spinner`] on
-    /// the runtime before use.
+    /// Creates the node, its DDS participant confined to `scope` and, with `enclave` (an SROS2
+    /// enclave folder: `cert.pem`, `key.pem`, the CA certificates, `governance.p7s`,
+    /// `permissions.p7s`), authenticated, access-controlled and encrypted by DDS Security; spawn
+    /// [`RosNode::spinner`] on the runtime before use.
     pub fn new(
         domain_id: u16,
         namespace: &str,
         name: &str,
         scope: &NetworkScope,
+        enclave: Option<&std::path::Path>,
     ) -> Result<Self, BridgeError> {
         let (only, same_host) = scope.participant_filter();
         let mut builder = ros2_client::dds::rustdds::DomainParticipantBuilder::new(domain_id)
             .same_host_loopback(same_host);
         if let Some(addrs) = only {
             builder = builder.with_only_networks(addrs);
+        }
+        if let Some(dir) = enclave {
+            for file in ENCLAVE_FILES {
+                if !dir.join(file).is_file() {
+                    return Err(BridgeError::Config(format!(
+                        "SROS2 enclave {}: no {file} (create one with `ergocell security create-keystore`)",
+                        dir.display()
+                    )));
+                }
+            }
+            builder = builder.builtin_security(
+                ros2_client::dds::rustdds::DomainParticipantSecurityConfigFiles::with_ros_default_names(
+                    dir,
+                    String::new(),
+                ),
+            );
         }
         let participant = builder
             .build()
@@ -188,7 +224,12 @@ impl RosNode {
         let node_name = NodeName::new(namespace, name)
             .map_err(|e| BridgeError::Ros(format!("node name {namespace}/{name}: {e:?}")))?;
         let node = context
-            .new_node(node_name, NodeOptions::new().enable_rosout(false))
+            .new_node(
+                node_name,
+                NodeOptions::new()
+                    .enable_rosout(false)
+                    .start_parameter_services(false),
+            )
             .map_err(|e| BridgeError::Ros(format!("node: {e:?}")))?;
         Ok(Self { node, context })
     }

@@ -9,6 +9,7 @@ pub mod output;
 pub mod review;
 pub mod rula;
 pub mod run;
+pub mod security;
 pub mod signals;
 pub mod sim;
 pub mod trajectories;

@@ -75,6 +75,10 @@ pub struct Args {
     /// the process's CPU use at the end.
     #[arg(long)]
     pub latency_report: bool,
+    /// SROS2 keystore (DDS Security, enclave `/ergocell/cell`, or ROS_SECURITY_ENCLAVE_OVERRIDE);
+    /// default ROS_SECURITY_KEYSTORE, then `[ros] keystore`.
+    #[arg(long)]
+    pub keystore: Option<PathBuf>,
 }
 
 #[derive(Debug, clap::Args)]
@@ -90,6 +94,10 @@ pub struct ReplayArgs {
     /// Playback speed factor (1 = as recorded; 0.01..=100).
     #[arg(long, default_value_t = 1.0)]
     pub speed: f64,
+    /// SROS2 keystore (DDS Security, enclave `/ergocell/replay`, or ROS_SECURITY_ENCLAVE_OVERRIDE);
+    /// default ROS_SECURITY_KEYSTORE, then `[ros] keystore`.
+    #[arg(long)]
+    pub keystore: Option<PathBuf>,
 }
 
 /// Wall-clock time, nanoseconds since the Unix epoch: the binary's clock boundary (camera stamps are
@@ -275,7 +283,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         reported: false,
     };
     let scope = network_scope(&ros)?;
-    let mut node = RosNode::new(ros.domain_id, &ros.namespace, &ros.node_name, &scope)?;
+    let enclave = security_enclave(
+        &ros,
+        &args.config,
+        args.keystore.as_deref(),
+        "/ergocell/cell",
+    )?;
+    let mut node = RosNode::new(
+        ros.domain_id,
+        &ros.namespace,
+        &ros.node_name,
+        &scope,
+        enclave.as_deref(),
+    )?;
     let participant = node.participant();
     runtime.spawn(node.spinner()?);
     let result = runtime.block_on(async {
@@ -678,7 +698,19 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         .build()
         .context("tokio runtime")?;
     let scope = network_scope(&ros)?;
-    let mut node = RosNode::new(ros.domain_id, &ros.namespace, "replay", &scope)?;
+    let enclave = security_enclave(
+        &ros,
+        &args.config,
+        args.keystore.as_deref(),
+        "/ergocell/replay",
+    )?;
+    let mut node = RosNode::new(
+        ros.domain_id,
+        &ros.namespace,
+        "replay",
+        &scope,
+        enclave.as_deref(),
+    )?;
     let participant = node.participant();
     runtime.spawn(node.spinner()?);
     let result = runtime.block_on(async {
@@ -723,6 +755,57 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     // the participant last: every entity has been removed from it (RosNode::participant)
     drop(participant);
     result
+}
+
+/// The SROS2 enclave folder for this node, or `None` without DDS Security (said on stdout either way),
+/// from `--keystore`, the ROS_SECURITY_* variables and `[ros]` (`security_required`, `keystore`
+/// relative to the cell file's folder).
+fn security_enclave(
+    ros: &RosConfig,
+    config: &std::path::Path,
+    cli: Option<&std::path::Path>,
+    default_enclave: &str,
+) -> anyhow::Result<Option<PathBuf>> {
+    use ergocell_bridge::security::{resolve_security, SecurityDecision, SecurityEnv};
+    let var = |name: &str| std::env::var(name).ok();
+    let env = SecurityEnv {
+        enable: var("ROS_SECURITY_ENABLE"),
+        strategy: var("ROS_SECURITY_STRATEGY"),
+        keystore: var("ROS_SECURITY_KEYSTORE"),
+        enclave_override: var("ROS_SECURITY_ENCLAVE_OVERRIDE"),
+    };
+    let config_keystore = ros.keystore.as_ref().map(|k| {
+        config
+            .parent()
+            .unwrap_or_else(|| std::path::Path::new("."))
+            .join(k)
+    });
+    let decision = resolve_security(
+        ros.security_required,
+        config_keystore.as_deref(),
+        cli,
+        default_enclave,
+        &env,
+        |dir| {
+            ergocell_bridge::transport::ENCLAVE_FILES
+                .iter()
+                .all(|f| dir.join(f).is_file())
+        },
+    )
+    .map_err(|e| UsageError(e.to_string()))?;
+    Ok(match decision {
+        SecurityDecision::Off(why) => {
+            println!("{why}");
+            None
+        }
+        SecurityDecision::Enclave { name, dir } => {
+            println!(
+                "DDS Security on: enclave {name} ({}): authenticated, access-controlled, encrypted",
+                dir.display()
+            );
+            Some(dir)
+        }
+    })
 }
 
 /// The DDS participant's network scope from `[ros]` and the ROS 2 environment variables

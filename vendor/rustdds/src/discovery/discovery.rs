@@ -1948,6 +1948,15 @@ impl Discovery {
       return;
     }
 
+    // ergocell patch (ERGOCELL-PATCH.md): DCPSTopic has no secure counterpart in DDS Security 1.1, so
+    // with security on, publishing it announced every topic's name and type in the clear, although
+    // the endpoints themselves go over the protected DCPSPublicationsSecure/SubscriptionsSecure.
+    // DCPSTopic is optional (matching uses the endpoint announcements); it is not sent when secured.
+    #[cfg(feature = "security")]
+    if self.security_opt.is_some() {
+      return;
+    }
+
     match self.dcps_topic.writer.write(topic_data.clone(), None) {
       Ok(()) => {
         debug!("Published topic {topic_name} to DCPSTopic");
