@@ -161,10 +161,13 @@ fn certificate(
         )
         .map_err(&e)?;
         b.append_extension(
+            // digitalSignature too: the permissions CA signs the governance and permissions
+            // documents itself, and OpenSSL's S/MIME verification (Cyclone DDS's) checks it.
             KeyUsage::new()
                 .critical()
                 .key_cert_sign()
                 .crl_sign()
+                .digital_signature()
                 .build()
                 .map_err(&e)?,
         )
