@@ -25,7 +25,8 @@ python3 - "$tmp/required/cell.toml" <<'PY'
 import sys
 p = sys.argv[1]
 s = open(p).read()
-open(p, "w").write(s.replace("\n[ros]\n", "\n[ros]\nsecurity_required = true\n", 1))
+assert "\nsecurity_required = false\n" in s
+open(p, "w").write(s.replace("\nsecurity_required = false\n", "\nsecurity_required = true\n", 1))
 PY
 cat > "$tmp/sniff.py" <<'PY'
 # Counts UDP packets on lo and which plaintext markers appear in them, for `secs` seconds, apart for
@@ -66,11 +67,12 @@ case_() {  # case_ <label> <run args...> -- <replay args...>
   replay_args=("$@")
   python3 "$tmp/sniff.py" 22 "$tmp/$label.sniff" &
   local sniff=$!
-  "$bin" --log error run --config config/cell.toml --trajectories trajectories --max-secs 20 \
+  timeout -k 5 60 "$bin" --log error run --config config/cell.toml --trajectories trajectories --max-secs 20 \
     "${run_args[@]}" > "$tmp/$label.run" 2>&1 &
   local run=$!
   sleep 2
-  "$bin" --log error replay "$tmp/session.mcap" --ros --speed 4 "${replay_args[@]}" \
+  # A replay whose samples no one may read can block in the DDS writer: 40 s at most.
+  timeout -s INT -k 5 40 "$bin" --log error replay "$tmp/session.mcap" --ros --speed 4 "${replay_args[@]}" \
     > "$tmp/$label.replay" 2>&1 || echo "replay exit $?" >> "$tmp/$label.replay"
   wait "$run" || true
   wait "$sniff"
@@ -80,9 +82,9 @@ case_ plain --
 case_ open --keystore "$tmp/ks" --
 case_ foreign --keystore "$tmp/ks" -- --keystore "$tmp/foreign"
 env ROS_SECURITY_ENCLAVE_OVERRIDE=/ergocell/camera/s1_left \
-  "$bin" --log error replay "$tmp/session.mcap" --ros --speed 4 --keystore "$tmp/ks" \
+  timeout -s INT -k 5 40 "$bin" --log error replay "$tmp/session.mcap" --ros --speed 4 --keystore "$tmp/ks" \
   > "$tmp/camera.replay" 2>&1 || echo "replay exit $?" >> "$tmp/camera.replay"
-"$bin" --log error run --config "$tmp/required/cell.toml" --trajectories trajectories --max-secs 5 \
+timeout -k 5 40 "$bin" --log error run --config "$tmp/required/cell.toml" --trajectories trajectories --max-secs 5 \
   > "$tmp/required.run" 2>&1 || echo "run exit $?" >> "$tmp/required.run"
 NS
 
