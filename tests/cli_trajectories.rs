@@ -141,19 +141,7 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("NOT APPROVED"));
 
-    let (code, out, err) = ergocell(
-        &dir,
-        &[
-            "trajectories",
-            "approve",
-            "--class",
-            "c2",
-            "--by",
-            ALICE,
-            "--key",
-            "keys/alice",
-        ],
-    );
+    let (code, out, err) = approve(&dir, "c2", ALICE, "keys/alice");
     assert_eq!(code, 0, "{out}{err}");
     let approvals = std::fs::read_to_string(dir.join("trajectories/approvals/c2.toml")).unwrap();
     assert!(approvals.contains(&format!("approved_by = \"{ALICE}\"")));
@@ -183,19 +171,7 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
     );
 
     // An edited trajectory cannot be approved either.
-    let (code, _, err) = ergocell(
-        &dir,
-        &[
-            "trajectories",
-            "approve",
-            "--class",
-            "c2",
-            "--by",
-            ALICE,
-            "--key",
-            "keys/alice",
-        ],
-    );
+    let (code, _, err) = approve(&dir, "c2", ALICE, "keys/alice");
     assert_eq!(code, 1);
     assert!(err.contains("refusing to approve"), "{err}");
 }
@@ -232,19 +208,7 @@ fn a_hand_edited_and_rehashed_lock_is_neither_approved_nor_verified() {
     lock.lock_sha256 = lock.content_sha256();
     std::fs::write(&path, lock.to_toml().unwrap()).unwrap();
 
-    let (code, _, err) = ergocell(
-        &dir,
-        &[
-            "trajectories",
-            "approve",
-            "--class",
-            "c1",
-            "--by",
-            ALICE,
-            "--key",
-            "keys/alice",
-        ],
-    );
+    let (code, _, err) = approve(&dir, "c1", ALICE, "keys/alice");
     assert_eq!(code, 1);
     assert!(
         err.contains("does not hold the validated trajectory")

@@ -297,6 +297,38 @@ impl ApprovalsFile {
             .map_or_else(|| CHAIN_START.to_owned(), Approval::entry_sha256)
     }
 
+    /// The checked principal (trimmed) and the chain head the next entry by `principal` at
+    /// `approved_at_utc` records.
+    fn next_fields<'p>(
+        &self,
+        principal: &'p str,
+        approved_at_utc: &str,
+    ) -> Result<(&'p str, String), RobotError> {
+        let principal = principal.trim();
+        signing::check_principal(principal)?;
+        signing::check_utc_time(approved_at_utc).map_err(|reason| RobotError::Config { reason })?;
+        self.check_chain()?;
+        Ok((principal, self.head_sha256()))
+    }
+
+    /// The exact message the next approval of `lock` by `principal` at `approved_at_utc` signs, for
+    /// signing outside ergocell (`ssh-keygen -Y sign`, then [`ApprovalsFile::append_signed`]).
+    pub fn next_message(
+        &self,
+        lock: &LockFile,
+        principal: &str,
+        approved_at_utc: &str,
+    ) -> Result<String, RobotError> {
+        let (principal, previous_sha256) = self.next_fields(principal, approved_at_utc)?;
+        Ok(signing::approval_message(&ApprovalClaim {
+            class: lock.class.as_str(),
+            lock_sha256: &lock.lock_sha256,
+            approved_by: principal,
+            approved_at_utc,
+            previous_sha256: &previous_sha256,
+        }))
+    }
+
     /// Append a sign-off of `lock` (which must have passed [`verify_integrity`]) by `principal` at
     /// `approved_at_utc`, signed with `key` (which `trusted` must list for `principal`, unrevoked).
     pub fn approve(
@@ -307,11 +339,7 @@ impl ApprovalsFile {
         trusted: &TrustedSigners,
         key: &ssh_key::PrivateKey,
     ) -> Result<&Approval, RobotError> {
-        let principal = principal.trim();
-        signing::check_principal(principal)?;
-        signing::check_utc_time(approved_at_utc).map_err(|reason| RobotError::Config { reason })?;
-        self.check_chain()?;
-        let previous_sha256 = self.head_sha256();
+        let (principal, previous_sha256) = self.next_fields(principal, approved_at_utc)?;
         let claim = ApprovalClaim {
             class: lock.class.as_str(),
             lock_sha256: &lock.lock_sha256,

@@ -398,18 +398,7 @@ fn approve(
                 .clone()
         }
         ApproveHow::MessageOut(out) => {
-            let by = by.unwrap_or_default().trim();
-            signing::check_principal(by)?;
-            file.check_chain()?;
-            let previous = file.head_sha256();
-            let time = now_rfc3339()?;
-            let message = signing::approval_message(&signing::ApprovalClaim {
-                class: class.as_str(),
-                lock_sha256: &lock.lock_sha256,
-                approved_by: by,
-                approved_at_utc: &time,
-                previous_sha256: &previous,
-            });
+            let message = file.next_message(&lock, by.unwrap_or_default(), &now_rfc3339()?)?;
             write_new(out, &message)?;
             println!(
                 "{class}: wrote the approval message to {} — sign it with\n  ssh-keygen -Y sign -f <your key> -n {} {}\nthen: ergocell trajectories approve --class {class} --signed {}",
