@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
 # Issue 16, "an independent secure peer": Cyclone DDS 0.10.2 from Debian's packages (libddsc0debian with
 # its DDS Security plugins, cyclonedds-dev, cyclonedds-tools' idlc) publishes ergocell_msgs/
-# CameraLandmarks into a secured `ergocell run`, in a private network namespace on loopback. The peer's
-# messages carry camera_id "cyclone_probe", which run counts as rejected (no such camera in the rig): the
-# count would prove they arrived. Cases (run secured with the cell enclave each time):
-#   peer with the s1_left camera's enclave, on s1_left's topic   Cyclone accepts ergocell's keystore and
-#       the PKI-DH authentication with RustDDS completes (after two RustDDS fixes, ERGOCELL-PATCH.md);
-#       KNOWN GAP, reported not failed: Cyclone then refuses RustDDS's crypto tokens ("Invalid Crypto
-#       token"), so no sample arrives. The script says so if that ever changes.
+# CameraLandmarks into a secured `ergocell run`, in a private network namespace on loopback, with a
+# packet sniffer on loopback. The peer's messages carry camera_id "cyclone_probe", which run counts as
+# rejected (no such camera in the rig): the count proves they arrived. Cases (run secured with the
+# cell enclave each time):
+#   peer with the s1_left camera's enclave, on s1_left's topic   the messages arrive; no data packet
+#       carries the camera id in the clear (after three RustDDS fixes, vendor/rustdds/ERGOCELL-PATCH.md)
 #   peer unsecured                                              nothing received
 #   peer with another CA's keystore                             nothing received
 #   peer with the s1_left enclave, on s2_left's topic           Cyclone refuses the topic itself
+#   s1_left's identity with permissions for every camera,       Cyclone publishes (its own checks pass);
+#       signed by a permissions CA of the peer's own, on        ergocell's run refuses permissions its
+#       s2_left's topic                                         permissions CA did not sign: nothing received
+#   both unsecured (run without a keystore)                     the control: the messages arrive and the
+#                                                               sniffer sees the camera id in their packets
 # Usage: .ci/interop/secure-peer/run.sh target/release/ergocell
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
@@ -54,6 +58,40 @@ XML
 }
 cam=enclaves/ergocell/camera/s1_left
 xml "$tmp/ks/$cam" "$tmp/camera.xml"
+# The liar: s1_left's own identity (certificate and key from the cell's identity CA), but
+# permissions rewritten to allow every camera's topic and signed by a permissions CA of its own (the
+# foreign keystore's), which its Cyclone is told to trust, with a governance signed by that CA too.
+# Its own checks pass; ergocell's run must refuse permissions its permissions CA did not sign.
+cp -r "$tmp/ks/$cam" "$tmp/liar"
+sed -e 's|<topic>rt/ergocell/camera/s1_left/landmarks</topic>|<topic>rt/ergocell/camera/*/landmarks</topic>|' \
+    "$tmp/ks/$cam/permissions.xml" > "$tmp/liar/permissions.xml"
+grep -q 'camera/\*/landmarks' "$tmp/liar/permissions.xml"
+openssl smime -sign -text -in "$tmp/liar/permissions.xml" -out "$tmp/liar/permissions.p7s" \
+  -signer "$tmp/foreign/public/permissions_ca.cert.pem" -inkey "$tmp/foreign/private/permissions_ca.key.pem"
+cp "$tmp/foreign/public/permissions_ca.cert.pem" "$tmp/liar/permissions_ca.cert.pem"
+cp "$tmp/foreign/enclaves/governance.p7s" "$tmp/liar/governance.p7s"
+xml "$tmp/liar" "$tmp/liar.xml"
+cat > "$tmp/sniff.py" <<'PY'
+# Counts UDP packets on lo carrying RTPS, and whether the peer's camera id appears in them in the
+# clear, for `secs` seconds, apart for user traffic (odd RTPS ports) and metatraffic (even).
+import json, socket, sys, time
+secs, out = float(sys.argv[1]), sys.argv[2]
+s = socket.socket(socket.AF_PACKET, socket.SOCK_RAW, socket.ntohs(0x0003))
+s.bind(("lo", 0))
+s.settimeout(0.2)
+packets, clear = {"user": 0, "meta": 0}, {"user": 0, "meta": 0}
+end = time.time() + secs
+while time.time() < end:
+    try:
+        frame = s.recv(65535)
+    except socket.timeout:
+        continue
+    if len(frame) > 42 and frame[12:14] == b"\x08\x00" and frame[23] == 17 and frame[42:46] == b"RTPS":
+        kind = "user" if int.from_bytes(frame[36:38], "big") % 2 else "meta"
+        packets[kind] += 1
+        clear[kind] += b"cyclone_probe" in frame[42:]
+json.dump({"packets": packets, "cyclone_probe_in_clear": clear}, open(out, "w"))
+PY
 xml "" "$tmp/open.xml"
 xml "$tmp/foreign/$cam" "$tmp/foreign.xml"
 cp .ci/interop/sros2.sh "$tmp/" 2>/dev/null || true
@@ -63,23 +101,31 @@ set -euo pipefail
 bin=$1 tmp=$2
 ip link set lo up
 ip link set lo multicast on
-case_() {  # case_ <label> <cyclone xml> <dds topic>
+case_() {  # case_ <label> <cyclone xml> <dds topic> [run unsecured]
+  python3 "$tmp/sniff.py" 16 "$tmp/$1.sniff" &
+  local sniff=$!
+  local secured=(--keystore "$tmp/ks")
+  if [ -n "${4:-}" ]; then secured=(); fi
   RUST_LOG="${RUST_LOG:-}" timeout -k 5 60 "$bin" --log "${RUN_LOG:-warn}" run --config config/cell.toml --trajectories trajectories --max-secs 14 \
-    --keystore "$tmp/ks" > "$tmp/$1.run" 2>&1 &
+    "${secured[@]}" > "$tmp/$1.run" 2>&1 &
   local run=$!
   sleep 2
   CYCLONEDDS_URI="file://$2" timeout -k 5 40 "$tmp/peer" "$3" cyclone_probe 8 > "$tmp/$1.peer" 2>&1 \
     || echo "peer exit $?" >> "$tmp/$1.peer"
   wait "$run" || true
+  wait "$sniff"
 }
 case_ secure "$tmp/camera.xml" rt/ergocell/camera/s1_left/landmarks
 case_ open "$tmp/open.xml" rt/ergocell/camera/s1_left/landmarks
 case_ foreign "$tmp/foreign.xml" rt/ergocell/camera/s1_left/landmarks
 case_ other "$tmp/camera.xml" rt/ergocell/camera/s2_left/landmarks
+# RustDDS's own verdict on the peer's permissions is logged at info by its secure discovery.
+RUN_LOG="warn,rustdds::discovery::secure_discovery=info" case_ liar "$tmp/liar.xml" rt/ergocell/camera/s2_left/landmarks
+case_ plain "$tmp/open.xml" rt/ergocell/camera/s1_left/landmarks unsecured
 NS
 
 python3 - "$tmp" <<'PY'
-import re, sys
+import json, re, sys
 t = sys.argv[1]
 fail = []
 def check(ok, what):
@@ -87,29 +133,42 @@ def check(ok, what):
     if not ok:
         fail.append(what)
 read = lambda n: open(f"{t}/{n}").read()
+sniff = lambda n: json.load(open(f"{t}/{n}.sniff"))
 def rejected(n):
     m = re.search(r"(\d+) camera message\(s\) rejected", read(n + ".run"))
     return int(m.group(1)) if m else -1
-for n in ["secure", "open", "foreign", "other"]:
-    print(f"{n}: peer says {read(n + '.peer').strip()!r}; run counted {rejected(n)} of its messages")
+for n in ["secure", "open", "foreign", "other", "liar", "plain"]:
+    print(f"{n}: peer says {read(n + '.peer').strip()!r}; run counted {rejected(n)} of its messages; "
+          f"sniffer {sniff(n)}")
 sr, sp = read("secure.run"), read("secure.peer")
 check("published" in sp and "participant refused" not in sp,
       "Cyclone DDS accepts ergocell's keystore (identity, signed governance and permissions)")
 check("handshake" not in sr.lower() or "failed" not in " ".join(l for l in sr.lower().splitlines() if "handshake" in l),
       "the PKI-DH authentication handshake between Cyclone and RustDDS completes (no handshake failure)")
-if rejected("secure") > 0:
-    print("ok   Cyclone DDS → secured run: the s1_left camera's messages arrived (the known crypto-token gap is gone: update README)")
-elif "Invalid Crypto token" in sp:
-    print("KNOWN GAP Cyclone DDS → secured run: no sample arrives; Cyclone refuses RustDDS's crypto tokens:")
-    print("          " + next(l for l in sp.splitlines() if "Invalid Crypto token" in l)[:220])
-else:
-    check(False, "Cyclone DDS → secured run: neither arrived nor the known crypto-token refusal")
+sent = int(re.search(r"published (\d+)", sp).group(1)) if "published" in sp else 0
+check(rejected("secure") >= 60 and "Invalid Crypto token" not in sp,
+      f"Cyclone DDS → secured run: the s1_left camera's messages arrive ({rejected('secure')} of {sent}; "
+      "Cyclone accepts RustDDS's crypto tokens)")
+s = sniff("secure")
+check(s["packets"]["user"] >= 60 and s["cyclone_probe_in_clear"]["user"] == 0
+      and s["cyclone_probe_in_clear"]["meta"] == 0,
+      f"…encrypted: the camera id in none of {s['packets']['user']} data and {s['packets']['meta']} discovery packets")
+o = sniff("plain")
+check(rejected("plain") > 0 and o["cyclone_probe_in_clear"]["user"] > 0,
+      f"control: both unsecured, the peer's messages arrive ({rejected('plain')}) with its camera id in plain "
+      f"sight in {o['cyclone_probe_in_clear']['user']} data packets")
 check(rejected("open") == 0, "an unsecured Cyclone participant's messages never reach the secured run")
 check(rejected("foreign") == 0, "a Cyclone participant with another CA's certificate is not matched")
 check(rejected("other") == 0 and ("writer refused" in read("other.peer") or "topic refused: Not Allowed By Security" in read("other.peer")),
       "the s1_left enclave cannot publish on s2_left's topic (Cyclone refuses it: Not Allowed By Security)")
+lp = read("liar.peer")
+verdict = next((l for l in read("liar.run").splitlines() if "Validating permissions for remote failed" in l), "")
+print("liar: ergocell's run says: " + verdict[verdict.find("Validating"):][:200])
+check("published" in lp and rejected("liar") == 0 and verdict != "",
+      "a peer with s1_left's identity and self-signed permissions for every camera's topic publishes on "
+      "s2_left's, and the secured run refuses it: run rejects permissions its permissions CA did not sign")
 if fail:
-    for n in ["secure.run", "secure.peer"]:
+    for n in ["secure.run", "secure.peer", "liar.run", "liar.peer"]:
         print(f"--- {n}\n" + read(n)[-2500:])
 sys.exit(1 if fail else 0)
 PY
