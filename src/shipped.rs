@@ -1,10 +1,12 @@
 //! The shipped configuration, embedded in the binary: the reference cell's rig, cell file, robot
 //! URDF, the trusted approvers' files (trusting no one), the three class trajectories and their locks, as they were in the repository at build time.
 //!
-//! They are the defaults of the commands that need a cell (`ergocell demo`), so the binary works
-//! from any directory and after `cargo install --path .`. An explicit path always wins, and a
-//! missing explicit path is an error (never a silent fall-back to these). Approvals are never
-//! shipped: a safety engineer signs a lock off on site.
+//! They are the defaults of the commands that need a cell (`ergocell demo` always; `run`, `replay`,
+//! `security`, `sim`, `rula` and `height` when their default path is not in the working directory,
+//! with a note on stderr), so the binary works from any directory and after `cargo install --path .`.
+//! A file that exists is always the one read, and a path that names no shipped file is an error when
+//! missing (never a silent fall-back). Approvals are never shipped: a safety engineer signs a lock
+//! off on site.
 
 /// `(path relative to the repository root, contents)`.
 pub const FILES: &[(&str, &str)] = &[
@@ -66,6 +68,41 @@ pub fn file(path: &std::path::Path) -> Option<&'static str> {
         .collect();
     let key = parts.join("/");
     FILES.iter().find(|(p, _)| *p == key).map(|(_, text)| *text)
+}
+
+/// Whether `path` falls back to the shipped file of that name: relative, absent from the working
+/// directory, and shipped. This is how a command's default (`config/cell.toml`, `config/rig.toml`,
+/// `trajectories`) works from any directory; a path that exists is always the one read.
+pub fn falls_back(path: &std::path::Path) -> bool {
+    path.is_relative() && !path.exists() && file(path).is_some()
+}
+
+/// Whether the folder `dir` falls back to the shipped trajectories (relative, absent, and the
+/// shipped folder's name).
+pub fn dir_falls_back(dir: &std::path::Path) -> bool {
+    dir.is_relative() && !dir.exists() && file(&dir.join("c1.toml")).is_some()
+}
+
+/// A command's input file: the file at `path`, or when [`falls_back`] the shipped one (and a note on
+/// stderr says so). Returns the text and the name to use in messages.
+pub fn read_or_shipped(path: &std::path::Path) -> anyhow::Result<(String, String)> {
+    use anyhow::Context as _;
+    if falls_back(path) {
+        if let Some(text) = file(path) {
+            let here = std::env::current_dir().map_or_else(
+                |_| "the working directory".to_owned(),
+                |d| d.display().to_string(),
+            );
+            eprintln!(
+                "note: {} is not in {here}: using the one shipped in the binary",
+                path.display()
+            );
+            return Ok((text.to_owned(), label(&path.display().to_string())));
+        }
+    }
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    Ok((text, path.display().to_string()))
 }
 
 /// How a command names a shipped file in its messages.

@@ -83,9 +83,10 @@ pub fn resolve_up(up: Option<UpVector>, rig: &Path) -> anyhow::Result<UpVector> 
     if let Some(up) = up {
         return Ok(up);
     }
-    let name = rig.display().to_string();
-    let text = std::fs::read_to_string(rig).map_err(|e| {
-        UsageError(format!("the world's up direction is unknown: pass --up x,y,z or --rig <rig.toml> ({name}: {e})"))
+    let (text, name) = ergocell::shipped::read_or_shipped(rig).map_err(|e| {
+        UsageError(format!(
+            "the world's up direction is unknown: pass --up x,y,z or --rig <rig.toml> ({e:#})"
+        ))
     })?;
     let (rig, _) = ergocell_perception::rig_file::parse_rig(&text, &name)
         .map_err(|e| UsageError(e.to_string()))?;

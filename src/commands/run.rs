@@ -226,22 +226,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             ],
         )?;
     }
-    let cell_text = std::fs::read_to_string(&args.config)
-        .with_context(|| format!("cannot read {}", args.config.display()))?;
+    let (cell_text, cell_label) = ergocell::shipped::read_or_shipped(&args.config)?;
     let ros = RosConfig::from_cell_toml(&cell_text)
-        .map_err(|e| UsageError(format!("{}: {e}", args.config.display())))?;
-    let settings = CellSettings::from_toml_str(&cell_text, &args.config.display().to_string())
+        .map_err(|e| UsageError(format!("{cell_label}: {e}")))?;
+    let settings = CellSettings::from_toml_str(&cell_text, &cell_label)
         .map_err(|e| UsageError(e.to_string()))?;
-    let rig_text = std::fs::read_to_string(&args.rig)
-        .with_context(|| format!("cannot read {}", args.rig.display()))?;
-    let (rig, _) = parse_rig(&rig_text, &args.rig.display().to_string())
-        .map_err(|e| UsageError(e.to_string()))?;
+    let (rig_text, rig_label) = ergocell::shipped::read_or_shipped(&args.rig)?;
+    let (rig, _) = parse_rig(&rig_text, &rig_label).map_err(|e| UsageError(e.to_string()))?;
     for id in &ros.cameras {
         if rig.index_of_name(id).is_none() {
             return Err(UsageError(format!(
-                "{}: [ros] camera `{id}` is not in the rig {}",
-                args.config.display(),
-                args.rig.display()
+                "{cell_label}: [ros] camera `{id}` is not in the rig {rig_label}"
             ))
             .into());
         }
@@ -655,10 +650,9 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         ))
         .into());
     }
-    let cell_text = std::fs::read_to_string(&args.config)
-        .with_context(|| format!("cannot read {}", args.config.display()))?;
+    let (cell_text, cell_label) = ergocell::shipped::read_or_shipped(&args.config)?;
     let ros = RosConfig::from_cell_toml(&cell_text)
-        .map_err(|e| UsageError(format!("{}: {e}", args.config.display())))?;
+        .map_err(|e| UsageError(format!("{cell_label}: {e}")))?;
     let bytes = std::fs::read(&args.recording)
         .with_context(|| format!("cannot read {}", args.recording.display()))?;
     // Camera messages in log-time order; a recording cut by a crash is read up to its last chunk.

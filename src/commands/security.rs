@@ -71,10 +71,8 @@ fn create(keystore: &Path, config: &Path, days: u32) -> anyhow::Result<()> {
         ))
         .into());
     }
-    let text = std::fs::read_to_string(config)
-        .with_context(|| format!("cannot read {}", config.display()))?;
-    let ros = RosConfig::from_cell_toml(&text)
-        .map_err(|e| UsageError(format!("{}: {e}", config.display())))?;
+    let (text, label) = ergocell::shipped::read_or_shipped(config)?;
+    let ros = RosConfig::from_cell_toml(&text).map_err(|e| UsageError(format!("{label}: {e}")))?;
     let enclaves = cell_enclaves(&ros);
     let files = create_keystore(ros.domain_id, &enclaves, not_before(), days)?;
     for f in &files {

@@ -122,17 +122,14 @@ fn parse_seed_range(text: &str) -> Result<SeedRange, String> {
     ergocell_sim::seeds::parse_seeds(text).map(SeedRange)
 }
 
-fn read(path: &Path) -> anyhow::Result<String> {
-    std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))
-}
-
 fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
     if let Ok(count) = spec.parse::<usize>() {
         return ring_rig(count, &RingRigConfig::default())
             .map_err(|e| UsageError(e.to_string()).into());
     }
     let path = PathBuf::from(spec);
-    let (rig, _) = parse_rig(&read(&path)?, spec).map_err(|e| UsageError(e.to_string()))?;
+    let (text, label) = ergocell::shipped::read_or_shipped(&path)?;
+    let (rig, _) = parse_rig(&text, &label).map_err(|e| UsageError(e.to_string()))?;
     if let Some(up) = rig.up() {
         if (up - Vector3::z()).norm() > 1e-6 {
             return Err(UsageError(format!(
@@ -159,16 +156,18 @@ fn parse_point(text: &str) -> Result<[f64; 3], String> {
 }
 
 fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
-    let cell = CellConfig::from_toml_str(&read(&common.cell)?)
-        .map_err(|e| UsageError(format!("{}: {e}", common.cell.display())))?;
+    let (cell_text, cell_label) = ergocell::shipped::read_or_shipped(&common.cell)?;
+    let cell = CellConfig::from_toml_str(&cell_text)
+        .map_err(|e| UsageError(format!("{cell_label}: {e}")))?;
     let T_world_station = cell.T_cell_station();
     let mut points = Vec::new();
     let mut statures = Vec::new();
     let layout = TrajectoryLayout::new(&common.trajectories);
     for class in TrajectoryClass::ALL {
         let path = layout.spec(class);
-        let spec = TrajectorySpec::from_toml_str(&read(&path)?)
-            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+        let (spec_text, spec_label) = ergocell::shipped::read_or_shipped(&path)?;
+        let spec = TrajectorySpec::from_toml_str(&spec_text)
+            .map_err(|e| UsageError(format!("{spec_label}: {e}")))?;
         let h = &spec.handover;
         points.push(T_world_station * Point3::new(h.forward_m, h.lateral_m, h.height_m));
         statures.push([spec.stature.min_m, spec.stature.max_m]);

@@ -234,8 +234,21 @@ impl Context {
     }
 }
 
+/// Reads a file of the cell or the trajectories folder. `trajectories` works on the files on disk
+/// only (it writes locks and approvals beside them), so a missing default says where it looked.
 fn read(path: &Path) -> anyhow::Result<String> {
-    fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))
+    fs::read_to_string(path).with_context(|| {
+        if path.is_relative() {
+            let here = std::env::current_dir()
+                .map_or_else(|_| "the working directory".to_owned(), |d| d.display().to_string());
+            format!(
+                "cannot read {} (relative to {here}: run from the cell's folder, or pass --cell and --trajectories-dir)",
+                path.display()
+            )
+        } else {
+            format!("cannot read {}", path.display())
+        }
+    })
 }
 
 fn classes(class: Option<TrajectoryClass>) -> Vec<TrajectoryClass> {

@@ -42,13 +42,15 @@ struct DemoSigner {
 pub const DEMO_PRINCIPAL: &str = "ergocell-demo-key@simulator.invalid";
 
 impl FileTrajectories {
-    /// `approvals_dir` holds `<class>.toml` approvals (normally `<trajectories_dir>/approvals`).
+    /// `approvals_dir` holds `<class>.toml` approvals (normally `<trajectories_dir>/approvals`). A
+    /// relative cell path or trajectories folder that is not in the working directory but names a
+    /// shipped one is read from the binary ([`crate::shipped::falls_back`]).
     pub fn new(cell_path: &Path, trajectories_dir: &Path, approvals_dir: &Path) -> Self {
         Self {
             cell_path: cell_path.to_owned(),
             layout: TrajectoryLayout::new(trajectories_dir).with_approvals_dir(approvals_dir),
-            cell_shipped: false,
-            trajectories_shipped: false,
+            cell_shipped: crate::shipped::falls_back(cell_path),
+            trajectories_shipped: crate::shipped::dir_falls_back(trajectories_dir),
             demo: None,
         }
     }
