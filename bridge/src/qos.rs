@@ -7,6 +7,7 @@
 //! | `/joint_states` | driver → cell | best effort reader | volatile | keep last 5 | a best-effort reader matches both the driver's reliable and best-effort writers |
 //! | `<controller>/joint_trajectory` | cell → driver | reliable | volatile | keep last 1 | a command must arrive; an old command must never be replayed to a late-joining driver |
 //! | `/ergocell/session_state` | cell → all | reliable | transient local | keep last 1 | the state a late joiner (RViz, a Jetson restarting) must see at once |
+//! | `/ergocell/session_events` | cell → all | reliable | transient local | keep last 100 | every event reaches every reader, also several in one step (keep-last-1 `session_state` keeps only the newest: `class_decided` and `trajectory_locked` were overwritten by `working`); a late joiner gets the recent ones |
 //! | `/ergocell/warnings` | cell → all | reliable | transient local | keep last 20 | every warning must arrive; the recent ones for late joiners |
 //! | `/ergocell/ergonomics`, `/ergocell/skeleton` | cell → all | reliable | volatile | keep last 10 | per-frame state for displays |
 //!
@@ -59,6 +60,12 @@ pub const SESSION_STATE: TopicQos = TopicQos {
     reliability: Reliability::Reliable,
     durability: Durability::TransientLocal,
     depth: 1,
+};
+/// Session events: every one, in order.
+pub const SESSION_EVENTS: TopicQos = TopicQos {
+    reliability: Reliability::Reliable,
+    durability: Durability::TransientLocal,
+    depth: 100,
 };
 /// Posture warnings.
 pub const WARNINGS: TopicQos = TopicQos {

@@ -52,6 +52,7 @@ pub fn cell_enclaves(ros: &RosConfig) -> Vec<EnclaveSpec> {
     let cameras: Vec<String> = ros.cameras.iter().map(|c| ros.camera_topic_of(c)).collect();
     let session = vec![
         ros.session_state_topic.clone(),
+        ros.session_events_topic.clone(),
         ros.ergonomics_topic.clone(),
         ros.warnings_topic.clone(),
         ros.skeleton_topic.clone(),

@@ -21,6 +21,8 @@ pub fn camera_id(topic: &str) -> Option<&str> {
 }
 
 pub const SESSION_STATE: &str = "/ergocell/session_state";
+/// Every session event (state changes, class decided, trajectory locked, refusals, cameras), in order.
+pub const SESSION_EVENTS: &str = "/ergocell/session_events";
 pub const ERGONOMICS: &str = "/ergocell/ergonomics";
 pub const WARNINGS: &str = "/ergocell/warnings";
 /// The fused skeleton (`visualization_msgs/MarkerArray`).

@@ -48,6 +48,9 @@ pub struct RosConfig {
     pub follow_joint_trajectory_action: String,
     #[serde(default = "default_session_state")]
     pub session_state_topic: String,
+    /// Every session event in order (the same `SessionState` messages, deeper history).
+    #[serde(default = "default_session_events")]
+    pub session_events_topic: String,
     #[serde(default = "default_ergonomics")]
     pub ergonomics_topic: String,
     #[serde(default = "default_warnings")]
@@ -92,6 +95,9 @@ fn default_action() -> String {
 }
 fn default_session_state() -> String {
     topics::SESSION_STATE.into()
+}
+fn default_session_events() -> String {
+    topics::SESSION_EVENTS.into()
 }
 fn default_ergonomics() -> String {
     topics::ERGONOMICS.into()
@@ -296,6 +302,7 @@ pub struct CellTopics {
     pub joint_states: Subscription<JointState>,
     pub joint_trajectory: Publisher<JointTrajectory>,
     pub session_state: Publisher<SessionState>,
+    pub session_events: Publisher<SessionState>,
     pub ergonomics: Publisher<ErgonomicState>,
     pub warnings: Publisher<PostureWarning>,
     pub skeleton: Publisher<MarkerArray>,
@@ -315,6 +322,7 @@ impl CellTopics {
             joint_trajectory: node
                 .publisher(&cfg.joint_trajectory_topic, qos::TRAJECTORY_COMMAND)?,
             session_state: node.publisher(&cfg.session_state_topic, qos::SESSION_STATE)?,
+            session_events: node.publisher(&cfg.session_events_topic, qos::SESSION_EVENTS)?,
             ergonomics: node.publisher(&cfg.ergonomics_topic, qos::PER_FRAME_STATE)?,
             warnings: node.publisher(&cfg.warnings_topic, qos::WARNINGS)?,
             skeleton: node.publisher(&cfg.skeleton_topic, qos::PER_FRAME_STATE)?,

@@ -299,12 +299,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             joint_states,
             joint_trajectory,
             session_state,
+            session_events,
             ergonomics,
             warnings,
             skeleton,
         } = CellTopics::new(&mut node, &ros)?;
         let out = Outputs {
             session_state,
+            session_events,
             ergonomics,
             warnings,
             skeleton,
@@ -339,10 +341,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             cameras.len(),
             ros.joint_trajectory_topic
         );
-        out.session_state
-            .async_publish(messages::session_state_message(&machine, started, "started"))
-            .await
-            .map_err(|e| anyhow::anyhow!("publish session state: {e:?}"))?;
+        let first = messages::session_state_message(&machine, started, "started");
+        publish(&out.session_state, first.clone()).await?;
+        publish(&out.session_events, first).await?;
         loop {
             let mut arrival = None;
             let views = tokio::select! {
@@ -612,6 +613,8 @@ fn print_summary(machine: &SessionMachine, rejected: u64) {
 /// The cell's outputs.
 struct Outputs {
     session_state: Publisher<ergocell_bridge::msg::SessionState>,
+    /// The same messages, every one (deeper history).
+    session_events: Publisher<ergocell_bridge::msg::SessionState>,
     ergonomics: Publisher<ergocell_bridge::msg::ErgonomicState>,
     warnings: Publisher<ergocell_bridge::msg::PostureWarning>,
     skeleton: Publisher<ergocell_bridge::msg::MarkerArray>,
@@ -624,7 +627,10 @@ async fn publish_messages(messages: &[Outgoing], out: &Outputs) -> anyhow::Resul
     let mut frame = false;
     for m in messages {
         match m {
-            Outgoing::SessionState(m) => publish(&out.session_state, m.clone()).await?,
+            Outgoing::SessionState(m) => {
+                publish(&out.session_state, m.clone()).await?;
+                publish(&out.session_events, m.clone()).await?;
+            }
             Outgoing::Ergonomics(m) => {
                 publish(&out.ergonomics, m.clone()).await?;
                 frame = true;
