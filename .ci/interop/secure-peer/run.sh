@@ -112,7 +112,7 @@ case_() {  # case_ <label> <cyclone xml> <dds topic> [run unsecured]
   sleep 2
   CYCLONEDDS_URI="file://$2" timeout -k 5 40 "$tmp/peer" "$3" cyclone_probe 8 > "$tmp/$1.peer" 2>&1 \
     || echo "peer exit $?" >> "$tmp/$1.peer"
-  wait "$run" || true
+  wait "$run" || echo "run exit $?" >> "$tmp/$1.run"
   wait "$sniff"
 }
 case_ secure "$tmp/camera.xml" rt/ergocell/camera/s1_left/landmarks
@@ -140,6 +140,13 @@ def rejected(n):
 for n in ["secure", "open", "foreign", "other", "liar", "plain"]:
     print(f"{n}: peer says {read(n + '.peer').strip()!r}; run counted {rejected(n)} of its messages; "
           f"sniffer {sniff(n)}")
+# A run that did not end by itself (timeout's 124, or 137 after its SIGKILL) is reported with its
+# log's end: seen once in CI (case "other", 2 cores), not reproduced in three local runs.
+for n in ["secure", "open", "foreign", "other", "liar", "plain"]:
+    m = re.search(r"run exit (\d+)", read(n + ".run"))
+    if m and m.group(1) in ("124", "137"):
+        print(f"NOTE {n}: run did not end by itself within 60 s (exit {m.group(1)}); the end of its log:")
+        print("     " + "\n     ".join(read(n + ".run").splitlines()[-6:])[:1500])
 sr, sp = read("secure.run"), read("secure.peer")
 check("published" in sp and "participant refused" not in sp,
       "Cyclone DDS accepts ergocell's keystore (identity, signed governance and permissions)")
@@ -159,7 +166,7 @@ check(rejected("plain") > 0 and o["cyclone_probe_in_clear"]["user"] > 0,
       f"sight in {o['cyclone_probe_in_clear']['user']} data packets")
 check(rejected("open") == 0, "an unsecured Cyclone participant's messages never reach the secured run")
 check(rejected("foreign") == 0, "a Cyclone participant with another CA's certificate is not matched")
-check(rejected("other") == 0 and ("writer refused" in read("other.peer") or "topic refused: Not Allowed By Security" in read("other.peer")),
+check(rejected("other") <= 0 and ("writer refused" in read("other.peer") or "topic refused: Not Allowed By Security" in read("other.peer")),
       "the s1_left enclave cannot publish on s2_left's topic (Cyclone refuses it: Not Allowed By Security)")
 lp = read("liar.peer")
 verdict = next((l for l in read("liar.run").splitlines() if "Validating permissions for remote failed" in l), "")
