@@ -7,11 +7,16 @@
 //! - [`qos`]: the QoS of every topic and why.
 //! - [`topics`]: the topic names (the `[ros]` defaults and every recording's).
 //! - [`transport`]: the `ros2-client` node, the cell's topics and the `[ros]` config table.
+//! - [`action`]: control_msgs' FollowJointTrajectory (goal, result, both Feedback layouts);
+//!   [`controller`]: the task that runs each goal on the controller and reports what it said.
 //!
 //! The only library crate that touches the network; it knows nothing of cameras, ergonomics or the
 //! robot model — the binary converts between these messages and the library types.
 
+pub mod action;
 pub mod cdr;
+#[cfg(feature = "transport")]
+pub mod controller;
 pub mod msg;
 pub mod qos;
 pub mod scope;

@@ -67,6 +67,19 @@ pub const SESSION_EVENTS: TopicQos = TopicQos {
     durability: Durability::TransientLocal,
     depth: 100,
 };
+/// The FollowJointTrajectory action's services and feedback (ROS 2's services default: reliable,
+/// volatile, keep last 10).
+pub const ACTION_SERVICES: TopicQos = TopicQos {
+    reliability: Reliability::Reliable,
+    durability: Durability::Volatile,
+    depth: 10,
+};
+/// The action's status topic (transient local on the server, as rcl_action's default).
+pub const ACTION_STATUS: TopicQos = TopicQos {
+    reliability: Reliability::Reliable,
+    durability: Durability::TransientLocal,
+    depth: 1,
+};
 /// Posture warnings.
 pub const WARNINGS: TopicQos = TopicQos {
     reliability: Reliability::Reliable,

@@ -22,7 +22,7 @@ use crate::topics;
 use crate::BridgeError;
 
 /// `[ros]` of `config/cell.toml`.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RosConfig {
     /// DDS domain (ROS_DOMAIN_ID is not read: it is configured here).
@@ -42,10 +42,27 @@ pub struct RosConfig {
     pub joint_states_topic: String,
     #[serde(default = "default_joint_trajectory")]
     pub joint_trajectory_topic: String,
-    /// The FollowJointTrajectory action of the controller (documented for the integrator; the bridge
-    /// commands through `joint_trajectory_topic`).
+    /// The FollowJointTrajectory action of the controller (used when `robot_interface = "action"`).
     #[serde(default = "default_action")]
     pub follow_joint_trajectory_action: String,
+    /// How the robot is commanded: `topic` (the controller's `joint_trajectory` topic, fire and
+    /// forget) or `action` (FollowJointTrajectory: acceptance, feedback, result, tolerances; a
+    /// rejected, aborted or unanswered goal holds the robot and ends the session).
+    #[serde(default)]
+    pub robot_interface: RobotInterface,
+    /// The controller's ROS 2 distribution, for control_msgs' Feedback layout (`jazzy`, `humble`:
+    /// without `index`; `kilted`, `rolling`: with it).
+    #[serde(default = "default_distro")]
+    pub distro: String,
+    /// The goal's path tolerance per joint (radians): the largest deviation while it runs.
+    #[serde(default = "default_path_tolerance")]
+    pub path_tolerance_rad: f64,
+    /// The goal's tolerance per joint at the end (radians).
+    #[serde(default = "default_goal_tolerance")]
+    pub goal_tolerance_rad: f64,
+    /// How late the goal may arrive after its last point's time (seconds).
+    #[serde(default = "default_goal_time_tolerance")]
+    pub goal_time_tolerance_s: f64,
     #[serde(default = "default_session_state")]
     pub session_state_topic: String,
     /// Every session event in order (the same `SessionState` messages, deeper history).
@@ -93,6 +110,29 @@ fn default_joint_trajectory() -> String {
 fn default_action() -> String {
     topics::FOLLOW_JOINT_TRAJECTORY.into()
 }
+/// How the robot is commanded ([`RosConfig::robot_interface`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RobotInterface {
+    /// The controller's `joint_trajectory` topic (fire and forget).
+    #[default]
+    Topic,
+    /// The controller's FollowJointTrajectory action.
+    Action,
+}
+
+fn default_distro() -> String {
+    "jazzy".into()
+}
+fn default_path_tolerance() -> f64 {
+    0.05
+}
+fn default_goal_tolerance() -> f64 {
+    0.01
+}
+fn default_goal_time_tolerance() -> f64 {
+    1.0
+}
 fn default_session_state() -> String {
     topics::SESSION_STATE.into()
 }
@@ -125,7 +165,47 @@ impl RosConfig {
         if cfg.cameras.is_empty() {
             return Err(BridgeError::Config("[ros] cameras is empty".to_owned()));
         }
+        if cfg.feedback_layout().is_none() {
+            return Err(BridgeError::Config(format!(
+                "[ros] distro = {:?}: expected humble, jazzy, kilted or rolling",
+                cfg.distro
+            )));
+        }
+        for (key, value, min) in [
+            (
+                "path_tolerance_rad",
+                cfg.path_tolerance_rad,
+                f64::MIN_POSITIVE,
+            ),
+            (
+                "goal_tolerance_rad",
+                cfg.goal_tolerance_rad,
+                f64::MIN_POSITIVE,
+            ),
+            ("goal_time_tolerance_s", cfg.goal_time_tolerance_s, 0.0),
+        ] {
+            if !(value.is_finite() && value >= min && value <= 10.0) {
+                return Err(BridgeError::Config(format!(
+                    "[ros] {key} = {value}: expected a finite number {}, at most 10",
+                    if min > 0.0 { "> 0" } else { ">= 0" }
+                )));
+            }
+        }
         Ok(cfg)
+    }
+
+    /// The controller's FollowJointTrajectory Feedback layout (from `distro`).
+    pub fn feedback_layout(&self) -> Option<crate::action::FeedbackLayout> {
+        crate::action::FeedbackLayout::for_distro(&self.distro)
+    }
+
+    /// The tolerances every goal carries.
+    pub fn goal_tolerances(&self) -> crate::action::GoalTolerances {
+        crate::action::GoalTolerances {
+            path_position_rad: self.path_tolerance_rad,
+            goal_position_rad: self.goal_tolerance_rad,
+            goal_time_s: self.goal_time_tolerance_s,
+        }
     }
 
     /// The topic of one camera.
@@ -275,6 +355,30 @@ impl RosNode {
             .map_err(|e| ros_err(topic)(format!("{e:?}")))
     }
 
+    /// A FollowJointTrajectory client on `action` (e.g.
+    /// `/joint_trajectory_controller/follow_joint_trajectory`), Feedback layout `F`.
+    pub fn follow_joint_trajectory_client<F: ros2_client::Message + 'static>(
+        &mut self,
+        action: &str,
+    ) -> Result<crate::controller::FjtClient<F>, BridgeError> {
+        let services = profile(qos::ACTION_SERVICES);
+        let status = profile(qos::ACTION_STATUS);
+        self.node
+            .create_action_client(
+                ros2_client::ServiceMapping::Enhanced,
+                &name_of(action)?,
+                &ros2_client::ActionTypeName::new("control_msgs", "FollowJointTrajectory"),
+                ros2_client::action::ActionClientQosPolicies {
+                    goal_service: services.clone(),
+                    result_service: services.clone(),
+                    cancel_service: services.clone(),
+                    feedback_subscription: services,
+                    status_subscription: status,
+                },
+            )
+            .map_err(|e| ros_err(action)(format!("{e:?}")))
+    }
+
     /// A subscription to `M` on `topic` with `qos`.
     pub fn subscription<M: RosMessage + 'static>(
         &mut self,
@@ -343,6 +447,38 @@ pub async fn publish<M: serde::Serialize + std::fmt::Debug>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_robot_interface_distro_and_tolerances_parse_and_bad_ones_are_refused() {
+        let base = "[ros]\ncameras = [\"a\"]\n";
+        let cfg = RosConfig::from_cell_toml(base).unwrap();
+        assert_eq!(cfg.robot_interface, RobotInterface::Topic);
+        assert_eq!(
+            cfg.feedback_layout(),
+            Some(crate::action::FeedbackLayout::WithoutIndex)
+        );
+        assert_eq!(cfg.goal_tolerances().path_position_rad, 0.05);
+        let action = RosConfig::from_cell_toml(&format!(
+            "{base}robot_interface = \"action\"\ndistro = \"kilted\"\npath_tolerance_rad = 0.02\n"
+        ))
+        .unwrap();
+        assert_eq!(action.robot_interface, RobotInterface::Action);
+        assert_eq!(
+            action.feedback_layout(),
+            Some(crate::action::FeedbackLayout::WithIndex)
+        );
+        assert_eq!(action.goal_tolerances().path_position_rad, 0.02);
+        for (bad, says) in [
+            ("distro = \"iron\"", "distro"),
+            ("robot_interface = \"service\"", "robot_interface"),
+            ("path_tolerance_rad = 0.0", "path_tolerance_rad"),
+            ("goal_tolerance_rad = nan", "goal_tolerance_rad"),
+            ("goal_time_tolerance_s = -1.0", "goal_time_tolerance_s"),
+        ] {
+            let e = RosConfig::from_cell_toml(&format!("{base}{bad}\n")).unwrap_err();
+            assert!(e.to_string().contains(says), "{bad}: {e}");
+        }
+    }
 
     #[test]
     fn ros_table_parses_with_defaults_and_rejects_unknown_keys() {

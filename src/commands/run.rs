@@ -19,9 +19,13 @@ use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
     BackendError, RobotCommand, RobotSink, SessionEvent, SessionMachine, SessionState,
 };
+use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
+use ergocell_bridge::controller::{run_controller, ControllerCommand, ControllerReport};
 use ergocell_bridge::msg::{CameraLandmarks, JointState, JointTrajectory};
 use ergocell_bridge::qos;
-use ergocell_bridge::transport::{publish, CellTopics, Publisher, RosConfig, RosNode};
+use ergocell_bridge::transport::{
+    publish, CellTopics, Publisher, RobotInterface, RosConfig, RosNode,
+};
 use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
 use futures::StreamExt as _;
@@ -165,18 +169,59 @@ fn instant() -> std::time::Instant {
 
 /// The robot over ROS 2: commands published on the trajectory topic, positions from `/joint_states`.
 struct RosRobot {
+    /// The controller's `joint_trajectory` topic: every command in topic mode, and in action mode the
+    /// empty trajectory of a hold too (it overrides any active goal), beside the cancel.
     publisher: Publisher<JointTrajectory>,
+    /// Action mode: the FollowJointTrajectory task's commands and the goals' tolerances.
+    action: Option<(
+        tokio::sync::mpsc::UnboundedSender<ControllerCommand>,
+        ergocell_bridge::action::GoalTolerances,
+    )>,
     latest: Arc<Mutex<Option<JointState>>>,
+}
+
+impl RosRobot {
+    fn publish(&self, message: JointTrajectory) -> Result<(), BackendError> {
+        self.publisher.publish(message).map_err(|e| BackendError {
+            backend: "ROS 2 joint trajectory",
+            reason: format!("{e:?}"),
+        })
+    }
+}
+
+/// A leg's name in the controller's reports.
+fn leg_label(leg: ergocell::session::Leg) -> &'static str {
+    match leg {
+        ergocell::session::Leg::ToHandover => "home → handover",
+        ergocell::session::Leg::ToHome => "handover → home",
+    }
 }
 
 impl RobotSink for RosRobot {
     fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError> {
-        self.publisher
-            .publish(messages::command_message(command, now_nanos))
-            .map_err(|e| BackendError {
-                backend: "ROS 2 joint trajectory",
-                reason: format!("{e:?}"),
-            })
+        let message = messages::command_message(command, now_nanos);
+        let Some((commands, tolerances)) = &self.action else {
+            return self.publish(message);
+        };
+        let stopped = |_| BackendError {
+            backend: "ROS 2 FollowJointTrajectory",
+            reason: "the controller task has stopped".to_owned(),
+        };
+        match command {
+            RobotCommand::Execute { leg, .. } => commands
+                .send(ControllerCommand::Execute {
+                    label: leg_label(*leg).to_owned(),
+                    goal: Box::new(ergocell_bridge::action::goal(message, *tolerances)),
+                })
+                .map_err(stopped),
+            RobotCommand::Hold { .. } => {
+                // Both, so that either stops the robot: the cancel ends the goal the controller
+                // reports on, the empty trajectory overrides whatever it runs.
+                let cancel = commands.send(ControllerCommand::Cancel).map_err(stopped);
+                self.publish(message)?;
+                cancel
+            }
+        }
     }
 
     fn joint_positions(&mut self, _now_nanos: i64, names: &[String]) -> Option<Vec<f64>> {
@@ -312,8 +357,35 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             skeleton,
         };
         let latest = Arc::new(Mutex::new(None::<JointState>));
+        let (reports_tx, mut controller_reports) =
+            tokio::sync::mpsc::unbounded_channel::<ControllerReport>();
+        let action = match ros.robot_interface {
+            RobotInterface::Topic => None,
+            RobotInterface::Action => {
+                let (tx, rx) = tokio::sync::mpsc::unbounded_channel();
+                let timeout = Duration::from_secs(5);
+                let name = &ros.follow_joint_trajectory_action;
+                match ros.feedback_layout() {
+                    Some(FeedbackLayout::WithIndex) => {
+                        let client = node.follow_joint_trajectory_client::<FeedbackWithIndex>(name)?;
+                        tokio::spawn(run_controller(client, rx, reports_tx, timeout));
+                    }
+                    Some(FeedbackLayout::WithoutIndex) | None => {
+                        let client =
+                            node.follow_joint_trajectory_client::<FeedbackWithoutIndex>(name)?;
+                        tokio::spawn(run_controller(client, rx, reports_tx, timeout));
+                    }
+                }
+                Some((tx, ros.goal_tolerances()))
+            }
+        };
+        let mut controller_failure: Option<String> = None;
+        // A goal the controller accepted and has not finished: its result is waited for (2 s at
+        // most) before run exits, so the last leg's result is on record.
+        let mut goal_outstanding = false;
         let mut robot = RosRobot {
             publisher: joint_trajectory,
+            action,
             latest: latest.clone(),
         };
         let mut camera_stream =
@@ -339,7 +411,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             ros.node_name,
             ros.domain_id,
             cameras.len(),
-            ros.joint_trajectory_topic
+            match ros.robot_interface {
+                RobotInterface::Topic => format!("{} (topic)", ros.joint_trajectory_topic),
+                RobotInterface::Action => format!(
+                    "{} (FollowJointTrajectory, control_msgs of {}; tolerances: path {} rad, goal {} rad, {} s)",
+                    ros.follow_joint_trajectory_action,
+                    ros.distro,
+                    ros.path_tolerance_rad,
+                    ros.goal_tolerance_rad,
+                    ros.goal_time_tolerance_s
+                ),
+            }
         );
         let first = messages::session_state_message(&machine, started, "started");
         publish(&out.session_state, first.clone()).await?;
@@ -404,6 +486,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     }
                     continue;
                 }
+                Some(report) = controller_reports.recv() => {
+                    println!("  controller: {}", describe_report(&report));
+                    tracing::info!(?report, "controller");
+                    goal_outstanding = matches!(report, ControllerReport::Accepted { .. } | ControllerReport::Feedback { .. });
+                    if let Some(why) = report.failure() {
+                        controller_failure.get_or_insert(why);
+                    }
+                    Vec::new()
+                }
                 _ = tick.tick() => Vec::new(),
             };
             let now = clock.now();
@@ -425,6 +516,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
                 let outgoing = messages::step_messages(&machine, now, &events);
                 publish_messages(&outgoing, &out).await?;
+                break;
+            }
+            // The controller refused, aborted or did not answer a goal: hold the robot and end the
+            // session with the controller's reason (a person must look).
+            if let Some(why) = controller_failure.take() {
+                let events = machine.shutdown(now, &mut robot, &why);
+                for e in &events {
+                    println!("  {}", messages::describe(e));
+                }
+                let outgoing = messages::step_messages(&machine, now, &events);
+                publish_messages(&outgoing, &out).await?;
+                recording.with(|rec| recording::record(rec, now, &outgoing));
                 break;
             }
             if let Some(signal) = stop.get() {
@@ -472,6 +575,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     continue;
                 }
                 break;
+            }
+        }
+        let drain_until = tokio::time::Instant::now() + Duration::from_secs(2);
+        while goal_outstanding {
+            match tokio::time::timeout_at(drain_until, controller_reports.recv()).await {
+                Ok(Some(report)) => {
+                    println!("  controller: {}", describe_report(&report));
+                    goal_outstanding = matches!(
+                        report,
+                        ControllerReport::Accepted { .. } | ControllerReport::Feedback { .. }
+                    );
+                }
+                Ok(None) | Err(_) => break,
             }
         }
         print_summary(&machine, rejected);
@@ -607,6 +723,41 @@ fn print_summary(machine: &SessionMachine, rejected: u64) {
             "recalibrate: {} (found out of calibration during the session, left out of fusion)",
             s.cameras_out_of_calibration.join(", ")
         );
+    }
+}
+
+/// One line for a controller report.
+fn describe_report(r: &ControllerReport) -> String {
+    match r {
+        ControllerReport::Accepted { label } => format!("goal accepted ({label})"),
+        ControllerReport::Rejected { label } => format!("goal REJECTED ({label})"),
+        ControllerReport::NoResponse { label, waited_s } => {
+            format!("no answer to the goal ({label}) within {waited_s:.1} s")
+        }
+        ControllerReport::Failed { label, reason } => format!("goal ({label}) failed: {reason}"),
+        ControllerReport::Feedback {
+            label,
+            count,
+            max_error_rad,
+        } => format!(
+            "feedback #{count} ({label}): largest joint error {}",
+            max_error_rad.map_or_else(|| "not given".to_owned(), |e| format!("{e:.4} rad"))
+        ),
+        ControllerReport::Finished {
+            label,
+            status,
+            error_code,
+            error_string,
+            feedback_count,
+        } => format!(
+            "goal {status} ({label}): {} ({error_code}){} after {feedback_count} feedback messages",
+            ergocell_bridge::action::error_code_name(*error_code),
+            if error_string.is_empty() {
+                String::new()
+            } else {
+                format!(" \"{error_string}\"")
+            }
+        ),
     }
 }
 

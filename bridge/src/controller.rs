@@ -1,0 +1,284 @@
+//! The FollowJointTrajectory client's task: runs each goal the session sends on the controller and
+//! reports what the controller said (accepted or rejected, feedback, the result), so the session can
+//! hold the robot with the controller's own reason.
+//!
+//! One goal at a time, as the joint trajectory controller executes them: a new goal supersedes the
+//! running one (the controller preempts it; its result is not waited for); a cancel request cancels
+//! the running goal and waits for its result. A controller that does not answer the goal request
+//! within the response timeout is reported as such: with no answer, the robot is not known to run
+//! anything, and the session holds.
+
+use std::time::Duration;
+
+use futures::StreamExt as _;
+use ros2_client::action::ActionClient;
+use ros2_client::action_msgs::GoalStatusEnum;
+use ros2_client::builtin_interfaces::Time;
+use tokio::sync::mpsc;
+
+use crate::action::{
+    error_code_name, FeedbackView, FollowJointTrajectoryGoal, FollowJointTrajectoryResult,
+};
+
+/// The FollowJointTrajectory action client, Feedback layout `F`.
+pub type FjtClient<F> = ActionClient<FollowJointTrajectoryGoal, FollowJointTrajectoryResult, F>;
+
+/// What the session asks of the controller.
+#[derive(Debug, Clone)]
+pub enum ControllerCommand {
+    /// Run this goal (`label` names it in reports, e.g. the leg).
+    Execute {
+        label: String,
+        goal: Box<FollowJointTrajectoryGoal>,
+    },
+    /// Cancel the running goal, if any.
+    Cancel,
+}
+
+/// What the controller said.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ControllerReport {
+    Accepted {
+        label: String,
+    },
+    Rejected {
+        label: String,
+    },
+    /// No answer to the goal request within the timeout.
+    NoResponse {
+        label: String,
+        waited_s: f64,
+    },
+    /// The goal could not be sent or its result not read.
+    Failed {
+        label: String,
+        reason: String,
+    },
+    /// Feedback: the first message, then every 25th.
+    Feedback {
+        label: String,
+        count: u64,
+        max_error_rad: Option<f64>,
+    },
+    /// The goal's end: its status (`succeeded`, `aborted`, `canceled`, …) and the result.
+    Finished {
+        label: String,
+        status: &'static str,
+        error_code: i32,
+        error_string: String,
+        feedback_count: u64,
+    },
+}
+
+impl ControllerReport {
+    /// The reason to hold the robot and end the session, if this report is one: a rejected,
+    /// unanswered, failed or aborted goal, or one that ended with an error code. A canceled goal is
+    /// not (ergocell cancels only when it holds).
+    pub fn failure(&self) -> Option<String> {
+        match self {
+            Self::Rejected { label } => Some(format!("the controller rejected the goal ({label})")),
+            Self::NoResponse { label, waited_s } => Some(format!(
+                "the controller did not answer the goal ({label}) within {waited_s:.1} s"
+            )),
+            Self::Failed { label, reason } => Some(format!("the goal ({label}) failed: {reason}")),
+            Self::Finished {
+                label,
+                status,
+                error_code,
+                error_string,
+                ..
+            } if *status != "canceled" && (*status != "succeeded" || *error_code != 0) => {
+                Some(format!(
+                    "the controller {status} the goal ({label}): {} ({error_code}){}",
+                    error_code_name(*error_code),
+                    if error_string.is_empty() {
+                        String::new()
+                    } else {
+                        format!(": {error_string}")
+                    }
+                ))
+            }
+            _ => None,
+        }
+    }
+}
+
+fn status_name(s: GoalStatusEnum) -> &'static str {
+    match s {
+        GoalStatusEnum::Unknown => "unknown",
+        GoalStatusEnum::Accepted => "accepted",
+        GoalStatusEnum::Executing => "executing",
+        GoalStatusEnum::Canceling => "canceling",
+        GoalStatusEnum::Succeeded => "succeeded",
+        GoalStatusEnum::Canceled => "canceled",
+        GoalStatusEnum::Aborted => "aborted",
+    }
+}
+
+/// Runs goals from `commands` on `client` until `commands` closes, reporting on `reports`.
+pub async fn run_controller<F>(
+    client: FjtClient<F>,
+    mut commands: mpsc::UnboundedReceiver<ControllerCommand>,
+    reports: mpsc::UnboundedSender<ControllerReport>,
+    response_timeout: Duration,
+) where
+    F: ros2_client::Message + FeedbackView + 'static,
+{
+    let report = |r: ControllerReport| {
+        // The session is gone when nobody listens: nothing left to tell.
+        let _ = reports.send(r);
+    };
+    let mut pending: Option<ControllerCommand> = None;
+    loop {
+        let command = match pending.take() {
+            Some(c) => c,
+            None => match commands.recv().await {
+                Some(c) => c,
+                None => return,
+            },
+        };
+        let ControllerCommand::Execute { label, goal } = command else {
+            continue; // a cancel with no goal running
+        };
+        let goal_id =
+            match tokio::time::timeout(response_timeout, client.async_send_goal(*goal)).await {
+                Err(_) => {
+                    report(ControllerReport::NoResponse {
+                        label,
+                        waited_s: response_timeout.as_secs_f64(),
+                    });
+                    continue;
+                }
+                Ok(Err(e)) => {
+                    report(ControllerReport::Failed {
+                        label,
+                        reason: format!("sending the goal: {e:?}"),
+                    });
+                    continue;
+                }
+                Ok(Ok((_, response))) if !response.accepted => {
+                    report(ControllerReport::Rejected { label });
+                    continue;
+                }
+                Ok(Ok((id, _))) => {
+                    report(ControllerReport::Accepted {
+                        label: label.clone(),
+                    });
+                    id
+                }
+            };
+        let result = client.async_request_result(goal_id);
+        tokio::pin!(result);
+        let feedback = client.feedback_stream(goal_id);
+        tokio::pin!(feedback);
+        let mut count = 0u64;
+        loop {
+            tokio::select! {
+                r = &mut result => {
+                    report(match r {
+                        Ok((status, res)) => ControllerReport::Finished {
+                            label: label.clone(),
+                            status: status_name(status),
+                            error_code: res.error_code,
+                            error_string: res.error_string,
+                            feedback_count: count,
+                        },
+                        Err(e) => ControllerReport::Failed {
+                            label: label.clone(),
+                            reason: format!("reading the result: {e:?}"),
+                        },
+                    });
+                    break;
+                }
+                Some(f) = feedback.next() => {
+                    if let Ok(f) = f {
+                        count += 1;
+                        if count == 1 || count.is_multiple_of(25) {
+                            report(ControllerReport::Feedback {
+                                label: label.clone(),
+                                count,
+                                max_error_rad: f.max_position_error_rad(),
+                            });
+                        }
+                    }
+                }
+                c = commands.recv() => match c {
+                    None => return,
+                    Some(ControllerCommand::Cancel) => {
+                        let cancel = client.async_cancel_goal(goal_id, Time::ZERO);
+                        if tokio::time::timeout(response_timeout, cancel).await.is_err() {
+                            report(ControllerReport::Failed {
+                                label: label.clone(),
+                                reason: "the controller did not answer the cancel request".to_owned(),
+                            });
+                        }
+                        // Keep waiting for the result (canceled).
+                    }
+                    Some(next @ ControllerCommand::Execute { .. }) => {
+                        pending = Some(next);
+                        break;
+                    }
+                },
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rejections_aborts_and_error_codes_hold_with_the_controllers_reason_cancels_do_not() {
+        let l = || "home → handover".to_owned();
+        assert!(ControllerReport::Rejected { label: l() }
+            .failure()
+            .is_some_and(|r| r.contains("rejected the goal (home → handover)")));
+        let aborted = ControllerReport::Finished {
+            label: l(),
+            status: "aborted",
+            error_code: -4,
+            error_string: "joint_2 0.3 rad off".into(),
+            feedback_count: 10,
+        };
+        assert_eq!(
+            aborted.failure().as_deref(),
+            Some(
+                "the controller aborted the goal (home → handover): PATH_TOLERANCE_VIOLATED (-4): \
+                 joint_2 0.3 rad off"
+            )
+        );
+        let odd = ControllerReport::Finished {
+            label: l(),
+            status: "succeeded",
+            error_code: -5,
+            error_string: String::new(),
+            feedback_count: 0,
+        };
+        assert!(odd
+            .failure()
+            .is_some_and(|r| r.contains("GOAL_TOLERANCE_VIOLATED (-5)")));
+        let ok = ControllerReport::Finished {
+            label: l(),
+            status: "succeeded",
+            error_code: 0,
+            error_string: String::new(),
+            feedback_count: 250,
+        };
+        assert_eq!(ok.failure(), None);
+        let canceled = ControllerReport::Finished {
+            label: l(),
+            status: "canceled",
+            error_code: 0,
+            error_string: String::new(),
+            feedback_count: 3,
+        };
+        assert_eq!(canceled.failure(), None);
+        assert!(ControllerReport::NoResponse {
+            label: l(),
+            waited_s: 5.0
+        }
+        .failure()
+        .is_some_and(|r| r.contains("did not answer")));
+    }
+}
