@@ -182,8 +182,13 @@ function start(app, raw) {
     const t = n ? s.t[f] : 0;
     counter.textContent = `frame ${n ? f + 1 : 0} / ${n} · ${t.toFixed(2)} s`;
     readout.innerHTML = n ? readoutHtml(s, f) : '';
-    playBtn.innerHTML = state.playing ? PAUSE_ICON : PLAY_ICON;
-    playBtn.setAttribute('aria-label', state.playing ? 'Pause' : 'Play');
+    // Only when it changes: update() runs every frame while playing, and a click whose mousedown
+    // landed on an icon replaced before mouseup is no click at all (the pause was lost).
+    const label = state.playing ? 'Pause' : 'Play';
+    if (playBtn.getAttribute('aria-label') !== label) {
+      playBtn.innerHTML = state.playing ? PAUSE_ICON : PLAY_ICON;
+      playBtn.setAttribute('aria-label', label);
+    }
     playBtn.classList.toggle('active', state.playing);
     for (const tl of timelines) tl.chart.redraw();
   }
