@@ -3,9 +3,13 @@
 //! and no approval written into `trajectories/approvals/`.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+mod common;
+
 use std::collections::BTreeSet;
 use std::path::Path;
 use std::process::Command;
+
+use common::Scratch;
 
 #[test]
 fn demo_runs_a_whole_session_and_records_it() {
@@ -80,24 +84,6 @@ fn demo_runs_a_whole_session_and_records_it() {
         "/joint_trajectory_controller/joint_trajectory",
     ] {
         assert!(topics.contains(t), "{t} not in {topics:?}");
-    }
-}
-
-/// A fresh folder outside the repository, removed at the end.
-struct Scratch(std::path::PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("ergocell-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Self(dir)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
     }
 }
 

@@ -507,51 +507,36 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             }
             // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
             recording.with(|rec| rec.tick(now));
-            // A recording that cannot be written (disk full, the disk gone) holds the robot and ends
-            // the session with the reason: a cell that records must not run on unrecorded.
-            if let Some(why) = recording.new_failure() {
-                let events = machine.shutdown(now, &mut robot, &format!("recording failed: {why}"));
-                for e in &events {
-                    println!("  {}", messages::describe(e));
-                }
-                let outgoing = messages::step_messages(&machine, now, &events);
-                publish_messages(&outgoing, &out).await?;
-                break;
-            }
-            // The controller refused, aborted or did not answer a goal: hold the robot and end the
-            // session with the controller's reason (a person must look).
-            if let Some(why) = controller_failure.take() {
+            // Why the session must end now, if it must, in this order: a recording that cannot be
+            // written (disk full, the disk gone: a cell that records must not run on unrecorded;
+            // nothing more is recorded); the controller refused, aborted or did not answer a goal
+            // (its reason; a person must look); Ctrl-C or SIGTERM; --max-secs. Each holds the robot.
+            let end = if let Some(why) = recording.new_failure() {
+                Some((format!("recording failed: {why}"), false))
+            } else if let Some(why) = controller_failure.take() {
+                Some((why, true))
+            } else if let Some(signal) = stop.get() {
+                interrupted = Some(signal);
+                Some((signal.name().to_owned(), true))
+            } else if args
+                .max_secs
+                .is_some_and(|limit| (now - started) as f64 * 1e-9 > limit)
+            {
+                Some(("--max-secs reached".to_owned(), true))
+            } else {
+                None
+            };
+            if let Some((why, record)) = end {
                 let events = machine.shutdown(now, &mut robot, &why);
                 for e in &events {
                     println!("  {}", messages::describe(e));
                 }
                 let outgoing = messages::step_messages(&machine, now, &events);
                 publish_messages(&outgoing, &out).await?;
-                recording.with(|rec| recording::record(rec, now, &outgoing));
-                break;
-            }
-            if let Some(signal) = stop.get() {
-                interrupted = Some(signal);
-                let events = machine.shutdown(now, &mut robot, signal.name());
-                for e in &events {
-                    println!("  {}", messages::describe(e));
-                }
-                let outgoing = messages::step_messages(&machine, now, &events);
-                publish_messages(&outgoing, &out).await?;
-                recording.with(|rec| recording::record(rec, now, &outgoing));
-                break;
-            }
-            if let Some(limit) = args.max_secs {
-                if (now - started) as f64 * 1e-9 > limit {
-                    let events = machine.shutdown(now, &mut robot, "--max-secs reached");
-                    for e in &events {
-                        println!("  {}", messages::describe(e));
-                    }
-                    let outgoing = messages::step_messages(&machine, now, &events);
-                    publish_messages(&outgoing, &out).await?;
+                if record {
                     recording.with(|rec| recording::record(rec, now, &outgoing));
-                    break;
                 }
+                break;
             }
             let events = machine.step(now, views, &mut robot);
             for e in &events {

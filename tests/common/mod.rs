@@ -1,5 +1,5 @@
-//! Shared by the review tests: a running `ergocell review`, killed on drop, and the demo session
-//! they review.
+//! Shared by the integration tests: a running `ergocell review`, killed on drop, and the demo session
+//! the review tests review; a scratch folder outside the repository.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, dead_code)]
 
@@ -96,4 +96,22 @@ pub fn demo_recording(file: &str) -> &'static Path {
         assert!(status.success(), "demo failed");
         out
     })
+}
+
+/// A fresh folder outside the repository, removed at the end.
+pub struct Scratch(pub PathBuf);
+
+impl Scratch {
+    pub fn new(name: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("ergocell-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Self(dir)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
 }
