@@ -87,22 +87,25 @@ pub fn dir_falls_back(dir: &std::path::Path) -> bool {
 /// stderr says so). Returns the text and the name to use in messages.
 pub fn read_or_shipped(path: &std::path::Path) -> anyhow::Result<(String, String)> {
     use anyhow::Context as _;
-    if falls_back(path) {
-        if let Some(text) = file(path) {
-            let here = std::env::current_dir().map_or_else(
-                |_| "the working directory".to_owned(),
-                |d| d.display().to_string(),
-            );
-            eprintln!(
-                "note: {} is not in {here}: using the one shipped in the binary",
-                path.display()
-            );
-            return Ok((text.to_owned(), label(&path.display().to_string())));
-        }
+    if let Some(text) = file(path).filter(|_| falls_back(path)) {
+        eprintln!(
+            "note: {} is not in {}: using the one shipped in the binary",
+            path.display(),
+            working_dir()
+        );
+        return Ok((text.to_owned(), label(&path.display().to_string())));
     }
     let text =
         std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
     Ok((text, path.display().to_string()))
+}
+
+/// The working directory, as messages name it.
+pub fn working_dir() -> String {
+    std::env::current_dir().map_or_else(
+        |_| "the working directory".to_owned(),
+        |d| d.display().to_string(),
+    )
 }
 
 /// How a command names a shipped file in its messages.

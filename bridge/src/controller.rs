@@ -89,17 +89,57 @@ impl ControllerReport {
                 ..
             } if *status != "canceled" && (*status != "succeeded" || *error_code != 0) => {
                 Some(format!(
-                    "the controller {status} the goal ({label}): {} ({error_code}){}",
-                    error_code_name(*error_code),
-                    if error_string.is_empty() {
-                        String::new()
-                    } else {
-                        format!(": {error_string}")
-                    }
+                    "the controller {status} the goal ({label}): {}",
+                    result_text(*error_code, error_string)
                 ))
             }
             _ => None,
         }
+    }
+
+    /// Whether a goal is still running after this report (accepted, or sending feedback).
+    pub fn goal_running(&self) -> bool {
+        matches!(self, Self::Accepted { .. } | Self::Feedback { .. })
+    }
+
+    /// One line for the operator's terminal and the log.
+    pub fn describe(&self) -> String {
+        match self {
+            Self::Accepted { label } => format!("goal accepted ({label})"),
+            Self::Rejected { label } => format!("goal REJECTED ({label})"),
+            Self::NoResponse { label, waited_s } => {
+                format!("no answer to the goal ({label}) within {waited_s:.1} s")
+            }
+            Self::Failed { label, reason } => format!("goal ({label}) failed: {reason}"),
+            Self::Feedback {
+                label,
+                count,
+                max_error_rad,
+            } => format!(
+                "feedback #{count} ({label}): largest joint error {}",
+                max_error_rad.map_or_else(|| "not given".to_owned(), |e| format!("{e:.4} rad"))
+            ),
+            Self::Finished {
+                label,
+                status,
+                error_code,
+                error_string,
+                feedback_count,
+            } => format!(
+                "goal {status} ({label}): {} after {feedback_count} feedback messages",
+                result_text(*error_code, error_string)
+            ),
+        }
+    }
+}
+
+/// `PATH_TOLERANCE_VIOLATED (-4): <error_string>` (no `: …` when the string is empty).
+fn result_text(error_code: i32, error_string: &str) -> String {
+    let name = error_code_name(error_code);
+    if error_string.is_empty() {
+        format!("{name} ({error_code})")
+    } else {
+        format!("{name} ({error_code}): {error_string}")
     }
 }
 

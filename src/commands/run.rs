@@ -487,9 +487,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     continue;
                 }
                 Some(report) = controller_reports.recv() => {
-                    println!("  controller: {}", describe_report(&report));
+                    println!("  controller: {}", report.describe());
                     tracing::info!(?report, "controller");
-                    goal_outstanding = matches!(report, ControllerReport::Accepted { .. } | ControllerReport::Feedback { .. });
+                    goal_outstanding = report.goal_running();
                     if let Some(why) = report.failure() {
                         controller_failure.get_or_insert(why);
                     }
@@ -566,11 +566,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         while goal_outstanding {
             match tokio::time::timeout_at(drain_until, controller_reports.recv()).await {
                 Ok(Some(report)) => {
-                    println!("  controller: {}", describe_report(&report));
-                    goal_outstanding = matches!(
-                        report,
-                        ControllerReport::Accepted { .. } | ControllerReport::Feedback { .. }
-                    );
+                    println!("  controller: {}", report.describe());
+                    goal_outstanding = report.goal_running();
                 }
                 Ok(None) | Err(_) => break,
             }
@@ -708,41 +705,6 @@ fn print_summary(machine: &SessionMachine, rejected: u64) {
             "recalibrate: {} (found out of calibration during the session, left out of fusion)",
             s.cameras_out_of_calibration.join(", ")
         );
-    }
-}
-
-/// One line for a controller report.
-fn describe_report(r: &ControllerReport) -> String {
-    match r {
-        ControllerReport::Accepted { label } => format!("goal accepted ({label})"),
-        ControllerReport::Rejected { label } => format!("goal REJECTED ({label})"),
-        ControllerReport::NoResponse { label, waited_s } => {
-            format!("no answer to the goal ({label}) within {waited_s:.1} s")
-        }
-        ControllerReport::Failed { label, reason } => format!("goal ({label}) failed: {reason}"),
-        ControllerReport::Feedback {
-            label,
-            count,
-            max_error_rad,
-        } => format!(
-            "feedback #{count} ({label}): largest joint error {}",
-            max_error_rad.map_or_else(|| "not given".to_owned(), |e| format!("{e:.4} rad"))
-        ),
-        ControllerReport::Finished {
-            label,
-            status,
-            error_code,
-            error_string,
-            feedback_count,
-        } => format!(
-            "goal {status} ({label}): {} ({error_code}){} after {feedback_count} feedback messages",
-            ergocell_bridge::action::error_code_name(*error_code),
-            if error_string.is_empty() {
-                String::new()
-            } else {
-                format!(" \"{error_string}\"")
-            }
-        ),
     }
 }
 

@@ -239,11 +239,10 @@ impl Context {
 fn read(path: &Path) -> anyhow::Result<String> {
     fs::read_to_string(path).with_context(|| {
         if path.is_relative() {
-            let here = std::env::current_dir()
-                .map_or_else(|_| "the working directory".to_owned(), |d| d.display().to_string());
             format!(
-                "cannot read {} (relative to {here}: run from the cell's folder, or pass --cell and --trajectories-dir)",
-                path.display()
+                "cannot read {} (relative to {}: run from the cell's folder, or pass --cell and --trajectories-dir)",
+                path.display(),
+                ergocell::shipped::working_dir()
             )
         } else {
             format!("cannot read {}", path.display())
