@@ -11,6 +11,8 @@
 //!   [`LockedTrajectory`] only when the QP is `Solved` and every check passes.
 //! * [`lock`]: lock files, approvals, verification, the [`lock::ApprovedTrajectory`] the controller may
 //!   send and the per-session [`lock::SessionLock`].
+//! * [`monitor`]: the execution monitor (joint states against the lock, while the robot runs) and
+//!   the path tolerances derived from the lock.
 //! * [`signing`]: who may approve (OpenSSH allowed signers, revoked keys) and the exact bytes an
 //!   approval's SSH signature covers.
 //!
@@ -30,6 +32,7 @@ pub mod ik;
 pub mod layout;
 pub mod lock;
 pub mod model;
+pub mod monitor;
 pub mod pose;
 pub mod qp;
 pub mod signing;

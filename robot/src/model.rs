@@ -294,6 +294,36 @@ impl RobotModel {
         (T_base_tcp, J)
     }
 
+    /// Per joint, in joint order, the largest distance from the joint's axis origin to any point of
+    /// the arm beyond it (later chain origins and the TCP) at positions `q`: a position error of
+    /// `δ` radians at that joint moves no point of the arm by more than `δ` times this (metres per
+    /// radian; a rotation by `δ` moves a point at distance `r` by `2 r sin(δ/2) ≤ r δ`, and a point on
+    /// a link segment is no farther than the farther of its ends).
+    pub fn joint_lever_arms_m(
+        &self,
+        q: &[f64],
+        T_flange_tcp: &Isometry3<f64>,
+    ) -> Result<Vec<f64>, RobotError> {
+        self.check_dof(q, "joint positions")?;
+        let frames = self.element_frames(q);
+        let T_base_flange = frames.last().copied().unwrap_or_else(Isometry3::identity);
+        let tcp = (T_base_flange * T_flange_tcp).translation.vector;
+        let mut arms = Vec::with_capacity(self.dof());
+        for (i, (el, T_base_joint)) in self.elements.iter().zip(&frames).enumerate() {
+            if el.axis.is_none() {
+                continue;
+            }
+            let origin = T_base_joint.translation.vector;
+            let farthest = frames[i + 1..]
+                .iter()
+                .map(|T| (T.translation.vector - origin).norm())
+                .chain(std::iter::once((tcp - origin).norm()))
+                .fold(0.0_f64, f64::max);
+            arms.push(farthest);
+        }
+        Ok(arms)
+    }
+
     /// Points along the arm in the base frame: the base origin, every chain element's origin
     /// (joints and fixed frames), then the TCP. Consecutive points bound the arm's link segments.
     pub fn link_points(

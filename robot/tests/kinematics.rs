@@ -259,3 +259,90 @@ fn another_serial_urdf_loads_the_same_way() {
         .unwrap();
     assert_eq!(names[5], "joint_6");
 }
+
+#[test]
+fn lever_arms_are_the_reach_beyond_each_joint_and_bound_the_arms_displacement() {
+    let s = common::shipped();
+    // Straight up: A2 sits 0.360 m up and A4 0.780 m up (above), the flange at 1.306 m, a tool 0.15 m
+    // further along z.
+    let tool = tool_transform([0.0, 0.0, 0.15]);
+    let arms = s.model.joint_lever_arms_m(&ZERO, &tool).unwrap();
+    assert_eq!(arms.len(), 7);
+    assert_relative_eq!(arms[1], 1.456 - 0.360, epsilon = 1e-12);
+    assert_relative_eq!(arms[3], 1.456 - 0.780, epsilon = 1e-12);
+    assert!(arms.windows(2).all(|w| w[0] >= w[1] - 1e-12), "{arms:?}");
+    // The bound: a small error δ at joint j moves no point of the arm farther than arms[j]·|δ|.
+    let q = [0.3, -0.7, 0.5, -1.2, 0.4, 0.9, -0.2];
+    let arms = s.model.joint_lever_arms_m(&q, &tool).unwrap();
+    let before = s.model.link_points(&q, &tool).unwrap();
+    for j in 0..7 {
+        let mut moved = q;
+        moved[j] += 0.01;
+        let after = s.model.link_points(&moved, &tool).unwrap();
+        let worst = before
+            .iter()
+            .zip(&after)
+            .map(|(a, b)| (a - b).norm())
+            .fold(0.0_f64, f64::max);
+        assert!(
+            worst <= arms[j] * 0.01 + 1e-12,
+            "joint {j}: {worst} > {}",
+            arms[j] * 0.01
+        );
+        if j == 1 {
+            // A2's axis is across the arm: its bound is nearly reached.
+            assert!(
+                worst >= 0.8 * arms[j] * 0.01,
+                "the bound is far from tight: {worst}"
+            );
+        }
+    }
+    assert!(s.model.joint_lever_arms_m(&[0.0; 3], &tool).is_err());
+}
+
+#[test]
+fn path_tolerances_from_the_lock_keep_the_whole_arm_within_its_separation_margin() {
+    use ergocell_robot::monitor::path_tolerances;
+    use ergocell_robot::{LockFile, TrajectoryClass};
+    let s = common::shipped();
+    let lock = LockFile::from_toml_str(
+        TrajectoryClass::C2,
+        &common::read("trajectories/locks/c2.lock.toml"),
+    )
+    .unwrap();
+    let margin = lock.summary.min_separation_m - lock.summary.required_separation_m;
+    assert!(margin > 0.1, "{margin}");
+    let tool = tool_transform(common::spec(TrajectoryClass::C2).tool.tcp_from_flange_m);
+    let points = &lock.trajectory.point;
+    let tol = path_tolerances(&s.model, &tool, points, margin, 0.05).unwrap();
+    assert_eq!(tol.len(), 7);
+    assert!(tol.iter().all(|&t| t > 0.0 && t <= 0.05), "{tol:?}");
+    // The base joints carry the whole arm: tighter than the cap.
+    assert!(tol[0] < 0.05 && tol[1] < 0.05, "{tol:?}");
+    // Every joint at its tolerance at once, on every locked sample, in both signs of each joint's
+    // error: no point of the arm moves by more than the margin.
+    let mut worst = 0.0_f64;
+    for p in points {
+        let q = &p.positions_rad;
+        let before = s.model.link_points(q, &tool).unwrap();
+        for signs in 0..(1u32 << 7) {
+            let moved: Vec<f64> = q
+                .iter()
+                .zip(&tol)
+                .enumerate()
+                .map(|(j, (x, t))| if signs >> j & 1 == 1 { x + t } else { x - t })
+                .collect();
+            let after = s.model.link_points(&moved, &tool).unwrap();
+            for (a, b) in before.iter().zip(&after) {
+                worst = worst.max((a - b).norm());
+            }
+        }
+    }
+    assert!(worst <= margin, "{worst} m > margin {margin} m");
+    assert!(
+        worst >= 0.3 * margin,
+        "the tolerances are needlessly tight: {worst} m of {margin} m"
+    );
+    // No margin, no tolerance: an error.
+    assert!(path_tolerances(&s.model, &tool, points, 0.0, 0.05).is_err());
+}
