@@ -829,3 +829,45 @@ fn an_operator_whose_interval_straddles_a_boundary_ends_the_session_without_movi
         .iter()
         .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
 }
+
+#[test]
+fn a_robot_that_is_not_ready_is_held_before_its_first_goal_and_the_session_resumes_once_it_is() {
+    let mut run = Run::new("unready", Some(TrajectoryClass::C2), 1);
+    run.machine.set_robot_unready(Some(
+        "driver not configured (robot_manager/is_configured)".into(),
+    ));
+    run.run_until(15_000_000_000, &|m| m.state() == SessionState::Held);
+    assert_eq!(run.machine.state(), SessionState::Held);
+    assert!(run.machine.lock_sha256().is_some(), "locked, then held");
+    // Held for 2 s: no goal sent, the reason kept.
+    run.run_until(run.now + 2_000_000_000, &|_| false);
+    assert!(run
+        .robot
+        .received
+        .iter()
+        .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
+    assert_eq!(
+        run.machine.hold_reason(),
+        Some("driver not configured (robot_manager/is_configured)")
+    );
+    // Ready: the session resumes from home and sends the first leg.
+    run.machine.set_robot_unready(None);
+    run.run_until(run.now + 2_000_000_000, &|m| {
+        m.state() == SessionState::Working
+    });
+    assert_eq!(run.machine.state(), SessionState::Working);
+    assert!(matches!(
+        run.robot.received.last(),
+        Some((_, RobotCommand::Execute { .. }))
+    ));
+    // Unready again mid-leg (joint states stale): held at once.
+    run.step(&|_| true);
+    run.machine
+        .set_robot_unready(Some("joint states stale".into()));
+    run.step(&|_| true);
+    assert_eq!(run.machine.state(), SessionState::Held);
+    assert!(matches!(
+        run.robot.received.last(),
+        Some((_, RobotCommand::Hold { reason })) if reason == "joint states stale"
+    ));
+}

@@ -66,6 +66,9 @@ pub struct SessionMachine {
     lock: Option<SessionLock>,
     motion: Motion,
     hold_reason: Option<String>,
+    /// Why the robot side cannot be trusted to move right now (the driver not controlling, joint
+    /// states stale), from the backend: the robot is held and nothing is sent until it clears.
+    robot_unready: Option<String>,
     tracking_back_since: Option<i64>,
     last_frame_stamp: Option<i64>,
     last_tracked: Option<(i64, Point3<f64>)>,
@@ -123,6 +126,7 @@ impl SessionMachine {
             lock: None,
             motion: Motion::AtHome,
             hold_reason: None,
+            robot_unready: None,
             tracking_back_since: None,
             last_frame_stamp: None,
             last_tracked: None,
@@ -205,6 +209,26 @@ impl SessionMachine {
             requested,
             reason,
         }
+    }
+
+    /// The robot side's readiness, from the backend: `Some(why)` while the robot must not move (its
+    /// driver is not configured or not controlling, its joint states are stale). From the next step
+    /// a session that has locked its trajectory holds the robot with `why` and sends no goal; once
+    /// it clears, the session resumes by its usual rules (tracking back for `resume_after_nanos`,
+    /// the robot at home or at the handover point, the lock still verified).
+    pub fn set_robot_unready(&mut self, why: Option<String>) {
+        if why != self.robot_unready {
+            match &why {
+                Some(w) => tracing::warn!(reason = %w, "robot not ready"),
+                None => tracing::info!("robot ready"),
+            }
+            self.robot_unready = why;
+        }
+    }
+
+    /// Why the robot side is not ready, if it is not.
+    pub fn robot_unready(&self) -> Option<&str> {
+        self.robot_unready.as_deref()
     }
 
     /// Ctrl-C or a backend failure: hold the robot and end the session.
@@ -464,6 +488,16 @@ impl SessionMachine {
             Motion::Moving(Leg::ToHandover) if at_handover => self.motion = Motion::AtHandover,
             Motion::Moving(Leg::ToHome) if at_home => self.motion = Motion::AtHome,
             _ => {}
+        }
+        // The robot side not ready: held, nothing sent, until it is (then the usual resume rules).
+        if let Some(why) = self.robot_unready.clone() {
+            self.tracking_back_since = None;
+            if self.state == SessionState::Held {
+                self.set_hold_reason(&why);
+            } else {
+                self.hold(now_nanos, robot, &why, events);
+            }
+            return;
         }
 
         // Has the operator left? Last tracked farther than `exit_radius_m` from the station (still in
