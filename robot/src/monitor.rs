@@ -226,6 +226,10 @@ enum Phase {
     AtRest(Option<Vec<f64>>),
 }
 
+/// How much of the stall window must show a standing robot before a path or lag verdict is
+/// reported as a stall instead (five samples at 250 Hz).
+const STALL_EVIDENCE_S: f64 = 0.02;
+
 /// The execution monitor of one robot (see the module doc).
 #[derive(Debug, Clone)]
 pub struct ExecutionMonitor {
@@ -443,9 +447,13 @@ impl ExecutionMonitor {
                         _ => {}
                     }
                 }
-                let verdict = self
-                    .check_path(&leg, t, q)
-                    .and_then(|()| self.check_stall(&leg, t, q));
+                self.push_window(&leg, t, q);
+                // A robot off its path that has not moved since the window began stalled: say so
+                // (it is also late, but "lags" would hide that it stopped dead).
+                let verdict = match self.check_path(&leg, t, q) {
+                    Ok(()) => self.stalled(&leg, t, self.settings.stall_window_s),
+                    Err(d) => self.stalled(&leg, t, STALL_EVIDENCE_S).and(Err(d)),
+                };
                 (Phase::Moving { leg, t0_nanos }, verdict)
             }
             Phase::Stopping { until_nanos } if now_nanos >= until_nanos => {
@@ -525,21 +533,29 @@ impl ExecutionMonitor {
         })
     }
 
-    fn check_stall(&mut self, leg: &Leg, t: f64, q: &[f64]) -> Result<(), Deviation> {
+    /// Keeps (t, measured, locked) over the stall window.
+    fn push_window(&mut self, leg: &Leg, t: f64, q: &[f64]) {
         leg.at(t.min(leg.duration_s()), &mut self.scratch);
         self.window.push_back((t, q.to_vec(), self.scratch.clone()));
         let w = self.settings.stall_window_s;
         while self.window.len() > 2 && self.window.get(1).is_some_and(|(t1, ..)| t - t1 >= w) {
             self.window.pop_front();
         }
-        let (Some((t_old, q_old, r_old)), Some((_, q_new, r_new))) =
-            (self.window.front(), self.window.back())
+    }
+
+    /// `Err(Stalled)` when, over the last `min_span_s` (at most the window), the lock moved clearly
+    /// (more than the rest tolerance) and the robot by under a fifth of that.
+    fn stalled(&self, leg: &Leg, t: f64, min_span_s: f64) -> Result<(), Deviation> {
+        // The newest sample at least `min_span_s` old: the robot's motion since then.
+        let old = self
+            .window
+            .iter()
+            .rev()
+            .find(|(t_i, ..)| t - t_i >= min_span_s);
+        let (Some((t_old, q_old, r_old)), Some((_, q_new, r_new))) = (old, self.window.back())
         else {
             return Ok(());
         };
-        if t - t_old < w {
-            return Ok(());
-        }
         let max_delta = |a: &[f64], b: &[f64]| {
             a.iter()
                 .zip(b)
@@ -548,7 +564,6 @@ impl ExecutionMonitor {
         };
         let locked = max_delta(r_new, r_old);
         let moved = max_delta(q_new, q_old);
-        // The lock moved clearly (more than the rest tolerance) and the robot by under a fifth of it.
         if locked > self.settings.rest_tolerance_rad && moved < 0.2 * locked {
             return Err(Deviation::Stalled {
                 leg: leg.label.clone(),
@@ -755,6 +770,26 @@ mod tests {
         let (t, d) = run(&mut m, 2.0, |t| truth(t.min(0.4))).unwrap();
         assert!(matches!(d, Deviation::Stalled { .. }), "{d}");
         assert!(t > 0.4 && t <= 0.51, "caught at {t}");
+    }
+
+    #[test]
+    fn a_robot_that_stops_dead_at_speed_is_named_stalled_when_it_leaves_its_path() {
+        // Tight path tolerances: the path is left before the stall window fills; it is a stall all
+        // the same (the robot stands while the lock moves), not a lag.
+        let mut m = moving();
+        let (t, d) = run(&mut m, 2.0, |t| truth(t.min(0.4))).unwrap();
+        assert!(t > 0.4 && t <= 0.46, "caught at {t}");
+        match d {
+            Deviation::Stalled {
+                moved_rad,
+                locked_moved_rad,
+                ..
+            } => assert!(
+                moved_rad < 0.2 * locked_moved_rad && locked_moved_rad > 0.02,
+                "{d}"
+            ),
+            other => panic!("{other}"),
+        }
     }
 
     #[test]
