@@ -191,23 +191,37 @@ pub struct GoalTolerances {
     pub goal_time_s: f64,
 }
 
-/// The goal for `trajectory`, with `tolerances` on every joint it names.
-pub fn goal(trajectory: JointTrajectory, tolerances: GoalTolerances) -> FollowJointTrajectoryGoal {
-    let per_joint = |position: f64| {
+/// The goal for `trajectory`, with `tolerances` on every joint it names; `path_rad`, when it has one
+/// value per joint of the trajectory (in its order), are the joints' own path tolerances (derived from
+/// the lock) instead of `tolerances.path_position_rad`.
+pub fn goal(
+    trajectory: JointTrajectory,
+    path_rad: &[f64],
+    tolerances: GoalTolerances,
+) -> FollowJointTrajectoryGoal {
+    let per_joint = |position: &dyn Fn(usize) -> f64| {
         trajectory
             .joint_names
             .iter()
-            .map(|name| JointTolerance {
+            .enumerate()
+            .map(|(j, name)| JointTolerance {
                 name: name.clone(),
-                position,
+                position: position(j),
                 velocity: 0.0,
                 acceleration: 0.0,
             })
             .collect::<Vec<_>>()
     };
+    let own = path_rad.len() == trajectory.joint_names.len();
     FollowJointTrajectoryGoal {
-        path_tolerance: per_joint(tolerances.path_position_rad),
-        goal_tolerance: per_joint(tolerances.goal_position_rad),
+        path_tolerance: per_joint(&|j| {
+            if own {
+                path_rad[j]
+            } else {
+                tolerances.path_position_rad
+            }
+        }),
+        goal_tolerance: per_joint(&|_| tolerances.goal_position_rad),
         goal_time_tolerance: Duration::from_secs_f64(tolerances.goal_time_s),
         trajectory,
         ..FollowJointTrajectoryGoal::default()
@@ -261,8 +275,19 @@ mod tests {
             joint_names: (1..=7).map(|i| format!("joint_{i}")).collect(),
             ..JointTrajectory::default()
         };
+        let t = GoalTolerances {
+            path_position_rad: 0.05,
+            goal_position_rad: 0.01,
+            goal_time_s: 0.5,
+        };
+        let own: Vec<f64> = (1..=7).map(|j| 0.01 * f64::from(j)).collect();
+        let derived = goal(trajectory.clone(), &own, t);
+        assert_eq!(derived.path_tolerance[2].position, 0.03);
+        assert_eq!(derived.path_tolerance[2].name, "joint_3");
+        assert_eq!(derived.goal_tolerance[2].position, 0.01);
         let g = goal(
             trajectory.clone(),
+            &[],
             GoalTolerances {
                 path_position_rad: 0.05,
                 goal_position_rad: 0.01,

@@ -54,6 +54,10 @@ pub enum ControllerReport {
         label: String,
         reason: String,
     },
+    /// ergocell asked the controller to cancel the running goal.
+    CancelRequested {
+        label: String,
+    },
     /// Feedback: the first message, then every 25th.
     Feedback {
         label: String,
@@ -111,6 +115,7 @@ impl ControllerReport {
                 format!("no answer to the goal ({label}) within {waited_s:.1} s")
             }
             Self::Failed { label, reason } => format!("goal ({label}) failed: {reason}"),
+            Self::CancelRequested { label } => format!("cancel requested ({label})"),
             Self::Feedback {
                 label,
                 count,
@@ -129,6 +134,58 @@ impl ControllerReport {
                 "goal {status} ({label}): {} after {feedback_count} feedback messages",
                 result_text(*error_code, error_string)
             ),
+        }
+    }
+}
+
+impl ControllerReport {
+    /// The report as the `ergocell_msgs/ControllerEvent` published and recorded.
+    pub fn to_message(&self, stamp_nanos: i64) -> crate::msg::ControllerEvent {
+        use crate::msg::{ControllerEvent, Header};
+        let base = |kind: &str, label: &str| ControllerEvent {
+            header: Header::new(stamp_nanos, ""),
+            kind: kind.to_owned(),
+            leg: label.to_owned(),
+            max_error: f64::NAN,
+            ..ControllerEvent::default()
+        };
+        match self {
+            Self::Accepted { label } => base("accepted", label),
+            Self::Rejected { label } => ControllerEvent {
+                text: self.failure().unwrap_or_default(),
+                ..base("rejected", label)
+            },
+            Self::NoResponse { label, .. } => ControllerEvent {
+                text: self.describe(),
+                ..base("no_response", label)
+            },
+            Self::Failed { label, reason } => ControllerEvent {
+                text: reason.clone(),
+                ..base("failed", label)
+            },
+            Self::CancelRequested { label } => base("cancel_requested", label),
+            Self::Feedback {
+                label,
+                count,
+                max_error_rad,
+            } => ControllerEvent {
+                feedback_count: u32::try_from(*count).unwrap_or(u32::MAX),
+                max_error: max_error_rad.unwrap_or(f64::NAN),
+                ..base("feedback", label)
+            },
+            Self::Finished {
+                label,
+                status,
+                error_code,
+                error_string,
+                feedback_count,
+            } => ControllerEvent {
+                status: (*status).to_owned(),
+                error_code: *error_code,
+                text: error_string.clone(),
+                feedback_count: u32::try_from(*feedback_count).unwrap_or(u32::MAX),
+                ..base("finished", label)
+            },
         }
     }
 }
@@ -245,6 +302,7 @@ pub async fn run_controller<F>(
                 c = commands.recv() => match c {
                     None => return,
                     Some(ControllerCommand::Cancel) => {
+                        report(ControllerReport::CancelRequested { label: label.clone() });
                         let cancel = client.async_cancel_goal(goal_id, Time::ZERO);
                         if tokio::time::timeout(response_timeout, cancel).await.is_err() {
                             report(ControllerReport::Failed {
@@ -314,6 +372,32 @@ mod tests {
             feedback_count: 3,
         };
         assert_eq!(canceled.failure(), None);
+        let m = aborted.to_message(7);
+        assert_eq!(
+            (
+                m.kind.as_str(),
+                m.status.as_str(),
+                m.error_code,
+                m.feedback_count
+            ),
+            ("finished", "aborted", -4, 10)
+        );
+        assert_eq!(m.text, "joint_2 0.3 rad off");
+        assert_eq!(m.header.stamp.to_nanos(), 7);
+        let m = ControllerReport::Feedback {
+            label: l(),
+            count: 25,
+            max_error_rad: Some(0.002),
+        }
+        .to_message(0);
+        assert_eq!(
+            (m.kind.as_str(), m.feedback_count, m.max_error),
+            ("feedback", 25, 0.002)
+        );
+        assert!(ControllerReport::Accepted { label: l() }
+            .to_message(0)
+            .max_error
+            .is_nan());
         assert!(ControllerReport::NoResponse {
             label: l(),
             waited_s: 5.0

@@ -395,6 +395,92 @@ impl RosMessage for PostureWarning {
     ];
 }
 
+/// `ergocell_msgs/ControllerEvent`: what the robot side did (the controller's answers, ergocell's
+/// cancel requests, the execution monitor's verdicts, the driver's state).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct ControllerEvent {
+    pub header: Header,
+    pub kind: String,
+    pub leg: String,
+    pub status: String,
+    pub error_code: i32,
+    pub text: String,
+    pub feedback_count: u32,
+    pub max_error: f64,
+    pub sample_stamp: Time,
+}
+
+impl RosMessage for ControllerEvent {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "ControllerEvent";
+    const DEFINITION: &'static str =
+        include_str!("../../ros2/ergocell_msgs/msg/ControllerEvent.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &HEADER_DEPS;
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("string", "kind"),
+        ("string", "leg"),
+        ("string", "status"),
+        ("int32", "error_code"),
+        ("string", "text"),
+        ("uint32", "feedback_count"),
+        ("float64", "max_error"),
+        ("builtin_interfaces/Time", "sample_stamp"),
+    ];
+}
+
+/// `kuka_driver_interfaces/HardwareEvent` (kroshu/kuka_drivers' `event_broadcaster/hardware_event`).
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct HardwareEvent {
+    pub robot_name: String,
+    pub event: u8,
+}
+
+impl HardwareEvent {
+    pub const COMMAND_ACCEPTED: u8 = 2;
+    pub const CONTROL_STARTED: u8 = 3;
+    pub const CONTROL_STOPPED: u8 = 4;
+    pub const CONTROL_MODE_SWITCH: u8 = 5;
+    pub const ERROR: u8 = 6;
+
+    /// The event in words.
+    pub fn describe(&self) -> String {
+        let what = match self.event {
+            Self::COMMAND_ACCEPTED => "command accepted",
+            Self::CONTROL_STARTED => "control started",
+            Self::CONTROL_STOPPED => "stopped by user",
+            Self::CONTROL_MODE_SWITCH => "control mode switched",
+            Self::ERROR => "stopped by error",
+            _ => "unknown event",
+        };
+        format!("{what} ({})", self.event)
+    }
+}
+
+impl RosMessage for HardwareEvent {
+    const PACKAGE: &'static str = "kuka_driver_interfaces";
+    const NAME: &'static str = "HardwareEvent";
+    const DEFINITION: &'static str =
+        include_str!("../../ros2/kuka_driver_interfaces/msg/HardwareEvent.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[];
+    const FIELDS: &'static [(&'static str, &'static str)] =
+        &[("string", "robot_name"), ("uint8", "event")];
+}
+
+/// `std_msgs/Bool` (kuka_drivers' `robot_manager/is_configured`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct BoolMsg {
+    pub data: bool,
+}
+
+impl RosMessage for BoolMsg {
+    const PACKAGE: &'static str = "std_msgs";
+    const NAME: &'static str = "Bool";
+    const DEFINITION: &'static str = "bool data\n";
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[];
+    const FIELDS: &'static [(&'static str, &'static str)] = &[("bool", "data")];
+}
+
 /// `geometry_msgs/Point`, metres.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Point {
@@ -583,6 +669,9 @@ mod tests {
         check::<ErgonomicState>();
         check::<PostureWarning>();
         check::<MarkerArray>();
+        check::<ControllerEvent>();
+        check::<HardwareEvent>();
+        check::<BoolMsg>();
         let marker: Vec<String> = msg_fields(MARKER_DEF).into_iter().map(|(_, n)| n).collect();
         assert_eq!(marker.len(), 19, "Jazzy Marker has 19 fields");
         assert_eq!(marker[3], "type");

@@ -8,6 +8,8 @@
 //! | `<controller>/joint_trajectory` | cell → driver | reliable | volatile | keep last 1 | a command must arrive; an old command must never be replayed to a late-joining driver |
 //! | `/ergocell/session_state` | cell → all | reliable | transient local | keep last 1 | the state a late joiner (RViz, a Jetson restarting) must see at once |
 //! | `/ergocell/session_events` | cell → all | reliable | transient local | keep last 100 | every event reaches every reader, also several in one step (keep-last-1 `session_state` keeps only the newest: `class_decided` and `trajectory_locked` were overwritten by `working`); a late joiner gets the recent ones |
+//! | `/ergocell/controller_events` | cell → all | reliable | transient local | keep last 100 | every goal answer, cancel, monitor verdict and driver change, in order (recorded too) |
+//! | `robot_manager/is_configured`, `event_broadcaster/hardware_event` | driver → cell | best effort reader | volatile | keep last 10 | kuka_drivers publishes them best effort on each change; a best-effort reader matches any writer |
 //! | `/ergocell/warnings` | cell → all | reliable | transient local | keep last 20 | every warning must arrive; the recent ones for late joiners |
 //! | `/ergocell/ergonomics`, `/ergocell/skeleton` | cell → all | reliable | volatile | keep last 10 | per-frame state for displays |
 //!
@@ -79,6 +81,20 @@ pub const ACTION_STATUS: TopicQos = TopicQos {
     reliability: Reliability::Reliable,
     durability: Durability::TransientLocal,
     depth: 1,
+};
+/// Controller events (goals, results, cancels, monitor verdicts, driver state): every one, in order.
+pub const CONTROLLER_EVENTS: TopicQos = TopicQos {
+    reliability: Reliability::Reliable,
+    durability: Durability::TransientLocal,
+    depth: 100,
+};
+/// The KUKA driver's state topics as read by the cell: kuka_drivers publishes `is_configured` best
+/// effort, keep last 1, volatile (on each change only); a best-effort volatile reader matches every
+/// writer.
+pub const DRIVER_STATE: TopicQos = TopicQos {
+    reliability: Reliability::BestEffort,
+    durability: Durability::Volatile,
+    depth: 10,
 };
 /// Posture warnings.
 pub const WARNINGS: TopicQos = TopicQos {

@@ -56,11 +56,20 @@ pub fn cell_enclaves(ros: &RosConfig) -> Vec<EnclaveSpec> {
         ros.ergonomics_topic.clone(),
         ros.warnings_topic.clone(),
         ros.skeleton_topic.clone(),
+        ros.controller_events_topic.clone(),
     ];
     let mut out = vec![EnclaveSpec {
         name: "/ergocell/cell".to_owned(),
         publish: [vec![ros.joint_trajectory_topic.clone()], session.clone()].concat(),
-        subscribe: [cameras.clone(), vec![ros.joint_states_topic.clone()]].concat(),
+        subscribe: [
+            cameras.clone(),
+            vec![
+                ros.joint_states_topic.clone(),
+                ros.is_configured_topic.clone(),
+                ros.hardware_event_topic.clone(),
+            ],
+        ]
+        .concat(),
     }];
     for (id, topic) in ros.cameras.iter().zip(&cameras) {
         out.push(EnclaveSpec {
@@ -89,7 +98,11 @@ pub fn cell_enclaves(ros: &RosConfig) -> Vec<EnclaveSpec> {
     });
     out.push(EnclaveSpec {
         name: "/robot/controller".to_owned(),
-        publish: vec![ros.joint_states_topic.clone()],
+        publish: vec![
+            ros.joint_states_topic.clone(),
+            ros.is_configured_topic.clone(),
+            ros.hardware_event_topic.clone(),
+        ],
         subscribe: vec![
             ros.joint_trajectory_topic.clone(),
             ros.session_state_topic.clone(),

@@ -23,6 +23,12 @@ pub fn camera_id(topic: &str) -> Option<&str> {
 pub const SESSION_STATE: &str = "/ergocell/session_state";
 /// Every session event (state changes, class decided, trajectory locked, refusals, cameras), in order.
 pub const SESSION_EVENTS: &str = "/ergocell/session_events";
+/// The robot side's events (`ergocell_msgs/ControllerEvent`).
+pub const CONTROLLER_EVENTS: &str = "/ergocell/controller_events";
+/// kuka_drivers' robot manager: `std_msgs/Bool`, true once the driver is configured.
+pub const IS_CONFIGURED: &str = "/robot_manager/is_configured";
+/// kuka_drivers' event broadcaster: `kuka_driver_interfaces/HardwareEvent`.
+pub const HARDWARE_EVENT: &str = "/event_broadcaster/hardware_event";
 pub const ERGONOMICS: &str = "/ergocell/ergonomics";
 pub const WARNINGS: &str = "/ergocell/warnings";
 /// The fused skeleton (`visualization_msgs/MarkerArray`).

@@ -6,15 +6,13 @@
 //! ros2_control joint trajectory controller then drops its goal and stops). It is not an emergency
 //! stop; that stays with the robot's safety controller.
 
-pub use ros2_client::Publisher;
-use ros2_client::{
-    Context, MessageTypeName, Name, Node, NodeName, NodeOptions, QosProfile, Subscription,
-};
+use ros2_client::{Context, MessageTypeName, Name, Node, NodeName, NodeOptions, QosProfile};
+pub use ros2_client::{Publisher, Subscription};
 use serde::Deserialize;
 
 use crate::msg::{
-    CameraLandmarks, ErgonomicState, JointState, JointTrajectory, MarkerArray, PostureWarning,
-    RosMessage, SessionState,
+    BoolMsg, CameraLandmarks, ControllerEvent, ErgonomicState, HardwareEvent, JointState,
+    JointTrajectory, MarkerArray, PostureWarning, RosMessage, SessionState,
 };
 use crate::qos::{self, TopicQos};
 use crate::scope::{DiscoveryRange, NetworkScope};
@@ -63,6 +61,33 @@ pub struct RosConfig {
     /// How late the goal may arrive after its last point's time (seconds).
     #[serde(default = "default_goal_time_tolerance")]
     pub goal_time_tolerance_s: f64,
+    /// The execution monitor (`ergocell_robot::monitor`): every `/joint_states` sample against the
+    /// locked leg; a deviation cancels and holds, and ends the session.
+    #[serde(default = "default_true")]
+    pub monitor_execution: bool,
+    /// Joint states older than this (seconds) are stale: the robot is held until they are back.
+    #[serde(default = "default_joint_state_timeout")]
+    pub joint_state_timeout_s: f64,
+    /// At rest (a leg arrived, a hold stopped), the largest motion allowed (radians).
+    #[serde(default = "default_rest_tolerance")]
+    pub rest_tolerance_rad: f64,
+    /// A stall is judged over this window (seconds).
+    #[serde(default = "default_stall_window")]
+    pub stall_window_s: f64,
+    /// After a hold, the time the robot has to come to rest (seconds).
+    #[serde(default = "default_stop_time")]
+    pub stop_time_s: f64,
+    /// Read the KUKA driver's state (kuka_drivers conventions) and send no goal unless it is
+    /// configured and controlling; "stopped by user" or "stopped by error" hold the robot.
+    #[serde(default)]
+    pub driver_state: bool,
+    #[serde(default = "default_is_configured")]
+    pub is_configured_topic: String,
+    #[serde(default = "default_hardware_event")]
+    pub hardware_event_topic: String,
+    /// The robot side's events: goal answers, cancels, monitor verdicts, driver changes.
+    #[serde(default = "default_controller_events")]
+    pub controller_events_topic: String,
     #[serde(default = "default_session_state")]
     pub session_state_topic: String,
     /// Every session event in order (the same `SessionState` messages, deeper history).
@@ -133,6 +158,30 @@ fn default_goal_tolerance() -> f64 {
 fn default_goal_time_tolerance() -> f64 {
     1.0
 }
+fn default_true() -> bool {
+    true
+}
+fn default_joint_state_timeout() -> f64 {
+    0.1
+}
+fn default_rest_tolerance() -> f64 {
+    0.01
+}
+fn default_stall_window() -> f64 {
+    0.1
+}
+fn default_stop_time() -> f64 {
+    0.5
+}
+fn default_is_configured() -> String {
+    topics::IS_CONFIGURED.to_owned()
+}
+fn default_hardware_event() -> String {
+    topics::HARDWARE_EVENT.to_owned()
+}
+fn default_controller_events() -> String {
+    topics::CONTROLLER_EVENTS.to_owned()
+}
 fn default_session_state() -> String {
     topics::SESSION_STATE.into()
 }
@@ -183,6 +232,18 @@ impl RosConfig {
                 f64::MIN_POSITIVE,
             ),
             ("goal_time_tolerance_s", cfg.goal_time_tolerance_s, 0.0),
+            (
+                "joint_state_timeout_s",
+                cfg.joint_state_timeout_s,
+                f64::MIN_POSITIVE,
+            ),
+            (
+                "rest_tolerance_rad",
+                cfg.rest_tolerance_rad,
+                f64::MIN_POSITIVE,
+            ),
+            ("stall_window_s", cfg.stall_window_s, f64::MIN_POSITIVE),
+            ("stop_time_s", cfg.stop_time_s, 0.0),
         ] {
             if !(value.is_finite() && value >= min && value <= 10.0) {
                 return Err(BridgeError::Config(format!(
@@ -410,6 +471,9 @@ pub struct CellTopics {
     pub ergonomics: Publisher<ErgonomicState>,
     pub warnings: Publisher<PostureWarning>,
     pub skeleton: Publisher<MarkerArray>,
+    pub controller_events: Publisher<ControllerEvent>,
+    /// With `driver_state`: kuka_drivers' `is_configured` and `hardware_event`.
+    pub driver: Option<(Subscription<BoolMsg>, Subscription<HardwareEvent>)>,
 }
 
 impl CellTopics {
@@ -430,6 +494,16 @@ impl CellTopics {
             ergonomics: node.publisher(&cfg.ergonomics_topic, qos::PER_FRAME_STATE)?,
             warnings: node.publisher(&cfg.warnings_topic, qos::WARNINGS)?,
             skeleton: node.publisher(&cfg.skeleton_topic, qos::PER_FRAME_STATE)?,
+            controller_events: node
+                .publisher(&cfg.controller_events_topic, qos::CONTROLLER_EVENTS)?,
+            driver: if cfg.driver_state {
+                Some((
+                    node.subscription(&cfg.is_configured_topic, qos::DRIVER_STATE)?,
+                    node.subscription(&cfg.hardware_event_topic, qos::DRIVER_STATE)?,
+                ))
+            } else {
+                None
+            },
         })
     }
 }

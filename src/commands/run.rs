@@ -21,13 +21,14 @@ use ergocell::session::{
 };
 use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
 use ergocell_bridge::controller::{run_controller, ControllerCommand, ControllerReport};
-use ergocell_bridge::msg::{CameraLandmarks, JointState, JointTrajectory};
+use ergocell_bridge::msg::{CameraLandmarks, ControllerEvent, JointState, JointTrajectory};
 use ergocell_bridge::qos;
 use ergocell_bridge::transport::{
     publish, CellTopics, Publisher, RobotInterface, RosConfig, RosNode,
 };
 use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
+use ergocell_robot::monitor::{ExecutionMonitor, MonitorSettings};
 use futures::StreamExt as _;
 
 use super::signals::{Signal, StopFlag, Stopped};
@@ -120,6 +121,7 @@ fn now_nanos() -> i64 {
 /// is noticed on the next tick and reported once, and the session goes on as if nothing happened.
 /// (The cameras' stamps are their own clock's: a camera whose clock steps is handled by the staleness
 /// and fusion windows, which compare arrival times on this clock.)
+#[derive(Clone)]
 struct SessionClock {
     wall0_nanos: i64,
     mono0: std::time::Instant,
@@ -167,17 +169,28 @@ fn instant() -> std::time::Instant {
     std::time::Instant::now()
 }
 
-/// The robot over ROS 2: commands published on the trajectory topic, positions from `/joint_states`.
+/// The robot over ROS 2: commands published on the trajectory topic (or sent as FollowJointTrajectory
+/// goals), positions from `/joint_states`, and the execution monitor that judges every sample.
 struct RosRobot {
     /// The controller's `joint_trajectory` topic: every command in topic mode, and in action mode the
     /// empty trajectory of a hold too (it overrides any active goal), beside the cancel.
-    publisher: Publisher<JointTrajectory>,
+    publisher: Arc<Publisher<JointTrajectory>>,
     /// Action mode: the FollowJointTrajectory task's commands and the goals' tolerances.
     action: Option<(
         tokio::sync::mpsc::UnboundedSender<ControllerCommand>,
         ergocell_bridge::action::GoalTolerances,
     )>,
     latest: Arc<Mutex<Option<JointState>>>,
+    /// Where the path tolerances come from (the lock files) and the `[ros]` settings.
+    provider: FileTrajectories,
+    ros: RosConfig,
+    /// The last lock's hash and its derived path tolerances.
+    tolerances: Option<(String, Vec<f64>)>,
+    /// The execution monitor, once a leg was sent (`[ros] monitor_execution`); shared with the
+    /// monitor task, which judges every sample with it.
+    monitor: Arc<Mutex<Option<ExecutionMonitor>>>,
+    /// Controller events to publish and record (the loop drains it).
+    events: Vec<ControllerEvent>,
 }
 
 impl RosRobot {
@@ -186,6 +199,71 @@ impl RosRobot {
             backend: "ROS 2 joint trajectory",
             reason: format!("{e:?}"),
         })
+    }
+
+    /// The path tolerances of the lock `lock_sha256`, derived once per lock.
+    fn path_tolerances(&mut self, lock_sha256: &str) -> Result<Vec<f64>, BackendError> {
+        if let Some((sha, t)) = &self.tolerances {
+            if sha == lock_sha256 {
+                return Ok(t.clone());
+            }
+        }
+        let t = self
+            .provider
+            .path_tolerances(lock_sha256, self.ros.path_tolerance_rad)
+            .map_err(|e| BackendError {
+                backend: "execution monitor",
+                reason: e.to_string(),
+            })?;
+        self.tolerances = Some((lock_sha256.to_owned(), t.clone()));
+        Ok(t)
+    }
+
+    /// Starts monitoring `trajectory` (a leg just sent), making the monitor if needed.
+    fn watch_leg(
+        &mut self,
+        now_nanos: i64,
+        label: &str,
+        trajectory: &ergocell::session::LegTrajectory,
+        path_rad: &[f64],
+    ) -> Result<(), BackendError> {
+        let refused = |e: ergocell_robot::monitor::MonitorError| BackendError {
+            backend: "execution monitor",
+            reason: e.to_string(),
+        };
+        let mut guard = self.monitor.lock().map_err(|_| BackendError {
+            backend: "execution monitor",
+            reason: "the monitor task failed".to_owned(),
+        })?;
+        let fits = guard.as_ref().is_some_and(|m| {
+            m.joints() == trajectory.joint_names.as_slice()
+                && m.settings().path_tolerance_rad == path_rad
+        });
+        if !fits {
+            let settings = MonitorSettings {
+                path_tolerance_rad: path_rad.to_vec(),
+                goal_tolerance_rad: self.ros.goal_tolerance_rad,
+                goal_time_tolerance_s: self.ros.goal_time_tolerance_s,
+                rest_tolerance_rad: self.ros.rest_tolerance_rad,
+                stall_window_s: self.ros.stall_window_s,
+                stop_time_s: self.ros.stop_time_s,
+            };
+            *guard = Some(
+                ExecutionMonitor::new(trajectory.joint_names.clone(), settings).map_err(refused)?,
+            );
+        }
+        if let Some(m) = guard.as_mut() {
+            let p = &trajectory.points;
+            m.leg_sent(
+                now_nanos,
+                label,
+                p.iter().map(|k| k.time_from_start_s).collect(),
+                p.iter().map(|k| k.positions_rad.clone()).collect(),
+                p.iter().map(|k| k.velocities_rad_s.clone()).collect(),
+            )
+            .map_err(refused)?;
+        }
+        Ok(())
     }
 }
 
@@ -197,27 +275,88 @@ fn leg_label(leg: ergocell::session::Leg) -> &'static str {
     }
 }
 
+/// A controller event of `kind` about `leg` with `text`.
+fn controller_event(now_nanos: i64, kind: &str, leg: &str, text: String) -> ControllerEvent {
+    ControllerEvent {
+        header: ergocell_bridge::msg::Header::new(now_nanos, ""),
+        kind: kind.to_owned(),
+        leg: leg.to_owned(),
+        text,
+        max_error: f64::NAN,
+        ..ControllerEvent::default()
+    }
+}
+
 impl RobotSink for RosRobot {
     fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError> {
         let message = messages::command_message(command, now_nanos);
-        let Some((commands, tolerances)) = &self.action else {
-            return self.publish(message);
-        };
-        let stopped = |_| BackendError {
-            backend: "ROS 2 FollowJointTrajectory",
-            reason: "the controller task has stopped".to_owned(),
-        };
         match command {
-            RobotCommand::Execute { leg, .. } => commands
-                .send(ControllerCommand::Execute {
-                    label: leg_label(*leg).to_owned(),
-                    goal: Box::new(ergocell_bridge::action::goal(message, *tolerances)),
-                })
-                .map_err(stopped),
+            RobotCommand::Execute {
+                leg,
+                lock_sha256,
+                trajectory,
+            } => {
+                let label = leg_label(*leg);
+                // No tolerances, no monitor: the leg is not sent (the robot does not move).
+                let path_rad = self.path_tolerances(lock_sha256)?;
+                if self.ros.monitor_execution {
+                    self.watch_leg(now_nanos, label, trajectory, &path_rad)?;
+                }
+                match &self.action {
+                    None => {
+                        self.publish(message)?;
+                        // The controller starts a topic trajectory on receipt.
+                        if let Some(m) = self.monitor.lock().ok().as_mut().and_then(|g| g.as_mut())
+                        {
+                            m.leg_started(now_nanos);
+                        }
+                    }
+                    Some((commands, tolerances)) => commands
+                        .send(ControllerCommand::Execute {
+                            label: label.to_owned(),
+                            goal: Box::new(ergocell_bridge::action::goal(
+                                message,
+                                &path_rad,
+                                *tolerances,
+                            )),
+                        })
+                        .map_err(|_| BackendError {
+                            backend: "ROS 2 FollowJointTrajectory",
+                            reason: "the controller task has stopped".to_owned(),
+                        })?,
+                }
+                self.events.push(controller_event(
+                    now_nanos,
+                    "goal_sent",
+                    label,
+                    format!(
+                        "{} points over {:.2} s; path tolerances {} rad",
+                        trajectory.points.len(),
+                        trajectory.duration_s(),
+                        path_rad
+                            .iter()
+                            .map(|t| format!("{t:.4}"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                ));
+                Ok(())
+            }
             RobotCommand::Hold { .. } => {
+                if let Some(m) = self.monitor.lock().ok().as_mut().and_then(|g| g.as_mut()) {
+                    m.held(now_nanos);
+                }
+                let Some((commands, _)) = &self.action else {
+                    return self.publish(message);
+                };
                 // Both, so that either stops the robot: the cancel ends the goal the controller
                 // reports on, the empty trajectory overrides whatever it runs.
-                let cancel = commands.send(ControllerCommand::Cancel).map_err(stopped);
+                let cancel = commands
+                    .send(ControllerCommand::Cancel)
+                    .map_err(|_| BackendError {
+                        backend: "ROS 2 FollowJointTrajectory",
+                        reason: "the controller task has stopped".to_owned(),
+                    });
                 self.publish(message)?;
                 cancel
             }
@@ -230,6 +369,213 @@ impl RobotSink for RosRobot {
             .ok()?
             .as_ref()
             .and_then(|js| js.positions_for(names))
+    }
+}
+
+/// The KUKA driver's state as kuka_drivers reports it (`[ros] driver_state`).
+#[derive(Debug, Default)]
+struct DriverState {
+    configured: Option<bool>,
+    controlling: bool,
+    /// "stopped by user (4)" / "stopped by error (6)" since the last "control started".
+    stopped: Option<String>,
+}
+
+impl DriverState {
+    fn on_event(&mut self, e: &ergocell_bridge::msg::HardwareEvent) {
+        use ergocell_bridge::msg::HardwareEvent as H;
+        match e.event {
+            H::CONTROL_STARTED => {
+                self.controlling = true;
+                self.stopped = None;
+            }
+            H::CONTROL_STOPPED | H::ERROR => {
+                self.controlling = false;
+                self.stopped = Some(e.describe());
+            }
+            _ => {}
+        }
+    }
+
+    /// Why no goal may be sent now, if none may.
+    fn unready(&self) -> Option<String> {
+        match self.configured {
+            None => return Some("waiting for the KUKA driver: no is_configured yet".to_owned()),
+            Some(false) => return Some("the KUKA driver is not configured".to_owned()),
+            Some(true) => {}
+        }
+        if let Some(s) = &self.stopped {
+            return Some(format!("the KUKA driver reports: {s}"));
+        }
+        (!self.controlling).then(|| "waiting for the KUKA driver: control not started".to_owned())
+    }
+}
+
+/// What the monitor task tells the session loop.
+enum MonitorNote {
+    /// A joint state as it arrived (session time), for the recording.
+    Sample(JointState, i64),
+    /// The execution deviated: the goal was cancelled and the robot held already.
+    Deviation {
+        event: ControllerEvent,
+        held_after_ms: f64,
+    },
+    /// No joint state for longer than the timeout.
+    Stale(ControllerEvent),
+    /// Joint states again after a stale spell.
+    Back(ControllerEvent),
+}
+
+#[derive(Debug, Default)]
+struct MonitorStats {
+    /// Arrival → verdict, microseconds, every judged sample.
+    verdict_us: Vec<f64>,
+}
+
+/// What the monitor task shares with the session loop.
+struct MonitorLinks {
+    monitor: Arc<Mutex<Option<ExecutionMonitor>>>,
+    latest: Arc<Mutex<Option<JointState>>>,
+    /// The controller's trajectory topic: a deviation publishes the empty trajectory (hold) at once.
+    hold: Arc<Publisher<JointTrajectory>>,
+    /// Action mode: a deviation cancels the goal at once.
+    cancel: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
+    notes: tokio::sync::mpsc::UnboundedSender<MonitorNote>,
+    stats: Arc<Mutex<MonitorStats>>,
+}
+
+/// The execution monitor's own task: it alone reads `/joint_states`, judges every sample as it
+/// arrives and, on the first deviation, cancels the goal and publishes the hold itself (the session
+/// loop may be busy verifying a lock or fusing a frame; the robot must not wait for it), then tells
+/// the loop, which ends the session. Every 5 ms it checks for stale joint states.
+async fn monitor_task(
+    joint_states: ergocell_bridge::transport::Subscription<JointState>,
+    links: MonitorLinks,
+    clock: SessionClock,
+    timeout_s: f64,
+) {
+    let mut stream = Box::pin(joint_states.async_stream());
+    let mut tick = tokio::time::interval(Duration::from_millis(5));
+    let mut tripped = false;
+    let mut stale = false;
+    let note = |n: MonitorNote| {
+        // The loop is gone when nobody listens: the session is over.
+        let _ = links.notes.send(n);
+    };
+    loop {
+        tokio::select! {
+            item = stream.next() => {
+                let Some(Ok((js, _))) = item else {
+                    if item.is_none() {
+                        return;
+                    }
+                    continue;
+                };
+                let js: JointState = js;
+                let arrival = instant();
+                let now = clock.now();
+                let judged = links.monitor.lock().ok().and_then(|mut g| {
+                    let m = g.as_mut()?;
+                    if stale {
+                        m.resync_rest();
+                    }
+                    let verdict = match js.positions_for(m.joints()) {
+                        Some(p) => m.observe(now, &p),
+                        None => Err(ergocell_robot::monitor::Deviation::BadSample {
+                            reason: format!(
+                                "a joint state without every joint of the lock ({})",
+                                m.joints().join(", ")
+                            ),
+                        }),
+                    };
+                    Some((verdict, m.worst_path_ratio().0))
+                });
+                if let Some((verdict, worst)) = judged {
+                    if let Ok(mut st) = links.stats.lock() {
+                        st.verdict_us.push(arrival.elapsed().as_secs_f64() * 1e6);
+                    }
+                    if stale {
+                        stale = false;
+                        note(MonitorNote::Back(controller_event(now, "monitor", "", "joint states back".to_owned())));
+                    }
+                    if let (Err(d), false) = (verdict, tripped) {
+                        tripped = true;
+                        if let Some(tx) = &links.cancel {
+                            let _ = tx.send(ControllerCommand::Cancel);
+                        }
+                        let hold = messages::command_message(
+                            &RobotCommand::Hold { reason: d.to_string() },
+                            now,
+                        );
+                        if let Err(e) = links.hold.publish(hold) {
+                            tracing::error!(error = ?e, "the execution monitor's hold was not published");
+                        }
+                        let held_after_ms = arrival.elapsed().as_secs_f64() * 1e3;
+                        let mut event = controller_event(now, "monitor", "", d.to_string());
+                        event.max_error = worst;
+                        event.sample_stamp = js.header.stamp;
+                        note(MonitorNote::Deviation { event, held_after_ms });
+                    }
+                }
+                if let Ok(mut l) = links.latest.lock() {
+                    *l = Some(js.clone());
+                }
+                note(MonitorNote::Sample(js, now));
+            }
+            _ = tick.tick() => {
+                let now = clock.now();
+                let age = links.monitor.lock().ok().and_then(|g| g.as_ref()?.stale_for_s(now, timeout_s));
+                if let (Some(age), false) = (age, stale) {
+                    stale = true;
+                    let why = format!("joint states stale (none for more than {timeout_s} s)");
+                    tracing::warn!(age_s = age, "{why}");
+                    note(MonitorNote::Stale(controller_event(now, "monitor", "", why)));
+                }
+            }
+        }
+    }
+}
+
+/// Records a joint state and, once a class is locked, the TCP and handover markers (at most 20 Hz).
+fn record_joint_state(
+    recording: &mut Recording,
+    machine: &SessionMachine,
+    geometry: &mut Option<(
+        ergocell_robot::TrajectoryClass,
+        ergocell::robot_markers::RobotGeometry,
+    )>,
+    last_marker_nanos: &mut i64,
+    js: &JointState,
+    now: i64,
+    provider: impl Fn() -> FileTrajectories,
+) {
+    if !recording.is_on() {
+        return;
+    }
+    recording.with(|rec| rec.write(topics::JOINT_STATES, now, js));
+    let class = machine.locked_class();
+    if geometry.as_ref().map(|(c, _)| *c) != class {
+        *geometry = class.and_then(|c| match provider().robot_geometry(c) {
+            Ok(g) => Some((c, g)),
+            Err(e) => {
+                tracing::warn!(error = %e, "no robot markers in the recording");
+                None
+            }
+        });
+    }
+    if let Some((_, g)) = geometry.as_ref() {
+        if now - *last_marker_nanos >= 50_000_000 {
+            if let Some(p) = g.tcp_world(js) {
+                *last_marker_nanos = now;
+                recording.with(|rec| {
+                    rec.write(
+                        topics::ROBOT_MARKERS,
+                        now,
+                        &messages::robot_markers_message(now, Some(p), Some(g.handover_world())),
+                    )
+                });
+            }
+        }
     }
 }
 
@@ -348,6 +694,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             ergonomics,
             warnings,
             skeleton,
+            controller_events,
+            driver,
         } = CellTopics::new(&mut node, &ros)?;
         let out = Outputs {
             session_state,
@@ -355,6 +703,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             ergonomics,
             warnings,
             skeleton,
+            controller_events,
         };
         let latest = Arc::new(Mutex::new(None::<JointState>));
         let (reports_tx, mut controller_reports) =
@@ -384,13 +733,30 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         // most) before run exits, so the last leg's result is on record.
         let mut goal_outstanding = false;
         let mut robot = RosRobot {
-            publisher: joint_trajectory,
+            publisher: Arc::new(joint_trajectory),
             action,
             latest: latest.clone(),
+            provider: FileTrajectories::new(&args.config, &args.trajectories, &approvals),
+            ros: ros.clone(),
+            tolerances: None,
+            monitor: Arc::new(Mutex::new(None)),
+            events: Vec::new(),
+        };
+        // The execution monitor runs in its own task (below): the hold's latency after a bad sample,
+        // and whether the joint states are stale, as it reported them.
+        let mut hold_after_bad_ms: Option<f64> = None;
+        let mut stale: Option<String> = None;
+        let mut driver_state = driver.as_ref().map(|_| DriverState::default());
+        let mut driver_said: Option<Option<String>> = None;
+        let (mut configured_stream, mut hardware_stream) = match &driver {
+            Some((c, h)) => (c.async_stream().boxed(), h.async_stream().boxed()),
+            None => (
+                futures::stream::pending().boxed(),
+                futures::stream::pending().boxed(),
+            ),
         };
         let mut camera_stream =
             futures::stream::select_all(cameras.iter().map(|s| Box::pin(s.async_stream())));
-        let mut joint_stream = Box::pin(joint_states.async_stream());
         let mut geometry: Option<(
             ergocell_robot::TrajectoryClass,
             ergocell::robot_markers::RobotGeometry,
@@ -400,6 +766,21 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let mut interrupted: Option<Signal> = None;
         let mut clock = SessionClock::start();
         let started = clock.now();
+        let stats = Arc::new(Mutex::new(MonitorStats::default()));
+        let (notes_tx, mut monitor_notes) = tokio::sync::mpsc::unbounded_channel();
+        let monitor_task = tokio::spawn(monitor_task(
+            joint_states,
+            MonitorLinks {
+                monitor: robot.monitor.clone(),
+                latest: latest.clone(),
+                hold: robot.publisher.clone(),
+                cancel: robot.action.as_ref().map(|(tx, _)| tx.clone()),
+                notes: notes_tx,
+                stats: stats.clone(),
+            },
+            clock.clone(),
+            ros.joint_state_timeout_s,
+        ));
         let cpu0 = cpu_secs();
         let wall0 = instant();
         let mut latencies_ms: Vec<f64> = Vec::new();
@@ -414,13 +795,29 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             match ros.robot_interface {
                 RobotInterface::Topic => format!("{} (topic)", ros.joint_trajectory_topic),
                 RobotInterface::Action => format!(
-                    "{} (FollowJointTrajectory, control_msgs of {}; tolerances: path {} rad, goal {} rad, {} s)",
+                    "{} (FollowJointTrajectory, control_msgs of {}; tolerances: path from the lock, at most {} rad, goal {} rad, {} s)",
                     ros.follow_joint_trajectory_action,
                     ros.distro,
                     ros.path_tolerance_rad,
                     ros.goal_tolerance_rad,
                     ros.goal_time_tolerance_s
                 ),
+            }
+        );
+        println!(
+            "execution monitor: {}; driver state: {}",
+            if ros.monitor_execution {
+                format!(
+                    "on (every {} sample against the lock; stale after {} s)",
+                    ros.joint_states_topic, ros.joint_state_timeout_s
+                )
+            } else {
+                "off ([ros] monitor_execution = false)".to_owned()
+            },
+            if ros.driver_state {
+                format!("{} and {}", ros.is_configured_topic, ros.hardware_event_topic)
+            } else {
+                "not read ([ros] driver_state = false)".to_owned()
             }
         );
         let first = messages::session_state_message(&machine, started, "started");
@@ -450,48 +847,61 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                         }
                     }
                 }
-                Some(Ok((js, _))) = joint_stream.next() => {
-                    let js: JointState = js;
-                    if recording.is_on() {
-                        let now = clock.now();
-                        recording.with(|rec| rec.write(topics::JOINT_STATES, now, &js));
-                        // The TCP and handover point once a class is locked, at most 20 Hz.
-                        let class = machine.locked_class();
-                        if geometry.as_ref().map(|(c, _)| *c) != class {
-                            geometry = class.and_then(|c| {
-                                match FileTrajectories::new(&args.config, &args.trajectories, &approvals).robot_geometry(c) {
-                                    Ok(g) => Some((c, g)),
-                                    Err(e) => {
-                                        tracing::warn!(error = %e, "no robot markers in the recording");
-                                        None
-                                    }
-                                }
-                            });
-                        }
-                        if let Some((_, g)) = geometry.as_ref() {
-                            if now - last_marker_nanos >= 50_000_000 {
-                                if let Some(p) = g.tcp_world(&js) {
-                                    last_marker_nanos = now;
-                                    recording.with(|rec| rec.write(
-                                        topics::ROBOT_MARKERS,
-                                        now,
-                                        &messages::robot_markers_message(now, Some(p), Some(g.handover_world())),
-                                    ));
-                                }
-                            }
-                        }
+                Some(note) = monitor_notes.recv() => match note {
+                    MonitorNote::Sample(js, now) => {
+                        record_joint_state(&mut recording, &machine, &mut geometry, &mut last_marker_nanos, &js, now, || {
+                            FileTrajectories::new(&args.config, &args.trajectories, &approvals)
+                        });
+                        continue;
                     }
-                    if let Ok(mut l) = latest.lock() {
-                        *l = Some(js);
+                    MonitorNote::Deviation { event, held_after_ms } => {
+                        println!("  {} — cancelled and held {held_after_ms:.3} ms after the sample arrived", event.text);
+                        hold_after_bad_ms = Some(held_after_ms);
+                        controller_failure.get_or_insert(event.text.clone());
+                        robot.events.push(event);
+                        Vec::new()
                     }
-                    continue;
-                }
+                    MonitorNote::Stale(event) => {
+                        println!("  {}", event.text);
+                        stale = Some(event.text.clone());
+                        robot.events.push(event);
+                        Vec::new()
+                    }
+                    MonitorNote::Back(event) => {
+                        stale = None;
+                        robot.events.push(event);
+                        Vec::new()
+                    }
+                },
                 Some(report) = controller_reports.recv() => {
                     println!("  controller: {}", report.describe());
                     tracing::info!(?report, "controller");
                     goal_outstanding = report.goal_running();
+                    let now = clock.now();
+                    if matches!(report, ControllerReport::Accepted { .. }) {
+                        // The controller starts an accepted goal now.
+                        if let Some(m) = robot.monitor.lock().ok().as_mut().and_then(|g| g.as_mut()) {
+                            m.leg_started(now);
+                        }
+                    }
+                    robot.events.push(report.to_message(now));
                     if let Some(why) = report.failure() {
                         controller_failure.get_or_insert(why);
+                    }
+                    Vec::new()
+                }
+                Some(item) = configured_stream.next() => {
+                    if let (Ok((m, _)), Some(d)) = (item, driver_state.as_mut()) {
+                        let m: ergocell_bridge::msg::BoolMsg = m;
+                        d.configured = Some(m.data);
+                    }
+                    Vec::new()
+                }
+                Some(item) = hardware_stream.next() => {
+                    if let (Ok((m, _)), Some(d)) = (item, driver_state.as_mut()) {
+                        let m: ergocell_bridge::msg::HardwareEvent = m;
+                        println!("  driver: {} ({})", m.describe(), m.robot_name);
+                        d.on_event(&m);
                     }
                     Vec::new()
                 }
@@ -505,6 +915,27 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 );
                 tracing::warn!(step_s = step as f64 * 1e-9, "wall clock stepped");
             }
+            // The robot side's readiness: the driver (configured, controlling), fresh joint states.
+            if let Some(d) = driver_state.as_ref() {
+                let why = d.unready();
+                if driver_said.as_ref() != Some(&why) {
+                    let text = why.clone().unwrap_or_else(|| "configured and controlling".to_owned());
+                    println!("  driver: {text}");
+                    let status = if why.is_some() { "not_ready" } else { "ready" };
+                    let e = ControllerEvent {
+                        status: status.to_owned(),
+                        ..controller_event(now, "driver", "", text)
+                    };
+                    robot.events.push(e);
+                    driver_said = Some(why);
+                }
+            }
+            machine.set_robot_unready(
+                driver_said
+                    .clone()
+                    .flatten()
+                    .or_else(|| stale.clone()),
+            );
             // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
             recording.with(|rec| rec.tick(now));
             // Why the session must end now, if it must, in this order: a recording that cannot be
@@ -528,6 +959,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             };
             if let Some((why, record)) = end {
                 let events = machine.shutdown(now, &mut robot, &why);
+                flush_controller_events(&mut robot.events, &out, &mut recording, now).await?;
                 for e in &events {
                     println!("  {}", messages::describe(e));
                 }
@@ -544,6 +976,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     println!("  {}", messages::describe(e));
                 }
             }
+            flush_controller_events(&mut robot.events, &out, &mut recording, now).await?;
             let outgoing = messages::step_messages(&machine, now, &events);
             let published_frame = publish_messages(&outgoing, &out).await?;
             if let (Some(t0), true) = (arrival, published_frame) {
@@ -568,11 +1001,39 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 Ok(Some(report)) => {
                     println!("  controller: {}", report.describe());
                     goal_outstanding = report.goal_running();
+                    let now = clock.now();
+                    robot.events.push(report.to_message(now));
+                    flush_controller_events(&mut robot.events, &out, &mut recording, now).await?;
                 }
                 Ok(None) | Err(_) => break,
             }
         }
         print_summary(&machine, rejected);
+        monitor_task.abort();
+        if let (Ok(guard), Ok(st)) = (robot.monitor.lock(), stats.lock()) {
+            if let Some(m) = guard.as_ref() {
+                let mut v = st.verdict_us.clone();
+                v.sort_by(f64::total_cmp);
+                let (ratio, joint) = m.worst_path_ratio();
+                println!(
+                    "execution monitor: {} joint states judged, arrival → verdict p50 {:.1} µs, p99 {:.1} µs, max {:.1} µs; largest deviation while moving {:.2} of the path tolerance ({joint}); path tolerances [{}] rad{}",
+                    v.len(),
+                    percentile(&v, 0.5),
+                    percentile(&v, 0.99),
+                    v.last().copied().unwrap_or(f64::NAN),
+                    ratio,
+                    m.settings()
+                        .path_tolerance_rad
+                        .iter()
+                        .map(|t| format!("{t:.4}"))
+                        .collect::<Vec<_>>()
+                        .join(", "),
+                    hold_after_bad_ms.map_or_else(String::new, |ms| format!(
+                        "; cancelled and held {ms:.3} ms after the bad sample arrived"
+                    ))
+                );
+            }
+        }
         if args.latency_report {
             latencies_ms.sort_by(f64::total_cmp);
             let wall = wall0.elapsed().as_secs_f64();
@@ -716,6 +1177,21 @@ struct Outputs {
     ergonomics: Publisher<ergocell_bridge::msg::ErgonomicState>,
     warnings: Publisher<ergocell_bridge::msg::PostureWarning>,
     skeleton: Publisher<ergocell_bridge::msg::MarkerArray>,
+    controller_events: Publisher<ControllerEvent>,
+}
+
+/// Publishes and records the robot side's events, in order.
+async fn flush_controller_events(
+    events: &mut Vec<ControllerEvent>,
+    out: &Outputs,
+    recording: &mut Recording,
+    now: i64,
+) -> anyhow::Result<()> {
+    for e in events.drain(..) {
+        recording.with(|rec| rec.write(topics::CONTROLLER_EVENTS, now, &e));
+        publish(&out.controller_events, e).await?;
+    }
+    Ok(())
 }
 
 /// Publishes a step's outgoing messages (the same ones the recorder writes); true if a RULA state

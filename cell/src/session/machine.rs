@@ -218,9 +218,10 @@ impl SessionMachine {
     /// the robot at home or at the handover point, the lock still verified).
     pub fn set_robot_unready(&mut self, why: Option<String>) {
         if why != self.robot_unready {
-            match &why {
-                Some(w) => tracing::warn!(reason = %w, "robot not ready"),
-                None => tracing::info!("robot ready"),
+            if let Some(w) = &why {
+                tracing::warn!(reason = %w, "robot not ready");
+            } else {
+                tracing::info!("robot ready");
             }
             self.robot_unready = why;
         }
