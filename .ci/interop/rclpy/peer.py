@@ -19,6 +19,16 @@ follows an accepted goal the same way, with feedback at 50 Hz, and ends it by mo
   abort   aborts the first goal 40 % of the way with PATH_TOLERANCE_VIOLATED.
 A cancel request is accepted (canceled, the robot stops where it is).
 
+PEER_JOINT_STATE_HZ sets the joint-state rate (CI: 250 in the action cases). PEER_FAULT=<fault>
+makes the robot misbehave on the first leg: lag (runs at 80 % speed), stall (stops dead 40 % of the
+way), drift (joint_2 drifts at 0.05 rad/s), move_at_rest (joint_1 creeps 0.5 s after the first leg
+arrived), stopped_by_error (the driver's hardware event 6, 40 % of the way). PEER_DRIVER=1 publishes
+the KUKA driver's state (kroshu/kuka_drivers: robot_manager/is_configured, then "control started"
+on event_broadcaster/hardware_event 1 s after the trajectory is locked). The report's "fault" has
+when the first goal came, the robot was stopped, and when the sample ergocell's monitor judged bad
+(its verdict carries the sample's stamp) was sent; "controller_events" what rclpy read on
+/ergocell/controller_events.
+
 Prints a JSON report on stdout.
 Usage: peer.py <recording.mcap> <lock.toml> <timeout s>
 """
@@ -32,10 +42,10 @@ import tomllib
 
 import rclpy
 from builtin_interfaces.msg import Time
-from ergocell_msgs.msg import CameraLandmarks, ErgonomicState, PostureWarning, SessionState
+from ergocell_msgs.msg import CameraLandmarks, ControllerEvent, ErgonomicState, PostureWarning, SessionState
 from mcap.reader import make_reader
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.serialization import deserialize_message
 from sensor_msgs.msg import JointState
@@ -87,13 +97,49 @@ def main():
         "warnings": [],
         "lock_sha256": lock["lock_sha256"],
     }
-    active = {"t0": None, "traj": None, "pos": list(home)}
+    active = {"t0": None, "traj": None, "pos": list(home), "rest_since": None, "legs_done": 0}
+    fault = os.environ.get("PEER_FAULT", "")
+    # Fault injection bookkeeping: when the first published sample was beyond the tolerance it breaks
+    # (by the peer's own reckoning: its faulty position against its faithful one), and when the first
+    # stop (a cancel request or an empty trajectory) arrived, both on this process's monotonic clock.
+    report["fault"] = {"mode": fault, "bad_at": None, "stop_at": None, "stop_by": None, "first_goal_at": None,
+                       "control_started_at": None}
 
-    def positions_now(now):
+    guard = threading.RLock()
+
+    def positions_now(now, faithful=False):
+        with guard:
+            return positions_at(now, faithful)
+
+    def positions_at(now, faithful):
+        pos = moving_at(now, faithful)
+        # move_at_rest: once the first leg has arrived and rested 0.5 s, joint_1 creeps at 0.05 rad/s.
+        if (fault == "move_at_rest" and not faithful and active["rest_since"] is not None
+                and active["legs_done"] == 1 and now - active["rest_since"] > 0.5
+                and report["fault"]["stop_at"] is None):  # a stopped robot stays where it crept to
+            pos[0] += 0.05 * (now - active["rest_since"] - 0.5)
+        return pos
+
+    def moving_at(now, faithful):
         traj = active["traj"]
         if traj is None:
-            return active["pos"]
+            return list(active["pos"])
         t = now - active["t0"]
+        end = traj.points[-1].time_from_start.sec + traj.points[-1].time_from_start.nanosec * 1e-9
+        if t >= end and active["rest_since"] is None:
+            active["rest_since"] = now
+            active["legs_done"] += 1
+        if not faithful and active["legs_done"] == 0:
+            if fault == "lag":      # runs at 80 % speed
+                t *= 0.8
+            elif fault == "stall":  # stops dead 40 % of the way
+                t = min(t, 0.4 * end)
+        pos = interpolate(traj, t)
+        if fault == "drift" and not faithful and active["legs_done"] == 0:
+            pos[1] += 0.05 * t      # joint_2 drifts at 0.05 rad/s
+        return pos
+
+    def interpolate(traj, t):
         pts = traj.points
         tt = [p.time_from_start.sec + p.time_from_start.nanosec * 1e-9 for p in pts]
         order = [list(traj.joint_names).index(n) for n in names]
@@ -105,14 +151,28 @@ def main():
         s = (t - tt[k - 1]) / (tt[k] - tt[k - 1])
         return [pts[k - 1].positions[i] + s * (pts[k].positions[i] - pts[k - 1].positions[i]) for i in order]
 
+    def stopped(now, by):
+        # The first stop once the robot has had a goal (the session also holds, and stops the robot
+        # at rest, while it waits for the driver before the first goal).
+        if report["fault"]["stop_at"] is None and report["fault"]["first_goal_at"] is not None:
+            report["fault"]["stop_at"], report["fault"]["stop_by"] = now, by
+
+    def start_leg(now, traj):
+        active["pos"] = positions_now(now)
+        active["t0"], active["traj"], active["rest_since"] = now, traj, None
+        if report["fault"]["first_goal_at"] is None:
+            report["fault"]["first_goal_at"] = now
+
     def on_trajectory(traj):
         now = time.monotonic()
         active["pos"] = positions_now(now)
         if len(traj.points) == 0:
             active["traj"] = None
+            active["rest_since"] = active["rest_since"] or now
             report["holds"] += 1
+            stopped(now, "empty trajectory")
         else:
-            active["t0"], active["traj"] = now, traj
+            start_leg(now, traj)
             report["trajectories"].append({
                 "points": len(traj.points),
                 "joint_names": list(traj.joint_names),
@@ -139,20 +199,109 @@ def main():
     node.create_subscription(PostureWarning, "/ergocell/warnings",
                              lambda m: report["warnings"].append(m.region), qos(True, True, 20))
 
+    report["controller_events"] = []
+    node.create_subscription(ControllerEvent, "/ergocell/controller_events",
+                             lambda m: report["controller_events"].append(
+                                 {"kind": m.kind, "leg": m.leg, "status": m.status, "error_code": m.error_code,
+                                  "text": m.text, "feedback_count": m.feedback_count,
+                                  "sample_stamp": (m.sample_stamp.sec, m.sample_stamp.nanosec)}),
+                             qos(True, True, 100))
+    rate = float(os.environ.get("PEER_JOINT_STATE_HZ", "50"))
+    report["joint_state_hz"] = rate
+    report["joint_states_sent"] = 0
+
+    report["joint_state_max_gap_s"] = 0.0
+    sent_at = {}  # each joint state's stamp → when it was published (monotonic)
+    last_js = [None]
+
     def joint_state():
+        now = time.monotonic()
+        if last_js[0] is not None:
+            report["joint_state_max_gap_s"] = max(report["joint_state_max_gap_s"], now - last_js[0])
+        last_js[0] = now
         js = JointState()
         js.header.stamp = stamp(time.time_ns())
+        sent_at[(js.header.stamp.sec, js.header.stamp.nanosec)] = now
         js.name = names
-        js.position = [float(x) for x in positions_now(time.monotonic())]
+        pos = positions_now(now)
+        js.position = [float(x) for x in pos]
         js_pub.publish(js)
+        report["joint_states_sent"] += 1
+        f = report["fault"]
+        if fault and f["bad_at"] is None:
+            faithful = positions_now(now, faithful=True)
+            tol = (report.get("action", {}).get("tolerances") or [{"path": [0.01] * len(names)}])[-1]["path"]
+            limit = [0.01] * len(names) if fault == "move_at_rest" else tol
+            if any(abs(a - b) > l for a, b, l in zip(pos, faithful, limit)):
+                f["bad_at"] = now
 
-    node.create_timer(0.02, joint_state)
+    # Its own thread, not an executor timer, so that its period does not depend on what the
+    # executor is busy with (joint_state_max_gap_s in the report: 15 ms at most here, 250 Hz).
+    def joint_state_loop():
+        period, due = 1.0 / rate, time.monotonic()
+        while True:
+            joint_state()
+            due += period
+            time.sleep(max(0.0, due - time.monotonic()))
+            if time.monotonic() - due > period:
+                due = time.monotonic()
+
+    threading.Thread(target=joint_state_loop, daemon=True).start()
     mode = os.environ.get("PEER_ACTION", "")
+    controller = None
     if mode:
-        serve_action(node, mode, names, active, positions_now, report)
-    executor = MultiThreadedExecutor(num_threads=4)
+        # The action server on a node of its own, spun by a multi-threaded executor (its execute
+        # callback runs for the whole leg while goals and cancels keep being answered); the rest on a
+        # single-threaded one: rclpy's MultiThreadedExecutor with this node's dozen subscriptions
+        # froze the whole process (every thread, GIL held) for up to 0.9 s at a time, about twice a
+        # second, on CI's two cores (ros2/rclpy#1452, fixed after 9.1.2 by ros2/rclpy#1547).
+        controller = rclpy.create_node("rclpy_peer_controller", namespace="/ci")
+        serve_action(controller, mode, names, active, positions_now, report, start_leg, stopped)
+    # The KUKA driver's state (PEER_DRIVER=1), kuka_drivers' conventions: robot_manager/is_configured
+    # (std_msgs/Bool, best effort), event_broadcaster/hardware_event (HardwareEvent): configured once
+    # discovery has settled; "control started" (3) only 1 s after the trajectory is locked, so that
+    # ergocell must wait for it; with PEER_FAULT=stopped_by_error, "stopped by error" (6) 40 % into
+    # the first leg (the robot stops where it is).
+    driver = os.environ.get("PEER_DRIVER", "") == "1"
+    if driver:
+        from kuka_driver_interfaces.msg import HardwareEvent
+        from std_msgs.msg import Bool
+        cfg_pub = node.create_publisher(Bool, "/robot_manager/is_configured", qos(False, False, 1))
+        hw_pub = node.create_publisher(HardwareEvent, "/event_broadcaster/hardware_event", qos(False, False, 10))
+        drv = {"started": False, "error": False}
+
+        def hardware_event(code):
+            m = HardwareEvent()
+            m.robot_name, m.event = "ci_stand_in", code
+            hw_pub.publish(m)
+
+        def driver_tick():
+            now = time.monotonic()
+            cfg_pub.publish(Bool(data=now - t_start[0] > 2.5))
+            locked = [e for e in report["events"] if e["state"] == "trajectory_locked"]
+            if not drv["started"] and locked and now - locked_at.setdefault("t", now) > 1.0:
+                drv["started"] = True
+                report["fault"]["control_started_at"] = now
+                hardware_event(3)
+            traj = active["traj"]
+            if (fault == "stopped_by_error" and not drv["error"] and traj is not None
+                    and active["legs_done"] == 0):
+                end = traj.points[-1].time_from_start.sec + traj.points[-1].time_from_start.nanosec * 1e-9
+                if now - active["t0"] > 0.4 * end:
+                    drv["error"] = True
+                    active["pos"], active["traj"] = positions_now(now), None
+                    report["fault"]["bad_at"] = now
+                    hardware_event(6)
+
+        t_start, locked_at = [time.monotonic()], {}
+        node.create_timer(0.1, driver_tick)
+    executor = SingleThreadedExecutor()
     executor.add_node(node)
     threading.Thread(target=executor.spin, daemon=True).start()
+    if controller is not None:
+        controller_executor = MultiThreadedExecutor(num_threads=2)
+        controller_executor.add_node(controller)
+        threading.Thread(target=controller_executor.spin, daemon=True).start()
     # Let discovery settle (the robot at home meanwhile).
     time.sleep(2.0)
 
@@ -182,13 +331,17 @@ def main():
     # Drain what is still on its way.
     time.sleep(1.0)
     report["late_joiner_session_state"] = late
+    # The sample ergocell's monitor judged bad (the verdict carries its stamp): when it was sent.
+    judged = [e["sample_stamp"] for e in report["controller_events"]
+              if e["kind"] == "monitor" and e["sample_stamp"] != (0, 0)]
+    report["fault"]["judged_sample_sent_at"] = sent_at.get(tuple(judged[0])) if judged else None
     print(json.dumps(report), flush=True)
-    executor.shutdown(timeout_sec=1.0)
-    node.destroy_node()
-    rclpy.shutdown()
+    # No teardown: rclpy's shutdown with timers and an action server still live in the executor's
+    # threads aborts the process ("terminate called without an active exception").
+    os._exit(0)
 
 
-def serve_action(node, mode, names, active, positions_now, report):
+def serve_action(node, mode, names, active, positions_now, report, start_leg, stopped):
     """The controller's FollowJointTrajectory server (see the module doc)."""
     from control_msgs.action import FollowJointTrajectory
     from rclpy.action import ActionServer, CancelResponse, GoalResponse
@@ -215,8 +368,8 @@ def serve_action(node, mode, names, active, positions_now, report):
     def execute(handle):
         traj = handle.request.trajectory
         now = time.monotonic()
-        active["pos"] = positions_now(now)
-        active["t0"], active["traj"], active["goal"] = now, traj, handle
+        start_leg(now, traj)
+        active["goal"] = handle
         end_s = traj.points[-1].time_from_start.sec + traj.points[-1].time_from_start.nanosec * 1e-9
         result = FollowJointTrajectory.Result()
         while True:
@@ -228,6 +381,10 @@ def serve_action(node, mode, names, active, positions_now, report):
                 handle.abort()
                 a["results"].append("preempted")
                 return result
+            if active["traj"] is None and not handle.is_cancel_requested:
+                # stopped by an empty trajectory or the driver: the goal waits for its cancel
+                time.sleep(0.004)
+                continue
             if handle.is_cancel_requested:
                 active["pos"], active["traj"] = positions_now(now), None
                 handle.canceled()
@@ -243,12 +400,13 @@ def serve_action(node, mode, names, active, positions_now, report):
                 return result
             fb = FollowJointTrajectory.Feedback()
             fb.joint_names = list(names)
-            fb.actual.positions = [float(x) for x in positions_now(now)]
-            fb.desired.positions = fb.actual.positions
-            fb.error.positions = [0.0] * len(names)
+            actual, desired = positions_now(now), positions_now(now, faithful=True)
+            fb.actual.positions = [float(x) for x in actual]
+            fb.desired.positions = [float(x) for x in desired]
+            fb.error.positions = [float(d - x) for x, d in zip(actual, desired)]
             handle.publish_feedback(fb)
             a["feedback"] += 1
-            if t >= end_s:
+            if t >= end_s and positions_now(now) == positions_now(now, faithful=True):
                 handle.succeed()
                 result.error_code = FollowJointTrajectory.Result.SUCCESSFUL
                 a["results"].append("succeeded")
@@ -257,7 +415,7 @@ def serve_action(node, mode, names, active, positions_now, report):
 
     ActionServer(node, FollowJointTrajectory, "/joint_trajectory_controller/follow_joint_trajectory",
                  execute_callback=execute, goal_callback=on_goal,
-                 cancel_callback=lambda _h: CancelResponse.ACCEPT,
+                 cancel_callback=lambda _h: (stopped(time.monotonic(), "cancel request"), CancelResponse.ACCEPT)[1],
                  callback_group=ReentrantCallbackGroup())
 
 

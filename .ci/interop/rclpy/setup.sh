@@ -73,4 +73,7 @@ build_pkg ergocell_msgs ros2/ergocell_msgs
 # control_msgs is not on PyPI: its FollowJointTrajectory action and the two tolerance messages, from
 # upstream control_msgs 6.8.0 (BSD-3-Clause, LICENSE beside them; 6.3+ has Feedback.index).
 build_pkg control_msgs .ci/interop/rclpy/control_msgs
+# kuka_driver_interfaces' HardwareEvent (two fields, ros2/kuka_driver_interfaces), for the driver's
+# event_broadcaster/hardware_event.
+build_pkg kuka_driver_interfaces ros2/kuka_driver_interfaces
 echo "export PYTHONPATH=$gen/python LD_LIBRARY_PATH=$gen/lib RMW_IMPLEMENTATION=rmw_fastrtps_cpp ROS_DISTRO=kilted"
