@@ -275,6 +275,23 @@ fn leg_label(leg: ergocell::session::Leg) -> &'static str {
     }
 }
 
+/// Joint values in radians as printed and published: "0.0187, 0.0194, …".
+fn radians_list(values: &[f64]) -> String {
+    values
+        .iter()
+        .map(|t| format!("{t:.4}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The FollowJointTrajectory task is gone: nothing can be sent to the controller.
+fn controller_task_stopped() -> BackendError {
+    BackendError {
+        backend: "ROS 2 FollowJointTrajectory",
+        reason: "the controller task has stopped".to_owned(),
+    }
+}
+
 /// A controller event of `kind` about `leg` with `text`.
 fn controller_event(now_nanos: i64, kind: &str, leg: &str, text: String) -> ControllerEvent {
     ControllerEvent {
@@ -320,10 +337,7 @@ impl RobotSink for RosRobot {
                                 *tolerances,
                             )),
                         })
-                        .map_err(|_| BackendError {
-                            backend: "ROS 2 FollowJointTrajectory",
-                            reason: "the controller task has stopped".to_owned(),
-                        })?,
+                        .map_err(|_| controller_task_stopped())?,
                 }
                 self.events.push(controller_event(
                     now_nanos,
@@ -333,11 +347,7 @@ impl RobotSink for RosRobot {
                         "{} points over {:.2} s; path tolerances {} rad",
                         trajectory.points.len(),
                         trajectory.duration_s(),
-                        path_rad
-                            .iter()
-                            .map(|t| format!("{t:.4}"))
-                            .collect::<Vec<_>>()
-                            .join(", ")
+                        radians_list(&path_rad)
                     ),
                 ));
                 Ok(())
@@ -353,10 +363,7 @@ impl RobotSink for RosRobot {
                 // reports on, the empty trajectory overrides whatever it runs.
                 let cancel = commands
                     .send(ControllerCommand::Cancel)
-                    .map_err(|_| BackendError {
-                        backend: "ROS 2 FollowJointTrajectory",
-                        reason: "the controller task has stopped".to_owned(),
-                    });
+                    .map_err(|_| controller_task_stopped());
                 self.publish(message)?;
                 cancel
             }
@@ -1022,12 +1029,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     percentile(&v, 0.99),
                     v.last().copied().unwrap_or(f64::NAN),
                     ratio,
-                    m.settings()
-                        .path_tolerance_rad
-                        .iter()
-                        .map(|t| format!("{t:.4}"))
-                        .collect::<Vec<_>>()
-                        .join(", "),
+                    radians_list(&m.settings().path_tolerance_rad),
                     hold_after_bad_ms.map_or_else(String::new, |ms| format!(
                         "; cancelled and held {ms:.3} ms after the bad sample arrived"
                     ))
