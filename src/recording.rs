@@ -42,6 +42,10 @@ pub struct McapRecorder {
     channels: BTreeMap<String, u16>,
     sequence: u32,
     last_flush_nanos: Option<i64>,
+    /// The newest log time written: a message stamped earlier (a joint state the monitor task
+    /// noted before the loop recorded a later step) is logged at this time, so the file's log times
+    /// never go back; its publish time keeps its own stamp.
+    last_log_nanos: i64,
     messages: u64,
     /// Messages were written since the last flush.
     unflushed: bool,
@@ -71,6 +75,7 @@ impl McapRecorder {
             channels: BTreeMap::new(),
             sequence: 0,
             last_flush_nanos: None,
+            last_log_nanos: 0,
             messages: 0,
             unflushed: false,
         };
@@ -94,7 +99,9 @@ impl McapRecorder {
         self.messages
     }
 
-    /// Records `message` on `topic` at `log_time_nanos` (the session clock).
+    /// Records `message` on `topic` at `log_time_nanos` (the session clock). The file's log times
+    /// never go back: a message stamped before the newest one written is logged at the newest
+    /// time, with its own stamp as its publish time.
     pub fn write<M: RosMessage>(
         &mut self,
         topic: &str,
@@ -104,13 +111,15 @@ impl McapRecorder {
         let channel = self.channel::<M>(topic)?;
         let data = cdr::encode(message)?;
         self.sequence = self.sequence.wrapping_add(1);
-        let time = u64::try_from(log_time_nanos).unwrap_or(0);
+        let publish_time = u64::try_from(log_time_nanos).unwrap_or(0);
+        self.last_log_nanos = self.last_log_nanos.max(log_time_nanos);
+        let log_time = u64::try_from(self.last_log_nanos).unwrap_or(0);
         self.writer.write_to_known_channel(
             &mcap::records::MessageHeader {
                 channel_id: channel,
                 sequence: self.sequence,
-                log_time: time,
-                publish_time: time,
+                log_time,
+                publish_time,
             },
             &data,
         )?;
@@ -230,4 +239,47 @@ pub fn read_camera_landmarks(bytes: &[u8]) -> Result<CameraReadout, RecordingErr
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use ergocell_bridge::msg::{Header, JointState};
+
+    /// A message noted before the newest one written (the monitor task's joint state, recorded by
+    /// the loop after a later step) keeps its stamp as publish time; the log times never go back.
+    #[test]
+    fn log_times_never_go_back_and_publish_times_keep_the_stamp() {
+        let dir = std::env::temp_dir().join(format!("ergocell-rec-order-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("order.mcap");
+        let mut rec = McapRecorder::create(&path).unwrap();
+        for t in [5_000, 3_000, 7_000, 6_000] {
+            let js = JointState {
+                header: Header::new(t, ""),
+                ..JointState::default()
+            };
+            rec.write("/joint_states", t, &js).unwrap();
+        }
+        rec.finish().unwrap();
+        let bytes = std::fs::read(&path).unwrap();
+        let times: Vec<(u64, u64)> = mcap::MessageStream::new(&bytes)
+            .unwrap()
+            .map(|m| {
+                let m = m.unwrap();
+                (m.log_time, m.publish_time)
+            })
+            .collect();
+        assert_eq!(
+            times,
+            [
+                (5_000, 5_000),
+                (5_000, 3_000),
+                (7_000, 7_000),
+                (7_000, 6_000)
+            ]
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }
