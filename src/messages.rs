@@ -43,6 +43,7 @@ pub fn step_messages(
             | E::ClassDecided { .. }
             | E::TrajectoryLocked { .. }
             | E::ChangeRefused { .. }
+            | E::PartTaken { .. }
             | E::CameraDegraded { .. }
             | E::CameraRestored { .. } => {
                 if let Some(m) = states.next() {
@@ -489,6 +490,7 @@ pub fn session_state_messages(
             E::ClassDecided { .. }
             | E::TrajectoryLocked { .. }
             | E::ChangeRefused { .. }
+            | E::PartTaken { .. }
             | E::CameraDegraded { .. }
             | E::CameraRestored { .. } => describe(e),
             E::RobotCommandSent { .. } | E::Warning(_) | E::Frame { .. } => continue,
@@ -569,6 +571,15 @@ pub fn describe(e: &SessionEvent) -> String {
         E::ChangeRefused {
             requested, reason, ..
         } => format!("change to {requested} refused: {reason}"),
+        E::PartTaken {
+            part,
+            hand,
+            closest_m,
+            ..
+        } => format!(
+            "part {part} taken: the operator's {hand} hand came to {closest_m:.3} m of the handover \
+             point and left it; robot going home for the next part"
+        ),
         E::CameraDegraded { camera, why, .. } => format!("camera {camera} degraded: {why}"),
         E::CameraRestored { camera, .. } => format!("camera {camera} restored"),
         E::RobotCommandSent { command, .. } => match command {

@@ -16,7 +16,8 @@ use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::TrajectoryClass;
-use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
+use ergocell_sim::{Operator, Phase, SessionScript, SimConfig, Simulation};
+use ergocell_skeleton::Landmark;
 use nalgebra::Point3;
 
 const PERIOD: i64 = 100_000_000;
@@ -196,6 +197,7 @@ impl Run {
             | SessionEvent::ClassDecided { stamp_nanos, .. }
             | SessionEvent::TrajectoryLocked { stamp_nanos, .. }
             | SessionEvent::ChangeRefused { stamp_nanos, .. }
+            | SessionEvent::PartTaken { stamp_nanos, .. }
             | SessionEvent::RobotCommandSent { stamp_nanos, .. }
             | SessionEvent::Frame { stamp_nanos, .. } => *stamp_nanos,
             SessionEvent::Warning(w) => w.stamp_nanos,
@@ -323,11 +325,24 @@ fn whole_session_with_refused_change_degrade_hold_recovery_and_end() {
     assert_eq!(run.robot.received.len(), 2);
     assert!(run.machine.hold_reason().is_none());
 
-    // The operator finishes the cycles and walks out; the robot goes home; the session ends.
-    run.run_until(60_000_000_000, &|m| m.state() == SessionState::SessionEnded);
+    // The operator finishes the cycles and walks out: a part taken sends the robot home for the next
+    // (the cell's cycle), the legs alternate; once the operator has left the robot goes home and the
+    // session ends.
+    run.run_until(90_000_000_000, &|m| m.state() == SessionState::SessionEnded);
     assert_eq!(run.machine.state(), SessionState::SessionEnded);
-    assert_eq!(run.robot.received.len(), 3);
-    match &run.robot.received[2].1 {
+    let legs = legs_sent(&run.robot);
+    assert!(legs.len() >= 2 && legs.len().is_multiple_of(2), "{legs:?}");
+    assert!(legs.iter().enumerate().all(|(k, l)| *l
+        == if k % 2 == 0 {
+            Leg::ToHandover
+        } else {
+            Leg::ToHome
+        }));
+    assert_eq!(
+        legs.len(),
+        2 + 2 * run.machine.summary().parts_taken as usize
+    );
+    match &run.robot.received.last().unwrap().1 {
         RobotCommand::Execute {
             leg: Leg::ToHome,
             lock_sha256,
@@ -676,6 +691,15 @@ fn an_operator_measured_while_walking_in_has_not_left_the_station() {
         Some(ergocell_sim::Phase::WalkIn),
         "the scenario: decided while walking in"
     );
+    // The robot goes home only for the next part (a part taken in that step) or once the operator has
+    // left: never because the operator, still walking in, counted as gone.
+    let taken_at: Vec<i64> = events
+        .iter()
+        .filter_map(|e| match e {
+            SessionEvent::PartTaken { stamp_nanos, .. } => Some(*stamp_nanos),
+            _ => None,
+        })
+        .collect();
     let home_sent = events.iter().find_map(|e| match e {
         SessionEvent::RobotCommandSent {
             stamp_nanos,
@@ -684,7 +708,7 @@ fn an_operator_measured_while_walking_in_has_not_left_the_station() {
                     leg: ergocell::session::Leg::ToHome,
                     ..
                 },
-        } => Some(*stamp_nanos),
+        } if !taken_at.contains(stamp_nanos) => Some(*stamp_nanos),
         _ => None,
     });
     let walk_out_from = walk_out_from.unwrap();
@@ -870,4 +894,186 @@ fn a_robot_that_is_not_ready_is_held_before_its_first_goal_and_the_session_resum
         run.robot.received.last(),
         Some((_, RobotCommand::Hold { reason })) if reason == "joint states stale"
     ));
+}
+
+/// A session of the cell's cycle: c2's lock, the operator's script waiting between handovers as long
+/// as the robot's round trip (as the demo's does), `cycles` reaches. With `hide_hands`, once the
+/// robot waits at the handover point and the operator's hand has held the part (the script's hold
+/// phase is over), no camera reports either hand's wrist, index or pinky any more.
+fn cycle_session(
+    name: &str,
+    seed: u64,
+    cycles: usize,
+    hide_hands: bool,
+) -> (
+    SessionMachine,
+    DummyRobot,
+    Simulation,
+    Vec<SessionEvent>,
+    Point3<f64>,
+) {
+    let (names, home) = home();
+    let settings = CellSettings::default();
+    let cfg = settings.session;
+    let mut machine = SessionMachine::from_settings(
+        rig(),
+        &settings,
+        Box::new(provider(name, Some(TrajectoryClass::C2))),
+    )
+    .unwrap();
+    let mut robot = DummyRobot::new(names, home);
+    // c2's handover point as locked (station frame = world in the shipped cell).
+    let lock = std::fs::read_to_string(root().join("trajectories/locks/c2.lock.toml")).unwrap();
+    let lock = ergocell_robot::LockFile::from_toml_str(TrajectoryClass::C2, &lock).unwrap();
+    let [hx, hy, hz] = lock.summary.handover_station_m;
+    let handover = Point3::new(hx, hy, hz);
+    let leg_nanos = (lock.trajectory.point.last().unwrap().time_s * 1e9) as i64;
+    let mut script = SessionScript::new(handover);
+    script.cycles = cycles;
+    script.rest_secs =
+        2.0 * leg_nanos as f64 * 1e-9 + cfg.next_part_after_nanos as f64 * 1e-9 + 1.0;
+    let limit = ((script.duration_secs() + 30.0) * 1e9) as i64;
+    let mut sim = Simulation::new(
+        rig(),
+        Operator::new(1.75).unwrap(),
+        script,
+        SimConfig::new(seed),
+    )
+    .unwrap();
+    let hands = [
+        Landmark::LeftWrist,
+        Landmark::LeftIndex,
+        Landmark::LeftPinky,
+        Landmark::RightWrist,
+        Landmark::RightIndex,
+        Landmark::RightPinky,
+    ];
+    let mut hiding = false;
+    let mut events = Vec::new();
+    let mut now = 0;
+    while now <= limit && machine.state() != SessionState::SessionEnded {
+        let mut views = match sim.step().unwrap() {
+            Some(tick) => {
+                let first_leg_at = robot.received.first().map(|(t, _)| *t);
+                hiding |= hide_hands
+                    && matches!(tick.truth.phase, Phase::Return { .. })
+                    && first_leg_at.is_some_and(|t| now - t > leg_nanos);
+                tick.frame.views
+            }
+            None => Vec::new(),
+        };
+        if hiding {
+            for v in &mut views {
+                for m in hands {
+                    v.set(m, None);
+                }
+            }
+        }
+        events.extend(machine.step(now, views, &mut robot));
+        now += PERIOD;
+    }
+    (machine, robot, sim, events, handover)
+}
+
+fn legs_sent(robot: &DummyRobot) -> Vec<Leg> {
+    robot
+        .received
+        .iter()
+        .filter_map(|(_, c)| match c {
+            RobotCommand::Execute { leg, .. } => Some(*leg),
+            RobotCommand::Hold { .. } => None,
+        })
+        .collect()
+}
+
+/// The cell's cycle (#15): the robot brings a part to the handover point, waits there until the
+/// cameras see the operator take it (a hand at the point, then both hands away), goes home, brings
+/// the next part, and so on until the operator leaves; then home and the session ends.
+#[test]
+fn the_cell_cycles_home_handover_part_taken_home_until_the_operator_leaves() {
+    let cfg = CellSettings::default().session;
+    let (machine, robot, sim, events, handover) = cycle_session("cycle", 11, 3, false);
+    assert_eq!(machine.state(), SessionState::SessionEnded);
+    assert!(machine.summary().ended, "{}", machine.summary().end_reason);
+
+    // The legs alternate, starting and ending at home: a round trip per part taken, the next part
+    // brought out after the third, and home once the operator left.
+    let legs = legs_sent(&robot);
+    assert_eq!(legs.len(), 8, "{legs:?}");
+    for (k, leg) in legs.iter().enumerate() {
+        let expected = if k % 2 == 0 {
+            Leg::ToHandover
+        } else {
+            Leg::ToHome
+        };
+        assert_eq!(*leg, expected, "leg {k} of {legs:?}");
+    }
+    let taken: Vec<(i64, u32, f64)> = events
+        .iter()
+        .filter_map(|e| match e {
+            SessionEvent::PartTaken {
+                stamp_nanos,
+                part,
+                closest_m,
+                ..
+            } => Some((*stamp_nanos, *part, *closest_m)),
+            _ => None,
+        })
+        .collect();
+    // Each of the operator's three reaches took a part, in order; each hand came close.
+    assert_eq!(
+        taken.iter().map(|t| t.1).collect::<Vec<_>>(),
+        [1, 2, 3],
+        "{taken:?}"
+    );
+    assert_eq!(machine.summary().parts_taken, 3);
+    assert!(taken.iter().all(|t| t.2 <= cfg.take_radius_m), "{taken:?}");
+    // Safety: the robot left the handover point only when the operator's hands (the truth, not the
+    // cameras) were away from it, never while a hand was at the part; and the way home was the next
+    // command, sent in the same step.
+    for (stamp, part, _) in &taken {
+        let truth = sim.truth_at(*stamp).unwrap();
+        for marks in [
+            [
+                Landmark::LeftWrist,
+                Landmark::LeftIndex,
+                Landmark::LeftPinky,
+            ],
+            [
+                Landmark::RightWrist,
+                Landmark::RightIndex,
+                Landmark::RightPinky,
+            ],
+        ] {
+            let palm = marks
+                .iter()
+                .map(|m| truth.skeleton.position(*m).unwrap().coords)
+                .sum::<nalgebra::Vector3<f64>>()
+                / 3.0;
+            let d = (Point3::from(palm) - handover).norm();
+            assert!(
+                d > cfg.take_radius_m,
+                "part {part}: the robot left with a hand {d:.3} m from the handover point"
+            );
+        }
+        let next = robot.received.iter().find(|(t, _)| t >= stamp);
+        assert!(
+            matches!(next, Some((t, RobotCommand::Execute { leg: Leg::ToHome, .. })) if t == stamp),
+            "part {part}: {next:?}"
+        );
+    }
+}
+
+/// A hand the cameras lose at the part does not count as away: the same session with the hands
+/// hidden from the end of the first hold on takes no part, and the robot waits at the handover point
+/// (until the operator leaves, then it goes home).
+#[test]
+fn a_hand_lost_from_view_at_the_part_does_not_send_the_robot_home_for_the_next() {
+    let (machine, robot, _, events, _) = cycle_session("cycle-lost-hand", 11, 3, true);
+    assert!(!events
+        .iter()
+        .any(|e| matches!(e, SessionEvent::PartTaken { .. })));
+    assert_eq!(machine.summary().parts_taken, 0);
+    assert_eq!(legs_sent(&robot), [Leg::ToHandover, Leg::ToHome]);
+    assert!(machine.summary().ended, "{}", machine.summary().end_reason);
 }

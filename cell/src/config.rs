@@ -370,6 +370,9 @@ struct SessionFile {
     exit_radius_m: f64,
     at_knot_tolerance_rad: f64,
     height_timeout_s: f64,
+    take_radius_m: f64,
+    release_radius_m: f64,
+    next_part_after_s: f64,
 }
 
 impl Default for SessionFile {
@@ -383,6 +386,9 @@ impl Default for SessionFile {
             exit_radius_m: d.exit_radius_m,
             at_knot_tolerance_rad: d.at_knot_tolerance_rad,
             height_timeout_s: d.height_timeout_nanos as f64 * 1e-9,
+            take_radius_m: d.take_radius_m,
+            release_radius_m: d.release_radius_m,
+            next_part_after_s: d.next_part_after_nanos as f64 * 1e-9,
         }
     }
 }
@@ -404,9 +410,22 @@ impl SessionFile {
                 self.at_knot_tolerance_rad
             ));
         }
+        positive("session.take_radius_m", self.take_radius_m)?;
+        positive("session.release_radius_m", self.release_radius_m)?;
+        if self.release_radius_m <= self.take_radius_m {
+            return Err(format!(
+                "session.release_radius_m = {}: must be larger than session.take_radius_m = {} (a \
+                 hand must leave the part's neighbourhood, not just its edge, for the part to count \
+                 as taken)",
+                self.release_radius_m, self.take_radius_m
+            ));
+        }
+        seconds("session.next_part_after_s", self.next_part_after_s)?;
         for (i, v) in station.xyz_m.iter().enumerate() {
             finite(&format!("station.xyz_m[{i}]"), *v)?;
         }
+        finite("station.yaw_rad", station.yaw_rad)?;
+        let [sx, sy, sz] = station.xyz_m;
         Ok(SessionConfig {
             camera_stale_nanos: nanos(self.camera_stale_s),
             max_frame_age_nanos: nanos(self.max_frame_age_s),
@@ -416,6 +435,13 @@ impl SessionFile {
             station_xy_m: [station.xyz_m[0], station.xyz_m[1]],
             at_knot_tolerance_rad: self.at_knot_tolerance_rad,
             height_timeout_nanos: nanos(self.height_timeout_s),
+            T_world_station: nalgebra::Isometry3::new(
+                nalgebra::Vector3::new(sx, sy, sz),
+                nalgebra::Vector3::z() * station.yaw_rad,
+            ),
+            take_radius_m: self.take_radius_m,
+            release_radius_m: self.release_radius_m,
+            next_part_after_nanos: nanos(self.next_part_after_s),
         })
     }
 }
@@ -630,6 +656,16 @@ mod tests {
                 "task.force_load_score_arm_wrist",
             ),
             ("[pipeline]\nfusion = \"best\"", "best", "fusion"),
+            (
+                "[session]\ntake_radius_m = 0.3\nrelease_radius_m = 0.2",
+                "0.2",
+                "session.release_radius_m",
+            ),
+            (
+                "[session]\nnext_part_after_s = -1",
+                "-1",
+                "session.next_part_after_s",
+            ),
         ] {
             let text = SHIPPED.replace("\n[station]\n", &format!("\n{table}\n\n[station]\n"));
             let e = CellSettings::from_toml_str(&text, "cell.toml")
@@ -651,6 +687,12 @@ mod tests {
             .replace("xyz_m = [0.0, 0.0, 0.0]", "xyz_m = [0.3, -0.2, 0.0]");
         let s = CellSettings::from_toml_str(&text, "cell.toml").unwrap();
         assert_eq!(s.session.camera_stale_nanos, 250_000_000);
+        // The station's pose places the lock's handover point (station frame) in the world.
+        let p = s.session.T_world_station * nalgebra::Point3::new(0.4, 0.1, 1.0);
+        assert!(
+            (p - nalgebra::Point3::new(0.7, -0.1, 1.0)).norm() < 1e-12,
+            "{p}"
+        );
         assert_eq!(s.session.exit_radius_m, 1.5);
         assert_eq!(s.session.station_xy_m, [0.3, -0.2]);
         let p = s.pipeline(UpVector::z()).unwrap();

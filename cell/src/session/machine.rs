@@ -30,7 +30,20 @@ enum Motion {
     /// Not commanded yet (at home).
     AtHome,
     Moving(Leg),
+    /// At the handover point with the part: waiting for the operator to take it.
     AtHandover,
+}
+
+/// The part at the handover point, as the cameras see the operator's hands (only while the robot
+/// waits there).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Part {
+    /// No hand has come to it yet.
+    Offered,
+    /// A hand came within the take radius; the part is taken when it leaves the release radius.
+    InHand { hand: &'static str, closest_m: f64 },
+    /// The hand that had it left the release radius: taken.
+    Taken { hand: &'static str, closest_m: f64 },
 }
 
 /// Counts for the final summary.
@@ -50,6 +63,8 @@ pub struct SessionSummary {
     pub cameras_out_of_calibration: Vec<String>,
     pub max_action_level: u8,
     pub robot_commands: u32,
+    /// Parts the operator took at the handover point (completed handovers: the cell's cycles).
+    pub parts_taken: u32,
     pub ended: bool,
     pub end_reason: String,
 }
@@ -65,6 +80,12 @@ pub struct SessionMachine {
     decision: Option<HeightDecision>,
     lock: Option<SessionLock>,
     motion: Motion,
+    /// The part offered at the handover point (`Some` while the robot waits there).
+    part: Option<Part>,
+    /// Since when the robot stands at home between cycles (the next part is loaded meanwhile).
+    at_home_since: Option<i64>,
+    /// The handover point in the world (the lock's, placed by the station's pose), once locked.
+    handover_world: Option<Point3<f64>>,
     hold_reason: Option<String>,
     /// Why the robot side cannot be trusted to move right now (the driver not controlling, joint
     /// states stale), from the backend: the robot is held and nothing is sent until it clears.
@@ -125,6 +146,9 @@ impl SessionMachine {
             decision: None,
             lock: None,
             motion: Motion::AtHome,
+            part: None,
+            at_home_since: None,
+            handover_world: None,
             hold_reason: None,
             robot_unready: None,
             tracking_back_since: None,
@@ -387,6 +411,7 @@ impl SessionMachine {
         if let (SessionState::MeasuringHeight, Some(decision)) = (self.state, tracked.height) {
             self.on_height_decided(now_nanos, decision, events);
         }
+        self.watch_part(&tracked.skeleton);
         // RULA in every state once an operator is tracked.
         for w in tracked.warnings {
             if w.kind == WarningKind::Raised {
@@ -486,8 +511,14 @@ impl SessionMachine {
         };
         let (at_home, at_handover) = (near(&home), near(&handover));
         match self.motion {
-            Motion::Moving(Leg::ToHandover) if at_handover => self.motion = Motion::AtHandover,
-            Motion::Moving(Leg::ToHome) if at_home => self.motion = Motion::AtHome,
+            Motion::Moving(Leg::ToHandover) if at_handover => {
+                self.motion = Motion::AtHandover;
+                self.part = Some(Part::Offered);
+            }
+            Motion::Moving(Leg::ToHome) if at_home => {
+                self.motion = Motion::AtHome;
+                self.at_home_since = Some(now_nanos);
+            }
             _ => {}
         }
         // The robot side not ready: held, nothing sent, until it is (then the usual resume rules).
@@ -557,14 +588,90 @@ impl SessionMachine {
             );
             return;
         }
-        // Working.
-        if self.operator_departed {
-            match self.motion {
-                Motion::AtHandover => self.start_leg(now_nanos, Leg::ToHome, robot, events),
-                Motion::AtHome => self.end_session(now_nanos, at_home, events),
-                Motion::Moving(_) => {}
+        // Working: the cell's cycle. Home → handover → the operator takes the part → home → the
+        // next part, until the operator leaves; then home and the session ends.
+        match self.motion {
+            Motion::AtHandover if self.operator_departed => {
+                self.part = None;
+                self.start_leg(now_nanos, Leg::ToHome, robot, events);
             }
+            Motion::AtHandover => {
+                if let Some(Part::Taken { hand, closest_m }) = self.part {
+                    self.summary.parts_taken += 1;
+                    let part = self.summary.parts_taken;
+                    tracing::info!(part, hand, closest_m, "part taken");
+                    events.push(SessionEvent::PartTaken {
+                        stamp_nanos: now_nanos,
+                        part,
+                        hand,
+                        closest_m,
+                    });
+                    self.part = None;
+                    self.start_leg(now_nanos, Leg::ToHome, robot, events);
+                }
+            }
+            Motion::AtHome if self.operator_departed => {
+                self.end_session(now_nanos, at_home, events);
+            }
+            Motion::AtHome => {
+                let since = *self.at_home_since.get_or_insert(now_nanos);
+                if now_nanos - since >= self.config.next_part_after_nanos {
+                    self.at_home_since = None;
+                    self.start_leg(now_nanos, Leg::ToHandover, robot, events);
+                }
+            }
+            Motion::Moving(_) => {}
         }
+    }
+
+    /// The operator's hands against the part the robot offers at the handover point: once a hand's
+    /// palm centre comes within `take_radius_m`, the part is in the operator's hand; once both hands
+    /// are seen farther than `release_radius_m` again, it is taken (acted on by `supervise`, which
+    /// sends the robot home). A hand the cameras do not see is not counted as away. Only while the
+    /// robot waits at the handover point.
+    fn watch_part(&mut self, skeleton: &Skeleton3) {
+        let (Motion::AtHandover, Some(part), Some(point)) =
+            (self.motion, self.part, self.handover_world)
+        else {
+            return;
+        };
+        let distance = |marks| palm_centre(skeleton, marks).map(|p| (p - point).norm());
+        let hands = [
+            (
+                "left",
+                distance([
+                    Landmark::LeftWrist,
+                    Landmark::LeftIndex,
+                    Landmark::LeftPinky,
+                ]),
+            ),
+            (
+                "right",
+                distance([
+                    Landmark::RightWrist,
+                    Landmark::RightIndex,
+                    Landmark::RightPinky,
+                ]),
+            ),
+        ];
+        let nearest = hands
+            .iter()
+            .filter_map(|&(hand, d)| Some((hand, d?)))
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        let both_away = hands
+            .iter()
+            .all(|(_, d)| d.is_some_and(|d| d > self.config.release_radius_m));
+        self.part = Some(match (part, nearest) {
+            (Part::Offered, Some((hand, d))) if d <= self.config.take_radius_m => {
+                Part::InHand { hand, closest_m: d }
+            }
+            (Part::InHand { hand, closest_m }, _) if both_away => Part::Taken { hand, closest_m },
+            (Part::InHand { hand, closest_m }, Some((h, d))) if h == hand => Part::InHand {
+                hand,
+                closest_m: closest_m.min(d),
+            },
+            (other, _) => other,
+        });
     }
 
     /// The documented safe handling of an operator the cell cannot class: once the height is still
@@ -653,6 +760,8 @@ impl SessionMachine {
                     .collect();
                 tracing::info!(%class, lock_sha256 = %sha, "trajectory verified and locked");
                 self.summary.lock_sha256 = Some(sha.clone());
+                let [hx, hy, hz] = approved.lock().summary.handover_station_m;
+                self.handover_world = Some(self.config.T_world_station * Point3::new(hx, hy, hz));
                 events.push(SessionEvent::TrajectoryLocked {
                     stamp_nanos: now_nanos,
                     class,
@@ -762,6 +871,9 @@ impl SessionMachine {
             );
             return;
         };
+        if motion == Motion::AtHandover && self.part.is_none() {
+            self.part = Some(Part::Offered);
+        }
         self.motion = motion;
         self.hold_reason = None;
         self.tracking_back_since = None;
@@ -862,6 +974,15 @@ impl SessionMachine {
     pub fn up(&self) -> &UpVector {
         &self.pipeline.config().assessment.up
     }
+}
+
+/// A hand's palm centre: the mean of its wrist, index and pinky landmarks (all three fused).
+fn palm_centre(s: &Skeleton3, marks: [Landmark; 3]) -> Option<Point3<f64>> {
+    let mut sum = nalgebra::Vector3::zeros();
+    for m in marks {
+        sum += s.position(m)?.coords;
+    }
+    Some(Point3::from(sum / 3.0))
 }
 
 fn mid_hip(s: &Skeleton3) -> Option<Point3<f64>> {

@@ -29,6 +29,7 @@ use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
 use ergocell_perception::View2;
 use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
 use ergocell_skeleton::Skeleton3;
+use nalgebra::Isometry3;
 
 pub use crate::error::{BackendError, ProviderError};
 
@@ -144,6 +145,17 @@ pub enum SessionEvent {
         requested: TrajectoryClass,
         reason: String,
     },
+    /// The cell's cycle: the operator took the part at the handover point (a hand came to the
+    /// point while the robot held the part there, then left it); the robot goes home for the next.
+    PartTaken {
+        stamp_nanos: i64,
+        /// 1 for the session's first part.
+        part: u32,
+        /// "left" or "right".
+        hand: &'static str,
+        /// How close that hand's palm centre came to the handover point, metres.
+        closest_m: f64,
+    },
     CameraDegraded {
         stamp_nanos: i64,
         camera: String,
@@ -192,6 +204,17 @@ pub struct SessionConfig {
     /// stated interval straddles a class boundary, or they never stood upright) ends the session:
     /// the robot does not move, and the reason says why.
     pub height_timeout_nanos: i64,
+    /// The station's pose in the world (`[station]`): places the lock's handover point, which the
+    /// lock stores in the station's frame.
+    pub T_world_station: Isometry3<f64>,
+    /// The cell's cycle: the part at the handover point counts as in the operator's hand once a
+    /// tracked hand (its palm centre: wrist, index and pinky) comes within this of the point…
+    pub take_radius_m: f64,
+    /// …and as taken once that hand is farther than this again: the robot then goes home.
+    pub release_radius_m: f64,
+    /// Back home, the robot brings the next part after this long (its gripper takes the part from
+    /// the feeder), unless the operator has left.
+    pub next_part_after_nanos: i64,
 }
 
 impl Default for SessionConfig {
@@ -205,6 +228,10 @@ impl Default for SessionConfig {
             station_xy_m: [0.0, 0.0],
             at_knot_tolerance_rad: 0.01,
             height_timeout_nanos: 20_000_000_000,
+            T_world_station: Isometry3::identity(),
+            take_radius_m: 0.15,
+            release_radius_m: 0.30,
+            next_part_after_nanos: 1_000_000_000,
         }
     }
 }
