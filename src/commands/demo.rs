@@ -30,7 +30,8 @@ use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::sim::SimSource;
 use ergocell::session::{
-    trajectory_class, LandmarkSource, RobotSink, SessionEvent, SessionMachine, SessionState,
+    trajectory_class, LandmarkSource, Leg, RobotCommand, RobotSink, SessionEvent, SessionMachine,
+    SessionState,
 };
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
@@ -53,7 +54,7 @@ pub const DEFAULT_OUT: &str = "ergocell-demo.mcap";
 /// still running then is stopped (robot held), and the demo says so.
 pub const MARGIN_SECS: f64 = 30.0;
 
-/// Most handover cycles (about 14 hours of simulated session: a long shift, for `--soak-report`).
+/// Most handover cycles (about 46 hours of simulated session: several shifts, for `--soak-report`).
 pub const MAX_CYCLES: usize = 10_000;
 
 #[derive(Debug, clap::Args)]
@@ -78,8 +79,8 @@ pub struct Args {
     /// The simulated operator's stature, metres.
     #[arg(long, default_value_t = 1.75)]
     pub stature_m: f64,
-    /// Handover cycles (0..=10000; 5760 ≈ an 8-hour shift). The session may run for the script's duration (walk in, height,
-    /// cycles × 5 s, floor pick, walk out) plus 30 s; then it is stopped with the robot held.
+    /// Handover cycles (0..=10000; 1756 ≈ an 8-hour shift). The session may run for the script's duration (walk in, height,
+    /// cycles × 16.4 s: the robot's round trip per part, floor pick, walk out) plus 30 s; then it is stopped with the robot held.
     #[arg(long, default_value_t = 3)]
     pub cycles: usize,
     /// Simulation seed (same seed, same session).
@@ -116,9 +117,18 @@ pub struct Args {
     pub bump_at_s: f64,
     /// A soak's figures: every `--soak-report` minutes of simulated time (and at the end) the
     /// process's resident memory and the wall time of the session steps (p50, p99, max) over that
-    /// span, to see memory flat and no drift in timing over a long shift (e.g. `--cycles 5760`).
+    /// span, to see memory flat and no drift in timing over a long shift (e.g. `--cycles 1756`).
     #[arg(long, value_name = "MINUTES", value_parser = clap::value_parser!(u64).range(1..=1440))]
     pub soak_report: Option<u64>,
+}
+
+/// How long the simulated operator works on a part between handovers: the robot's way home and back
+/// (twice the locked leg), its wait for the next part, and 3 s of slack, so that the robot stands at
+/// the handover point before the operator reaches for the next part (and the demo's camera blackout,
+/// 0.3 s after it arrives, is over).
+fn operator_rest_secs(lock: &LockFile, settings: &CellSettings) -> f64 {
+    let leg_s = lock.trajectory.point.last().map_or(0.0, |p| p.time_s);
+    2.0 * leg_s + settings.session.next_part_after_nanos as f64 * 1e-9 + 3.0
 }
 
 /// Wall-clock time at the binary's clock boundary (the session itself runs on the simulator's clock).
@@ -371,6 +381,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .map_err(|e| anyhow::anyhow!(e))?;
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
+    // The cell's cycle sets the operator's: after taking a part the operator works on it at the
+    // station (the script's rest) while the robot goes home, takes the next part and brings it.
+    script.rest_secs = operator_rest_secs(&lock, &settings);
     if !args.no_floor_pick {
         script.floor_pick = Some(FloorPick::new(args.cycles.min(1)));
     }
@@ -414,7 +427,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .first()
         .map(|p| p.positions_rad.clone())
         .context("lock file without points")?;
-    let mut robot = DummyRobot::new(lock.trajectory.joint_names.clone(), home);
+    // The newest command is all the demo reads back (the blackout waits for a leg's arrival).
+    let mut robot = DummyRobot::new(lock.trajectory.joint_names.clone(), home).keeping_last(1);
     let mut machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
         .map_err(|e| UsageError(e.to_string()))?;
     let mut rec = McapRecorder::from_file(output::create("--out", &out, args.force)?)?;
@@ -447,6 +461,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut sim_done = false;
     let mut was_picking = false;
     let mut working_since: Option<i64> = None;
+    let mut blackout_from: Option<i64> = None;
     let mut change_requested = false;
     let mut last_status = start;
     let mut interrupted: Option<Signal> = None;
@@ -515,13 +530,31 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             // The script is over and the cell is empty; the cameras keep publishing "nobody".
             views = (0..rig.len()).map(|k| View2::empty(k, now)).collect();
         }
-        // Faults while working: s1_left silent 5.5–6.5 s after the robot starts, then every camera
-        // 7.5–8.7 s (the robot waits at the handover point by then).
+        // Faults while working: s1_left silent 5.5–6.5 s after the robot starts; every camera for
+        // 1.2 s once the robot has brought the next part after the first was taken and has stood
+        // 0.3 s at the handover point (the operator works on the first part meanwhile).
         if let (Some(w), false) = (working_since, args.no_faults) {
             let t = now - w;
             if (5_500_000_000..6_500_000_000).contains(&t) {
                 views.retain(|v| v.camera != 0);
-            } else if (7_500_000_000..8_700_000_000).contains(&t) {
+            }
+            if blackout_from.is_none() && machine.summary().parts_taken >= 1 {
+                if let Some((
+                    sent,
+                    RobotCommand::Execute {
+                        leg: Leg::ToHandover,
+                        trajectory,
+                        ..
+                    },
+                )) = robot.received.last()
+                {
+                    let arrived = sent + (trajectory.duration_s() * 1e9).round() as i64;
+                    if now - arrived >= 300_000_000 {
+                        blackout_from = Some(now);
+                    }
+                }
+            }
+            if blackout_from.is_some_and(|b| now - b < 1_200_000_000) {
                 views.clear();
             }
         }
@@ -653,7 +686,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             s.cameras_out_of_calibration.join(", ")
         );
     }
-    say!("  robot commands: {}", s.robot_commands);
+    say!(
+        "  robot commands: {} ({} part(s) taken at the handover point)",
+        s.robot_commands,
+        s.parts_taken
+    );
     say!("  ended:          {}", s.end_reason);
     say!(
         "  recording:      {} ({messages} messages; open in Foxglove or `ros2 bag info`)",

@@ -437,6 +437,10 @@ enum MonitorNote {
 struct MonitorStats {
     /// Arrival → verdict, microseconds, every judged sample.
     verdict_us: Vec<f64>,
+    /// The sample's stamp → its arrival here on the wall clock, microseconds, every judged sample:
+    /// the controller's publish → ergocell's read, when the controller stamps on this host's clock
+    /// (a peer on this machine; on a real cell it includes the two clocks' offset).
+    transit_us: Vec<f64>,
 }
 
 /// What the monitor task shares with the session loop.
@@ -480,6 +484,7 @@ async fn monitor_task(
                 };
                 let js: JointState = js;
                 let arrival = instant();
+                let transit_us = (now_nanos() - js.header.stamp.to_nanos()) as f64 * 1e-3;
                 let now = clock.now();
                 let judged = links.monitor.lock().ok().and_then(|mut g| {
                     let m = g.as_mut()?;
@@ -500,6 +505,7 @@ async fn monitor_task(
                 if let Some((verdict, worst)) = judged {
                     if let Ok(mut st) = links.stats.lock() {
                         st.verdict_us.push(arrival.elapsed().as_secs_f64() * 1e6);
+                        st.transit_us.push(transit_us);
                     }
                     if stale {
                         stale = false;
@@ -1021,13 +1027,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             if let Some(m) = guard.as_ref() {
                 let mut v = st.verdict_us.clone();
                 v.sort_by(f64::total_cmp);
+                let mut t = st.transit_us.clone();
+                t.sort_by(f64::total_cmp);
                 let (ratio, joint) = m.worst_path_ratio();
                 println!(
-                    "execution monitor: {} joint states judged, arrival → verdict p50 {:.1} µs, p99 {:.1} µs, max {:.1} µs; largest deviation while moving {:.2} of the path tolerance ({joint}); path tolerances [{}] rad{}",
+                    "execution monitor: {} joint states judged, arrival → verdict p50 {:.1} µs, p99 {:.1} µs, max {:.1} µs; sample stamp → arrival (the controller's clock: a like-for-like figure only for a controller on this host) p50 {:.3} ms, p99 {:.3} ms; largest deviation while moving {:.2} of the path tolerance ({joint}); path tolerances [{}] rad{}",
                     v.len(),
                     percentile(&v, 0.5),
                     percentile(&v, 0.99),
                     v.last().copied().unwrap_or(f64::NAN),
+                    percentile(&t, 0.5) * 1e-3,
+                    percentile(&t, 0.99) * 1e-3,
                     ratio,
                     radians_list(&m.settings().path_tolerance_rad),
                     hold_after_bad_ms.map_or_else(String::new, |ms| format!(
@@ -1152,7 +1162,7 @@ impl Recording {
 fn print_summary(machine: &SessionMachine, rejected: u64) {
     let s = machine.summary();
     println!(
-        "session: {} — {} frames fused, {} tracked, class {}, lock {}, {} hold(s), {} robot command(s), {} camera message(s) rejected; {}",
+        "session: {} — {} frames fused, {} tracked, class {}, lock {}, {} hold(s), {} robot command(s), {} part(s) taken, {} camera message(s) rejected; {}",
         machine.state(),
         s.frames_fused,
         s.frames_tracked,
@@ -1160,6 +1170,7 @@ fn print_summary(machine: &SessionMachine, rejected: u64) {
         s.lock_sha256.as_deref().unwrap_or("-"),
         s.holds,
         s.robot_commands,
+        s.parts_taken,
         rejected,
         s.end_reason
     );

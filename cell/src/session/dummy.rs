@@ -12,8 +12,9 @@ pub struct DummyRobot {
     joint_names: Vec<String>,
     held_positions: Vec<f64>,
     active: Option<(i64, LegTrajectory)>,
-    /// Every command received, with its time.
+    /// The commands received, with their times: every one, or the newest `history` of them.
     pub received: Vec<(i64, RobotCommand)>,
+    history: Option<usize>,
 }
 
 impl DummyRobot {
@@ -24,7 +25,16 @@ impl DummyRobot {
             held_positions: positions_rad,
             active: None,
             received: Vec::new(),
+            history: None,
         }
+    }
+
+    /// Keeps only the newest `n` commands in [`DummyRobot::received`] (at least one): a long
+    /// simulated shift sends thousands of legs, each a whole trajectory.
+    #[must_use]
+    pub fn keeping_last(mut self, n: usize) -> Self {
+        self.history = Some(n.max(1));
+        self
     }
 
     /// Joint positions at `now_nanos`, in this robot's joint order.
@@ -82,6 +92,10 @@ impl RobotSink for DummyRobot {
             RobotCommand::Hold { .. } => self.active = None,
         }
         self.received.push((now_nanos, command.clone()));
+        if let Some(n) = self.history {
+            let excess = self.received.len().saturating_sub(n);
+            self.received.drain(..excess);
+        }
         Ok(())
     }
 
@@ -118,5 +132,26 @@ impl LandmarkSource for ScriptedSource {
             }
         }
         Ok(Some(out))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    #[test]
+    fn keeping_last_bounds_the_history_and_keeps_the_newest() {
+        let hold = |k: i64| RobotCommand::Hold {
+            reason: k.to_string(),
+        };
+        let mut all = DummyRobot::new(vec!["j".into()], vec![0.0]);
+        let mut last2 = DummyRobot::new(vec!["j".into()], vec![0.0]).keeping_last(2);
+        for k in 0..5 {
+            all.send(k, &hold(k)).unwrap();
+            last2.send(k, &hold(k)).unwrap();
+        }
+        assert_eq!(all.received.len(), 5);
+        assert_eq!(last2.received, all.received[3..]);
     }
 }
