@@ -144,6 +144,25 @@ fn report_holds_the_whole_session() {
     let hp = s["robot"]["handover_point"].as_array().unwrap();
     let hz = hp[2].as_f64().unwrap();
     assert!((0.8..1.6).contains(&hz), "handover height {hz}");
+    // The cell's cycle: the legs the robot was sent alternate, home → handover first; the demo's
+    // in-process robot reports nothing, so each ends as planned (after it starts).
+    let legs = s["robot"]["legs"].as_array().unwrap();
+    assert!(legs.len() >= 2, "{legs:?}");
+    for (k, leg) in legs.iter().enumerate() {
+        let name = if k % 2 == 0 {
+            "home → handover"
+        } else {
+            "handover → home"
+        };
+        assert_eq!(leg["leg"], name, "leg {k}: {leg}");
+        let (a, b) = (
+            leg["t_start"].as_f64().unwrap(),
+            leg["t_end"].as_f64().unwrap(),
+        );
+        assert!(b > a, "leg {k}: {leg}");
+        assert!(leg["planned_s"].as_f64().unwrap() > 0.0, "leg {k}: {leg}");
+    }
+    assert!(s["robot"]["events"].as_array().unwrap().is_empty());
 }
 
 #[test]
@@ -458,4 +477,250 @@ fn the_allowed_host_is_the_bound_address_and_two_hosts_are_refused() {
     assert_eq!(get(server.port, "GET", "/", "localhost:9000").0, 200);
     assert_eq!(get(server.port, "GET", "/", "localhost:9001").0, 403);
     drop(server);
+}
+
+/// A recording of the cell's cycle as `ergocell run --record` writes it in action mode: each leg's
+/// `JointTrajectory` with its `goal_sent`, the controller's answers (feedback, results), a hold, a
+/// part taken, and a late `finished` after `session_ended`; then a second operator whose one leg
+/// gets no answer (topic mode), with a driver event right after the first session.
+fn robot_cycle() -> PathBuf {
+    use ergocell::recording::{topics, McapRecorder};
+    use ergocell_bridge::msg::{
+        ControllerEvent, Duration, Header, JointTrajectory, JointTrajectoryPoint, OperatorPose,
+        SessionState,
+    };
+    /// One message of the recording (the recorder's log times never go back: written in order).
+    enum Msg {
+        State(SessionState),
+        Pose(OperatorPose),
+        Command(JointTrajectory),
+        Event(ControllerEvent),
+    }
+    let s = 1_000_000_000i64;
+    let ms = 1_000_000i64;
+    let home = [0.0, -1.57, 1.57];
+    let handover = [0.4, -1.1, 1.2];
+    let leg = |from: [f64; 3], to: [f64; 3]| {
+        Msg::Command(JointTrajectory {
+            joint_names: vec!["a1".into(), "a2".into(), "a3".into()],
+            points: [(from, 0.0), (to, 2.0)]
+                .iter()
+                .map(|(q, t)| JointTrajectoryPoint {
+                    positions: q.to_vec(),
+                    time_from_start: Duration::from_secs_f64(*t),
+                    ..JointTrajectoryPoint::default()
+                })
+                .collect(),
+            ..JointTrajectory::default()
+        })
+    };
+    let event = |t: i64, kind: &str, leg: &str| ControllerEvent {
+        header: Header::new(t, ""),
+        kind: kind.to_owned(),
+        leg: leg.to_owned(),
+        max_error: f64::NAN,
+        ..ControllerEvent::default()
+    };
+    let finished = |t: i64, leg: &str, status: &str, count: u32| ControllerEvent {
+        status: status.to_owned(),
+        feedback_count: count,
+        ..event(t, "finished", leg)
+    };
+    let state = |t: i64, name: &str, reason: &str| SessionState {
+        header: Header::new(t, "world"),
+        state: name.to_owned(),
+        reason: reason.to_owned(),
+        height_m: 1.75,
+        height_class: "c2".to_owned(),
+        ..SessionState::default()
+    };
+    let (ho, hh) = ("home → handover", "handover → home");
+    let mut messages: Vec<(i64, Msg)> = Vec::new();
+    for k in 0..2 {
+        let t0 = k * 20 * s;
+        messages.push((t0, Msg::State(state(t0, "working", ""))));
+        for f in 0..120 {
+            let t = t0 + f * s / 10;
+            let pose = OperatorPose {
+                header: Header::new(t, "world"),
+                x: vec![0.0; 33],
+                y: vec![0.0; 33],
+                z: vec![1.0; 33],
+                ..OperatorPose::default()
+            };
+            messages.push((t, Msg::Pose(pose)));
+        }
+        let end = t0 + 12 * s;
+        messages.push((
+            end,
+            Msg::State(state(end, "session_ended", "the operator left")),
+        ));
+    }
+    let mut add = |t: i64, m: Msg| messages.push((t, m));
+    // Session 1. Leg 1 at 1 s, home → handover: accepted, three feedback messages, succeeded.
+    add(s, leg(home, handover));
+    add(s, Msg::Event(event(s, "goal_sent", ho)));
+    add(s + 10 * ms, Msg::Event(event(s + 10 * ms, "accepted", ho)));
+    for (t, count, err) in [(1100, 1, 0.002), (2000, 25, f64::NAN), (2900, 50, 0.003)] {
+        let e = ControllerEvent {
+            feedback_count: count,
+            max_error: err,
+            ..event(t * ms, "feedback", ho)
+        };
+        add(t * ms, Msg::Event(e));
+    }
+    add(
+        3100 * ms,
+        Msg::Event(finished(3100 * ms, ho, "succeeded", 52)),
+    );
+    // The operator takes the part at 4 s; leg 2 at 5 s, handover → home, held at 6 s: canceled.
+    let taken = "part 1 taken: the operator's left hand came to 0.052 m of the handover point and left it; robot going home for the next part";
+    add(4 * s, Msg::State(state(4 * s, "working", taken)));
+    add(5 * s, leg(handover, home));
+    add(5 * s, Msg::Event(event(5 * s, "goal_sent", hh)));
+    let hold = JointTrajectory {
+        header: Header::new(6 * s, ""),
+        ..JointTrajectory::default()
+    };
+    add(6 * s, Msg::Command(hold));
+    add(6 * s, Msg::Event(event(6 * s, "cancel_requested", hh)));
+    add(
+        6050 * ms,
+        Msg::Event(finished(6050 * ms, hh, "canceled", 20)),
+    );
+    // Leg 3 at 8 s, home again; its result comes 1.5 s after the session ended (12 s).
+    add(8 * s, leg([0.2, -1.3, 1.4], home));
+    add(8 * s, Msg::Event(event(8 * s, "goal_sent", hh)));
+    add(
+        13_500 * ms,
+        Msg::Event(finished(13_500 * ms, hh, "succeeded", 51)),
+    );
+    // The driver's state right after: about no leg, so the next session's.
+    let driver = ControllerEvent {
+        status: "ready".to_owned(),
+        ..event(13_600 * ms, "driver", "")
+    };
+    add(13_600 * ms, Msg::Event(driver));
+    // Session 2 (20–32 s): one leg in topic mode, nothing answers it.
+    add(21 * s, leg(home, handover));
+    messages.sort_by_key(|(t, _)| *t);
+
+    let path = tmp("review-robot-cycle.mcap");
+    let mut rec = McapRecorder::create(&path).unwrap();
+    for (t, m) in &messages {
+        match m {
+            Msg::State(m) => rec.write(topics::SESSION_STATE, *t, m),
+            Msg::Pose(m) => rec.write(topics::OPERATOR_POSE, *t, m),
+            Msg::Command(m) => rec.write(topics::JOINT_TRAJECTORY, *t, m),
+            Msg::Event(m) => rec.write(topics::CONTROLLER_EVENTS, *t, m),
+        }
+        .unwrap();
+    }
+    rec.finish().unwrap();
+    path
+}
+
+#[test]
+fn the_review_shows_each_robot_leg_and_the_controllers_events() {
+    let rec = robot_cycle();
+    let data = |session: &str| {
+        let html = tmp(&format!("review-robot-{session}.html"));
+        let o = ergocell(&[
+            "report",
+            rec.to_str().unwrap(),
+            "--session",
+            session,
+            "--out",
+            html.to_str().unwrap(),
+            "--force",
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        report_data(&std::fs::read_to_string(&html).unwrap())["sessions"][0].clone()
+    };
+    let s = data("1");
+    let legs = s["robot"]["legs"].as_array().unwrap();
+    let summary: Vec<(&str, f64, f64, &str, bool)> = legs
+        .iter()
+        .map(|l| {
+            (
+                l["leg"].as_str().unwrap(),
+                l["t_start"].as_f64().unwrap(),
+                l["t_end"].as_f64().unwrap(),
+                l["outcome"].as_str().unwrap(),
+                l["end_known"].as_bool().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        summary,
+        [
+            ("home → handover", 1.0, 3.1, "succeeded", true),
+            ("handover → home", 5.0, 6.05, "canceled", true),
+            // Its result came after session_ended and stays with it.
+            ("handover → home", 8.0, 13.5, "succeeded", true),
+        ]
+    );
+    // Feedback folded into its leg: the result's count, the largest finite error.
+    assert_eq!(legs[0]["feedback_count"], 52);
+    assert_eq!(legs[0]["max_error"], 0.003);
+    assert_eq!(legs[0]["planned_s"], 2.0);
+    assert_eq!(s["robot"]["holds"], serde_json::json!([6.0]));
+    let kinds: Vec<&str> = s["robot"]["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        kinds,
+        [
+            "goal_sent",
+            "accepted",
+            "finished",
+            "goal_sent",
+            "cancel_requested",
+            "finished",
+            "goal_sent",
+            "finished"
+        ],
+        "no feedback listed, the next session's driver event not here"
+    );
+    let parts = s["facts"]["parts_taken"].as_array().unwrap();
+    assert_eq!(parts.len(), 1);
+    assert_eq!(
+        (&parts[0]["t"], &parts[0]["part"], &parts[0]["hand"]),
+        (
+            &serde_json::json!(4.0),
+            &serde_json::json!(1),
+            &serde_json::json!("left")
+        )
+    );
+    assert_eq!(parts[0]["distance_m"], 0.052);
+
+    // Session 2: its leg, named by where it starts (home), ends only as planned.
+    let s = data("2");
+    let legs = s["robot"]["legs"].as_array().unwrap();
+    assert_eq!(legs.len(), 1, "{legs:?}");
+    let l = &legs[0];
+    assert_eq!(
+        (&l["leg"], &l["outcome"], &l["end_known"]),
+        (
+            &serde_json::json!("home → handover"),
+            &serde_json::json!("sent"),
+            &serde_json::json!(false)
+        )
+    );
+    let span = l["t_end"].as_f64().unwrap() - l["t_start"].as_f64().unwrap();
+    assert!((span - 2.0).abs() < 1e-6, "{l}");
+    assert!(
+        l["feedback_count"].is_null() && l["max_error"].is_null(),
+        "{l}"
+    );
+    let events = s["robot"]["events"].as_array().unwrap();
+    assert_eq!(events.len(), 1);
+    assert_eq!(
+        (&events[0]["kind"], &events[0]["status"]),
+        (&serde_json::json!("driver"), &serde_json::json!("ready"))
+    );
+    assert!(s["facts"]["parts_taken"].as_array().unwrap().is_empty());
 }

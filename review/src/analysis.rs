@@ -8,8 +8,14 @@
 //! per-region rows are `ergocell rula track`'s summary ([`ergocell_ergonomics::summary`]) of the
 //! recorded scores: time-weighted, gaps not counted, so the two report the same numbers for one
 //! session. Angles are turned into degrees here, the report boundary.
+//!
+//! The robot: its TCP from the recorded markers; each leg it was sent, its holds and the controller's
+//! events from the joint trajectory topic and `/ergocell/controller_events` (see [`Robot`]; the
+//! feedback folded into its leg); the parts the operator took from the session states' reasons.
 
-use ergocell_bridge::msg::{ErgonomicState, RulaSide, SessionState};
+use ergocell_bridge::msg::{
+    ControllerEvent, ErgonomicState, JointTrajectory, RulaSide, SessionState,
+};
 use ergocell_ergonomics::assess::BodyRegion;
 use ergocell_ergonomics::rula::{RulaScores, GRAND_SCORE_MAX};
 use ergocell_ergonomics::summary::{
@@ -75,6 +81,23 @@ pub struct Facts {
     pub trajectory_sha256: Option<String>,
     pub approved_by: Vec<String>,
     pub states: Vec<StateChange>,
+    /// The cell's cycle: each part the operator took at the handover point (from the states'
+    /// reasons, "part N taken: …"), in order.
+    pub parts_taken: Vec<PartTaken>,
+}
+
+/// One part the operator took from the robot at the handover point.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PartTaken {
+    pub t: f64,
+    /// 1 for the session's first part.
+    pub part: u32,
+    /// "left" or "right"; `None` when the reason does not say.
+    pub hand: Option<String>,
+    /// How close that hand came to the handover point, metres.
+    pub distance_m: Option<f64>,
+    /// The state's reason, as recorded.
+    pub reason: String,
 }
 
 /// One recorded session-state message.
@@ -106,11 +129,60 @@ pub struct Frames {
     pub action_level: Vec<u8>,
 }
 
-/// The robot as recorded (`/ergocell/robot_markers`).
+/// The robot as recorded: its TCP and the handover point (`/ergocell/robot_markers`), the legs it was
+/// sent and the holds (the joint trajectory topic), and what the robot side reported
+/// (`/ergocell/controller_events`).
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct Robot {
     pub tcp: Option<TcpTrack>,
     pub handover_point: Option<[f64; 3]>,
+    /// Each leg sent (a `JointTrajectory` with points, or one FollowJointTrajectory goal), in order.
+    pub legs: Vec<RobotLeg>,
+    /// When the robot was held (an empty `JointTrajectory`), seconds.
+    pub holds: Vec<f64>,
+    /// The controller events, in order, without the feedback (folded into its leg).
+    pub events: Vec<RobotEvent>,
+}
+
+/// One robot leg.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RobotLeg {
+    /// When it was sent, seconds.
+    pub t_start: f64,
+    /// When it ended: as reported (the controller's answer), cut short (a hold, the next leg), or,
+    /// with `end_known` false, as planned (`t_start + planned_s`).
+    pub t_end: f64,
+    /// The trajectory's duration (its last point's time from start), seconds.
+    pub planned_s: f64,
+    /// "home → handover", "handover → home", or "" when it cannot be told.
+    pub leg: String,
+    /// The controller's status at its end (succeeded, aborted, canceled, …), or rejected, failed,
+    /// no_response; held or replaced when a hold or the next leg came before its planned end; sent
+    /// when nothing reported its end.
+    pub outcome: String,
+    /// `t_end` was reported or seen (not only planned).
+    pub end_known: bool,
+    /// The controller's feedback messages for it; `None` when it reported none and no result.
+    pub feedback_count: Option<u32>,
+    /// The largest joint error its feedback reported, radians; `None` when not given.
+    pub max_error: Option<f64>,
+    /// The words on its end (the controller's error string, the failure), "" when none.
+    pub text: String,
+}
+
+/// One controller event (not feedback).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RobotEvent {
+    pub t: f64,
+    /// goal_sent | accepted | rejected | no_response | failed | finished | cancel_requested |
+    /// monitor | driver
+    pub kind: String,
+    pub leg: String,
+    pub status: String,
+    pub error_code: i32,
+    pub text: String,
+    /// monitor: the largest deviation as a share of its tolerance; `None` when not known.
+    pub max_error: Option<f64>,
 }
 
 /// The TCP position over time.
@@ -548,7 +620,45 @@ fn facts(states: &[Stamped<SessionState>], t0: u64) -> Facts {
                 reason: s.message.reason.clone(),
             })
             .collect(),
+        parts_taken: parts_taken(states, t0),
     }
+}
+
+/// The parts taken, from the states' reasons ("part 2 taken: the operator's left hand came to
+/// 0.083 m of the handover point and left it; …"); each part once.
+fn parts_taken(states: &[Stamped<SessionState>], t0: u64) -> Vec<PartTaken> {
+    let mut parts: Vec<PartTaken> = Vec::new();
+    for s in states {
+        let reason = &s.message.reason;
+        let Some((part, rest)) = reason
+            .strip_prefix("part ")
+            .and_then(|r| r.split_once(' '))
+            .and_then(|(n, rest)| Some((n.parse::<u32>().ok()?, rest)))
+        else {
+            continue;
+        };
+        if !rest.starts_with("taken") || parts.iter().any(|p| p.part == part) {
+            continue;
+        }
+        let hand = rest
+            .split_once("operator's ")
+            .and_then(|(_, r)| r.split_whitespace().next())
+            .filter(|h| matches!(*h, "left" | "right"))
+            .map(str::to_owned);
+        let distance_m = rest
+            .split_once("came to ")
+            .and_then(|(_, r)| r.split_once(" m"))
+            .and_then(|(d, _)| d.trim().parse::<f64>().ok())
+            .and_then(finite);
+        parts.push(PartTaken {
+            t: secs(s.log_time_nanos, t0),
+            part,
+            hand,
+            distance_m,
+            reason: reason.clone(),
+        });
+    }
+    parts
 }
 
 fn robot(rec: &Recording, t0: u64) -> Robot {
@@ -570,10 +680,203 @@ fn robot(rec: &Recording, t0: u64) -> Robot {
             }
         }
     }
+    let (legs, holds, events) = robot_legs(&rec.trajectories, &rec.controller_events, t0);
     Robot {
         tcp: (!tcp.t.is_empty()).then_some(tcp),
         handover_point: handover,
+        legs,
+        holds,
+        events,
     }
+}
+
+/// A leg's first or last point within this of home (each joint, radians) starts or ends there.
+const HOME_TOLERANCE_RAD: f64 = 0.01;
+
+/// The leg names `ergocell run` reports and records.
+const TO_HANDOVER: &str = "home → handover";
+const TO_HOME: &str = "handover → home";
+
+fn near(a: &[f64], b: &[f64]) -> bool {
+    !a.is_empty()
+        && a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|(x, y)| (x - y).abs() <= HOME_TOLERANCE_RAD)
+}
+
+/// A leg being put together: times in nanoseconds (the recording's clock).
+struct LegDraft {
+    start: u64,
+    planned_nanos: u64,
+    leg: String,
+    /// Reported end: time, outcome, words.
+    end: Option<(u64, String, String)>,
+    /// Cut short before its planned end: time, outcome.
+    cut: Option<(u64, &'static str)>,
+    feedback_count: Option<u32>,
+    max_error: Option<f64>,
+}
+
+/// The robot's legs, holds and events from its commands and the controller's events.
+///
+/// A leg is named by the `goal_sent` event recorded with it (same log time) when there is one, else
+/// by its points: its first point at home (the first point of the session's first leg) → home →
+/// handover, its last point at home → handover → home. It ends at its `finished` (or `rejected`,
+/// `failed`, `no_response`) event; else at a hold or the next leg sent before its planned end; else
+/// as planned (`end_known` false: nothing reported it, e.g. `demo`'s in-process robot). Feedback is
+/// folded into its leg (count, largest error), not listed.
+fn robot_legs(
+    commands: &[Stamped<JointTrajectory>],
+    events: &[Stamped<ControllerEvent>],
+    t0: u64,
+) -> (Vec<RobotLeg>, Vec<f64>, Vec<RobotEvent>) {
+    let mut commands: Vec<&Stamped<JointTrajectory>> = commands.iter().collect();
+    commands.sort_by_key(|c| c.log_time_nanos);
+    let mut events: Vec<&Stamped<ControllerEvent>> = events.iter().collect();
+    events.sort_by_key(|e| e.log_time_nanos);
+    let event_time =
+        |e: &Stamped<ControllerEvent>| header_or_log_time(&e.message.header, e.log_time_nanos);
+    let home: Option<&[f64]> = commands
+        .iter()
+        .find_map(|c| c.message.points.first())
+        .map(|p| p.positions.as_slice());
+
+    let mut holds = Vec::new();
+    let mut drafts: Vec<LegDraft> = Vec::new();
+    let mut named = vec![false; events.len()];
+    for (k, c) in commands.iter().enumerate() {
+        let t = c.log_time_nanos;
+        let points = &c.message.points;
+        let Some(last) = points.last() else {
+            holds.push(round_to(secs(t, t0), 6));
+            continue;
+        };
+        let planned_nanos = (last.time_from_start.as_secs_f64().max(0.0) * 1e9) as u64;
+        let sent = events.iter().enumerate().position(|(i, e)| {
+            !named[i]
+                && e.message.kind == "goal_sent"
+                && (e.log_time_nanos == t || event_time(e) == t)
+        });
+        let leg = if let Some(i) = sent {
+            named[i] = true;
+            events[i].message.leg.clone()
+        } else {
+            let at_home = |p: Option<&ergocell_bridge::msg::JointTrajectoryPoint>| {
+                p.zip(home).is_some_and(|(p, h)| near(&p.positions, h))
+            };
+            if at_home(points.first()) {
+                TO_HANDOVER.to_owned()
+            } else if at_home(points.last()) {
+                TO_HOME.to_owned()
+            } else {
+                String::new()
+            }
+        };
+        // Cut short by the next command (a hold or the next leg) sent before its planned end.
+        let cut = commands.get(k + 1).and_then(|next| {
+            let n = next.log_time_nanos;
+            (n < t.saturating_add(planned_nanos)).then_some((
+                n,
+                if next.message.points.is_empty() {
+                    "held"
+                } else {
+                    "replaced"
+                },
+            ))
+        });
+        drafts.push(LegDraft {
+            start: t,
+            planned_nanos,
+            leg,
+            end: None,
+            cut,
+            feedback_count: None,
+            max_error: None,
+        });
+    }
+
+    let mut listed = Vec::new();
+    for e in &events {
+        let m = &e.message;
+        let kind = m.kind.as_str();
+        let about_leg = !m.leg.is_empty()
+            && matches!(
+                kind,
+                "feedback" | "finished" | "rejected" | "failed" | "no_response"
+            );
+        if about_leg {
+            // Its leg: the latest one sent before it, of its name, not yet ended; any such leg when
+            // none has its name.
+            let open = |d: &LegDraft| d.start <= e.log_time_nanos && d.end.is_none();
+            let k = drafts
+                .iter()
+                .rposition(|d| open(d) && d.leg == m.leg)
+                .or_else(|| drafts.iter().rposition(open));
+            if let Some(d) = k.and_then(|k| drafts.get_mut(k)) {
+                let count = (kind == "feedback" || kind == "finished").then_some(m.feedback_count);
+                if let Some(count) = count {
+                    d.feedback_count = Some(d.feedback_count.map_or(count, |c| c.max(count)));
+                }
+                if kind == "feedback" {
+                    if let Some(err) = finite(m.max_error) {
+                        d.max_error = Some(d.max_error.map_or(err, |x: f64| x.max(err)));
+                    }
+                } else {
+                    let outcome = if kind == "finished" {
+                        if m.status.is_empty() {
+                            "finished"
+                        } else {
+                            m.status.as_str()
+                        }
+                    } else {
+                        kind
+                    };
+                    d.end = Some((
+                        event_time(e).max(d.start),
+                        outcome.to_owned(),
+                        m.text.clone(),
+                    ));
+                }
+            }
+        }
+        if kind == "feedback" {
+            continue;
+        }
+        listed.push(RobotEvent {
+            t: round_to(secs(event_time(e), t0), 6),
+            kind: m.kind.clone(),
+            leg: m.leg.clone(),
+            status: m.status.clone(),
+            error_code: m.error_code,
+            text: m.text.clone(),
+            max_error: finite(m.max_error),
+        });
+    }
+
+    let legs = drafts
+        .into_iter()
+        .map(|d| {
+            let planned_end = d.start.saturating_add(d.planned_nanos);
+            let (end, outcome, end_known, text) = match (d.end, d.cut) {
+                (Some((t, outcome, text)), _) => (t, outcome, true, text),
+                (None, Some((t, outcome))) => (t, outcome.to_owned(), true, String::new()),
+                (None, None) => (planned_end, "sent".to_owned(), false, String::new()),
+            };
+            RobotLeg {
+                t_start: round_to(secs(d.start, t0), 6),
+                t_end: round_to(secs(end, t0), 6),
+                planned_s: round_to(d.planned_nanos as f64 * 1e-9, 6),
+                leg: d.leg,
+                outcome,
+                end_known,
+                feedback_count: d.feedback_count,
+                max_error: d.max_error,
+                text,
+            }
+        })
+        .collect();
+    (legs, holds, listed)
 }
 
 #[cfg(test)]
@@ -734,5 +1037,203 @@ mod tests {
         assert_eq!(rows[8].time_share, [0.0, 1.0]);
         assert_eq!(rows[9].max_score, 7);
         assert!((rows[9].time_share.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+    }
+
+    const S: u64 = 1_000_000_000;
+
+    fn stamped<M>(t: u64, message: M) -> Stamped<M> {
+        Stamped {
+            log_time_nanos: t,
+            message,
+        }
+    }
+
+    /// A leg through `knots` (joint positions, time from start in seconds).
+    fn leg(knots: &[(&[f64], f64)]) -> JointTrajectory {
+        JointTrajectory {
+            joint_names: vec!["a1".to_owned(), "a2".to_owned()],
+            points: knots
+                .iter()
+                .map(|&(q, t)| ergocell_bridge::msg::JointTrajectoryPoint {
+                    positions: q.to_vec(),
+                    time_from_start: ergocell_bridge::msg::Duration::from_secs_f64(t),
+                    ..Default::default()
+                })
+                .collect(),
+            ..JointTrajectory::default()
+        }
+    }
+
+    const HOME: &[f64] = &[0.0, -1.5];
+    const HANDOVER: &[f64] = &[0.6, -0.9];
+
+    fn to_handover() -> JointTrajectory {
+        leg(&[(HOME, 0.0), (&[0.3, -1.2], 1.0), (HANDOVER, 2.5)])
+    }
+
+    fn to_home() -> JointTrajectory {
+        // Ends within the tolerance of home, not exactly on it.
+        leg(&[
+            (HANDOVER, 0.0),
+            (&[0.3, -1.2], 1.5),
+            (&[0.004, -1.497], 2.5),
+        ])
+    }
+
+    fn event(kind: &str, leg: &str) -> ControllerEvent {
+        ControllerEvent {
+            kind: kind.to_owned(),
+            leg: leg.to_owned(),
+            max_error: f64::NAN,
+            ..ControllerEvent::default()
+        }
+    }
+
+    #[test]
+    fn legs_are_named_by_their_goal_or_by_where_they_start_and_end() {
+        let commands = vec![
+            stamped(S, to_handover()),
+            stamped(5 * S, to_home()),
+            stamped(10 * S, to_handover()),
+            // Neither end at home: no name.
+            stamped(20 * S, leg(&[(HANDOVER, 0.0), (&[0.5, -1.0], 1.0)])),
+            // Named by its goal, whatever its points.
+            stamped(30 * S, to_handover()),
+        ];
+        let events = vec![stamped(30 * S, event("goal_sent", "handover → home"))];
+        let (legs, holds, listed) = robot_legs(&commands, &events, 0);
+        let names: Vec<&str> = legs.iter().map(|l| l.leg.as_str()).collect();
+        assert_eq!(
+            names,
+            [
+                "home → handover",
+                "handover → home",
+                "home → handover",
+                "",
+                "handover → home"
+            ]
+        );
+        assert!(holds.is_empty());
+        assert_eq!(listed.len(), 1, "goal_sent is listed");
+        assert_eq!((listed[0].t, listed[0].kind.as_str()), (30.0, "goal_sent"));
+    }
+
+    #[test]
+    fn a_leg_ends_as_reported_else_when_cut_short_else_as_planned() {
+        let commands = vec![
+            stamped(S, to_handover()),
+            stamped(5 * S, to_home()),
+            // Held 1 s into the third leg, before its planned end.
+            stamped(10 * S, to_handover()),
+            stamped(11 * S, JointTrajectory::default()),
+            stamped(20 * S, to_home()),
+        ];
+        let finished = ControllerEvent {
+            status: "aborted".to_owned(),
+            error_code: -4,
+            text: "path tolerance violated".to_owned(),
+            header: ergocell_bridge::msg::Header::new(7_200_000_000, ""),
+            ..event("finished", "handover → home")
+        };
+        let events = vec![stamped(7_300_000_000, finished)];
+        let (legs, holds, _) = robot_legs(&commands, &events, S);
+        let ends: Vec<(f64, f64, &str, bool)> = legs
+            .iter()
+            .map(|l| (l.t_start, l.t_end, l.outcome.as_str(), l.end_known))
+            .collect();
+        assert_eq!(
+            ends,
+            [
+                // Nothing reported: the planned end, open.
+                (0.0, 2.5, "sent", false),
+                // The controller's answer, at its stamp (the header's, not the log time).
+                (4.0, 6.2, "aborted", true),
+                (9.0, 10.0, "held", true),
+                (19.0, 21.5, "sent", false),
+            ]
+        );
+        assert_eq!(legs[1].text, "path tolerance violated");
+        assert_eq!(legs[0].planned_s, 2.5);
+        assert_eq!(holds, [10.0]);
+    }
+
+    #[test]
+    fn feedback_is_folded_into_its_leg_and_not_listed() {
+        let commands = vec![stamped(S, to_handover()), stamped(5 * S, to_home())];
+        let feedback = |t: u64, leg: &str, count: u32, err: f64| {
+            stamped(
+                t,
+                ControllerEvent {
+                    feedback_count: count,
+                    max_error: err,
+                    ..event("feedback", leg)
+                },
+            )
+        };
+        let events = vec![
+            stamped(S, event("goal_sent", "home → handover")),
+            stamped(S + 10, event("accepted", "home → handover")),
+            feedback(S + 20, "home → handover", 1, 0.002),
+            feedback(2 * S, "home → handover", 25, f64::NAN),
+            feedback(3 * S, "home → handover", 50, 0.004),
+            stamped(
+                3 * S + 600_000_000,
+                ControllerEvent {
+                    status: "succeeded".to_owned(),
+                    feedback_count: 61,
+                    ..event("finished", "home → handover")
+                },
+            ),
+            stamped(5 * S, event("goal_sent", "handover → home")),
+            // Feedback with no number for the error, and no result yet.
+            feedback(6 * S, "handover → home", 1, f64::NAN),
+        ];
+        let (legs, _, listed) = robot_legs(&commands, &events, 0);
+        assert_eq!(legs[0].feedback_count, Some(61), "the result's count");
+        assert_eq!(legs[0].max_error, Some(0.004));
+        assert_eq!(
+            (legs[0].t_end, legs[0].outcome.as_str(), legs[0].end_known),
+            (3.6, "succeeded", true)
+        );
+        assert_eq!(legs[1].feedback_count, Some(1));
+        assert_eq!(legs[1].max_error, None, "NaN is no error value");
+        assert_eq!(legs[1].outcome, "sent");
+        let kinds: Vec<&str> = listed.iter().map(|e| e.kind.as_str()).collect();
+        assert_eq!(kinds, ["goal_sent", "accepted", "finished", "goal_sent"]);
+        // A leg without any answer has no count.
+        let (legs, _, _) = robot_legs(&commands[..1], &[], 0);
+        assert_eq!(legs[0].feedback_count, None);
+    }
+
+    #[test]
+    fn parts_taken_are_read_from_the_states_reasons_once_each() {
+        let state = |reason: &str| SessionState {
+            state: "working".to_owned(),
+            reason: reason.to_owned(),
+            ..SessionState::default()
+        };
+        let taken = |n: u32, hand: &str| {
+            format!("part {n} taken: the operator's {hand} hand came to 0.083 m of the handover point and left it; robot going home for the next part")
+        };
+        let states = vec![
+            stamped(S, state("trajectory sent: home → handover")),
+            stamped(4 * S, state(&taken(1, "left"))),
+            stamped(4 * S, state(&taken(1, "left"))),
+            stamped(9 * S, state(&taken(2, "right"))),
+            stamped(10 * S, state("part of the cell")),
+        ];
+        let f = facts(&states, S);
+        let parts: Vec<(f64, u32, Option<&str>, Option<f64>)> = f
+            .parts_taken
+            .iter()
+            .map(|p| (p.t, p.part, p.hand.as_deref(), p.distance_m))
+            .collect();
+        assert_eq!(
+            parts,
+            [
+                (3.0, 1, Some("left"), Some(0.083)),
+                (8.0, 2, Some("right"), Some(0.083))
+            ]
+        );
     }
 }

@@ -108,6 +108,7 @@ mod tests {
                 trajectory_sha256: None,
                 approved_by: vec![],
                 states: vec![],
+                parts_taken: vec![],
             },
             landmarks: vec![],
             bones: vec![],

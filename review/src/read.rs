@@ -10,7 +10,8 @@ use std::collections::BTreeMap;
 
 use ergocell_bridge::cdr;
 use ergocell_bridge::msg::{
-    ErgonomicState, MarkerArray, OperatorPose, PostureWarning, RosMessage, SessionState,
+    ControllerEvent, ErgonomicState, JointTrajectory, MarkerArray, OperatorPose, PostureWarning,
+    RosMessage, SessionState,
 };
 use serde::de::DeserializeOwned;
 
@@ -53,12 +54,19 @@ pub struct Recording {
     pub warnings: Vec<Stamped<PostureWarning>>,
     pub states: Vec<Stamped<SessionState>>,
     pub robot_markers: Vec<Stamped<MarkerArray>>,
+    /// The robot commands (`/joint_trajectory_controller/joint_trajectory`): each leg, and each hold
+    /// (an empty trajectory).
+    pub trajectories: Vec<Stamped<JointTrajectory>>,
+    /// What the robot side did (`/ergocell/controller_events`): the controller's answers, the
+    /// execution monitor's verdicts, the driver's state.
+    pub controller_events: Vec<Stamped<ControllerEvent>>,
     /// Every channel by topic.
     pub channels: BTreeMap<String, ChannelInfo>,
 }
 
 impl Recording {
-    /// Messages on the topics the review reads.
+    /// Messages on the session's topics (the operator, RULA, warnings, states, robot markers): the
+    /// robot's commands and controller events alone make no reviewable session.
     pub fn ergocell_messages(&self) -> usize {
         self.poses.len()
             + self.ergonomics.len()
@@ -262,6 +270,8 @@ impl Reader {
             topics::WARNINGS => take(&schema, &m.data, t, &mut rec.warnings),
             topics::SESSION_STATE => take(&schema, &m.data, t, &mut rec.states),
             topics::ROBOT_MARKERS => take(&schema, &m.data, t, &mut rec.robot_markers),
+            topics::JOINT_TRAJECTORY => take(&schema, &m.data, t, &mut rec.trajectories),
+            topics::CONTROLLER_EVENTS => take(&schema, &m.data, t, &mut rec.controller_events),
             _ => Ok(()),
         };
         if let Err(why) = outcome {
@@ -400,10 +410,18 @@ pub struct SessionPart {
     pub recording: Recording,
 }
 
+/// How long after a session's `session_ended` a controller event about a leg still belongs to that
+/// session: the controller answers a goal's end (`finished`) up to ~2 s after the robot is home and
+/// the session has ended.
+pub const LATE_EVENT_NANOS: u64 = 3_000_000_000;
+
 /// Splits a recording into its operator sessions: `ergocell run --record` writes one session after
 /// another into one file, each ending with a `session_ended` state. A session is the messages up to
 /// and including its `session_ended`; what follows the last one counts only if an operator was seen
 /// in it (poses or RULA), e.g. a session cut short by the end of the file.
+///
+/// A controller event about a leg recorded within [`LATE_EVENT_NANOS`] after a session's end, before
+/// the next session sent any leg, is that session's (a late `finished`).
 pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
     let ends: Vec<u64> = rec
         .states
@@ -433,8 +451,39 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
     let inside = |t: u64, (a, b): (Option<u64>, Option<u64>)| {
         a.is_none_or(|a| t > a) && b.is_none_or(|b| t <= b)
     };
+    // Each controller event's range: by its time, or the previous one's for a late answer.
+    let leg_sent_in = |a: u64, b: u64| {
+        rec.trajectories
+            .iter()
+            .any(|m| !m.message.points.is_empty() && m.log_time_nanos > a && m.log_time_nanos <= b)
+            || rec.controller_events.iter().any(|m| {
+                m.message.kind == "goal_sent" && m.log_time_nanos > a && m.log_time_nanos <= b
+            })
+    };
+    let event_range: Vec<usize> = rec
+        .controller_events
+        .iter()
+        .map(|e| {
+            let t = e.log_time_nanos;
+            let k = bounds
+                .iter()
+                .position(|&r| inside(t, r))
+                .unwrap_or(bounds.len() - 1);
+            let late = k > 0
+                && e.message.kind != "goal_sent"
+                && !e.message.leg.is_empty()
+                && bounds[k].0.is_some_and(|end| {
+                    t <= end.saturating_add(LATE_EVENT_NANOS) && !leg_sent_in(end, t)
+                });
+            if late {
+                k - 1
+            } else {
+                k
+            }
+        })
+        .collect();
     let mut parts = Vec::new();
-    for range in bounds {
+    for (k, range) in bounds.into_iter().enumerate() {
         let f = |t: u64| inside(t, range);
         let poses = part(&rec.poses, &f);
         let ergonomics = part(&rec.ergonomics, &f);
@@ -453,6 +502,14 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
             warnings: part(&rec.warnings, &f),
             states: part(&rec.states, &f),
             robot_markers: part(&rec.robot_markers, &f),
+            trajectories: part(&rec.trajectories, &f),
+            controller_events: rec
+                .controller_events
+                .iter()
+                .zip(&event_range)
+                .filter(|&(_, &r)| r == k)
+                .map(|(e, _)| e.clone())
+                .collect(),
             channels: rec.channels.clone(),
         });
     }
@@ -530,5 +587,91 @@ mod tests {
             ..Recording::default()
         };
         assert_eq!(split_sessions(&one).len(), 1);
+    }
+
+    fn event(kind: &str, leg: &str) -> ControllerEvent {
+        ControllerEvent {
+            kind: kind.to_owned(),
+            leg: leg.to_owned(),
+            max_error: f64::NAN,
+            ..ControllerEvent::default()
+        }
+    }
+
+    fn leg_command() -> JointTrajectory {
+        JointTrajectory {
+            points: vec![ergocell_bridge::msg::JointTrajectoryPoint::default()],
+            ..JointTrajectory::default()
+        }
+    }
+
+    #[test]
+    fn a_late_finished_stays_with_the_session_of_its_leg() {
+        let s = 1_000_000_000;
+        let ms = 1_000_000;
+        let rec = Recording {
+            states: vec![
+                stamped(0, state("working")),
+                stamped(10 * s, state("session_ended")),
+                stamped(11 * s, state("measuring_height")),
+                stamped(20 * s, state("session_ended")),
+            ],
+            poses: [1, 5, 9, 13, 19]
+                .iter()
+                .map(|&k| stamped(k * s, OperatorPose::default()))
+                .collect(),
+            trajectories: vec![
+                stamped(7 * s, leg_command()),
+                stamped(12 * s + 500 * ms, leg_command()),
+                // A hold in the second session, right after its start: no leg.
+                stamped(10 * s + 100 * ms, JointTrajectory::default()),
+            ],
+            controller_events: vec![
+                stamped(7 * s, event("goal_sent", "handover → home")),
+                stamped(8 * s, event("feedback", "handover → home")),
+                // 1.5 s after the first session's end: its last leg's answer.
+                stamped(11 * s + 500 * ms, event("finished", "handover → home")),
+                // The driver's state at the same moment is about no leg: the second session's.
+                stamped(11 * s + 500 * ms, event("driver", "")),
+                stamped(12 * s + 500 * ms, event("goal_sent", "home → handover")),
+                // Within 3 s of the first end, but after the second session sent its leg.
+                stamped(12 * s + 800 * ms, event("accepted", "home → handover")),
+                // Later than 3 s after the first end.
+                stamped(14 * s, event("finished", "home → handover")),
+            ],
+            first_log_time_nanos: Some(0),
+            last_log_time_nanos: Some(20 * s),
+            ..Recording::default()
+        };
+        let parts = split_sessions(&rec);
+        assert_eq!(parts.len(), 2);
+        let kinds = |k: usize| -> Vec<(String, u64)> {
+            parts[k]
+                .recording
+                .controller_events
+                .iter()
+                .map(|e| (e.message.kind.clone(), e.log_time_nanos / ms))
+                .collect()
+        };
+        assert_eq!(
+            kinds(0),
+            [
+                ("goal_sent".to_owned(), 7000),
+                ("feedback".to_owned(), 8000),
+                ("finished".to_owned(), 11500)
+            ]
+        );
+        assert_eq!(
+            kinds(1),
+            [
+                ("driver".to_owned(), 11500),
+                ("goal_sent".to_owned(), 12500),
+                ("accepted".to_owned(), 12800),
+                ("finished".to_owned(), 14000)
+            ]
+        );
+        // The commands go by their time.
+        assert_eq!(parts[0].recording.trajectories.len(), 1);
+        assert_eq!(parts[1].recording.trajectories.len(), 2);
     }
 }

@@ -3,7 +3,8 @@
 // reaching forward with one arm every few seconds; the robot's TCP moves to a handover point.
 //
 //   node dev/sample-data.mjs out.json [--frames N] [--compare] [--problems] [--no-robot] [--null-strain] [--empty]
-//     [--legacy]  (without the fields added later: frames.uncertain_left/right, angles[].score_edges_deg)
+//     [--legacy]  (without the fields added later: frames.uncertain_left/right, angles[].score_edges_deg,
+//                  robot.legs/holds/events, facts.parts_taken)
 import { writeFileSync } from 'node:fs';
 
 const args = process.argv.slice(2);
@@ -216,6 +217,34 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
     tcp = { t: tt, positions: pp };
   }
 
+  // The cell's cycle, as `ergocell run` records it in action mode: a leg home → handover, the
+  // operator takes the part, the leg home, the next part… Held at 18.0 s (the leg home canceled),
+  // the last leg's end not reported (the recording ends).
+  const cycle = robot && frames > 0 && !legacy;
+  const HO = 'home → handover', HH = 'handover → home';
+  const legs = cycle ? [
+    { t_start: 3.0, t_end: 5.08, planned_s: 2.0, leg: HO, outcome: 'succeeded', end_known: true, feedback_count: 21, max_error: 0.0021, text: '' },
+    { t_start: 7.0, t_end: 9.06, planned_s: 2.0, leg: HH, outcome: 'succeeded', end_known: true, feedback_count: 21, max_error: 0.0034, text: '' },
+    { t_start: 13.0, t_end: 15.1, planned_s: 2.0, leg: HO, outcome: 'succeeded', end_known: true, feedback_count: 22, max_error: 0.0019, text: '' },
+    { t_start: 17.0, t_end: 18.05, planned_s: 2.0, leg: HH, outcome: 'canceled', end_known: true, feedback_count: 11, max_error: 0.0022, text: '' },
+    { t_start: 23.0, t_end: 25.4, planned_s: 2.0, leg: HO, outcome: 'aborted', end_known: true, feedback_count: 24, max_error: 0.0412, text: 'PATH_TOLERANCE_VIOLATED (-4): a4 beyond its path tolerance' },
+    { t_start: 27.0, t_end: 29.0, planned_s: 2.0, leg: HH, outcome: 'sent', end_known: false, feedback_count: null, max_error: null, text: '' },
+  ] : [];
+  const ev = (t, kind, leg = '', extra = {}) => ({ t, kind, leg, status: '', error_code: 0, text: '', max_error: null, ...extra });
+  const events = cycle ? [
+    ev(0.4, 'driver', '', { status: 'ready', text: 'configured and controlling' }),
+    ...legs.flatMap((l) => [
+      ev(l.t_start, 'goal_sent', l.leg, { text: '6 points over 2.00 s; path tolerances 0.0187, 0.0194, 0.0201, 0.0188, 0.0210, 0.0230 rad' }),
+      ev(l.t_start + 0.02, 'accepted', l.leg),
+      ...(l.end_known ? [ev(l.t_end, 'finished', l.leg, { status: l.outcome, error_code: l.outcome === 'aborted' ? -4 : 0, text: l.text })] : []),
+    ]),
+    ev(18.0, 'cancel_requested', HH),
+    ev(25.3, 'monitor', '', { text: 'a4 is 0.041 rad off the locked path (tolerance 0.023 rad) at 2.30 s into home → handover', max_error: 1.78 }),
+  ].sort((a, b) => a.t - b.t) : [];
+  const holds = cycle ? [18.0, 25.3] : [];
+  const partTaken = (n, t, hand) => ({ t, part: n, hand, distance_m: 0.041 + n * 0.01, reason: `part ${n} taken: the operator's ${hand} hand came to ${(0.041 + n * 0.01).toFixed(3)} m of the handover point and left it; robot going home for the next part` });
+  const parts = cycle ? [partTaken(1, 7.0, 'left'), partTaken(2, 17.0, 'right'), partTaken(3, 27.0, 'left')] : [];
+
   const states = frames > 0 ? [
     { t: 0.0, state: 'waiting_for_operator', reason: 'session started' },
     { t: 0.3, state: 'measuring_height', reason: 'operator tracked at the station' },
@@ -224,7 +253,8 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
     { t: 2.2, state: 'working', reason: '' },
     { t: Math.min(18.0, t[t.length - 1]), state: 'held', reason: 'camera cam3 stale for 0.5 s; fewer than one stereo pair' },
     { t: Math.min(19.1, t[t.length - 1]), state: 'working', reason: 'tracking back for 0.5 s, lock verified, robot at home' },
-  ] : [];
+    ...parts.map((p) => ({ t: p.t, state: 'working', reason: p.reason })),
+  ].sort((a, b) => a.t - b.t) : [];
 
   return {
     label,
@@ -233,12 +263,13 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
       height_m: 1.746, height_uncertainty_m: 0.023, height_class: 'c2',
       trajectory_sha256: '3f6c1a9e0b7d4c2f8a5e6b1d9c0f7a2e4b8d6c3a1f0e9d8c7b6a5f4e3d2c1b0a',
       approved_by: ['M. Keller (EHS)'], states,
+      ...(legacy ? {} : { parts_taken: parts }),
     },
     landmarks: LANDMARKS,
     bones: BONES,
     up: [0, 0, 1],
     frames: { t, positions, strain, grand_left: gl, grand_right: gr, action_left: al, action_right: ar, ...(legacy ? {} : { uncertain_left: ul, uncertain_right: ur }), action_level: act },
-    robot: { tcp, handover_point: robot ? handover : null },
+    robot: { tcp, handover_point: robot ? handover : null, ...(legacy ? {} : { legs, holds, events }) },
     warnings,
     regions,
     angles,

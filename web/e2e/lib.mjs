@@ -114,3 +114,68 @@ export async function main(fn) {
     process.exit(1);
   }
 }
+
+/**
+ * The robot strip on the (first) timeline: the widest visible leg is drawn in its colour (a canvas
+ * pixel inside its band), the legend has a "robot leg" row, hovering the leg shows its tooltip and
+ * names it in the legend, and (with `events`) hovering a controller-event / part-taken diamond shows
+ * its tooltip. Returns what it saw.
+ */
+export async function robotStripChecks(b, what, { events = false } = {}) {
+  const { page } = b;
+  const over = await page.$('#timeline .u-over');
+  if (!over) fail(`${what}: no timeline plot`);
+  await over.scrollIntoViewIfNeeded();
+  const seen = await page.evaluate(() => {
+    const over = document.querySelector('#timeline .u-over');
+    const legs = [...over.querySelectorAll('.rmark.leg')].filter((e) => !e.hidden);
+    const widest = legs.reduce((a, e) => (!a || e.offsetWidth > a.offsetWidth ? e : a), null);
+    const canvas = over.parentElement.querySelector('canvas');
+    let pixel = null;
+    if (widest && canvas) {
+      const k = canvas.width / canvas.clientWidth;
+      const x = Math.round((over.offsetLeft + widest.offsetLeft + 3) * k);
+      const y = Math.round((over.offsetTop + widest.offsetTop + widest.offsetHeight / 2) * k);
+      pixel = [...canvas.getContext('2d').getImageData(x, y, 1, 1).data].slice(0, 3);
+      widest.dataset.e2e = 'widest';
+    }
+    const hex = widest ? widest.dataset.color : null;
+    const color = hex ? [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16)) : null;
+    return {
+      legs: legs.length,
+      width: widest ? widest.offsetWidth : 0,
+      pixel,
+      color,
+      legend: document.querySelector('#timeline .u-robot')?.textContent ?? null,
+      events: [...over.querySelectorAll('.rmark.ev')].filter((e) => !e.hidden).length,
+    };
+  });
+  if (!seen.legs) fail(`${what}: no robot leg on the timeline's strip`);
+  if (!seen.legend || !/^robot leg/.test(seen.legend)) fail(`${what}: no "robot leg" row in the timeline's legend (${JSON.stringify(seen.legend)})`);
+  if (!seen.pixel || seen.pixel.some((v, i) => Math.abs(v - seen.color[i]) > 12)) fail(`${what}: the widest leg's band is not drawn in its colour: pixel ${JSON.stringify(seen.pixel)}, expected ${JSON.stringify(seen.color)}`);
+  const leg = await page.$('#timeline .rmark.leg[data-e2e="widest"]');
+  await leg.hover();
+  await page.waitForTimeout(150);
+  const tip = await leg.$eval('.tip', (e) => (getComputedStyle(e).display !== 'none' ? e.textContent : null));
+  if (!tip || !/→|leg/.test(tip)) fail(`${what}: hovering a robot leg shows no tooltip (${JSON.stringify(tip)})`);
+  // Off the plot, the legend reads out the current frame: in the leg's middle, its name.
+  await page.mouse.move(5, 5);
+  const mid = await leg.evaluate((e) => ({ t: (Number(e.dataset.t) + Number(e.dataset.tEnd)) / 2, leg: e.dataset.leg }));
+  await page.evaluate((t) => window.ergocellReview.seek(t), mid.t);
+  await page.waitForTimeout(100);
+  const value = await page.$eval('#timeline .u-robot .u-value', (e) => e.textContent);
+  if (value !== mid.leg || !tip.startsWith(mid.leg)) fail(`${what}: at ${mid.t.toFixed(2)} s, in the leg "${tip.slice(0, 40)}…", the legend's robot leg reads "${value}"`);
+  pass(`${what}: ${seen.legs} robot leg(s) on the strip (the widest, ${seen.width} px, drawn in ${JSON.stringify(seen.color)}), legend "${seen.legend}", tooltip "${tip.slice(0, 60)}…"`);
+  let eventTip = null;
+  if (events) {
+    if (!seen.events) fail(`${what}: no controller event or part-taken diamond on the strip`);
+    const flag = await page.$('#timeline .rmark.ev:not([hidden]) .flag');
+    await flag.hover();
+    await page.waitForTimeout(150);
+    eventTip = await page.$eval('#timeline .rmark.ev:hover .tip', (e) => (getComputedStyle(e).display !== 'none' ? e.textContent : null)).catch(() => null);
+    if (!eventTip || !/\d\.\d\d s · /.test(eventTip)) fail(`${what}: hovering a controller event shows no tooltip (${JSON.stringify(eventTip)})`);
+    pass(`${what}: ${seen.events} event diamond(s); the first's tooltip "${eventTip.slice(0, 60)}…"`);
+  }
+  await page.mouse.move(5, 5);
+  return { ...seen, tip, eventTip };
+}

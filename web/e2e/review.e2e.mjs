@@ -1,7 +1,7 @@
 // End-to-end check of the review page served by `ergocell review` (or dev/serve.mjs):
 //   node web/e2e/review.e2e.mjs <url> <screenshot.png>
 // Uses Debian's chromium (/usr/bin/chromium, or $CHROMIUM). Exits non-zero on the first failure.
-import { main, loadChecks, screenshot, fail, pass } from './lib.mjs';
+import { main, loadChecks, screenshot, fail, pass, robotStripChecks } from './lib.mjs';
 
 const [url, shot] = process.argv.slice(2);
 if (!url || !shot) {
@@ -56,7 +56,12 @@ await main(async (b) => {
   if (scrub !== r.frame) fail(`the scrubber is at ${scrub}, not at frame ${r.frame}`);
   pass(`counter ("${text}") and scrubber follow the timeline click`);
 
-  // 4. the screenshot.
+  // 4. the robot's legs on the timeline's strip (the demo sends at least the leg to the handover).
+  await robotStripChecks(b, 'the recording');
+  const card = await page.textContent('#robot');
+  if (!/home → handover/.test(card)) fail(`the robot card lists no leg home → handover: ${JSON.stringify(card.slice(0, 200))}`);
+
+  // 5. the screenshot.
   await page.mouse.move(5, 5);
   await page.waitForTimeout(200);
   await screenshot(b, shot);

@@ -7,7 +7,7 @@ import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { main, loadChecks, fail, pass, assertClean } from './lib.mjs';
+import { main, loadChecks, fail, pass, assertClean, robotStripChecks } from './lib.mjs';
 
 const web = join(dirname(fileURLToPath(import.meta.url)), '..');
 const shots = process.argv[2];
@@ -55,6 +55,51 @@ async function newFields(b, name) {
   const clear = await page.evaluate(() => document.querySelectorAll('#readout .gs.unc').length);
   if (clear) fail(`${name}: at 5.0 s no side is uncertain, the readout marks ${clear}`);
   pass(`${name}: readout "${r.unc[0]}", timeline legend "${r.legend}", ${r.titles.length} histograms with score edges ("${r.titles[0]}")`);
+}
+
+// The cell's cycle (added later too): the robot's legs, holds and controller events on the
+// timeline's strip, the robot card, the parts taken. The sample: six legs (3.0 s home → handover
+// … 27.0 s handover → home, its end only planned), holds at 18.0 and 25.3 s, three parts taken.
+async function robotFields(b, name) {
+  const { page } = b;
+  const legacy = name === 'legacy';
+  const card = () => page.evaluate(() => ({
+    text: document.querySelector('#robot').textContent,
+    legs: [...document.querySelectorAll('#robot .leg-name')].map((e) => e.textContent),
+    parts: [...document.querySelectorAll('#facts dt')].find((e) => e.textContent === 'Parts taken')?.nextElementSibling?.textContent ?? null,
+    marks: document.querySelectorAll('#timeline .rmark').length,
+    legend: document.querySelector('#timeline .u-robot')?.textContent ?? null,
+  }));
+  const r = await card();
+  if (legacy) {
+    if (r.marks || r.legend || r.legs.length || !/no robot commands recorded/.test(r.text) || r.parts !== 'not recorded') fail(`${name}: data without the robot fields shows them: ${JSON.stringify(r)}`);
+    pass(`${name}: no robot strip, legend row or legs without the fields; robot card "${r.text.slice(0, 60)}…", parts taken "${r.parts}"`);
+    return;
+  }
+  const HO = 'home → handover', HH = 'handover → home';
+  if (JSON.stringify(r.legs) !== JSON.stringify([HO, HH, HO, HH, HO, HH])) fail(`${name}: the robot card lists the legs ${JSON.stringify(r.legs)}`);
+  if (!/6 legs · 3 parts taken · 2 holds/.test(r.text)) fail(`${name}: the robot card's summary reads ${JSON.stringify(r.text.slice(0, 120))}`);
+  if (!/aborted/.test(r.text) || !/sent · end planned/.test(r.text) || /feedback #/.test(r.text)) fail(`${name}: the robot card's outcomes: ${JSON.stringify(r.text)}`);
+  if (r.parts !== '3') fail(`${name}: the facts count ${JSON.stringify(r.parts)} parts taken`);
+  // Feedback is folded into its leg: no marker of its own (the sample has none either; the count is in the tooltip).
+  const seen = await robotStripChecks(b, name, { events: true });
+  if (!/feedback messages · largest joint error 0\.\d{4} rad/.test(seen.tip)) fail(`${name}: the leg's tooltip has no feedback summary: ${JSON.stringify(seen.tip)}`);
+  // The planned-only last leg and the holds: drawn; the readout names the leg under way.
+  await page.evaluate(() => window.ergocellReview.seek(4.0));
+  await page.waitForTimeout(100);
+  const rl = await page.$eval('#readout', (e) => e.querySelector('.rl')?.textContent ?? null);
+  if (rl !== `robot ${HO}`) fail(`${name}: at 4.0 s the readout's robot leg reads ${JSON.stringify(rl)}`);
+  await page.evaluate(() => window.ergocellReview.seek(11.0));
+  await page.waitForTimeout(100);
+  if (await page.$('#readout .rl')) fail(`${name}: at 11.0 s no leg is under way, yet the readout names one`);
+  // A leg in the card seeks to its start.
+  const btn = await page.$$('#robot button[data-t]');
+  const legBtn = [];
+  for (const x of btn) if (await x.$('.leg-name')) legBtn.push(x);
+  await legBtn[2].click();
+  const t = await page.evaluate(() => window.ergocellReview.time());
+  if (Math.abs(t - 13.0) > 0.051) fail(`${name}: the third leg in the robot card seeks to ${t} s, not 13.0 s`);
+  pass(`${name}: robot card lists 6 alternating legs, 3 parts taken, 2 holds; readout "${rl}" at 4.0 s; a leg in the card seeks to ${t.toFixed(2)} s`);
 }
 
 async function interactions(b) {
@@ -131,7 +176,10 @@ await main(async (b) => {
         await b.page.waitForTimeout(200);
         await b.page.keyboard.press('Space');
       }
-      if (name === 'sample' || name === 'legacy') await newFields(b, name);
+      if (name === 'sample' || name === 'legacy') {
+        await newFields(b, name);
+        await robotFields(b, name);
+      }
       if (name === 'sample') await interactions(b);
       if (name.startsWith('compare')) {
         await b.page.click('#session-select button[data-i="1"]');

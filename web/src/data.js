@@ -37,6 +37,52 @@ function scoreEdges(a) {
   return v.filter((x, i) => i === 0 || x !== v[i - 1]);
 }
 
+const str = (v) => (v == null ? '' : String(v));
+
+/** Robot legs (added later): finite times only, the end never before the start, by start. */
+function robotLegs(a) {
+  return arr(a)
+    .filter((l) => l && num(l.t_start) !== null && num(l.t_end) !== null)
+    .map((l) => ({
+      t_start: l.t_start,
+      t_end: Math.max(l.t_start, l.t_end),
+      planned_s: num(l.planned_s),
+      leg: str(l.leg),
+      outcome: str(l.outcome),
+      end_known: l.end_known !== false,
+      feedback_count: num(l.feedback_count),
+      max_error: num(l.max_error),
+      text: str(l.text),
+    }))
+    .sort((a, b) => a.t_start - b.t_start);
+}
+
+/** Controller events (added later; feedback is folded into the legs, never listed). */
+function robotEvents(a) {
+  return arr(a)
+    .filter((e) => e && num(e.t) !== null && e.kind !== 'feedback')
+    .map((e) => ({ t: e.t, kind: str(e.kind), leg: str(e.leg), status: str(e.status), error_code: num(e.error_code), text: str(e.text), max_error: num(e.max_error) }))
+    .sort((a, b) => a.t - b.t);
+}
+
+/** The parts the operator took (added later), by time. */
+function partsTaken(a) {
+  return arr(a)
+    .filter((p) => p && num(p.t) !== null)
+    .map((p) => ({ t: p.t, part: num(p.part), hand: p.hand == null ? null : String(p.hand), distance_m: num(p.distance_m), reason: str(p.reason) }))
+    .sort((a, b) => a.t - b.t);
+}
+
+/** The robot leg under way at time `time` (the latest one started), or null. */
+export function legAt(legs, time) {
+  let found = null;
+  for (const l of legs) {
+    if (l.t_start > time + 1e-9) break;
+    if (time < l.t_end) found = l;
+  }
+  return found;
+}
+
 function column(a, n) {
   const src = arr(a);
   const out = new Array(n);
@@ -119,6 +165,12 @@ export function normalizeSession(s, index) {
       approved_by: arr(facts.approved_by).map(String),
       states: arr(facts.states).filter((x) => x && typeof x === 'object'),
     },
+    // The cell's cycle (added later; absent in older data: no parts, no legs, no events).
+    partsTaken: partsTaken(facts.parts_taken),
+    hasPartsTaken: Array.isArray(facts.parts_taken),
+    robotLegs: robotLegs(robot.legs),
+    robotHolds: arr(robot.holds).map(num).filter((v) => v !== null).sort((a, b) => a - b),
+    robotEvents: robotEvents(robot.events),
     landmarks,
     nl,
     bones,

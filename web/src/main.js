@@ -2,10 +2,10 @@
 // or api/review.json (`ergocell review`'s server).
 import 'uplot/dist/uPlot.min.css';
 import './style.css';
-import { loadData, normalizeSession, nearestFrame, frameAtOrBefore } from './data.js';
+import { loadData, normalizeSession, nearestFrame, frameAtOrBefore, legAt } from './data.js';
 import { SkeletonView } from './view3d.js';
-import { createTimeline, SERIES_COLORS } from './timeline.js';
-import { renderFacts, renderStates, renderWarnings, renderRegions, renderAngles, esc, SESSION_COLORS } from './panels.js';
+import { createTimeline, SERIES_COLORS, legColor } from './timeline.js';
+import { renderFacts, renderStates, renderWarnings, renderRobot, renderRegions, renderAngles, esc, SESSION_COLORS } from './panels.js';
 import { gradientCss } from './colormap.js';
 
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
@@ -80,10 +80,11 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
   <aside class="side">
     <section class="card" id="facts"></section>
     <section class="card" id="warnings"></section>
+    <section class="card" id="robot"></section>
     <section class="card" id="states"></section>
   </aside>
   <section class="card timeline-card">
-    <h2>Timeline <span class="hint">RULA grand score per side and action level · dashed flags are warnings (hover)${sessions.some((s) => s.hasUncertain) ? " · hatched band at the bottom: a side's score is uncertain" : ''} · click to jump</span></h2>
+    <h2>Timeline <span class="hint">RULA grand score per side and action level · dashed flags are warnings (hover)${sessions.some((s) => s.hasUncertain) ? " · hatched band at the bottom: a side's score is uncertain" : ''}${sessions.some((s) => s.robotLegs.length || s.robotHolds.length || s.robotEvents.length || s.partsTaken.length) ? ' · strip at the top: robot legs (dashed end: planned, not reported), red ticks: holds, diamonds: controller events and parts taken' : ''} · click to jump</span></h2>
     <div id="timeline"></div>
   </section>
   <section class="card" id="regions"></section>
@@ -107,7 +108,9 @@ function readoutHtml(s, f) {
     const tip = q ? ` title="${name} score ${v} rests on low-confidence landmarks or held inputs (uncertain)"` : '';
     return `<span class="gs${q ? ' unc' : ''}"${tip}><i style="background:${color}"></i>${letter} ${g(v)}${q ? '<span class="q">?</span>' : ''}</span>`;
   };
-  return `${side('Left', 'L', SERIES_COLORS.left, s.grandLeft[f], s.uncertainLeft[f])}${side('Right', 'R', SERIES_COLORS.right, s.grandRight[f], s.uncertainRight[f])}${al}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}`;
+  const leg = legAt(s.robotLegs, t);
+  const robot = leg ? `<span class="rl"><i style="background:${legColor(leg.leg)}"></i>robot ${esc(leg.leg || 'leg')}</span>` : '';
+  return `${side('Left', 'L', SERIES_COLORS.left, s.grandLeft[f], s.uncertainLeft[f])}${side('Right', 'R', SERIES_COLORS.right, s.grandRight[f], s.uncertainRight[f])}${al}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}${robot}`;
 }
 
 function start(app, raw) {
@@ -168,6 +171,7 @@ function start(app, raw) {
   const onSeekList = (si, t) => seek(si, t);
   renderFacts($('facts'), sessions);
   renderWarnings($('warnings'), sessions, onSeekList);
+  renderRobot($('robot'), sessions, onSeekList);
   renderStates($('states'), sessions, onSeekList);
   renderRegions($('regions'), sessions);
   renderAngles($('angles'), sessions);

@@ -1,6 +1,7 @@
 // Session facts, state changes, warnings list, per-region summary and joint-angle histograms.
 import uPlot from 'uplot';
 import { scoreCss } from './colormap.js';
+import { legColor, outcomeClass, eventClass, eventText } from './timeline.js';
 
 export const SESSION_COLORS = ['#4ea1ff', '#ffa94d'];
 const AXIS = '#8b9bb0';
@@ -53,6 +54,7 @@ export function renderFacts(el, sessions) {
     ['Height class', (s) => (s.facts.height_class ? `<span class="badge">${esc(s.facts.height_class)}</span>` : '<span class="muted">undecided</span>')],
     ['Locked trajectory', (s) => hashText(s.facts.trajectory_sha256)],
     ['Approved by', (s) => approvalText(s.facts)],
+    ['Parts taken', (s) => (s.hasPartsTaken ? String(s.partsTaken.length) : '<span class="muted">not recorded</span>')],
   ];
   if (sessions.length === 1) {
     const s = sessions[0];
@@ -76,6 +78,48 @@ export function renderStates(el, sessions, onSeek) {
     return `${head}<ol class="events">${items || '<li class="muted">no state changes recorded</li>'}</ol>`;
   });
   el.innerHTML = `<h2>State changes</h2><div class="scroll">${blocks.join('')}</div>`;
+  wireSeek(el, onSeek);
+}
+
+// Controller events listed in the robot card beside the legs: what is not already a leg's start or end.
+const LISTED_EVENTS = new Set(['rejected', 'failed', 'no_response', 'cancel_requested', 'monitor', 'driver']);
+
+/** A leg's outcome as a badge. */
+function outcomeBadge(l) {
+  if (!l.end_known || l.outcome === 'sent') return '<span class="badge" title="nothing reported its end: drawn to its planned end">sent · end planned</span>';
+  return `<span class="badge ${outcomeClass(l.outcome)}">${esc(String(l.outcome || 'ended').replace(/_/g, ' '))}</span>`;
+}
+
+/** Per session: the robot's legs (start, direction, duration, outcome), holds, parts taken and the controller's notable events; a click seeks. */
+export function renderRobot(el, sessions, onSeek) {
+  const blocks = sessions.map((s, si) => {
+    const items = [
+      ...s.robotLegs.map((l) => ({
+        t: l.t_start,
+        html: `<span class="leg-name"><i class="leg-chip" style="background:${legColor(l.leg)}"></i>${esc(l.leg || 'leg')}</span></button><span class="dur" title="${l.planned_s != null ? `planned ${l.planned_s.toFixed(2)} s` : ''}">${(l.t_end - l.t_start).toFixed(2)} s</span>${outcomeBadge(l)}${
+          l.feedback_count != null ? `<span class="reason">${l.feedback_count} feedback message${l.feedback_count === 1 ? '' : 's'}${l.max_error != null ? ` · largest joint error ${l.max_error.toFixed(4)} rad` : ''}</span>` : ''
+        }${l.text ? `<span class="reason">${esc(l.text)}</span>` : ''}`,
+      })),
+      ...s.robotHolds.map((t) => ({ t, html: '<span class="kind kind-raised">hold</span></button>' })),
+      ...s.partsTaken.map((p) => ({ t: p.t, html: `<span class="kind kind-cleared">part ${esc(p.part ?? '')} taken</span></button>${p.hand ? `<span class="muted small">${esc(p.hand)} hand</span>` : ''}` })),
+      ...s.robotEvents
+        .filter((e) => LISTED_EVENTS.has(e.kind))
+        .map((e) => {
+          const c = eventClass(e);
+          const kind = c === 'danger' ? 'raised' : c === 'ok' ? 'cleared' : 'changed';
+          return { t: e.t, html: `<span class="kind kind-${kind}">${esc(eventText(e.kind))}${e.status ? ` · ${esc(e.status.replace(/_/g, ' '))}` : ''}</span></button>${e.text ? `<span class="reason">${esc(e.text)}</span>` : ''}` };
+        }),
+    ].sort((a, b) => a.t - b.t);
+    const list = items.map((it) => `<li><button class="linkish" data-s="${si}" data-t="${it.t}"><span class="t">${fmt(it.t, 2)} s</span>${it.html}</li>`).join('');
+    const n = (k, one, many) => `${k} ${k === 1 ? one : many}`;
+    const sum = s.robotLegs.length || s.robotHolds.length || s.robotEvents.length
+      ? `<div class="robot-sum">${[n(s.robotLegs.length, 'leg', 'legs'), s.hasPartsTaken ? n(s.partsTaken.length, 'part taken', 'parts taken') : null, n(s.robotHolds.length, 'hold', 'holds'), s.robotEvents.length ? n(s.robotEvents.length, 'controller event', 'controller events') : null].filter(Boolean).join(' · ')}</div>`
+      : '';
+    const head = sessions.length > 1 ? `<h3><span class="sess-dot" style="background:${SESSION_COLORS[si]}"></span>${'AB'[si]} · ${esc(s.label)}</h3>` : '';
+    return `${head}${sum}<ol class="events">${list || '<li class="muted">no robot commands recorded</li>'}</ol>`;
+  });
+  const total = sessions.reduce((a, s) => a + s.robotLegs.length, 0);
+  el.innerHTML = `<h2>Robot <span class="count" title="legs">${total}</span><span class="hint">legs sent, holds, parts taken; click to jump</span></h2><div class="scroll">${blocks.join('')}</div>`;
   wireSeek(el, onSeek);
 }
 

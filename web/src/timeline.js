@@ -1,13 +1,63 @@
 // uPlot timeline of one session: grand score left/right and action level, warnings marked,
 // a cursor line at the current frame; a click anywhere on the plot seeks to that time.
 import uPlot from 'uplot';
-import { frameAtOrBefore } from './data.js';
+import { frameAtOrBefore, legAt } from './data.js';
 
 const AXIS = '#8b9bb0';
 const GRID = 'rgba(139,155,176,0.12)';
 const KIND_COLOR = { raised: '#ef5350', changed: '#ffb020', cleared: '#38d39f' };
 
 export const SERIES_COLORS = { left: '#4ea1ff', right: '#ffa94d', action: '#e05cff' };
+
+// The robot strip along the top of the plot: one band per leg, coloured by its direction.
+export const LEG_COLORS = { 'home → handover': '#26c6da', 'handover → home': '#c0ca33' };
+const LEG_OTHER = '#90a4ae';
+export const legColor = (name) => LEG_COLORS[name] || LEG_OTHER;
+const HOLD_COLOR = '#ef5350';
+const STRIP_PX = 14; // the strip's height, CSS px; score 7 stays below it
+const BAND_TOP_PX = 2;
+const BAND_PX = 10;
+// Outcomes of a leg that ended well, or was cut short by ergocell itself.
+const OK_OUTCOMES = new Set(['succeeded', 'sent']);
+const HELD_OUTCOMES = new Set(['held', 'canceled', 'replaced']);
+
+/** The class of an outcome: ok, warn (held by ergocell) or bad (the controller refused or failed). */
+export function outcomeClass(outcome) {
+  if (OK_OUTCOMES.has(outcome)) return 'ok';
+  if (HELD_OUTCOMES.has(outcome)) return 'warn';
+  return 'danger';
+}
+
+/** A leg's outcome in words. */
+export function outcomeText(l) {
+  if (l.outcome === 'sent' || !l.end_known) return 'no end reported: drawn to its planned end';
+  if (l.outcome === 'held') return 'held before its planned end';
+  if (l.outcome === 'replaced') return 'the next leg was sent before its planned end';
+  return l.outcome || 'ended';
+}
+
+/** A controller event's kind in words. */
+const EVENT_TEXT = {
+  goal_sent: 'goal sent',
+  accepted: 'goal accepted',
+  rejected: 'goal rejected',
+  no_response: 'no answer to the goal',
+  failed: 'goal failed',
+  finished: 'goal finished',
+  cancel_requested: 'cancel requested',
+  monitor: 'execution monitor',
+  driver: 'KUKA driver',
+};
+export const eventText = (kind) => EVENT_TEXT[kind] || kind || 'event';
+
+/** How bad a controller event is: ok, warn or bad (for its colour). */
+export function eventClass(e) {
+  if (e.kind === 'finished') return outcomeClass(e.status || 'finished');
+  if (e.kind === 'rejected' || e.kind === 'failed' || e.kind === 'no_response') return 'danger';
+  if (e.kind === 'driver') return e.status === 'ready' ? 'ok' : 'warn';
+  if (e.kind === 'monitor' || e.kind === 'cancel_requested') return 'warn';
+  return 'info';
+}
 
 function fmtT(v) {
   return v == null ? '–' : `${v.toFixed(2)} s`;
@@ -56,6 +106,15 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
   const t1 = Math.max(t[t.length - 1], t0 + 0.1);
   const stepped = uPlot.paths.stepped({ align: 1 });
   const markers = [];
+  const legs = s.robotLegs || [];
+  const holds = s.robotHolds || [];
+  const events = (s.robotEvents || []).filter((e) => e.kind !== 'goal_sent'); // goal_sent: the band's start
+  const parts = s.partsTaken || [];
+  const hasRobot = legs.length + holds.length + events.length + parts.length > 0;
+  // With a robot strip, the score axis reaches higher so that score 7 stays below the strip (the
+  // plotting area is the height less the top padding and the time axis).
+  const plotPx = Math.max(40, height - 14 - 50);
+  const yMax = hasRobot ? Math.max(7.6, 7.2 / (1 - (STRIP_PX + 4) / plotPx)) : 7.6;
 
   const opts = {
     width: Math.max(200, container.clientWidth),
@@ -63,7 +122,7 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
     padding: [14, 12, 0, 0],
     scales: {
       x: { time: false, range: [t0, t1] },
-      y: { range: [0, 7.6] },
+      y: { range: [0, yMax] },
     },
     axes: [
       {
@@ -143,6 +202,7 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
               ctx.stroke();
             }
           }
+          if (hasRobot) drawStrip(u, ctx);
           for (const w of s.warnings) {
             const x = Math.round(u.valToPos(w.t, 'x', true));
             if (x < left - 1 || x > left + width + 1) continue;
@@ -177,12 +237,91 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
 
   function placeMarkers(u) {
     const w = u.over.clientWidth;
-    for (const { el, t: wt } of markers) {
+    for (const { el, t: wt, t1 } of markers) {
       const x = u.valToPos(wt, 'x');
+      if (t1 != null) {
+        // A span (a leg): clipped to the plot.
+        const a = Math.max(0, x);
+        const b = Math.min(w, u.valToPos(t1, 'x'));
+        el.style.left = `${a}px`;
+        el.style.width = `${Math.max(0, b - a)}px`;
+        el.classList.toggle('tip-left', a > w * 0.6);
+        el.hidden = b - a < 1;
+        continue;
+      }
       el.style.left = `${x}px`;
       el.classList.toggle('tip-left', x > w * 0.6);
       el.hidden = x < -1 || x > w + 1;
     }
+  }
+
+  /** The robot strip: a band per leg (an open, dashed end when only planned), holds as red ticks. */
+  function drawStrip(u, ctx) {
+    const px = uPlot.pxRatio;
+    const { left, top, width } = u.bbox;
+    const right = left + width;
+    ctx.save();
+    ctx.globalAlpha = 1;
+    ctx.setLineDash([]);
+    ctx.fillStyle = 'rgba(139,155,176,0.07)';
+    ctx.fillRect(left, top, width, STRIP_PX * px);
+    const y = top + BAND_TOP_PX * px;
+    const bh = BAND_PX * px;
+    ctx.font = `600 ${9.5 * px}px system-ui, sans-serif`;
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    for (const l of legs) {
+      const a = u.valToPos(l.t_start, 'x', true);
+      const b = u.valToPos(l.t_end, 'x', true);
+      const x0 = Math.max(left, a);
+      const x1 = Math.min(right, b);
+      if (x1 - x0 < 0.5) continue;
+      const color = legColor(l.leg);
+      ctx.fillStyle = color;
+      if (l.end_known) {
+        ctx.fillRect(x0, y, x1 - x0, bh);
+        if (b <= right) {
+          // The reported end: a cap, red when the controller refused or failed the leg.
+          ctx.fillStyle = outcomeClass(l.outcome) === 'danger' ? HOLD_COLOR : '#0b1017';
+          ctx.fillRect(x1 - 2 * px, y, 2 * px, bh);
+        }
+      } else {
+        // Only planned: solid to 60 %, then fading out to an open, dashed end.
+        const xs = x0 + (x1 - x0) * 0.6;
+        ctx.fillRect(x0, y, xs - x0, bh);
+        const g = ctx.createLinearGradient(xs, 0, Math.max(xs + 1, x1), 0);
+        g.addColorStop(0, color);
+        g.addColorStop(1, 'rgba(0,0,0,0)');
+        ctx.fillStyle = g;
+        ctx.fillRect(xs, y, x1 - xs, bh);
+        ctx.strokeStyle = color;
+        ctx.lineWidth = 1 * px;
+        ctx.setLineDash([3 * px, 2 * px]);
+        ctx.beginPath();
+        ctx.moveTo(xs, y + 0.5 * px);
+        ctx.lineTo(x1, y + 0.5 * px);
+        ctx.moveTo(xs, y + bh - 0.5 * px);
+        ctx.lineTo(x1, y + bh - 0.5 * px);
+        if (b <= right) {
+          ctx.moveTo(x1 - 0.5 * px, y);
+          ctx.lineTo(x1 - 0.5 * px, y + bh);
+        }
+        ctx.stroke();
+        ctx.setLineDash([]);
+      }
+      const label = l.leg || 'leg';
+      if (ctx.measureText(label).width + 10 * px < x1 - x0) {
+        ctx.fillStyle = '#0b1017';
+        ctx.fillText(label, (x0 + x1) / 2, y + bh / 2 + 0.5 * px);
+      }
+    }
+    ctx.fillStyle = HOLD_COLOR;
+    for (const h of holds) {
+      const x = Math.round(u.valToPos(h, 'x', true));
+      if (x < left - 1 || x > right + 1) continue;
+      ctx.fillRect(x - px, top, 2 * px, (STRIP_PX + 4) * px);
+    }
+    ctx.restore();
   }
 
   // Stretches with no frame at all (no skeleton fused, e.g. while too few cameras saw the
@@ -233,17 +372,25 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
     if (last && Math.abs(last[1] - a) < 1e-9) last[1] = b;
     else uncertain.push([a, b]);
   }
+  opts.hooks.setLegend = [];
   if (s.hasUncertain) {
-    opts.hooks.setLegend = [
-      (u) => {
-        if (!uncCell) return;
-        const j = u.legend.idx;
-        const sides = j == null ? null : [uncL[j] && 'L', uncR[j] && 'R'].filter(Boolean);
-        uncCell.textContent = sides == null ? '–' : sides.length ? sides.join(' + ') : 'no';
-      },
-    ];
+    opts.hooks.setLegend.push((u) => {
+      if (!uncCell) return;
+      const j = u.legend.idx;
+      const sides = j == null ? null : [uncL[j] && 'L', uncR[j] && 'R'].filter(Boolean);
+      uncCell.textContent = sides == null ? '–' : sides.length ? sides.join(' + ') : 'no';
+    });
+  }
+  if (hasRobot) {
+    opts.hooks.setLegend.push((u) => {
+      if (!legCell) return;
+      const j = u.legend.idx;
+      const l = j == null ? null : legAt(legs, data[0][j]);
+      legCell.textContent = j == null ? '–' : l ? l.leg || 'leg' : 'at rest';
+    });
   }
   let uncCell = null;
+  let legCell = null;
   const u = new uPlot(opts, data, container);
   if (s.hasUncertain) {
     // A legend entry for the hatched band; its value names the uncertain side(s) at the cursor.
@@ -257,6 +404,18 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
       uncCell = row.querySelector('.u-value');
     }
   }
+  if (hasRobot) {
+    // A legend entry for the robot strip; its value names the leg under way at the cursor.
+    const body = u.root.querySelector('.u-legend tbody');
+    if (body) {
+      const row = document.createElement('tr');
+      row.className = 'u-series u-robot';
+      row.title = 'the strip at the top: each robot leg (red ticks: holds; diamonds: controller events and parts taken)';
+      row.innerHTML = `<th><div class="u-marker" style="background:linear-gradient(90deg, ${LEG_COLORS['home → handover']} 50%, ${LEG_COLORS['handover → home']} 50%)"></div><div class="u-label">robot leg</div></th><td class="u-value">–</td>`;
+      body.appendChild(row);
+      legCell = row.querySelector('.u-value');
+    }
+  }
 
   // Warning flags with their message on hover (inside the plot overlay, so a click on one also seeks).
   for (const w of s.warnings) {
@@ -267,6 +426,42 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
     el.setAttribute('aria-label', `${w.kind} warning at ${fmtT(w.t)}: ${w.message || ''}`);
     u.over.appendChild(el);
     markers.push({ el, t: w.t });
+  }
+  // The robot strip's hover targets: each leg's span, then the controller events and parts taken.
+  for (const l of legs) {
+    const el = document.createElement('div');
+    el.className = `rmark leg ${outcomeClass(l.outcome)}`;
+    el.dataset.color = legColor(l.leg);
+    el.dataset.leg = l.leg;
+    el.dataset.t = String(l.t_start);
+    el.dataset.tEnd = String(l.t_end);
+    const dur = l.t_end - l.t_start;
+    const planned = l.planned_s != null ? ` · planned ${l.planned_s.toFixed(2)} s` : '';
+    const fb = l.feedback_count != null ? `<br>${l.feedback_count} feedback message${l.feedback_count === 1 ? '' : 's'}${l.max_error != null ? ` · largest joint error ${l.max_error.toFixed(4)} rad` : ''}` : '';
+    el.innerHTML = `<div class="tip"><b>${escapeHtml(l.leg || 'robot leg')}</b> ${fmtT(l.t_start)} – ${fmtT(l.t_end)} (${dur.toFixed(2)} s${planned})<br>${escapeHtml(outcomeText(l))}${fb}${l.text ? `<br>${escapeHtml(l.text)}` : ''}</div>`;
+    el.setAttribute('aria-label', `robot leg ${l.leg} at ${fmtT(l.t_start)}: ${outcomeText(l)}`);
+    u.over.appendChild(el);
+    markers.push({ el, t: l.t_start, t1: l.t_end });
+  }
+  for (const e of events) {
+    const el = document.createElement('div');
+    el.className = `rmark ev ${eventClass(e)}`;
+    const what = [e.leg, e.status, e.kind === 'finished' && e.error_code ? `error code ${e.error_code}` : '', e.kind === 'monitor' && e.max_error != null ? `worst ${(e.max_error * 100).toFixed(0)} % of the tolerance` : '']
+      .filter(Boolean)
+      .join(' · ');
+    el.innerHTML = `<div class="flag"></div><div class="tip"><b>${fmtT(e.t)} · ${escapeHtml(eventText(e.kind))}</b>${what ? ` ${escapeHtml(what)}` : ''}${e.text ? `<br>${escapeHtml(e.text)}` : ''}</div>`;
+    el.setAttribute('aria-label', `${eventText(e.kind)} at ${fmtT(e.t)}`);
+    u.over.appendChild(el);
+    markers.push({ el, t: e.t });
+  }
+  for (const p of parts) {
+    const el = document.createElement('div');
+    el.className = 'rmark ev part';
+    const how = [p.hand ? `${p.hand} hand` : '', p.distance_m != null ? `came to ${p.distance_m.toFixed(3)} m of the handover point` : ''].filter(Boolean).join(', ');
+    el.innerHTML = `<div class="flag"></div><div class="tip"><b>${fmtT(p.t)} · part ${p.part ?? ''} taken</b>${how ? ` ${escapeHtml(how)}` : ''}<br>${escapeHtml(p.reason)}</div>`;
+    el.setAttribute('aria-label', `part ${p.part ?? ''} taken at ${fmtT(p.t)}`);
+    u.over.appendChild(el);
+    markers.push({ el, t: p.t });
   }
   placeMarkers(u);
 
