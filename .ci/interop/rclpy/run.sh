@@ -53,9 +53,13 @@ open(sys.argv[2], "w").write(s)
 PY
 
 export ROS_DOMAIN_ID=0 ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET
-unshare -n -- bash -s "$bin" "$tmp" "$venv" <<'NS'
+# RCLPY_FAULT_ROUNDS=N runs the monitor's four faults N times (the latency's p50/p99 over 4N faults;
+# CI runs one round).
+rounds=${RCLPY_FAULT_ROUNDS:-1}
+export RCLPY_FAULT_ROUNDS=$rounds
+unshare -n -- bash -s "$bin" "$tmp" "$venv" "$rounds" <<'NS'
 set -euo pipefail
-bin=$1 tmp=$2 venv=$3
+bin=$1 tmp=$2 venv=$3 rounds=$4
 ip link set lo up
 ip link set lo multicast on
 ip route add 224.0.0.0/4 dev lo
@@ -75,7 +79,12 @@ case_ topic "$tmp/cell/cell.toml"
 case_ normal "$tmp/cell/action.toml" normal
 case_ reject "$tmp/cell/action.toml" reject
 case_ abort "$tmp/cell/action.toml" abort
-for f in lag stall drift move_at_rest; do case_ "$f" "$tmp/cell/action.toml" normal "$f"; done
+for r in $(seq 1 "$rounds"); do
+  for f in lag stall drift move_at_rest; do
+    n=$f; if [ "$r" -gt 1 ]; then n="${f}_r$r"; fi
+    case_ "$n" "$tmp/cell/action.toml" normal "$f"
+  done
+done
 case_ stopped_by_error "$tmp/cell/action.toml" normal stopped_by_error 30
 NS
 
@@ -122,6 +131,10 @@ check(len(r["trajectories"]) >= 2 and all(x["points"] >= 2 and len(x["joint_name
 scores = [x for p in r["ergonomics_scores"] for x in p]
 check(r["ergonomics"] > 100 and scores and all(0 <= x <= 7 for x in scores) and any(x >= 1 for x in scores),
       f"RULA states (ErgonomicState) reached rclpy (first final scores {r['ergonomics_scores']})")
+said = sum(1 for l in run.splitlines() if "RULA warning:" in l)
+check(len(r["warnings"]) == said and "trunk" in r["warnings"],
+      f"every posture warning run raised reached rclpy's /ergocell/warnings reader ({len(r['warnings'])} of "
+      f"{said}: {', '.join(r['warnings'])}; the floor pick's trunk warning among them)")
 late = r["late_joiner_session_state"]
 joined = r.get("late_joiner_joined_after", 0)
 check(bool(late) and late[0]["state"] in states[max(joined - 1, 0):] and late[0]["after_s"] < 3.0,
@@ -221,8 +234,15 @@ expect = {
     "move_at_rest": "while the robot should be at rest",
     "stopped_by_error": "held: the KUKA driver reports: stopped by error (6)",
 }
+import os
+rounds = int(os.environ.get("RCLPY_FAULT_ROUNDS", "1"))
+cases = [(name, says) for name, says in expect.items()]
+cases += [(f"{name}_r{k}", says) for k in range(2, rounds + 1) for name, says in expect.items()
+          if name != "stopped_by_error"]
 latencies = []
-for name, says in expect.items():
+transit = []
+for name, says in cases:
+    fault = name.split("_r")[0] if "_r" in name and name.rsplit("_r", 1)[1].isdigit() else name
     r = load(name)
     run = read(name + ".run")
     f = r["fault"]
@@ -231,30 +251,39 @@ for name, says in expect.items():
     held = [l.strip() for l in run.splitlines() if "state " in l and says in l]
     # From the peer publishing the sample ergocell judged bad (or the driver's stopped-by-error event)
     # to the stop (cancel request or empty trajectory) arriving at the peer, on the peer's clock.
-    bad = f["bad_at"] if name == "stopped_by_error" else f["judged_sample_sent_at"]
+    bad = f["bad_at"] if fault == "stopped_by_error" else f["judged_sample_sent_at"]
     e2e = (f["stop_at"] - bad) * 1e3 if f["stop_at"] and bad else None
     ours = [l for l in run.splitlines() if "ms after the sample arrived" in l]
-    if e2e is not None and name != "stopped_by_error":
+    if e2e is not None and fault != "stopped_by_error":
         latencies.append(e2e)
+    hop = re.search(r"sample stamp → arrival \([^)]*\) p50 ([0-9.]+) ms, p99 ([0-9.]+) ms", run)
+    if hop:
+        transit.append((float(hop.group(1)), float(hop.group(2))))
     own = f["bad_at"] and f["judged_sample_sent_at"] and (f["judged_sample_sent_at"] - f["bad_at"]) * 1e3
-    print(f"{name}: {held[:1]}; peer: {'driver event' if name == 'stopped_by_error' else 'judged sample'} sent → "
+    print(f"{name}: {held[:1]}; peer: {'driver event' if fault == 'stopped_by_error' else 'judged sample'} sent → "
           f"{f['stop_by']} arrived {'%.1f ms' % e2e if e2e is not None else 'n/a'}"
           f"{'' if own is None or own is False else '; the judged sample came %+.1f ms after the peer’s own first beyond the tolerance' % own}; "
           f"run: {ours[0].strip() if ours else '-'}; results {a.get('results')}")
-    monitor_then_cancel = name == "stopped_by_error" or any(
+    monitor_then_cancel = fault == "stopped_by_error" or any(
         e["kind"] == "monitor" and e["text"] and says.split(":")[-1].strip()[:12] in e["text"] for e in ev)
     check(says in run and "run exit 1" in run and e2e is not None and e2e > 0
-          and (name == "move_at_rest" or "canceled" in a.get("results", []))
+          and (fault == "move_at_rest" or "canceled" in a.get("results", []))
           and monitor_then_cancel,
           f"{name}: held with the reason ('{says}'), the goal cancelled (or the robot at rest stopped), the "
           f"monitor's verdict published; run exits 1")
 latencies.sort()
 if latencies:
+    rank = lambda p: latencies[min(len(latencies) - 1, max(0, int(-(-p * len(latencies) // 1)) - 1))]
     print(f"bad sample → stop command at the controller, end to end (rclpy peer's clock), {len(latencies)} faults: "
+          f"p50 {rank(0.5):.2f} ms, p99 {rank(0.99):.2f} ms (nearest rank), max {latencies[-1]:.2f} ms; "
           f"{', '.join('%.1f' % x for x in latencies)} ms")
+if transit:
+    print(f"every joint state, its stamp → arrival in run (same host clock), per fault run: p50 "
+          f"{min(t[0] for t in transit):.3f}–{max(t[0] for t in transit):.3f} ms, p99 "
+          f"{min(t[1] for t in transit):.3f}–{max(t[1] for t in transit):.3f} ms")
 
 if fail:
-    for n in ["topic", "normal", "reject", "abort", *expect]:
+    for n in ["topic", "normal", "reject", "abort", *[c for c, _ in cases]]:
         print(f"--- {n}.run\n" + read(n + ".run")[-2500:] + f"\n--- {n}.err\n" + read(n + ".err")[-1500:]
               + f"\n--- {n}.peer\n" + read(n + ".peer")[-1500:])
 sys.exit(1 if fail else 0)
