@@ -33,6 +33,8 @@ enum Command {
     Calibrate(commands::calibrate::Args),
     /// RULA: score worksheets (`score`) or every frame of a 3D landmark recording (`track`).
     Rula(commands::rula::Args),
+    /// REBA (whole body): score worksheets (`score`).
+    Reba(commands::reba::Args),
     /// Estimate the operator's stature and height class from a 3D landmark recording.
     Height(commands::height::Args),
     /// Validate, lock, approve and verify the class handover trajectories (safety engineer's review).
@@ -70,6 +72,7 @@ fn main() -> std::process::ExitCode {
         Command::Triangulate(args) => commands::triangulate::run(&args),
         Command::Calibrate(args) => commands::calibrate::run(&args),
         Command::Rula(args) => commands::rula::run(&args),
+        Command::Reba(args) => commands::reba::run(&args),
         Command::Height(args) => commands::height::run(&args),
         Command::Trajectories(args) => commands::trajectories::run(&args),
         Command::Sim(args) => commands::sim::run(&args),

@@ -238,3 +238,68 @@ fn rula_track_scores_every_frame_of_a_detector_without_hand_points() {
     assert!(stdout.contains("10 frames over"), "{stdout}");
     assert!(stdout.contains("10 scored, 10 uncertain"), "{stdout}");
 }
+
+/// `reba score` mirrors `rula score`: one breakdown per worksheet, in order; bad input exits 2 naming
+/// the entry and the field.
+#[test]
+fn reba_score_prints_one_breakdown_per_worksheet_and_refuses_bad_input() {
+    use ergocell_ergonomics::reba::{Coupling, RebaInput};
+    // Bending to pick a 6 kg part from low down, one knee bent 45°, a fair grip.
+    let pick = RebaInput {
+        trunk_flexion_deg: 50.0,
+        neck_flexion_deg: 25.0,
+        knee_flexion_deg: 45.0,
+        load_kg: 6.0,
+        upper_arm_flexion_deg: 60.0,
+        lower_arm_flexion_deg: 40.0,
+        wrist_flexion_deg: 20.0,
+        coupling: Coupling::Fair,
+        activity_repeated: true,
+        ..RebaInput::neutral()
+    };
+    let path = tmp("reba_cases.json");
+    std::fs::write(
+        &path,
+        serde_json::to_string(&[RebaInput::neutral(), pick]).unwrap(),
+    )
+    .unwrap();
+    let (code, stdout, stderr) = ergocell(&["reba", "score", "--input", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let arr = v.as_array().unwrap();
+    assert_eq!(arr.len(), 2);
+    assert_eq!(arr[0]["reba_score"], 1);
+    assert_eq!(arr[0]["risk"], "negligible");
+    // Trunk 3, neck 2, legs 2 → Table A 5, +1 load = 6; upper arm 3, lower arm 2, wrist 2 → Table B
+    // 5, +1 coupling = 6; Table C[6][6] = 8, +1 repeated = 9: high, action level 3.
+    let p = &arr[1];
+    for (key, want) in [
+        ("trunk_score", 3),
+        ("neck_score", 2),
+        ("legs_score", 2),
+        ("table_a", 5),
+        ("score_a", 6),
+        ("upper_arm_score", 3),
+        ("lower_arm_score", 2),
+        ("wrist_score", 2),
+        ("table_b", 5),
+        ("score_b", 6),
+        ("table_c", 8),
+        ("reba_score", 9),
+        ("action_level", 3),
+    ] {
+        assert_eq!(p[key], want, "{key} in {p}");
+    }
+    assert_eq!(p["risk"], "high");
+
+    let mut bad = serde_json::to_value(RebaInput::neutral()).unwrap();
+    bad["coupling"] = serde_json::json!("excellent");
+    std::fs::write(&path, serde_json::to_string(&[bad]).unwrap()).unwrap();
+    let (code, stdout, stderr) = ergocell(&["reba", "score", "--input", path.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(stdout.is_empty());
+    assert!(
+        stderr.contains("entry 0") && stderr.contains("coupling"),
+        "{stderr}"
+    );
+}

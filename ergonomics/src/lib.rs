@@ -2,6 +2,8 @@
 //!
 //! - [`rula`]: the complete RULA worksheet (McAtamney & Corlett 1993) for one side, with the lookup
 //!   tables kept as data ([`tables`]) and ergocell's written band-edge convention.
+//! - [`reba`]: the complete REBA worksheet (Hignett & McAtamney 2000) for one side, whole body: the
+//!   legs and REBA's own trunk and neck bands, with the same band-edge convention as RULA.
 //! - [`angles`]: joint angles from BlazePose-33 landmarks in a body frame built from the hips and
 //!   shoulders, with the world's "up" taken from the cell config (never assumed).
 //! - [`assess`]: a frame-by-frame RULA assessor for both sides: angles + task config + a time-series
@@ -24,6 +26,7 @@ pub mod angles;
 pub mod assess;
 pub mod height;
 pub mod pose;
+pub mod reba;
 pub mod rula;
 pub mod summary;
 pub mod tables;

@@ -525,6 +525,15 @@ pub fn score_worksheet(input: &RulaInput) -> Result<WorksheetResult, ErgonomicsE
 /// An error names the entry (0-based index) and the field: a missing or unknown field, a value of the
 /// wrong type, or a value out of range.
 pub fn parse_worksheets(json: &str) -> Result<Vec<RulaInput>, ErgonomicsError> {
+    json_array(json)?
+        .iter()
+        .enumerate()
+        .map(|(index, entry)| parse_entry(index, entry))
+        .collect()
+}
+
+/// A JSON array of worksheet objects (RULA's or REBA's), each key given once.
+pub(crate) fn json_array(json: &str) -> Result<Vec<serde_json::Value>, ErgonomicsError> {
     // A key given twice in one object is refused (serde_json's Value keeps the last one silently).
     let value = serde_json::from_str::<UniqueKeys>(json)
         .map_err(|e| ErgonomicsError::WorksheetJson {
@@ -536,11 +545,7 @@ pub fn parse_worksheets(json: &str) -> Result<Vec<RulaInput>, ErgonomicsError> {
             reason: "expected a JSON array of worksheets".to_owned(),
         });
     };
-    entries
-        .iter()
-        .enumerate()
-        .map(|(index, entry)| parse_entry(index, entry))
-        .collect()
+    Ok(entries)
 }
 
 /// The largest |angle| a worksheet may state, degrees: anything beyond is not a posture.
@@ -611,7 +616,7 @@ impl<'de> serde::Deserialize<'de> for UniqueKeys {
     }
 }
 
-fn entry_error(index: usize, field: &str, reason: impl Into<String>) -> ErgonomicsError {
+pub(crate) fn entry_error(index: usize, field: &str, reason: impl Into<String>) -> ErgonomicsError {
     ErgonomicsError::Worksheet {
         index,
         field: field.to_owned(),

@@ -6,6 +6,7 @@ pub mod calibrate;
 pub mod demo;
 pub mod height;
 pub mod output;
+pub mod reba;
 pub mod review;
 pub mod rula;
 pub mod run;
