@@ -242,7 +242,8 @@ cases += [(f"{name}_r{k}", says) for k in range(2, rounds + 1) for name, says in
 latencies = []
 transit = []
 for name, says in cases:
-    fault = name.split("_r")[0] if "_r" in name and name.rsplit("_r", 1)[1].isdigit() else name
+    head, _, tail = name.rpartition("_r")
+    fault = head if head and tail.isdigit() else name
     r = load(name)
     run = read(name + ".run")
     f = r["fault"]
