@@ -940,14 +940,6 @@ fn cycle_session(
         SimConfig::new(seed),
     )
     .unwrap();
-    let hands = [
-        Landmark::LeftWrist,
-        Landmark::LeftIndex,
-        Landmark::LeftPinky,
-        Landmark::RightWrist,
-        Landmark::RightIndex,
-        Landmark::RightPinky,
-    ];
     let mut hiding = false;
     let mut events = Vec::new();
     let mut now = 0;
@@ -964,7 +956,7 @@ fn cycle_session(
         };
         if hiding {
             for v in &mut views {
-                for m in hands {
+                for m in HANDS.into_iter().flatten() {
                     v.set(m, None);
                 }
             }
@@ -974,6 +966,20 @@ fn cycle_session(
     }
     (machine, robot, sim, events, handover)
 }
+
+/// The landmarks of each hand's palm centre (wrist, index, pinky), left then right.
+const HANDS: [[Landmark; 3]; 2] = [
+    [
+        Landmark::LeftWrist,
+        Landmark::LeftIndex,
+        Landmark::LeftPinky,
+    ],
+    [
+        Landmark::RightWrist,
+        Landmark::RightIndex,
+        Landmark::RightPinky,
+    ],
+];
 
 fn legs_sent(robot: &DummyRobot) -> Vec<Leg> {
     robot
@@ -1033,18 +1039,7 @@ fn the_cell_cycles_home_handover_part_taken_home_until_the_operator_leaves() {
     // command, sent in the same step.
     for (stamp, part, _) in &taken {
         let truth = sim.truth_at(*stamp).unwrap();
-        for marks in [
-            [
-                Landmark::LeftWrist,
-                Landmark::LeftIndex,
-                Landmark::LeftPinky,
-            ],
-            [
-                Landmark::RightWrist,
-                Landmark::RightIndex,
-                Landmark::RightPinky,
-            ],
-        ] {
+        for marks in HANDS {
             let palm = marks
                 .iter()
                 .map(|m| truth.skeleton.position(*m).unwrap().coords)

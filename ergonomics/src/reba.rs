@@ -41,7 +41,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::rula::{entry_error, json_array, MAX_ABS_ANGLE_DEG};
+use crate::rula::{json_array, parse_worksheet_entry, MAX_ABS_ANGLE_DEG};
 use crate::ErgonomicsError;
 
 /// Table A: `[neck 1..=3][trunk 1..=5][legs 1..=4]`.
@@ -371,13 +371,10 @@ pub fn upper_arm_score(flexion_deg: f64, abducted: bool, raised: bool, supported
     s.clamp(1, 6) as u8
 }
 
-/// Lower arm: 1 for 60°–100° elbow flexion inclusive, else 2.
+/// Lower arm: 1 for 60°–100° elbow flexion inclusive, else 2 (RULA's band, without RULA's
+/// adjustment).
 pub fn lower_arm_score(elbow_flexion_deg: f64) -> u8 {
-    if (60.0..=100.0).contains(&elbow_flexion_deg) {
-        1
-    } else {
-        2
-    }
+    crate::rula::lower_arm_band(elbow_flexion_deg)
 }
 
 /// Wrist: 1 up to 15° flexion/extension, 2 beyond; +1 deviated or twisted. 1..=3.
@@ -513,19 +510,11 @@ pub fn parse_worksheets(json: &str) -> Result<Vec<RebaInput>, ErgonomicsError> {
 }
 
 fn parse_entry(index: usize, entry: &serde_json::Value) -> Result<RebaInput, ErgonomicsError> {
-    let Some(object) = entry.as_object() else {
-        return Err(entry_error(index, "(entry)", "expected an object"));
-    };
-    for key in object.keys() {
-        if !RebaInput::FIELDS.contains(&key.as_str()) {
-            return Err(entry_error(index, key, "unknown field"));
-        }
-    }
-    for field in RebaInput::FIELDS {
-        let Some(v) = object.get(field) else {
-            return Err(entry_error(index, field, "missing"));
-        };
-        let (ok, expected) = match field {
+    parse_worksheet_entry(
+        index,
+        entry,
+        &RebaInput::FIELDS,
+        |field, v| match field {
             "coupling" => (
                 matches!(v.as_str(), Some("good" | "fair" | "poor" | "unacceptable")),
                 "\"good\", \"fair\", \"poor\" or \"unacceptable\"",
@@ -540,24 +529,9 @@ fn parse_entry(index: usize, entry: &serde_json::Value) -> Result<RebaInput, Erg
                 "a number of degrees within ±360 (a physically possible angle)",
             ),
             _ => (v.is_boolean(), "true or false"),
-        };
-        if !ok {
-            return Err(entry_error(
-                index,
-                field,
-                format!("expected {expected}, got {v}"),
-            ));
-        }
-    }
-    let input: RebaInput = serde_json::from_value(entry.clone())
-        .map_err(|e| entry_error(index, "(entry)", e.to_string()))?;
-    input.validate().map_err(|e| match e {
-        ErgonomicsError::NonFinite { field, .. } | ErgonomicsError::OutOfRange { field, .. } => {
-            entry_error(index, field, e.to_string())
-        }
-        other => other,
-    })?;
-    Ok(input)
+        },
+        RebaInput::validate,
+    )
 }
 
 #[cfg(test)]

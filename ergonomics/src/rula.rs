@@ -616,7 +616,7 @@ impl<'de> serde::Deserialize<'de> for UniqueKeys {
     }
 }
 
-pub(crate) fn entry_error(index: usize, field: &str, reason: impl Into<String>) -> ErgonomicsError {
+fn entry_error(index: usize, field: &str, reason: impl Into<String>) -> ErgonomicsError {
     ErgonomicsError::Worksheet {
         index,
         field: field.to_owned(),
@@ -625,35 +625,53 @@ pub(crate) fn entry_error(index: usize, field: &str, reason: impl Into<String>) 
 }
 
 fn parse_entry(index: usize, entry: &serde_json::Value) -> Result<RulaInput, ErgonomicsError> {
+    parse_worksheet_entry(
+        index,
+        entry,
+        &RulaInput::FIELDS,
+        |field, v| match field {
+            "wrist_twist" => (
+                matches!(v.as_str(), Some("mid_range" | "end_of_range")),
+                "\"mid_range\" or \"end_of_range\"",
+            ),
+            f if f.ends_with("_deg") => (
+                v.as_f64()
+                    .is_some_and(|d| (-MAX_ABS_ANGLE_DEG..=MAX_ABS_ANGLE_DEG).contains(&d)),
+                "a number of degrees within ±360 (a physically possible angle)",
+            ),
+            f if f.starts_with("force_load_score") => {
+                (v.as_u64().is_some_and(|n| n <= 3), "an integer 0..=3")
+            }
+            _ => (v.is_boolean(), "true or false"),
+        },
+        RulaInput::validate,
+    )
+}
+
+/// One worksheet of a JSON array (RULA's or REBA's): an object with exactly `fields`, each passing
+/// `check` (which also says what it expects), deserialised and then validated; an error names the
+/// entry and the field.
+pub(crate) fn parse_worksheet_entry<T: serde::de::DeserializeOwned>(
+    index: usize,
+    entry: &serde_json::Value,
+    fields: &[&str],
+    check: impl Fn(&str, &serde_json::Value) -> (bool, &'static str),
+    validate: impl Fn(&T) -> Result<(), ErgonomicsError>,
+) -> Result<T, ErgonomicsError> {
     let Some(object) = entry.as_object() else {
         return Err(entry_error(index, "(entry)", "expected an object"));
     };
     for key in object.keys() {
-        if !RulaInput::FIELDS.contains(&key.as_str()) {
+        if !fields.contains(&key.as_str()) {
             return Err(entry_error(index, key, "unknown field"));
         }
     }
-    for field in RulaInput::FIELDS {
+    for &field in fields {
         let Some(v) = object.get(field) else {
             return Err(entry_error(index, field, "missing"));
         };
-        let ok = match field {
-            "wrist_twist" => matches!(v.as_str(), Some("mid_range" | "end_of_range")),
-            f if f.ends_with("_deg") => v
-                .as_f64()
-                .is_some_and(|d| (-MAX_ABS_ANGLE_DEG..=MAX_ABS_ANGLE_DEG).contains(&d)),
-            f if f.starts_with("force_load_score") => v.as_u64().is_some_and(|n| n <= 3),
-            _ => v.is_boolean(),
-        };
+        let (ok, expected) = check(field, v);
         if !ok {
-            let expected = match field {
-                "wrist_twist" => "\"mid_range\" or \"end_of_range\"",
-                f if f.ends_with("_deg") => {
-                    "a number of degrees within ±360 (a physically possible angle)"
-                }
-                f if f.starts_with("force_load_score") => "an integer 0..=3",
-                _ => "true or false",
-            };
             return Err(entry_error(
                 index,
                 field,
@@ -661,9 +679,9 @@ fn parse_entry(index: usize, entry: &serde_json::Value) -> Result<RulaInput, Erg
             ));
         }
     }
-    let input: RulaInput = serde_json::from_value(entry.clone())
+    let input: T = serde_json::from_value(entry.clone())
         .map_err(|e| entry_error(index, "(entry)", e.to_string()))?;
-    input.validate().map_err(|e| match e {
+    validate(&input).map_err(|e| match e {
         ErgonomicsError::NonFinite { field, .. } | ErgonomicsError::OutOfRange { field, .. } => {
             entry_error(index, field, e.to_string())
         }
