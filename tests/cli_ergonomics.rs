@@ -303,3 +303,123 @@ fn reba_score_prints_one_breakdown_per_worksheet_and_refuses_bad_input() {
         "{stderr}"
     );
 }
+
+/// `rula track --csv/--summary-csv` (#20): a CSV round trip — every frame's row holds the scores and
+/// angles the `--json` breakdown has for that frame; the summary's action-level shares add up to
+/// 100 %; an existing file is refused without `--force`, an input always.
+#[test]
+fn rula_track_csv_round_trips_the_json_breakdown() {
+    let spec = PoseSpec {
+        neck_flexion_rad: 25f64.to_radians(),
+        right_arm: ArmPose {
+            flexion_rad: 95f64.to_radians(),
+            elbow_flexion_rad: 40f64.to_radians(),
+            ..ArmPose::default()
+        },
+        ..PoseSpec::default()
+    };
+    let path = write_recording("csv_recording.json", &spec);
+    let p = path.to_str().unwrap();
+    let csv_path = tmp("frames.csv");
+    let summary_path = tmp("summary.csv");
+    let (c, s) = (csv_path.to_str().unwrap(), summary_path.to_str().unwrap());
+    let args = [
+        "rula",
+        "track",
+        "--landmarks",
+        p,
+        "--up",
+        "0,0,1",
+        "--csv",
+        c,
+        "--summary-csv",
+        s,
+        "--force",
+    ];
+    let (code, _, stderr) = ergocell(&args);
+    assert_eq!(code, 0, "{stderr}");
+    let (code, stdout, stderr) =
+        ergocell(&["rula", "track", "--landmarks", p, "--up", "0,0,1", "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let frames = doc["frames"].as_array().unwrap();
+
+    let mut reader = csv::Reader::from_path(&csv_path).unwrap();
+    let header: Vec<String> = reader
+        .headers()
+        .unwrap()
+        .iter()
+        .map(str::to_owned)
+        .collect();
+    assert_eq!(header, ergocell_ergonomics::export::frame_header());
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), frames.len());
+    for (row, frame) in rows.iter().zip(frames) {
+        assert_eq!(row[col("stamp_ns")], frame["stamp_nanos"].to_string());
+        for side in ["left", "right"] {
+            let f = &frame[side];
+            assert_eq!(&row[col(&format!("{side}_scored"))], "1");
+            for score in [
+                "final_score",
+                "action_level",
+                "upper_arm_score",
+                "neck_score",
+                "trunk_score",
+            ] {
+                assert_eq!(
+                    row[col(&format!("{side}_{score}"))],
+                    f["scores"][score].to_string(),
+                    "{side} {score}"
+                );
+            }
+            for angle in [
+                "upper_arm_flexion_deg",
+                "lower_arm_flexion_deg",
+                "neck_flexion_deg",
+            ] {
+                let csv_value: f64 = row[col(&format!("{side}_{angle}"))].parse().unwrap();
+                let json_value = f["input"][angle].as_f64().unwrap();
+                assert!(
+                    (csv_value - json_value).abs() <= 5e-4,
+                    "{side} {angle}: {csv_value} vs {json_value}"
+                );
+            }
+        }
+    }
+    // The posed right arm (95°) and the neck (25°) are what the rows say.
+    let ua: f64 = rows[5][col("right_upper_arm_flexion_deg")].parse().unwrap();
+    assert!((ua - 95.0).abs() < 3.0, "{ua}");
+    assert_eq!(&rows[5][col("right_upper_arm_score")], "4");
+    assert!(rows.iter().any(|r| r[col("warnings")].contains("raised")));
+
+    let mut summary = csv::Reader::from_path(&summary_path).unwrap();
+    let rows: Vec<csv::StringRecord> = summary.records().map(Result::unwrap).collect();
+    let level_total: f64 = rows
+        .iter()
+        .filter(|r| &r[0] == "action_level_share")
+        .map(|r| r[4].parse::<f64>().unwrap())
+        .sum();
+    assert!((level_total - 100.0).abs() < 0.01, "{level_total}");
+    assert!(rows
+        .iter()
+        .any(|r| &r[0] == "warnings_raised" && &r[2] == "neck" && &r[4] != "0"));
+
+    // No overwrite without --force; never onto an input, --force or not.
+    let (code, _, stderr) = ergocell(&args[..args.len() - 1]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("already exists"), "{stderr}");
+    let (code, _, stderr) = ergocell(&[
+        "rula",
+        "track",
+        "--landmarks",
+        p,
+        "--up",
+        "0,0,1",
+        "--csv",
+        p,
+        "--force",
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("is also an input"), "{stderr}");
+}

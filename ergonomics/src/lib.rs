@@ -15,6 +15,8 @@
 //! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.
 //! - [`summary`]: a session's time-weighted shares per action level, body-region score and grand
 //!   score — the one computation behind `ergocell rula track`'s summary and the offline review.
+//! - [`export`]: spreadsheet exports (CSV): a row per assessed frame and the session summary, units in
+//!   the column names.
 //! - [`pose`]: synthetic skeletons posed to known angles, for tests and benchmarks.
 //!
 //! Depends only on [`ergocell_skeleton`]; knows nothing of cameras, ROS or the robot, and does no I/O:
@@ -24,6 +26,7 @@
 
 pub mod angles;
 pub mod assess;
+pub mod export;
 pub mod height;
 pub mod pose;
 pub mod reba;
@@ -63,6 +66,9 @@ pub enum ErgonomicsError {
     /// The worksheet input is not a JSON array.
     #[error("worksheet input: {reason}")]
     WorksheetJson { reason: String },
+    /// A CSV export could not be written.
+    #[error("CSV export: {reason}")]
+    Export { reason: String },
     /// A number is outside its allowed range.
     #[error("{field} = {value} is outside {min}..={max}")]
     OutOfRange {

@@ -23,6 +23,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context as _;
 use ergocell_cell::{Assessment, PipelineConfig};
 use ergocell_ergonomics::assess::{BodyRegion, SideAssessment};
+use ergocell_ergonomics::export::{self, FrameCsv};
 use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_worksheet};
 use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
 use ergocell_ergonomics::{AssessmentConfig, RulaScores, Side, TaskConfig, UpVector};
@@ -75,6 +76,17 @@ pub struct TrackArgs {
     /// Print frames, warnings and summary as one JSON document instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Also write one CSV row per frame (both sides' scores, angles and flags, the frame's warnings;
+    /// units in the column names), for a spreadsheet.
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Also write the session summary as CSV (`quantity,side,region,score,value,unit`: time shares
+    /// per action level, region score and grand score, warnings raised per region).
+    #[arg(long, value_name = "FILE")]
+    pub summary_csv: Option<PathBuf>,
+    /// Overwrite an existing --csv / --summary-csv file.
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// The world's up: `--up` when given, else the rig file's `up`; never assumed. A calibration whose
@@ -200,6 +212,26 @@ fn side_json(s: &SideAssessment) -> serde_json::Value {
 }
 
 fn track(args: &TrackArgs) -> anyhow::Result<()> {
+    // The outputs: never an input, never each other, no overwrite without --force — before any work.
+    let mut inputs: Vec<(&str, &Path)> =
+        vec![("--landmarks", &args.landmarks), ("--rig", &args.rig)];
+    if let Some(task) = &args.task {
+        inputs.push(("--task", task));
+    }
+    if let Some(csv) = &args.csv {
+        super::output::check("--csv", csv, args.force, &inputs)?;
+        inputs.push(("--csv", csv));
+    }
+    if let Some(summary_csv) = &args.summary_csv {
+        super::output::check("--summary-csv", summary_csv, args.force, &inputs)?;
+        if args.csv.as_deref() == Some(summary_csv.as_path()) {
+            return Err(UsageError(format!(
+                "--summary-csv {} is also --csv: choose two files",
+                summary_csv.display()
+            ))
+            .into());
+        }
+    }
     let frames = read_skeletons(&args.landmarks)?;
     let task: TaskConfig = match &args.task {
         Some(path) => {
@@ -230,6 +262,10 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     }
     // The reasons last printed (text output): a side's uncertain reasons, the frame's unscored ones.
     let mut last_why: [Vec<String>; 3] = Default::default();
+    let mut frame_csv = match &args.csv {
+        Some(_) => Some(FrameCsv::new(Vec::new())?),
+        None => None,
+    };
     for (i, skeleton) in frames.iter().enumerate() {
         let tracked = stage.process(skeleton, skeleton.clone());
         let frame = tracked
@@ -237,6 +273,9 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
             .map_err(|e| UsageError(format!("{}: frame {i}: {e}", args.landmarks.display())))?;
         summary.add(&frame);
         let new_events = tracked.warnings;
+        if let Some(csv) = frame_csv.as_mut() {
+            csv.write(&frame, &new_events)?;
+        }
         let t = (frame.stamp_nanos - t0) as f64 * 1e-9;
         if args.json {
             frame_docs.push(serde_json::json!({
@@ -282,6 +321,13 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         events.extend(new_events);
     }
     let s = summary.finish();
+    if let (Some(path), Some(csv)) = (&args.csv, frame_csv) {
+        super::output::write("--csv", path, args.force, &csv.finish()?)?;
+    }
+    if let Some(path) = &args.summary_csv {
+        let bytes = export::write_summary(Vec::new(), &s, &events)?;
+        super::output::write("--summary-csv", path, args.force, &bytes)?;
+    }
     if args.json {
         let doc = serde_json::json!({ "frames": frame_docs, "warnings": events, "summary": s });
         println!("{}", serde_json::to_string_pretty(&doc)?);

@@ -1,0 +1,271 @@
+//! Spreadsheet exports: one row per assessed frame, and one session summary, as CSV an ergonomist
+//! opens in a spreadsheet. Every column's unit is in its name (`_s`, `_ns`, `_deg`, `_percent`;
+//! scores and levels are plain integers, flags 0/1, an empty cell is "not scored").
+//!
+//! The writers take any [`std::io::Write`] (the binary hands them a file); this crate opens nothing.
+
+use std::io::Write;
+
+use crate::assess::{BodyRegion, FrameAssessment, SideAssessment};
+use crate::summary::SessionSummary;
+use crate::warnings::{WarningEvent, WarningKind};
+use crate::{ErgonomicsError, Side};
+
+/// The per-side columns of the frame CSV, each prefixed `left_` or `right_`.
+pub const SIDE_COLUMNS: [&str; 23] = [
+    "scored",
+    "uncertain",
+    "final_score",
+    "action_level",
+    "upper_arm_score",
+    "lower_arm_score",
+    "wrist_score",
+    "wrist_twist_score",
+    "neck_score",
+    "trunk_score",
+    "legs_score",
+    "score_c_arm_wrist",
+    "score_d_neck_trunk_legs",
+    "upper_arm_flexion_deg",
+    "lower_arm_flexion_deg",
+    "wrist_flexion_deg",
+    "neck_flexion_deg",
+    "trunk_flexion_deg",
+    "shoulder_raised",
+    "upper_arm_abducted",
+    "neck_twisted_or_side_bending",
+    "trunk_twisted_or_side_bending",
+    "muscle_use_arm_wrist",
+];
+
+/// The frame CSV's header: `time_s`, `stamp_ns`, `worse_side`, the left then the right side's
+/// [`SIDE_COLUMNS`], and `warnings` (the frame's warning events, `raised trunk; cleared left
+/// upper_arm`).
+pub fn frame_header() -> Vec<String> {
+    let mut h = vec![
+        "time_s".to_owned(),
+        "stamp_ns".to_owned(),
+        "worse_side".to_owned(),
+    ];
+    for side in ["left", "right"] {
+        h.extend(SIDE_COLUMNS.iter().map(|c| format!("{side}_{c}")));
+    }
+    h.push("warnings".to_owned());
+    h
+}
+
+fn csv_error(e: &csv::Error) -> ErgonomicsError {
+    ErgonomicsError::Export {
+        reason: e.to_string(),
+    }
+}
+
+/// Writes the frame CSV a row at a time (streamed: memory flat in the recording's length).
+pub struct FrameCsv<W: Write> {
+    writer: csv::Writer<W>,
+    t0_nanos: Option<i64>,
+}
+
+impl<W: Write> FrameCsv<W> {
+    /// Writes the header.
+    pub fn new(out: W) -> Result<Self, ErgonomicsError> {
+        let mut writer = csv::Writer::from_writer(out);
+        writer
+            .write_record(frame_header())
+            .map_err(|e| csv_error(&e))?;
+        Ok(Self {
+            writer,
+            t0_nanos: None,
+        })
+    }
+
+    /// One frame and the warning events it raised, changed or cleared. `time_s` counts from the
+    /// first frame written.
+    pub fn write(
+        &mut self,
+        frame: &FrameAssessment,
+        warnings: &[WarningEvent],
+    ) -> Result<(), ErgonomicsError> {
+        let t0 = *self.t0_nanos.get_or_insert(frame.stamp_nanos);
+        let mut row = vec![
+            format!("{:.6}", (frame.stamp_nanos - t0) as f64 * 1e-9),
+            frame.stamp_nanos.to_string(),
+            frame
+                .headline()
+                .map_or(String::new(), |h| h.side.name().to_owned()),
+        ];
+        for side in [Side::Left, Side::Right] {
+            row.extend(side_cells(frame.side(side)));
+        }
+        row.push(
+            warnings
+                .iter()
+                .map(warning_cell)
+                .collect::<Vec<_>>()
+                .join("; "),
+        );
+        self.writer.write_record(&row).map_err(|e| csv_error(&e))
+    }
+
+    /// Flushes and hands the output back.
+    pub fn finish(self) -> Result<W, ErgonomicsError> {
+        self.writer
+            .into_inner()
+            .map_err(|e| ErgonomicsError::Export {
+                reason: e.to_string(),
+            })
+    }
+}
+
+fn flag(b: bool) -> String {
+    if b { "1" } else { "0" }.to_owned()
+}
+
+fn side_cells(s: Option<&SideAssessment>) -> Vec<String> {
+    let Some(s) = s else {
+        let mut cells = vec![String::new(); SIDE_COLUMNS.len()];
+        cells[0] = flag(false);
+        return cells;
+    };
+    let c = &s.scores;
+    let i = &s.input;
+    // Three decimals; a value that rounds to zero is written 0.000, not -0.000.
+    let deg = |v: f64| format!("{:.3}", if v.abs() < 5e-4 { 0.0 } else { v });
+    vec![
+        flag(true),
+        flag(s.uncertain),
+        c.final_score.to_string(),
+        c.action_level.to_string(),
+        c.upper_arm_score.to_string(),
+        c.lower_arm_score.to_string(),
+        c.wrist_score.to_string(),
+        c.wrist_twist_score.to_string(),
+        c.neck_score.to_string(),
+        c.trunk_score.to_string(),
+        c.legs_score.to_string(),
+        c.score_c_wrist_arm.to_string(),
+        c.score_d_neck_trunk_legs.to_string(),
+        deg(i.upper_arm_flexion_deg),
+        deg(i.lower_arm_flexion_deg),
+        deg(i.wrist_flexion_deg),
+        deg(i.neck_flexion_deg),
+        deg(i.trunk_flexion_deg),
+        flag(i.shoulder_raised),
+        flag(i.upper_arm_abducted),
+        flag(i.neck_twisted || i.neck_side_bending),
+        flag(i.trunk_twisted || i.trunk_side_bending),
+        flag(i.muscle_use_arm_wrist),
+    ]
+}
+
+fn warning_cell(w: &WarningEvent) -> String {
+    let kind = match w.kind {
+        WarningKind::Raised => "raised",
+        WarningKind::Changed => "changed",
+        WarningKind::Cleared => "cleared",
+    };
+    match w.side {
+        Some(side) => format!("{kind} {} {}", side.name(), w.region.name()),
+        None => format!("{kind} {}", w.region.name()),
+    }
+}
+
+/// The session summary CSV, long format (one quantity a row, for a pivot table):
+/// `quantity,side,region,score,value,unit`. Rows: the scored time and frames, the share of scored
+/// time per action level (worse side), per body-region score and per grand score, the unscored
+/// share, and the warnings raised per region.
+pub fn write_summary<W: Write>(
+    out: W,
+    summary: &SessionSummary,
+    warnings: &[WarningEvent],
+) -> Result<W, ErgonomicsError> {
+    let mut w = csv::Writer::from_writer(out);
+    let mut row = |q: &str, side: &str, region: &str, score: String, value: String, unit: &str| {
+        w.write_record([q, side, region, &score, &value, unit])
+            .map_err(|e| csv_error(&e))
+    };
+    row(
+        "quantity",
+        "side",
+        "region",
+        "score".into(),
+        "value".into(),
+        "unit",
+    )?;
+    let pct = |share: f64| format!("{:.3}", share * 100.0);
+    row(
+        "duration",
+        "",
+        "",
+        String::new(),
+        format!("{:.3}", summary.duration_secs),
+        "s",
+    )?;
+    for (q, n) in [
+        ("frames", summary.frames),
+        ("scored_frames", summary.scored_frames),
+        ("uncertain_frames", summary.uncertain_frames),
+    ] {
+        row(q, "", "", String::new(), n.to_string(), "frames")?;
+    }
+    row(
+        "unscored_share",
+        "",
+        "",
+        String::new(),
+        pct(summary.unscored_share),
+        "percent of time",
+    )?;
+    for (k, share) in summary.action_level_share.iter().enumerate() {
+        row(
+            "action_level_share",
+            "worse",
+            "",
+            (k + 1).to_string(),
+            pct(*share),
+            "percent of scored time",
+        )?;
+    }
+    for g in &summary.grand_score {
+        for (score, share) in &g.share_by_score {
+            row(
+                "grand_score_share",
+                g.side.name(),
+                "",
+                score.to_string(),
+                pct(*share),
+                "percent of the side's scored time",
+            )?;
+        }
+    }
+    for r in &summary.regions {
+        let side = r.side.map_or("", Side::name);
+        for (score, share) in &r.share_by_score {
+            row(
+                "region_score_share",
+                side,
+                r.region.name(),
+                score.to_string(),
+                pct(*share),
+                "percent of the region's scored time",
+            )?;
+        }
+    }
+    for region in BodyRegion::ALL {
+        let raised = warnings
+            .iter()
+            .filter(|e| e.region == region && e.kind == WarningKind::Raised)
+            .count();
+        row(
+            "warnings_raised",
+            "",
+            region.name(),
+            String::new(),
+            raised.to_string(),
+            "count",
+        )?;
+    }
+    w.into_inner().map_err(|e| ErgonomicsError::Export {
+        reason: e.to_string(),
+    })
+}
