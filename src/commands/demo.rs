@@ -54,7 +54,7 @@ pub const DEFAULT_OUT: &str = "ergocell-demo.mcap";
 /// still running then is stopped (robot held), and the demo says so.
 pub const MARGIN_SECS: f64 = 30.0;
 
-/// Most handover cycles (about 46 hours of simulated session: several shifts, for `--soak-report`).
+/// Most handover cycles (about 48 hours of simulated session: several shifts, for `--soak-report`).
 pub const MAX_CYCLES: usize = 10_000;
 
 #[derive(Debug, clap::Args)]
@@ -79,8 +79,8 @@ pub struct Args {
     /// The simulated operator's stature, metres.
     #[arg(long, default_value_t = 1.75)]
     pub stature_m: f64,
-    /// Handover cycles (0..=10000; 1756 ≈ an 8-hour shift). The session may run for the script's duration (walk in, height,
-    /// cycles × 16.4 s: the robot's round trip per part, floor pick, walk out) plus 30 s; then it is stopped with the robot held.
+    /// Handover cycles (0..=10000; 1655 ≈ an 8-hour shift). The session may run for the script's duration (walk in, height,
+    /// cycles × 17.4 s: the robot's round trip per part, floor pick, walk out) plus 30 s; then it is stopped with the robot held.
     #[arg(long, default_value_t = 3)]
     pub cycles: usize,
     /// Simulation seed (same seed, same session).
