@@ -25,13 +25,13 @@ struct CameraHealth {
 }
 
 /// Where the robot is along the locked path, as far as the session knows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 enum Motion {
     /// Not commanded yet (at home).
     AtHome,
     Moving(Leg),
     /// At the handover point with the part: waiting for the operator to take it.
-    AtHandover,
+    AtHandover(Part),
 }
 
 /// The part at the handover point, as the cameras see the operator's hands (only while the robot
@@ -80,12 +80,8 @@ pub struct SessionMachine {
     decision: Option<HeightDecision>,
     lock: Option<SessionLock>,
     motion: Motion,
-    /// The part offered at the handover point (`Some` while the robot waits there).
-    part: Option<Part>,
     /// Since when the robot stands at home between cycles (the next part is loaded meanwhile).
     at_home_since: Option<i64>,
-    /// The handover point in the world (the lock's, placed by the station's pose), once locked.
-    handover_world: Option<Point3<f64>>,
     hold_reason: Option<String>,
     /// Why the robot side cannot be trusted to move right now (the driver not controlling, joint
     /// states stale), from the backend: the robot is held and nothing is sent until it clears.
@@ -146,9 +142,7 @@ impl SessionMachine {
             decision: None,
             lock: None,
             motion: Motion::AtHome,
-            part: None,
             at_home_since: None,
-            handover_world: None,
             hold_reason: None,
             robot_unready: None,
             tracking_back_since: None,
@@ -512,8 +506,7 @@ impl SessionMachine {
         let (at_home, at_handover) = (near(&home), near(&handover));
         match self.motion {
             Motion::Moving(Leg::ToHandover) if at_handover => {
-                self.motion = Motion::AtHandover;
-                self.part = Some(Part::Offered);
+                self.motion = Motion::AtHandover(Part::Offered);
             }
             Motion::Moving(Leg::ToHome) if at_home => {
                 self.motion = Motion::AtHome;
@@ -591,23 +584,27 @@ impl SessionMachine {
         // Working: the cell's cycle. Home → handover → the operator takes the part → home → the
         // next part, until the operator leaves; then home and the session ends.
         match self.motion {
-            Motion::AtHandover if self.operator_departed => {
-                self.part = None;
+            Motion::AtHandover(_) if self.operator_departed => {
                 self.start_leg(now_nanos, Leg::ToHome, robot, events);
             }
-            Motion::AtHandover => {
-                if let Some(Part::Taken { hand, closest_m }) = self.part {
+            Motion::AtHandover(Part::Taken { hand, closest_m }) => {
+                // Counted once the way home is sent (a failed send is tried again next step);
+                // the event goes before the command, as it happened.
+                let at = events.len();
+                self.start_leg(now_nanos, Leg::ToHome, robot, events);
+                if self.motion == Motion::Moving(Leg::ToHome) {
                     self.summary.parts_taken += 1;
                     let part = self.summary.parts_taken;
                     tracing::info!(part, hand, closest_m, "part taken");
-                    events.push(SessionEvent::PartTaken {
-                        stamp_nanos: now_nanos,
-                        part,
-                        hand,
-                        closest_m,
-                    });
-                    self.part = None;
-                    self.start_leg(now_nanos, Leg::ToHome, robot, events);
+                    events.insert(
+                        at,
+                        SessionEvent::PartTaken {
+                            stamp_nanos: now_nanos,
+                            part,
+                            hand,
+                            closest_m,
+                        },
+                    );
                 }
             }
             Motion::AtHome if self.operator_departed => {
@@ -620,7 +617,8 @@ impl SessionMachine {
                     self.start_leg(now_nanos, Leg::ToHandover, robot, events);
                 }
             }
-            Motion::Moving(_) => {}
+            // Waiting for the operator to take the part, or on the way.
+            Motion::AtHandover(_) | Motion::Moving(_) => {}
         }
     }
 
@@ -630,9 +628,7 @@ impl SessionMachine {
     /// sends the robot home). A hand the cameras do not see is not counted as away. Only while the
     /// robot waits at the handover point.
     fn watch_part(&mut self, skeleton: &Skeleton3) {
-        let (Motion::AtHandover, Some(part), Some(point)) =
-            (self.motion, self.part, self.handover_world)
-        else {
+        let (Motion::AtHandover(part), Some(point)) = (self.motion, self.handover_world()) else {
             return;
         };
         let distance = |marks| palm_centre(skeleton, marks).map(|p| (p - point).norm());
@@ -661,7 +657,7 @@ impl SessionMachine {
         let both_away = hands
             .iter()
             .all(|(_, d)| d.is_some_and(|d| d > self.config.release_radius_m));
-        self.part = Some(match (part, nearest) {
+        self.motion = Motion::AtHandover(match (part, nearest) {
             (Part::Offered, Some((hand, d))) if d <= self.config.take_radius_m => {
                 Part::InHand { hand, closest_m: d }
             }
@@ -760,8 +756,6 @@ impl SessionMachine {
                     .collect();
                 tracing::info!(%class, lock_sha256 = %sha, "trajectory verified and locked");
                 self.summary.lock_sha256 = Some(sha.clone());
-                let [hx, hy, hz] = approved.lock().summary.handover_station_m;
-                self.handover_world = Some(self.config.T_world_station * Point3::new(hx, hy, hz));
                 events.push(SessionEvent::TrajectoryLocked {
                     stamp_nanos: now_nanos,
                     class,
@@ -859,8 +853,13 @@ impl SessionMachine {
                 "tracking back, trajectory still verified: robot at home",
             )
         } else if at_handover {
+            // A part already in the operator's hand when the robot was held stays so.
+            let part = match self.motion {
+                Motion::AtHandover(part) => part,
+                _ => Part::Offered,
+            };
             (
-                Motion::AtHandover,
+                Motion::AtHandover(part),
                 "tracking back, trajectory still verified: robot at the handover point",
             )
         } else {
@@ -871,9 +870,6 @@ impl SessionMachine {
             );
             return;
         };
-        if motion == Motion::AtHandover && self.part.is_none() {
-            self.part = Some(Part::Offered);
-        }
         self.motion = motion;
         self.hold_reason = None;
         self.tracking_back_since = None;
@@ -881,6 +877,19 @@ impl SessionMachine {
         if motion == Motion::AtHome && !self.operator_departed {
             self.start_leg(now_nanos, Leg::ToHandover, robot, events);
         }
+    }
+
+    /// The locked trajectory's handover point in the world (the lock stores it in the station's
+    /// frame), once locked.
+    fn handover_world(&self) -> Option<Point3<f64>> {
+        let [x, y, z] = self
+            .lock
+            .as_ref()?
+            .trajectory()
+            .lock()
+            .summary
+            .handover_station_m;
+        Some(self.config.T_world_station * Point3::new(x, y, z))
     }
 
     fn set_hold_reason(&mut self, why: &str) {
