@@ -8,6 +8,7 @@ use ergocell_bridge::msg::{
     PostureWarning, RulaSide, SessionState,
 };
 use ergocell_ergonomics::{FrameAssessment, SideAssessment, WarningEvent};
+use ergocell_perception::video_geometry::{VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, Keypoint2, View2};
 use ergocell_skeleton::LANDMARK_COUNT;
 
@@ -128,13 +129,46 @@ pub enum LandmarksRejected {
         x: f32,
         y: f32,
     },
+    /// The node's images are not the calibrated image and no video geometry says how they relate:
+    /// its pixels would put every ray of that camera off.
+    #[error(
+        "camera `{camera}`: its images are {got_width}x{got_height} but it was calibrated at \
+         {width}x{height}; declare how they relate (run --video-geometry {camera}=fit, or \
+         {camera}=affine:SX,SY,OX,OY)"
+    )]
+    ImageSize {
+        camera: String,
+        got_width: u32,
+        got_height: u32,
+        width: u32,
+        height: u32,
+    },
+    /// A declared video geometry that cannot apply to this message's image size.
+    #[error("camera `{camera}`: video geometry: {why}")]
+    VideoGeometry { camera: String, why: String },
 }
 
-/// A camera's message back to a view (the inverse of [`landmarks_message`]): a landmark is observed
-/// when its presence and visibility are positive; its confidence is the visibility. A message is
-/// rejected whole when it names a camera not in the rig, its arrays are not 0 or 33 long, or a
-/// landmark it says is present has a non-finite pixel.
+/// Each rig camera's declared video geometry (`run --video-geometry`), by camera index; `None`: the
+/// node's images must be the calibrated image.
+pub type VideoGeometries = [Option<VideoGeometry>];
+
+/// A camera's message back to a view (the inverse of [`landmarks_message`]), for a rig whose
+/// cameras all send their calibrated image ([`view_from_message_with`] with no declarations).
 pub fn view_from_message(rig: &CameraRig, m: &CameraLandmarks) -> Result<View2, LandmarksRejected> {
+    view_from_message_with(rig, &[], m)
+}
+
+/// A camera's message back to a view: a landmark is observed when its presence and visibility are
+/// positive; its confidence is the visibility; its pixel is mapped into the calibrated image by the
+/// camera's declared video geometry (`geometries[camera]`, sized by the message's image size). A
+/// message is rejected whole when it names a camera not in the rig, its arrays are not 0 or 33 long,
+/// a landmark it says is present has a non-finite pixel, or (with landmarks) its image size is not
+/// the calibrated one and no geometry is declared for the camera.
+pub fn view_from_message_with(
+    rig: &CameraRig,
+    geometries: &VideoGeometries,
+    m: &CameraLandmarks,
+) -> Result<View2, LandmarksRejected> {
     let camera = rig
         .index_of_name(&m.camera_id)
         .ok_or_else(|| LandmarksRejected::UnknownCamera(m.camera_id.clone()))?;
@@ -143,6 +177,28 @@ pub fn view_from_message(rig: &CameraRig, m: &CameraLandmarks) -> Result<View2, 
     if n == 0 {
         return Ok(view);
     }
+    let calibrated = rig
+        .camera(camera)
+        .map_or((0, 0), |c| (c.intrinsics.width_px, c.intrinsics.height_px));
+    let image = (m.image_width, m.image_height);
+    let map = match geometries.get(camera).copied().flatten() {
+        Some(g) => g
+            .map(image, calibrated)
+            .map_err(|e| LandmarksRejected::VideoGeometry {
+                camera: m.camera_id.clone(),
+                why: e.to_string(),
+            })?,
+        None if image == calibrated => VideoMap::IDENTITY,
+        None => {
+            return Err(LandmarksRejected::ImageSize {
+                camera: m.camera_id.clone(),
+                got_width: image.0,
+                got_height: image.1,
+                width: calibrated.0,
+                height: calibrated.1,
+            })
+        }
+    };
     if n != LANDMARK_COUNT
         || [m.y_px.len(), m.visibility.len(), m.presence.len()]
             .iter()
@@ -169,6 +225,7 @@ pub fn view_from_message(rig: &CameraRig, m: &CameraLandmarks) -> Result<View2, 
             view.set(lm, Keypoint2::new(x, y, vis.min(1.0)).ok());
         }
     }
+    map.apply_view(&mut view);
     Ok(view)
 }
 

@@ -506,6 +506,45 @@ fn views_round_trip_through_the_camera_message() {
         let e = ergocell::messages::view_from_message(&rig, m).unwrap_err();
         assert!(e.to_string().contains(needle), "{e}");
     }
+    // a node whose images are not the calibrated image: refused, unless its geometry is declared,
+    // then mapped into the calibrated image (here the rig's 1280x720 shown in a 1920x1080 frame)
+    let mut scaled = good.clone();
+    scaled.image_width = 1920;
+    scaled.image_height = 1080;
+    for x in &mut scaled.x_px {
+        *x = (*x + 0.5) * 1.5 - 0.5;
+    }
+    for y in &mut scaled.y_px {
+        *y = (*y + 0.5) * 1.5 - 0.5;
+    }
+    let e = ergocell::messages::view_from_message(&rig, &scaled).unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("1920x1080 but it was calibrated at 1280x720"),
+        "{e}"
+    );
+    let mut declared = vec![None; rig.len()];
+    declared[v.camera] = Some(ergocell_perception::video_geometry::VideoGeometry::Fit);
+    let mapped = ergocell::messages::view_from_message_with(&rig, &declared, &scaled).unwrap();
+    let plain = ergocell::messages::view_from_message(&rig, &good).unwrap();
+    for (a, b) in mapped.keypoints().iter().zip(plain.keypoints()) {
+        match (a, b) {
+            (Some(a), Some(b)) => assert!((a.pixel() - b.pixel()).norm() < 1e-3),
+            (a, b) => assert_eq!(a.is_some(), b.is_some()),
+        }
+    }
+    // an empty message (nobody seen) says nothing about pixels: accepted whatever its size
+    let mut nobody = ergocell::messages::landmarks_message(
+        &rig,
+        &ergocell_perception::View2::empty(v.camera, 0),
+    );
+    nobody.image_width = 1;
+    assert_eq!(
+        ergocell::messages::view_from_message(&rig, &nobody)
+            .unwrap()
+            .observed_count(),
+        0
+    );
     // an unobserved landmark (NaN, presence 0) is simply not seen
     let mut unseen = good.clone();
     unseen.x_px[11] = f32::NAN;

@@ -64,6 +64,48 @@ pub struct FusedFrame {
     pub undistortion_failures: usize,
     /// Bit `k` set: camera `k` contributed a view to this frame.
     pub cameras_present: u64,
+    /// Bit `k` set: camera `k`'s view had the person's left and right swapped (the detector's
+    /// mistake) and was used mirrored. Default fusion only.
+    pub swapped_views: u64,
+}
+
+/// A view is judged swapped when mirroring its left and right explains it at most this fraction as
+/// badly as its labels do.
+pub const SWAP_RATIO: f64 = 0.5;
+/// … over at least this many left/right landmark pairs that the view and the fusion both have …
+pub const SWAP_MIN_PAIRS: u32 = 4;
+/// … by at least this many pixels per pair (two keypoints): below it, noise.
+pub const SWAP_MIN_GAIN_PX: f64 = 8.0;
+
+/// The default fusion's per-landmark triangulations of one frame.
+struct Triangulations {
+    points: [Option<Point3<f64>>; LANDMARK_COUNT],
+    information: [Matrix3<f64>; LANDMARK_COUNT],
+    covariance: [Option<Matrix3<f64>>; LANDMARK_COUNT],
+    masks: [u64; LANDMARK_COUNT],
+    rejected: usize,
+}
+
+/// Exchanges the left and right observations of the cameras in `cameras` (a bit per camera); each
+/// list stays in camera order.
+fn swap_sides(obs: &mut FrameObs, cameras: u64) {
+    let moves = |o: &Obs| cameras & (1 << o.camera) != 0;
+    for left in Landmark::ALL
+        .into_iter()
+        .filter(|l| l.side() == Some(ergocell_skeleton::Side::Left))
+    {
+        let (l, r) = (left.index(), left.mirrored().index());
+        let (to_right, mut stay_left): (Vec<Obs>, Vec<Obs>) =
+            std::mem::take(&mut obs[l]).into_iter().partition(moves);
+        let (to_left, mut stay_right): (Vec<Obs>, Vec<Obs>) =
+            std::mem::take(&mut obs[r]).into_iter().partition(moves);
+        stay_left.extend(to_left);
+        stay_right.extend(to_right);
+        stay_left.sort_by_key(|o| o.camera);
+        stay_right.sort_by_key(|o| o.camera);
+        obs[l] = stay_left;
+        obs[r] = stay_right;
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -187,38 +229,26 @@ impl FusionEngine {
         let (undistortion_failures, cameras_present) = self.observations_into(frame, obs)?;
         let mut skeleton = Skeleton3::empty(frame.stamp_nanos);
         let mut rejected_views = 0;
+        let mut swapped_views = 0;
         match self.method {
             FusionMethod::Default => {
                 let mut views = std::mem::take(&mut self.scratch_views);
-                let mut points = [None; LANDMARK_COUNT];
-                let mut information = [Matrix3::zeros(); LANDMARK_COUNT];
-                let mut covariance = [None; LANDMARK_COUNT];
-                let mut masks = [0u64; LANDMARK_COUNT];
-                for lm in Landmark::ALL {
-                    let o = &obs[lm.index()];
-                    views.clear();
-                    views.extend(o.iter().map(|ob| {
-                        let c = &self.cameras[ob.camera];
-                        NormalizedView {
-                            R_camera_world: c.R_camera_world,
-                            t_camera_world: c.t_camera_world,
-                            normalized: ob.normalized,
-                            focal_px: c.focal_px,
-                            confidence: ob.confidence,
-                        }
-                    }));
-                    let Ok(t) = self.triangulator.triangulate(&views) else {
-                        continue;
-                    };
-                    rejected_views += views.len() - t.views_used() as usize;
-                    points[lm.index()] = Some(t.point);
-                    information[lm.index()] = t.information;
-                    // what the prior's `covariance_of` computes, already inverted (information
-                    // from a triangulation is never all zeros)
-                    covariance[lm.index()] =
-                        Some(t.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
-                    masks[lm.index()] = t.used_mask;
+                let mut tri = self.triangulate_all(obs, &mut views);
+                // A view whose left and right the detector swapped: the fused points explain it
+                // better mirrored. Correct it (swap its sides) and triangulate again.
+                swapped_views = self.swapped_views(obs, &tri.points, cameras_present);
+                if swapped_views != 0 {
+                    swap_sides(obs, swapped_views);
+                    tri = self.triangulate_all(obs, &mut views);
                 }
+                let Triangulations {
+                    mut points,
+                    information,
+                    covariance,
+                    masks,
+                    rejected,
+                } = tri;
+                rejected_views += rejected;
                 rejected_views += drop_off_body(&mut points, &masks);
                 if let Some(prior) = self.bone_prior.as_mut() {
                     prior.observe_with_covariance(&points, &covariance);
@@ -259,7 +289,106 @@ impl FusionEngine {
             rejected_views,
             undistortion_failures,
             cameras_present,
+            swapped_views,
         })
+    }
+
+    /// The robust triangulation of every landmark from its observations (the default fusion's
+    /// per-frame geometry, before the body checks and the bone prior).
+    fn triangulate_all(&self, obs: &FrameObs, views: &mut Vec<NormalizedView>) -> Triangulations {
+        let mut t = Triangulations {
+            points: [None; LANDMARK_COUNT],
+            information: [Matrix3::zeros(); LANDMARK_COUNT],
+            covariance: [None; LANDMARK_COUNT],
+            masks: [0u64; LANDMARK_COUNT],
+            rejected: 0,
+        };
+        for lm in Landmark::ALL {
+            let o = &obs[lm.index()];
+            views.clear();
+            views.extend(o.iter().map(|ob| {
+                let c = &self.cameras[ob.camera];
+                NormalizedView {
+                    R_camera_world: c.R_camera_world,
+                    t_camera_world: c.t_camera_world,
+                    normalized: ob.normalized,
+                    focal_px: c.focal_px,
+                    confidence: ob.confidence,
+                }
+            }));
+            let Ok(r) = self.triangulator.triangulate(views) else {
+                continue;
+            };
+            t.rejected += views.len() - r.views_used() as usize;
+            t.points[lm.index()] = Some(r.point);
+            t.information[lm.index()] = r.information;
+            // what the prior's `covariance_of` computes, already inverted (information from a
+            // triangulation is never all zeros)
+            t.covariance[lm.index()] =
+                Some(r.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
+            t.masks[lm.index()] = r.used_mask;
+        }
+        t
+    }
+
+    /// The cameras whose view has the person's left and right swapped, judged against the fused
+    /// points: over every left/right landmark pair the view sees and the fusion placed, the pixel
+    /// distance of the view's two keypoints to the pair's projections as labelled and mirrored. A
+    /// view is swapped when mirrored explains it at most [`SWAP_RATIO`] as badly, over at least
+    /// [`SWAP_MIN_PAIRS`] pairs, by at least [`SWAP_MIN_GAIN_PX`] per pair. Needs three cameras
+    /// (with two, each view is as right as the other). The robust triangulation has usually
+    /// rejected a lone swapped view already, so the fused points are the other views'.
+    fn swapped_views(
+        &self,
+        obs: &FrameObs,
+        points: &[Option<Point3<f64>>; LANDMARK_COUNT],
+        present: u64,
+    ) -> u64 {
+        if present.count_ones() < 3 {
+            return 0;
+        }
+        let m = self.cameras.len();
+        let mut keep = [0.0f64; MAX_VIEWS];
+        let mut mirrored = [0.0f64; MAX_VIEWS];
+        let mut pairs = [0u32; MAX_VIEWS];
+        for left in Landmark::ALL
+            .into_iter()
+            .filter(|l| l.side() == Some(ergocell_skeleton::Side::Left))
+        {
+            let right = left.mirrored();
+            let (Some(pl), Some(pr)) = (points[left.index()], points[right.index()]) else {
+                continue;
+            };
+            for ol in &obs[left.index()] {
+                let Some(or) = obs[right.index()].iter().find(|o| o.camera == ol.camera) else {
+                    continue;
+                };
+                let c = &self.cameras[ol.camera];
+                let project = |p: Point3<f64>| {
+                    let q = c.R_camera_world * p.coords + c.t_camera_world;
+                    (q.z > 1e-9).then(|| Vector2::new(q.x / q.z, q.y / q.z))
+                };
+                let (Some(ql), Some(qr)) = (project(pl), project(pr)) else {
+                    continue;
+                };
+                let px =
+                    |a: Vector2<f64>, b: Vector2<f64>| (a - b).component_mul(&c.focal_px).norm();
+                keep[ol.camera] += px(ql, ol.normalized) + px(qr, or.normalized);
+                mirrored[ol.camera] += px(ql, or.normalized) + px(qr, ol.normalized);
+                pairs[ol.camera] += 1;
+            }
+        }
+        let mut swapped = 0u64;
+        for k in 0..m {
+            let n = pairs[k];
+            if n >= SWAP_MIN_PAIRS
+                && mirrored[k] <= SWAP_RATIO * keep[k]
+                && (keep[k] - mirrored[k]) / f64::from(n) >= SWAP_MIN_GAIN_PX
+            {
+                swapped |= 1 << k;
+            }
+        }
+        swapped
     }
 
     /// Each stereo pair's own DLT estimate of every landmark (the paper's `S_j` rows of Table 1).
@@ -809,5 +938,62 @@ mod tests {
         frame.views.truncate(1);
         let fused = engine.fuse(&frame).unwrap();
         assert_eq!(fused.skeleton.observed_count(), 0);
+    }
+
+    /// [`body`] with the person's left 0.2 m to +y and right 0.2 m to −y, so mirroring a view moves
+    /// its keypoints far.
+    fn sided_body() -> [Point3<f64>; LANDMARK_COUNT] {
+        let mut b = body();
+        for lm in Landmark::ALL {
+            match lm.side() {
+                Some(ergocell_skeleton::Side::Left) => b[lm.index()].y += 0.2,
+                Some(ergocell_skeleton::Side::Right) => b[lm.index()].y -= 0.2,
+                None => {}
+            }
+        }
+        b
+    }
+
+    fn mirror_view(v: &mut View2) {
+        let original = v.clone();
+        for lm in Landmark::ALL {
+            v.set(lm, original.get(lm.mirrored()).copied());
+        }
+    }
+
+    #[test]
+    fn a_view_with_left_and_right_swapped_is_used_mirrored() {
+        let rig = ring_rig(6);
+        let truth = sided_body();
+        let mut engine = FusionEngine::new(rig.clone(), FusionMethod::Default)
+            .unwrap()
+            .with_bone_prior(None);
+        let clean = engine.fuse(&frame_of(&rig, &truth)).unwrap();
+        assert_eq!(clean.swapped_views, 0);
+        for swapped in [2usize, 5] {
+            let mut frame = frame_of(&rig, &truth);
+            mirror_view(&mut frame.views[swapped]);
+            let fused = engine.fuse(&frame).unwrap();
+            assert_eq!(fused.swapped_views, 1 << swapped);
+            assert_eq!(
+                fused.rejected_views, 0,
+                "the corrected view is used, not rejected"
+            );
+            for lm in Landmark::ALL {
+                let p = fused.skeleton.position(lm).unwrap();
+                assert!((p - truth[lm.index()]).norm() < 1e-6, "{lm}: {p}");
+            }
+        }
+        // two cameras cannot tell which of them is swapped: nothing is corrected
+        let two = CameraRig::new(rig.cameras()[..2].to_vec(), &[], None).unwrap();
+        let mut engine2 = FusionEngine::new(two.clone(), FusionMethod::Default).unwrap();
+        let mut frame = frame_of(&two, &truth);
+        mirror_view(&mut frame.views[1]);
+        assert_eq!(engine2.fuse(&frame).unwrap().swapped_views, 0);
+        // the paper's fusion is the baseline as written: it corrects nothing
+        let mut paper = FusionEngine::new(rig.clone(), FusionMethod::Paper).unwrap();
+        let mut frame = frame_of(&rig, &truth);
+        mirror_view(&mut frame.views[2]);
+        assert_eq!(paper.fuse(&frame).unwrap().swapped_views, 0);
     }
 }

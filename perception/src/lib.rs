@@ -5,8 +5,10 @@
 //!
 //! - [`camera`]: pinhole + Brown–Conrady camera model, projection, iterative undistortion.
 //! - [`rig`]: M cameras in one world frame, grouped into stereo pairs.
-//! - [`rig_file`]: ergocell's rig TOML, Anipose/Pose2Sim and caliscope calibration import.
-//! - [`detections`], [`import`]: 2D keypoints (BlazePose-33 order), OpenPose JSON and caliscope CSV.
+//! - [`rig_file`]: ergocell's rig TOML, Anipose/Pose2Sim and caliscope calibration import;
+//!   [`qualisys`]: Qualisys QTM's `.qca.txt` export.
+//! - [`detections`], [`import`]: 2D keypoints (BlazePose-33 order), OpenPose JSON and caliscope CSV;
+//!   [`video_geometry`]: a video that is not the calibrated image (scaled, letterboxed, cropped).
 //! - [`triangulation`]: the paper's DLT (SVD) and the robust N-view triangulator.
 //! - [`fusion`]: the paper's graph-Laplacian fusion (baseline) and ergocell's default fusion;
 //!   [`body_prior`]: the learned-bone-length prior the default fusion adds.
@@ -24,10 +26,12 @@ pub mod fusion;
 pub mod import;
 pub mod landmarks_file;
 pub mod metrics;
+pub mod qualisys;
 pub mod rig;
 pub mod rig_file;
 pub mod temporal;
 pub mod triangulation;
+pub mod video_geometry;
 
 pub use camera::{Camera, CameraId, Distortion, Intrinsics};
 pub use detections::{Frame2, Keypoint2, KeypointFormat, View2};

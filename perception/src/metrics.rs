@@ -233,6 +233,88 @@ impl StreamingStats {
     }
 }
 
+/// Each camera's reprojection error against the fused skeleton, accumulated one frame at a time:
+/// for every landmark a camera observed and the fusion placed, the distance in pixels between the
+/// camera's keypoint and the fused point projected through its calibration (lens distortion
+/// included). Views the fusion rejected count too, so a camera that is off (a swapped left and
+/// right, a bad calibration, an undeclared video geometry) shows. Medians from histograms of 0.01 px
+/// bins up to [`StreamingStats::MAX_REPROJECTION_PX`] (400 kB per camera).
+#[derive(Debug, Clone, Default)]
+pub struct PerCameraReprojection {
+    histograms: Vec<Vec<u32>>,
+    counts: Vec<u64>,
+}
+
+impl PerCameraReprojection {
+    const BIN_PX: f64 = 0.01;
+    const BINS: usize = 100_000;
+
+    /// Adds one frame's views against its fused skeleton; the views of the cameras in `swapped`
+    /// (a bit per camera, [`crate::FusedFrame::swapped_views`]) are compared mirrored, as the
+    /// fusion used them.
+    pub fn push(
+        &mut self,
+        rig: &crate::CameraRig,
+        frame: &crate::Frame2,
+        fused: &Skeleton3,
+        swapped: u64,
+    ) {
+        for view in &frame.views {
+            let Some(camera) = rig.camera(view.camera) else {
+                continue;
+            };
+            let mirrored = swapped & (1 << view.camera) != 0;
+            for lm in ergocell_skeleton::Landmark::ALL {
+                let as_used = if mirrored { lm.mirrored() } else { lm };
+                let (Some(k), Some(p)) = (view.get(lm), fused.position(as_used)) else {
+                    continue;
+                };
+                let Ok(q) = camera.project(&p) else { continue };
+                let e = (q - k.pixel()).norm();
+                if e.is_finite() {
+                    self.add(view.camera, e);
+                }
+            }
+        }
+    }
+
+    fn add(&mut self, camera: usize, error_px: f64) {
+        if self.histograms.len() <= camera {
+            self.histograms.resize_with(camera + 1, Vec::new);
+            self.counts.resize(camera + 1, 0);
+        }
+        let h = &mut self.histograms[camera];
+        if h.is_empty() {
+            h.resize(Self::BINS + 1, 0);
+        }
+        h[((error_px / Self::BIN_PX) as usize).min(Self::BINS)] += 1;
+        self.counts[camera] += 1;
+    }
+
+    /// The median error of one camera (to ±0.005 px) and its sample count; `None` for a camera
+    /// with no sample.
+    pub fn median_px(&self, camera: usize) -> Option<(f64, u64)> {
+        let n = *self.counts.get(camera).filter(|&&n| n > 0)?;
+        let h = &self.histograms[camera];
+        let kth = |k: u64| {
+            let mut seen = 0u64;
+            for (bin, &c) in h.iter().enumerate() {
+                seen += u64::from(c);
+                if seen > k {
+                    return (bin as f64 + 0.5) * Self::BIN_PX;
+                }
+            }
+            (Self::BINS as f64 + 0.5) * Self::BIN_PX
+        };
+        let m = if n.is_multiple_of(2) {
+            0.5 * (kth(n / 2 - 1) + kth(n / 2))
+        } else {
+            kth(n / 2)
+        };
+        Some((m, n))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -311,5 +393,21 @@ mod tests {
         assert_eq!(median(&[3.0, 1.0, 2.0]), Some(2.0));
         assert_eq!(median(&[4.0, 1.0, 2.0, 3.0]), Some(2.5));
         assert_eq!(median(&[f64::NAN]), None);
+    }
+
+    #[test]
+    fn per_camera_reprojection_medians() {
+        let mut r = PerCameraReprojection::default();
+        for e in [0.5, 1.5, 2.5] {
+            r.add(1, e);
+        }
+        r.add(3, 7.0);
+        r.add(3, 9.0);
+        assert_eq!(r.median_px(0), None);
+        let (m, n) = r.median_px(1).unwrap();
+        assert!((m - 1.5).abs() < 0.01 && n == 3, "{m}");
+        let (m, n) = r.median_px(3).unwrap();
+        assert!((m - 8.0).abs() < 0.01 && n == 2, "{m}");
+        assert_eq!(r.median_px(9), None);
     }
 }

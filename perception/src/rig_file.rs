@@ -1,4 +1,5 @@
-//! Calibration files: ergocell's own rig TOML, and import of the Anipose / Pose2Sim and caliscope TOMLs.
+//! Calibration files: ergocell's own rig TOML, and import of the Anipose / Pose2Sim and caliscope TOMLs
+//! and of Qualisys QTM's XML export.
 //!
 //! The crate does no I/O: callers pass the file's text and its name (used in every error, together
 //! with the offending field, e.g. `calib.toml: field cam_1.matrix[0][0]: not a finite number`).
@@ -8,6 +9,7 @@
 //! | ergocell (`[[camera]]` array) | Rodrigues vector, world→camera | metres | optional `up`, `[[stereo_pair]]` |
 //! | Anipose / Pose2Sim (`[cam_x]` tables) | Rodrigues vector, world→camera | metres (Pose2Sim); Anipose writes the board's unit, scale it | `fisheye = true` is refused |
 //! | caliscope `config.toml` (`[cam_N]` tables) | 3×3 matrix, world→camera | metres | `ignore = true` cameras are skipped |
+//! | Qualisys QTM `.qca.txt` (XML) | 3×3 matrix, camera pose in the lab | millimetres | intrinsics in 1/64 px; [`crate::qualisys`] |
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use serde::{Deserialize, Serialize};
@@ -26,10 +28,19 @@ pub enum RigFormat {
     Anipose,
     /// caliscope `config.toml` (3×3 rotation matrix).
     Caliscope,
+    /// Qualisys QTM calibration export (`.qca.txt`, XML), converted as Pose2Sim does
+    /// ([`crate::qualisys`]).
+    Qualisys,
 }
 
 /// Parses a calibration file of any supported format, detecting the format from its content.
 pub fn parse_rig(text: &str, source_name: &str) -> Result<(CameraRig, RigFormat)> {
+    if crate::qualisys::looks_like_qca(text) {
+        return Ok((
+            crate::qualisys::parse_qualisys(text, source_name)?,
+            RigFormat::Qualisys,
+        ));
+    }
     let value: Value =
         toml::from_str(text).map_err(|e| parse_err(source_name, "(file)", e.message()))?;
     let table = value

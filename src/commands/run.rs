@@ -55,6 +55,12 @@ pub struct Args {
     /// Camera rig; its camera ids must match `[ros] cameras`.
     #[arg(long, default_value = "config/rig.toml")]
     pub rig: PathBuf,
+    /// A camera whose node sends images that are not its calibrated image (their size is in each
+    /// message): `CAMERA=fit` (the calibrated image scaled to fit, centred) or
+    /// `CAMERA=affine:SX,SY,OX,OY` (`x_cal = SX·(x − OX)`, likewise y). Repeat per camera. Without
+    /// one, a message whose image size is not the calibrated size is rejected.
+    #[arg(long = "video-geometry", value_name = "CAMERA=SPEC")]
+    pub video_geometry: Vec<String>,
     /// Folder of the trajectory files and `locks/`.
     #[arg(long, default_value = "trajectories")]
     pub trajectories: PathBuf,
@@ -645,6 +651,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .into());
         }
     }
+    let video_geometries =
+        ergocell_perception::video_geometry::parse_declarations(&rig, &args.video_geometry)
+            .map_err(|e| UsageError(format!("--video-geometry: {e}")))?;
     let approvals = args.approvals.clone().unwrap_or_else(|| {
         ergocell_robot::TrajectoryLayout::new(&args.trajectories)
             .approvals_dir()
@@ -845,7 +854,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                         Ok((m, _info)) => {
                             let m: CameraLandmarks = m;
                             recording.with(|rec| rec.write(&topics::camera(&m.camera_id), clock.now(), &m));
-                            match messages::view_from_message(&rig, &m) {
+                            match messages::view_from_message_with(&rig, &video_geometries, &m) {
                                 Ok(v) => vec![v],
                                 Err(e) => {
                                     rejected += 1;

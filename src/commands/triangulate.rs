@@ -12,9 +12,10 @@ use ergocell_perception::import::{
     OpenPosePlan,
 };
 use ergocell_perception::landmarks_file::{LandmarksEncoder, LandmarksFormat};
-use ergocell_perception::metrics::StreamingStats;
+use ergocell_perception::metrics::{PerCameraReprojection, StreamingStats};
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::temporal::OneEuroParams;
+use ergocell_perception::video_geometry::{parse_declarations, VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, FusionMethod, KeypointFormat};
 use ergocell_skeleton::{Skeleton3, LANDMARK_COUNT};
 
@@ -52,6 +53,13 @@ pub struct Args {
     /// Overwrite an existing --out file.
     #[arg(long)]
     pub force: bool,
+    /// A camera whose video is not its calibrated image: `CAMERA=fit` (the calibrated image scaled
+    /// to fit the video frame, centred: letterbox or pillarbox) or `CAMERA=affine:SX,SY,OX,OY`
+    /// (`x_cal = SX·(x − OX)`, `y_cal = SY·(y − OY)`). Repeat per camera. The video's size comes
+    /// from the `video.json` that `ergocell-edge detect` writes beside the frames; a folder whose
+    /// video size differs from the calibration and has no declaration is refused.
+    #[arg(long = "video-geometry", value_name = "CAMERA=SPEC")]
+    pub video_geometry: Vec<String>,
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
@@ -95,6 +103,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .ok_or_else(|| UsageError(format!("unknown keypoint layout {}", args.keypoints)))?;
         FrameSource::openpose(&args.detections, &rig, keypoints, args.rate_hz)?
     };
+    let maps = video_maps(&rig, &args.video_geometry, source.video_sizes())?;
     let frame_count = source.frame_count();
     if frame_count == 0 {
         bail!(UsageError(format!(
@@ -127,6 +136,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     #[allow(clippy::disallowed_methods)]
     let started = std::time::Instant::now();
     let mut stats = StreamingStats::default();
+    let mut per_camera = PerCameraReprojection::default();
     let mut held: Vec<Skeleton3> = Vec::new();
     let mut encoder: Option<LandmarksEncoder> = None;
     let mut text = String::new();
@@ -141,8 +151,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         e
     };
     let (mut rejected, mut undistortion_failures) = (0, 0);
+    // views per camera, and of those, used with left and right swapped back
+    let mut views_seen = vec![0usize; rig.len()];
+    let mut views_swapped = vec![0usize; rig.len()];
     let progress = progress_bar(frame_count);
-    for frame in source.by_ref() {
+    for mut frame in source.by_ref() {
+        for view in &mut frame.views {
+            if let Some(m) = maps.get(view.camera) {
+                m.apply_view(view);
+            }
+        }
         if let Some(signal) = stop.get() {
             out.discard();
             return Err(Stopped {
@@ -157,9 +175,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         let r = reconstruction.process_frame(&frame)?;
         rejected += r.fused.rejected_views;
+        for v in frame.views.iter().filter(|v| v.observed_count() > 0) {
+            views_seen[v.camera] += 1;
+            if r.fused.swapped_views & (1 << v.camera) != 0 {
+                views_swapped[v.camera] += 1;
+            }
+        }
         undistortion_failures += r.fused.undistortion_failures;
+        let swapped = r.fused.swapped_views;
         let skeleton = r.tracked.unwrap_or(r.fused.skeleton);
         stats.push(&skeleton);
+        per_camera.push(&rig, &frame, &skeleton, swapped);
         progress.inc(1);
         if let Some(e) = encoder.as_mut() {
             e.frame_into(&skeleton, &mut text);
@@ -216,6 +242,24 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     if let Some(m) = stats.median_reprojection_px() {
         println!("median reprojection err:  {m:.2} px");
     }
+    for (i, c) in rig.cameras().iter().enumerate() {
+        if let Some((m, n)) = per_camera.median_px(i) {
+            println!(
+                "  camera {:<12} median reprojection {m:.2} px over {n} keypoints; {} of {} views left/right-swapped, corrected",
+                c.id.as_str(),
+                views_swapped[i],
+                views_seen[i]
+            );
+        }
+    }
+    let (swapped, seen) = (
+        views_swapped.iter().sum::<usize>(),
+        views_seen.iter().sum::<usize>(),
+    );
+    println!(
+        "left/right swaps:         {swapped} of {seen} views ({:.1}%) had the person's left and right swapped and were used mirrored",
+        100.0 * swapped as f64 / seen.max(1) as f64
+    );
     println!("views rejected:           {rejected} (outliers or behind the camera), {undistortion_failures} keypoints outside the lens model");
     if let Some(cv) = stats.bone_length_variation_percent() {
         println!("bone-length variation:    {cv:.2}% (mean coefficient of variation over bones)");
@@ -273,6 +317,9 @@ enum FrameSource<'r> {
         plan: OpenPosePlan,
         next: usize,
         stats: ImportStats,
+        /// Per rig camera, the video size `ergocell-edge detect` recorded in the folder's
+        /// `video.json`, when there is one.
+        video_sizes: Vec<Option<VideoSize>>,
     },
 }
 
@@ -331,11 +378,14 @@ impl<'r> FrameSource<'r> {
         // OpenPosePlan): a missing file is a missing view of that frame only, never a shift of
         // every later frame.
         let mut cameras = Vec::new();
+        let mut video_sizes = vec![None; rig.len()];
         for (folder, camera) in matched {
             let mut files = Vec::new();
             for entry in std::fs::read_dir(dir.join(&folder))?.filter_map(Result::ok) {
                 let path = entry.path();
-                if path
+                if path.file_name().is_some_and(|n| n == VIDEO_SIDECAR) {
+                    video_sizes[camera] = Some(read_video_sidecar(&path)?);
+                } else if path
                     .extension()
                     .is_some_and(|e| e.eq_ignore_ascii_case("json"))
                 {
@@ -356,7 +406,16 @@ impl<'r> FrameSource<'r> {
             plan,
             next: 0,
             stats,
+            video_sizes,
         })
+    }
+
+    /// Per rig camera, the video size the detections were made in, where known.
+    fn video_sizes(&self) -> Option<&[Option<VideoSize>]> {
+        match self {
+            Self::OpenPose { video_sizes, .. } => Some(video_sizes),
+            _ => None,
+        }
     }
 
     fn frame_count(&self) -> usize {
@@ -412,6 +471,74 @@ fn estimate_rate_hz(skeletons: &[Skeleton3]) -> Option<f64> {
         .filter(|dt| *dt > 0.0)
         .collect();
     ergocell_perception::metrics::median(&dts).map(|dt| 1.0 / dt)
+}
+
+/// The file `ergocell-edge detect` writes beside a camera's frames: the video's source, size, rate
+/// and the detector's figures. Only the size is read here.
+const VIDEO_SIDECAR: &str = "video.json";
+
+/// A video frame's size in pixels, from [`VIDEO_SIDECAR`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+struct VideoSize {
+    width: u32,
+    height: u32,
+}
+
+fn read_video_sidecar(path: &Path) -> anyhow::Result<VideoSize> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    serde_json::from_str(&text).map_err(|e| {
+        UsageError(format!(
+            "{}: not a video description (width and height in pixels): {e}",
+            path.display()
+        ))
+        .into()
+    })
+}
+
+/// Each camera's map from its video's pixels into its calibrated image: the declared
+/// `--video-geometry`, checked against the video sizes the detector recorded. A camera whose
+/// recorded video size is not its calibrated size and that has no declaration is an error, as is a
+/// declaration for an unknown camera or a `fit` with no known video size.
+fn video_maps(
+    rig: &CameraRig,
+    entries: &[String],
+    sizes: Option<&[Option<VideoSize>]>,
+) -> anyhow::Result<Vec<VideoMap>> {
+    let declared = parse_declarations(rig, entries).map_err(|e| UsageError(e.to_string()))?;
+    let mut maps = Vec::with_capacity(rig.len());
+    for (index, camera) in rig.cameras().iter().enumerate() {
+        let calibrated = (camera.intrinsics.width_px, camera.intrinsics.height_px);
+        let video = sizes
+            .and_then(|s| s.get(index).copied().flatten())
+            .map(|s| (s.width, s.height));
+        let id = &camera.id;
+        let map = match (declared[index], video) {
+            (None, Some(v)) if v != calibrated => bail!(UsageError(format!(
+                "camera {id}: its video is {}x{} (its folder's {VIDEO_SIDECAR}) but it was calibrated at {}x{}: \
+                 declare how they relate, e.g. --video-geometry {id}=fit (the calibrated image scaled to fit \
+                 the video, centred) or {id}=affine:SX,SY,OX,OY",
+                v.0, v.1, calibrated.0, calibrated.1
+            ))),
+            (None, _) => VideoMap::IDENTITY,
+            (Some(VideoGeometry::Fit), None) => bail!(UsageError(format!(
+                "--video-geometry {id}=fit needs the video's size, and no {VIDEO_SIDECAR} gives it: \
+                 use {id}=affine:SX,SY,OX,OY"
+            ))),
+            (Some(g), v) => {
+                let m = g
+                    .map(v.unwrap_or(calibrated), calibrated)
+                    .map_err(|e| UsageError(format!("camera {id}: {e}")))?;
+                eprintln!(
+                    "camera {id}: video geometry {g}: x_cal = {:.6}·(x − {:.3}), y_cal = {:.6}·(y − {:.3})",
+                    m.scale[0], m.offset_px[0], m.scale[1], m.offset_px[1]
+                );
+                m
+            }
+        };
+        maps.push(map);
+    }
+    Ok(maps)
 }
 
 /// At most this many per-file warnings are printed (the rest are counted).
