@@ -50,6 +50,8 @@ PYTHONDONTWRITEBYTECODE=1 "$venv/bin/python" -m pytest -q -p no:cacheprovider ed
 if [ -n "$ros" ]; then
   echo "== edge: live ROS 2 test (rclpy + Fast DDS in $ros)"
   env_line=$(bash .ci/interop/rclpy/setup.sh "$ros" | tail -1)
+  # for .ci/edge-live.sh: the environment that has rclpy, ergocell_msgs and this package
+  echo "$env_line" > "$(realpath -m "$ros")/env.sh"
   rpy=$(realpath -m "$ros")/venv/bin/python
   install_edge "$rpy"
   # A live test that skips would prove nothing here: require rclpy and ergocell_msgs.

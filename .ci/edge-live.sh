@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Issue 17, the live path: three `ergocell-edge publish` nodes play Pose2Sim's real videos (cam01, which
+# is letterboxed, cam03, cam04) as cameras over ROS 2 (rclpy on Fast DDS), and `ergocell run` — on the
+# videos' Qualisys calibration, with cam01's video geometry declared — fuses them over loopback in a
+# private network namespace. Asserts the session reaches measuring_height from real pixels, that frames
+# were fused and tracked, and that no camera message was rejected (an undeclared letterbox would be).
+# Needs .ci/edge.sh run with a ROS_DIR first (rclpy, ergocell_msgs and the edge package in
+# ROS_DIR/venv, the environment in ROS_DIR/env.sh).
+# Usage: .ci/edge-live.sh target/release/ergocell ROS_DIR
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=$(realpath "$1")
+ros=$(realpath "$2")
+[ -f "$ros/env.sh" ] || { echo "error: $ros/env.sh missing: run .ci/edge.sh with ROS_DIR=$2 first" >&2; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+sed 's/^cameras = \[.*\]/cameras = ["cam01", "cam02", "cam03", "cam04"]/' config/cell.toml > "$tmp/cell.toml"
+grep -q '^cameras = \["cam01", "cam02", "cam03", "cam04"\]' "$tmp/cell.toml"
+
+unshare -n -- bash -s "$bin" "$ros" "$tmp" <<'NS'
+set -euo pipefail
+bin=$1 ros=$2 tmp=$3
+ip link set lo up
+source "$ros/env.sh"
+export ROS_DOMAIN_ID=0 ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET
+calib=../shared/data/pose2sim-demo-videos/calibration/Calib.qca.txt
+videos=../shared/data/pose2sim-demo-videos/videos
+"$bin" --log error run --config "$tmp/cell.toml" --rig "$calib" --video-geometry cam01=fit \
+  --max-secs 18 --record "$tmp/live.mcap" > "$tmp/run.out" 2> "$tmp/run.err" &
+run=$!
+start=$(python3 -c 'import time; print(time.time() + 5)')
+pubs=()
+for c in cam01 cam03 cam04; do
+  timeout -k 5 40 "$ros/venv/bin/ergocell-edge" publish --camera "$c" --source "$videos/$c.mp4" --rig "$calib" \
+    --cell "$tmp/cell.toml" --loop --start-at "$start" --max-frames 600 > "$tmp/$c.log" 2>&1 &
+  pubs+=($!)
+done
+status=0
+wait "$run" || status=$?
+for p in "${pubs[@]}"; do wait "$p" || echo "publisher exit $?" >> "$tmp/pub.exit"; done
+echo "run exit $status" >> "$tmp/run.out"
+NS
+grep -E "state |session:|camera message|RULA warning" "$tmp/run.out" | head -20
+for c in cam01 cam03 cam04; do tail -1 "$tmp/$c.log"; done
+[ ! -f "$tmp/pub.exit" ] || { cat "$tmp/pub.exit" "$tmp"/cam0*.log >&2; echo "FAIL: a publisher failed" >&2; exit 1; }
+grep -q "state waiting_for_operator → measuring_height: operator tracked" "$tmp/run.out" \
+  || { cat "$tmp/run.out" "$tmp/run.err" >&2; echo "FAIL: the session did not reach measuring_height" >&2; exit 1; }
+python3 - "$tmp/run.out" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+m = re.search(r"session: \w+ — (\d+) frames fused, (\d+) tracked, .* (\d+) camera message\(s\) rejected", text)
+assert m, text
+fused, tracked, rejected = map(int, m.groups())
+assert fused > 50 and tracked > 20, (fused, tracked)
+assert rejected == 0, f"{rejected} camera messages rejected"
+print(f"   ok: measuring_height reached from real video; {fused} frames fused, {tracked} tracked, 0 messages rejected")
+PY
