@@ -12,7 +12,7 @@
 //! | `[station]` | `ergocell_robot` | the operator station's pose in the world — covered by the locks, and the session's station |
 //! | `[ros]` | `ergocell_bridge` | topics, DDS domain (kept as an opaque table here: the core knows no ROS) |
 //! | `[session]` | here | stale, hold, resume and departure bounds |
-//! | `[pipeline]` | here | frame assembly, fusion method, One-Euro filter, the tracked gate |
+//! | `[pipeline]` | here | frame assembly, fusion method, One-Euro filter, the tracked gate, the operator gate |
 //! | `[assessment]` (+ `.thresholds`, `.muscle`) | here → `ergonomics::AssessmentConfig` | RULA's measured adjustments, smoothing |
 //! | `[task]` | `ergonomics::TaskConfig` | what cameras cannot see (force/load, wrist twist, support) |
 //! | `[warnings]` | here → `ergonomics::WarningConfig` | dwell, hysteresis, score per region |
@@ -30,7 +30,7 @@ use ergocell_perception::FusionMethod;
 use ergocell_robot::config::StationConfig;
 use serde::Deserialize;
 
-use crate::pipeline::{PipelineConfig, ReconstructionConfig};
+use crate::pipeline::{OperatorZone, PipelineConfig, ReconstructionConfig};
 use crate::session::SessionConfig;
 use crate::CellError;
 
@@ -128,6 +128,12 @@ impl CellSettings {
                 min_tracked_landmarks: p.min_tracked_landmarks,
                 assembly_tolerance_nanos: nanos(p.assembly_tolerance_s),
                 assembly_max_wait_nanos: nanos(p.assembly_max_wait_s),
+                operator_zone: (p.operator_gate_radius_m > 0.0).then(|| OperatorZone {
+                    station_torso_world: self.session.T_world_station
+                        * nalgebra::Point3::new(0.0, 0.0, p.operator_gate_torso_height_m),
+                    radius_m: p.operator_gate_radius_m,
+                    memory_nanos: nanos(p.operator_gate_memory_s),
+                }),
                 ..ReconstructionConfig::default()
             },
             assessment,
@@ -152,6 +158,12 @@ impl CellSettings {
         seconds("pipeline.assembly_tolerance_s", p.assembly_tolerance_s)?;
         seconds("pipeline.assembly_max_wait_s", p.assembly_max_wait_s)?;
         landmarks("pipeline.min_tracked_landmarks", p.min_tracked_landmarks)?;
+        non_negative("pipeline.operator_gate_radius_m", p.operator_gate_radius_m)?;
+        seconds("pipeline.operator_gate_memory_s", p.operator_gate_memory_s)?;
+        finite(
+            "pipeline.operator_gate_torso_height_m",
+            p.operator_gate_torso_height_m,
+        )?;
         let a = &self.assessment;
         if let Some(f) = a.floor_height_m {
             finite("assessment.floor_height_m", f)?;
@@ -478,6 +490,14 @@ struct PipelineFile {
     min_tracked_landmarks: usize,
     assembly_tolerance_s: f64,
     assembly_max_wait_s: f64,
+    /// A camera's view whose torso ray passes farther than this from where the operator is expected
+    /// (the last tracked torso, else the station's) shows someone else and is left out of fusion;
+    /// 0 = off. See `OperatorZone`.
+    operator_gate_radius_m: f64,
+    /// How long the last tracked torso stays where the operator is expected.
+    operator_gate_memory_s: f64,
+    /// Height of a standing operator's torso (mid shoulders and hips) above the station floor.
+    operator_gate_torso_height_m: f64,
 }
 
 impl Default for PipelineFile {
@@ -494,9 +514,17 @@ impl Default for PipelineFile {
             min_tracked_landmarks: p.min_tracked_landmarks,
             assembly_tolerance_s: p.assembly_tolerance_nanos as f64 * 1e-9,
             assembly_max_wait_s: p.assembly_max_wait_nanos as f64 * 1e-9,
+            operator_gate_radius_m: OPERATOR_GATE_RADIUS_M,
+            operator_gate_memory_s: 1.0,
+            operator_gate_torso_height_m: 1.1,
         }
     }
 }
+
+/// The default operator gate: a bystander 1.2 m from the operator is outside it from every camera of
+/// the twin's ring, a torso moves far less between two frames (10 Hz), and a floor pick moves the
+/// torso ≈ 0.4 m from its standing place only over a second or more (`sim/tests/bystander.rs`).
+pub const OPERATOR_GATE_RADIUS_M: f64 = 0.5;
 
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -606,8 +634,19 @@ mod tests {
     fn the_shipped_file_gives_every_default() {
         let s = CellSettings::from_toml_str(SHIPPED, "config/cell.toml").unwrap();
         let up = UpVector::z();
-        let p = s.pipeline(up).unwrap();
+        let mut p = s.pipeline(up).unwrap();
         let d = PipelineConfig::new(up);
+        // the one difference: the cell gates the views of someone else by the station, which a bare
+        // pipeline (triangulate, the experiments) has no station for
+        let zone = p.reconstruction.operator_zone.take().unwrap();
+        assert_eq!(
+            zone,
+            OperatorZone {
+                station_torso_world: nalgebra::Point3::new(0.0, 0.0, 1.1),
+                radius_m: OPERATOR_GATE_RADIUS_M,
+                memory_nanos: 1_000_000_000,
+            }
+        );
         assert_eq!(p, d);
         assert_eq!(s.session, SessionConfig::default());
         assert_eq!(s, CellSettings::default());

@@ -23,6 +23,6 @@ pub mod session;
 pub use config::CellSettings;
 pub use error::{BackendError, CellError, ProviderError};
 pub use pipeline::{
-    Assessment, FrameOutput, Pipeline, PipelineConfig, Reconstructed, Reconstruction,
+    Assessment, FrameOutput, OperatorZone, Pipeline, PipelineConfig, Reconstructed, Reconstruction,
     ReconstructionConfig, TrackedFrame,
 };

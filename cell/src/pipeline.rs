@@ -34,6 +34,7 @@ use ergocell_ergonomics::{
 use ergocell_perception::camera_health::{
     CameraResidualMonitor, OutOfCalibration, ResidualMonitorConfig,
 };
+use ergocell_perception::operator_gate::{other_person_views, torso_of};
 use ergocell_perception::temporal::{FrameAssembler, OneEuroFilter, OneEuroParams};
 use ergocell_perception::{
     CameraRig, Frame2, FusedFrame, FusionEngine, FusionMethod, PerceptionError, View2,
@@ -60,6 +61,21 @@ pub struct ReconstructionConfig {
     /// Finding cameras knocked out of calibration by their reprojection residuals, which are then
     /// left out of fusion (default on, [`ResidualMonitorConfig::default`]); `None` = never.
     pub residual_monitor: Option<ResidualMonitorConfig>,
+    /// Leaving out the views of someone other than the operator (a single-person detector per
+    /// camera, two people in the cell): [`OperatorZone`]. `None` (the default) = every view is
+    /// the operator's; the session sets it from the station.
+    pub operator_zone: Option<OperatorZone>,
+}
+
+/// Where the operator is expected, for [`ergocell_perception::operator_gate`]: a view whose torso
+/// ray passes farther than `radius_m` from the operator's last tracked torso (within `memory_nanos`)
+/// or, with none, from the station's torso point, shows someone else and is left out of fusion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OperatorZone {
+    /// The torso of an operator standing at the station, world frame.
+    pub station_torso_world: nalgebra::Point3<f64>,
+    pub radius_m: f64,
+    pub memory_nanos: i64,
 }
 
 impl Default for ReconstructionConfig {
@@ -71,6 +87,7 @@ impl Default for ReconstructionConfig {
             assembly_tolerance_nanos: 15_000_000,
             assembly_max_wait_nanos: 40_000_000,
             residual_monitor: Some(ResidualMonitorConfig::default()),
+            operator_zone: None,
         }
     }
 }
@@ -135,6 +152,9 @@ pub struct Reconstructed {
     pub tracked: Option<Skeleton3>,
     /// A camera this frame found out of calibration (left out of fusion from the next frame on).
     pub out_of_calibration: Option<OutOfCalibration>,
+    /// Bit `k`: camera `k`'s view showed someone other than the operator and was left out
+    /// ([`OperatorZone`]).
+    pub other_person_views: u64,
 }
 
 /// The first stage: views → time-aligned frame → fused skeleton → tracked gate → causal filter.
@@ -147,8 +167,10 @@ pub struct Reconstruction {
     fusion: FusionEngine,
     filter: Option<OneEuroFilter>,
     monitor: Option<CameraResidualMonitor>,
-    /// The frame without the cameras found out of calibration (reused).
+    /// The frame without the cameras found out of calibration or showing someone else (reused).
     kept: Frame2,
+    /// The operator's last tracked torso (stamp, world point), for the [`OperatorZone`].
+    last_torso: Option<(i64, nalgebra::Point3<f64>)>,
 }
 
 impl Reconstruction {
@@ -169,6 +191,7 @@ impl Reconstruction {
                 stamp_nanos: 0,
                 views: Vec::new(),
             },
+            last_torso: None,
             config,
         })
     }
@@ -197,20 +220,43 @@ impl Reconstruction {
     /// Cameras found out of calibration are left out of the fusion; every camera's views are still
     /// compared with the fused skeleton.
     pub fn process_frame(&mut self, frame: &Frame2) -> Result<Reconstructed, PerceptionError> {
-        let fused = match &self.monitor {
-            Some(m) if m.flagged().next().is_some() => {
-                self.kept.stamp_nanos = frame.stamp_nanos;
-                self.kept.views.clear();
-                self.kept.views.extend(
-                    frame
-                        .views
-                        .iter()
-                        .filter(|v| !m.is_flagged(v.camera))
-                        .cloned(),
-                );
-                self.fusion.fuse(&self.kept)?
+        let other_person_views = match self.config.operator_zone {
+            Some(zone) => {
+                let (reference, tracking) = match self.last_torso {
+                    Some((t, p)) if frame.stamp_nanos - t <= zone.memory_nanos => (p, true),
+                    _ => (zone.station_torso_world, false),
+                };
+                other_person_views(
+                    self.fusion.rig(),
+                    frame,
+                    &reference,
+                    zone.radius_m,
+                    !tracking,
+                )
             }
-            _ => self.fusion.fuse(frame)?,
+            None => 0,
+        };
+        let flagged = self
+            .monitor
+            .as_ref()
+            .is_some_and(|m| m.flagged().next().is_some());
+        let fused = if flagged || other_person_views != 0 {
+            self.kept.stamp_nanos = frame.stamp_nanos;
+            self.kept.views.clear();
+            let monitor = self.monitor.as_ref();
+            self.kept.views.extend(
+                frame
+                    .views
+                    .iter()
+                    .filter(|v| {
+                        other_person_views & (1 << v.camera) == 0
+                            && !monitor.is_some_and(|m| m.is_flagged(v.camera))
+                    })
+                    .cloned(),
+            );
+            self.fusion.fuse(&self.kept)?
+        } else {
+            self.fusion.fuse(frame)?
         };
         let out_of_calibration = self
             .monitor
@@ -223,11 +269,17 @@ impl Reconstruction {
                     None => fused.skeleton.clone(),
                 }
             });
+        if tracked.is_some() {
+            if let Some(torso) = torso_of(&fused.skeleton) {
+                self.last_torso = Some((frame.stamp_nanos, torso));
+            }
+        }
         Ok(Reconstructed {
             stamp_nanos: frame.stamp_nanos,
             fused,
             tracked,
             out_of_calibration,
+            other_person_views,
         })
     }
 }

@@ -760,7 +760,7 @@ fn paper_solver(edges: &[u64], landmarks: &[usize], m: usize) -> DMatrix<f64> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::camera::{Camera, CameraId, Distortion, Intrinsics};
     use crate::detections::{Keypoint2, View2};

@@ -12,6 +12,8 @@
 //! - [`triangulation`]: the paper's DLT (SVD) and the robust N-view triangulator.
 //! - [`fusion`]: the paper's graph-Laplacian fusion (baseline) and ergocell's default fusion;
 //!   [`body_prior`]: the learned-bone-length prior the default fusion adds.
+//! - [`operator_gate`]: which views show the operator and which someone else (a single-person
+//!   detector per camera, two people in the cell).
 //! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter.
 //! - [`metrics`], [`landmarks_file`]: bone-length consistency and the 3D output formats.
 //!
@@ -26,6 +28,7 @@ pub mod fusion;
 pub mod import;
 pub mod landmarks_file;
 pub mod metrics;
+pub mod operator_gate;
 pub mod qualisys;
 pub mod rig;
 pub mod rig_file;

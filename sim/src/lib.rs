@@ -64,8 +64,8 @@ pub use cameras::{ring_rig, RingRigConfig};
 pub use detector::DetectorNoise;
 pub use reach::{solve_reach, ReachConfig, ReachSolution};
 pub use session::{
-    CameraBump, FloorPick, GroundTruth, Habits, Phase, PickStage, SessionScript, SimConfig,
-    Simulation, Tick,
+    Bystander, CameraBump, FloorPick, GroundTruth, Habits, Phase, PickStage, SessionScript,
+    SimConfig, Simulation, Tick,
 };
 
 /// Everything that can go wrong in the simulator.

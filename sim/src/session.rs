@@ -308,6 +308,24 @@ pub struct SimConfig {
     pub reach: ReachConfig,
     /// A camera knocked out of its calibration mid-session (default none).
     pub bump: Option<CameraBump>,
+    /// A second person whom some cameras' detector follows instead of the operator (default none).
+    pub bystander: Option<Bystander>,
+}
+
+/// A second person in the cell — a colleague, a visitor — standing still, whom the single-person
+/// detector of some cameras locks onto instead of the operator (what MediaPipe's legacy BlazePose
+/// does: it tracks one person per camera, and on Pose2Sim's two-person video one of four cameras
+/// followed the other person). Those cameras report the bystander's landmarks, with the same
+/// detector noise, from `from_nanos` on; the others still see the operator.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bystander {
+    pub person: Operator,
+    /// Where they stand (the floor point below mid-hip, world x and y) and which way they face.
+    pub position_m: [f64; 2],
+    pub heading_rad: f64,
+    /// Bit `k` set: camera `k` reports the bystander.
+    pub cameras: u64,
+    pub from_nanos: i64,
 }
 
 /// A camera bumped at `from_nanos`: from then on it sees the scene through a pose rotated by
@@ -344,6 +362,7 @@ impl SimConfig {
             noise: DetectorNoise::default(),
             reach: ReachConfig::default(),
             bump: None,
+            bystander: None,
         }
     }
 }
@@ -660,7 +679,18 @@ impl Simulation {
             } else {
                 self.truth_at(stamp)?.posture
             };
-            let kin = self.operator.kinematics(&posture);
+            let bystander = self
+                .config
+                .bystander
+                .filter(|b| b.cameras & (1 << k) != 0 && stamp >= b.from_nanos);
+            let kin = match bystander {
+                Some(b) => b.person.kinematics(&Posture {
+                    position_m: b.position_m,
+                    heading_rad: b.heading_rad,
+                    ..Posture::default()
+                }),
+                None => self.operator.kinematics(&posture),
+            };
             let bumped = self
                 .config
                 .bump
