@@ -26,8 +26,18 @@ export ROS_DOMAIN_ID=0 ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET
 calib=../shared/data/pose2sim-demo-videos/calibration/Calib.qca.txt
 videos=../shared/data/pose2sim-demo-videos/videos
 "$bin" --log error run --config "$tmp/cell.toml" --rig "$calib" --video-geometry cam01=fit \
-  --max-secs 18 --record "$tmp/live.mcap" > "$tmp/run.out" 2> "$tmp/run.err" &
+  --max-secs 18 --record "$tmp/live.mcap" --display 127.0.0.1:0 > "$tmp/run.out" 2> "$tmp/run.err" &
 run=$!
+# the operator display's snapshot (what a page gets first), every 2 s from 8 s in until it shows the
+# operator being measured, for the check below
+( for _ in $(seq 50); do grep -q "operator display: http" "$tmp/run.out" && break; sleep 0.2; done
+  url=$(grep -o "operator display: http[^ ]*" "$tmp/run.out" | head -1 | cut -d' ' -f3)
+  sleep 8
+  for _ in 1 2 3 4 5; do
+    curl -s -m 2 "${url}events" | grep -m1 "^data: " > "$tmp/display.json" || true
+    grep -q '"state":"measuring_height"' "$tmp/display.json" && break
+    sleep 2
+  done ) &
 start=$(python3 -c 'import time; print(time.time() + 5)')
 pubs=()
 for c in cam01 cam03 cam04; do
@@ -54,4 +64,14 @@ fused, tracked, rejected = map(int, m.groups())
 assert fused > 50 and tracked > 20, (fused, tracked)
 assert rejected == 0, f"{rejected} camera messages rejected"
 print(f"   ok: measuring_height reached from real video; {fused} frames fused, {tracked} tracked, 0 messages rejected")
+PY
+python3 - "$tmp/display.json" <<'PY'
+import json, sys
+line = open(sys.argv[1]).read().strip()
+assert line.startswith("data: "), f"no snapshot from run's operator display: {line!r}"
+s = json.loads(line[len("data: "):])
+seen = sum(p is not None for p in s["skeleton"])
+assert s["state"] == "measuring_height" and seen >= 20, (s["state"], seen)
+print(f"   ok: run's operator display (--display) pushed the live state: {s['state']}, {seen} landmarks, "
+      f"{len(s['warnings'])} warning(s) on screen, update {s['seq']}")
 PY

@@ -3,6 +3,7 @@
 //!
 //! `anyhow` stays in the command modules of the binary; this half returns typed errors.
 
+pub mod display;
 pub mod fuzzing;
 pub mod messages;
 pub mod recording;

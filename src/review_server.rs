@@ -54,8 +54,21 @@ pub struct Served {
     /// Shared, not copied, per request.
     page: axum::body::Bytes,
     json: axum::body::Bytes,
-    /// `Host` values accepted; `None` when asked to serve the network.
-    allowed_hosts: Option<Vec<String>>,
+    rules: Arc<HostRules>,
+}
+
+/// Who may ask: the `Host` values accepted, from loopback peers only; `None` when asked to serve
+/// the network. Shared by the review and the operator display ([`crate::display`]).
+#[derive(Debug, Clone)]
+pub struct HostRules {
+    pub allowed_hosts: Option<Vec<String>>,
+    /// The server's name in a refusal ("review server", "operator display").
+    pub server: &'static str,
+}
+
+/// `router` behind the Host and method rules (GET and HEAD only) and the security headers.
+pub fn with_host_rules(router: Router, rules: Arc<HostRules>) -> Router {
+    router.layer(axum::middleware::from_fn_with_state(rules, guard))
 }
 
 impl Served {
@@ -69,22 +82,26 @@ impl Served {
         Self {
             page: page.into(),
             json: json.into(),
-            allowed_hosts,
+            rules: Arc::new(HostRules {
+                allowed_hosts,
+                server: "review server",
+            }),
         }
     }
 }
 
 /// The routes: the page, its script and stylesheet, the analysis JSON, behind the Host and method guard.
 pub fn router(served: Arc<Served>) -> Router {
-    Router::new()
+    let rules = served.rules.clone();
+    let app = Router::new()
         .route("/", get(index))
         .route("/assets/review.js", get(script))
         .route("/assets/review.css", get(stylesheet))
         .route("/api/review.json", get(review_json))
         .route("/favicon.ico", get(|| async { StatusCode::NO_CONTENT }))
         .fallback(not_found)
-        .layer(axum::middleware::from_fn_with_state(served.clone(), guard))
-        .with_state(served)
+        .with_state(served);
+    with_host_rules(app, rules)
 }
 
 /// Connections open at a time (see the module docs).
@@ -446,7 +463,7 @@ async fn serve_connection<S>(
 /// Refuses other hosts (peer not on loopback, or a `Host` that is not the printed address) unless the
 /// server was bound elsewhere on request, and anything but GET/HEAD. Adds the security headers.
 async fn guard(
-    State(served): State<Arc<Served>>,
+    State(rules): State<Arc<HostRules>>,
     ConnectInfo(peer): ConnectInfo<SocketAddr>,
     request: Request,
     next: Next,
@@ -455,7 +472,7 @@ async fn guard(
         // RFC 9112 §3.2: more than one Host is a bad request.
         return (StatusCode::BAD_REQUEST, "more than one Host header").into_response();
     }
-    if let Some(allowed) = &served.allowed_hosts {
+    if let Some(allowed) = &rules.allowed_hosts {
         let host = request
             .headers()
             .get(header::HOST)
@@ -467,7 +484,8 @@ async fn guard(
             return (
                 StatusCode::FORBIDDEN,
                 format!(
-                    "forbidden: this review server answers only on {}",
+                    "forbidden: this {} answers only on {}",
+                    rules.server,
                     allowed.join(", ")
                 ),
             )

@@ -120,6 +120,11 @@ pub struct Args {
     /// span, to see memory flat and no drift in timing over a long shift (e.g. `--cycles 1756`).
     #[arg(long, value_name = "MINUTES", value_parser = clap::value_parser!(u64).range(1..=1440))]
     pub soak_report: Option<u64>,
+    /// Serve the operator display on this address (e.g. `127.0.0.1:8090`; port 0 picks a free
+    /// one, printed) and run the session in real time so the page shows it as it happens. Only
+    /// loopback `Host`s are answered unless the address is not a loopback one.
+    #[arg(long, value_name = "ADDR")]
+    pub display: Option<std::net::SocketAddr>,
 }
 
 /// How long the simulated operator works on a part between handovers: the robot's way home and back
@@ -159,6 +164,57 @@ fn rss_mib() -> Option<f64> {
 #[allow(clippy::disallowed_methods)]
 fn instant() -> std::time::Instant {
     std::time::Instant::now()
+}
+
+/// The operator display's web server, on a thread of its own (the demo's loop is synchronous):
+/// [`ergocell::display`] behind the review server's limits, until the demo ends.
+struct DisplayServer {
+    display: std::sync::Arc<ergocell::display::Display>,
+    stop: Option<tokio::sync::oneshot::Sender<()>>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl DisplayServer {
+    fn start(addr: std::net::SocketAddr) -> anyhow::Result<Self> {
+        use anyhow::Context as _;
+        let display = ergocell::display::Display::new();
+        let (listener, bound) = ergocell::display::bind(addr)
+            .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
+        let runtime = tokio::runtime::Builder::new_current_thread()
+            .enable_all()
+            .build()
+            .context("tokio runtime for the display")?;
+        let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+        let served = display.clone();
+        let thread = std::thread::Builder::new()
+            .name("display".to_owned())
+            .spawn(move || {
+                let result = runtime.block_on(ergocell::display::serve(listener, served, async {
+                    let _ = stopped.await;
+                }));
+                if let Err(e) = result {
+                    tracing::error!("operator display: {e}");
+                }
+            })
+            .context("display thread")?;
+        say!("  operator display: http://{bound}/ (the session runs in real time)");
+        Ok(Self {
+            display,
+            stop: Some(stop),
+            thread: Some(thread),
+        })
+    }
+}
+
+impl Drop for DisplayServer {
+    fn drop(&mut self) {
+        if let Some(stop) = self.stop.take() {
+            let _ = stop.send(());
+        }
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
 }
 
 /// The soak report's accumulator: step wall times since the last line.
@@ -481,12 +537,27 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}"))
         );
     }
+    let display = match args.display {
+        Some(addr) => Some(DisplayServer::start(addr)?),
+        None => None,
+    };
+    let wall_start = instant();
     while machine.state() != SessionState::SessionEnded {
+        if display.is_some() {
+            // real time: the page shows the session as it happens
+            let due = std::time::Duration::from_nanos(u64::try_from(now - start).unwrap_or(0));
+            if let Some(wait) = due.checked_sub(wall_start.elapsed()) {
+                std::thread::sleep(wait);
+            }
+        }
         let step_started = instant();
         if let Some(signal) = stop.get() {
             interrupted = Some(signal);
             let events = machine.shutdown(now, &mut robot, signal.name());
             report(&events, now, start);
+            if let Some(d) = &display {
+                d.display.update(&machine, &events);
+            }
             recording::record_events(&mut rec, &machine, now, &events)?;
             break;
         }
@@ -497,6 +568,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             );
             let events = machine.shutdown(now, &mut robot, &why);
             report(&events, now, start);
+            if let Some(d) = &display {
+                d.display.update(&machine, &events);
+            }
             recording::record_events(&mut rec, &machine, now, &events)?;
             break;
         }
@@ -564,6 +638,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         let events = machine.step(now, views, &mut robot);
         report(&events, now, start);
+        if let Some(d) = &display {
+            d.display.update(&machine, &events);
+        }
         for e in &events {
             if let SessionEvent::Frame {
                 assessment: Some(a),
@@ -596,6 +673,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 };
                 let e = machine.request_class(now, other);
                 report(std::slice::from_ref(&e), now, start);
+                if let Some(d) = &display {
+                    d.display.update(&machine, std::slice::from_ref(&e));
+                }
                 recording::record_events(&mut rec, &machine, now, &[e])?;
             }
         }

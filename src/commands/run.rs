@@ -61,6 +61,12 @@ pub struct Args {
     /// one, a message whose image size is not the calibrated size is rejected.
     #[arg(long = "video-geometry", value_name = "CAMERA=SPEC")]
     pub video_geometry: Vec<String>,
+    /// Serve the operator display on this address (e.g. `127.0.0.1:8090`; port 0 picks a free
+    /// one, printed): the current warning per body region with its advice, the action level as
+    /// colour, the session state and the skeleton, pushed as it happens. Only loopback `Host`s are
+    /// answered unless the address is not a loopback one.
+    #[arg(long, value_name = "ADDR")]
+    pub display: Option<std::net::SocketAddr>,
     /// Folder of the trajectory files and `locks/`.
     #[arg(long, default_value = "trajectories")]
     pub trajectories: PathBuf,
@@ -706,6 +712,25 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     )?;
     let participant = node.participant();
     runtime.spawn(node.spinner()?);
+    let display = match args.display {
+        Some(addr) => {
+            let (listener, bound) = ergocell::display::bind(addr)
+                .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
+            let display = ergocell::display::Display::new();
+            let served = display.clone();
+            // served until the process ends (the runtime is dropped with it)
+            runtime.spawn(async move {
+                if let Err(e) =
+                    ergocell::display::serve(listener, served, std::future::pending()).await
+                {
+                    tracing::error!("operator display: {e}");
+                }
+            });
+            println!("operator display: http://{bound}/");
+            Some(display)
+        }
+        None => None,
+    };
     let result = runtime.block_on(async {
         let CellTopics {
             cameras,
@@ -981,6 +1006,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             };
             if let Some((why, record)) = end {
                 let events = machine.shutdown(now, &mut robot, &why);
+                if let Some(d) = &display {
+                    d.update(&machine, &events);
+                }
                 flush_controller_events(&mut robot.events, &out, &mut recording, now).await?;
                 for e in &events {
                     println!("  {}", messages::describe(e));
@@ -993,6 +1021,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 break;
             }
             let events = machine.step(now, views, &mut robot);
+            if let Some(d) = &display {
+                d.update(&machine, &events);
+            }
             for e in &events {
                 if !matches!(e, SessionEvent::Frame { .. }) {
                     println!("  {}", messages::describe(e));

@@ -1,0 +1,267 @@
+//! The operator display: a page on the cell's screen that says, large and plain, whether the posture
+//! is safe — the current warning per body region with its advice, the action level as colour, the
+//! session's state (and why the robot is held), and the skeleton — pushed as it happens.
+//!
+//! The session loop calls [`Display::update`] after every step with the step's events; the display
+//! keeps the current picture (a [`Snapshot`]) and sends it to every open page as a server-sent event
+//! (`GET /events`, one JSON snapshot per update). A page that connects — first time, after a reload,
+//! or after the server restarted (the browser's `EventSource` reconnects by itself) — gets the current
+//! snapshot at once, so nothing depends on having seen earlier events. No polling, no files.
+//!
+//! Served by [`crate::review_server::serve`] (its connection limits) behind the same Host and method
+//! rules as the review ([`crate::review_server::with_host_rules`]). Each snapshot carries its send time
+//! (`sent_unix_ms`), so a page can measure event-to-screen latency.
+
+use std::collections::BTreeMap;
+use std::convert::Infallible;
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::Duration;
+
+use axum::http::{header, StatusCode};
+use axum::response::sse::{Event, KeepAlive, Sse};
+use axum::response::IntoResponse;
+use axum::routing::get;
+use axum::Router;
+use ergocell_cell::session::{SessionEvent, SessionMachine, SessionState};
+use ergocell_ergonomics::warnings::WarningKind;
+use ergocell_ergonomics::WarningEvent;
+use serde::Serialize;
+use tokio::sync::broadcast;
+
+use crate::review_server::{with_host_rules, HostRules};
+
+/// One region's active warning, as the page shows it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ShownWarning {
+    pub region: String,
+    pub side: Option<String>,
+    pub region_score: u8,
+    pub action_level: u8,
+    pub angle_deg: Option<f64>,
+    /// The warning's plain words with its advice.
+    pub message: String,
+}
+
+/// Everything the page shows, as of one update.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct Snapshot {
+    /// Updates sent so far (the page shows a gap as a reconnect).
+    pub seq: u64,
+    /// Wall-clock send time, Unix milliseconds.
+    pub sent_unix_ms: f64,
+    /// The session state's snake-case name.
+    pub state: String,
+    /// Why the robot is held, when it is.
+    pub held_reason: Option<String>,
+    /// The decided height class (`c1`…), once decided.
+    pub class: Option<String>,
+    /// The worse side's RULA action level of the latest assessed frame.
+    pub action_level: Option<u8>,
+    pub grand_score: Option<u8>,
+    /// Active warnings, one per region and side.
+    pub warnings: Vec<ShownWarning>,
+    /// The latest fused skeleton (world frame, metres), `null` per unseen landmark.
+    pub skeleton: Vec<Option<[f64; 3]>>,
+    /// The latest warning raised (for the page to flash), with its update's `seq`.
+    pub latest_raised: Option<(u64, String)>,
+}
+
+/// The active warnings by (region, side).
+type ActiveWarnings = BTreeMap<(String, Option<String>), ShownWarning>;
+
+/// The display's state and its subscribers.
+#[derive(Debug)]
+pub struct Display {
+    snapshot: Mutex<(Snapshot, ActiveWarnings)>,
+    tx: broadcast::Sender<Arc<str>>,
+}
+
+impl Display {
+    pub fn new() -> Arc<Self> {
+        let (tx, _) = broadcast::channel(64);
+        Arc::new(Self {
+            snapshot: Mutex::new((
+                Snapshot {
+                    state: SessionState::WaitingForOperator.name().to_owned(),
+                    ..Snapshot::default()
+                },
+                BTreeMap::new(),
+            )),
+            tx,
+        })
+    }
+
+    /// Folds one session step's events into the picture and pushes it to every page (when anything
+    /// the page shows changed).
+    pub fn update(&self, machine: &SessionMachine, events: &[SessionEvent]) {
+        if events.is_empty() {
+            return;
+        }
+        let mut guard = self.snapshot.lock().unwrap_or_else(PoisonError::into_inner);
+        let (snap, active) = &mut *guard;
+        for e in events {
+            match e {
+                SessionEvent::Warning(w) => {
+                    let key = (
+                        w.region.name().to_owned(),
+                        w.side.map(|s| s.name().to_owned()),
+                    );
+                    match w.kind {
+                        WarningKind::Cleared => {
+                            active.remove(&key);
+                        }
+                        WarningKind::Raised | WarningKind::Changed => {
+                            if w.kind == WarningKind::Raised {
+                                snap.latest_raised = Some((snap.seq + 1, w.message.clone()));
+                            }
+                            active.insert(key, shown(w));
+                        }
+                    }
+                }
+                SessionEvent::Frame {
+                    skeleton,
+                    assessment,
+                    ..
+                } => {
+                    snap.skeleton = skeleton
+                        .slots()
+                        .iter()
+                        .map(|s| s.map(|e| [e.position_m.x, e.position_m.y, e.position_m.z]))
+                        .collect();
+                    if let Some(h) = assessment.as_ref().and_then(|a| a.headline()) {
+                        snap.action_level = Some(h.scores.action_level);
+                        snap.grand_score = Some(h.scores.final_score);
+                    }
+                }
+                _ => {}
+            }
+        }
+        machine.state().name().clone_into(&mut snap.state);
+        snap.held_reason = (machine.state() == SessionState::Held)
+            .then(|| machine.hold_reason().map(str::to_owned))
+            .flatten();
+        snap.class.clone_from(&machine.summary().class);
+        snap.warnings = active.values().cloned().collect();
+        snap.seq += 1;
+        snap.sent_unix_ms = unix_ms();
+        if let Ok(json) = serde_json::to_string(&*snap) {
+            // no page open: nobody to send to, which is fine
+            let _ = self.tx.send(json.into());
+        }
+    }
+
+    /// The current picture as JSON (what a page gets first).
+    pub fn snapshot_json(&self) -> String {
+        let guard = self.snapshot.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut snap = guard.0.clone();
+        snap.sent_unix_ms = unix_ms();
+        serde_json::to_string(&snap).unwrap_or_else(|_| "{}".to_owned())
+    }
+}
+
+fn shown(w: &WarningEvent) -> ShownWarning {
+    ShownWarning {
+        region: w.region.name().to_owned(),
+        side: w.side.map(|s| s.name().to_owned()),
+        region_score: w.region_score,
+        action_level: w.action_level,
+        angle_deg: w.angle_deg,
+        message: w.message.clone(),
+    }
+}
+
+// the display's wall clock, for the latency figure only
+#[allow(clippy::disallowed_methods)]
+fn unix_ms() -> f64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0.0, |d| d.as_secs_f64() * 1e3)
+}
+
+const PAGE: &str = include_str!("display/index.html");
+const SCRIPT: &str = include_str!("display/display.js");
+
+/// The routes: the page, its script, the event stream, behind the Host and method rules.
+pub fn router(display: Arc<Display>, rules: Arc<HostRules>) -> Router {
+    let app = Router::new()
+        .route(
+            "/",
+            get(|| async { ([(header::CONTENT_TYPE, "text/html; charset=utf-8")], PAGE) }),
+        )
+        .route(
+            "/display.js",
+            get(|| async {
+                (
+                    [(header::CONTENT_TYPE, "text/javascript; charset=utf-8")],
+                    SCRIPT,
+                )
+            }),
+        )
+        .route("/events", get(move || std::future::ready(events(&display))))
+        .route("/favicon.ico", get(|| async { StatusCode::NO_CONTENT }))
+        .fallback(|| async { (StatusCode::NOT_FOUND, "not found").into_response() });
+    with_host_rules(app, rules)
+}
+
+fn events(display: &Display) -> axum::response::Response {
+    let first = display.snapshot_json();
+    let rx = display.tx.subscribe();
+    let stream = futures::stream::unfold((Some(first), rx), |(first, mut rx)| async move {
+        if let Some(json) = first {
+            return Some((Ok::<_, Infallible>(Event::default().data(json)), (None, rx)));
+        }
+        loop {
+            match rx.recv().await {
+                Ok(json) => return Some((Ok(Event::default().data(&*json)), (None, rx))),
+                // a page too slow for the updates skips to the newest: each one is the whole picture
+                Err(broadcast::error::RecvError::Lagged(_)) => {}
+                Err(broadcast::error::RecvError::Closed) => return None,
+            }
+        }
+    });
+    let mut response = Sse::new(stream)
+        .keep_alive(KeepAlive::new().interval(Duration::from_secs(5)))
+        .into_response();
+    response.headers_mut().insert(
+        header::CACHE_CONTROL,
+        header::HeaderValue::from_static("no-store"),
+    );
+    response
+}
+
+/// Binds the display's address (port 0: a free one); the caller prints the URL.
+pub fn bind(
+    addr: std::net::SocketAddr,
+) -> std::io::Result<(std::net::TcpListener, std::net::SocketAddr)> {
+    let listener = std::net::TcpListener::bind(addr)?;
+    listener.set_nonblocking(true)?;
+    let bound = listener.local_addr()?;
+    Ok((listener, bound))
+}
+
+/// Serves the display on `listener` (from [`bind`]) until `stop` resolves, with the review server's
+/// connection limits; on a loopback address only its own `Host` values are answered.
+pub async fn serve(
+    listener: std::net::TcpListener,
+    display: Arc<Display>,
+    stop: impl std::future::Future<Output = ()>,
+) -> std::io::Result<()> {
+    let bound = listener.local_addr()?;
+    let listener = tokio::net::TcpListener::from_std(listener)?;
+    let rules = Arc::new(HostRules {
+        allowed_hosts: bound
+            .ip()
+            .to_canonical()
+            .is_loopback()
+            .then(|| vec![bound.to_string(), format!("localhost:{}", bound.port())]),
+        server: "operator display",
+    });
+    let limits = crate::review_server::Limits {
+        header_timeout: Duration::from_secs(10),
+        stall_timeout: Duration::from_secs(30),
+        max_connections: crate::review_server::MAX_CONNECTIONS,
+        shutdown_grace: crate::review_server::SHUTDOWN_GRACE,
+    };
+    crate::review_server::serve(listener, router(display, rules), limits, stop).await;
+    Ok(())
+}

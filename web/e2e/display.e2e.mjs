@@ -1,0 +1,67 @@
+// The operator display (`ergocell demo --display`) in headless Chromium:
+//   node web/e2e/display.e2e.mjs <url> <screenshot.png> [restart]
+// Checks: the page connects and shows the session's state as it changes; a posture warning appears
+// with its advice and the action level's colour; after a reload the current state is back at once
+// (the server sends its snapshot on connect); with `restart`, when the server goes away the page says
+// so and, once a server is back on the same address, reconnects by itself. Prints the event-to-screen
+// latency (server send time → after the next paint, same machine clock) of every update it rendered.
+import { main, pass, fail, screenshot } from './lib.mjs';
+
+const [url, shot, restart] = process.argv.slice(2);
+if (!url || !shot) {
+  console.error('usage: node display.e2e.mjs <url> <screenshot.png> [restart]');
+  process.exit(2);
+}
+
+const ACTIVE = ['measuring_height', 'class_decided', 'trajectory_locked', 'working', 'held'];
+
+function quantile(sorted, q) {
+  return sorted[Math.min(sorted.length - 1, Math.max(0, Math.ceil(q * sorted.length) - 1))];
+}
+
+await main(async (b) => {
+  const { page } = b;
+  await page.goto(url, { waitUntil: 'load', timeout: 30000 });
+  await page.waitForFunction(() => document.getElementById('conn').textContent === 'live', null, { timeout: 15000 })
+    .catch(() => fail('the page never said "live": no event stream'));
+  pass('the page connects to the event stream');
+  await page.waitForFunction((active) => active.includes(document.getElementById('state').dataset.state), ACTIVE, { timeout: 60000 })
+    .catch(async () => fail(`no session state shown; #state says ${JSON.stringify(await page.textContent('#state'))}`));
+  pass(`the session state is shown: "${(await page.textContent('#state')).trim()}"`);
+  await page.waitForSelector('#warnings li', { timeout: 120000 })
+    .catch(() => fail('no posture warning appeared within 120 s'));
+  const w = await page.evaluate(() => {
+    const li = document.querySelector('#warnings li');
+    const level = document.getElementById('level');
+    return { text: li.textContent, level: li.dataset.level, colour: getComputedStyle(level).backgroundColor, al: level.dataset.level };
+  });
+  if (!/—/.test(w.text)) fail(`the warning has no advice: ${JSON.stringify(w.text)}`);
+  if (!(Number(w.al) >= 2)) fail(`a warning is shown but the action level is ${w.al}`);
+  pass(`a warning is on screen: "${w.text}" (action level ${w.al}, colour ${w.colour})`);
+  await screenshot(b, shot);
+  const before = await page.evaluate(() => window.__latencies.slice());
+
+  // A reload: the snapshot on connect puts the current picture back at once.
+  await page.reload({ waitUntil: 'load' });
+  const t0 = Date.now();
+  await page.waitForFunction((active) => active.includes(document.getElementById('state').dataset.state) || document.getElementById('state').dataset.state === 'session_ended', ACTIVE, { timeout: 5000 })
+    .catch(() => fail('after a reload the state did not come back within 5 s'));
+  pass(`after a reload the state is back in ${Date.now() - t0} ms: "${(await page.textContent('#state')).trim()}"`);
+  await page.waitForTimeout(3000);
+  const latencies = before.concat(await page.evaluate(() => window.__latencies.slice())).sort((a, b) => a - b);
+  if (latencies.length < 10) fail(`only ${latencies.length} updates rendered`);
+  console.log(`latency: ${latencies.length} updates, event to screen p50 ${quantile(latencies, 0.5).toFixed(1)} ms, ` +
+    `p99 ${quantile(latencies, 0.99).toFixed(1)} ms, max ${latencies[latencies.length - 1].toFixed(1)} ms`);
+
+  if (restart === 'restart') {
+    await page.waitForFunction(() => document.getElementById('conn').className === 'lost', null, { timeout: 180000 })
+      .catch(() => fail('the page never noticed the server going away'));
+    pass(`the server went away and the page says so: "${await page.textContent('#conn')}"`);
+    await page.waitForFunction(() => document.getElementById('conn').textContent === 'live' && window.__snapshots > 0, null, { timeout: 120000 })
+      .catch(() => fail('the page did not reconnect to the restarted server'));
+    await page.waitForFunction(() => /^update \d+$/.test(document.getElementById('seq').textContent), null, { timeout: 10000 });
+    pass(`the page reconnected by itself to the restarted server (${await page.textContent('#seq')})`);
+    // the refused reconnection attempts while the server was down are expected
+    b.problems.splice(0, b.problems.length, ...b.problems.filter((p) => !/\/events/.test(p)));
+  }
+});
