@@ -165,7 +165,10 @@ mod tests {
         let mut lone = frame(&[0, 1, 2, 3]);
         lone.views.truncate(4);
         assert_eq!(other_person_views(&rig, &lone, &operator, 0.5, true), 0);
-        assert_eq!(other_person_views(&rig, &lone, &operator, 0.5, false), 0b1111);
+        assert_eq!(
+            other_person_views(&rig, &lone, &operator, 0.5, false),
+            0b1111
+        );
         // a view without a torso cannot be judged and is kept
         let mut f = frame(&[0, 1]);
         f.views[0] = View2::empty(0, 0);
