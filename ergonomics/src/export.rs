@@ -170,10 +170,16 @@ fn warning_cell(w: &WarningEvent) -> String {
     }
 }
 
+/// One summary row: quantity, side, region, score, value, unit.
+type RowFn<'a> =
+    dyn FnMut(&str, &str, &str, String, String, &str) -> Result<(), ErgonomicsError> + 'a;
+
 /// The session summary CSV, long format (one quantity a row, for a pivot table):
 /// `quantity,side,region,score,value,unit`. Rows: the scored time and frames, the share of scored
 /// time per action level (worse side), per body-region score and per grand score, the unscored
-/// share, and the warnings raised per region.
+/// share, the exposure over time per action level and region score (`episodes_at_least`,
+/// `longest_stretch_at_least`, `time_at_least`: the level in the score column), and the warnings
+/// raised per region.
 pub fn write_summary<W: Write>(
     out: W,
     summary: &SessionSummary,
@@ -226,6 +232,47 @@ pub fn write_summary<W: Write>(
             "percent of scored time",
         )?;
     }
+    // exposure over time: per level, how often it started, its longest stretch, its total
+    let exposure_rows = |side: &str,
+                         region: &str,
+                         exposure: &[crate::summary::Exposure],
+                         row: &mut RowFn<'_>|
+     -> Result<(), ErgonomicsError> {
+        for e in exposure {
+            let level = e.at_least.to_string();
+            row(
+                "episodes_at_least",
+                side,
+                region,
+                level.clone(),
+                e.episodes.to_string(),
+                "episodes",
+            )?;
+            row(
+                "longest_stretch_at_least",
+                side,
+                region,
+                level.clone(),
+                format!("{:.3}", e.longest_secs),
+                "s",
+            )?;
+            row(
+                "time_at_least",
+                side,
+                region,
+                level,
+                format!("{:.3}", e.total_secs),
+                "s",
+            )?;
+        }
+        Ok(())
+    };
+    exposure_rows(
+        "worse",
+        "action_level",
+        &summary.action_level_exposure,
+        &mut row,
+    )?;
     for g in &summary.grand_score {
         for (score, share) in &g.share_by_score {
             row(
@@ -250,6 +297,7 @@ pub fn write_summary<W: Write>(
                 "percent of the region's scored time",
             )?;
         }
+        exposure_rows(side, r.region.name(), &r.exposure, &mut row)?;
     }
     for region in BodyRegion::ALL {
         let raised = warnings

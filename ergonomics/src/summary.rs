@@ -46,6 +46,21 @@ impl From<&SideAssessment> for ScoredSide {
     }
 }
 
+/// How a score at or above a level was held over time: how often it started, its longest unbroken
+/// stretch and its total time. A stretch is broken by a frame below the level, a frame in which the
+/// score is missing, or a gap in the recording (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Exposure {
+    /// The level: a score (or action level) at least this counts.
+    pub at_least: u8,
+    /// Separate stretches at or above the level.
+    pub episodes: usize,
+    /// The longest of them, seconds.
+    pub longest_secs: f64,
+    /// All of them together, seconds.
+    pub total_secs: f64,
+}
+
 /// Time shares of one region's scores.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RegionShare {
@@ -56,6 +71,8 @@ pub struct RegionShare {
     pub share_by_score: Vec<(u8, f64)>,
     /// Frames in which the region was scored.
     pub frames: usize,
+    /// For each score above the region's lowest (2 up to the highest that occurred): its episodes.
+    pub exposure: Vec<Exposure>,
 }
 
 impl RegionShare {
@@ -104,6 +121,8 @@ pub struct SessionSummary {
     pub duration_secs: f64,
     /// Share of scored time at action level 1..=4.
     pub action_level_share: [f64; 4],
+    /// The headline side's action level at least 2, 3 and 4: episodes, longest stretch, total time.
+    pub action_level_exposure: Vec<Exposure>,
     /// Share of the whole time with no score.
     pub unscored_share: f64,
     /// The regions that were scored at least once, in [`BodyRegion`] order, left before right.
@@ -157,11 +176,62 @@ pub struct SummaryBuilder {
     entries: Vec<Entry>,
 }
 
-/// Time and frame count per score.
+/// Time and frame count per score, and the stretches at or above each score.
 #[derive(Debug, Clone, Default)]
 struct Tally {
     time_by_score: BTreeMap<u8, f64>,
     frames: usize,
+    runs: Runs,
+}
+
+/// Stretches at or above levels 2..=[`Runs::MAX_LEVEL`], frame by frame (time in nanoseconds).
+#[derive(Debug, Clone, Default)]
+struct Runs {
+    /// Per level: (episodes, longest, total, the current stretch's length if one is under way).
+    levels: BTreeMap<u8, (usize, f64, f64, Option<f64>)>,
+    highest: u8,
+}
+
+impl Runs {
+    /// RULA's largest region score (upper arm 6) and grand score (7).
+    const MAX_LEVEL: u8 = 7;
+
+    /// One frame of `dt` at `value`; `None` (not scored) or `broken` (a gap before it) ends every
+    /// stretch under way.
+    fn add(&mut self, value: Option<u8>, dt: f64, broken: bool) {
+        self.highest = self.highest.max(value.unwrap_or(0));
+        for level in 2..=Self::MAX_LEVEL {
+            let e = self.levels.entry(level).or_insert((0, 0.0, 0.0, None));
+            if broken {
+                e.3 = None;
+            }
+            if value.is_some_and(|v| v >= level) {
+                let run = e.3.get_or_insert_with(|| {
+                    e.0 += 1;
+                    0.0
+                });
+                *run += dt;
+                e.1 = e.1.max(*run);
+                e.2 += dt;
+            } else {
+                e.3 = None;
+            }
+        }
+    }
+
+    /// The levels 2..=`up_to` (seconds).
+    fn exposure(&self, up_to: u8) -> Vec<Exposure> {
+        self.levels
+            .iter()
+            .filter(|(&l, _)| l <= up_to)
+            .map(|(&at_least, &(episodes, longest, total, _))| Exposure {
+                at_least,
+                episodes,
+                longest_secs: longest * 1e-9,
+                total_secs: total * 1e-9,
+            })
+            .collect()
+    }
 }
 
 impl Tally {
@@ -176,6 +246,29 @@ impl Tally {
             .iter()
             .map(|(&s, &t)| (s, share(t, sum)))
             .collect()
+    }
+}
+
+/// One frame of one region: its score (`None`: not scored, which ends its stretches) into the
+/// region's tally. A region never scored gets no tally entry with frames.
+fn add_region(
+    regions: &mut BTreeMap<(BodyRegion, Option<Side>), Tally>,
+    key: (BodyRegion, Option<Side>),
+    score: Option<u8>,
+    dt: f64,
+    broken: bool,
+) {
+    match score {
+        Some(s) => {
+            let t = regions.entry(key).or_default();
+            t.add(s, dt);
+            t.runs.add(Some(s), dt, broken);
+        }
+        None => {
+            if let Some(t) = regions.get_mut(&key) {
+                t.runs.add(None, dt, broken);
+            }
+        }
     }
 }
 
@@ -253,9 +346,15 @@ impl SummaryBuilder {
         let mut grand: BTreeMap<Side, Tally> = BTreeMap::new();
         let mut scored_frames = 0;
         let mut uncertain_frames = 0;
+        let mut level_runs = Runs::default();
+        let mut previous: Option<i64> = None;
         for (e, &dt) in entries.iter().zip(&times) {
+            // a gap in the recording before this frame ends every stretch
+            let broken = previous.is_some_and(|p| e.stamp_nanos - p > self.max_frame_nanos);
+            previous = Some(e.stamp_nanos);
             let dt = dt as f64;
             let head = e.headline();
+            level_runs.add(head.map(|h| h.scores.action_level.clamp(1, 4)), dt, broken);
             match head {
                 Some(h) => {
                     scored_frames += 1;
@@ -268,18 +367,12 @@ impl SummaryBuilder {
             for region in BodyRegion::ALL {
                 if region.is_sided() {
                     for side in Side::BOTH {
-                        if let Some(s) = e.side(side) {
-                            regions
-                                .entry((region, Some(side)))
-                                .or_default()
-                                .add(region.score(&s.scores), dt);
-                        }
+                        let score = e.side(side).map(|s| region.score(&s.scores));
+                        add_region(&mut regions, (region, Some(side)), score, dt, broken);
                     }
-                } else if let Some(h) = head {
-                    regions
-                        .entry((region, None))
-                        .or_default()
-                        .add(region.score(&h.scores), dt);
+                } else {
+                    let score = head.map(|h| region.score(&h.scores));
+                    add_region(&mut regions, (region, None), score, dt, broken);
                 }
             }
             for side in Side::BOTH {
@@ -294,14 +387,17 @@ impl SummaryBuilder {
             uncertain_frames,
             duration_secs: total * 1e-9,
             action_level_share: level.map(|x| share(x, scored)),
+            action_level_exposure: level_runs.exposure(4),
             unscored_share: share(unscored, total),
             regions: regions
                 .into_iter()
+                .filter(|(_, t)| t.frames > 0)
                 .map(|((region, side), t)| RegionShare {
                     region,
                     side,
                     share_by_score: t.shares(),
                     frames: t.frames,
+                    exposure: t.runs.exposure(t.runs.highest),
                 })
                 .collect(),
             grand_score: grand
@@ -424,5 +520,45 @@ mod tests {
                 .frames,
             2
         );
+    }
+
+    #[test]
+    fn episodes_longest_stretch_and_total_at_or_above_a_level() {
+        // 10 Hz: upper arm 3 for 0.3 s, 1 for 0.2 s, 3 for 0.5 s, then a 5 s gap, 3 for 0.2 s, one
+        // frame unscored, 3 for 0.1 s. Four stretches at >= 3 (the gap and the unscored frame break
+        // them), the longest 0.5 s, 1.1 s in all; at >= 2 the same; nothing at >= 4.
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        let low = side(0.0, 5.0);
+        let high = side(60.0, 5.0);
+        let mut t = 0;
+        let push = |n: usize, s: Option<ScoredSide>, b: &mut SummaryBuilder, t: &mut i64| {
+            for _ in 0..n {
+                b.add_scores(*t * MS, s, None);
+                *t += 100;
+            }
+        };
+        push(3, Some(high), &mut b, &mut t);
+        push(2, Some(low), &mut b, &mut t);
+        push(5, Some(high), &mut b, &mut t);
+        t += 5_000;
+        push(2, Some(high), &mut b, &mut t);
+        push(1, None, &mut b, &mut t);
+        push(1, Some(high), &mut b, &mut t);
+        let s = b.finish();
+        let ua = s.region(BodyRegion::UpperArm, Some(Side::Left)).unwrap();
+        let at = |l: u8| *ua.exposure.iter().find(|e| e.at_least == l).unwrap();
+        assert_eq!(ua.exposure.len(), 2, "levels 2 and 3: {:?}", ua.exposure);
+        for l in [2, 3] {
+            let e = at(l);
+            assert_eq!(e.episodes, 4, "{e:?}");
+            assert!((e.longest_secs - 0.5).abs() < 1e-9, "{e:?}");
+            assert!((e.total_secs - 1.1).abs() < 1e-9, "{e:?}");
+        }
+        // the action level: upper arm 3 makes level 2 here (grand score 3 or 4)
+        let al2 = s.action_level_exposure[0];
+        assert_eq!(al2.at_least, 2);
+        assert_eq!(s.action_level_exposure.len(), 3);
+        assert!(al2.total_secs <= 1.1 + 1e-9 && al2.episodes <= 4, "{al2:?}");
+        assert_eq!(s.action_level_exposure[2].episodes, 0);
     }
 }

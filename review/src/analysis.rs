@@ -19,7 +19,7 @@ use ergocell_bridge::msg::{
 use ergocell_ergonomics::assess::BodyRegion;
 use ergocell_ergonomics::rula::{RulaScores, GRAND_SCORE_MAX};
 use ergocell_ergonomics::summary::{
-    GrandScoreShare, RegionShare, ScoredSide, SessionSummary, SummaryBuilder,
+    Exposure, GrandScoreShare, RegionShare, ScoredSide, SessionSummary, SummaryBuilder,
     DEFAULT_MAX_FRAME_NANOS,
 };
 use ergocell_skeleton::{Landmark, Side, DRAWN_BONES, LANDMARK_COUNT};
@@ -219,6 +219,9 @@ pub struct RegionStats {
     pub time_share: Vec<f64>,
     /// Frames in which it was scored.
     pub samples: usize,
+    /// Exposure over time: for each score from 2 to the highest that occurred, the stretches at or
+    /// above it (episodes, longest, total; [`ergocell_ergonomics::summary::Exposure`]).
+    pub exposure: Vec<Exposure>,
 }
 
 /// The distribution of one joint angle, degrees.
@@ -496,6 +499,7 @@ fn region_rows(summary: &SessionSummary) -> Vec<RegionStats> {
                 share.map_or(&[][..], |r| &r.share_by_score),
                 share.map_or(0, |r| r.frames),
                 share.and_then(RegionShare::mean_score),
+                share.map_or_else(Vec::new, |r| r.exposure.clone()),
             ));
         }
     }
@@ -508,6 +512,7 @@ fn region_rows(summary: &SessionSummary) -> Vec<RegionStats> {
             share.map_or(&[][..], |g| &g.share_by_score),
             share.map_or(0, |g| g.frames),
             share.and_then(GrandScoreShare::mean_score),
+            Vec::new(),
         ));
     }
     rows
@@ -522,6 +527,7 @@ fn region_stats(
     share_by_score: &[(u8, f64)],
     samples: usize,
     mean: Option<f64>,
+    exposure: Vec<Exposure>,
 ) -> RegionStats {
     let mut time_share = vec![0.0; usize::from(max)];
     for &(score, share) in share_by_score {
@@ -534,6 +540,7 @@ fn region_stats(
         mean,
         time_share,
         samples,
+        exposure,
     }
 }
 

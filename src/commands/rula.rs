@@ -365,6 +365,33 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
             .collect();
         println!("  {name:<16} {}", shares.join("  "));
     }
+    println!(
+        "exposure over time (stretches at or above a level; a gap or an unscored frame ends one):"
+    );
+    let line = |name: &str, e: &[ergocell_ergonomics::summary::Exposure]| {
+        let parts: Vec<String> = e
+            .iter()
+            .filter(|x| x.episodes > 0)
+            .map(|x| {
+                format!(
+                    ">={}: {} episode(s), longest {:.1} s, {:.1} s in all",
+                    x.at_least, x.episodes, x.longest_secs, x.total_secs
+                )
+            })
+            .collect();
+        if !parts.is_empty() {
+            println!("  {name:<16} {}", parts.join("; "));
+        }
+    };
+    line("action level", &s.action_level_exposure);
+    for r in &s.regions {
+        let name = match r.side {
+            Some(Side::Left) => format!("left {}", r.region.name()),
+            Some(Side::Right) => format!("right {}", r.region.name()),
+            None => r.region.name().to_owned(),
+        };
+        line(&name, &r.exposure);
+    }
     let raised: Vec<String> = BodyRegion::ALL
         .iter()
         .map(|region| {

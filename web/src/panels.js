@@ -174,6 +174,16 @@ function meanChip(r) {
   return `<span class="chip" style="background:${scoreCss(Math.min(max, Math.max(1, r.mean)), max)}"></span>${fmt(r.mean, 2)}`;
 }
 
+// Exposure over time: for each score level reached (2 up), how many separate stretches and the
+// longest one ("≥3 4× 0.6 s"); a gap in the recording or an unscored frame ends a stretch.
+function exposureCell(r) {
+  const e = (r && Array.isArray(r.exposure) ? r.exposure : []).filter((x) => x.episodes > 0);
+  if (!e.length) return '<span class="muted">–</span>';
+  return e
+    .map((x) => `<span class="expo" title="score ≥ ${x.at_least}: ${x.episodes} episode(s), longest ${fmt(x.longest_secs, 1)} s, ${fmt(x.total_secs, 1)} s in all">≥${x.at_least} ${x.episodes}× ${fmt(x.longest_secs, 1)} s</span>`)
+    .join(' · ');
+}
+
 export function renderRegions(el, sessions) {
   const keys = [];
   const maps = sessions.map((s) => {
@@ -192,14 +202,14 @@ export function renderRegions(el, sessions) {
   const cmp = sessions.length > 1;
   const head = cmp
     ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num">max</th><th>Share of scored time per score (A above B)</th></tr>`
-    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Share of scored time per score</th></tr>`;
+    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Share of scored time per score</th><th title="per score level reached: separate stretches at or above it × the longest stretch">Exposure: episodes × longest</th></tr>`;
   const body = keys
     .map((k) => {
       const rs = maps.map((m) => m.get(k));
       const r0 = rs.find(Boolean);
       const name = `${r0.side ? `${titleCase(r0.side)} ` : ''}${r0.name}`;
       const max = r0.max_score ?? '–';
-      if (!cmp) return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(rs[0])}</td><td class="num">${esc(max)}</td><td>${shareBar(rs[0])}</td></tr>`;
+      if (!cmp) return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(rs[0])}</td><td class="num">${esc(max)}</td><td>${shareBar(rs[0])}</td><td class="small">${exposureCell(rs[0])}</td></tr>`;
       const [a, b] = rs;
       let delta = '<span class="muted">–</span>';
       if (a && b && a.mean != null && b.mean != null) {
