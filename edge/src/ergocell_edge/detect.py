@@ -11,7 +11,7 @@ from typing import Callable, List, Optional, Sequence
 from . import EdgeError
 from .openpose import is_ours, write_keypoints, write_sidecar
 from .stop import StopFlag
-from .video import SourceSpec, capture_fps, capture_frame_count, check_file, open_capture, split_side_by_side
+from .video import SourceSpec, check_file, open_capture, probe_file, split_side_by_side
 
 
 @dataclass
@@ -127,18 +127,10 @@ def check_outputs(jobs: Sequence[VideoJob], force: bool) -> None:
 
 def probe(job: VideoJob) -> None:
     """Opens the video and decodes its first frame (so that undecodable inputs fail before any output)."""
-    cap = open_capture(SourceSpec("file", str(job.video)))
-    if cap is None:
-        raise EdgeError(f"{job.video}: cannot open it as a video (OpenCV/FFmpeg)")
-    try:
-        ok, frame = cap.read()
-        if not ok or frame is None:
-            raise EdgeError(f"{job.video}: cannot decode a frame from it")
-        job.height, job.width = frame.shape[:2]
-        job.fps = capture_fps(cap)
-        job.frame_count = capture_frame_count(cap)
-    finally:
-        cap.release()
+    info = probe_file(job.video)
+    job.width, job.height = info.width, info.height
+    job.fps = info.fps
+    job.frame_count = info.frame_count
     if job.outputs[0].half is not None and job.width < 2:
         raise EdgeError(f"{job.video}: {job.width} px wide, cannot split side by side")
 

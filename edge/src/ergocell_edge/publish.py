@@ -27,7 +27,7 @@ from .config import check_camera, find_default, rig_camera_ids, ros_settings, DE
 from .message import file_stamp_ns, landmark_fields, to_message
 from .stop import StopFlag
 from .video import (SourceSpec, capture_fps, check_file, gstreamer_available, open_capture, parse_source,
-                    split_side_by_side)
+                    probe_file, split_side_by_side)
 
 log = logging.getLogger("ergocell_edge")
 
@@ -145,16 +145,7 @@ def plan_publish(o: PublishOptions) -> Plan:
     fps = o.fps
     if spec.kind == "file":
         check_file(spec.target)
-        cap = open_capture(spec)
-        if cap is None:
-            raise EdgeError(f"{spec.target}: cannot open it as a video (OpenCV/FFmpeg)")
-        try:
-            ok, frame = cap.read()
-            if not ok or frame is None:
-                raise EdgeError(f"{spec.target}: cannot decode a frame from it")
-            fps = fps or capture_fps(cap)
-        finally:
-            cap.release()
+        fps = fps or probe_file(spec.target).fps
         if fps is None and o.realtime:
             raise EdgeError(f"{spec.target}: the file does not say its frame rate: give --fps or --no-realtime")
     elif spec.kind == "gstreamer" and not gstreamer_available():

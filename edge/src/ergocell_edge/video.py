@@ -93,6 +93,32 @@ def capture_frame_count(cap) -> Optional[int]:
     return int(n)
 
 
+@dataclass(frozen=True)
+class VideoInfo:
+    """What opening a video file and decoding its first frame tells."""
+
+    width: int
+    height: int
+    fps: Optional[float]
+    frame_count: Optional[int]
+
+
+def probe_file(path: Union[str, Path]) -> VideoInfo:
+    """Opens a video file and decodes its first frame, so that an input that cannot be read fails
+    before any output is written or anything is published."""
+    cap = open_capture(SourceSpec("file", str(path)))
+    if cap is None:
+        raise EdgeError(f"{path}: cannot open it as a video (OpenCV/FFmpeg)")
+    try:
+        ok, frame = cap.read()
+        if not ok or frame is None:
+            raise EdgeError(f"{path}: cannot decode a frame from it")
+        height, width = frame.shape[:2]
+        return VideoInfo(int(width), int(height), capture_fps(cap), capture_frame_count(cap))
+    finally:
+        cap.release()
+
+
 def gstreamer_available() -> bool:
     import cv2
     info = cv2.getBuildInformation()
