@@ -18,26 +18,14 @@ use std::process::{Child, Command, Stdio};
 use std::sync::mpsc;
 use std::time::Duration;
 
+mod common;
+
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
 fn tmp(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name)
-}
-
-fn missing_browser() -> Option<String> {
-    let chromium = std::env::var("CHROMIUM").unwrap_or_else(|_| "/usr/bin/chromium".to_owned());
-    if !Path::new(&chromium).exists() {
-        return Some(format!("no Chromium at {chromium}"));
-    }
-    if !root().join("web/node_modules/playwright-core").exists() {
-        return Some("web/node_modules/playwright-core missing (npm ci --prefix web)".to_owned());
-    }
-    if Command::new("node").arg("--version").output().is_err() {
-        return Some("node is not installed".to_owned());
-    }
-    None
 }
 
 /// A demo serving the display on `addr`; returns it and the URL it printed.
@@ -80,12 +68,7 @@ fn demo(addr: &str, seed: u64, out: &Path) -> (Child, String) {
 
 #[test]
 fn the_operator_display_shows_the_session_live_and_survives_reload_and_restart() {
-    if let Some(why) = missing_browser() {
-        assert!(
-            std::env::var_os("ERGOCELL_REQUIRE_BROWSER").is_none(),
-            "ERGOCELL_REQUIRE_BROWSER is set but the browser test cannot run: {why}"
-        );
-        eprintln!("SKIPPED: the display's browser test needs {why}");
+    if common::skip_browser_test() {
         return;
     }
     let (mut first, url) = demo("127.0.0.1:0", 11, &tmp("display-1.mcap"));

@@ -26,35 +26,6 @@ fn tmp(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name)
 }
 
-/// `Some(why)` when the browser toolchain is missing.
-fn missing_browser() -> Option<String> {
-    let chromium = std::env::var("CHROMIUM").unwrap_or_else(|_| "/usr/bin/chromium".to_owned());
-    if !Path::new(&chromium).exists() {
-        return Some(format!(
-            "no Chromium at {chromium} (apt-get install chromium)"
-        ));
-    }
-    if !root().join("web/node_modules/playwright-core").exists() {
-        return Some("web/node_modules/playwright-core missing (npm ci --prefix web)".to_owned());
-    }
-    if Command::new("node").arg("--version").output().is_err() {
-        return Some("node is not installed".to_owned());
-    }
-    None
-}
-
-fn skip_or_fail() -> bool {
-    if let Some(why) = missing_browser() {
-        assert!(
-            std::env::var_os("ERGOCELL_REQUIRE_BROWSER").is_none(),
-            "ERGOCELL_REQUIRE_BROWSER is set but the browser test cannot run: {why}"
-        );
-        eprintln!("SKIPPED: the browser test needs {why}");
-        return true;
-    }
-    false
-}
-
 fn demo(out: &Path) {
     let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(root())
@@ -102,7 +73,7 @@ fn node(script: &str, args: &[&str]) {
 
 #[test]
 fn review_page_plays_pauses_and_jumps_in_headless_chromium() {
-    if skip_or_fail() {
+    if common::skip_browser_test() {
         return;
     }
     let rec = tmp("browser-demo.mcap");
@@ -127,7 +98,7 @@ fn review_page_plays_pauses_and_jumps_in_headless_chromium() {
 
 #[test]
 fn report_opens_offline_from_file_in_headless_chromium() {
-    if skip_or_fail() {
+    if common::skip_browser_test() {
         return;
     }
     let rec = tmp("browser-report.mcap");
@@ -157,7 +128,7 @@ fn report_opens_offline_from_file_in_headless_chromium() {
 fn the_page_handles_edge_case_data_and_every_control() {
     // Zero frames, one frame, all-null strain, no robot, compare with problems, no sessions; step
     // buttons, keys, scrubber, speed, the warning tooltip, B's timeline (web/e2e/variants.e2e.mjs).
-    if skip_or_fail() {
+    if common::skip_browser_test() {
         return;
     }
     node("web/e2e/variants.e2e.mjs", &[]);

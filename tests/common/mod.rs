@@ -115,3 +115,36 @@ impl Drop for Scratch {
         let _ = std::fs::remove_dir_all(&self.0);
     }
 }
+
+/// `Some(why)` when the browser toolchain is missing: Debian's Chromium (or `$CHROMIUM`),
+/// playwright-core from `npm ci --prefix web`, node.
+pub fn missing_browser() -> Option<String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let chromium = std::env::var("CHROMIUM").unwrap_or_else(|_| "/usr/bin/chromium".to_owned());
+    if !Path::new(&chromium).exists() {
+        return Some(format!(
+            "no Chromium at {chromium} (apt-get install chromium)"
+        ));
+    }
+    if !root.join("web/node_modules/playwright-core").exists() {
+        return Some("web/node_modules/playwright-core missing (npm ci --prefix web)".to_owned());
+    }
+    if Command::new("node").arg("--version").output().is_err() {
+        return Some("node is not installed".to_owned());
+    }
+    None
+}
+
+/// True when a browser test must be skipped (it says why); fails instead when
+/// `ERGOCELL_REQUIRE_BROWSER` is set (CI: it must run).
+pub fn skip_browser_test() -> bool {
+    if let Some(why) = missing_browser() {
+        assert!(
+            std::env::var_os("ERGOCELL_REQUIRE_BROWSER").is_none(),
+            "ERGOCELL_REQUIRE_BROWSER is set but the browser test cannot run: {why}"
+        );
+        eprintln!("SKIPPED: the browser test needs {why}");
+        return true;
+    }
+    false
+}
