@@ -152,9 +152,6 @@ pub struct Reconstructed {
     pub tracked: Option<Skeleton3>,
     /// A camera this frame found out of calibration (left out of fusion from the next frame on).
     pub out_of_calibration: Option<OutOfCalibration>,
-    /// Bit `k`: camera `k`'s view showed someone other than the operator and was left out
-    /// ([`OperatorZone`]).
-    pub other_person_views: u64,
 }
 
 /// The first stage: views → time-aligned frame → fused skeleton → tracked gate → causal filter.
@@ -279,7 +276,6 @@ impl Reconstruction {
             fused,
             tracked,
             out_of_calibration,
-            other_person_views,
         })
     }
 }

@@ -243,6 +243,8 @@ impl StreamingStats {
 pub struct PerCameraReprojection {
     histograms: Vec<Vec<u32>>,
     counts: Vec<u64>,
+    /// Per camera: views with anything observed, and of those, views used mirrored.
+    views: Vec<(usize, usize)>,
 }
 
 impl PerCameraReprojection {
@@ -264,6 +266,14 @@ impl PerCameraReprojection {
                 continue;
             };
             let mirrored = swapped & (1 << view.camera) != 0;
+            if view.observed_count() > 0 {
+                if self.views.len() <= view.camera {
+                    self.views.resize(view.camera + 1, (0, 0));
+                }
+                let v = &mut self.views[view.camera];
+                v.0 += 1;
+                v.1 += usize::from(mirrored);
+            }
             for lm in ergocell_skeleton::Landmark::ALL {
                 let as_used = if mirrored { lm.mirrored() } else { lm };
                 let (Some(k), Some(p)) = (view.get(lm), fused.position(as_used)) else {
@@ -289,6 +299,11 @@ impl PerCameraReprojection {
         }
         h[((error_px / Self::BIN_PX) as usize).min(Self::BINS)] += 1;
         self.counts[camera] += 1;
+    }
+
+    /// One camera's views with anything observed, and how many of them were used mirrored.
+    pub fn views(&self, camera: usize) -> (usize, usize) {
+        self.views.get(camera).copied().unwrap_or((0, 0))
     }
 
     /// The median error of one camera (to ±0.005 px) and its sample count; `None` for a camera

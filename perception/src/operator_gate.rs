@@ -31,31 +31,36 @@ pub const TORSO: [Landmark; 4] = [
 
 /// The torso point of a fused skeleton (the mean of the torso landmarks it has), world frame.
 pub fn torso_of(skeleton: &Skeleton3) -> Option<Point3<f64>> {
-    let points: Vec<Point3<f64>> = TORSO.iter().filter_map(|&l| skeleton.position(l)).collect();
-    (!points.is_empty()).then(|| {
-        Point3::from(points.iter().map(|p| p.coords).sum::<Vector3<f64>>() / points.len() as f64)
-    })
+    mean_of(
+        TORSO
+            .iter()
+            .filter_map(|&l| skeleton.position(l).map(|p| p.coords)),
+    )
+    .map(Point3::from)
+}
+
+/// The mean of some vectors, without collecting them (this runs for every view of every frame);
+/// `None` for none.
+fn mean_of<const D: usize>(
+    items: impl Iterator<Item = nalgebra::SVector<f64, D>>,
+) -> Option<nalgebra::SVector<f64, D>> {
+    let (sum, n) = items.fold(
+        (nalgebra::SVector::<f64, D>::zeros(), 0usize),
+        |(s, n), v| (s + v, n + 1),
+    );
+    (n > 0).then(|| sum / n as f64)
 }
 
 /// The distance from `reference` (world) to the ray through a view's torso, metres; `None` when the
 /// view has no torso keypoint or its torso pixel cannot be undistorted, or the camera is unknown.
 pub fn torso_ray_distance_m(rig: &CameraRig, view: &View2, reference: &Point3<f64>) -> Option<f64> {
     let camera = rig.camera(view.camera)?;
-    let pixels: Vec<Point2<f64>> = TORSO
-        .iter()
-        .filter_map(|&l| view.get(l).map(crate::detections::Keypoint2::pixel))
-        .collect();
-    if pixels.is_empty() {
-        return None;
-    }
-    let mean = Point2::from(
-        pixels
+    let mean = mean_of(
+        TORSO
             .iter()
-            .map(|p| p.coords)
-            .sum::<nalgebra::Vector2<f64>>()
-            / pixels.len() as f64,
-    );
-    let n = camera.pixel_to_normalized(&mean).ok()?;
+            .filter_map(|&l| view.get(l).map(|k| k.pixel().coords)),
+    )?;
+    let n = camera.pixel_to_normalized(&Point2::from(mean)).ok()?;
     let rotation = camera.T_camera_world.rotation.inverse();
     let direction = (rotation * Vector3::new(n.x, n.y, 1.0)).normalize();
     let to_reference = reference - camera.position_world();

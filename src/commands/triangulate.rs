@@ -151,9 +151,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         e
     };
     let (mut rejected, mut undistortion_failures) = (0, 0);
-    // views per camera, and of those, used with left and right swapped back
-    let mut views_seen = vec![0usize; rig.len()];
-    let mut views_swapped = vec![0usize; rig.len()];
     let progress = progress_bar(frame_count);
     for mut frame in source.by_ref() {
         for view in &mut frame.views {
@@ -175,12 +172,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         let r = reconstruction.process_frame(&frame)?;
         rejected += r.fused.rejected_views;
-        for v in frame.views.iter().filter(|v| v.observed_count() > 0) {
-            views_seen[v.camera] += 1;
-            if r.fused.swapped_views & (1 << v.camera) != 0 {
-                views_swapped[v.camera] += 1;
-            }
-        }
         undistortion_failures += r.fused.undistortion_failures;
         let swapped = r.fused.swapped_views;
         let skeleton = r.tracked.unwrap_or(r.fused.skeleton);
@@ -242,20 +233,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     if let Some(m) = stats.median_reprojection_px() {
         println!("median reprojection err:  {m:.2} px");
     }
+    let (mut seen, mut swapped) = (0, 0);
     for (i, c) in rig.cameras().iter().enumerate() {
+        let (views, mirrored) = per_camera.views(i);
+        seen += views;
+        swapped += mirrored;
         if let Some((m, n)) = per_camera.median_px(i) {
             println!(
-                "  camera {:<12} median reprojection {m:.2} px over {n} keypoints; {} of {} views left/right-swapped, corrected",
+                "  camera {:<12} median reprojection {m:.2} px over {n} keypoints; {mirrored} of {views} views left/right-swapped, corrected",
                 c.id.as_str(),
-                views_swapped[i],
-                views_seen[i]
             );
         }
     }
-    let (swapped, seen) = (
-        views_swapped.iter().sum::<usize>(),
-        views_seen.iter().sum::<usize>(),
-    );
     println!(
         "left/right swaps:         {swapped} of {seen} views ({:.1}%) had the person's left and right swapped and were used mirrored",
         100.0 * swapped as f64 / seen.max(1) as f64
