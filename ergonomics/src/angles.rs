@@ -47,6 +47,8 @@
 //!   `right − left` over the face's mirror pairs (ears, outer/centre/inner eyes, mouth corners), all
 //!   parallel to the ear line on a rigid head ([`head_lateral_axis`]). If an ear is missing, from `f`
 //!   to the nose direction (nose − shoulder midpoint) projected the same way.
+//! - **Knee flexion** (for REBA): angle between the thigh `knee − hip` and the shank `ankle − knee`;
+//!   0 = straight.
 //! - **Legs**: each foot's lowest point (ankle, heel, foot index) above the floor along `u`; the floor
 //!   is the configured height along `u`, or the lowest foot landmark of the frame when unknown. Weight
 //!   balance: horizontal distance from the hip midpoint to the midpoint of the ankles, divided by half
@@ -112,6 +114,8 @@ pub struct SideAngles {
     pub wrist_flexion_rad: Option<f64>,
     pub wrist_deviation_rad: Option<f64>,
     pub wrist_lateral_offset_m: Option<f64>,
+    /// Knee flexion (REBA's legs), radians; 0 = straight.
+    pub knee_flexion_rad: Option<f64>,
 }
 
 /// What the feet say about the legs.
@@ -297,6 +301,13 @@ fn side_angles(s: &Skeleton3, frame: Option<&TrunkFrame>, side: Side) -> SideAng
     }
     if let (Some(sh), Some(el), Some(wr)) = (shoulder, elbow, wrist) {
         out.elbow_flexion_rad = angle_between(el - sh, wr - el);
+    }
+    let (hip, knee, ankle) = match side {
+        Side::Left => (Landmark::LeftHip, Landmark::LeftKnee, Landmark::LeftAnkle),
+        Side::Right => (Landmark::RightHip, Landmark::RightKnee, Landmark::RightAnkle),
+    };
+    if let (Some(h), Some(k), Some(a)) = (s.position(hip), s.position(knee), s.position(ankle)) {
+        out.knee_flexion_rad = angle_between(k - h, a - k);
     }
     if let Some(wr) = wrist {
         out.wrist_lateral_offset_m = Some((wr - fr.shoulder_mid).dot(&o));

@@ -37,6 +37,7 @@ use crate::angles::{
     arm_landmarks, body_angles, BodyAngles, LegsObservation, SideAngles, UpVector,
 };
 use crate::height::median;
+use crate::reba::{Coupling, RebaInput, RebaScores, MAX_LOAD_KG};
 use crate::rula::{
     neck_band, score_worksheet, trunk_band, upper_arm_band, RulaInput, RulaScores, ScoringNote,
     WristTwist, WRIST_EDGES_DEG,
@@ -54,6 +55,15 @@ pub struct TaskConfig {
     pub wrist_twist: WristTwist,
     pub arm_supported_or_leaning: bool,
     pub seated_well_supported: bool,
+    /// REBA's load, kilograms (its Score A adds 0 below 5 kg, 1 up to 10 kg, 2 above).
+    pub reba_load_kg: f64,
+    /// REBA: shock or rapid build-up of force (+1 on the load score).
+    pub reba_load_shock_or_rapid_build_up: bool,
+    /// REBA: how well the hand holds the load.
+    pub reba_coupling: Coupling,
+    /// REBA's third activity box: rapid large-range changes of posture or an unstable base (+1). The
+    /// other two (static, repeated) come from the time series, as RULA's muscle use does.
+    pub reba_rapid_changes_or_unstable_base: bool,
 }
 
 impl Default for TaskConfig {
@@ -64,6 +74,10 @@ impl Default for TaskConfig {
             wrist_twist: WristTwist::MidRange,
             arm_supported_or_leaning: false,
             seated_well_supported: false,
+            reba_load_kg: 0.0,
+            reba_load_shock_or_rapid_build_up: false,
+            reba_coupling: Coupling::Good,
+            reba_rapid_changes_or_unstable_base: false,
         }
     }
 }
@@ -409,6 +423,31 @@ pub struct SideAssessment {
     /// conservatively. The score is still the full score: uncertain never means lower.
     pub uncertain: bool,
     pub uncertain_reasons: Vec<String>,
+    /// REBA for the same side and frame, from the same angles (held, smoothed and sourced alike) plus
+    /// the knees. See [`RebaAssessment`].
+    pub reba: RebaAssessment,
+}
+
+/// One side's REBA (Hignett & McAtamney 2000, [`crate::reba`]) beside its RULA, from the same
+/// observations:
+/// - trunk, neck, upper arm, elbow and wrist angles and the yes/no adjustments are RULA's inputs of
+///   this frame ("twisted or side-bent" is either of RULA's two; the wrist's "deviated or twisted" is
+///   RULA's bent-from-midline or a configured twist other than mid-range);
+/// - legs: bilateral weight bearing is RULA's "legs supported and balanced" (both feet on the floor,
+///   the hips over them; seated from the task config); the knee flexion is the **more flexed knee**
+///   of the two (the worksheet scores the legs once), held when missing like any angle and scored as
+///   straight, with the score uncertain, when never observed;
+/// - load, shock, coupling and "rapid changes or unstable base" from [`TaskConfig`];
+/// - activity "static" (a part held > 1 min) and "repeated" (> 4 times a minute) from the same
+///   time-series trackers as RULA's muscle use, either group A or B.
+///
+/// Uncertain when any input it uses is (RULA's reasons for those inputs, and the knees').
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RebaAssessment {
+    pub input: RebaInput,
+    pub scores: RebaScores,
+    pub uncertain: bool,
+    pub uncertain_reasons: Vec<String>,
 }
 
 impl SideAssessment {
@@ -586,6 +625,15 @@ impl RulaAssessor {
                 });
             }
         }
+        let load = config.task.reba_load_kg;
+        if !(0.0..=MAX_LOAD_KG).contains(&load) {
+            return Err(ErgonomicsError::OutOfRange {
+                field: "task.reba_load_kg",
+                value: load,
+                min: 0.0,
+                max: MAX_LOAD_KG,
+            });
+        }
         if config.smoothing_window_nanos < 0 {
             return Err(ErgonomicsError::OutOfRange {
                 field: "smoothing_window_nanos",
@@ -700,6 +748,34 @@ impl RulaAssessor {
                 && l.right_foot_lift_m <= th.foot_on_floor_m
                 && (task.seated_well_supported || l.weight_offset <= th.weight_offset_max)
         });
+
+        // REBA's knees: the more flexed of the two (each held when missing).
+        let (knee_l, knee_l_src) = merge(
+            self.held.left.knee_flexion_rad,
+            angles.left.knee_flexion_rad,
+        );
+        let (knee_r, knee_r_src) = merge(
+            self.held.right.knee_flexion_rad,
+            angles.right.knee_flexion_rad,
+        );
+        let knee_reasons: Vec<String> = [("left", knee_l_src), ("right", knee_r_src)]
+            .into_iter()
+            .filter_map(|(side, src)| match src {
+                InputSource::Held => Some(format!(
+                    "{side}_knee_flexion: landmarks missing, last value held"
+                )),
+                InputSource::NotObserved => Some(format!(
+                    "{side}_knee_flexion: never observed (needs hip, knee and ankle), scored as straight"
+                )),
+                _ => None,
+            })
+            .collect();
+        let knee_deg = match (knee_l, knee_r) {
+            (Some(l), Some(r)) => l.max(r),
+            (Some(k), None) | (None, Some(k)) => k,
+            (None, None) => 0.0,
+        }
+        .to_degrees();
 
         let mut out = FrameAssessment {
             stamp_nanos: stamp,
@@ -831,6 +907,52 @@ impl RulaAssessor {
                     }
                 }
             }
+            let reba_input = RebaInput {
+                trunk_flexion_deg: t_deg,
+                trunk_twisted_or_side_bent: input.trunk_twisted || input.trunk_side_bending,
+                neck_flexion_deg: n_deg,
+                neck_twisted_or_side_bent: input.neck_twisted || input.neck_side_bending,
+                legs_bilateral_walking_or_sitting: legs_ok,
+                seated: task.seated_well_supported,
+                knee_flexion_deg: knee_deg,
+                load_kg: task.reba_load_kg,
+                load_shock_or_rapid_build_up: task.reba_load_shock_or_rapid_build_up,
+                upper_arm_flexion_deg: ua_deg,
+                upper_arm_abducted_or_rotated: input.upper_arm_abducted,
+                shoulder_raised: input.shoulder_raised,
+                arm_supported_or_leaning: task.arm_supported_or_leaning,
+                lower_arm_flexion_deg: el_deg,
+                wrist_flexion_deg: wf_deg,
+                wrist_deviated_or_twisted: input.wrist_bent_from_midline
+                    || task.wrist_twist != WristTwist::MidRange,
+                coupling: task.reba_coupling,
+                activity_static: ma.static_hold || mb.static_hold,
+                activity_repeated: ma.repeated || mb.repeated,
+                activity_rapid_change_or_unstable: task.reba_rapid_changes_or_unstable_base,
+            };
+            let reba_scores = crate::reba::score_worksheet(&reba_input)?;
+            let mut reba_reasons: Vec<String> = reasons
+                .iter()
+                .filter(|r| !r.starts_with("lower_arm_across_midline_or_out_to_side"))
+                .chain(&knee_reasons)
+                .cloned()
+                .collect();
+            for lm in [Landmark::LeftKnee, Landmark::RightKnee] {
+                if let Some(e) = skeleton.get(lm) {
+                    if e.confidence < self.config.min_confidence {
+                        reba_reasons.push(format!(
+                            "{lm} confidence {:.2} below {:.2}",
+                            e.confidence, self.config.min_confidence
+                        ));
+                    }
+                }
+            }
+            let reba = RebaAssessment {
+                input: reba_input,
+                scores: reba_scores,
+                uncertain: !reba_reasons.is_empty(),
+                uncertain_reasons: reba_reasons,
+            };
             let assessment = SideAssessment {
                 side,
                 input,
@@ -841,6 +963,7 @@ impl RulaAssessor {
                 muscle_use_neck_trunk_legs: mb,
                 uncertain: !reasons.is_empty(),
                 uncertain_reasons: reasons,
+                reba,
             };
             match side {
                 Side::Left => out.left = Some(assessment),
@@ -869,6 +992,7 @@ impl RulaAssessor {
             keep(&mut held.wrist_flexion_rad, now.wrist_flexion_rad);
             keep(&mut held.wrist_deviation_rad, now.wrist_deviation_rad);
             keep(&mut held.wrist_lateral_offset_m, now.wrist_lateral_offset_m);
+            keep(&mut held.knee_flexion_rad, now.knee_flexion_rad);
         }
         let h = &mut self.held;
         keep(&mut h.trunk_flexion_rad, now.trunk_flexion_rad);

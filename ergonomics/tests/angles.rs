@@ -265,17 +265,34 @@ fn legs_on_the_floor_and_balanced_when_standing() {
 }
 
 #[test]
+fn knees_bent_0_35_and_80_degrees() {
+    for knee_deg in [0.0, 35.0, 80.0] {
+        let spec = PoseSpec {
+            knee_flexion_rad: f64::to_radians(knee_deg),
+            ..PoseSpec::default()
+        };
+        for_each_world(&spec, |a, ctx| {
+            assert_deg("left knee", a.left.knee_flexion_rad, knee_deg, ctx);
+            assert_deg("right knee", a.right.knee_flexion_rad, knee_deg, ctx);
+        });
+    }
+}
+
+#[test]
 fn missing_landmarks_give_none_not_zero() {
     let mut s = PoseSpec::default().skeleton();
     s.set(ergocell_skeleton::Landmark::RightWrist, None)
         .unwrap();
     s.set(ergocell_skeleton::Landmark::LeftEar, None).unwrap();
+    s.set(ergocell_skeleton::Landmark::LeftKnee, None).unwrap();
     let a = body_angles(&s, &UpVector::new(Vector3::z()).unwrap(), None);
     assert!(a.right.elbow_flexion_rad.is_none());
     assert!(a.right.wrist_flexion_rad.is_none());
     assert!(a.right.upper_arm_flexion_rad.is_some());
     assert!(a.neck_flexion_rad.is_none());
     assert!(a.neck_twist_rad.is_some(), "twist falls back to the nose");
+    assert!(a.left.knee_flexion_rad.is_none());
+    assert!(a.right.knee_flexion_rad.is_some());
 }
 
 #[test]

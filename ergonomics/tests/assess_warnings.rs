@@ -75,6 +75,7 @@ fn the_breakdown_says_what_was_observed_and_what_configured() {
         wrist_twist: WristTwist::EndOfRange,
         arm_supported_or_leaning: false,
         seated_well_supported: false,
+        ..TaskConfig::default()
     };
     let f = RulaAssessor::new(config)
         .unwrap()
@@ -795,4 +796,109 @@ fn an_easing_warning_says_it_is_easing_not_the_old_advice() {
     );
     assert!(!changed.contains("raise the work"), "{changed}");
     assert!(t[0].message.contains("raise the work"), "{}", t[0].message);
+}
+
+/// REBA from the tracked skeleton: the same observations as RULA plus the knees, scored through the
+/// worksheet (Hignett & McAtamney 2000) by hand for the reaching pose.
+#[test]
+fn reba_is_scored_beside_rula_from_the_same_frame() {
+    // Reaching: trunk 30°, neck 25°, right arm 100° flexed, elbow 20°, wrist 25°; knees 45°.
+    let spec = PoseSpec {
+        knee_flexion_rad: 45f64.to_radians(),
+        ..PoseSpec::reaching()
+    };
+    let f = assessor_for(&spec).assess(&spec.skeleton()).unwrap();
+    let r = f.right.as_ref().unwrap();
+    let reba = &r.reba;
+    assert!((reba.input.knee_flexion_deg - 45.0).abs() < 1e-6);
+    assert_eq!(reba.input.trunk_flexion_deg, r.input.trunk_flexion_deg);
+    assert_eq!(reba.input.upper_arm_flexion_deg, r.input.upper_arm_flexion_deg);
+    // Group A: trunk 20°–60° → 3; neck > 20° → 2; legs bilateral 1 + knees 30°–60° → 2.
+    assert_eq!(reba.scores.trunk_score, 3);
+    assert_eq!(reba.scores.neck_score, 2);
+    assert_eq!(reba.scores.legs_score, 2);
+    // Table A[neck 2][trunk 3][legs 2] = 5, no load.
+    assert_eq!(reba.scores.table_a, 5);
+    assert_eq!(reba.scores.score_a, 5);
+    // Group B: upper arm > 90° → 4; elbow 20° (outside 60°–100°) → 2; wrist 25° → 2.
+    assert_eq!(
+        (
+            reba.scores.upper_arm_score,
+            reba.scores.lower_arm_score,
+            reba.scores.wrist_score
+        ),
+        (4, 2, 2)
+    );
+    // Table B[4][2][2] = 6; Table C[5][6] = 7; no activity in one frame: medium risk.
+    assert_eq!(reba.scores.table_b, 6);
+    assert_eq!(reba.scores.table_c, 7);
+    assert_eq!(reba.scores.reba_score, 7);
+    assert_eq!(reba.scores.action_level, 2);
+    assert!(!reba.uncertain, "{:?}", reba.uncertain_reasons);
+
+    // Straight knees score legs 1; beyond 60° they add 2.
+    for (knee_deg, legs) in [(0.0, 1), (70.0, 3)] {
+        let spec = PoseSpec {
+            knee_flexion_rad: f64::to_radians(knee_deg),
+            ..PoseSpec::reaching()
+        };
+        let f = assessor_for(&spec).assess(&spec.skeleton()).unwrap();
+        assert_eq!(f.right.unwrap().reba.scores.legs_score, legs, "{knee_deg}°");
+    }
+}
+
+/// A knee the cameras never saw is scored straight and marks REBA (not RULA) uncertain; a knee seen
+/// before is held.
+#[test]
+fn reba_says_when_the_knees_were_not_seen() {
+    let spec = PoseSpec {
+        knee_flexion_rad: 45f64.to_radians(),
+        ..PoseSpec::default()
+    };
+    let without_knees = |stamp| {
+        let mut s = at(&spec, stamp);
+        for lm in [Landmark::LeftKnee, Landmark::RightKnee] {
+            s.set(lm, None).unwrap();
+        }
+        s
+    };
+    let mut a = assessor_for(&spec);
+    let f = a.assess(&without_knees(0)).unwrap();
+    let r = f.right.unwrap();
+    assert!(!r.uncertain, "RULA does not use the knees: {:?}", r.uncertain_reasons);
+    assert!(r.reba.uncertain);
+    assert!(
+        r.reba.uncertain_reasons.iter().any(|x| x.contains("right_knee_flexion: never observed")),
+        "{:?}",
+        r.reba.uncertain_reasons
+    );
+    assert_eq!(r.reba.input.knee_flexion_deg, 0.0);
+
+    let mut a = assessor_for(&spec);
+    a.assess(&at(&spec, 0)).unwrap();
+    let r = a.assess(&without_knees(FRAME)).unwrap().right.unwrap();
+    assert!((r.reba.input.knee_flexion_deg - 45.0).abs() < 1e-6, "held");
+    assert!(r.reba.uncertain_reasons.iter().any(|x| x.contains("last value held")));
+}
+
+#[test]
+fn reba_load_from_the_task_config_is_range_checked() {
+    let spec = PoseSpec::default();
+    let mut config = AssessmentConfig::new(UpVector::new(spec.up()).unwrap());
+    config.task.reba_load_kg = 7.0;
+    config.task.reba_coupling = ergocell_ergonomics::reba::Coupling::Poor;
+    let f = RulaAssessor::new(config)
+        .unwrap()
+        .assess(&spec.skeleton())
+        .unwrap();
+    let r = f.right.unwrap();
+    assert_eq!(r.reba.scores.load_force_score, 1, "5–10 kg");
+    assert_eq!(r.reba.scores.coupling_score, 2);
+    for bad in [-1.0, f64::NAN, 2000.0] {
+        config.task.reba_load_kg = bad;
+        assert!(matches!(
+            RulaAssessor::new(config),
+            Err(ErgonomicsError::OutOfRange { field: "task.reba_load_kg", .. })
+        ));
+    }
 }
