@@ -249,7 +249,7 @@ pub fn cdr_messages(data: &[u8]) {
     let Some((&selector, payload)) = data.split_first() else {
         return;
     };
-    match selector % 8 {
+    match selector % 9 {
         0 => cdr_round_trip::<msg::CameraLandmarks>(payload),
         1 => cdr_round_trip::<msg::JointState>(payload),
         2 => cdr_round_trip::<msg::JointTrajectory>(payload),
@@ -257,7 +257,8 @@ pub fn cdr_messages(data: &[u8]) {
         4 => cdr_round_trip::<msg::ErgonomicState>(payload),
         5 => cdr_round_trip::<msg::PostureWarning>(payload),
         6 => cdr_round_trip::<msg::OperatorPose>(payload),
-        _ => cdr_round_trip::<msg::MarkerArray>(payload),
+        7 => cdr_round_trip::<msg::MarkerArray>(payload),
+        _ => cdr_round_trip::<msg::RebaState>(payload),
     }
 }
 

@@ -5,7 +5,7 @@
 
 use ergocell_bridge::msg::{
     CameraLandmarks, ErgonomicState, Header, JointTrajectory, MarkerArray, OperatorPose,
-    PostureWarning, RulaSide, SessionState,
+    PostureWarning, RebaSide, RebaState, RulaSide, SessionState,
 };
 use ergocell_ergonomics::{FrameAssessment, SideAssessment, WarningEvent};
 use ergocell_perception::video_geometry::{VideoGeometry, VideoMap};
@@ -20,6 +20,8 @@ use crate::session::{SessionEvent, SessionMachine};
 pub enum Outgoing {
     SessionState(SessionState),
     Ergonomics(ErgonomicState),
+    /// REBA beside RULA, for the same frame.
+    Reba(RebaState),
     Warning(PostureWarning),
     Skeleton(MarkerArray),
     OperatorPose(OperatorPose),
@@ -71,6 +73,7 @@ pub fn step_messages(
                 )));
                 if let Some(a) = assessment {
                     out.push(Outgoing::Ergonomics(ergonomic_message(a)));
+                    out.push(Outgoing::Reba(reba_message(a)));
                 }
             }
         }
@@ -474,6 +477,42 @@ pub fn ergonomic_message(a: &FrameAssessment) -> ErgonomicState {
         left: side_message(a.left.as_ref()),
         right: side_message(a.right.as_ref()),
         action_level: a.headline().map_or(0, |h| h.scores.action_level),
+    }
+}
+
+/// The per-frame REBA state, beside [`ergonomic_message`] with the same stamp.
+pub fn reba_message(a: &FrameAssessment) -> RebaState {
+    let side = |s: Option<&SideAssessment>| {
+        s.map_or_else(RebaSide::default, |s| {
+            let r = &s.reba.scores;
+            RebaSide {
+                scored: true,
+                uncertain: s.reba.uncertain,
+                trunk_score: r.trunk_score,
+                neck_score: r.neck_score,
+                legs_score: r.legs_score,
+                score_a: r.score_a,
+                upper_arm_score: r.upper_arm_score,
+                lower_arm_score: r.lower_arm_score,
+                wrist_score: r.wrist_score,
+                score_b: r.score_b,
+                table_c: r.table_c,
+                activity_score: r.activity_score,
+                reba_score: r.reba_score,
+                action_level: r.action_level,
+            }
+        })
+    };
+    let (left, right) = (side(a.left.as_ref()), side(a.right.as_ref()));
+    let worse = [left, right]
+        .into_iter()
+        .filter(|s| s.scored)
+        .max_by_key(|s| (s.reba_score, s.uncertain));
+    RebaState {
+        header: Header::new(a.stamp_nanos, "world"),
+        left,
+        right,
+        action_level: worse.map_or(0, |s| s.action_level),
     }
 }
 

@@ -179,6 +179,7 @@ pub fn record(
         match m {
             O::SessionState(m) => rec.write(topics::SESSION_STATE, now_nanos, m)?,
             O::Ergonomics(m) => rec.write(topics::ERGONOMICS, now_nanos, m)?,
+            O::Reba(m) => rec.write(topics::REBA, now_nanos, m)?,
             O::Warning(m) => rec.write(topics::WARNINGS, now_nanos, m)?,
             O::Skeleton(m) => rec.write(topics::SKELETON, now_nanos, m)?,
             O::OperatorPose(m) => rec.write(topics::OPERATOR_POSE, now_nanos, m)?,

@@ -184,6 +184,7 @@ pub fn record(
                 now,
                 &messages::ergonomic_message(&assessment),
             )?;
+            rec.write(topics::REBA, now, &messages::reba_message(&assessment))?;
             for w in &tracked.warnings {
                 rec.write(topics::WARNINGS, now, &messages::warning_message(w))?;
             }

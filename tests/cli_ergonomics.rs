@@ -373,6 +373,22 @@ fn rula_track_csv_round_trips_the_json_breakdown() {
                     "{side} {score}"
                 );
             }
+            for score in [
+                "reba_score",
+                "action_level",
+                "score_a",
+                "score_b",
+                "legs_score",
+            ] {
+                assert_eq!(
+                    row[col(&format!(
+                        "{side}_reba_{}",
+                        score.trim_start_matches("reba_")
+                    ))],
+                    f["reba"]["scores"][score].to_string(),
+                    "{side} REBA {score}"
+                );
+            }
             for angle in [
                 "upper_arm_flexion_deg",
                 "lower_arm_flexion_deg",

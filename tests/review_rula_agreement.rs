@@ -1,12 +1,13 @@
 //! One recording, one set of numbers: `ergocell report` (the offline review's per-region rows) and
 //! `ergocell rula track` (its summary) report the same time shares per body-region score and per
-//! grand score, because both are `ergocell_ergonomics::summary`.
+//! grand score, the worse side's action level (with its exposure over time) and each side's REBA
+//! score, because both are `ergocell_ergonomics::summary`.
 //!
 //! The recording is a synthetic operator (`ergonomics::pose`) whose frame rate changes (10 Hz, then
 //! 30 Hz while reaching, so frame counts and time disagree), with a 3 s gap (no frames: not counted)
 //! and unscored frames at the start (nothing seen yet). The same skeletons go to `rula track` as a
 //! landmark file and, assessed as a session assesses them, into an MCAP recording (operator pose +
-//! RULA state, the session's messages) for `report`.
+//! RULA and REBA states, the session's messages) for `report`.
 
 // Test helpers outside `#[test]` functions unwrap too (clippy.toml allows it only inside them).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
@@ -14,7 +15,7 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use ergocell::messages::{ergonomic_message, operator_pose_message};
+use ergocell::messages::{ergonomic_message, operator_pose_message, reba_message};
 use ergocell::recording::{topics, McapRecorder};
 use ergocell_ergonomics::pose::{ArmPose, PoseSpec};
 use ergocell_ergonomics::{AssessmentConfig, RulaAssessor, UpVector};
@@ -110,6 +111,8 @@ fn review_region_shares_are_rula_tracks_summary() {
         .unwrap();
         rec.write(topics::ERGONOMICS, s.stamp_nanos, &ergonomic_message(&a))
             .unwrap();
+        rec.write(topics::REBA, s.stamp_nanos, &reba_message(&a))
+            .unwrap();
     }
     rec.finish().unwrap();
 
@@ -144,12 +147,32 @@ fn review_region_shares_are_rula_tracks_summary() {
         let samples = row["samples"].as_u64().unwrap();
         let side = row["side"].as_str().unwrap();
         let name = row["name"].as_str().unwrap();
-        let expected = if name == "grand score" {
-            summary["grand_score"]
+        let level_row;
+        let expected = if name == "grand score" || name == "REBA score" {
+            let key = if name == "grand score" {
+                "grand_score"
+            } else {
+                "reba_score"
+            };
+            summary[key]
                 .as_array()
                 .unwrap()
                 .iter()
                 .find(|g| g["side"] == side)
+        } else if name == "action level" {
+            assert_eq!(row["exposure"], summary["action_level_exposure"]);
+            let pairs: Vec<serde_json::Value> = summary["action_level_share"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .enumerate()
+                .map(|(k, x)| serde_json::json!([k + 1, x]))
+                .collect();
+            level_row = serde_json::json!({
+                "frames": summary["scored_frames"],
+                "share_by_score": pairs,
+            });
+            Some(&level_row)
         } else {
             summary["regions"].as_array().unwrap().iter().find(|r| {
                 r["region"] == name.replace(' ', "_")
@@ -178,11 +201,13 @@ fn review_region_shares_are_rula_tracks_summary() {
         compared += 1;
     }
     let in_summary = summary["regions"].as_array().unwrap().len()
-        + summary["grand_score"].as_array().unwrap().len();
+        + summary["grand_score"].as_array().unwrap().len()
+        + 1
+        + summary["reba_score"].as_array().unwrap().len();
     assert_eq!(compared, in_summary, "every summary row is on the page");
     assert_eq!(
-        compared, 11,
-        "six regions (three per side) and two grand scores"
+        compared, 14,
+        "six regions (three per side), two grand scores, the action level and two REBA scores"
     );
 
     // The recording is one where frame counting would disagree: the right upper arm's share at its

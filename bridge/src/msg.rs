@@ -362,6 +362,76 @@ impl RosMessage for ErgonomicState {
     ];
 }
 
+/// `ergocell_msgs/RebaSide`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct RebaSide {
+    pub scored: bool,
+    pub uncertain: bool,
+    pub trunk_score: u8,
+    pub neck_score: u8,
+    pub legs_score: u8,
+    pub score_a: u8,
+    pub upper_arm_score: u8,
+    pub lower_arm_score: u8,
+    pub wrist_score: u8,
+    pub score_b: u8,
+    pub table_c: u8,
+    pub activity_score: u8,
+    pub reba_score: u8,
+    pub action_level: u8,
+}
+
+const REBA_SIDE_DEF: &str = include_str!("../../ros2/ergocell_msgs/msg/RebaSide.msg");
+
+impl RosMessage for RebaSide {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "RebaSide";
+    const DEFINITION: &'static str = REBA_SIDE_DEF;
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[];
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("bool", "scored"),
+        ("bool", "uncertain"),
+        ("uint8", "trunk_score"),
+        ("uint8", "neck_score"),
+        ("uint8", "legs_score"),
+        ("uint8", "score_a"),
+        ("uint8", "upper_arm_score"),
+        ("uint8", "lower_arm_score"),
+        ("uint8", "wrist_score"),
+        ("uint8", "score_b"),
+        ("uint8", "table_c"),
+        ("uint8", "activity_score"),
+        ("uint8", "reba_score"),
+        ("uint8", "action_level"),
+    ];
+}
+
+/// `ergocell_msgs/RebaState`: REBA beside RULA, one per assessed frame.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct RebaState {
+    pub header: Header,
+    pub left: RebaSide,
+    pub right: RebaSide,
+    pub action_level: u8,
+}
+
+impl RosMessage for RebaState {
+    const PACKAGE: &'static str = "ergocell_msgs";
+    const NAME: &'static str = "RebaState";
+    const DEFINITION: &'static str = include_str!("../../ros2/ergocell_msgs/msg/RebaState.msg");
+    const DEPENDENCIES: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", HEADER_DEF),
+        ("builtin_interfaces/Time", TIME_DEF),
+        ("ergocell_msgs/RebaSide", REBA_SIDE_DEF),
+    ];
+    const FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("std_msgs/Header", "header"),
+        ("RebaSide", "left"),
+        ("RebaSide", "right"),
+        ("uint8", "action_level"),
+    ];
+}
+
 /// `ergocell_msgs/PostureWarning`.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct PostureWarning {
@@ -667,6 +737,8 @@ mod tests {
         check::<OperatorPose>();
         check::<RulaSide>();
         check::<ErgonomicState>();
+        check::<RebaSide>();
+        check::<RebaState>();
         check::<PostureWarning>();
         check::<MarkerArray>();
         check::<ControllerEvent>();

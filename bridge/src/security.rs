@@ -54,6 +54,7 @@ pub fn cell_enclaves(ros: &RosConfig) -> Vec<EnclaveSpec> {
         ros.session_state_topic.clone(),
         ros.session_events_topic.clone(),
         ros.ergonomics_topic.clone(),
+        ros.reba_topic.clone(),
         ros.warnings_topic.clone(),
         ros.skeleton_topic.clone(),
         ros.controller_events_topic.clone(),

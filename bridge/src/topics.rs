@@ -30,6 +30,8 @@ pub const IS_CONFIGURED: &str = "/robot_manager/is_configured";
 /// kuka_drivers' event broadcaster: `kuka_driver_interfaces/HardwareEvent`.
 pub const HARDWARE_EVENT: &str = "/event_broadcaster/hardware_event";
 pub const ERGONOMICS: &str = "/ergocell/ergonomics";
+/// REBA beside RULA (`ergocell_msgs/RebaState`), one per assessed frame.
+pub const REBA: &str = "/ergocell/reba";
 pub const WARNINGS: &str = "/ergocell/warnings";
 /// The fused skeleton (`visualization_msgs/MarkerArray`).
 pub const SKELETON: &str = "/ergocell/skeleton";

@@ -12,7 +12,7 @@ use serde::Deserialize;
 
 use crate::msg::{
     BoolMsg, CameraLandmarks, ControllerEvent, ErgonomicState, HardwareEvent, JointState,
-    JointTrajectory, MarkerArray, PostureWarning, RosMessage, SessionState,
+    JointTrajectory, MarkerArray, PostureWarning, RebaState, RosMessage, SessionState,
 };
 use crate::qos::{self, TopicQos};
 use crate::scope::{DiscoveryRange, NetworkScope};
@@ -95,6 +95,9 @@ pub struct RosConfig {
     pub session_events_topic: String,
     #[serde(default = "default_ergonomics")]
     pub ergonomics_topic: String,
+    /// REBA beside RULA (`ergocell_msgs/RebaState`), one per assessed frame.
+    #[serde(default = "default_reba")]
+    pub reba_topic: String,
     #[serde(default = "default_warnings")]
     pub warnings_topic: String,
     /// The fused skeleton (`visualization_msgs/MarkerArray`, Jazzy layout) for RViz and Foxglove.
@@ -190,6 +193,9 @@ fn default_session_events() -> String {
 }
 fn default_ergonomics() -> String {
     topics::ERGONOMICS.into()
+}
+fn default_reba() -> String {
+    topics::REBA.into()
 }
 fn default_warnings() -> String {
     topics::WARNINGS.into()
@@ -469,6 +475,7 @@ pub struct CellTopics {
     pub session_state: Publisher<SessionState>,
     pub session_events: Publisher<SessionState>,
     pub ergonomics: Publisher<ErgonomicState>,
+    pub reba: Publisher<RebaState>,
     pub warnings: Publisher<PostureWarning>,
     pub skeleton: Publisher<MarkerArray>,
     pub controller_events: Publisher<ControllerEvent>,
@@ -492,6 +499,7 @@ impl CellTopics {
             session_state: node.publisher(&cfg.session_state_topic, qos::SESSION_STATE)?,
             session_events: node.publisher(&cfg.session_events_topic, qos::SESSION_EVENTS)?,
             ergonomics: node.publisher(&cfg.ergonomics_topic, qos::PER_FRAME_STATE)?,
+            reba: node.publisher(&cfg.reba_topic, qos::PER_FRAME_STATE)?,
             warnings: node.publisher(&cfg.warnings_topic, qos::WARNINGS)?,
             skeleton: node.publisher(&cfg.skeleton_topic, qos::PER_FRAME_STATE)?,
             controller_events: node

@@ -304,7 +304,11 @@ fn side_angles(s: &Skeleton3, frame: Option<&TrunkFrame>, side: Side) -> SideAng
     }
     let (hip, knee, ankle) = match side {
         Side::Left => (Landmark::LeftHip, Landmark::LeftKnee, Landmark::LeftAnkle),
-        Side::Right => (Landmark::RightHip, Landmark::RightKnee, Landmark::RightAnkle),
+        Side::Right => (
+            Landmark::RightHip,
+            Landmark::RightKnee,
+            Landmark::RightAnkle,
+        ),
     };
     if let (Some(h), Some(k), Some(a)) = (s.position(hip), s.position(knee), s.position(ankle)) {
         out.knee_flexion_rad = angle_between(k - h, a - k);

@@ -45,6 +45,8 @@ use crate::rula::{
 use crate::{ErgonomicsError, Side};
 
 /// What the task is, as far as the cameras cannot tell.
+// The worksheets' yes/no boxes are the methods'; they stay booleans in the public config format.
+#[allow(clippy::struct_excessive_bools)]
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct TaskConfig {

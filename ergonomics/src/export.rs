@@ -12,7 +12,7 @@ use crate::warnings::{WarningEvent, WarningKind};
 use crate::{ErgonomicsError, Side};
 
 /// The per-side columns of the frame CSV, each prefixed `left_` or `right_`.
-pub const SIDE_COLUMNS: [&str; 23] = [
+pub const SIDE_COLUMNS: [&str; 30] = [
     "scored",
     "uncertain",
     "final_score",
@@ -36,6 +36,13 @@ pub const SIDE_COLUMNS: [&str; 23] = [
     "neck_twisted_or_side_bending",
     "trunk_twisted_or_side_bending",
     "muscle_use_arm_wrist",
+    "reba_score",
+    "reba_action_level",
+    "reba_uncertain",
+    "reba_score_a",
+    "reba_score_b",
+    "reba_legs_score",
+    "knee_flexion_deg",
 ];
 
 /// The frame CSV's header: `time_s`, `stamp_ns`, `worse_side`, the left then the right side's
@@ -155,7 +162,28 @@ fn side_cells(s: Option<&SideAssessment>) -> Vec<String> {
         flag(i.neck_twisted || i.neck_side_bending),
         flag(i.trunk_twisted || i.trunk_side_bending),
         flag(i.muscle_use_arm_wrist),
+        s.reba.scores.reba_score.to_string(),
+        s.reba.scores.action_level.to_string(),
+        flag(s.reba.uncertain),
+        s.reba.scores.score_a.to_string(),
+        s.reba.scores.score_b.to_string(),
+        s.reba.scores.legs_score.to_string(),
+        deg(s.reba.input.knee_flexion_deg),
     ]
+}
+
+/// The warnings raised per body region, in [`BodyRegion::ALL`] order (the summary CSV's last rows).
+pub fn raised_per_region(warnings: &[WarningEvent]) -> Vec<(BodyRegion, usize)> {
+    BodyRegion::ALL
+        .iter()
+        .map(|&region| {
+            let n = warnings
+                .iter()
+                .filter(|e| e.region == region && e.kind == WarningKind::Raised)
+                .count();
+            (region, n)
+        })
+        .collect()
 }
 
 fn warning_cell(w: &WarningEvent) -> String {
@@ -178,12 +206,13 @@ type RowFn<'a> =
 /// `quantity,side,region,score,value,unit`. Rows: the scored time and frames, the share of scored
 /// time per action level (worse side), per body-region score and per grand score, the unscored
 /// share, the exposure over time per action level and region score (`episodes_at_least`,
-/// `longest_stretch_at_least`, `time_at_least`: the level in the score column), and the warnings
-/// raised per region.
+/// `longest_stretch_at_least`, `time_at_least`: the level in the score column), REBA's action level
+/// shares and exposure (region `reba_action_level`) and score shares (`reba_score_share`) when the
+/// frames carry REBA, and the warnings raised per region ([`raised_per_region`]).
 pub fn write_summary<W: Write>(
     out: W,
     summary: &SessionSummary,
-    warnings: &[WarningEvent],
+    warnings_raised: &[(BodyRegion, usize)],
 ) -> Result<W, ErgonomicsError> {
     let mut w = csv::Writer::from_writer(out);
     let mut row = |q: &str, side: &str, region: &str, score: String, value: String, unit: &str| {
@@ -299,11 +328,37 @@ pub fn write_summary<W: Write>(
         }
         exposure_rows(side, r.region.name(), &r.exposure, &mut row)?;
     }
-    for region in BodyRegion::ALL {
-        let raised = warnings
-            .iter()
-            .filter(|e| e.region == region && e.kind == WarningKind::Raised)
-            .count();
+    if !summary.reba_score.is_empty() {
+        for (level, share) in summary.reba_action_level_share.iter().enumerate() {
+            row(
+                "reba_action_level_share",
+                "worse",
+                "",
+                level.to_string(),
+                pct(*share),
+                "percent of REBA-scored time",
+            )?;
+        }
+        exposure_rows(
+            "worse",
+            "reba_action_level",
+            &summary.reba_action_level_exposure,
+            &mut row,
+        )?;
+        for g in &summary.reba_score {
+            for (score, share) in &g.share_by_score {
+                row(
+                    "reba_score_share",
+                    g.side.name(),
+                    "",
+                    score.to_string(),
+                    pct(*share),
+                    "percent of the side's REBA-scored time",
+                )?;
+            }
+        }
+    }
+    for (region, raised) in warnings_raised {
         row(
             "warnings_raised",
             "",

@@ -252,6 +252,9 @@ impl RebaInput {
     }
 }
 
+/// The highest REBA score (Table C's 12 plus three activity points).
+pub const REBA_SCORE_MAX: u8 = 15;
+
 /// The heaviest load a worksheet may state, kilograms: anything beyond is not a manual task.
 pub const MAX_LOAD_KG: f64 = 1000.0;
 

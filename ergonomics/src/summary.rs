@@ -1,5 +1,5 @@
 //! A session's RULA summary: for how much of the time each action level, body-region score and
-//! grand score held.
+//! grand score held, and REBA's score and action level beside it when the frames carry REBA.
 //!
 //! This is the one computation of those shares. `ergocell rula track` feeds it the frames it assesses
 //! ([`SummaryBuilder::add`]); the offline review (`ergocell_review`) feeds it the scores read back
@@ -35,6 +35,18 @@ pub struct ScoredSide {
     pub scores: RulaScores,
     /// The score rests on low-confidence landmarks or held inputs.
     pub uncertain: bool,
+    /// The side's REBA of the same frame, when there is one (a recording made before REBA has none).
+    pub reba: Option<RebaBrief>,
+}
+
+/// What the summary reads of one side's REBA.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RebaBrief {
+    /// 1..=15.
+    pub reba_score: u8,
+    /// 0..=4.
+    pub action_level: u8,
+    pub uncertain: bool,
 }
 
 impl From<&SideAssessment> for ScoredSide {
@@ -42,6 +54,11 @@ impl From<&SideAssessment> for ScoredSide {
         Self {
             scores: s.scores,
             uncertain: s.uncertain,
+            reba: Some(RebaBrief {
+                reba_score: s.reba.scores.reba_score,
+                action_level: s.reba.scores.action_level,
+                uncertain: s.reba.uncertain,
+            }),
         }
     }
 }
@@ -99,7 +116,8 @@ impl GrandScoreShare {
     }
 }
 
-fn mean_score(share_by_score: &[(u8, f64)]) -> Option<f64> {
+/// The time-weighted mean of `(score, share)` pairs; `None` when no share.
+pub fn mean_score(share_by_score: &[(u8, f64)]) -> Option<f64> {
     let total: f64 = share_by_score.iter().map(|(_, x)| x).sum();
     (total > 0.0).then(|| {
         share_by_score
@@ -129,6 +147,13 @@ pub struct SessionSummary {
     pub regions: Vec<RegionShare>,
     /// Each side that was scored at least once, left before right.
     pub grand_score: Vec<GrandScoreShare>,
+    /// REBA, when the frames carry it: each side's REBA score shares (1..=15), left before right.
+    pub reba_score: Vec<GrandScoreShare>,
+    /// Share of REBA-scored time at REBA action level 0..=4 (the side with the higher REBA score).
+    pub reba_action_level_share: [f64; 5],
+    /// That side's REBA action level at least 2 (medium), 3 (high) and 4 (very high): episodes,
+    /// longest stretch, total time.
+    pub reba_action_level_exposure: Vec<Exposure>,
 }
 
 impl SessionSummary {
@@ -142,6 +167,11 @@ impl SessionSummary {
     /// One side's grand-score shares; `None` when never scored.
     pub fn grand(&self, side: Side) -> Option<&GrandScoreShare> {
         self.grand_score.iter().find(|g| g.side == side)
+    }
+
+    /// One side's REBA score shares; `None` when never scored with REBA.
+    pub fn reba(&self, side: Side) -> Option<&GrandScoreShare> {
+        self.reba_score.iter().find(|g| g.side == side)
     }
 }
 
@@ -165,6 +195,13 @@ impl Entry {
         let key = |s: &ScoredSide| (s.scores.final_score, s.uncertain);
         headline_side(self.left.as_ref().map(key), self.right.as_ref().map(key))
             .and_then(|side| self.side(side))
+    }
+
+    /// The side with the higher REBA score (the same tie rule as RULA's headline).
+    fn reba_headline(&self) -> Option<RebaBrief> {
+        let reba = |side: Side| self.side(side).and_then(|s| s.reba);
+        let key = |r: RebaBrief| (r.reba_score, r.uncertain);
+        headline_side(reba(Side::Left).map(key), reba(Side::Right).map(key)).and_then(reba)
     }
 }
 
@@ -347,6 +384,10 @@ impl SummaryBuilder {
         let mut scored_frames = 0;
         let mut uncertain_frames = 0;
         let mut level_runs = Runs::default();
+        let mut reba: BTreeMap<Side, Tally> = BTreeMap::new();
+        let mut reba_level = [0.0; 5];
+        let mut reba_scored = 0.0;
+        let mut reba_runs = Runs::default();
         let mut previous: Option<i64> = None;
         for (e, &dt) in entries.iter().zip(&times) {
             // a gap in the recording before this frame ends every stretch
@@ -378,7 +419,16 @@ impl SummaryBuilder {
             for side in Side::BOTH {
                 if let Some(s) = e.side(side) {
                     grand.entry(side).or_default().add(s.scores.final_score, dt);
+                    if let Some(r) = s.reba {
+                        reba.entry(side).or_default().add(r.reba_score, dt);
+                    }
                 }
+            }
+            let reba_head = e.reba_headline();
+            reba_runs.add(reba_head.map(|r| r.action_level.min(4)), dt, broken);
+            if let Some(r) = reba_head {
+                reba_scored += dt;
+                reba_level[usize::from(r.action_level.min(4))] += dt;
             }
         }
         SessionSummary {
@@ -408,6 +458,20 @@ impl SummaryBuilder {
                     frames: t.frames,
                 })
                 .collect(),
+            reba_score: reba
+                .into_iter()
+                .map(|(side, t)| GrandScoreShare {
+                    side,
+                    share_by_score: t.shares(),
+                    frames: t.frames,
+                })
+                .collect(),
+            reba_action_level_share: reba_level.map(|x| share(x, reba_scored)),
+            reba_action_level_exposure: if reba_scored > 0.0 {
+                reba_runs.exposure(4)
+            } else {
+                Vec::new()
+            },
         }
     }
 }
@@ -428,7 +492,53 @@ mod tests {
         ScoredSide {
             scores: score_worksheet(&input).unwrap().scores,
             uncertain: false,
+            reba: None,
         }
+    }
+
+    #[test]
+    fn reba_shares_are_time_weighted_and_take_the_worse_side() {
+        let with_reba = |mut s: ScoredSide, reba_score: u8, action_level: u8| {
+            s.reba = Some(RebaBrief {
+                reba_score,
+                action_level,
+                uncertain: false,
+            });
+            s
+        };
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        // 300 ms at REBA 3 (left) / 5 (right), then 3 frames of 100 ms at 9 (left) / 2 (right).
+        let low = side(0.0, 5.0);
+        b.add_scores(0, Some(with_reba(low, 3, 1)), Some(with_reba(low, 5, 2)));
+        for t in [300, 400, 500] {
+            b.add_scores(
+                t * MS,
+                Some(with_reba(low, 9, 3)),
+                Some(with_reba(low, 2, 1)),
+            );
+        }
+        let s = b.finish();
+        let near = |a: f64, b: f64| (a - b).abs() < 1e-12;
+        // the worse side: right (level 2) for 300 ms, left (level 3) for 300 ms
+        assert!(near(s.reba_action_level_share[2], 0.5), "{s:?}");
+        assert!(near(s.reba_action_level_share[3], 0.5), "{s:?}");
+        assert_eq!(
+            s.reba(Side::Left).unwrap().share_by_score,
+            vec![(3, 0.5), (9, 0.5)]
+        );
+        let at_least_3 = s
+            .reba_action_level_exposure
+            .iter()
+            .find(|e| e.at_least == 3)
+            .unwrap();
+        assert_eq!(at_least_3.episodes, 1);
+        assert!((at_least_3.total_secs - 0.3).abs() < 1e-9);
+        // frames without REBA (an older recording): no REBA rows at all
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        b.add_scores(0, Some(low), None);
+        let s = b.finish();
+        assert!(s.reba_score.is_empty() && s.reba_action_level_exposure.is_empty());
+        assert_eq!(s.reba_action_level_share, [0.0; 5]);
     }
 
     #[test]

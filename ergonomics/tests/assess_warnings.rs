@@ -812,7 +812,10 @@ fn reba_is_scored_beside_rula_from_the_same_frame() {
     let reba = &r.reba;
     assert!((reba.input.knee_flexion_deg - 45.0).abs() < 1e-6);
     assert_eq!(reba.input.trunk_flexion_deg, r.input.trunk_flexion_deg);
-    assert_eq!(reba.input.upper_arm_flexion_deg, r.input.upper_arm_flexion_deg);
+    assert_eq!(
+        reba.input.upper_arm_flexion_deg,
+        r.input.upper_arm_flexion_deg
+    );
     // Group A: trunk 20°–60° → 3; neck > 20° → 2; legs bilateral 1 + knees 30°–60° → 2.
     assert_eq!(reba.scores.trunk_score, 3);
     assert_eq!(reba.scores.neck_score, 2);
@@ -865,10 +868,17 @@ fn reba_says_when_the_knees_were_not_seen() {
     let mut a = assessor_for(&spec);
     let f = a.assess(&without_knees(0)).unwrap();
     let r = f.right.unwrap();
-    assert!(!r.uncertain, "RULA does not use the knees: {:?}", r.uncertain_reasons);
+    assert!(
+        !r.uncertain,
+        "RULA does not use the knees: {:?}",
+        r.uncertain_reasons
+    );
     assert!(r.reba.uncertain);
     assert!(
-        r.reba.uncertain_reasons.iter().any(|x| x.contains("right_knee_flexion: never observed")),
+        r.reba
+            .uncertain_reasons
+            .iter()
+            .any(|x| x.contains("right_knee_flexion: never observed")),
         "{:?}",
         r.reba.uncertain_reasons
     );
@@ -878,7 +888,11 @@ fn reba_says_when_the_knees_were_not_seen() {
     a.assess(&at(&spec, 0)).unwrap();
     let r = a.assess(&without_knees(FRAME)).unwrap().right.unwrap();
     assert!((r.reba.input.knee_flexion_deg - 45.0).abs() < 1e-6, "held");
-    assert!(r.reba.uncertain_reasons.iter().any(|x| x.contains("last value held")));
+    assert!(r
+        .reba
+        .uncertain_reasons
+        .iter()
+        .any(|x| x.contains("last value held")));
 }
 
 #[test]
@@ -898,7 +912,10 @@ fn reba_load_from_the_task_config_is_range_checked() {
         config.task.reba_load_kg = bad;
         assert!(matches!(
             RulaAssessor::new(config),
-            Err(ErgonomicsError::OutOfRange { field: "task.reba_load_kg", .. })
+            Err(ErgonomicsError::OutOfRange {
+                field: "task.reba_load_kg",
+                ..
+            })
         ));
     }
 }

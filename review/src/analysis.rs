@@ -14,12 +14,12 @@
 //! feedback folded into its leg); the parts the operator took from the session states' reasons.
 
 use ergocell_bridge::msg::{
-    ControllerEvent, ErgonomicState, JointTrajectory, RulaSide, SessionState,
+    ControllerEvent, ErgonomicState, JointTrajectory, RebaSide, RebaState, RulaSide, SessionState,
 };
 use ergocell_ergonomics::assess::BodyRegion;
 use ergocell_ergonomics::rula::{RulaScores, GRAND_SCORE_MAX};
 use ergocell_ergonomics::summary::{
-    Exposure, GrandScoreShare, RegionShare, ScoredSide, SessionSummary, SummaryBuilder,
+    Exposure, GrandScoreShare, RebaBrief, RegionShare, ScoredSide, SessionSummary, SummaryBuilder,
     DEFAULT_MAX_FRAME_NANOS,
 };
 use ergocell_skeleton::{Landmark, Side, DRAWN_BONES, LANDMARK_COUNT};
@@ -60,6 +60,9 @@ pub struct SessionReview {
     pub warnings: Vec<Warning>,
     pub regions: Vec<RegionStats>,
     pub angles: Vec<AngleStats>,
+    /// The session summary the rows come from (`ergocell rula track`'s numbers for the same frames):
+    /// action levels, regions, grand and REBA scores, exposure. `report --summary-csv` writes it.
+    pub summary: SessionSummary,
 }
 
 /// Where the numbers come from.
@@ -127,6 +130,9 @@ pub struct Frames {
     pub uncertain_right: Vec<bool>,
     /// The frame's headline action level (worse side), 0 when neither side was scored.
     pub action_level: Vec<u8>,
+    /// Each side's REBA score (1..=15) of the frame; `None` when not scored or not recorded.
+    pub reba_left: Vec<Option<u8>>,
+    pub reba_right: Vec<Option<u8>>,
 }
 
 /// The robot as recorded: its TCP and the handover point (`/ergocell/robot_markers`), the legs it was
@@ -253,8 +259,13 @@ fn scored(s: &RulaSide) -> Option<&RulaSide> {
     s.scored.then_some(s)
 }
 
-/// A recorded side as the summary reads it; `None` when not scored.
-fn scored_side(s: &RulaSide) -> Option<ScoredSide> {
+/// A recorded side as the summary reads it, with its REBA when recorded; `None` when not scored.
+fn scored_side(s: &RulaSide, reba: Option<&RebaSide>) -> Option<ScoredSide> {
+    let reba = reba.filter(|r| r.scored).map(|r| RebaBrief {
+        reba_score: r.reba_score,
+        action_level: r.action_level,
+        uncertain: r.uncertain,
+    });
     scored(s).map(|s| ScoredSide {
         scores: RulaScores {
             upper_arm_score: s.upper_arm_score,
@@ -272,13 +283,14 @@ fn scored_side(s: &RulaSide) -> Option<ScoredSide> {
             action_level: s.action_level,
         },
         uncertain: s.uncertain,
+        reba,
     })
 }
 
 /// Strain of every landmark in one frame.
 fn frame_strain(e: Option<&ErgonomicState>) -> Vec<Option<f64>> {
     let (left, right) = e.map_or((None, None), |e| {
-        (scored_side(&e.left), scored_side(&e.right))
+        (scored_side(&e.left, None), scored_side(&e.right, None))
     });
     Landmark::ALL
         .iter()
@@ -336,6 +348,13 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             .ok()
             .map(|i| &ergonomics[i].message)
     };
+    let mut reba: Vec<&RebaState> = rec.reba.iter().map(|r| &r.message).collect();
+    reba.sort_by_key(|r| stamp(&r.header));
+    let reba_at = |t: u64| {
+        reba.binary_search_by_key(&t, |r| stamp(&r.header))
+            .ok()
+            .map(|i| reba[i])
+    };
     let mut poses: Vec<_> = rec.poses.iter().collect();
     poses.sort_by_key(|p| stamp(&p.message.header));
     poses.dedup_by_key(|p| stamp(&p.message.header));
@@ -382,6 +401,10 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             .action_right
             .push(side(e.map(|e| &e.right), |s| s.action_level));
         frames.action_level.push(e.map_or(0, |e| e.action_level));
+        let r = reba_at(t);
+        let reba_score = |s: Option<&RebaSide>| s.filter(|s| s.scored).map(|s| s.reba_score);
+        frames.reba_left.push(reba_score(r.map(|r| &r.left)));
+        frames.reba_right.push(reba_score(r.map(|r| &r.right)));
         let uncertain = |s: Option<&RulaSide>| s.and_then(scored).is_some_and(|s| s.uncertain);
         frames.uncertain_left.push(uncertain(e.map(|e| &e.left)));
         frames.uncertain_right.push(uncertain(e.map(|e| &e.right)));
@@ -420,13 +443,15 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
     let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
     for e in &ergonomics {
         let e = &e.message;
+        let r = reba_at(stamp(&e.header));
         summary.add_scores(
             e.header.stamp.to_nanos(),
-            scored_side(&e.left),
-            scored_side(&e.right),
+            scored_side(&e.left, r.map(|r| &r.left)),
+            scored_side(&e.right, r.map(|r| &r.right)),
         );
     }
-    let regions = region_rows(&summary.finish());
+    let summary = summary.finish();
+    let regions = region_rows(&summary);
 
     let angles = angle_samples
         .into_iter()
@@ -468,6 +493,7 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             .collect(),
         regions,
         angles,
+        summary,
     }
 }
 
@@ -514,6 +540,34 @@ fn region_rows(summary: &SessionSummary) -> Vec<RegionStats> {
             share.and_then(GrandScoreShare::mean_score),
             Vec::new(),
         ));
+    }
+    // The action level of the worse side, with its exposure over time.
+    let levels: Vec<(u8, f64)> = (1u8..)
+        .zip(summary.action_level_share)
+        .filter(|(_, x)| *x > 0.0)
+        .collect();
+    rows.push(region_stats(
+        "action level".to_owned(),
+        "",
+        4,
+        &levels,
+        summary.scored_frames,
+        ergocell_ergonomics::summary::mean_score(&levels),
+        summary.action_level_exposure.clone(),
+    ));
+    // REBA beside RULA, per side (only when the recording has it).
+    for side in Side::BOTH {
+        if let Some(share) = summary.reba(side) {
+            rows.push(region_stats(
+                "REBA score".to_owned(),
+                side.name(),
+                ergocell_ergonomics::reba::REBA_SCORE_MAX,
+                &share.share_by_score,
+                share.frames,
+                share.mean_score(),
+                Vec::new(),
+            ));
+        }
     }
     rows
 }
@@ -1008,9 +1062,16 @@ mod tests {
     fn rows_are_every_region_per_side_then_the_grand_scores_with_the_summarys_shares() {
         let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
         // Left scored 0.3 s at 2 and 0.1 s at 3 (10 Hz); the right never.
-        for (k, score) in [2, 2, 2, 3].into_iter().enumerate() {
+        // Its REBA: 6 for 0.2 s, then 9 (a recording with REBA beside RULA).
+        for (k, (score, reba)) in [(2, 6), (2, 6), (2, 9), (3, 9)].into_iter().enumerate() {
             let t = k as i64 * 100_000_000;
-            b.add_scores(t, scored_side(&side_at(score, score)), None);
+            let reba = RebaSide {
+                scored: true,
+                reba_score: reba,
+                action_level: ergocell_ergonomics::reba::action_level(reba),
+                ..RebaSide::default()
+            };
+            b.add_scores(t, scored_side(&side_at(score, score), Some(&reba)), None);
         }
         let rows = region_rows(&b.finish());
         let names: Vec<String> = rows
@@ -1030,9 +1091,23 @@ mod tests {
                 "trunk|",
                 "legs|",
                 "grand score|left",
-                "grand score|right"
+                "grand score|right",
+                "action level|",
+                "REBA score|left"
             ]
         );
+        let reba = &rows[12];
+        assert_eq!((reba.max_score, reba.samples), (15, 4));
+        assert_eq!(reba.time_share[5], 0.5);
+        assert_eq!(reba.time_share[8], 0.5);
+        // The worse side's action level (grand 2 → level 1, grand 3 → level 2), with its stretches.
+        let level = &rows[11];
+        assert_eq!(level.time_share, [0.75, 0.25, 0.0, 0.0]);
+        assert_eq!(
+            (level.exposure[0].at_least, level.exposure[0].episodes),
+            (2, 1)
+        );
+        assert!((level.exposure[0].total_secs - 0.1).abs() < 1e-9);
         let ua = &rows[0];
         assert_eq!((ua.max_score, ua.samples), (6, 4));
         assert_eq!(ua.time_share, [0.0, 0.75, 0.25, 0.0, 0.0, 0.0]);

@@ -118,6 +118,7 @@ mod tests {
             warnings: vec![],
             regions: vec![],
             angles: vec![],
+            summary: ergocell_ergonomics::summary::SummaryBuilder::new(1).finish(),
         }
     }
 

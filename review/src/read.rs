@@ -11,7 +11,7 @@ use std::collections::BTreeMap;
 use ergocell_bridge::cdr;
 use ergocell_bridge::msg::{
     ControllerEvent, ErgonomicState, JointTrajectory, MarkerArray, OperatorPose, PostureWarning,
-    RosMessage, SessionState,
+    RebaState, RosMessage, SessionState,
 };
 use serde::de::DeserializeOwned;
 
@@ -51,6 +51,8 @@ pub struct Recording {
     pub last_log_time_nanos: Option<u64>,
     pub poses: Vec<Stamped<OperatorPose>>,
     pub ergonomics: Vec<Stamped<ErgonomicState>>,
+    /// REBA beside RULA (`/ergocell/reba`); empty in a recording made before REBA.
+    pub reba: Vec<Stamped<RebaState>>,
     pub warnings: Vec<Stamped<PostureWarning>>,
     pub states: Vec<Stamped<SessionState>>,
     pub robot_markers: Vec<Stamped<MarkerArray>>,
@@ -267,6 +269,7 @@ impl Reader {
         let outcome = match topic {
             topics::OPERATOR_POSE => take(&schema, &m.data, t, &mut rec.poses),
             topics::ERGONOMICS => take(&schema, &m.data, t, &mut rec.ergonomics),
+            topics::REBA => take(&schema, &m.data, t, &mut rec.reba),
             topics::WARNINGS => take(&schema, &m.data, t, &mut rec.warnings),
             topics::SESSION_STATE => take(&schema, &m.data, t, &mut rec.states),
             topics::ROBOT_MARKERS => take(&schema, &m.data, t, &mut rec.robot_markers),
@@ -499,6 +502,7 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
             last_log_time_nanos: range.1.or(rec.last_log_time_nanos),
             poses,
             ergonomics,
+            reba: part(&rec.reba, &f),
             warnings: part(&rec.warnings, &f),
             states: part(&rec.states, &f),
             robot_markers: part(&rec.robot_markers, &f),

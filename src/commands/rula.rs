@@ -67,7 +67,9 @@ pub struct TrackArgs {
     /// Floor height along up, metres (default: the lowest foot landmark of each frame).
     #[arg(long, allow_hyphen_values = true)]
     pub floor_height_m: Option<f64>,
-    /// Task config as JSON: force/load scores, wrist twist, arm support, seated (what cameras cannot see).
+    /// Task config as JSON (what cameras cannot see): RULA's force/load scores, wrist twist, arm
+    /// support, seated; REBA's `reba_load_kg`, `reba_load_shock_or_rapid_build_up`, `reba_coupling`
+    /// ("good" | "fair" | "poor" | "unacceptable") and `reba_rapid_changes_or_unstable_base`.
     #[arg(long)]
     pub task: Option<PathBuf>,
     /// Landmark confidence below which a score is marked uncertain.
@@ -167,7 +169,7 @@ fn side_text(s: Option<&SideAssessment>) -> String {
         Some(a) => {
             let c = &a.scores;
             format!(
-                "{} AL{} (UA{} LA{} WR{} TW{} A{} C{} | N{} T{} L{} B{} D{}){}",
+                "{} AL{} (UA{} LA{} WR{} TW{} A{} C{} | N{} T{} L{} B{} D{}){} REBA {} AL{}{}",
                 c.final_score,
                 c.action_level,
                 c.upper_arm_score,
@@ -181,7 +183,14 @@ fn side_text(s: Option<&SideAssessment>) -> String {
                 c.legs_score,
                 c.posture_score_b,
                 c.score_d_neck_trunk_legs,
-                if a.uncertain { " uncertain" } else { "" }
+                if a.uncertain { " uncertain" } else { "" },
+                a.reba.scores.reba_score,
+                a.reba.scores.action_level,
+                if a.reba.uncertain && !a.uncertain {
+                    " (REBA uncertain)"
+                } else {
+                    ""
+                }
             )
         }
     }
@@ -208,6 +217,7 @@ fn side_json(s: &SideAssessment) -> serde_json::Value {
         "notes": s.notes,
         "input": s.input,
         "sources": sources,
+        "reba": s.reba,
     })
 }
 
@@ -257,7 +267,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     let mut frame_docs = Vec::new();
     let mut events = Vec::new();
     if !args.json {
-        println!("# time_s  left: final AL (regions) | right: ... ; UA upper arm, LA lower arm, WR wrist, TW twist, N neck, T trunk, L legs");
+        println!("# time_s  left: final AL (regions) REBA score AL | right: ... ; UA upper arm, LA lower arm, WR wrist, TW twist, N neck, T trunk, L legs; REBA (Hignett & McAtamney 2000) from the same angles plus the knees");
         println!("# configured (task config): force/load, wrist twist, arm supported, seated; muscle use: from the time series; the rest observed (\"uncertain\": an input held, not observed, scored conservatively or of low confidence; the reasons follow on a \"why\" line when they change; --json lists each input's source)");
     }
     // The reasons last printed (text output): a side's uncertain reasons, the frame's unscored ones.
@@ -325,7 +335,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         super::output::write("--csv", path, args.force, &csv.finish()?)?;
     }
     if let Some(path) = &args.summary_csv {
-        let bytes = export::write_summary(Vec::new(), &s, &events)?;
+        let bytes = export::write_summary(Vec::new(), &s, &export::raised_per_region(&events))?;
         super::output::write("--summary-csv", path, args.force, &bytes)?;
     }
     if args.json {
@@ -350,6 +360,16 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
             action_level_meaning(level),
             share * 100.0
         );
+    }
+    if !s.reba_score.is_empty() {
+        println!("REBA beside RULA: time share per REBA action level (worse side):");
+        for (level, share) in s.reba_action_level_share.iter().enumerate() {
+            let (risk, action) = ergocell_ergonomics::reba::risk(level as u8);
+            println!(
+                "  level {level} ({risk}, action {action:<20}) {:5.1}%",
+                share * 100.0
+            );
+        }
     }
     println!("time share per body region score:");
     for r in &s.regions {
@@ -384,6 +404,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         }
     };
     line("action level", &s.action_level_exposure);
+    line("REBA level", &s.reba_action_level_exposure);
     for r in &s.regions {
         let name = match r.side {
             Some(Side::Left) => format!("left {}", r.region.name()),

@@ -739,6 +739,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             session_state,
             session_events,
             ergonomics,
+            reba,
             warnings,
             skeleton,
             controller_events,
@@ -748,6 +749,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             session_state,
             session_events,
             ergonomics,
+            reba,
             warnings,
             skeleton,
             controller_events,
@@ -1228,6 +1230,7 @@ struct Outputs {
     /// The same messages, every one (deeper history).
     session_events: Publisher<ergocell_bridge::msg::SessionState>,
     ergonomics: Publisher<ergocell_bridge::msg::ErgonomicState>,
+    reba: Publisher<ergocell_bridge::msg::RebaState>,
     warnings: Publisher<ergocell_bridge::msg::PostureWarning>,
     skeleton: Publisher<ergocell_bridge::msg::MarkerArray>,
     controller_events: Publisher<ControllerEvent>,
@@ -1262,6 +1265,7 @@ async fn publish_messages(messages: &[Outgoing], out: &Outputs) -> anyhow::Resul
                 publish(&out.ergonomics, m.clone()).await?;
                 frame = true;
             }
+            Outgoing::Reba(m) => publish(&out.reba, m.clone()).await?,
             Outgoing::Warning(m) => publish(&out.warnings, m.clone()).await?,
             Outgoing::Skeleton(m) => publish(&out.skeleton, m.clone()).await?,
             Outgoing::OperatorPose(_) | Outgoing::Trajectory(_) => {}

@@ -184,6 +184,10 @@ export function normalizeSession(s, index) {
     actionLeft: column(frames.action_left, n),
     actionRight: column(frames.action_right, n),
     actionLevel: column(frames.action_level, n),
+    // REBA beside RULA (absent in recordings made before it).
+    rebaLeft: column(frames.reba_left, n),
+    rebaRight: column(frames.reba_right, n),
+    hasReba: Array.isArray(frames.reba_left) && frames.reba_left.some((v) => v != null),
     // The side's score rests on low-confidence landmarks or held inputs (absent in older data).
     uncertainLeft: flags(frames.uncertain_left, n),
     uncertainRight: flags(frames.uncertain_right, n),

@@ -219,7 +219,7 @@ export function renderRegions(el, sessions) {
       return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(a)}</td><td class="num">${meanChip(b)}</td><td class="num">${delta}</td><td class="num">${esc(max)}</td><td>${shareBar(a, 'A')}${shareBar(b, 'B')}</td></tr>`;
     })
     .join('');
-  el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region; bar segments from score 1 (deep blue) to the region's maximum (deep red)</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
+  el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region, grand score per side and the worse side's action level; REBA score per side below when recorded; bar segments from score 1 (deep blue) to the row's maximum (deep red)</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
 }
 
 function sameEdges(a, b) {

@@ -42,7 +42,7 @@ import tomllib
 
 import rclpy
 from builtin_interfaces.msg import Time
-from ergocell_msgs.msg import CameraLandmarks, ControllerEvent, ErgonomicState, PostureWarning, SessionState
+from ergocell_msgs.msg import CameraLandmarks, ControllerEvent, ErgonomicState, PostureWarning, RebaState, SessionState
 from mcap.reader import make_reader
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
@@ -94,6 +94,8 @@ def main():
         "events": [],
         "ergonomics": 0,
         "ergonomics_scores": [],
+        "reba": 0,
+        "reba_scores": [],
         "warnings": [],
         "lock_sha256": lock["lock_sha256"],
     }
@@ -188,6 +190,12 @@ def main():
         if len(report["ergonomics_scores"]) < 5:
             report["ergonomics_scores"].append([m.left.final_score, m.right.final_score])
 
+    def on_reba(m):
+        report["reba"] += 1
+        if len(report["reba_scores"]) < 5:
+            report["reba_scores"].append([m.left.reba_score, m.right.reba_score])
+
+    node.create_subscription(RebaState, "/ergocell/reba", on_reba, qos(True, False, 10))
     node.create_subscription(JointTrajectory, "/joint_trajectory_controller/joint_trajectory",
                              on_trajectory, qos(True, False, 10))
     node.create_subscription(SessionState, "/ergocell/session_events", on_event, qos(True, True, 100))

@@ -131,6 +131,9 @@ check(len(r["trajectories"]) >= 2 and all(x["points"] >= 2 and len(x["joint_name
 scores = [x for p in r["ergonomics_scores"] for x in p]
 check(r["ergonomics"] > 100 and scores and all(0 <= x <= 7 for x in scores) and any(x >= 1 for x in scores),
       f"RULA states (ErgonomicState) reached rclpy (first final scores {r['ergonomics_scores']})")
+reba = [x for p in r["reba_scores"] for x in p]
+check(r["reba"] > 100 and reba and all(0 <= x <= 15 for x in reba) and any(x >= 1 for x in reba),
+      f"REBA states (RebaState) reached rclpy (first REBA scores {r['reba_scores']})")
 said = sum(1 for l in run.splitlines() if "RULA warning:" in l)
 check(len(r["warnings"]) == said and "trunk" in r["warnings"],
       f"every posture warning run raised reached rclpy's /ergocell/warnings reader ({len(r['warnings'])} of "
