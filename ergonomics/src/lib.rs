@@ -10,6 +10,8 @@
 //!   muscle-use tracker → a breakdown that says which inputs were observed and which configured, and
 //!   marks low-confidence, held or conservatively scored inputs "uncertain" (never lower); a wrist the
 //!   keypoint layout has no hand points for is scored conservatively, not left unscored.
+//! - [`activity`]: what the operator is doing from the skeleton alone (walking, floor pick, in
+//!   place): the task segments exposure is reported by.
 //! - [`height`]: stature from upright frames with two anthropometric estimators, and the height class
 //!   decision at session start.
 //! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.
@@ -24,6 +26,7 @@
 //! Angles are radians in code; degrees appear only in the RULA worksheet (the method is written in
 //! degrees) and in human-readable messages.
 
+pub mod activity;
 pub mod angles;
 pub mod assess;
 pub mod export;
