@@ -413,7 +413,7 @@ fn rula_track_csv_round_trips_the_json_breakdown() {
     let rows: Vec<csv::StringRecord> = summary.records().map(Result::unwrap).collect();
     let level_total: f64 = rows
         .iter()
-        .filter(|r| &r[0] == "action_level_share")
+        .filter(|r| &r[0] == "action_level_share" && r[6].is_empty())
         .map(|r| r[4].parse::<f64>().unwrap())
         .sum();
     assert!((level_total - 100.0).abs() < 0.01, "{level_total}");

@@ -199,10 +199,15 @@ mod tests {
         ] {
             let spec = tilted();
             let mut a = tracker(&spec);
-            let got: Vec<_> = (0..20).map(|k| a.update(&moved(&spec, k * 50, speed))).collect();
+            let got: Vec<_> = (0..20)
+                .map(|k| a.update(&moved(&spec, k * 50, speed)))
+                .collect();
             // Not decided before 0.2 s of history: in place until then.
             assert_eq!(got[0], Some(Activity::InPlace));
-            assert!(got[4..].iter().all(|g| *g == Some(want)), "{speed} m/s: {got:?}");
+            assert!(
+                got[4..].iter().all(|g| *g == Some(want)),
+                "{speed} m/s: {got:?}"
+            );
         }
     }
 
@@ -234,11 +239,20 @@ mod tests {
             ..tilted()
         };
         let mut a = tracker(&tilted());
-        assert_eq!(a.update(&reach_down(0.0).skeleton()), Some(Activity::InPlace));
+        assert_eq!(
+            a.update(&reach_down(0.0).skeleton()),
+            Some(Activity::InPlace)
+        );
         let mut a = tracker(&tilted());
-        assert_eq!(a.update(&reach_down(30.0).skeleton()), Some(Activity::InPlace));
+        assert_eq!(
+            a.update(&reach_down(30.0).skeleton()),
+            Some(Activity::InPlace)
+        );
         let mut a = tracker(&tilted());
-        assert_eq!(a.update(&reach_down(90.0).skeleton()), Some(Activity::FloorPick));
+        assert_eq!(
+            a.update(&reach_down(90.0).skeleton()),
+            Some(Activity::FloorPick)
+        );
     }
 
     #[test]

@@ -137,7 +137,7 @@ fn side_cells(s: Option<&SideAssessment>) -> Vec<String> {
     let c = &s.scores;
     let i = &s.input;
     // Three decimals; a value that rounds to zero is written 0.000, not -0.000.
-    let deg = |v: f64| format!("{:.3}", if v.abs() < 5e-4 { 0.0 } else { v });
+    let deg = |v: f64| secs(if v.abs() < 5e-4 { 0.0 } else { v });
     vec![
         flag(true),
         flag(s.uncertain),
@@ -198,177 +198,261 @@ fn warning_cell(w: &WarningEvent) -> String {
     }
 }
 
-/// One summary row: quantity, side, region, score, value, unit.
-type RowFn<'a> =
-    dyn FnMut(&str, &str, &str, String, String, &str) -> Result<(), ErgonomicsError> + 'a;
+/// The summary CSV's writer: one row per quantity.
+struct SummaryRows<W: Write> {
+    w: csv::Writer<W>,
+    /// The phase column of the rows written now ("" for the whole session).
+    phase: String,
+}
+
+impl<W: Write> SummaryRows<W> {
+    fn row(
+        &mut self,
+        quantity: &str,
+        side: &str,
+        region: &str,
+        score: &str,
+        value: &str,
+        unit: &str,
+    ) -> Result<(), ErgonomicsError> {
+        self.w
+            .write_record([quantity, side, region, score, value, unit, &self.phase])
+            .map_err(|e| csv_error(&e))
+    }
+
+    /// Per level: how often it started, its longest stretch, its total.
+    fn exposure(
+        &mut self,
+        side: &str,
+        region: &str,
+        exposure: &[crate::summary::Exposure],
+    ) -> Result<(), ErgonomicsError> {
+        for e in exposure {
+            let level = e.at_least.to_string();
+            let n = e.episodes.to_string();
+            self.row("episodes_at_least", side, region, &level, &n, "episodes")?;
+            let longest = secs(e.longest_secs);
+            self.row(
+                "longest_stretch_at_least",
+                side,
+                region,
+                &level,
+                &longest,
+                "s",
+            )?;
+            let total = secs(e.total_secs);
+            self.row("time_at_least", side, region, &level, &total, "s")?;
+        }
+        Ok(())
+    }
+
+    /// Shares by level, `first` the first level's number.
+    fn shares(
+        &mut self,
+        quantity: &str,
+        shares: &[f64],
+        first: usize,
+        unit: &str,
+    ) -> Result<(), ErgonomicsError> {
+        for (k, share) in shares.iter().enumerate() {
+            self.row(
+                quantity,
+                "worse",
+                "",
+                &(k + first).to_string(),
+                &pct(*share),
+                unit,
+            )?;
+        }
+        Ok(())
+    }
+}
+
+fn pct(share: f64) -> String {
+    secs(share * 100.0)
+}
+
+/// Three decimals, never `-0.000`.
+fn secs(v: f64) -> String {
+    format!("{:.3}", v + 0.0)
+}
 
 /// The session summary CSV, long format (one quantity a row, for a pivot table):
-/// `quantity,side,region,score,value,unit`. Rows: the scored time and frames, the share of scored
-/// time per action level (worse side), per body-region score and per grand score, the unscored
-/// share, the exposure over time per action level and region score (`episodes_at_least`,
-/// `longest_stretch_at_least`, `time_at_least`: the level in the score column), REBA's action level
-/// shares and exposure (region `reba_action_level`) and score shares (`reba_score_share`) when the
-/// frames carry REBA, and the warnings raised per region ([`raised_per_region`]).
+/// `quantity,side,region,score,value,unit,phase`. Rows for the whole session (`phase` empty): the
+/// scored time and frames, the share of scored time per action level (worse side), per body-region
+/// score and per grand score, the unscored share, the exposure over time per action level and region
+/// score (`episodes_at_least`, `longest_stretch_at_least`, `time_at_least`: the level in the score
+/// column), REBA's action level shares and exposure (region `reba_action_level`) and score shares
+/// (`reba_score_share`) when the frames carry REBA, ISO 11226's static postures per body part
+/// (`static_holds`, `static_holds_exceeding_iso11226`, `longest_static_hold`, `static_hold_time`),
+/// and the warnings raised per region ([`raised_per_region`]). Then per task segment (`phase` its
+/// name): `phase_duration`, `phase_time_share`, `phase_episodes`, `phase_unscored_share`,
+/// `phase_peak_grand_score`, its action level shares and exposure and its REBA action level shares.
 pub fn write_summary<W: Write>(
     out: W,
     summary: &SessionSummary,
     warnings_raised: &[(BodyRegion, usize)],
 ) -> Result<W, ErgonomicsError> {
-    let mut w = csv::Writer::from_writer(out);
-    let mut row = |q: &str, side: &str, region: &str, score: String, value: String, unit: &str| {
-        w.write_record([q, side, region, &score, &value, unit])
-            .map_err(|e| csv_error(&e))
+    let mut r = SummaryRows {
+        w: csv::Writer::from_writer(out),
+        phase: "phase".to_owned(),
     };
-    row(
-        "quantity",
-        "side",
-        "region",
-        "score".into(),
-        "value".into(),
-        "unit",
-    )?;
-    let pct = |share: f64| format!("{:.3}", share * 100.0);
-    row(
-        "duration",
-        "",
-        "",
-        String::new(),
-        format!("{:.3}", summary.duration_secs),
-        "s",
-    )?;
+    r.row("quantity", "side", "region", "score", "value", "unit")?;
+    r.phase.clear();
+    r.row("duration", "", "", "", &secs(summary.duration_secs), "s")?;
     for (q, n) in [
         ("frames", summary.frames),
         ("scored_frames", summary.scored_frames),
         ("uncertain_frames", summary.uncertain_frames),
     ] {
-        row(q, "", "", String::new(), n.to_string(), "frames")?;
+        r.row(q, "", "", "", &n.to_string(), "frames")?;
     }
-    row(
+    r.row(
         "unscored_share",
         "",
         "",
-        String::new(),
-        pct(summary.unscored_share),
+        "",
+        &pct(summary.unscored_share),
         "percent of time",
     )?;
-    for (k, share) in summary.action_level_share.iter().enumerate() {
-        row(
-            "action_level_share",
-            "worse",
-            "",
-            (k + 1).to_string(),
-            pct(*share),
-            "percent of scored time",
-        )?;
-    }
-    // exposure over time: per level, how often it started, its longest stretch, its total
-    let exposure_rows = |side: &str,
-                         region: &str,
-                         exposure: &[crate::summary::Exposure],
-                         row: &mut RowFn<'_>|
-     -> Result<(), ErgonomicsError> {
-        for e in exposure {
-            let level = e.at_least.to_string();
-            row(
-                "episodes_at_least",
-                side,
-                region,
-                level.clone(),
-                e.episodes.to_string(),
-                "episodes",
-            )?;
-            row(
-                "longest_stretch_at_least",
-                side,
-                region,
-                level.clone(),
-                format!("{:.3}", e.longest_secs),
-                "s",
-            )?;
-            row(
-                "time_at_least",
-                side,
-                region,
-                level,
-                format!("{:.3}", e.total_secs),
-                "s",
-            )?;
-        }
-        Ok(())
-    };
-    exposure_rows(
-        "worse",
-        "action_level",
-        &summary.action_level_exposure,
-        &mut row,
+    r.shares(
+        "action_level_share",
+        &summary.action_level_share,
+        1,
+        "percent of scored time",
     )?;
+    r.exposure("worse", "action_level", &summary.action_level_exposure)?;
     for g in &summary.grand_score {
         for (score, share) in &g.share_by_score {
-            row(
+            r.row(
                 "grand_score_share",
                 g.side.name(),
                 "",
-                score.to_string(),
-                pct(*share),
+                &score.to_string(),
+                &pct(*share),
                 "percent of the side's scored time",
             )?;
         }
     }
-    for r in &summary.regions {
-        let side = r.side.map_or("", Side::name);
-        for (score, share) in &r.share_by_score {
-            row(
+    for region in &summary.regions {
+        let side = region.side.map_or("", Side::name);
+        for (score, share) in &region.share_by_score {
+            r.row(
                 "region_score_share",
                 side,
-                r.region.name(),
-                score.to_string(),
-                pct(*share),
+                region.region.name(),
+                &score.to_string(),
+                &pct(*share),
                 "percent of the region's scored time",
             )?;
         }
-        exposure_rows(side, r.region.name(), &r.exposure, &mut row)?;
+        r.exposure(side, region.region.name(), &region.exposure)?;
     }
     if !summary.reba_score.is_empty() {
-        for (level, share) in summary.reba_action_level_share.iter().enumerate() {
-            row(
-                "reba_action_level_share",
-                "worse",
-                "",
-                level.to_string(),
-                pct(*share),
-                "percent of REBA-scored time",
-            )?;
-        }
-        exposure_rows(
+        r.shares(
+            "reba_action_level_share",
+            &summary.reba_action_level_share,
+            0,
+            "percent of REBA-scored time",
+        )?;
+        r.exposure(
             "worse",
             "reba_action_level",
             &summary.reba_action_level_exposure,
-            &mut row,
         )?;
         for g in &summary.reba_score {
             for (score, share) in &g.share_by_score {
-                row(
+                r.row(
                     "reba_score_share",
                     g.side.name(),
                     "",
-                    score.to_string(),
-                    pct(*share),
+                    &score.to_string(),
+                    &pct(*share),
                     "percent of the side's REBA-scored time",
                 )?;
             }
         }
     }
+    for p in &summary.static_postures {
+        let part = p.part.name();
+        r.row(
+            "static_holds",
+            "",
+            part,
+            "",
+            &p.static_holds.to_string(),
+            "count",
+        )?;
+        let exceeded = p.exceeded.to_string();
+        r.row(
+            "static_holds_exceeding_iso11226",
+            "",
+            part,
+            "",
+            &exceeded,
+            "count",
+        )?;
+        let longest = secs(p.longest_secs);
+        r.row("longest_static_hold", "", part, "", &longest, "s")?;
+        let total = secs(p.total_secs);
+        r.row("static_hold_time", "", part, "", &total, "s")?;
+    }
     for (region, raised) in warnings_raised {
-        row(
+        r.row(
             "warnings_raised",
             "",
             region.name(),
-            String::new(),
-            raised.to_string(),
+            "",
+            &raised.to_string(),
             "count",
         )?;
     }
-    w.into_inner().map_err(|e| ErgonomicsError::Export {
+    for p in &summary.phases {
+        r.phase.clone_from(&p.phase);
+        r.row("phase_duration", "", "", "", &secs(p.duration_secs), "s")?;
+        r.row(
+            "phase_time_share",
+            "",
+            "",
+            "",
+            &pct(p.time_share),
+            "percent of time",
+        )?;
+        r.row(
+            "phase_episodes",
+            "",
+            "",
+            "",
+            &p.episodes.to_string(),
+            "count",
+        )?;
+        r.row(
+            "phase_unscored_share",
+            "",
+            "",
+            "",
+            &pct(p.unscored_share),
+            "percent of the phase's time",
+        )?;
+        let peak = p.peak_grand_score.map_or(String::new(), |x| x.to_string());
+        r.row("phase_peak_grand_score", "", "", "", &peak, "score")?;
+        r.shares(
+            "action_level_share",
+            &p.action_level_share,
+            1,
+            "percent of the phase's scored time",
+        )?;
+        r.exposure("worse", "action_level", &p.action_level_exposure)?;
+        if !summary.reba_score.is_empty() {
+            r.shares(
+                "reba_action_level_share",
+                &p.reba_action_level_share,
+                0,
+                "percent of the phase's REBA-scored time",
+            )?;
+        }
+    }
+    r.w.into_inner().map_err(|e| ErgonomicsError::Export {
         reason: e.to_string(),
     })
 }

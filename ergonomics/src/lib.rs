@@ -14,6 +14,8 @@
 //!   place): the task segments exposure is reported by.
 //! - [`height`]: stature from upright frames with two anthropometric estimators, and the height class
 //!   decision at session start.
+//! - [`static_posture`]: trunk and neck postures held outside ISO 11226's acceptable zone, against
+//!   its maximum holding times (the table used is cited there).
 //! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.
 //! - [`summary`]: a session's time-weighted shares per action level, body-region score and grand
 //!   score — the one computation behind `ergocell rula track`'s summary and the offline review.
@@ -34,6 +36,7 @@ pub mod height;
 pub mod pose;
 pub mod reba;
 pub mod rula;
+pub mod static_posture;
 pub mod summary;
 pub mod tables;
 pub mod warnings;

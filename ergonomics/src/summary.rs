@@ -24,6 +24,7 @@ use serde::Serialize;
 
 use crate::assess::{headline_side, BodyRegion, FrameAssessment, SideAssessment};
 use crate::rula::RulaScores;
+use crate::static_posture::{static_postures, StaticPostureSummary};
 use crate::Side;
 
 /// Default gap threshold: an interval between frames longer than 1 s is a gap, not frame time.
@@ -154,6 +155,50 @@ pub struct SessionSummary {
     /// That side's REBA action level at least 2 (medium), 3 (high) and 4 (very high): episodes,
     /// longest stretch, total time.
     pub reba_action_level_exposure: Vec<Exposure>,
+    /// The task segments (the frames' phases, e.g. walking, floor pick, handover), in order of first
+    /// appearance; empty when no frame had one.
+    pub phases: Vec<PhaseSummary>,
+    /// Trunk and neck postures held outside ISO 11226's acceptable zone
+    /// ([`crate::static_posture`]); empty when no frame carried the angles.
+    pub static_postures: Vec<StaticPostureSummary>,
+}
+
+/// One task segment of a session: its time and its exposure.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PhaseSummary {
+    pub phase: String,
+    pub frames: usize,
+    /// Separate stretches of this phase.
+    pub episodes: usize,
+    /// The time in this phase, seconds (gaps not counted).
+    pub duration_secs: f64,
+    /// Its share of the session's time.
+    pub time_share: f64,
+    /// Share of the phase's time with no RULA score.
+    pub unscored_share: f64,
+    /// Share of the phase's scored time at action level 1..=4 (the worse side).
+    pub action_level_share: [f64; 4],
+    /// Stretches at action level 2, 3, 4 or more within the phase (leaving the phase ends one).
+    pub action_level_exposure: Vec<Exposure>,
+    /// Share of the phase's REBA-scored time at REBA action level 0..=4 (all zero without REBA).
+    pub reba_action_level_share: [f64; 5],
+    /// The highest grand score (either side) in the phase; `None` when never scored.
+    pub peak_grand_score: Option<u8>,
+}
+
+/// Everything the summary reads of one frame (see [`SummaryBuilder::push`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SummaryFrame {
+    pub stamp_nanos: i64,
+    /// `None`: the side was not scored.
+    pub left: Option<ScoredSide>,
+    pub right: Option<ScoredSide>,
+    /// The task segment the frame belongs to; `None`: not labelled.
+    pub phase: Option<&'static str>,
+    /// Trunk and neck flexion as scored, radians (for [`crate::static_posture`]); `None`: not
+    /// observed.
+    pub trunk_flexion_rad: Option<f64>,
+    pub neck_flexion_rad: Option<f64>,
 }
 
 impl SessionSummary {
@@ -175,13 +220,7 @@ impl SessionSummary {
     }
 }
 
-/// One frame in a summary: its stamp and each side's scores (`None`: not scored).
-#[derive(Debug, Clone, Copy)]
-struct Entry {
-    stamp_nanos: i64,
-    left: Option<ScoredSide>,
-    right: Option<ScoredSide>,
-}
+type Entry = SummaryFrame;
 
 impl Entry {
     fn side(&self, side: Side) -> Option<&ScoredSide> {
@@ -317,6 +356,65 @@ fn share(x: f64, of: f64) -> f64 {
     }
 }
 
+/// One task segment's time, levels and stretches.
+#[derive(Debug, Clone, Default)]
+struct PhaseTally {
+    frames: usize,
+    episodes: usize,
+    time: f64,
+    unscored: f64,
+    level: [f64; 4],
+    reba_level: [f64; 5],
+    reba_scored: f64,
+    peak: Option<u8>,
+    runs: Runs,
+}
+
+impl PhaseTally {
+    /// One frame of `dt` in this phase; `starts` when the phase starts again here (after another
+    /// phase or a gap).
+    fn add(&mut self, e: &Entry, dt: f64, starts: bool) {
+        self.frames += 1;
+        self.episodes += usize::from(starts || self.frames == 1);
+        self.time += dt;
+        let head = e.headline();
+        self.runs
+            .add(head.map(|h| h.scores.action_level.clamp(1, 4)), dt, starts);
+        match head {
+            Some(h) => self.level[usize::from(h.scores.action_level.clamp(1, 4) - 1)] += dt,
+            None => self.unscored += dt,
+        }
+        for side in Side::BOTH {
+            if let Some(s) = e.side(side) {
+                self.peak = Some(
+                    self.peak
+                        .map_or(s.scores.final_score, |p| p.max(s.scores.final_score)),
+                );
+            }
+        }
+        if let Some(r) = e.reba_headline() {
+            self.reba_scored += dt;
+            self.reba_level[usize::from(r.action_level.min(4))] += dt;
+        }
+    }
+
+    fn finish(self, phase: &str, total: f64) -> PhaseSummary {
+        let scored = self.time - self.unscored;
+        PhaseSummary {
+            phase: phase.to_owned(),
+            frames: self.frames,
+            episodes: self.episodes,
+            duration_secs: self.time * 1e-9,
+            time_share: share(self.time, total),
+            unscored_share: share(self.unscored, self.time),
+            action_level_share: self.level.map(|x| share(x, scored)),
+            action_level_exposure: self.runs.exposure(4),
+            reba_action_level_share: self.reba_level.map(|x| share(x, self.reba_scored)),
+            peak_grand_score: self.peak,
+        }
+    }
+}
+
 impl SummaryBuilder {
     /// `max_frame_nanos`: intervals between frames longer than this are gaps (see the module docs);
     /// usually [`DEFAULT_MAX_FRAME_NANOS`].
@@ -327,13 +425,22 @@ impl SummaryBuilder {
         }
     }
 
-    /// Adds one assessed frame.
-    pub fn add(&mut self, frame: &FrameAssessment) {
-        self.add_scores(
-            frame.stamp_nanos,
-            frame.left.as_ref().map(ScoredSide::from),
-            frame.right.as_ref().map(ScoredSide::from),
-        );
+    /// Adds one assessed frame (its scores, REBA and the trunk and neck angles as scored) in the task
+    /// segment `phase` (`None`: not labelled).
+    pub fn add(&mut self, frame: &FrameAssessment, phase: Option<&'static str>) {
+        self.push(SummaryFrame {
+            stamp_nanos: frame.stamp_nanos,
+            left: frame.left.as_ref().map(ScoredSide::from),
+            right: frame.right.as_ref().map(ScoredSide::from),
+            phase,
+            trunk_flexion_rad: frame.angles.trunk_flexion_rad,
+            neck_flexion_rad: frame.angles.neck_flexion_rad,
+        });
+    }
+
+    /// Adds one frame as the summary reads it.
+    pub fn push(&mut self, frame: SummaryFrame) {
+        self.entries.push(frame);
     }
 
     /// Adds one frame given by its scores, e.g. read back from a recording; `None` for a side that
@@ -348,6 +455,7 @@ impl SummaryBuilder {
             stamp_nanos,
             left,
             right,
+            ..SummaryFrame::default()
         });
     }
 
@@ -388,6 +496,8 @@ impl SummaryBuilder {
         let mut reba_level = [0.0; 5];
         let mut reba_scored = 0.0;
         let mut reba_runs = Runs::default();
+        let mut phases: Vec<(&'static str, PhaseTally)> = Vec::new();
+        let mut previous_phase: Option<&'static str> = None;
         let mut previous: Option<i64> = None;
         for (e, &dt) in entries.iter().zip(&times) {
             // a gap in the recording before this frame ends every stretch
@@ -424,6 +534,23 @@ impl SummaryBuilder {
                     }
                 }
             }
+            if let Some(phase) = e.phase {
+                let k = if let Some(k) = phases.iter().position(|(p, _)| *p == phase) {
+                    k
+                } else {
+                    phases.push((phase, PhaseTally::default()));
+                    phases.len() - 1
+                };
+                let tally = &mut phases[k].1;
+                tally.add(e, dt, broken || previous_phase != Some(phase));
+            }
+            // every other phase's stretches end here
+            for (p, tally) in &mut phases {
+                if Some(*p) != e.phase {
+                    tally.runs.add(None, dt, true);
+                }
+            }
+            previous_phase = e.phase;
             let reba_head = e.reba_headline();
             reba_runs.add(reba_head.map(|r| r.action_level.min(4)), dt, broken);
             if let Some(r) = reba_head {
@@ -472,6 +599,22 @@ impl SummaryBuilder {
             } else {
                 Vec::new()
             },
+            phases: phases
+                .into_iter()
+                .map(|(phase, t)| t.finish(phase, total))
+                .collect(),
+            static_postures: if entries
+                .iter()
+                .any(|e| e.trunk_flexion_rad.is_some() || e.neck_flexion_rad.is_some())
+            {
+                let angles: Vec<(i64, Option<f64>, Option<f64>)> = entries
+                    .iter()
+                    .map(|e| (e.stamp_nanos, e.trunk_flexion_rad, e.neck_flexion_rad))
+                    .collect();
+                static_postures(&angles, self.max_frame_nanos)
+            } else {
+                Vec::new()
+            },
         }
     }
 }
@@ -494,6 +637,56 @@ mod tests {
             uncertain: false,
             reba: None,
         }
+    }
+
+    #[test]
+    fn each_phase_has_its_time_levels_and_stretches() {
+        // 10 Hz: 1 s walking at action level 1, 0.5 s floor pick at level 2 (grand 3), 1 s walking,
+        // 0.5 s floor pick at level 2.
+        let low = side(0.0, 5.0);
+        let high = side(60.0, 25.0);
+        assert_eq!((low.scores.action_level, high.scores.action_level), (1, 2));
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        let mut t = 0;
+        for (phase, n, s) in [
+            ("walking", 10, low),
+            ("floor pick", 5, high),
+            ("walking", 10, low),
+            ("floor pick", 5, high),
+        ] {
+            for _ in 0..n {
+                b.push(SummaryFrame {
+                    stamp_nanos: t * 100 * MS,
+                    left: Some(s),
+                    phase: Some(phase),
+                    ..SummaryFrame::default()
+                });
+                t += 1;
+            }
+        }
+        let s = b.finish();
+        let names: Vec<&str> = s.phases.iter().map(|p| p.phase.as_str()).collect();
+        assert_eq!(names, ["walking", "floor pick"]);
+        let (walk, pick) = (&s.phases[0], &s.phases[1]);
+        assert_eq!((walk.frames, walk.episodes), (20, 2));
+        assert!((walk.duration_secs - 2.0).abs() < 1e-9);
+        assert!((walk.time_share - 2.0 / 3.0).abs() < 1e-9);
+        assert_eq!(walk.action_level_share, [1.0, 0.0, 0.0, 0.0]);
+        assert_eq!(pick.action_level_share, [0.0, 1.0, 0.0, 0.0]);
+        assert_eq!(pick.peak_grand_score, Some(high.scores.final_score));
+        // Two separate stretches at level ≥ 2: walking in between ends the first.
+        let e = pick
+            .action_level_exposure
+            .iter()
+            .find(|e| e.at_least == 2)
+            .unwrap();
+        assert_eq!(e.episodes, 2);
+        assert!((e.longest_secs - 0.5).abs() < 1e-9 && (e.total_secs - 1.0).abs() < 1e-9);
+        // No angles given: no static postures; no phases given: none.
+        assert!(s.static_postures.is_empty());
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        b.add_scores(0, Some(low), None);
+        assert!(b.finish().phases.is_empty());
     }
 
     #[test]

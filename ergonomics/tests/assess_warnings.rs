@@ -376,7 +376,7 @@ fn session_summary_shares_add_up() {
             ..PoseSpec::default()
         };
         let s = at(if k < 10 { &relaxed } else { &spec }, k * FRAME);
-        summary.add(&assessor.assess(&s).unwrap());
+        summary.add(&assessor.assess(&s).unwrap(), None);
     }
     let s = summary.finish();
     assert_eq!(s.frames, 20);
@@ -451,7 +451,7 @@ fn an_empty_skeleton_is_unscored_not_safe() {
     let mut warnings = WarningTracker::new(WarningConfig::default());
     assert!(warnings.update(&f).is_empty());
     let mut summary = SummaryBuilder::new(SEC);
-    summary.add(&f);
+    summary.add(&f, None);
     assert_eq!(summary.finish().unscored_share, 1.0);
 }
 

@@ -22,7 +22,12 @@ use ergocell_ergonomics::summary::{
     Exposure, GrandScoreShare, RebaBrief, RegionShare, ScoredSide, SessionSummary, SummaryBuilder,
     DEFAULT_MAX_FRAME_NANOS,
 };
-use ergocell_skeleton::{Landmark, Side, DRAWN_BONES, LANDMARK_COUNT};
+use std::collections::BTreeMap;
+
+use ergocell_ergonomics::activity::{Activity, ActivityConfig, ActivityTracker};
+use ergocell_ergonomics::summary::SummaryFrame;
+use ergocell_ergonomics::UpVector;
+use ergocell_skeleton::{Landmark, Side, Skeleton3, DRAWN_BONES, LANDMARK_COUNT};
 use serde::Serialize;
 
 use crate::read::{Recording, Stamped};
@@ -130,6 +135,8 @@ pub struct Frames {
     pub uncertain_right: Vec<bool>,
     /// The frame's headline action level (worse side), 0 when neither side was scored.
     pub action_level: Vec<u8>,
+    /// The frame's task segment ([`PHASES`]); `None` when the skeleton had no hips.
+    pub phase: Vec<Option<&'static str>>,
     /// Each side's REBA score (1..=15) of the frame; `None` when not scored or not recorded.
     pub reba_left: Vec<Option<u8>>,
     pub reba_right: Vec<Option<u8>>,
@@ -358,6 +365,31 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
     let mut poses: Vec<_> = rec.poses.iter().collect();
     poses.sort_by_key(|p| stamp(&p.message.header));
     poses.dedup_by_key(|p| stamp(&p.message.header));
+    let robot = robot(rec, t0);
+    // Task segments and the trunk and neck angles, by capture stamp (see `phase_of`).
+    let handovers = handover_spans(&robot);
+    let mut activity = ActivityTracker::new(ActivityConfig::default(), &UpVector::z()).ok();
+    let mut by_stamp: BTreeMap<u64, FrameFacts> = BTreeMap::new();
+    for p in &poses {
+        let m = &p.message;
+        let t = stamp(&m.header);
+        let act = skeleton_of(m, t).and_then(|sk| activity.as_mut().and_then(|a| a.update(&sk)));
+        let angle = |name: &str| {
+            m.angle_names
+                .iter()
+                .position(|n| n == name)
+                .and_then(|k| m.angle_rad.get(k).copied())
+                .and_then(finite)
+        };
+        by_stamp.insert(
+            t,
+            FrameFacts {
+                phase: phase_of(act, secs(t, t0), &handovers),
+                trunk_flexion_rad: angle("trunk_flexion"),
+                neck_flexion_rad: angle("neck_flexion"),
+            },
+        );
+    }
     let mut frames = Frames::default();
     let mut malformed = 0usize;
     let mut implausible_angles = 0usize;
@@ -372,6 +404,7 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         let t = stamp(&m.header);
         let e = ergonomics_at(t);
         frames.t.push(round_to(secs(t, t0), 6));
+        frames.phase.push(by_stamp.get(&t).and_then(|f| f.phase));
         frames.positions.push(
             (0..LANDMARK_COUNT)
                 .flat_map(|i| {
@@ -443,12 +476,17 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
     let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
     for e in &ergonomics {
         let e = &e.message;
-        let r = reba_at(stamp(&e.header));
-        summary.add_scores(
-            e.header.stamp.to_nanos(),
-            scored_side(&e.left, r.map(|r| &r.left)),
-            scored_side(&e.right, r.map(|r| &r.right)),
-        );
+        let t = stamp(&e.header);
+        let r = reba_at(t);
+        let facts = by_stamp.get(&t).copied().unwrap_or_default();
+        summary.push(SummaryFrame {
+            stamp_nanos: e.header.stamp.to_nanos(),
+            left: scored_side(&e.left, r.map(|r| &r.left)),
+            right: scored_side(&e.right, r.map(|r| &r.right)),
+            phase: facts.phase,
+            trunk_flexion_rad: facts.trunk_flexion_rad,
+            neck_flexion_rad: facts.neck_flexion_rad,
+        });
     }
     let summary = summary.finish();
     let regions = region_rows(&summary);
@@ -476,7 +514,7 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             .collect(),
         up: [0.0, 0.0, 1.0],
         frames,
-        robot: robot(rec, t0),
+        robot,
         warnings: rec
             .warnings
             .iter()
@@ -495,6 +533,61 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         angles,
         summary,
     }
+}
+
+/// What a frame's pose says beyond its scores: its task segment and the angles ISO 11226 judges.
+#[derive(Debug, Clone, Copy, Default)]
+struct FrameFacts {
+    phase: Option<&'static str>,
+    trunk_flexion_rad: Option<f64>,
+    neck_flexion_rad: Option<f64>,
+}
+
+/// The task segment names of the review, in precedence order (see [`phase_of`]).
+pub const PHASES: [&str; 4] = ["walking", "floor pick", "handover", "in place"];
+
+/// A frame's task segment: walking and floor pick from the skeleton
+/// ([`ergocell_ergonomics::activity`]); otherwise a handover while the robot brings a part or waits
+/// with it (from a `home → handover` leg's start to the next leg's start), otherwise in place.
+/// `None` when the skeleton had no hips.
+fn phase_of(activity: Option<Activity>, t: f64, handovers: &[(f64, f64)]) -> Option<&'static str> {
+    Some(match activity? {
+        Activity::Walking => PHASES[0],
+        Activity::FloorPick => PHASES[1],
+        Activity::InPlace if handovers.iter().any(|&(a, b)| a <= t && t < b) => PHASES[2],
+        Activity::InPlace => PHASES[3],
+    })
+}
+
+/// The times the robot brought a part and waited with it: each `home → handover` leg's start to the
+/// start of the leg after it (or the leg's end when it is the last), seconds.
+fn handover_spans(robot: &Robot) -> Vec<(f64, f64)> {
+    robot
+        .legs
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.leg == "home → handover")
+        .map(|(k, l)| {
+            let end = robot
+                .legs
+                .get(k + 1)
+                .map_or(l.t_end, |next| next.t_start)
+                .max(l.t_start);
+            (l.t_start, end)
+        })
+        .collect()
+}
+
+/// The skeleton of a recorded pose (NaN landmarks left out), or `None` when it is malformed.
+fn skeleton_of(m: &ergocell_bridge::msg::OperatorPose, t: u64) -> Option<Skeleton3> {
+    if m.x.len() != LANDMARK_COUNT || m.y.len() != LANDMARK_COUNT || m.z.len() != LANDMARK_COUNT {
+        return None;
+    }
+    let points: [Option<nalgebra::Point3<f64>>; LANDMARK_COUNT] = std::array::from_fn(|i| {
+        let p = nalgebra::Point3::new(m.x[i], m.y[i], m.z[i]);
+        p.iter().all(|v| v.is_finite()).then_some(p)
+    });
+    Skeleton3::from_optional_points(i64::try_from(t).ok()?, &points).ok()
 }
 
 /// A message's header stamp, or its log time when the header has none.

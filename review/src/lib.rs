@@ -8,6 +8,8 @@
 //!   partial copy) is read up to its last complete chunk and says so; a foreign MCAP or a file that is
 //!   not MCAP at all is refused with what could be read.
 //! - [`analysis`]: the messages → [`ReviewData`], the JSON the page renders (`version` 1).
+//! - [`export`]: the session as spreadsheet files — a row per frame, and the summary in `ergocell
+//!   rula track`'s layout.
 //! - [`page`]: the page itself — the HTML shell around the browser bundle built from `web/`
 //!   (three.js + uPlot, vendored, so it works offline), linked for `ergocell review`'s server, or
 //!   everything inlined into one file for `ergocell report`.
@@ -15,6 +17,7 @@
 //! No I/O here: the binary reads the file and serves the page.
 
 pub mod analysis;
+pub mod export;
 pub mod page;
 pub mod read;
 
@@ -34,4 +37,7 @@ pub enum ReviewError {
         message_count: u64,
         channels: String,
     },
+    /// A spreadsheet export could not be written.
+    #[error("writing the CSV export: {reason}")]
+    Export { reason: String },
 }

@@ -102,14 +102,27 @@ pub struct ReportArgs {
     /// report always.
     #[arg(long, default_value = "report.html")]
     pub out: PathBuf,
-    /// Overwrite an existing --out file.
+    /// Also write the session's frames as CSV (a row per recorded frame: time, session state, task
+    /// segment, robot leg, each side's RULA breakdown and REBA score, every joint angle in degrees,
+    /// the warning events), for a spreadsheet. Of the first recording's session.
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Also write the session summary as CSV (`ergocell rula track --summary-csv`'s layout: time
+    /// shares, exposure, REBA, ISO 11226 static postures, task segments, warnings). Of the first
+    /// recording's session.
+    #[arg(long, value_name = "FILE")]
+    pub summary_csv: Option<PathBuf>,
+    /// Overwrite existing output files.
     #[arg(long)]
     pub force: bool,
 }
 
 /// Reads one recording and analyses its operator session `session` (1-based); what is wrong with it
 /// goes to stderr and onto the page.
-fn load(path: &Path, session: usize) -> anyhow::Result<SessionReview> {
+fn load(
+    path: &Path,
+    session: usize,
+) -> anyhow::Result<(SessionReview, ergocell_review::Recording)> {
     let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
     let recording =
         read_recording(&bytes).map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
@@ -145,7 +158,7 @@ fn load(path: &Path, session: usize) -> anyhow::Result<SessionReview> {
     for p in &review.source.problems {
         let _ = writeln!(std::io::stderr(), "warning: {}: {p}", path.display());
     }
-    Ok(review)
+    Ok((review, recording))
 }
 
 /// One line on an operator session: frames, class and height, duration.
@@ -166,12 +179,14 @@ fn describe_part(r: &ergocell_review::Recording) -> String {
     format!("{} frames, {class}, {secs:.0} s", r.poses.len())
 }
 
-fn load_all(input: &Input) -> anyhow::Result<ReviewData> {
-    let mut sessions = vec![load(&input.recording, input.session)?];
+/// The page's data, and the first session's recording (for the CSV exports).
+fn load_all(input: &Input) -> anyhow::Result<(ReviewData, ergocell_review::Recording)> {
+    let (first, recording) = load(&input.recording, input.session)?;
+    let mut sessions = vec![first];
     if let Some(other) = &input.compare {
-        sessions.push(load(other, input.compare_session)?);
+        sessions.push(load(other, input.compare_session)?.0);
     }
-    Ok(ReviewData::new(sessions))
+    Ok((ReviewData::new(sessions), recording))
 }
 
 fn summary(data: &ReviewData) -> String {
@@ -204,10 +219,53 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
     if let Some(other) = &args.input.compare {
         inputs.push(("--compare", other.as_path()));
     }
+    // Every output checked before any work: never an input, never another output, no overwrite
+    // without --force.
     output::check("--out", &args.out, args.force, &inputs)?;
-    let data = load_all(&args.input)?;
+    inputs.push(("--out", args.out.as_path()));
+    for (flag, path) in [("--csv", &args.csv), ("--summary-csv", &args.summary_csv)] {
+        if let Some(path) = path {
+            for (other, p) in &inputs {
+                if other.starts_with("--") && p == path {
+                    return Err(UsageError(format!(
+                        "{flag} {} is also {other}: choose another file",
+                        path.display()
+                    ))
+                    .into());
+                }
+            }
+            output::check(flag, path, args.force, &inputs)?;
+            inputs.push((flag, path.as_path()));
+        }
+    }
+    let (data, recording) = load_all(&args.input)?;
     let html = page::report_page(&data).context("serialising the review")?;
+    let first = &data.sessions[0];
+    let frames_csv = match &args.csv {
+        Some(_) => Some(ergocell_review::export::write_frames(
+            Vec::new(),
+            &recording,
+            first,
+        )?),
+        None => None,
+    };
+    let summary_csv = match &args.summary_csv {
+        Some(_) => Some(ergocell_review::export::write_summary(Vec::new(), first)?),
+        None => None,
+    };
     output::write("--out", &args.out, args.force, html.as_bytes())?;
+    if let (Some(path), Some(bytes)) = (&args.csv, frames_csv) {
+        output::write("--csv", path, args.force, &bytes)?;
+        say!(
+            "frames CSV: {} ({} rows)",
+            path.display(),
+            first.frames.t.len()
+        );
+    }
+    if let (Some(path), Some(bytes)) = (&args.summary_csv, summary_csv) {
+        output::write("--summary-csv", path, args.force, &bytes)?;
+        say!("summary CSV: {}", path.display());
+    }
     say!("{}", summary(&data));
     say!(
         "report: {} ({:.1} MB, self-contained: opens offline in any browser)",
@@ -219,7 +277,7 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
 
 /// What the server holds: everything it can ever answer with.
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let data = load_all(&args.input)?;
+    let (data, _) = load_all(&args.input)?;
     let json = serde_json::to_string(&data).context("serialising the review")?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)

@@ -22,6 +22,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 use ergocell_cell::{Assessment, PipelineConfig};
+use ergocell_ergonomics::activity::{ActivityConfig, ActivityTracker};
 use ergocell_ergonomics::assess::{BodyRegion, SideAssessment};
 use ergocell_ergonomics::export::{self, FrameCsv};
 use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_worksheet};
@@ -263,6 +264,9 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     let mut stage = Assessment::new(&pipeline_config).map_err(|e| UsageError(e.to_string()))?;
     // The one summary (time-weighted, gaps not counted), as `ergocell review` shows it.
     let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+    // Task segments from the skeleton alone (walking, floor pick, in place).
+    let mut activity = ActivityTracker::new(ActivityConfig::default(), &config.up)
+        .map_err(|e| UsageError(e.to_string()))?;
     let t0 = frames[0].stamp_nanos;
     let mut frame_docs = Vec::new();
     let mut events = Vec::new();
@@ -281,7 +285,12 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         let frame = tracked
             .assessment
             .map_err(|e| UsageError(format!("{}: frame {i}: {e}", args.landmarks.display())))?;
-        summary.add(&frame);
+        summary.add(
+            &frame,
+            activity
+                .update(skeleton)
+                .map(ergocell_ergonomics::activity::Activity::name),
+        );
         let new_events = tracked.warnings;
         if let Some(csv) = frame_csv.as_mut() {
             csv.write(&frame, &new_events)?;
@@ -412,6 +421,56 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
             None => r.region.name().to_owned(),
         };
         line(&name, &r.exposure);
+    }
+    if !s.static_postures.is_empty() {
+        println!(
+            "static postures (ISO 11226: held > {} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended not acceptable; neck beyond 25° or extended not acceptable):",
+            ergocell_ergonomics::static_posture::STATIC_MIN_SECS
+        );
+        for p in &s.static_postures {
+            let worst = p
+                .holds
+                .iter()
+                .filter(|h| h.exceeded)
+                .max_by(|a, b| a.duration_secs.total_cmp(&b.duration_secs));
+            println!(
+                "  {:<6} {} static hold(s), {} not acceptable, longest {:.1} s{}",
+                p.part.name(),
+                p.static_holds,
+                p.exceeded,
+                p.longest_secs,
+                worst.map_or(String::new(), |h| format!(
+                    "; worst: {:.1} s at {:.0}° from {:.1} s ({})",
+                    h.duration_secs,
+                    h.peak_deg,
+                    (h.start_nanos - t0) as f64 * 1e-9,
+                    h.limit_secs
+                        .map_or("not acceptable at any duration".to_owned(), |l| {
+                            format!("limit {l:.0} s")
+                        })
+                ))
+            );
+        }
+    }
+    if !s.phases.is_empty() {
+        println!("task segments (from the skeleton: walking, floor pick, in place):");
+        for p in &s.phases {
+            let levels: Vec<String> = p
+                .action_level_share
+                .iter()
+                .enumerate()
+                .map(|(k, x)| format!("AL{} {:.0}%", k + 1, x * 100.0))
+                .collect();
+            println!(
+                "  {:<10} {:6.1} s ({:4.1}% of the time, {} episode(s)); {}; peak grand score {}",
+                p.phase,
+                p.duration_secs,
+                p.time_share * 100.0,
+                p.episodes,
+                levels.join(" "),
+                p.peak_grand_score.map_or("-".to_owned(), |x| x.to_string())
+            );
+        }
     }
     let raised: Vec<String> = BodyRegion::ALL
         .iter()

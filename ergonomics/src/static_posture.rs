@@ -1,0 +1,408 @@
+//! Static postures of the trunk and the neck against ISO 11226:2000 ("Ergonomics — Evaluation of
+//! static working postures"): how long a posture outside the acceptable zone was held, and whether
+//! the standard accepts that.
+//!
+//! # The limits used, and where they come from
+//! The standard itself could not be read here (it is sold, not published). The numbers are the
+//! standard's as two public summaries give them, and they agree:
+//! - **Trunk inclination** (the trunk axis from vertical, forwards; ergocell's trunk flexion):
+//!   0°–20° acceptable; 20°–60° acceptable for a **maximum holding time** falling from 4 min at 20°
+//!   to 1 min at 60° ("20°: max. 4 minuten / 30°: max. 3'15 / 40°: max. 2'30 / 50°: max. 1'45 /
+//!   60°: max. 1′", <https://www.ergonomiesite.be/iso11226/> — a straight line, 4.5 s less per
+//!   degree, [`trunk_max_holding_secs`]); beyond 60° not acceptable; extension (below 0°) acceptable
+//!   only with full support of the trunk (ibid.). Table 2 of an occupational-medicine study,
+//!   "Evaluation guideline values according to ISO 11226 and DIN EN 1005–4"
+//!   (<https://occup-med.biomedcentral.com/articles/10.1186/s12995-020-00286-9/tables/2>), gives the
+//!   same zones: trunk "neutral 0°–20°, moderate 20°–60°, awkward < 0° & > 60°". ergocell does not
+//!   know whether a backrest supports the trunk, so a held extension counts as not acceptable.
+//! - **Neck flexion** (the head relative to the trunk; ergocell's neck flexion): 0°–25° acceptable;
+//!   beyond 25° or any extension not acceptable ("Nekbuiging … < 0° (extensie) niet aanvaardbaar /
+//!   0 – 25° OK / > 25 niet aanvaardbaar", ergonomiesite.be; "cervical spine flexion/extension:
+//!   neutral 0°–25°, awkward < 0° & > 25°", the study's table 2).
+//! - **Static**: a posture held for more than 4 s (EN 1005-4's definition, as
+//!   <https://docs.spinewise.be/en/params/dynamic> quotes it: "a posture held for longer than four
+//!   seconds").
+//!
+//! Not assessed, for want of a source that could be read: the **upper arm**'s holding times (no
+//! public summary of ISO 11226's upper-arm curve was found; a number from memory would be a guess),
+//! the **head inclination** (the head's axis from vertical, which the landmarks give only through the
+//! face) and the standard's **recovery time** (the two versions of the summary disagree: an equally
+//! long rest, or one making the total 80 % of the maximum holding time).
+//!
+//! # How a hold is measured
+//! A hold is a run of frames with the angle outside the acceptable zone, each frame standing for the
+//! time to the next one with the angle (time-weighted, as [`crate::summary`] counts); a frame without
+//! the angle is skipped, and an interval longer than `max_frame_nanos` (a gap in the recording) or a
+//! frame inside the acceptable zone ends it. Band edges follow ergocell's convention
+//! ([`crate::rula`]): a shared edge belongs to the higher band, so 20° is in the time-limited zone,
+//! 60° still in it ("beyond 60°" is strict), 25° of neck flexion acceptable ("0–25° OK", "> 25").
+//! A static hold (longer than [`STATIC_MIN_SECS`]) is **not acceptable** when it stayed in a zone that
+//! is not acceptable at all (trunk beyond 60° or extended, the neck outside 0°–25°) for longer than
+//! [`STATIC_MIN_SECS`] at a stretch, or when it lasted longer than the maximum holding time at the
+//! largest angle it reached within the time-limited zone (conservative: a hold acceptable at its
+//! worst angle is acceptable throughout; a moment beyond 60° within a bend counts at 60°).
+
+use serde::Serialize;
+
+/// A posture held longer than this is static (EN 1005-4), seconds.
+pub const STATIC_MIN_SECS: f64 = 4.0;
+
+/// Trunk flexion at which the time-limited zone starts and ends, degrees (ISO 11226).
+pub const TRUNK_ZONE_DEG: [f64; 2] = [20.0, 60.0];
+/// The maximum holding times at the zone's two ends, seconds (4 min at 20°, 1 min at 60°).
+pub const TRUNK_HOLDING_SECS: [f64; 2] = [240.0, 60.0];
+/// Neck flexion beyond which a held posture is not acceptable, degrees (ISO 11226).
+pub const NECK_ACCEPTABLE_MAX_DEG: f64 = 25.0;
+
+/// The body parts assessed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BodyPart {
+    Trunk,
+    Neck,
+}
+
+impl BodyPart {
+    pub const ALL: [Self; 2] = [Self::Trunk, Self::Neck];
+
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Trunk => "trunk",
+            Self::Neck => "neck",
+        }
+    }
+
+    /// Whether `deg` is in a zone not acceptable at any duration.
+    fn not_acceptable(self, deg: f64) -> bool {
+        self.max_holding_secs(deg).is_none()
+    }
+
+    /// Whether `deg` is outside this part's acceptable zone.
+    fn outside(self, deg: f64) -> bool {
+        match self {
+            Self::Trunk => !(0.0..TRUNK_ZONE_DEG[0]).contains(&deg),
+            Self::Neck => !(0.0..=NECK_ACCEPTABLE_MAX_DEG).contains(&deg),
+        }
+    }
+
+    /// The longest acceptable holding time of a posture at `deg`, seconds: `None` when not
+    /// acceptable at all, infinite inside the acceptable zone.
+    pub fn max_holding_secs(self, deg: f64) -> Option<f64> {
+        match self {
+            Self::Trunk => trunk_max_holding_secs(deg),
+            Self::Neck => (!self.outside(deg)).then_some(f64::INFINITY),
+        }
+    }
+}
+
+/// ISO 11226's maximum holding time of a trunk inclination, seconds: infinite from 0° to below 20°,
+/// 240 s at 20° falling linearly to 60 s at 60°, `None` (not acceptable) beyond 60° and for extension.
+pub fn trunk_max_holding_secs(flexion_deg: f64) -> Option<f64> {
+    let [lo, hi] = TRUNK_ZONE_DEG;
+    let [at_lo, at_hi] = TRUNK_HOLDING_SECS;
+    if !(0.0..=hi).contains(&flexion_deg) {
+        None
+    } else if flexion_deg < lo {
+        Some(f64::INFINITY)
+    } else {
+        Some(at_lo + (at_hi - at_lo) * (flexion_deg - lo) / (hi - lo))
+    }
+}
+
+/// One static hold outside the acceptable zone.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StaticHold {
+    pub part: BodyPart,
+    /// When it started (the frame's stamp), nanoseconds.
+    pub start_nanos: i64,
+    pub duration_secs: f64,
+    /// The angle farthest from the acceptable zone it reached, degrees.
+    pub peak_deg: f64,
+    /// The maximum holding time at the largest angle it reached within the time-limited zone,
+    /// seconds; `None` when it never was in one (every neck hold, a trunk extension).
+    pub limit_secs: Option<f64>,
+    /// Its longest unbroken stretch in a zone not acceptable at all, seconds (0 when none).
+    pub not_acceptable_secs: f64,
+    /// Static in a zone that is not acceptable, or held longer than `limit_secs`.
+    pub exceeded: bool,
+}
+
+/// One body part's static holds over a session.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StaticPostureSummary {
+    pub part: BodyPart,
+    /// Holds outside the acceptable zone longer than [`STATIC_MIN_SECS`].
+    pub static_holds: usize,
+    /// Of them, those ISO 11226 does not accept (too long, or in a zone not acceptable at all).
+    pub exceeded: usize,
+    /// The longest static hold, seconds (0 when none).
+    pub longest_secs: f64,
+    /// All static holds together, seconds.
+    pub total_secs: f64,
+    /// Every static hold, in time order.
+    pub holds: Vec<StaticHold>,
+}
+
+/// A hold under way.
+#[derive(Debug, Clone, Copy)]
+struct Run {
+    start: i64,
+    duration: f64,
+    peak: f64,
+    /// The largest angle within the time-limited zone (trunk 20°–60°).
+    limited_peak: Option<f64>,
+    /// The current and the longest stretch in a zone not acceptable at all.
+    bad_now: f64,
+    bad_longest: f64,
+}
+
+/// The holds of one part from `(stamp, angle in degrees, the frame's time in seconds)` in time order.
+fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary {
+    let mut holds = Vec::new();
+    let mut current: Option<Run> = None;
+    let mut close = |run: Option<Run>| {
+        if let Some(r) = run {
+            if r.duration > STATIC_MIN_SECS {
+                let limit = r.limited_peak.and_then(|deg| part.max_holding_secs(deg));
+                holds.push(StaticHold {
+                    part,
+                    start_nanos: r.start,
+                    duration_secs: r.duration,
+                    peak_deg: r.peak,
+                    limit_secs: limit,
+                    not_acceptable_secs: r.bad_longest,
+                    exceeded: r.bad_longest > STATIC_MIN_SECS
+                        || limit.is_some_and(|l| r.duration > l),
+                });
+            }
+        }
+    };
+    for &(t, deg, dt) in samples {
+        if part.outside(deg) {
+            let r = current.get_or_insert(Run {
+                start: t,
+                duration: 0.0,
+                peak: deg,
+                limited_peak: None,
+                bad_now: 0.0,
+                bad_longest: 0.0,
+            });
+            r.duration += dt;
+            // the farthest from the zone: the largest flexion, or the deepest extension
+            if (deg < 0.0 && deg < r.peak) || (deg >= 0.0 && deg > r.peak) {
+                r.peak = deg;
+            }
+            if part.not_acceptable(deg) {
+                r.bad_now += dt;
+                r.bad_longest = r.bad_longest.max(r.bad_now);
+            } else {
+                r.bad_now = 0.0;
+                r.limited_peak = Some(r.limited_peak.map_or(deg, |p| p.max(deg)));
+            }
+        } else {
+            close(current.take());
+        }
+    }
+    close(current.take());
+    StaticPostureSummary {
+        part,
+        static_holds: holds.len(),
+        exceeded: holds.iter().filter(|h| h.exceeded).count(),
+        longest_secs: holds.iter().map(|h| h.duration_secs).fold(0.0, f64::max),
+        total_secs: holds
+            .iter()
+            .map(|h| h.duration_secs)
+            .fold(0.0, |a, b| a + b),
+        holds,
+    }
+}
+
+/// The static holds of the trunk and the neck from the frames' flexion angles (radians, `None` where
+/// not observed) in time order; intervals longer than `max_frame_nanos` are gaps (see the module
+/// docs).
+pub fn static_postures(
+    frames: &[(i64, Option<f64>, Option<f64>)],
+    max_frame_nanos: i64,
+) -> Vec<StaticPostureSummary> {
+    BodyPart::ALL
+        .iter()
+        .map(|&part| {
+            let observed: Vec<(i64, f64)> = frames
+                .iter()
+                .filter_map(|&(t, trunk, neck)| {
+                    let rad = match part {
+                        BodyPart::Trunk => trunk,
+                        BodyPart::Neck => neck,
+                    }?;
+                    rad.is_finite().then(|| (t, rad.to_degrees()))
+                })
+                .collect();
+            let intervals: Vec<i64> = observed.windows(2).map(|w| w[1].0 - w[0].0).collect();
+            let mut normal: Vec<i64> = intervals
+                .iter()
+                .copied()
+                .filter(|&d| d <= max_frame_nanos)
+                .collect();
+            normal.sort_unstable();
+            let typical = normal.get(normal.len() / 2).copied().unwrap_or(0) as f64 * 1e-9;
+            // Split at gaps: each piece's holds separately.
+            let mut summary: Option<StaticPostureSummary> = None;
+            let mut piece: Vec<(i64, f64, f64)> = Vec::new();
+            let mut flush = |piece: &mut Vec<(i64, f64, f64)>| {
+                let s = holds_of(part, piece);
+                piece.clear();
+                match summary.as_mut() {
+                    None => summary = Some(s),
+                    Some(acc) => {
+                        acc.static_holds += s.static_holds;
+                        acc.exceeded += s.exceeded;
+                        acc.longest_secs = acc.longest_secs.max(s.longest_secs);
+                        acc.total_secs += s.total_secs;
+                        acc.holds.extend(s.holds);
+                    }
+                }
+            };
+            for (i, &(t, deg)) in observed.iter().enumerate() {
+                let dt = intervals.get(i).copied();
+                let gap = dt.is_some_and(|d| d > max_frame_nanos);
+                let secs = match dt {
+                    Some(d) if !gap => d as f64 * 1e-9,
+                    _ => typical,
+                };
+                piece.push((t, deg, secs));
+                if gap {
+                    flush(&mut piece);
+                }
+            }
+            flush(&mut piece);
+            summary.unwrap_or_else(|| holds_of(part, &[]))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MS: i64 = 1_000_000;
+
+    /// `secs` of frames at 10 Hz at `deg` each, from `t0_ms`.
+    fn hold(
+        t0_ms: i64,
+        secs: f64,
+        trunk_deg: f64,
+        neck_deg: f64,
+    ) -> Vec<(i64, Option<f64>, Option<f64>)> {
+        let n = (secs * 10.0).round() as i64;
+        (0..n)
+            .map(|k| {
+                (
+                    (t0_ms + k * 100) * MS,
+                    Some(trunk_deg.to_radians()),
+                    Some(neck_deg.to_radians()),
+                )
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_trunk_limit_is_the_summarys_table() {
+        // ergonomiesite.be: 20° 4', 30° 3'15, 40° 2'30, 50° 1'45, 60° 1'.
+        for (deg, secs) in [
+            (20.0, 240.0),
+            (30.0, 195.0),
+            (40.0, 150.0),
+            (50.0, 105.0),
+            (60.0, 60.0),
+        ] {
+            assert!(
+                (trunk_max_holding_secs(deg).unwrap() - secs).abs() < 1e-9,
+                "{deg}"
+            );
+        }
+        assert_eq!(trunk_max_holding_secs(19.9), Some(f64::INFINITY));
+        assert_eq!(trunk_max_holding_secs(60.01), None);
+        assert_eq!(trunk_max_holding_secs(-0.5), None);
+        assert_eq!(BodyPart::Neck.max_holding_secs(25.0), Some(f64::INFINITY));
+        assert_eq!(BodyPart::Neck.max_holding_secs(25.1), None);
+        assert_eq!(BodyPart::Neck.max_holding_secs(-1.0), None);
+    }
+
+    #[test]
+    fn a_hold_is_judged_by_its_length_against_the_limit_at_its_worst_angle() {
+        // Upright 2 s, trunk 40° for 100 s (limit 150 s: fine), upright, 55° for 120 s (limit 82.5 s:
+        // exceeded), upright, 70° for 3 s (not static), upright, 30° for 5 s then 70° for 2 s (one
+        // static hold, judged at 30°'s limit: fine), upright, 45° 1 s then 65° for 5 s (beyond 60°
+        // for more than 4 s: not acceptable).
+        let mut frames = hold(0, 2.0, 5.0, 10.0);
+        frames.extend(hold(2_000, 100.0, 40.0, 10.0));
+        frames.extend(hold(102_000, 2.0, 5.0, 10.0));
+        frames.extend(hold(104_000, 120.0, 55.0, 10.0));
+        frames.extend(hold(224_000, 2.0, 5.0, 10.0));
+        frames.extend(hold(226_000, 3.0, 70.0, 10.0));
+        frames.extend(hold(229_000, 2.0, 5.0, 10.0));
+        frames.extend(hold(231_000, 5.0, 30.0, 10.0));
+        frames.extend(hold(236_000, 2.0, 70.0, 10.0));
+        frames.extend(hold(238_000, 2.0, 5.0, 10.0));
+        frames.extend(hold(240_000, 1.0, 45.0, 10.0));
+        frames.extend(hold(241_000, 5.0, 65.0, 10.0));
+        frames.extend(hold(246_000, 2.0, 5.0, 10.0));
+        let s = static_postures(&frames, 1_000_000_000);
+        let trunk = &s[0];
+        assert_eq!(trunk.part, BodyPart::Trunk);
+        assert_eq!((trunk.static_holds, trunk.exceeded), (4, 2), "{trunk:?}");
+        let [_, _, c, d] = [
+            trunk.holds[0],
+            trunk.holds[1],
+            trunk.holds[2],
+            trunk.holds[3],
+        ];
+        assert!((c.duration_secs - 7.0).abs() < 1e-6 && !c.exceeded, "{c:?}");
+        assert_eq!(c.peak_deg.round(), 70.0);
+        assert!((c.limit_secs.unwrap() - 195.0).abs() < 1e-6);
+        assert!((c.not_acceptable_secs - 2.0).abs() < 1e-6);
+        assert!(
+            d.exceeded && (d.not_acceptable_secs - 5.0).abs() < 1e-6,
+            "{d:?}"
+        );
+        let [a, b] = [trunk.holds[0], trunk.holds[1]];
+        assert!((a.duration_secs - 100.0).abs() < 1e-6 && !a.exceeded);
+        assert!((a.limit_secs.unwrap() - 150.0).abs() < 1e-9);
+        assert!((b.duration_secs - 120.0).abs() < 1e-6 && b.exceeded);
+        assert_eq!(b.start_nanos, 104_000 * MS);
+        assert!((trunk.longest_secs - 120.0).abs() < 1e-6);
+        // The neck stayed at 10°: acceptable, no holds.
+        assert_eq!(s[1].static_holds, 0);
+    }
+
+    #[test]
+    fn a_held_neck_beyond_25_degrees_or_extended_is_not_acceptable() {
+        let mut frames = hold(0, 5.0, 5.0, 35.0);
+        frames.extend(hold(5_000, 1.0, 5.0, 10.0));
+        frames.extend(hold(6_000, 6.0, 5.0, -8.0));
+        let neck = &static_postures(&frames, 1_000_000_000)[1];
+        assert_eq!((neck.static_holds, neck.exceeded), (2, 2));
+        assert_eq!(neck.holds[0].peak_deg.round(), 35.0);
+        assert_eq!(neck.holds[1].peak_deg.round(), -8.0);
+        assert_eq!(neck.holds[1].limit_secs, None);
+    }
+
+    #[test]
+    fn gaps_and_unobserved_frames() {
+        // 3 s bent, a 5 s gap (no frames), 3 s bent: two 3 s holds, neither static.
+        let mut frames = hold(0, 3.0, 45.0, 10.0);
+        frames.extend(hold(8_000, 3.0, 45.0, 10.0));
+        assert_eq!(static_postures(&frames, 1_000_000_000)[0].static_holds, 0);
+        // 3 s bent, 0.5 s not observed, 3 s bent: one hold of 6.5 s (the unobserved frames skipped).
+        let mut frames = hold(0, 3.0, 45.0, 10.0);
+        frames.extend((0..5).map(|k| ((3_000 + k * 100) * MS, None, None)));
+        frames.extend(hold(3_500, 3.0, 45.0, 10.0));
+        let trunk = &static_postures(&frames, 1_000_000_000)[0];
+        assert_eq!(trunk.static_holds, 1);
+        assert!((trunk.longest_secs - 6.5).abs() < 1e-6, "{trunk:?}");
+        // Nothing observed: no holds, no panic.
+        assert!(static_postures(&[], 1_000_000_000)
+            .iter()
+            .all(|s| s.static_holds == 0));
+    }
+}
