@@ -26,6 +26,7 @@ use ergocell_ergonomics::activity::{ActivityConfig, ActivityTracker};
 use ergocell_ergonomics::assess::{BodyRegion, SideAssessment};
 use ergocell_ergonomics::export::{self, FrameCsv};
 use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_worksheet};
+use ergocell_ergonomics::static_posture::STATIC_MIN_SECS;
 use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
 use ergocell_ergonomics::{AssessmentConfig, RulaScores, Side, TaskConfig, UpVector};
 use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
@@ -425,7 +426,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     if !s.static_postures.is_empty() {
         println!(
             "static postures (ISO 11226: held > {} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended not acceptable; neck beyond 25° or extended not acceptable):",
-            ergocell_ergonomics::static_posture::STATIC_MIN_SECS
+            STATIC_MIN_SECS
         );
         for p in &s.static_postures {
             let worst = p
@@ -439,16 +440,23 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
                 p.static_holds,
                 p.exceeded,
                 p.longest_secs,
-                worst.map_or(String::new(), |h| format!(
-                    "; worst: {:.1} s at {:.0}° from {:.1} s ({})",
-                    h.duration_secs,
-                    h.peak_deg,
-                    (h.start_nanos - t0) as f64 * 1e-9,
-                    h.limit_secs
-                        .map_or("not acceptable at any duration".to_owned(), |l| {
-                            format!("limit {l:.0} s")
-                        })
-                ))
+                worst.map_or(String::new(), |h| {
+                    let why = match h.limit_secs {
+                        Some(l) if h.not_acceptable_secs <= STATIC_MIN_SECS => {
+                            format!("longer than the {l:.0} s allowed at its largest angle")
+                        }
+                        _ => format!(
+                            "{:.1} s of it in a zone not acceptable at any duration",
+                            h.not_acceptable_secs
+                        ),
+                    };
+                    format!(
+                        "; worst: {:.1} s from {:.1} s, up to {:.0}°: {why}",
+                        h.duration_secs,
+                        (h.start_nanos - t0) as f64 * 1e-9,
+                        h.peak_deg,
+                    )
+                })
             );
         }
     }

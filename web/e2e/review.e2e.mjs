@@ -61,7 +61,19 @@ await main(async (b) => {
   const card = await page.textContent('#robot');
   if (!/home → handover/.test(card)) fail(`the robot card lists no leg home → handover: ${JSON.stringify(card.slice(0, 200))}`);
 
-  // 5. the screenshot.
+  // 5. REBA beside RULA, the task segments and ISO 11226's static postures (#20).
+  const rows = await page.$$eval('#regions tbody th', (ths) => ths.map((t) => t.textContent));
+  if (!rows.some((r) => /REBA score/.test(r))) fail(`the body regions table has no REBA row: ${JSON.stringify(rows)}`);
+  if (!rows.some((r) => /Action level/.test(r))) fail(`the body regions table has no action level row: ${JSON.stringify(rows)}`);
+  const phases = await page.$$eval('#segments tr[data-phase]', (trs) => trs.map((t) => t.getAttribute('data-phase')));
+  for (const want of ['walking', 'floor pick', 'handover']) {
+    if (!phases.includes(want)) fail(`the task segments table has no "${want}" row: ${JSON.stringify(phases)}`);
+  }
+  const parts = await page.$$eval('#segments tr[data-part]', (trs) => trs.map((t) => t.getAttribute('data-part')));
+  if (parts.join() !== 'trunk,neck') fail(`the static postures table lists ${JSON.stringify(parts)}, not trunk and neck`);
+  pass(`REBA and action level rows in the regions table; task segments ${phases.join(', ')}; static postures of ${parts.join(' and ')}`);
+
+  // 6. the screenshot.
   await page.mouse.move(5, 5);
   await page.waitForTimeout(200);
   await screenshot(b, shot);

@@ -196,6 +196,8 @@ export function normalizeSession(s, index) {
     handover,
     warnings: arr(s.warnings).filter((w) => w && num(w.t) !== null).sort((a, b) => a.t - b.t),
     regions: arr(s.regions).filter((r) => r && typeof r === 'object'),
+    // The session summary: task segments, static postures, REBA (absent in older data).
+    summary: s.summary && typeof s.summary === 'object' ? s.summary : {},
     angles: arr(s.angles)
       .filter((a) => a && typeof a === 'object')
       .map((a) => ({ ...a, score_edges_deg: scoreEdges(a.score_edges_deg) })),

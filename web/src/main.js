@@ -5,7 +5,7 @@ import './style.css';
 import { loadData, normalizeSession, nearestFrame, frameAtOrBefore, legAt } from './data.js';
 import { SkeletonView } from './view3d.js';
 import { createTimeline, SERIES_COLORS, legColor } from './timeline.js';
-import { renderFacts, renderStates, renderWarnings, renderRobot, renderRegions, renderAngles, esc, SESSION_COLORS } from './panels.js';
+import { renderFacts, renderStates, renderWarnings, renderRobot, renderRegions, renderSegments, renderAngles, esc, SESSION_COLORS } from './panels.js';
 import { gradientCss } from './colormap.js';
 
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
@@ -88,6 +88,7 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
     <div id="timeline"></div>
   </section>
   <section class="card" id="regions"></section>
+  <section class="card" id="segments"></section>
   <section class="card" id="angles"></section>
 </main>
 <footer class="foot">ergocell review · RULA scores per frame from the fused 3D skeleton · lengths in metres, angles in degrees</footer>`;
@@ -175,6 +176,7 @@ function start(app, raw) {
   renderRobot($('robot'), sessions, onSeekList);
   renderStates($('states'), sessions, onSeekList);
   renderRegions($('regions'), sessions);
+  renderSegments($('segments'), sessions);
   renderAngles($('angles'), sessions);
 
   function update() {

@@ -222,6 +222,70 @@ export function renderRegions(el, sessions) {
   el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region, grand score per side and the worse side's action level; REBA score per side below when recorded; bar segments from score 1 (deep blue) to the row's maximum (deep red)</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
 }
 
+/** A bar of shares over levels `first..`, coloured like a score out of `n` levels. */
+function levelBar(shares, first, what) {
+  const xs = Array.isArray(shares) ? shares.map((v) => Math.max(0, Number(v) || 0)) : [];
+  if (!xs.some((v) => v > 0)) return '<span class="muted small">–</span>';
+  const segs = xs
+    .map((v, i) => {
+      const pct = v * 100;
+      if (pct <= 0) return '';
+      const level = i + first;
+      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${scoreCss(i + 1, xs.length)}" title="${what} ${level}: ${pct.toFixed(1)} %">${pct >= 9 ? level : ''}</span>`;
+    })
+    .join('');
+  return `<div class="sharebar"><div class="bar">${segs}</div></div>`;
+}
+
+/** Why a static hold is not acceptable, in words. */
+function holdText(h) {
+  if (h.not_acceptable_secs > 4 || h.limit_secs == null) {
+    return `${fmt(h.duration_secs, 1)} s, ${fmt(h.not_acceptable_secs, 1)} s of it in a zone not acceptable at any duration (up to ${fmt(h.peak_deg, 0)}°)`;
+  }
+  return `${fmt(h.duration_secs, 1)} s, longer than the ${fmt(h.limit_secs, 0)} s allowed at its largest angle (up to ${fmt(h.peak_deg, 0)}°)`;
+}
+
+/**
+ * Exposure by task segment (walking, floor pick, handover, in place) and ISO 11226's static
+ * postures, from the session summary (one session; a comparison shows the first).
+ */
+export function renderSegments(el, sessions) {
+  const s = sessions[0];
+  const summary = s.summary || {};
+  const phases = Array.isArray(summary.phases) ? summary.phases : [];
+  const statics = Array.isArray(summary.static_postures) ? summary.static_postures : [];
+  const hasReba = Array.isArray(summary.reba_score) && summary.reba_score.length > 0;
+  const cmp = sessions.length > 1 ? ` <span class="hint">session A (${esc(s.label)})</span>` : '';
+  let html = `<h2>Task segments${cmp} <span class="hint">from the skeleton (walking, floor pick) and the robot (handover: a part on its way or waiting); action level of the worse side per segment</span></h2>`;
+  if (!phases.length) {
+    html += '<div class="empty">No task segments: the recording has no skeletons with hips.</div>';
+  } else {
+    const rows = phases
+      .map((p) => {
+        const e3 = (p.action_level_exposure || []).find((x) => x.at_least === 3);
+        const stretch = e3 && e3.episodes > 0 ? `${e3.episodes}× · longest ${fmt(e3.longest_secs, 1)} s` : '<span class="muted">–</span>';
+        return `<tr data-phase="${esc(p.phase)}"><th>${esc(titleCase(p.phase))}</th><td class="num">${fmt(p.duration_secs, 1)} s</td><td class="num">${fmt(p.time_share * 100, 1)} %</td><td class="num">${esc(p.episodes)}</td><td>${levelBar(p.action_level_share, 1, 'action level')}</td><td class="small">${stretch}</td>${hasReba ? `<td>${levelBar(p.reba_action_level_share, 0, 'REBA action level')}</td>` : ''}<td class="num">${p.peak_grand_score ?? '–'}</td></tr>`;
+      })
+      .join('');
+    html += `<table class="regions segments"><thead><tr><th>Segment</th><th class="num">time</th><th class="num">share</th><th class="num">episodes</th><th>RULA action level 1–4</th><th>at level ≥ 3</th>${hasReba ? '<th>REBA action level 0–4</th>' : ''}<th class="num">peak grand</th></tr></thead><tbody>${rows}</tbody></table>`;
+  }
+  html += `<h2 class="sub">Static postures <span class="hint">ISO 11226: held &gt; 4 s outside the acceptable zone · trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°; beyond 60° or extended, and the neck outside 0°–25°, not acceptable · upper arm not assessed (no readable source for its holding times)</span></h2>`;
+  if (!statics.length) {
+    html += '<div class="empty">No trunk or neck angles in this recording.</div>';
+  } else {
+    const rows = statics
+      .map((p) => {
+        const worst = (p.holds || []).filter((h) => h.exceeded).sort((a, b) => b.duration_secs - a.duration_secs)[0];
+        const w = worst ? holdText(worst) : '<span class="muted">–</span>';
+        const bad = p.exceeded > 0 ? `<span class="badge danger">${esc(p.exceeded)}</span>` : '<span class="badge ok">0</span>';
+        return `<tr data-part="${esc(p.part)}"><th>${esc(titleCase(p.part))}</th><td class="num">${esc(p.static_holds)}</td><td class="num">${bad}</td><td class="num">${fmt(p.longest_secs, 1)} s</td><td class="small">${w}</td></tr>`;
+      })
+      .join('');
+    html += `<table class="regions statics"><thead><tr><th>Body part</th><th class="num">static holds</th><th class="num">not acceptable</th><th class="num">longest</th><th>worst not acceptable</th></tr></thead><tbody>${rows}</tbody></table>`;
+  }
+  el.innerHTML = html;
+}
+
 function sameEdges(a, b) {
   return a.length === b.length && a.every((v, i) => Math.abs(v - b[i]) < 1e-9);
 }
