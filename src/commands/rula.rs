@@ -425,8 +425,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     }
     if !s.static_postures.is_empty() {
         println!(
-            "static postures (ISO 11226: held > {} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended not acceptable; neck beyond 25° or extended not acceptable):",
-            STATIC_MIN_SECS
+            "static postures (ISO 11226: held > {STATIC_MIN_SECS} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended not acceptable; neck beyond 25° or extended not acceptable):"
         );
         for p in &s.static_postures {
             let worst = p
