@@ -12,8 +12,9 @@ bin=target/release/ergocell
 
 # The README's demo (default seed and cycles).
 "$bin" demo --out "$tmp/demo.mcap" >/dev/null
-# The committed report is regenerated in place: overwritten on purpose.
-"$bin" report "$tmp/demo.mcap" --out "$out/demo-report.html" --force
+# The committed report and its CSV exports are regenerated in place: overwritten on purpose.
+"$bin" report "$tmp/demo.mcap" --out "$out/demo-report.html" --force \
+  --csv "$out/demo-frames.csv" --summary-csv "$out/demo-summary.csv"
 "$bin" review "$tmp/demo.mcap" --port 0 >"$tmp/review.log" &
 server=$!
 for _ in $(seq 50); do grep -q '^review: ' "$tmp/review.log" && break; sleep 0.1; done
