@@ -344,7 +344,7 @@ pub fn skeleton_message(
 }
 
 /// The joint angles recorded in [`OperatorPose::angle_names`], in this order.
-pub const ANGLE_NAMES: [&str; 16] = [
+pub const ANGLE_NAMES: [&str; 18] = [
     "trunk_flexion",
     "trunk_side_bend",
     "trunk_twist",
@@ -361,6 +361,8 @@ pub const ANGLE_NAMES: [&str; 16] = [
     "right_elbow_flexion",
     "right_wrist_flexion",
     "right_wrist_deviation",
+    "left_upper_arm_elevation",
+    "right_upper_arm_elevation",
 ];
 
 /// The fused skeleton by landmark index (NaN where not fused) and, when the frame was assessed, the
@@ -403,6 +405,8 @@ pub fn operator_pose_message(
             b.right.elbow_flexion_rad,
             b.right.wrist_flexion_rad,
             b.right.wrist_deviation_rad,
+            b.left.upper_arm_elevation_rad,
+            b.right.upper_arm_elevation_rad,
         ];
         m.angle_names = ANGLE_NAMES.iter().map(|&n| n.to_owned()).collect();
         m.angle_rad = values.iter().map(|v| v.unwrap_or(f64::NAN)).collect();

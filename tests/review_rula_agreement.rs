@@ -364,6 +364,18 @@ fn report_csv_exports_round_trip_rula_tracks() {
     assert_eq!(value("static_holds_exceeding_iso11226", "trunk", ""), 0.0);
     assert_eq!(value("static_holds_exceeding_iso11226", "neck", ""), 1.0);
     assert!((value("longest_static_hold", "neck", "") - 6.0).abs() < 0.25);
+    // The arms hang from the shoulders, so in the bend they are 45° from vertical: one static hold
+    // each, in the 20°–60° zone whose holding time no readable source gives — counted, no verdict.
+    let arm = |q: &str| -> f64 {
+        s1.iter()
+            .find(|r| &r[0] == q && &r[1] == "left" && &r[2] == "upper_arm")
+            .unwrap_or_else(|| panic!("{q}"))[4]
+            .parse()
+            .unwrap()
+    };
+    assert_eq!(arm("static_holds"), 1.0);
+    assert_eq!(arm("static_holds_limit_unknown"), 1.0);
+    assert_eq!(arm("static_holds_exceeding_iso11226"), 0.0);
     // The task segments: walking at the start (once its speed is measured), the pick, in place.
     for phase in ["walking", "floor pick", "in place"] {
         assert!(value("phase_duration", "", phase) > 0.0, "{phase}");

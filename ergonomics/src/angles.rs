@@ -47,6 +47,8 @@
 //!   `right − left` over the face's mirror pairs (ears, outer/centre/inner eyes, mouth corners), all
 //!   parallel to the ear line on a rigid head ([`head_lateral_axis`]). If an ear is missing, from `f`
 //!   to the nose direction (nose − shoulder midpoint) projected the same way.
+//! - **Upper-arm elevation** (for ISO 11226's static postures): the angle between the upper arm
+//!   `a` and the world's downward vertical `−u`, in any direction (not relative to the trunk).
 //! - **Knee flexion** (for REBA): angle between the thigh `knee − hip` and the shank `ankle − knee`;
 //!   0 = straight.
 //! - **Legs**: each foot's lowest point (ankle, heel, foot index) above the floor along `u`; the floor
@@ -116,6 +118,9 @@ pub struct SideAngles {
     pub wrist_lateral_offset_m: Option<f64>,
     /// Knee flexion (REBA's legs), radians; 0 = straight.
     pub knee_flexion_rad: Option<f64>,
+    /// The upper arm's elevation from the world's vertical (ISO 11226's upper arm elevation, in any
+    /// direction), radians; 0 = hanging straight down.
+    pub upper_arm_elevation_rad: Option<f64>,
 }
 
 /// What the feet say about the legs.
@@ -424,9 +429,17 @@ fn legs(s: &Skeleton3, up: &UpVector, floor_height_m: Option<f64>) -> Option<Leg
 /// Extracts every angle of one frame. `floor_height_m` is the floor's height along `up`, when known.
 pub fn body_angles(s: &Skeleton3, up: &UpVector, floor_height_m: Option<f64>) -> BodyAngles {
     let frame = trunk_frame(s);
+    let u = up.vector();
+    let elevation = |shoulder: Landmark, elbow: Landmark| {
+        angle_between(s.position(elbow)? - s.position(shoulder)?, -u)
+    };
+    let mut left = side_angles(s, frame.as_ref(), Side::Left);
+    left.upper_arm_elevation_rad = elevation(Landmark::LeftShoulder, Landmark::LeftElbow);
+    let mut right = side_angles(s, frame.as_ref(), Side::Right);
+    right.upper_arm_elevation_rad = elevation(Landmark::RightShoulder, Landmark::RightElbow);
     let mut out = BodyAngles {
-        left: side_angles(s, frame.as_ref(), Side::Left),
-        right: side_angles(s, frame.as_ref(), Side::Right),
+        left,
+        right,
         legs: legs(s, up, floor_height_m),
         shoulder_width_m: frame.map(|f| f.shoulder_width_m),
         ..BodyAngles::default()

@@ -284,7 +284,8 @@ fn secs(v: f64) -> String {
 /// score (`episodes_at_least`, `longest_stretch_at_least`, `time_at_least`: the level in the score
 /// column), REBA's action level shares and exposure (region `reba_action_level`) and score shares
 /// (`reba_score_share`) when the frames carry REBA, ISO 11226's static postures per body part
-/// (`static_holds`, `static_holds_exceeding_iso11226`, `longest_static_hold`, `static_hold_time`),
+/// (`static_holds`, `static_holds_exceeding_iso11226`, `static_holds_limit_unknown`,
+/// `longest_static_hold`, `static_hold_time`; the upper arms by side),
 /// and the warnings raised per region ([`raised_per_region`]). Then per task segment (`phase` its
 /// name): `phase_duration`, `phase_time_share`, `phase_episodes`, `phase_unscored_share`,
 /// `phase_peak_grand_score`, its action level shares and exposure and its REBA action level shares.
@@ -374,10 +375,10 @@ pub fn write_summary<W: Write>(
         }
     }
     for p in &summary.static_postures {
-        let part = p.part.name();
+        let (part, side) = p.part.region_and_side();
         r.row(
             "static_holds",
-            "",
+            side,
             part,
             "",
             &p.static_holds.to_string(),
@@ -386,16 +387,25 @@ pub fn write_summary<W: Write>(
         let exceeded = p.exceeded.to_string();
         r.row(
             "static_holds_exceeding_iso11226",
-            "",
+            side,
             part,
             "",
             &exceeded,
             "count",
         )?;
+        let unknown = p.limit_unknown.to_string();
+        r.row(
+            "static_holds_limit_unknown",
+            side,
+            part,
+            "",
+            &unknown,
+            "count",
+        )?;
         let longest = secs(p.longest_secs);
-        r.row("longest_static_hold", "", part, "", &longest, "s")?;
+        r.row("longest_static_hold", side, part, "", &longest, "s")?;
         let total = secs(p.total_secs);
-        r.row("static_hold_time", "", part, "", &total, "s")?;
+        r.row("static_hold_time", side, part, "", &total, "s")?;
     }
     for (region, raised) in warnings_raised {
         r.row(

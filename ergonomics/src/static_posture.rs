@@ -23,11 +23,22 @@
 //!   <https://docs.spinewise.be/en/params/dynamic> quotes it: "a posture held for longer than four
 //!   seconds").
 //!
-//! Not assessed, for want of a source that could be read: the **upper arm**'s holding times (no
-//! public summary of ISO 11226's upper-arm curve was found; a number from memory would be a guess),
-//! the **head inclination** (the head's axis from vertical, which the landmarks give only through the
-//! face) and the standard's **recovery time** (the two versions of the summary disagree: an equally
-//! long rest, or one making the total 80 % of the maximum holding time).
+//! - **Upper arm elevation** (the upper arm from the world's vertical, any direction; per side):
+//!   0°–20° acceptable, 20°–60° conditionally acceptable, beyond 60° not acceptable — EN 1005-4's
+//!   zones as the posture table of a public 3DEXPERIENCE ergonomics help page reproduces them
+//!   ("Acceptable - Upper arms angle | 0–20 degrees"; "20–60 degrees" acceptable or conditionally
+//!   acceptable by frequency; "Not Acceptable - Upper arms angle | Greater than 60 degrees",
+//!   <https://help-3dexperience.aesvietnam.com/English/DelMhtUserMap/mht-t-Fault_Monitor.htm>).
+//!   ISO 11226 gives the 20°–60° zone a maximum holding time, but no readable source for its numbers
+//!   was found (one open-source tool uses 3 min at 20° to 1 min at 60° without a source; a number
+//!   from memory would be a guess): such holds are **reported with their durations and no verdict**
+//!   ([`Limit::Unknown`]) — the ergonomist judges them — while a static hold beyond 60° is not
+//!   acceptable.
+//!
+//! Not assessed, for want of a source that could be read: the **head inclination** (the head's axis
+//! from vertical, which the landmarks give only through the face) and the standard's **recovery
+//! time** (the two versions of the summary disagree: an equally long rest, or one making the total
+//! 80 % of the maximum holding time).
 //!
 //! # How a hold is measured
 //! A hold is a run of frames with the angle outside the acceptable zone, each frame standing for the
@@ -53,6 +64,23 @@ pub const TRUNK_ZONE_DEG: [f64; 2] = [20.0, 60.0];
 pub const TRUNK_HOLDING_SECS: [f64; 2] = [240.0, 60.0];
 /// Neck flexion beyond which a held posture is not acceptable, degrees (ISO 11226).
 pub const NECK_ACCEPTABLE_MAX_DEG: f64 = 25.0;
+/// Upper arm elevation at which the conditionally acceptable zone starts and ends, degrees (EN 1005-4,
+/// ISO 11226).
+pub const UPPER_ARM_ZONE_DEG: [f64; 2] = [20.0, 60.0];
+
+/// How long a posture may be held.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", content = "secs", rename_all = "snake_case")]
+pub enum Limit {
+    /// Acceptable without a time limit.
+    Unlimited,
+    /// Acceptable for at most this long, seconds.
+    Secs(f64),
+    /// Time-limited, but no readable source gives the limit (see the module docs).
+    Unknown,
+    /// Not acceptable held at all (static).
+    NotAcceptable,
+}
 
 /// The body parts assessed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -60,37 +88,63 @@ pub const NECK_ACCEPTABLE_MAX_DEG: f64 = 25.0;
 pub enum BodyPart {
     Trunk,
     Neck,
+    LeftUpperArm,
+    RightUpperArm,
 }
 
 impl BodyPart {
-    pub const ALL: [Self; 2] = [Self::Trunk, Self::Neck];
+    pub const ALL: [Self; 4] = [
+        Self::Trunk,
+        Self::Neck,
+        Self::LeftUpperArm,
+        Self::RightUpperArm,
+    ];
 
     pub const fn name(self) -> &'static str {
         match self {
             Self::Trunk => "trunk",
             Self::Neck => "neck",
+            Self::LeftUpperArm => "left upper arm",
+            Self::RightUpperArm => "right upper arm",
         }
     }
 
-    /// Whether `deg` is in a zone not acceptable at any duration.
-    fn not_acceptable(self, deg: f64) -> bool {
-        self.max_holding_secs(deg).is_none()
+    /// The part as a body region name and a side, as the summary CSV writes them
+    /// (`("upper_arm", "left")`, `("trunk", "")`).
+    pub const fn region_and_side(self) -> (&'static str, &'static str) {
+        match self {
+            Self::Trunk => ("trunk", ""),
+            Self::Neck => ("neck", ""),
+            Self::LeftUpperArm => ("upper_arm", "left"),
+            Self::RightUpperArm => ("upper_arm", "right"),
+        }
     }
 
     /// Whether `deg` is outside this part's acceptable zone.
     fn outside(self, deg: f64) -> bool {
-        match self {
-            Self::Trunk => !(0.0..TRUNK_ZONE_DEG[0]).contains(&deg),
-            Self::Neck => !(0.0..=NECK_ACCEPTABLE_MAX_DEG).contains(&deg),
-        }
+        self.limit(deg) != Limit::Unlimited
     }
 
-    /// The longest acceptable holding time of a posture at `deg`, seconds: `None` when not
-    /// acceptable at all, infinite inside the acceptable zone.
-    pub fn max_holding_secs(self, deg: f64) -> Option<f64> {
+    /// How long a posture at `deg` may be held (band edges: see the module docs).
+    pub fn limit(self, deg: f64) -> Limit {
         match self {
-            Self::Trunk => trunk_max_holding_secs(deg),
-            Self::Neck => (!self.outside(deg)).then_some(f64::INFINITY),
+            Self::Trunk => match trunk_max_holding_secs(deg) {
+                None => Limit::NotAcceptable,
+                Some(s) if s.is_infinite() => Limit::Unlimited,
+                Some(s) => Limit::Secs(s),
+            },
+            Self::Neck if (0.0..=NECK_ACCEPTABLE_MAX_DEG).contains(&deg) => Limit::Unlimited,
+            Self::Neck => Limit::NotAcceptable,
+            Self::LeftUpperArm | Self::RightUpperArm => {
+                let [lo, hi] = UPPER_ARM_ZONE_DEG;
+                if deg < lo {
+                    Limit::Unlimited
+                } else if deg <= hi {
+                    Limit::Unknown
+                } else {
+                    Limit::NotAcceptable
+                }
+            }
         }
     }
 }
@@ -119,8 +173,12 @@ pub struct StaticHold {
     /// The angle farthest from the acceptable zone it reached, degrees.
     pub peak_deg: f64,
     /// The maximum holding time at the largest angle it reached within the time-limited zone,
-    /// seconds; `None` when it never was in one (every neck hold, a trunk extension).
+    /// seconds; `None` when it never was in one (every neck hold, a trunk extension) or the limit is
+    /// not known (`limit_unknown`).
     pub limit_secs: Option<f64>,
+    /// It was in a time-limited zone whose limit no readable source gives (the upper arm's 20°–60°):
+    /// its duration is reported without a verdict on that part.
+    pub limit_unknown: bool,
     /// Its longest unbroken stretch in a zone not acceptable at all, seconds (0 when none).
     pub not_acceptable_secs: f64,
     /// Static in a zone that is not acceptable, or held longer than `limit_secs`.
@@ -135,6 +193,9 @@ pub struct StaticPostureSummary {
     pub static_holds: usize,
     /// Of them, those ISO 11226 does not accept (too long, or in a zone not acceptable at all).
     pub exceeded: usize,
+    /// Of them, those not exceeded but held in a zone whose time limit is not known (the upper
+    /// arm's 20°–60°): for the ergonomist to judge.
+    pub limit_unknown: usize,
     /// The longest static hold, seconds (0 when none).
     pub longest_secs: f64,
     /// All static holds together, seconds.
@@ -151,6 +212,8 @@ struct Run {
     peak: f64,
     /// The largest angle within the time-limited zone (trunk 20°–60°).
     limited_peak: Option<f64>,
+    /// It was in a time-limited zone without a known limit.
+    unknown: bool,
     /// The current and the longest stretch in a zone not acceptable at all.
     bad_now: f64,
     bad_longest: f64,
@@ -163,13 +226,17 @@ fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary
     let mut close = |run: Option<Run>| {
         if let Some(r) = run {
             if r.duration > STATIC_MIN_SECS {
-                let limit = r.limited_peak.and_then(|deg| part.max_holding_secs(deg));
+                let limit = r.limited_peak.and_then(|deg| match part.limit(deg) {
+                    Limit::Secs(s) => Some(s),
+                    _ => None,
+                });
                 holds.push(StaticHold {
                     part,
                     start_nanos: r.start,
                     duration_secs: r.duration,
                     peak_deg: r.peak,
                     limit_secs: limit,
+                    limit_unknown: r.unknown,
                     not_acceptable_secs: r.bad_longest,
                     exceeded: r.bad_longest > STATIC_MIN_SECS
                         || limit.is_some_and(|l| r.duration > l),
@@ -184,6 +251,7 @@ fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary
                 duration: 0.0,
                 peak: deg,
                 limited_peak: None,
+                unknown: false,
                 bad_now: 0.0,
                 bad_longest: 0.0,
             });
@@ -192,12 +260,20 @@ fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary
             if (deg < 0.0 && deg < r.peak) || (deg >= 0.0 && deg > r.peak) {
                 r.peak = deg;
             }
-            if part.not_acceptable(deg) {
-                r.bad_now += dt;
-                r.bad_longest = r.bad_longest.max(r.bad_now);
-            } else {
-                r.bad_now = 0.0;
-                r.limited_peak = Some(r.limited_peak.map_or(deg, |p| p.max(deg)));
+            match part.limit(deg) {
+                Limit::NotAcceptable => {
+                    r.bad_now += dt;
+                    r.bad_longest = r.bad_longest.max(r.bad_now);
+                }
+                Limit::Secs(_) => {
+                    r.bad_now = 0.0;
+                    r.limited_peak = Some(r.limited_peak.map_or(deg, |p| p.max(deg)));
+                }
+                Limit::Unknown => {
+                    r.bad_now = 0.0;
+                    r.unknown = true;
+                }
+                Limit::Unlimited => {}
             }
         } else {
             close(current.take());
@@ -208,6 +284,10 @@ fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary
         part,
         static_holds: holds.len(),
         exceeded: holds.iter().filter(|h| h.exceeded).count(),
+        limit_unknown: holds
+            .iter()
+            .filter(|h| !h.exceeded && h.limit_unknown)
+            .count(),
         longest_secs: holds.iter().map(|h| h.duration_secs).fold(0.0, f64::max),
         total_secs: holds
             .iter()
@@ -217,24 +297,43 @@ fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary
     }
 }
 
-/// The static holds of the trunk and the neck from the frames' flexion angles (radians, `None` where
-/// not observed) in time order; intervals longer than `max_frame_nanos` are gaps (see the module
-/// docs).
+/// One frame's angles as [`static_postures`] reads them, radians (`None` where not observed).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PostureAngles {
+    pub stamp_nanos: i64,
+    pub trunk_flexion_rad: Option<f64>,
+    pub neck_flexion_rad: Option<f64>,
+    /// `[left, right]` upper arm elevation from vertical.
+    pub upper_arm_elevation_rad: [Option<f64>; 2],
+}
+
+impl PostureAngles {
+    fn of(&self, part: BodyPart) -> Option<f64> {
+        match part {
+            BodyPart::Trunk => self.trunk_flexion_rad,
+            BodyPart::Neck => self.neck_flexion_rad,
+            BodyPart::LeftUpperArm => self.upper_arm_elevation_rad[0],
+            BodyPart::RightUpperArm => self.upper_arm_elevation_rad[1],
+        }
+    }
+}
+
+/// The static holds of the trunk, the neck and each upper arm from the frames' angles in time order;
+/// intervals longer than `max_frame_nanos` are gaps (see the module docs). A part never observed is
+/// left out.
 pub fn static_postures(
-    frames: &[(i64, Option<f64>, Option<f64>)],
+    frames: &[PostureAngles],
     max_frame_nanos: i64,
 ) -> Vec<StaticPostureSummary> {
     BodyPart::ALL
         .iter()
+        .filter(|&&part| frames.iter().any(|f| f.of(part).is_some()))
         .map(|&part| {
             let observed: Vec<(i64, f64)> = frames
                 .iter()
-                .filter_map(|&(t, trunk, neck)| {
-                    let rad = match part {
-                        BodyPart::Trunk => trunk,
-                        BodyPart::Neck => neck,
-                    }?;
-                    rad.is_finite().then(|| (t, rad.to_degrees()))
+                .filter_map(|f| {
+                    let rad = f.of(part)?;
+                    rad.is_finite().then(|| (f.stamp_nanos, rad.to_degrees()))
                 })
                 .collect();
             let intervals: Vec<i64> = observed.windows(2).map(|w| w[1].0 - w[0].0).collect();
@@ -256,6 +355,7 @@ pub fn static_postures(
                     Some(acc) => {
                         acc.static_holds += s.static_holds;
                         acc.exceeded += s.exceeded;
+                        acc.limit_unknown += s.limit_unknown;
                         acc.longest_secs = acc.longest_secs.max(s.longest_secs);
                         acc.total_secs += s.total_secs;
                         acc.holds.extend(s.holds);
@@ -287,20 +387,25 @@ mod tests {
     const MS: i64 = 1_000_000;
 
     /// `secs` of frames at 10 Hz at `deg` each, from `t0_ms`.
-    fn hold(
+    fn hold(t0_ms: i64, secs: f64, trunk_deg: f64, neck_deg: f64) -> Vec<PostureAngles> {
+        arms(t0_ms, secs, trunk_deg, neck_deg, 0.0)
+    }
+
+    /// The same with the left arm elevated `arm_deg` (the right never observed).
+    fn arms(
         t0_ms: i64,
         secs: f64,
         trunk_deg: f64,
         neck_deg: f64,
-    ) -> Vec<(i64, Option<f64>, Option<f64>)> {
+        arm_deg: f64,
+    ) -> Vec<PostureAngles> {
         let n = (secs * 10.0).round() as i64;
         (0..n)
-            .map(|k| {
-                (
-                    (t0_ms + k * 100) * MS,
-                    Some(trunk_deg.to_radians()),
-                    Some(neck_deg.to_radians()),
-                )
+            .map(|k| PostureAngles {
+                stamp_nanos: (t0_ms + k * 100) * MS,
+                trunk_flexion_rad: Some(trunk_deg.to_radians()),
+                neck_flexion_rad: Some(neck_deg.to_radians()),
+                upper_arm_elevation_rad: [Some(arm_deg.to_radians()), None],
             })
             .collect()
     }
@@ -323,9 +428,17 @@ mod tests {
         assert_eq!(trunk_max_holding_secs(19.9), Some(f64::INFINITY));
         assert_eq!(trunk_max_holding_secs(60.01), None);
         assert_eq!(trunk_max_holding_secs(-0.5), None);
-        assert_eq!(BodyPart::Neck.max_holding_secs(25.0), Some(f64::INFINITY));
-        assert_eq!(BodyPart::Neck.max_holding_secs(25.1), None);
-        assert_eq!(BodyPart::Neck.max_holding_secs(-1.0), None);
+        assert_eq!(BodyPart::Neck.limit(25.0), Limit::Unlimited);
+        assert_eq!(BodyPart::Neck.limit(25.1), Limit::NotAcceptable);
+        assert_eq!(BodyPart::Neck.limit(-1.0), Limit::NotAcceptable);
+        assert_eq!(BodyPart::Trunk.limit(30.0), Limit::Secs(195.0));
+        let arm = BodyPart::RightUpperArm;
+        assert_eq!(arm.limit(19.9), Limit::Unlimited);
+        assert_eq!(
+            (arm.limit(20.0), arm.limit(60.0)),
+            (Limit::Unknown, Limit::Unknown)
+        );
+        assert_eq!(arm.limit(60.1), Limit::NotAcceptable);
     }
 
     #[test]
@@ -388,6 +501,29 @@ mod tests {
     }
 
     #[test]
+    fn a_held_arm_is_reported_without_a_verdict_below_60_and_not_acceptable_beyond() {
+        // Left arm: 45° for 30 s (time-limited, limit unknown), down, 80° for 5 s (not acceptable).
+        let mut frames = arms(0, 30.0, 5.0, 10.0, 45.0);
+        frames.extend(arms(30_000, 1.0, 5.0, 10.0, 5.0));
+        frames.extend(arms(31_000, 5.0, 5.0, 10.0, 80.0));
+        let s = static_postures(&frames, 1_000_000_000);
+        let parts: Vec<BodyPart> = s.iter().map(|p| p.part).collect();
+        assert_eq!(
+            parts,
+            [BodyPart::Trunk, BodyPart::Neck, BodyPart::LeftUpperArm],
+            "the right arm was never observed"
+        );
+        let arm = &s[2];
+        assert_eq!(
+            (arm.static_holds, arm.exceeded, arm.limit_unknown),
+            (2, 1, 1)
+        );
+        assert!(arm.holds[0].limit_unknown && !arm.holds[0].exceeded);
+        assert_eq!(arm.holds[0].limit_secs, None);
+        assert!(arm.holds[1].exceeded);
+    }
+
+    #[test]
     fn gaps_and_unobserved_frames() {
         // 3 s bent, a 5 s gap (no frames), 3 s bent: two 3 s holds, neither static.
         let mut frames = hold(0, 3.0, 45.0, 10.0);
@@ -395,7 +531,10 @@ mod tests {
         assert_eq!(static_postures(&frames, 1_000_000_000)[0].static_holds, 0);
         // 3 s bent, 0.5 s not observed, 3 s bent: one hold of 6.5 s (the unobserved frames skipped).
         let mut frames = hold(0, 3.0, 45.0, 10.0);
-        frames.extend((0..5).map(|k| ((3_000 + k * 100) * MS, None, None)));
+        frames.extend((0..5).map(|k| PostureAngles {
+            stamp_nanos: (3_000 + k * 100) * MS,
+            ..PostureAngles::default()
+        }));
         frames.extend(hold(3_500, 3.0, 45.0, 10.0));
         let trunk = &static_postures(&frames, 1_000_000_000)[0];
         assert_eq!(trunk.static_holds, 1);

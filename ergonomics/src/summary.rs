@@ -24,7 +24,7 @@ use serde::Serialize;
 
 use crate::assess::{headline_side, BodyRegion, FrameAssessment, SideAssessment};
 use crate::rula::RulaScores;
-use crate::static_posture::{static_postures, StaticPostureSummary};
+use crate::static_posture::{static_postures, PostureAngles, StaticPostureSummary};
 use crate::Side;
 
 /// Default gap threshold: an interval between frames longer than 1 s is a gap, not frame time.
@@ -158,8 +158,8 @@ pub struct SessionSummary {
     /// The task segments (the frames' phases, e.g. walking, floor pick, handover), in order of first
     /// appearance; empty when no frame had one.
     pub phases: Vec<PhaseSummary>,
-    /// Trunk and neck postures held outside ISO 11226's acceptable zone
-    /// ([`crate::static_posture`]); empty when no frame carried the angles.
+    /// Trunk, neck and upper-arm postures held outside ISO 11226's acceptable zone
+    /// ([`crate::static_posture`]); a part no frame observed is left out.
     pub static_postures: Vec<StaticPostureSummary>,
 }
 
@@ -195,10 +195,11 @@ pub struct SummaryFrame {
     pub right: Option<ScoredSide>,
     /// The task segment the frame belongs to; `None`: not labelled.
     pub phase: Option<&'static str>,
-    /// Trunk and neck flexion as scored, radians (for [`crate::static_posture`]); `None`: not
-    /// observed.
+    /// Trunk and neck flexion as scored and each upper arm's elevation from vertical (`[left,
+    /// right]`), radians, for [`crate::static_posture`]; `None`: not observed.
     pub trunk_flexion_rad: Option<f64>,
     pub neck_flexion_rad: Option<f64>,
+    pub upper_arm_elevation_rad: [Option<f64>; 2],
 }
 
 impl SessionSummary {
@@ -435,6 +436,10 @@ impl SummaryBuilder {
             phase,
             trunk_flexion_rad: frame.angles.trunk_flexion_rad,
             neck_flexion_rad: frame.angles.neck_flexion_rad,
+            upper_arm_elevation_rad: [
+                frame.angles.left.upper_arm_elevation_rad,
+                frame.angles.right.upper_arm_elevation_rad,
+            ],
         });
     }
 
@@ -603,17 +608,17 @@ impl SummaryBuilder {
                 .into_iter()
                 .map(|(phase, t)| t.finish(phase, total))
                 .collect(),
-            static_postures: if entries
-                .iter()
-                .any(|e| e.trunk_flexion_rad.is_some() || e.neck_flexion_rad.is_some())
-            {
-                let angles: Vec<(i64, Option<f64>, Option<f64>)> = entries
+            static_postures: {
+                let angles: Vec<PostureAngles> = entries
                     .iter()
-                    .map(|e| (e.stamp_nanos, e.trunk_flexion_rad, e.neck_flexion_rad))
+                    .map(|e| PostureAngles {
+                        stamp_nanos: e.stamp_nanos,
+                        trunk_flexion_rad: e.trunk_flexion_rad,
+                        neck_flexion_rad: e.neck_flexion_rad,
+                        upper_arm_elevation_rad: e.upper_arm_elevation_rad,
+                    })
                     .collect();
                 static_postures(&angles, self.max_frame_nanos)
-            } else {
-                Vec::new()
             },
         }
     }

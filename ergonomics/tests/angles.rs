@@ -265,6 +265,31 @@ fn legs_on_the_floor_and_balanced_when_standing() {
 }
 
 #[test]
+fn upper_arm_elevation_is_from_the_vertical_not_the_trunk() {
+    // Upright, right arm raised 60°: 60° from vertical. Bent 45° with the arms hanging along the
+    // trunk: 45° from vertical though 0° relative to the trunk.
+    let raised = PoseSpec {
+        right_arm: ArmPose {
+            flexion_rad: 60f64.to_radians(),
+            ..ArmPose::default()
+        },
+        ..PoseSpec::default()
+    };
+    for_each_world(&raised, |a, ctx| {
+        assert_deg("right elevation", a.right.upper_arm_elevation_rad, 60.0, ctx);
+        assert_deg("left elevation", a.left.upper_arm_elevation_rad, 0.0, ctx);
+    });
+    let bent = PoseSpec {
+        trunk_flexion_rad: 45f64.to_radians(),
+        ..PoseSpec::default()
+    };
+    for_each_world(&bent, |a, ctx| {
+        assert_deg("right elevation", a.right.upper_arm_elevation_rad, 45.0, ctx);
+        assert_deg("right flexion", a.right.upper_arm_flexion_rad, 0.0, ctx);
+    });
+}
+
+#[test]
 fn knees_bent_0_35_and_80_degrees() {
     for knee_deg in [0.0, 35.0, 80.0] {
         let spec = PoseSpec {

@@ -387,6 +387,10 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
                 phase: phase_of(act, secs(t, t0), &handovers),
                 trunk_flexion_rad: angle("trunk_flexion"),
                 neck_flexion_rad: angle("neck_flexion"),
+                upper_arm_elevation_rad: [
+                    angle("left_upper_arm_elevation"),
+                    angle("right_upper_arm_elevation"),
+                ],
             },
         );
     }
@@ -486,6 +490,7 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
             phase: facts.phase,
             trunk_flexion_rad: facts.trunk_flexion_rad,
             neck_flexion_rad: facts.neck_flexion_rad,
+            upper_arm_elevation_rad: facts.upper_arm_elevation_rad,
         });
     }
     let summary = summary.finish();
@@ -541,6 +546,7 @@ struct FrameFacts {
     phase: Option<&'static str>,
     trunk_flexion_rad: Option<f64>,
     neck_flexion_rad: Option<f64>,
+    upper_arm_elevation_rad: [Option<f64>; 2],
 }
 
 /// The task segment names of the review, in precedence order (see [`phase_of`]).

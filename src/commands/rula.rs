@@ -425,7 +425,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     }
     if !s.static_postures.is_empty() {
         println!(
-            "static postures (ISO 11226: held > {STATIC_MIN_SECS} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended not acceptable; neck beyond 25° or extended not acceptable):"
+            "static postures (ISO 11226: held > {STATIC_MIN_SECS} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended not acceptable; neck beyond 25° or extended not acceptable; upper arm beyond 60° not acceptable, 20°–60° time-limited by a curve no readable source gives):"
         );
         for p in &s.static_postures {
             let worst = p
@@ -434,10 +434,11 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
                 .filter(|h| h.exceeded)
                 .max_by(|a, b| a.duration_secs.total_cmp(&b.duration_secs));
             println!(
-                "  {:<6} {} static hold(s), {} not acceptable, longest {:.1} s{}",
+                "  {:<15} {} static hold(s), {} not acceptable, {} with no known limit (for the ergonomist), longest {:.1} s{}",
                 p.part.name(),
                 p.static_holds,
                 p.exceeded,
+                p.limit_unknown,
                 p.longest_secs,
                 worst.map_or(String::new(), |h| {
                     let why = match h.limit_secs {

@@ -269,7 +269,7 @@ export function renderSegments(el, sessions) {
       .join('');
     html += `<table class="regions segments"><thead><tr><th>Segment</th><th class="num">time</th><th class="num">share</th><th class="num">episodes</th><th>RULA action level 1–4</th><th>at level ≥ 3</th>${hasReba ? '<th>REBA action level 0–4</th>' : ''}<th class="num">peak grand</th></tr></thead><tbody>${rows}</tbody></table>`;
   }
-  html += `<h2 class="sub">Static postures <span class="hint">ISO 11226: held &gt; 4 s outside the acceptable zone · trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°; beyond 60° or extended, and the neck outside 0°–25°, not acceptable · upper arm not assessed (no readable source for its holding times)</span></h2>`;
+  html += `<h2 class="sub">Static postures <span class="hint">ISO 11226: held &gt; 4 s outside the acceptable zone · trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°; beyond 60° or extended, and the neck outside 0°–25°, not acceptable · upper arm (from vertical) beyond 60° not acceptable; its 20°–60° holding-time curve has no readable source, so those holds are counted for you to judge</span></h2>`;
   if (!statics.length) {
     html += '<div class="empty">No trunk or neck angles in this recording.</div>';
   } else {
@@ -278,10 +278,11 @@ export function renderSegments(el, sessions) {
         const worst = (p.holds || []).filter((h) => h.exceeded).sort((a, b) => b.duration_secs - a.duration_secs)[0];
         const w = worst ? holdText(worst) : '<span class="muted">–</span>';
         const bad = p.exceeded > 0 ? `<span class="badge danger">${esc(p.exceeded)}</span>` : '<span class="badge ok">0</span>';
-        return `<tr data-part="${esc(p.part)}"><th>${esc(titleCase(p.part))}</th><td class="num">${esc(p.static_holds)}</td><td class="num">${bad}</td><td class="num">${fmt(p.longest_secs, 1)} s</td><td class="small">${w}</td></tr>`;
+        const unknown = p.limit_unknown > 0 ? `<span class="badge warn" title="held 20°–60°: ISO 11226 limits this by a holding time no readable source gives — judge them">${esc(p.limit_unknown)}</span>` : '<span class="muted">0</span>';
+        return `<tr data-part="${esc(p.part)}"><th>${esc(titleCase(String(p.part).replace(/_/g, ' ')))}</th><td class="num">${esc(p.static_holds)}</td><td class="num">${bad}</td><td class="num">${unknown}</td><td class="num">${fmt(p.longest_secs, 1)} s</td><td class="small">${w}</td></tr>`;
       })
       .join('');
-    html += `<table class="regions statics"><thead><tr><th>Body part</th><th class="num">static holds</th><th class="num">not acceptable</th><th class="num">longest</th><th>worst not acceptable</th></tr></thead><tbody>${rows}</tbody></table>`;
+    html += `<table class="regions statics"><thead><tr><th>Body part</th><th class="num">static holds</th><th class="num">not acceptable</th><th class="num">no known limit</th><th class="num">longest</th><th>worst not acceptable</th></tr></thead><tbody>${rows}</tbody></table>`;
   }
   el.innerHTML = html;
 }
