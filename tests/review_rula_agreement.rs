@@ -83,6 +83,28 @@ fn skeletons() -> Vec<Skeleton3> {
     out
 }
 
+/// The session's recording of `frames`: each assessed with `rula track`'s defaults, its operator pose
+/// and its RULA and REBA states written as the session writes them.
+fn record_session(frames: &[Skeleton3], path: &std::path::Path) {
+    let mut assessor =
+        RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap())).unwrap();
+    let mut rec = McapRecorder::create(path).unwrap();
+    for s in frames {
+        let a = assessor.assess(s).unwrap();
+        let t = s.stamp_nanos;
+        rec.write(
+            topics::OPERATOR_POSE,
+            t,
+            &operator_pose_message(s, Some(&a)),
+        )
+        .unwrap();
+        rec.write(topics::ERGONOMICS, t, &ergonomic_message(&a))
+            .unwrap();
+        rec.write(topics::REBA, t, &reba_message(&a)).unwrap();
+    }
+    rec.finish().unwrap();
+}
+
 /// The report's data (what the page reads).
 fn report_data(html: &str) -> serde_json::Value {
     let start = html.find("window.ERGOCELL_REVIEW_DATA = ").unwrap() + 30;
@@ -98,23 +120,7 @@ fn review_region_shares_are_rula_tracks_summary() {
 
     // The session's recording of the same frames: assessed with `rula track`'s defaults.
     let recording = tmp("agreement.mcap");
-    let mut assessor =
-        RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap())).unwrap();
-    let mut rec = McapRecorder::create(&recording).unwrap();
-    for s in &frames {
-        let a = assessor.assess(s).unwrap();
-        rec.write(
-            topics::OPERATOR_POSE,
-            s.stamp_nanos,
-            &operator_pose_message(s, Some(&a)),
-        )
-        .unwrap();
-        rec.write(topics::ERGONOMICS, s.stamp_nanos, &ergonomic_message(&a))
-            .unwrap();
-        rec.write(topics::REBA, s.stamp_nanos, &reba_message(&a))
-            .unwrap();
-    }
-    rec.finish().unwrap();
+    record_session(&frames, &recording);
 
     let o = ergocell(&[
         "rula",
@@ -278,23 +284,7 @@ fn report_csv_exports_round_trip_rula_tracks() {
     let landmarks = tmp("exports-landmarks.json");
     std::fs::write(&landmarks, serde_json::to_string(&frames).unwrap()).unwrap();
     let recording = tmp("exports.mcap");
-    let mut assessor =
-        RulaAssessor::new(AssessmentConfig::new(UpVector::new(Vector3::z()).unwrap())).unwrap();
-    let mut rec = McapRecorder::create(&recording).unwrap();
-    for s in &frames {
-        let a = assessor.assess(s).unwrap();
-        let t = s.stamp_nanos;
-        rec.write(
-            topics::OPERATOR_POSE,
-            t,
-            &operator_pose_message(s, Some(&a)),
-        )
-        .unwrap();
-        rec.write(topics::ERGONOMICS, t, &ergonomic_message(&a))
-            .unwrap();
-        rec.write(topics::REBA, t, &reba_message(&a)).unwrap();
-    }
-    rec.finish().unwrap();
+    record_session(&frames, &recording);
 
     let out = |name: &str| tmp(name).to_str().unwrap().to_owned();
     let (track_frames, track_summary) = (out("track-frames.csv"), out("track-summary.csv"));

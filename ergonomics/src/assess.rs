@@ -598,6 +598,18 @@ fn unobserved_wrist_reason(skeleton: &Skeleton3, side: Side, wrist_score: u8) ->
     )
 }
 
+/// "`lm` confidence 0.31 below 0.50" for each of `landmarks` observed below `min`.
+fn low_confidence<'a>(
+    skeleton: &'a Skeleton3,
+    landmarks: impl IntoIterator<Item = &'a Landmark> + 'a,
+    min: f64,
+) -> impl Iterator<Item = String> + 'a {
+    landmarks.into_iter().filter_map(move |lm| {
+        let e = skeleton.get(*lm)?;
+        (e.confidence < min).then(|| format!("{lm} confidence {:.2} below {min:.2}", e.confidence))
+    })
+}
+
 fn merge(held: Option<f64>, now: Option<f64>) -> (Option<f64>, InputSource) {
     match (now, held) {
         (Some(v), _) => (Some(v), InputSource::Observed),
@@ -899,16 +911,7 @@ impl RulaAssessor {
                 .chain(&HEAD_LANDMARKS)
                 .chain(&FOOT_LANDMARKS)
                 .chain(&arm);
-            for lm in used {
-                if let Some(e) = skeleton.get(*lm) {
-                    if e.confidence < self.config.min_confidence {
-                        reasons.push(format!(
-                            "{lm} confidence {:.2} below {:.2}",
-                            e.confidence, self.config.min_confidence
-                        ));
-                    }
-                }
-            }
+            reasons.extend(low_confidence(skeleton, used, self.config.min_confidence));
             let reba_input = RebaInput {
                 trunk_flexion_deg: t_deg,
                 trunk_twisted_or_side_bent: input.trunk_twisted || input.trunk_side_bending,
@@ -939,16 +942,11 @@ impl RulaAssessor {
                 .chain(&knee_reasons)
                 .cloned()
                 .collect();
-            for lm in [Landmark::LeftKnee, Landmark::RightKnee] {
-                if let Some(e) = skeleton.get(lm) {
-                    if e.confidence < self.config.min_confidence {
-                        reba_reasons.push(format!(
-                            "{lm} confidence {:.2} below {:.2}",
-                            e.confidence, self.config.min_confidence
-                        ));
-                    }
-                }
-            }
+            reba_reasons.extend(low_confidence(
+                skeleton,
+                &[Landmark::LeftKnee, Landmark::RightKnee],
+                self.config.min_confidence,
+            ));
             let reba = RebaAssessment {
                 input: reba_input,
                 scores: reba_scores,

@@ -276,7 +276,12 @@ fn upper_arm_elevation_is_from_the_vertical_not_the_trunk() {
         ..PoseSpec::default()
     };
     for_each_world(&raised, |a, ctx| {
-        assert_deg("right elevation", a.right.upper_arm_elevation_rad, 60.0, ctx);
+        assert_deg(
+            "right elevation",
+            a.right.upper_arm_elevation_rad,
+            60.0,
+            ctx,
+        );
         assert_deg("left elevation", a.left.upper_arm_elevation_rad, 0.0, ctx);
     });
     let bent = PoseSpec {
@@ -284,7 +289,12 @@ fn upper_arm_elevation_is_from_the_vertical_not_the_trunk() {
         ..PoseSpec::default()
     };
     for_each_world(&bent, |a, ctx| {
-        assert_deg("right elevation", a.right.upper_arm_elevation_rad, 45.0, ctx);
+        assert_deg(
+            "right elevation",
+            a.right.upper_arm_elevation_rad,
+            45.0,
+            ctx,
+        );
         assert_deg("right flexion", a.right.upper_arm_flexion_rad, 0.0, ctx);
     });
 }
