@@ -401,6 +401,24 @@ fn report_csv_exports_round_trip_rula_tracks() {
     for (a, b) in f1.iter().zip(&f2) {
         assert_eq!(a[i], b[j]);
     }
+    // Two outputs naming one file (spelled differently) are refused before anything is written.
+    let dir = tmp("collide");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let html = dir.join("r.html");
+    let o = ergocell(&[
+        "report",
+        recording.to_str().unwrap(),
+        "--out",
+        html.to_str().unwrap(),
+        "--csv",
+        dir.join(".").join("r.html").to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("is also --out"), "{err}");
+    assert!(!html.exists(), "nothing written");
+
     let phase = col(&h2, "phase");
     assert_eq!(&f2[0][phase], "in place", "walking needs 0.2 s of history");
     assert_eq!(&f2[10][phase], "walking");

@@ -122,12 +122,12 @@ impl ActivityTracker {
         while self
             .hips
             .front()
-            .is_some_and(|&(t0, _)| t - t0 > self.config.window_nanos)
+            .is_some_and(|&(t0, _)| t.saturating_sub(t0) > self.config.window_nanos)
         {
             self.hips.pop_front();
         }
         let walking = self.hips.front().is_some_and(|&(t0, p0)| {
-            let span = t - t0;
+            let span = t.saturating_sub(t0);
             span >= self.config.min_span_nanos
                 && (horizontal - p0).norm() / (span as f64 * 1e-9) >= self.config.walking_speed_m_s
         });

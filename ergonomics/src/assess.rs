@@ -33,6 +33,7 @@ use std::collections::VecDeque;
 use ergocell_skeleton::{Landmark, Skeleton3};
 use serde::{Deserialize, Serialize};
 
+use crate::activity::{Activity, ActivityConfig, ActivityTracker};
 use crate::angles::{
     arm_landmarks, body_angles, BodyAngles, LegsObservation, SideAngles, UpVector,
 };
@@ -57,6 +58,9 @@ pub struct TaskConfig {
     pub wrist_twist: WristTwist,
     pub arm_supported_or_leaning: bool,
     pub seated_well_supported: bool,
+    /// The operator works seated (REBA's legs: sitting, no knee adjustment). RULA's
+    /// `seated_well_supported` implies it.
+    pub seated: bool,
     /// REBA's load, kilograms (its Score A adds 0 below 5 kg, 1 up to 10 kg, 2 above).
     pub reba_load_kg: f64,
     /// REBA: shock or rapid build-up of force (+1 on the load score).
@@ -76,6 +80,7 @@ impl Default for TaskConfig {
             wrist_twist: WristTwist::MidRange,
             arm_supported_or_leaning: false,
             seated_well_supported: false,
+            seated: false,
             reba_load_kg: 0.0,
             reba_load_shock_or_rapid_build_up: false,
             reba_coupling: Coupling::Good,
@@ -410,6 +415,12 @@ pub type InputSources = [(&'static str, InputSource); 21];
 ///   only for a wrist with nothing to hold. When the hand is observed nothing changes.
 pub const UNOBSERVED_WRIST_FLEXION_DEG: f64 = WRIST_EDGES_DEG[1];
 
+/// The knee flexion, degrees, at which REBA scores knees that were never observed: beyond 60°, the
+/// top knee band (+2 on the legs). As for the wrist ([`UNOBSERVED_WRIST_FLEXION_DEG`]), an unseen
+/// angle is never scored as its safest band — occluded knees behind a bench are the common case, and
+/// "straight" would lower the score; the REBA score is marked uncertain with the reason.
+pub const UNOBSERVED_KNEE_FLEXION_DEG: f64 = 90.0;
+
 /// One side's result for one frame.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SideAssessment {
@@ -436,9 +447,10 @@ pub struct SideAssessment {
 ///   this frame ("twisted or side-bent" is either of RULA's two; the wrist's "deviated or twisted" is
 ///   RULA's bent-from-midline or a configured twist other than mid-range);
 /// - legs: bilateral weight bearing is RULA's "legs supported and balanced" (both feet on the floor,
-///   the hips over them; seated from the task config); the knee flexion is the **more flexed knee**
-///   of the two (the worksheet scores the legs once), held when missing like any angle and scored as
-///   straight, with the score uncertain, when never observed;
+///   the hips over them), or walking ([`crate::activity`]), or seated (the task config's `seated`
+///   or `seated_well_supported`); the knee flexion is the **more flexed knee** of the two (the
+///   worksheet scores the legs once), held when missing like any angle and, when neither knee was
+///   ever observed, scored beyond 60° ([`UNOBSERVED_KNEE_FLEXION_DEG`]) with the score uncertain;
 /// - load, shock, coupling and "rapid changes or unstable base" from [`TaskConfig`];
 /// - activity "static" (a part held > 1 min) and "repeated" (> 4 times a minute) from the same
 ///   time-series trackers as RULA's muscle use, either group A or B.
@@ -550,6 +562,8 @@ pub struct RulaAssessor {
     /// Per side (`[left, right]`), whether the upper arm currently counts as extended backwards
     /// (see [`UPPER_ARM_SIGN_BAND`]).
     arm_backward: [bool; 2],
+    /// Walking, for REBA's legs.
+    activity: ActivityTracker,
 }
 
 /// Hysteresis of the upper arm's flexion/extension sign, in units of
@@ -675,6 +689,7 @@ impl RulaAssessor {
             smoother: AngleSmoother::new(config.smoothing_window_nanos),
             last_stamp: None,
             arm_backward: [false; 2],
+            activity: ActivityTracker::new(ActivityConfig::default(), &config.up)?,
         })
     }
 
@@ -779,18 +794,20 @@ impl RulaAssessor {
                     "{side}_knee_flexion: landmarks missing, last value held"
                 )),
                 InputSource::NotObserved => Some(format!(
-                    "{side}_knee_flexion: never observed (needs hip, knee and ankle), scored as straight"
+                    "{side}_knee_flexion: never observed (needs hip, knee and ankle); with no knee seen, REBA scores them as flexed beyond 60° ({UNOBSERVED_KNEE_FLEXION_DEG}°)"
                 )),
                 _ => None,
             })
             .collect();
         let knee_deg = match (knee_l, knee_r) {
-            (Some(l), Some(r)) => l.max(r),
-            (Some(k), None) | (None, Some(k)) => k,
-            (None, None) => 0.0,
-        }
-        .to_degrees();
+            (Some(l), Some(r)) => l.max(r).to_degrees(),
+            (Some(k), None) | (None, Some(k)) => k.to_degrees(),
+            (None, None) => UNOBSERVED_KNEE_FLEXION_DEG,
+        };
+        // REBA's legs score 1 for walking too (RULA's "supported and balanced" does not).
+        let walking = self.activity.update(skeleton) == Some(Activity::Walking);
 
+        let seated = task.seated || task.seated_well_supported;
         let mut out = FrameAssessment {
             stamp_nanos: stamp,
             angles,
@@ -917,8 +934,8 @@ impl RulaAssessor {
                 trunk_twisted_or_side_bent: input.trunk_twisted || input.trunk_side_bending,
                 neck_flexion_deg: n_deg,
                 neck_twisted_or_side_bent: input.neck_twisted || input.neck_side_bending,
-                legs_bilateral_walking_or_sitting: legs_ok,
-                seated: task.seated_well_supported,
+                legs_bilateral_walking_or_sitting: legs_ok || walking || seated,
+                seated,
                 knee_flexion_deg: knee_deg,
                 load_kg: task.reba_load_kg,
                 load_shock_or_rapid_build_up: task.reba_load_shock_or_rapid_build_up,

@@ -42,6 +42,7 @@ pub const SIDE_COLUMNS: [&str; 30] = [
     "reba_score_a",
     "reba_score_b",
     "reba_legs_score",
+    // this side's knee as observed this frame (REBA scores the more flexed knee: `--json` has it)
     "knee_flexion_deg",
 ];
 
@@ -102,7 +103,10 @@ impl<W: Write> FrameCsv<W> {
                 .map_or(String::new(), |h| h.side.name().to_owned()),
         ];
         for side in [Side::Left, Side::Right] {
-            row.extend(side_cells(frame.side(side)));
+            row.extend(side_cells(
+                frame.side(side),
+                frame.angles.side(side).knee_flexion_rad,
+            ));
         }
         row.push(
             warnings
@@ -128,7 +132,8 @@ fn flag(b: bool) -> String {
     if b { "1" } else { "0" }.to_owned()
 }
 
-fn side_cells(s: Option<&SideAssessment>) -> Vec<String> {
+/// One side's cells; `knee_rad` is that side's knee flexion as observed this frame (empty when not).
+fn side_cells(s: Option<&SideAssessment>, knee_rad: Option<f64>) -> Vec<String> {
     let Some(s) = s else {
         let mut cells = vec![String::new(); SIDE_COLUMNS.len()];
         cells[0] = flag(false);
@@ -168,7 +173,7 @@ fn side_cells(s: Option<&SideAssessment>) -> Vec<String> {
         s.reba.scores.score_a.to_string(),
         s.reba.scores.score_b.to_string(),
         s.reba.scores.legs_score.to_string(),
-        deg(s.reba.input.knee_flexion_deg),
+        knee_rad.map_or(String::new(), |k| deg(k.to_degrees())),
     ]
 }
 

@@ -14,7 +14,7 @@
 //!   place): the task segments exposure is reported by.
 //! - [`height`]: stature from upright frames with two anthropometric estimators, and the height class
 //!   decision at session start.
-//! - [`static_posture`]: trunk and neck postures held outside ISO 11226's acceptable zone, against
+//! - [`static_posture`]: trunk, neck and upper-arm postures held outside ISO 11226's acceptable zone, against
 //!   its maximum holding times (the table used is cited there).
 //! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.
 //! - [`summary`]: a session's time-weighted shares per action level, body-region score and grand
@@ -25,8 +25,8 @@
 //!
 //! Depends only on [`ergocell_skeleton`]; knows nothing of cameras, ROS or the robot, and does no I/O:
 //! the binary reads files and passes text or values in. Time comes in as `stamp_nanos` on each frame.
-//! Angles are radians in code; degrees appear only in the RULA worksheet (the method is written in
-//! degrees) and in human-readable messages.
+//! Angles are radians in code; degrees appear only at the methods' boundaries — the RULA and REBA
+//! worksheets and ISO 11226's zones, all written in degrees — and in reports and messages.
 
 pub mod activity;
 pub mod angles;

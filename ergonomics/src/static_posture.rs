@@ -1,6 +1,6 @@
-//! Static postures of the trunk and the neck against ISO 11226:2000 ("Ergonomics — Evaluation of
-//! static working postures"): how long a posture outside the acceptable zone was held, and whether
-//! the standard accepts that.
+//! Static postures of the trunk, the neck and the upper arms against ISO 11226:2000 ("Ergonomics —
+//! Evaluation of static working postures"): how long a posture outside the acceptable zone was held,
+//! and whether the standard accepts that.
 //!
 //! # The limits used, and where they come from
 //! The standard itself could not be read here (it is sold, not published). The numbers are the
@@ -14,7 +14,8 @@
 //!   "Evaluation guideline values according to ISO 11226 and DIN EN 1005–4"
 //!   (<https://occup-med.biomedcentral.com/articles/10.1186/s12995-020-00286-9/tables/2>), gives the
 //!   same zones: trunk "neutral 0°–20°, moderate 20°–60°, awkward < 0° & > 60°". ergocell does not
-//!   know whether a backrest supports the trunk, so a held extension counts as not acceptable.
+//!   know whether a backrest supports the trunk, so a held extension counts as not acceptable —
+//!   beyond [`EXTENSION_DEAD_BAND_DEG`] (below).
 //! - **Neck flexion** (the head relative to the trunk; ergocell's neck flexion): 0°–25° acceptable;
 //!   beyond 25° or any extension not acceptable ("Nekbuiging … < 0° (extensie) niet aanvaardbaar /
 //!   0 – 25° OK / > 25 niet aanvaardbaar", ergonomiesite.be; "cervical spine flexion/extension:
@@ -35,16 +36,32 @@
 //!   ([`Limit::Unknown`]) — the ergonomist judges them — while a static hold beyond 60° is not
 //!   acceptable.
 //!
-//! Not assessed, for want of a source that could be read: the **head inclination** (the head's axis
-//! from vertical, which the landmarks give only through the face) and the standard's **recovery
-//! time** (the two versions of the summary disagree: an equally long rest, or one making the total
-//! 80 % of the maximum holding time).
+//! Not assessed: the **head inclination** (the head's axis from vertical, which the landmarks give
+//! only through the face), the standard's **recovery time** (the two versions of the summary
+//! disagree: an equally long rest, or one making the total 80 % of the maximum holding time), and
+//! the rest of ISO 11226 that no readable source gave ergocell the numbers of: trunk and neck twist
+//! and side bend, upper-arm retroflexion, adduction and shoulder raising, elbow and wrist extremes,
+//! kneeling and squatting. RULA and REBA score several of those per frame; this module does not
+//! judge them as static postures.
+//!
+//! # ergocell's own choices, and why
+//! - **Extension dead band** ([`EXTENSION_DEAD_BAND_DEG`], 5°): trunk and neck extension count only
+//!   beyond 5°. ergocell's neck angle is the line from the shoulder midpoint to the ear midpoint, and
+//!   its trunk angle the hip-to-shoulder line; relaxed upright standing reads a few degrees either
+//!   side of 0° on both (person to person and with the detector's noise), so without the band every
+//!   4 s of neutral standing could read as a held, not acceptable extension.
+//! - **Brief returns** ([`RETURN_MIN_SECS`], 1 s): a hold ends only when the angle has been back in
+//!   the acceptable zone for 1 s; a shorter return (noise across a band edge, a glance) is part of
+//!   the hold and its time counts. The same holds for a stretch in a zone not acceptable at all.
+//! - **Occlusion**: frames in which the part was not seen neither end a hold nor end it early; their
+//!   time counts when the hold goes on after them, and does not when it turns out to have ended.
 //!
 //! # How a hold is measured
 //! A hold is a run of frames with the angle outside the acceptable zone, each frame standing for the
-//! time to the next one with the angle (time-weighted, as [`crate::summary`] counts); a frame without
-//! the angle is skipped, and an interval longer than `max_frame_nanos` (a gap in the recording) or a
-//! frame inside the acceptable zone ends it. Band edges follow ergocell's convention
+//! time to the next frame (time-weighted, as [`crate::summary`] counts); an interval longer than
+//! `max_frame_nanos` (a gap in the recording) or a return to the acceptable zone of at least
+//! [`RETURN_MIN_SECS`] ends it (see above for brief returns and occlusion). Band edges follow
+//! ergocell's convention
 //! ([`crate::rula`]): a shared edge belongs to the higher band, so 20° is in the time-limited zone,
 //! 60° still in it ("beyond 60°" is strict), 25° of neck flexion acceptable ("0–25° OK", "> 25").
 //! A static hold (longer than [`STATIC_MIN_SECS`]) is **not acceptable** when it stayed in a zone that
@@ -57,6 +74,10 @@ use serde::Serialize;
 
 /// A posture held longer than this is static (EN 1005-4), seconds.
 pub const STATIC_MIN_SECS: f64 = 4.0;
+/// Trunk or neck extension counts only beyond this, degrees (ergocell's; see the module docs).
+pub const EXTENSION_DEAD_BAND_DEG: f64 = 5.0;
+/// A return to the acceptable zone this long ends a hold, seconds (ergocell's; see the module docs).
+pub const RETURN_MIN_SECS: f64 = 1.0;
 
 /// Trunk flexion at which the time-limited zone starts and ends, degrees (ISO 11226).
 pub const TRUNK_ZONE_DEG: [f64; 2] = [20.0, 60.0];
@@ -128,6 +149,9 @@ impl BodyPart {
     /// How long a posture at `deg` may be held (band edges: see the module docs).
     pub fn limit(self, deg: f64) -> Limit {
         match self {
+            Self::Trunk | Self::Neck if (-EXTENSION_DEAD_BAND_DEG..0.0).contains(&deg) => {
+                Limit::Unlimited
+            }
             Self::Trunk => match trunk_max_holding_secs(deg) {
                 None => Limit::NotAcceptable,
                 Some(s) if s.is_infinite() => Limit::Unlimited,
@@ -208,19 +232,47 @@ pub struct StaticPostureSummary {
 #[derive(Debug, Clone, Copy)]
 struct Run {
     start: i64,
+    /// Its time up to its last frame outside the zone, seconds.
     duration: f64,
+    /// Time since that frame (back in the zone, or not seen), not yet counted.
+    pending: f64,
+    /// Of `pending`, the time back in the acceptable zone.
+    pending_inside: f64,
     peak: f64,
-    /// The largest angle within the time-limited zone (trunk 20°–60°).
+    /// The largest angle within the time-limited zone (trunk 20°–60°; a moment beyond 60° counts
+    /// at 60°).
     limited_peak: Option<f64>,
     /// It was in a time-limited zone without a known limit.
     unknown: bool,
-    /// The current and the longest stretch in a zone not acceptable at all.
+    /// The current and the longest stretch in a zone not acceptable at all; `bad_pending` the time
+    /// since that stretch's last frame.
     bad_now: f64,
+    bad_pending: f64,
     bad_longest: f64,
 }
 
-/// The holds of one part from `(stamp, angle in degrees, the frame's time in seconds)` in time order.
-fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary {
+impl Run {
+    /// `dt` out of the not-acceptable zone: a stretch under way ends after [`RETURN_MIN_SECS`].
+    fn bad_pause(&mut self, dt: f64) {
+        if self.bad_now > 0.0 {
+            self.bad_pending += dt;
+            if self.bad_pending >= RETURN_MIN_SECS - TIME_EPS {
+                self.bad_now = 0.0;
+                self.bad_pending = 0.0;
+            }
+        }
+    }
+}
+
+/// Sums of frame times are compared with this slack, seconds (ten 0.1 s frames make 0.9999…).
+const TIME_EPS: f64 = 1e-6;
+
+/// One frame as [`holds_of`] reads it: its stamp, its angle in degrees (`None`: not seen) and the
+/// time it stands for, seconds.
+type Sample = (i64, Option<f64>, f64);
+
+/// The holds of one part from its samples in time order (no gap among them).
+fn holds_of(part: BodyPart, samples: &[Sample]) -> StaticPostureSummary {
     let mut holds = Vec::new();
     let mut current: Option<Run> = None;
     let mut close = |run: Option<Run>| {
@@ -245,38 +297,60 @@ fn holds_of(part: BodyPart, samples: &[(i64, f64, f64)]) -> StaticPostureSummary
         }
     };
     for &(t, deg, dt) in samples {
-        if part.outside(deg) {
-            let r = current.get_or_insert(Run {
-                start: t,
-                duration: 0.0,
-                peak: deg,
-                limited_peak: None,
-                unknown: false,
-                bad_now: 0.0,
-                bad_longest: 0.0,
-            });
-            r.duration += dt;
-            // the farthest from the zone: the largest flexion, or the deepest extension
-            if (deg < 0.0 && deg < r.peak) || (deg >= 0.0 && deg > r.peak) {
-                r.peak = deg;
+        let Some(deg) = deg.filter(|&d| part.outside(d)) else {
+            // back in the zone, or not seen: pending until the hold goes on or ends
+            if let Some(r) = current.as_mut() {
+                r.pending += dt;
+                r.bad_pause(dt);
+                if deg.is_some() {
+                    r.pending_inside += dt;
+                    if r.pending_inside >= RETURN_MIN_SECS - TIME_EPS {
+                        close(current.take());
+                    }
+                }
             }
-            match part.limit(deg) {
-                Limit::NotAcceptable => {
-                    r.bad_now += dt;
-                    r.bad_longest = r.bad_longest.max(r.bad_now);
-                }
-                Limit::Secs(_) => {
-                    r.bad_now = 0.0;
-                    r.limited_peak = Some(r.limited_peak.map_or(deg, |p| p.max(deg)));
-                }
-                Limit::Unknown => {
-                    r.bad_now = 0.0;
-                    r.unknown = true;
-                }
-                Limit::Unlimited => {}
-            }
+            continue;
+        };
+        let r = current.get_or_insert(Run {
+            start: t,
+            duration: 0.0,
+            pending: 0.0,
+            pending_inside: 0.0,
+            peak: deg,
+            limited_peak: None,
+            unknown: false,
+            bad_now: 0.0,
+            bad_pending: 0.0,
+            bad_longest: 0.0,
+        });
+        r.duration += r.pending + dt;
+        r.pending = 0.0;
+        r.pending_inside = 0.0;
+        // the farthest from the zone: the largest flexion, or the deepest extension
+        if (deg < 0.0 && deg < r.peak) || (deg >= 0.0 && deg > r.peak) {
+            r.peak = deg;
+        }
+        let limit = part.limit(deg);
+        if limit == Limit::NotAcceptable {
+            r.bad_now += r.bad_pending + dt;
+            r.bad_pending = 0.0;
+            r.bad_longest = r.bad_longest.max(r.bad_now);
         } else {
-            close(current.take());
+            r.bad_pause(dt);
+        }
+        match limit {
+            // a moment beyond the time-limited zone's top counts at its top
+            Limit::NotAcceptable if part == BodyPart::Trunk && deg > TRUNK_ZONE_DEG[1] => {
+                r.limited_peak = Some(
+                    r.limited_peak
+                        .map_or(TRUNK_ZONE_DEG[1], |p| p.max(TRUNK_ZONE_DEG[1])),
+                );
+            }
+            Limit::Secs(_) => {
+                r.limited_peak = Some(r.limited_peak.map_or(deg, |p| p.max(deg)));
+            }
+            Limit::Unknown => r.unknown = true,
+            Limit::NotAcceptable | Limit::Unlimited => {}
         }
     }
     close(current.take());
@@ -329,14 +403,10 @@ pub fn static_postures(
         .iter()
         .filter(|&&part| frames.iter().any(|f| f.of(part).is_some()))
         .map(|&part| {
-            let observed: Vec<(i64, f64)> = frames
-                .iter()
-                .filter_map(|f| {
-                    let rad = f.of(part)?;
-                    rad.is_finite().then(|| (f.stamp_nanos, rad.to_degrees()))
-                })
+            let intervals: Vec<i64> = frames
+                .windows(2)
+                .map(|w| w[1].stamp_nanos.saturating_sub(w[0].stamp_nanos).max(0))
                 .collect();
-            let intervals: Vec<i64> = observed.windows(2).map(|w| w[1].0 - w[0].0).collect();
             let mut normal: Vec<i64> = intervals
                 .iter()
                 .copied()
@@ -344,10 +414,10 @@ pub fn static_postures(
                 .collect();
             normal.sort_unstable();
             let typical = normal.get(normal.len() / 2).copied().unwrap_or(0) as f64 * 1e-9;
-            // Split at gaps: each piece's holds separately.
+            // Split at gaps in the recording: each piece's holds separately.
             let mut summary: Option<StaticPostureSummary> = None;
-            let mut piece: Vec<(i64, f64, f64)> = Vec::new();
-            let mut flush = |piece: &mut Vec<(i64, f64, f64)>| {
+            let mut piece: Vec<Sample> = Vec::new();
+            let mut flush = |piece: &mut Vec<Sample>| {
                 let s = holds_of(part, piece);
                 piece.clear();
                 match summary.as_mut() {
@@ -362,14 +432,15 @@ pub fn static_postures(
                     }
                 }
             };
-            for (i, &(t, deg)) in observed.iter().enumerate() {
+            for (i, f) in frames.iter().enumerate() {
                 let dt = intervals.get(i).copied();
                 let gap = dt.is_some_and(|d| d > max_frame_nanos);
                 let secs = match dt {
                     Some(d) if !gap => d as f64 * 1e-9,
                     _ => typical,
                 };
-                piece.push((t, deg, secs));
+                let deg = f.of(part).filter(|r| r.is_finite()).map(f64::to_degrees);
+                piece.push((f.stamp_nanos, deg, secs));
                 if gap {
                     flush(&mut piece);
                 }
@@ -430,7 +501,12 @@ mod tests {
         assert_eq!(trunk_max_holding_secs(-0.5), None);
         assert_eq!(BodyPart::Neck.limit(25.0), Limit::Unlimited);
         assert_eq!(BodyPart::Neck.limit(25.1), Limit::NotAcceptable);
-        assert_eq!(BodyPart::Neck.limit(-1.0), Limit::NotAcceptable);
+        assert_eq!(BodyPart::Neck.limit(-6.0), Limit::NotAcceptable);
+        // within the extension dead band: upright
+        assert_eq!(BodyPart::Neck.limit(-4.9), Limit::Unlimited);
+        assert_eq!(BodyPart::Trunk.limit(-4.9), Limit::Unlimited);
+        assert_eq!(BodyPart::Trunk.limit(-5.0), Limit::Unlimited);
+        assert_eq!(BodyPart::Trunk.limit(-5.1), Limit::NotAcceptable);
         assert_eq!(BodyPart::Trunk.limit(30.0), Limit::Secs(195.0));
         let arm = BodyPart::RightUpperArm;
         assert_eq!(arm.limit(19.9), Limit::Unlimited);
@@ -445,7 +521,7 @@ mod tests {
     fn a_hold_is_judged_by_its_length_against_the_limit_at_its_worst_angle() {
         // Upright 2 s, trunk 40° for 100 s (limit 150 s: fine), upright, 55° for 120 s (limit 82.5 s:
         // exceeded), upright, 70° for 3 s (not static), upright, 30° for 5 s then 70° for 2 s (one
-        // static hold, judged at 30°'s limit: fine), upright, 45° 1 s then 65° for 5 s (beyond 60°
+        // static hold, its 2 s beyond 60° judged at 60°'s limit: fine), upright, 45° 1 s then 65° for 5 s (beyond 60°
         // for more than 4 s: not acceptable).
         let mut frames = hold(0, 2.0, 5.0, 10.0);
         frames.extend(hold(2_000, 100.0, 40.0, 10.0));
@@ -472,7 +548,10 @@ mod tests {
         ];
         assert!((c.duration_secs - 7.0).abs() < 1e-6 && !c.exceeded, "{c:?}");
         assert_eq!(c.peak_deg.round(), 70.0);
-        assert!((c.limit_secs.unwrap() - 195.0).abs() < 1e-6);
+        assert!(
+            (c.limit_secs.unwrap() - 60.0).abs() < 1e-6,
+            "70° counts at 60°"
+        );
         assert!((c.not_acceptable_secs - 2.0).abs() < 1e-6);
         assert!(
             d.exceeded && (d.not_acceptable_secs - 5.0).abs() < 1e-6,
@@ -521,6 +600,43 @@ mod tests {
         assert!(arm.holds[0].limit_unknown && !arm.holds[0].exceeded);
         assert_eq!(arm.holds[0].limit_secs, None);
         assert!(arm.holds[1].exceeded);
+    }
+
+    #[test]
+    fn a_brief_return_or_an_occlusion_does_not_end_a_hold() {
+        // Neck at 30° for 3 s, back at 20° for 0.5 s (noise across the edge), 30° for 3 s: one hold
+        // of 6.5 s. Then 1 s at 20° ends it.
+        let mut frames = hold(0, 3.0, 5.0, 30.0);
+        frames.extend(hold(3_000, 0.5, 5.0, 20.0));
+        frames.extend(hold(3_500, 3.0, 5.0, 30.0));
+        frames.extend(hold(6_500, 1.0, 5.0, 20.0));
+        frames.extend(hold(7_500, 3.0, 5.0, 30.0));
+        let neck = &static_postures(&frames, 1_000_000_000)[1];
+        assert_eq!(neck.static_holds, 1, "{neck:?}");
+        assert!((neck.holds[0].duration_secs - 6.5).abs() < 1e-6, "{neck:?}");
+        // Trunk at 50° for 3 s, 1.5 s not seen, 50° for 3 s: one hold of 7.5 s, the occlusion
+        // bridged; not seen for 1.5 s and then upright: the hold ends before the occlusion.
+        let occluded = |k: i64| PostureAngles {
+            stamp_nanos: (3_000 + k * 100) * MS,
+            ..PostureAngles::default()
+        };
+        let mut frames = hold(0, 3.0, 50.0, 10.0);
+        frames.extend((0..15).map(occluded));
+        frames.extend(hold(4_500, 3.0, 50.0, 10.0));
+        let trunk = &static_postures(&frames, 1_000_000_000)[0];
+        assert_eq!(trunk.static_holds, 1);
+        assert!(
+            (trunk.holds[0].duration_secs - 7.5).abs() < 1e-6,
+            "{trunk:?}"
+        );
+        let mut frames = hold(0, 4.5, 50.0, 10.0);
+        frames.extend((15..30).map(occluded));
+        frames.extend(hold(6_000, 2.0, 5.0, 10.0));
+        let trunk = &static_postures(&frames, 1_000_000_000)[0];
+        assert!(
+            (trunk.holds[0].duration_secs - 4.5).abs() < 1e-6,
+            "{trunk:?}"
+        );
     }
 
     #[test]

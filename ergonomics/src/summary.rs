@@ -195,7 +195,8 @@ pub struct SummaryFrame {
     pub right: Option<ScoredSide>,
     /// The task segment the frame belongs to; `None`: not labelled.
     pub phase: Option<&'static str>,
-    /// Trunk and neck flexion as scored and each upper arm's elevation from vertical (`[left,
+    /// Trunk and neck flexion as observed (smoothed as scored, not held over gaps) and each upper
+    /// arm's elevation from vertical (`[left,
     /// right]`), radians, for [`crate::static_posture`]; `None`: not observed.
     pub trunk_flexion_rad: Option<f64>,
     pub neck_flexion_rad: Option<f64>,
@@ -426,7 +427,7 @@ impl SummaryBuilder {
         }
     }
 
-    /// Adds one assessed frame (its scores, REBA and the trunk and neck angles as scored) in the task
+    /// Adds one assessed frame (its scores, REBA and the trunk, neck and upper-arm angles as observed) in the task
     /// segment `phase` (`None`: not labelled).
     pub fn add(&mut self, frame: &FrameAssessment, phase: Option<&'static str>) {
         self.push(SummaryFrame {

@@ -850,8 +850,8 @@ fn reba_is_scored_beside_rula_from_the_same_frame() {
     }
 }
 
-/// A knee the cameras never saw is scored straight and marks REBA (not RULA) uncertain; a knee seen
-/// before is held.
+/// A knee the cameras never saw is scored beyond 60° (never as straight) and marks REBA (not RULA)
+/// uncertain; a knee seen before is held.
 #[test]
 fn reba_says_when_the_knees_were_not_seen() {
     let spec = PoseSpec {
@@ -882,7 +882,9 @@ fn reba_says_when_the_knees_were_not_seen() {
         "{:?}",
         r.reba.uncertain_reasons
     );
-    assert_eq!(r.reba.input.knee_flexion_deg, 0.0);
+    // Never scored as straight (that would lower the score): beyond 60°, legs 1 + 2.
+    assert_eq!(r.reba.input.knee_flexion_deg, 90.0);
+    assert_eq!(r.reba.scores.legs_score, 3);
 
     let mut a = assessor_for(&spec);
     a.assess(&at(&spec, 0)).unwrap();
@@ -917,5 +919,48 @@ fn reba_load_from_the_task_config_is_range_checked() {
                 ..
             })
         ));
+    }
+}
+
+/// REBA scores walking as bilateral (legs 1), though one foot is off the floor; the same raised foot
+/// standing still is unilateral (legs 2).
+#[test]
+fn reba_counts_walking_as_bilateral_weight_bearing() {
+    let spec = PoseSpec::default();
+    let raise = |mut s: Skeleton3| {
+        for lm in [
+            Landmark::LeftAnkle,
+            Landmark::LeftHeel,
+            Landmark::LeftFootIndex,
+        ] {
+            let mut e = *s.get(lm).unwrap();
+            e.position_m += spec.up() * 0.15;
+            s.set(lm, Some(e)).unwrap();
+        }
+        s
+    };
+    let frame = |k: i64, speed: f64| {
+        raise(
+            PoseSpec {
+                stamp_nanos: k * FRAME,
+                world_translation: spec.world_translation
+                    + spec.world_rotation * Vector3::x() * speed * (k as f64 * 0.1),
+                ..spec.clone()
+            }
+            .skeleton(),
+        )
+    };
+    for (speed, legs) in [(1.2, 1), (0.0, 2)] {
+        let mut a = assessor_for(&spec);
+        let mut last = None;
+        for k in 0..10 {
+            last = Some(a.assess(&frame(k, speed)).unwrap());
+        }
+        let r = last.unwrap().right.unwrap();
+        assert!(
+            !r.input.legs_supported_and_balanced,
+            "a foot is off the floor"
+        );
+        assert_eq!(r.reba.scores.legs_score, legs, "{speed} m/s");
     }
 }

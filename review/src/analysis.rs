@@ -135,7 +135,8 @@ pub struct Frames {
     pub uncertain_right: Vec<bool>,
     /// The frame's headline action level (worse side), 0 when neither side was scored.
     pub action_level: Vec<u8>,
-    /// The frame's task segment ([`PHASES`]); `None` when the skeleton had no hips.
+    /// The frame's task segment ([`PHASES`]); `None` when the skeleton had no hips or the frame was
+    /// not assessed.
     pub phase: Vec<Option<&'static str>>,
     /// Each side's REBA score (1..=15) of the frame; `None` when not scored or not recorded.
     pub reba_left: Vec<Option<u8>>,
@@ -408,7 +409,11 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         let t = stamp(&m.header);
         let e = ergonomics_at(t);
         frames.t.push(round_to(secs(t, t0), 6));
-        frames.phase.push(by_stamp.get(&t).and_then(|f| f.phase));
+        // Only an assessed frame is in a segment (the summary counts those), so the CSV's rows per
+        // segment add up to the page's segment times.
+        frames
+            .phase
+            .push(e.and_then(|_| by_stamp.get(&t)).and_then(|f| f.phase));
         frames.positions.push(
             (0..LANDMARK_COUNT)
                 .flat_map(|i| {

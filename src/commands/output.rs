@@ -39,6 +39,27 @@ pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> a
     }
 }
 
+/// True if `a` and `b` name the same file, existing or not: the same existing file
+/// ([`same_file`]), or the same name in the same (existing) folder (`r.html` and `./r.html`, or
+/// `out/../r.html`). For two outputs of one command, neither of which need exist yet.
+pub fn same_path(a: &Path, b: &Path) -> bool {
+    if same_file(a, b) {
+        return true;
+    }
+    let key = |p: &Path| {
+        let name = p.file_name()?;
+        let parent = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        Some(std::fs::canonicalize(parent).ok()?.join(name))
+    };
+    match (key(a), key(b)) {
+        (Some(x), Some(y)) => x == y,
+        _ => a == b,
+    }
+}
+
 /// True if `a` and `b` name the same existing file (canonical paths, or on Unix the same device
 /// and inode: a hard link or a symlink to it).
 pub fn same_file(a: &Path, b: &Path) -> bool {

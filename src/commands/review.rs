@@ -226,7 +226,7 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
     for (flag, path) in [("--csv", &args.csv), ("--summary-csv", &args.summary_csv)] {
         if let Some(path) = path {
             for (other, p) in &inputs {
-                if other.starts_with("--") && p == path {
+                if other.starts_with("--") && output::same_path(p, path) {
                     return Err(UsageError(format!(
                         "{flag} {} is also {other}: choose another file",
                         path.display()

@@ -453,7 +453,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
                     format!(
                         "; worst: {:.1} s from {:.1} s, up to {:.0}°: {why}",
                         h.duration_secs,
-                        (h.start_nanos - t0) as f64 * 1e-9,
+                        h.start_nanos.saturating_sub(t0) as f64 * 1e-9,
                         h.peak_deg,
                     )
                 })

@@ -269,7 +269,7 @@ export function renderSegments(el, sessions) {
       .join('');
     html += `<table class="regions segments"><thead><tr><th>Segment</th><th class="num">time</th><th class="num">share</th><th class="num">episodes</th><th>RULA action level 1–4</th><th>at level ≥ 3</th>${hasReba ? '<th>REBA action level 0–4</th>' : ''}<th class="num">peak grand</th></tr></thead><tbody>${rows}</tbody></table>`;
   }
-  html += `<h2 class="sub">Static postures <span class="hint">ISO 11226: held &gt; 4 s outside the acceptable zone · trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°; beyond 60° or extended, and the neck outside 0°–25°, not acceptable · upper arm (from vertical) beyond 60° not acceptable; its 20°–60° holding-time curve has no readable source, so those holds are counted for you to judge</span></h2>`;
+  html += `<h2 class="sub">Static postures <span class="hint">ISO 11226: held &gt; 4 s outside the acceptable zone · trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°; beyond 60° or extended, and the neck outside 0°–25°, not acceptable · upper arm (from vertical) beyond 60° not acceptable; its 20°–60° holding-time curve has no readable source, so those holds are counted for you to judge · ergocell's: extension counts beyond 5°, a return to the zone shorter than 1 s does not end a hold</span></h2>`;
   if (!statics.length) {
     html += '<div class="empty">No trunk or neck angles in this recording.</div>';
   } else {
