@@ -134,16 +134,46 @@ pub struct FusionEngine {
     cameras: Vec<CameraCache>,
     method: FusionMethod,
     triangulator: RobustTriangulator,
-    paper_cache: HashMap<Vec<u64>, DMatrix<f64>>,
+    paper_cache: HashMap<[u64; LANDMARK_COUNT], DMatrix<f64>>,
     /// Per-frame buffers reused across frames (no allocation on the hot path once warm).
     scratch_obs: FrameObs,
     scratch_views: Vec<NormalizedView>,
+    scratch_paper: PaperScratch,
     /// The learned-bone-length prior of the default fusion (`None`: per-frame geometry only).
     bone_prior: Option<BonePrior>,
 }
 
 /// Undistorted observations of every landmark in a frame.
 type FrameObs = [Vec<Obs>; LANDMARK_COUNT];
+
+/// Each stereo pair's estimate of every landmark.
+type PerPair = Vec<[Option<Point3<f64>>; LANDMARK_COUNT]>;
+
+/// The paper fusion's per-frame buffers, reused across frames.
+#[derive(Debug, Clone)]
+struct PaperScratch {
+    /// `(pair, landmark, left camera, right camera)` of each DLT.
+    jobs: Vec<(usize, usize, usize, usize)>,
+    accs: Vec<DltAccumulator>,
+    solved: Vec<Result<Point3<f64>>>,
+    per_pair: PerPair,
+    /// The right-hand side `[δ; a]` and the solution.
+    b: DMatrix<f64>,
+    p: DMatrix<f64>,
+}
+
+impl Default for PaperScratch {
+    fn default() -> Self {
+        Self {
+            jobs: Vec::new(),
+            accs: Vec::new(),
+            solved: Vec::new(),
+            per_pair: Vec::new(),
+            b: DMatrix::zeros(0, 3),
+            p: DMatrix::zeros(0, 3),
+        }
+    }
+}
 
 impl FusionEngine {
     /// An engine for this rig (2 to [`MAX_VIEWS`] cameras: one camera cannot triangulate anything,
@@ -181,6 +211,7 @@ impl FusionEngine {
             paper_cache: HashMap::new(),
             scratch_obs: std::array::from_fn(|_| Vec::new()),
             scratch_views: Vec::new(),
+            scratch_paper: PaperScratch::default(),
             bone_prior: Some(BonePrior::new(BonePriorParams::default())),
         })
     }
@@ -267,8 +298,11 @@ impl FusionEngine {
                 self.scratch_views = views;
             }
             FusionMethod::Paper => {
-                let per_pair = self.pair_estimates(obs);
-                if let Some(points) = self.paper_fuse(&per_pair) {
+                let mut scratch = std::mem::take(&mut self.scratch_paper);
+                self.pair_estimates_into(obs, &mut scratch);
+                let fused = self.paper_fuse(&mut scratch);
+                self.scratch_paper = scratch;
+                if let Some(points) = fused {
                     for lm in Landmark::ALL {
                         if let Some(p) = points[lm.index()] {
                             let o = &obs[lm.index()];
@@ -397,7 +431,9 @@ impl FusionEngine {
         frame: &Frame2,
     ) -> Result<Vec<[Option<Point3<f64>>; LANDMARK_COUNT]>> {
         let (obs, _, _) = self.observations(frame)?;
-        Ok(self.pair_estimates(&obs))
+        let mut scratch = PaperScratch::default();
+        self.pair_estimates_into(&obs, &mut scratch);
+        Ok(scratch.per_pair)
     }
 
     /// Plain N-view DLT over every camera that sees each landmark, with unit weights, on the raw
@@ -506,10 +542,18 @@ impl FusionEngine {
         Ok((failures, present))
     }
 
-    fn pair_estimates(&self, obs: &FrameObs) -> Vec<[Option<Point3<f64>>; LANDMARK_COUNT]> {
+    /// Each pair's DLT estimate of every landmark into `scratch.per_pair`.
+    fn pair_estimates_into(&self, obs: &FrameObs, scratch: &mut PaperScratch) {
         // every (pair, landmark) both cameras see, accumulated, then all solved at once
-        let mut jobs: Vec<(usize, usize, usize, usize)> = Vec::new();
-        let mut accs: Vec<DltAccumulator> = Vec::new();
+        let PaperScratch {
+            jobs,
+            accs,
+            solved,
+            per_pair: out,
+            ..
+        } = scratch;
+        jobs.clear();
+        accs.clear();
         for (j, pair) in self.rig.pairs().iter().enumerate() {
             for (i, o) in obs.iter().enumerate() {
                 let Some(l) = o.iter().find(|o| o.camera == pair.left) else {
@@ -533,11 +577,13 @@ impl FusionEngine {
                 accs.push(acc);
             }
         }
-        let mut solved = vec![Err(PerceptionError::Degenerate); accs.len()];
-        DltAccumulator::solve_many(&accs, &mut solved);
-        let mut out = vec![[None; LANDMARK_COUNT]; self.rig.pairs().len()];
-        for ((j, i, left, right), p) in jobs.into_iter().zip(solved) {
-            let Ok(p) = p else { continue };
+        solved.clear();
+        solved.resize(accs.len(), Err(PerceptionError::Degenerate));
+        DltAccumulator::solve_many(accs, solved);
+        out.clear();
+        out.resize(self.rig.pairs().len(), [None; LANDMARK_COUNT]);
+        for (&(j, i, left, right), p) in jobs.iter().zip(solved.iter()) {
+            let Ok(p) = *p else { continue };
             // a pair estimate behind either camera is no estimate
             let in_front = [left, right].iter().all(|&c| {
                 let cam = &self.cameras[c];
@@ -547,40 +593,46 @@ impl FusionEngine {
                 out[j][i] = Some(p);
             }
         }
-        out
     }
 
-    /// The paper's graph-Laplacian fusion of the per-pair estimates.
+    /// The paper's graph-Laplacian fusion of the per-pair estimates (`scratch.per_pair`).
     fn paper_fuse(
         &mut self,
-        per_pair: &[[Option<Point3<f64>>; LANDMARK_COUNT]],
+        scratch: &mut PaperScratch,
     ) -> Option<[Option<Point3<f64>>; LANDMARK_COUNT]> {
         let m = self.cameras.len();
+        let per_pair = &scratch.per_pair;
+        let rig = &self.rig;
         // camera k's estimate of landmark i: its pair's estimate
         let camera_estimate =
-            |k: usize, i: usize| -> Option<Point3<f64>> { per_pair[self.rig.pair_of(k)?][i] };
+            |k: usize, i: usize| -> Option<Point3<f64>> { per_pair[rig.pair_of(k)?][i] };
         // topology: for each landmark, the mask of connected cameras
-        let edges: Vec<u64> = (0..LANDMARK_COUNT)
-            .map(|i| {
-                (0..m)
-                    .filter(|&k| camera_estimate(k, i).is_some())
-                    .fold(0u64, |acc, k| acc | (1 << k))
-            })
-            .collect();
-        let landmarks: Vec<usize> = (0..LANDMARK_COUNT).filter(|&i| edges[i] != 0).collect();
+        let edges: [u64; LANDMARK_COUNT] = std::array::from_fn(|i| {
+            (0..m)
+                .filter(|&k| camera_estimate(k, i).is_some())
+                .fold(0u64, |acc, k| acc | (1 << k))
+        });
+        let mut landmarks = [0usize; LANDMARK_COUNT];
+        let mut n = 0;
+        for (i, _) in edges.iter().enumerate().filter(|(_, &e)| e != 0) {
+            landmarks[n] = i;
+            n += 1;
+        }
+        let landmarks = &landmarks[..n];
         if landmarks.is_empty() {
             return None;
         }
-        let n = landmarks.len();
         let size = n + m;
         let solver = self
             .paper_cache
-            .entry(edges.clone())
-            .or_insert_with(|| paper_solver(&edges, &landmarks, m));
+            .entry(edges)
+            .or_insert_with(|| paper_solver(&edges, landmarks, m));
         // b = [δ; a]
-        let mut b = DMatrix::zeros(2 * size, 3);
+        let b = &mut scratch.b;
+        if b.shape() != (2 * size, 3) {
+            *b = DMatrix::zeros(2 * size, 3);
+        }
         for (row, &i) in landmarks.iter().enumerate() {
-            let cams: Vec<usize> = iter_mask(edges[i]).collect();
             let mut anchor = Vector3::zeros();
             let mut pairs_seen = 0.0;
             for est in per_pair.iter().filter_map(|pp| pp[i]) {
@@ -589,11 +641,11 @@ impl FusionEngine {
             }
             anchor /= pairs_seen;
             let mut delta = Vector3::zeros();
-            for &k in &cams {
+            for k in iter_mask(edges[i]) {
                 let est = camera_estimate(k, i)?;
                 delta += est.coords - self.cameras[k].centre_world.coords;
             }
-            delta /= cams.len() as f64;
+            delta /= f64::from(edges[i].count_ones());
             b.fixed_slice_mut::<1, 3>(row, 0)
                 .copy_from(&delta.transpose());
             b.fixed_slice_mut::<1, 3>(size + row, 0)
@@ -601,24 +653,25 @@ impl FusionEngine {
         }
         for k in 0..m {
             let c = self.cameras[k].centre_world.coords;
-            let connected: Vec<usize> = landmarks
-                .iter()
-                .copied()
-                .filter(|&i| edges[i] & (1 << k) != 0)
-                .collect();
             let mut delta = Vector3::zeros();
-            for &i in &connected {
+            let mut connected = 0usize;
+            for &i in landmarks.iter().filter(|&&i| edges[i] & (1 << k) != 0) {
                 delta += c - camera_estimate(k, i)?.coords;
+                connected += 1;
             }
-            if !connected.is_empty() {
-                delta /= connected.len() as f64;
+            if connected != 0 {
+                delta /= connected as f64;
             }
             b.fixed_slice_mut::<1, 3>(n + k, 0)
                 .copy_from(&delta.transpose());
             b.fixed_slice_mut::<1, 3>(size + n + k, 0)
                 .copy_from(&c.transpose());
         }
-        let p = &*solver * b;
+        let p = &mut scratch.p;
+        if p.shape() != (size, 3) {
+            *p = DMatrix::zeros(size, 3);
+        }
+        solver.mul_to(b, p);
         let mut out = [None; LANDMARK_COUNT];
         for (row, &i) in landmarks.iter().enumerate() {
             let q = Point3::new(p[(row, 0)], p[(row, 1)], p[(row, 2)]);
