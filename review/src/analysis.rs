@@ -554,7 +554,8 @@ struct FrameFacts {
     upper_arm_elevation_rad: [Option<f64>; 2],
 }
 
-/// The task segment names of the review, in precedence order (see [`phase_of`]).
+/// The task segment names of the review, in precedence order: walking and floor pick from the
+/// skeleton, handover while the robot brings or holds a part, otherwise in place.
 pub const PHASES: [&str; 4] = ["walking", "floor pick", "handover", "in place"];
 
 /// A frame's task segment: walking and floor pick from the skeleton
