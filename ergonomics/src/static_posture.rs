@@ -13,9 +13,10 @@
 //!   only with full support of the trunk (ibid.). Table 2 of an occupational-medicine study,
 //!   "Evaluation guideline values according to ISO 11226 and DIN EN 1005–4"
 //!   (<https://occup-med.biomedcentral.com/articles/10.1186/s12995-020-00286-9/tables/2>), gives the
-//!   same zones: trunk "neutral 0°–20°, moderate 20°–60°, awkward < 0° & > 60°". ergocell does not
-//!   know whether a backrest supports the trunk, so a held extension counts as not acceptable —
-//!   beyond [`EXTENSION_DEAD_BAND_DEG`] (below).
+//!   same zones: trunk "neutral 0°–20°, moderate 20°–60°, awkward < 0° & > 60°". A held extension
+//!   (beyond [`EXTENSION_DEAD_BAND_DEG`], below) counts as not acceptable unless the task says the
+//!   trunk is supported (`TaskConfig::seated_well_supported`: `ergocell rula track --task`); a
+//!   recording does not carry the task, so the review treats the trunk as unsupported.
 //! - **Neck flexion** (the head relative to the trunk; ergocell's neck flexion): 0°–25° acceptable;
 //!   beyond 25° or any extension not acceptable ("Nekbuiging … < 0° (extensie) niet aanvaardbaar /
 //!   0 – 25° OK / > 25 niet aanvaardbaar", ergonomiesite.be; "cervical spine flexion/extension:
@@ -139,11 +140,6 @@ impl BodyPart {
             Self::LeftUpperArm => ("upper_arm", "left"),
             Self::RightUpperArm => ("upper_arm", "right"),
         }
-    }
-
-    /// Whether `deg` is outside this part's acceptable zone.
-    fn outside(self, deg: f64) -> bool {
-        self.limit(deg) != Limit::Unlimited
     }
 
     /// How long a posture at `deg` may be held (band edges: see the module docs).
@@ -272,13 +268,21 @@ const TIME_EPS: f64 = 1e-6;
 type Sample = (i64, Option<f64>, f64);
 
 /// The holds of one part from its samples in time order (no gap among them).
-fn holds_of(part: BodyPart, samples: &[Sample]) -> StaticPostureSummary {
+fn holds_of(part: BodyPart, samples: &[Sample], trunk_supported: bool) -> StaticPostureSummary {
+    // a trunk extension with the trunk fully supported is acceptable (ISO 11226, as summarised)
+    let limit_of = |deg: f64| {
+        if part == BodyPart::Trunk && trunk_supported && deg < 0.0 {
+            Limit::Unlimited
+        } else {
+            part.limit(deg)
+        }
+    };
     let mut holds = Vec::new();
     let mut current: Option<Run> = None;
     let mut close = |run: Option<Run>| {
         if let Some(r) = run {
             if r.duration > STATIC_MIN_SECS {
-                let limit = r.limited_peak.and_then(|deg| match part.limit(deg) {
+                let limit = r.limited_peak.and_then(|deg| match limit_of(deg) {
                     Limit::Secs(s) => Some(s),
                     _ => None,
                 });
@@ -297,7 +301,7 @@ fn holds_of(part: BodyPart, samples: &[Sample]) -> StaticPostureSummary {
         }
     };
     for &(t, deg, dt) in samples {
-        let Some(deg) = deg.filter(|&d| part.outside(d)) else {
+        let Some(deg) = deg.filter(|&d| limit_of(d) != Limit::Unlimited) else {
             // back in the zone, or not seen: pending until the hold goes on or ends
             if let Some(r) = current.as_mut() {
                 r.pending += dt;
@@ -330,7 +334,7 @@ fn holds_of(part: BodyPart, samples: &[Sample]) -> StaticPostureSummary {
         if (deg < 0.0 && deg < r.peak) || (deg >= 0.0 && deg > r.peak) {
             r.peak = deg;
         }
-        let limit = part.limit(deg);
+        let limit = limit_of(deg);
         if limit == Limit::NotAcceptable {
             r.bad_now += r.bad_pending + dt;
             r.bad_pending = 0.0;
@@ -395,9 +399,13 @@ impl PostureAngles {
 /// The static holds of the trunk, the neck and each upper arm from the frames' angles in time order;
 /// intervals longer than `max_frame_nanos` are gaps (see the module docs). A part never observed is
 /// left out.
+///
+/// `trunk_supported`: the task has the trunk fully supported (a backrest), so a held extension is
+/// acceptable (ISO 11226, as summarised).
 pub fn static_postures(
     frames: &[PostureAngles],
     max_frame_nanos: i64,
+    trunk_supported: bool,
 ) -> Vec<StaticPostureSummary> {
     BodyPart::ALL
         .iter()
@@ -418,7 +426,7 @@ pub fn static_postures(
             let mut summary: Option<StaticPostureSummary> = None;
             let mut piece: Vec<Sample> = Vec::new();
             let mut flush = |piece: &mut Vec<Sample>| {
-                let s = holds_of(part, piece);
+                let s = holds_of(part, piece, trunk_supported);
                 piece.clear();
                 match summary.as_mut() {
                     None => summary = Some(s),
@@ -446,7 +454,7 @@ pub fn static_postures(
                 }
             }
             flush(&mut piece);
-            summary.unwrap_or_else(|| holds_of(part, &[]))
+            summary.unwrap_or_else(|| holds_of(part, &[], trunk_supported))
         })
         .collect()
 }
@@ -536,7 +544,7 @@ mod tests {
         frames.extend(hold(240_000, 1.0, 45.0, 10.0));
         frames.extend(hold(241_000, 5.0, 65.0, 10.0));
         frames.extend(hold(246_000, 2.0, 5.0, 10.0));
-        let s = static_postures(&frames, 1_000_000_000);
+        let s = static_postures(&frames, 1_000_000_000, false);
         let trunk = &s[0];
         assert_eq!(trunk.part, BodyPart::Trunk);
         assert_eq!((trunk.static_holds, trunk.exceeded), (4, 2), "{trunk:?}");
@@ -572,7 +580,7 @@ mod tests {
         let mut frames = hold(0, 5.0, 5.0, 35.0);
         frames.extend(hold(5_000, 1.0, 5.0, 10.0));
         frames.extend(hold(6_000, 6.0, 5.0, -8.0));
-        let neck = &static_postures(&frames, 1_000_000_000)[1];
+        let neck = &static_postures(&frames, 1_000_000_000, false)[1];
         assert_eq!((neck.static_holds, neck.exceeded), (2, 2));
         assert_eq!(neck.holds[0].peak_deg.round(), 35.0);
         assert_eq!(neck.holds[1].peak_deg.round(), -8.0);
@@ -585,7 +593,7 @@ mod tests {
         let mut frames = arms(0, 30.0, 5.0, 10.0, 45.0);
         frames.extend(arms(30_000, 1.0, 5.0, 10.0, 5.0));
         frames.extend(arms(31_000, 5.0, 5.0, 10.0, 80.0));
-        let s = static_postures(&frames, 1_000_000_000);
+        let s = static_postures(&frames, 1_000_000_000, false);
         let parts: Vec<BodyPart> = s.iter().map(|p| p.part).collect();
         assert_eq!(
             parts,
@@ -603,6 +611,15 @@ mod tests {
     }
 
     #[test]
+    fn a_supported_trunk_may_lean_back() {
+        let frames = hold(0, 10.0, -12.0, 10.0);
+        let unsupported = &static_postures(&frames, 1_000_000_000, false)[0];
+        assert_eq!((unsupported.static_holds, unsupported.exceeded), (1, 1));
+        let supported = &static_postures(&frames, 1_000_000_000, true)[0];
+        assert_eq!(supported.static_holds, 0);
+    }
+
+    #[test]
     fn a_brief_return_or_an_occlusion_does_not_end_a_hold() {
         // Neck at 30° for 3 s, back at 20° for 0.5 s (noise across the edge), 30° for 3 s: one hold
         // of 6.5 s. Then 1 s at 20° ends it.
@@ -611,7 +628,7 @@ mod tests {
         frames.extend(hold(3_500, 3.0, 5.0, 30.0));
         frames.extend(hold(6_500, 1.0, 5.0, 20.0));
         frames.extend(hold(7_500, 3.0, 5.0, 30.0));
-        let neck = &static_postures(&frames, 1_000_000_000)[1];
+        let neck = &static_postures(&frames, 1_000_000_000, false)[1];
         assert_eq!(neck.static_holds, 1, "{neck:?}");
         assert!((neck.holds[0].duration_secs - 6.5).abs() < 1e-6, "{neck:?}");
         // Trunk at 50° for 3 s, 1.5 s not seen, 50° for 3 s: one hold of 7.5 s, the occlusion
@@ -623,7 +640,7 @@ mod tests {
         let mut frames = hold(0, 3.0, 50.0, 10.0);
         frames.extend((0..15).map(occluded));
         frames.extend(hold(4_500, 3.0, 50.0, 10.0));
-        let trunk = &static_postures(&frames, 1_000_000_000)[0];
+        let trunk = &static_postures(&frames, 1_000_000_000, false)[0];
         assert_eq!(trunk.static_holds, 1);
         assert!(
             (trunk.holds[0].duration_secs - 7.5).abs() < 1e-6,
@@ -632,7 +649,7 @@ mod tests {
         let mut frames = hold(0, 4.5, 50.0, 10.0);
         frames.extend((15..30).map(occluded));
         frames.extend(hold(6_000, 2.0, 5.0, 10.0));
-        let trunk = &static_postures(&frames, 1_000_000_000)[0];
+        let trunk = &static_postures(&frames, 1_000_000_000, false)[0];
         assert!(
             (trunk.holds[0].duration_secs - 4.5).abs() < 1e-6,
             "{trunk:?}"
@@ -644,7 +661,10 @@ mod tests {
         // 3 s bent, a 5 s gap (no frames), 3 s bent: two 3 s holds, neither static.
         let mut frames = hold(0, 3.0, 45.0, 10.0);
         frames.extend(hold(8_000, 3.0, 45.0, 10.0));
-        assert_eq!(static_postures(&frames, 1_000_000_000)[0].static_holds, 0);
+        assert_eq!(
+            static_postures(&frames, 1_000_000_000, false)[0].static_holds,
+            0
+        );
         // 3 s bent, 0.5 s not observed, 3 s bent: one hold of 6.5 s (the unobserved frames skipped).
         let mut frames = hold(0, 3.0, 45.0, 10.0);
         frames.extend((0..5).map(|k| PostureAngles {
@@ -652,11 +672,11 @@ mod tests {
             ..PostureAngles::default()
         }));
         frames.extend(hold(3_500, 3.0, 45.0, 10.0));
-        let trunk = &static_postures(&frames, 1_000_000_000)[0];
+        let trunk = &static_postures(&frames, 1_000_000_000, false)[0];
         assert_eq!(trunk.static_holds, 1);
         assert!((trunk.longest_secs - 6.5).abs() < 1e-6, "{trunk:?}");
         // Nothing observed: no holds, no panic.
-        assert!(static_postures(&[], 1_000_000_000)
+        assert!(static_postures(&[], 1_000_000_000, false)
             .iter()
             .all(|s| s.static_holds == 0));
     }

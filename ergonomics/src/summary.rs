@@ -252,6 +252,7 @@ impl Entry {
 pub struct SummaryBuilder {
     max_frame_nanos: i64,
     entries: Vec<Entry>,
+    trunk_supported: bool,
 }
 
 /// Time and frame count per score, and the stretches at or above each score.
@@ -424,7 +425,16 @@ impl SummaryBuilder {
         Self {
             max_frame_nanos,
             entries: Vec::new(),
+            trunk_supported: false,
         }
+    }
+
+    /// The task has the trunk fully supported (a backrest): a held trunk extension is acceptable in
+    /// the static postures ([`crate::static_posture`]). Default: not supported.
+    #[must_use]
+    pub fn trunk_supported(mut self, supported: bool) -> Self {
+        self.trunk_supported = supported;
+        self
     }
 
     /// Adds one assessed frame (its scores, REBA and the trunk, neck and upper-arm angles as observed) in the task
@@ -619,7 +629,7 @@ impl SummaryBuilder {
                         upper_arm_elevation_rad: e.upper_arm_elevation_rad,
                     })
                     .collect();
-                static_postures(&angles, self.max_frame_nanos)
+                static_postures(&angles, self.max_frame_nanos, self.trunk_supported)
             },
         }
     }

@@ -264,7 +264,8 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     pipeline_config.assessment = config;
     let mut stage = Assessment::new(&pipeline_config).map_err(|e| UsageError(e.to_string()))?;
     // The one summary (time-weighted, gaps not counted), as `ergocell review` shows it.
-    let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+    let mut summary =
+        SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS).trunk_supported(task.seated_well_supported);
     // Task segments from the skeleton alone (walking, floor pick, in place).
     let mut activity = ActivityTracker::new(ActivityConfig::default(), &config.up)
         .map_err(|e| UsageError(e.to_string()))?;
@@ -425,7 +426,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     }
     if !s.static_postures.is_empty() {
         println!(
-            "static postures (ISO 11226: held > {STATIC_MIN_SECS} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended not acceptable; neck beyond 25° or extended not acceptable; upper arm beyond 60° not acceptable, 20°–60° time-limited by a curve no readable source gives):"
+            "static postures (ISO 11226: held > {STATIC_MIN_SECS} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended (unless the task's trunk is supported) not acceptable; neck beyond 25° or extended not acceptable; upper arm beyond 60° not acceptable, 20°–60° time-limited by a curve no readable source gives):"
         );
         for p in &s.static_postures {
             let worst = p
