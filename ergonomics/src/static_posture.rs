@@ -407,21 +407,23 @@ pub fn static_postures(
     max_frame_nanos: i64,
     trunk_supported: bool,
 ) -> Vec<StaticPostureSummary> {
+    // The frames' intervals, and the typical one a frame before a gap stands for: the same for
+    // every part.
+    let intervals: Vec<i64> = frames
+        .windows(2)
+        .map(|w| w[1].stamp_nanos.saturating_sub(w[0].stamp_nanos).max(0))
+        .collect();
+    let mut normal: Vec<i64> = intervals
+        .iter()
+        .copied()
+        .filter(|&d| d <= max_frame_nanos)
+        .collect();
+    normal.sort_unstable();
+    let typical = normal.get(normal.len() / 2).copied().unwrap_or(0) as f64 * 1e-9;
     BodyPart::ALL
         .iter()
         .filter(|&&part| frames.iter().any(|f| f.of(part).is_some()))
         .map(|&part| {
-            let intervals: Vec<i64> = frames
-                .windows(2)
-                .map(|w| w[1].stamp_nanos.saturating_sub(w[0].stamp_nanos).max(0))
-                .collect();
-            let mut normal: Vec<i64> = intervals
-                .iter()
-                .copied()
-                .filter(|&d| d <= max_frame_nanos)
-                .collect();
-            normal.sort_unstable();
-            let typical = normal.get(normal.len() / 2).copied().unwrap_or(0) as f64 * 1e-9;
             // Split at gaps in the recording: each piece's holds separately.
             let mut summary: Option<StaticPostureSummary> = None;
             let mut piece: Vec<Sample> = Vec::new();
