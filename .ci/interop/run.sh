@@ -187,8 +187,8 @@ sys.exit(0 if ok else 1)
 PY
 
 # Fault injection (#18): the DDS peer restarting. The Cyclone peer (cameras and controller) is killed
-# with SIGKILL 5 s into the session (the class decided, the robot on its way to the handover), and a
-# new one (a new participant: new GUID, no goodbye from the old one) starts 3 s later and goes on
+# with SIGKILL 7 s into the session (the class decided at the station, the robot on its way to the
+# handover), and a new one (a new participant: new GUID, no goodbye from the old one) starts 3 s later and goes on
 # with the session from where the recording was then (PEER_SKIP_S). ergocell must hold the robot
 # while the cameras are gone, match the new participant both ways (fuse its cameras, command its
 # controller, which restarts with the robot at home, as after homing it) and end the session
@@ -205,10 +205,10 @@ unshare -n -- bash -c '
   run=$!
   python3 .ci/interop/peer.py "$2/clean.mcap" "$2/traj/locks/c2.lock.toml" 90 > /dev/null 2>&1 &
   first=$!
-  sleep 5
+  sleep 7
   kill -KILL "$first"; wait "$first" 2>/dev/null || true
   sleep 3
-  PEER_SKIP_S=8 python3 .ci/interop/peer.py "$2/clean.mcap" "$2/traj/locks/c2.lock.toml" 85 > "$2/restart-peer.json"
+  PEER_SKIP_S=10 python3 .ci/interop/peer.py "$2/clean.mcap" "$2/traj/locks/c2.lock.toml" 85 > "$2/restart-peer.json"
   if wait "$run"; then echo "run exit 0" >> "$2/restart-run.log"; else echo "run exit $?" >> "$2/restart-run.log"; fi
 ' _ "$bin" "$tmp"
 python3 - "$tmp/restart-run.log" "$tmp/restart-peer.json" <<'PY'

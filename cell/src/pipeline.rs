@@ -288,6 +288,8 @@ pub struct Assessment {
     warnings: WarningTracker,
     height: HeightEstimator,
     height_decided: bool,
+    /// Tracked frames not measured because the person stood away from the station.
+    away_from_station: usize,
 }
 
 impl Assessment {
@@ -298,13 +300,28 @@ impl Assessment {
             warnings: WarningTracker::new(config.warnings),
             height: HeightEstimator::new(config.height),
             height_decided: false,
+            away_from_station: 0,
         })
     }
 
     /// A tracked frame: the height measured on `raw` (unfiltered) until the first decision, RULA
     /// and warnings on `filtered`.
     pub fn process(&mut self, raw: &Skeleton3, filtered: Skeleton3) -> TrackedFrame {
-        let height = if self.height_decided {
+        self.process_measuring(raw, filtered, true)
+    }
+
+    /// [`Self::process`], with the height measured on this frame only if `measure_height` (the
+    /// pipeline passes whether the tracked person stands at the station, see [`Pipeline`]).
+    pub fn process_measuring(
+        &mut self,
+        raw: &Skeleton3,
+        filtered: Skeleton3,
+        measure_height: bool,
+    ) -> TrackedFrame {
+        if !self.height_decided && !measure_height {
+            self.away_from_station += 1;
+        }
+        let height = if self.height_decided || !measure_height {
             None
         } else {
             let d = self.height.push(raw);
@@ -324,9 +341,26 @@ impl Assessment {
         }
     }
 
-    /// Where the height measurement stands (decided, or still measuring and why).
+    /// Where the height measurement stands (decided, or still measuring and why — including the
+    /// tracked frames left unmeasured because the person stood away from the station).
     pub fn height_status(&self) -> HeightStatus {
-        self.height.status()
+        match self.height.status() {
+            HeightStatus::Measuring {
+                frames_seen,
+                upright_frames,
+                estimate,
+                why,
+            } if self.away_from_station > 0 => HeightStatus::Measuring {
+                frames_seen,
+                upright_frames,
+                estimate,
+                why: format!(
+                    "{why}; {} tracked frame(s) not measured: the person stood away from the station",
+                    self.away_from_station
+                ),
+            },
+            status => status,
+        }
     }
 }
 
@@ -378,11 +412,26 @@ impl Pipeline {
     }
 
     /// One time-aligned frame through both stages.
+    ///
+    /// With an operator zone ([`ReconstructionConfig::operator_zone`]) the height is measured only on
+    /// frames whose fused torso stands at the station (horizontally within the zone's radius of the
+    /// station torso): the class that picks the robot's trajectory is the station's person's. When
+    /// the cameras follow someone else — a bystander most cameras see, a ghost of two people's views
+    /// — the height stays undecided and the robot does not move, rather than be locked to another
+    /// person's class.
     pub fn process_frame(&mut self, frame: &Frame2) -> Result<FrameOutput, PerceptionError> {
         let r = self.reconstruction.process_frame(frame)?;
-        let tracked = r
-            .tracked
-            .map(|filtered| self.assessment.process(&r.fused.skeleton, filtered));
+        let at_station = self.config.reconstruction.operator_zone.is_none_or(|zone| {
+            torso_of(&r.fused.skeleton).is_some_and(|torso| {
+                let up = self.config.height.up.vector();
+                let d = torso - zone.station_torso_world;
+                (d - up * d.dot(&up)).norm() <= zone.radius_m
+            })
+        });
+        let tracked = r.tracked.map(|filtered| {
+            self.assessment
+                .process_measuring(&r.fused.skeleton, filtered, at_station)
+        });
         Ok(FrameOutput {
             stamp_nanos: r.stamp_nanos,
             fused: r.fused,
