@@ -30,7 +30,8 @@ use crate::detections::Frame2;
 use crate::error::{PerceptionError, Result};
 use crate::rig::CameraRig;
 use crate::triangulation::{
-    iter_mask, DltAccumulator, NormalizedView, RobustTriangulator, MAX_VIEWS,
+    iter_mask, DltAccumulator, LaneCamera, LaneObs, LaneResult, NormalizedView, RobustTriangulator,
+    LANES, MAX_VIEWS,
 };
 
 /// Which fusion to run.
@@ -132,12 +133,15 @@ struct Obs {
 pub struct FusionEngine {
     rig: CameraRig,
     cameras: Vec<CameraCache>,
+    /// The cameras as the lane-parallel triangulator takes them (slot = camera index).
+    lane_cameras: Vec<LaneCamera>,
     method: FusionMethod,
     triangulator: RobustTriangulator,
     paper_cache: HashMap<[u64; LANDMARK_COUNT], DMatrix<f64>>,
     /// Per-frame buffers reused across frames (no allocation on the hot path once warm).
     scratch_obs: FrameObs,
     scratch_views: Vec<NormalizedView>,
+    scratch_lanes: Vec<LaneObs>,
     scratch_paper: PaperScratch,
     /// The learned-bone-length prior of the default fusion (`None`: per-frame geometry only).
     bone_prior: Option<BonePrior>,
@@ -202,15 +206,25 @@ impl FusionEngine {
                     centre_world: c.position_world(),
                 }
             })
+            .collect::<Vec<CameraCache>>();
+        let lane_cameras = cameras
+            .iter()
+            .map(|c| LaneCamera {
+                r: std::array::from_fn(|i| c.R_camera_world[(i / 3, i % 3)]),
+                t: [c.t_camera_world.x, c.t_camera_world.y, c.t_camera_world.z],
+                focal: [c.focal_px.x, c.focal_px.y],
+            })
             .collect();
         Ok(Self {
             rig,
             cameras,
+            lane_cameras,
             method,
             triangulator: RobustTriangulator::default(),
             paper_cache: HashMap::new(),
             scratch_obs: std::array::from_fn(|_| Vec::new()),
             scratch_views: Vec::new(),
+            scratch_lanes: Vec::new(),
             scratch_paper: PaperScratch::default(),
             bone_prior: Some(BonePrior::new(BonePriorParams::default())),
         })
@@ -264,13 +278,14 @@ impl FusionEngine {
         match self.method {
             FusionMethod::Default => {
                 let mut views = std::mem::take(&mut self.scratch_views);
-                let mut tri = self.triangulate_all(obs, &mut views);
+                let mut lanes = std::mem::take(&mut self.scratch_lanes);
+                let mut tri = self.triangulate_all(obs, &mut views, &mut lanes);
                 // A view whose left and right the detector swapped: the fused points explain it
                 // better mirrored. Correct it (swap its sides) and triangulate again.
                 swapped_views = self.swapped_views(obs, &tri.points, cameras_present);
                 if swapped_views != 0 {
                     swap_sides(obs, swapped_views);
-                    tri = self.triangulate_all(obs, &mut views);
+                    tri = self.triangulate_all(obs, &mut views, &mut lanes);
                 }
                 let Triangulations {
                     mut points,
@@ -296,6 +311,7 @@ impl FusionEngine {
                     self.set(&mut skeleton, lm, p, &used)?;
                 }
                 self.scratch_views = views;
+                self.scratch_lanes = lanes;
             }
             FusionMethod::Paper => {
                 let mut scratch = std::mem::take(&mut self.scratch_paper);
@@ -329,7 +345,12 @@ impl FusionEngine {
 
     /// The robust triangulation of every landmark from its observations (the default fusion's
     /// per-frame geometry, before the body checks and the bone prior).
-    fn triangulate_all(&self, obs: &FrameObs, views: &mut Vec<NormalizedView>) -> Triangulations {
+    fn triangulate_all(
+        &self,
+        obs: &FrameObs,
+        views: &mut Vec<NormalizedView>,
+        lanes: &mut Vec<LaneObs>,
+    ) -> Triangulations {
         let mut t = Triangulations {
             points: [None; LANDMARK_COUNT],
             information: [Matrix3::zeros(); LANDMARK_COUNT],
@@ -337,30 +358,64 @@ impl FusionEngine {
             masks: [0u64; LANDMARK_COUNT],
             rejected: 0,
         };
-        for lm in Landmark::ALL {
-            let o = &obs[lm.index()];
-            views.clear();
-            views.extend(o.iter().map(|ob| {
-                let c = &self.cameras[ob.camera];
-                NormalizedView {
-                    R_camera_world: c.R_camera_world,
-                    t_camera_world: c.t_camera_world,
-                    normalized: ob.normalized,
-                    focal_px: c.focal_px,
-                    confidence: ob.confidence,
+        // [`LANES`] landmarks at a time; the scalar triangulator for a landmark off the lanes'
+        // common path (a view dropped, a degenerate system), which gives the same answers.
+        for first in (0..LANDMARK_COUNT).step_by(LANES) {
+            let group = first..(first + LANES).min(LANDMARK_COUNT);
+            lanes.clear();
+            lanes.resize(self.cameras.len(), LaneObs::default());
+            // bit k of `cameras[l]`: lane l's landmark has a view from camera k
+            let mut cameras = [0u64; LANES];
+            for (l, i) in group.clone().enumerate() {
+                for ob in &obs[i] {
+                    let slot = &mut lanes[ob.camera];
+                    slot.x[l] = ob.normalized.x;
+                    slot.y[l] = ob.normalized.y;
+                    slot.confidence[l] = ob.confidence;
+                    slot.present[l] = true;
+                    cameras[l] |= 1 << ob.camera;
                 }
-            }));
-            let Ok(r) = self.triangulator.triangulate(views) else {
-                continue;
-            };
-            t.rejected += views.len() - r.views_used() as usize;
-            t.points[lm.index()] = Some(r.point);
-            t.information[lm.index()] = r.information;
-            // what the prior's `covariance_of` computes, already inverted (information from a
-            // triangulation is never all zeros)
-            t.covariance[lm.index()] =
-                Some(r.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
-            t.masks[lm.index()] = r.used_mask;
+            }
+            let results =
+                self.triangulator
+                    .triangulate_lanes(&self.lane_cameras, lanes, group.len());
+            for (l, i) in group.enumerate() {
+                let o = &obs[i];
+                let r = match results[l] {
+                    LaneResult::Done(mut r) => {
+                        // camera slots → positions in the landmark's (camera-ordered) list
+                        r.used_mask = iter_mask(r.used_mask)
+                            .map(|k| 1u64 << (cameras[l] & ((1u64 << k) - 1)).count_ones())
+                            .fold(0, |m, b| m | b);
+                        r
+                    }
+                    LaneResult::TooFewViews(_) | LaneResult::Unused => continue,
+                    LaneResult::Fallback => {
+                        views.clear();
+                        views.extend(o.iter().map(|ob| {
+                            let c = &self.cameras[ob.camera];
+                            NormalizedView {
+                                R_camera_world: c.R_camera_world,
+                                t_camera_world: c.t_camera_world,
+                                normalized: ob.normalized,
+                                focal_px: c.focal_px,
+                                confidence: ob.confidence,
+                            }
+                        }));
+                        let Ok(r) = self.triangulator.triangulate(views) else {
+                            continue;
+                        };
+                        r
+                    }
+                };
+                t.rejected += o.len() - r.views_used() as usize;
+                t.points[i] = Some(r.point);
+                t.information[i] = r.information;
+                // what the prior's `covariance_of` computes, already inverted (information from
+                // a triangulation is never all zeros)
+                t.covariance[i] = Some(r.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
+                t.masks[i] = r.used_mask;
+            }
         }
         t
     }
@@ -510,7 +565,14 @@ impl FusionEngine {
             o.clear();
         }
         let mut failures = 0;
-        for view in &frame.views {
+        // in camera order, so every landmark's list is (the triangulation's lanes rely on it)
+        let mut order = [0u8; MAX_VIEWS];
+        let order = &mut order[..frame.views.len()];
+        for (slot, k) in order.iter_mut().zip(0u8..) {
+            *slot = k;
+        }
+        order.sort_unstable_by_key(|&k| frame.views[usize::from(k)].camera);
+        for view in order.iter().map(|&k| &frame.views[usize::from(k)]) {
             let camera = &self.rig.cameras()[view.camera];
             let k = &camera.intrinsics;
             // distorted normalized coordinates of every keypoint, then all undistorted at once

@@ -25,6 +25,9 @@ use nalgebra::{
 
 use crate::error::{PerceptionError, Result};
 
+mod lanes;
+pub(crate) use lanes::{LaneCamera, LaneObs, LaneResult, LANES};
+
 /// The seed paper's DLT for views given as `(P, pixel, weight)`; `P` maps homogeneous world points to
 /// the same image coordinates as `pixel` (pixels with `K[R|t]`, or normalized coordinates with `[R|t]`).
 pub fn dlt(views: &[(Matrix3x4<f64>, Point2<f64>, f64)]) -> Result<Point3<f64>> {
@@ -441,7 +444,7 @@ impl RobustTriangulator {
             let (mut sq, mut conf, mut behind) = (0.0, 0.0, false);
             for i in iter_mask(mask) {
                 let v = &views[i];
-                let pc = v.R_camera_world * point.coords + v.t_camera_world;
+                let pc = camera_coordinates(&v.R_camera_world, &v.t_camera_world, &point);
                 let err = if pc.z > 1e-9 {
                     let ex = pc.x / pc.z - v.normalized.x;
                     let ey = pc.y / pc.z - v.normalized.y;
@@ -472,6 +475,20 @@ impl RobustTriangulator {
             }
             break (sq, conf);
         };
+        self.finish(point, information, mask, sq, conf)
+    }
+
+    /// The result from the refined point: its covariance (refused when the noise model leaves it
+    /// unconstrained), the RMS pixel error `sqrt(sq / n)` and mean confidence `conf / n` of the `n`
+    /// views of `mask`.
+    pub(crate) fn finish(
+        &self,
+        point: Point3<f64>,
+        information: Matrix3<f64>,
+        mask: u64,
+        sq: f64,
+        conf: f64,
+    ) -> Result<Triangulated> {
         let covariance = information.try_inverse();
         let sigma_m = covariance.map_or(f64::INFINITY, |cov| cov.trace().max(0.0).sqrt());
         let Some(covariance) = covariance.filter(|_| sigma_m <= self.max_position_sigma_m) else {
@@ -538,7 +555,7 @@ impl RobustTriangulator {
             for i in iter_mask(mask) {
                 let v = &views[i];
                 let r = &v.R_camera_world;
-                let pc = r * x.coords + v.t_camera_world;
+                let pc = camera_coordinates(r, &v.t_camera_world, &x);
                 if pc.z <= 1e-9 {
                     continue;
                 }
@@ -567,17 +584,21 @@ impl RobustTriangulator {
                 );
                 h.add_outer(&j0, weight);
                 h.add_outer(&j1, weight);
-                g += j0 * (weight * r0) + j1 * (weight * r1);
+                let (wr0, wr1) = (weight * r0, weight * r1);
+                g = Vector3::new(
+                    g.x + (j0.x * wr0 + j1.x * wr1),
+                    g.y + (j0.y * wr0 + j1.y * wr1),
+                    g.z + (j0.z * wr0 + j1.z * wr1),
+                );
             }
-            let h = h.to_matrix();
             let step = solve_normal3(&h, &g)?;
-            information = h;
-            x -= step;
-            if !x.coords.iter().all(|c| c.is_finite()) {
+            information = h.to_matrix();
+            x = Point3::new(x.x - step.x, x.y - step.y, x.z - step.z);
+            if !(x.x.is_finite() && x.y.is_finite() && x.z.is_finite()) {
                 return Err(PerceptionError::Degenerate);
             }
             // 1 µm: three orders of magnitude below any body landmark's accuracy
-            if step.norm_squared() < 1e-12 {
+            if step.x * step.x + step.y * step.y + step.z * step.z < 1e-12 {
                 break;
             }
         }
@@ -598,7 +619,9 @@ impl RobustTriangulator {
                 let r = &v.R_camera_world;
                 let t = &v.t_camera_world;
                 let r2 = Vector3::new(r[(2, 0)], r[(2, 1)], r[(2, 2)]);
-                let z = point.map(|p| r2.dot(&p.coords) + t.z).filter(|z| *z > 1e-6);
+                let z = point
+                    .map(|p| r2.x * p.x + r2.y * p.y + r2.z * p.z + t.z)
+                    .filter(|z| *z > 1e-6);
                 let f = 0.5 * (v.focal_px.x + v.focal_px.y);
                 let sigma_m = match z {
                     Some(z) => {
@@ -617,11 +640,15 @@ impl RobustTriangulator {
                     );
                     let rhs = -(c * t.z - t[axis]) * w;
                     ata.add_outer(&row, 1.0);
-                    atb += row * rhs;
+                    atb = Vector3::new(
+                        atb.x + row.x * rhs,
+                        atb.y + row.y * rhs,
+                        atb.z + row.z * rhs,
+                    );
                 }
             }
-            let p = Point3::from(solve_normal3(&ata.to_matrix(), &atb)?);
-            if !p.coords.iter().all(|x| x.is_finite()) {
+            let p = Point3::from(solve_normal3(&ata, &atb)?);
+            if !(p.x.is_finite() && p.y.is_finite() && p.z.is_finite()) {
                 return Err(PerceptionError::Degenerate);
             }
             point = Some(p);
@@ -706,8 +733,10 @@ impl Sym3 {
 /// Solves `m x = b` for a symmetric positive semi-definite 3×3 normal matrix by its adjugate,
 /// refusing a (numerically) rank-deficient one: parallel rays or a single camera position give no
 /// depth, and a solve would return garbage instead of an error.
-fn solve_normal3(m: &Matrix3<f64>, b: &Vector3<f64>) -> Result<Vector3<f64>> {
-    let sym = Sym3::from_matrix(m);
+///
+/// Written out operation by operation (no library product whose summation order could change):
+/// [`lanes`] repeats these steps for several landmarks at once and must round alike.
+fn solve_normal3(sym: &Sym3, b: &Vector3<f64>) -> Result<Vector3<f64>> {
     let ([c00, c01, c02, c11, c12, c22], det) = sym.adjugate();
     let (a, d, f) = (sym.xx, sym.yy, sym.zz);
     // det / (product of the diagonal) ≤ 1 for a PSD matrix; tiny means (near) singular
@@ -715,12 +744,28 @@ fn solve_normal3(m: &Matrix3<f64>, b: &Vector3<f64>) -> Result<Vector3<f64>> {
     if !(det.is_finite() && scale.is_finite()) || scale <= 0.0 || det <= 1e-12 * scale {
         return Err(PerceptionError::Degenerate);
     }
-    let inv = Matrix3::new(c00, c01, c02, c01, c11, c12, c02, c12, c22) / det;
-    Ok(inv * b)
+    let (i00, i01, i02) = (c00 / det, c01 / det, c02 / det);
+    let (i11, i12, i22) = (c11 / det, c12 / det, c22 / det);
+    Ok(Vector3::new(
+        i00 * b.x + i01 * b.y + i02 * b.z,
+        i01 * b.x + i11 * b.y + i12 * b.z,
+        i02 * b.x + i12 * b.y + i22 * b.z,
+    ))
+}
+
+/// `R·p + t`, written out (see [`solve_normal3`]).
+#[inline]
+fn camera_coordinates(r: &Matrix3<f64>, t: &Vector3<f64>, p: &Point3<f64>) -> Vector3<f64> {
+    Vector3::new(
+        r[(0, 0)] * p.x + r[(0, 1)] * p.y + r[(0, 2)] * p.z + t.x,
+        r[(1, 0)] * p.x + r[(1, 1)] * p.y + r[(1, 2)] * p.z + t.y,
+        r[(2, 0)] * p.x + r[(2, 1)] * p.y + r[(2, 2)] * p.z + t.z,
+    )
 }
 
 fn depth(v: &NormalizedView, p: &Point3<f64>) -> f64 {
-    (v.R_camera_world.row(2) * p.coords)[0] + v.t_camera_world.z
+    let r = &v.R_camera_world;
+    r[(2, 0)] * p.x + r[(2, 1)] * p.y + r[(2, 2)] * p.z + v.t_camera_world.z
 }
 
 /// Indices of the set bits of `mask`.
