@@ -376,9 +376,13 @@ impl FusionEngine {
                     cameras[l] |= 1 << ob.camera;
                 }
             }
-            let results =
+            // a group of one or two costs the lanes as much as a full one: those go scalar
+            let results = if group.len() > 2 {
                 self.triangulator
-                    .triangulate_lanes(&self.lane_cameras, lanes, group.len());
+                    .triangulate_lanes(&self.lane_cameras, lanes, group.len())
+            } else {
+                [LaneResult::Fallback; LANES]
+            };
             for (l, i) in group.enumerate() {
                 let o = &obs[i];
                 let r = match results[l] {
@@ -946,6 +950,110 @@ pub(crate) mod tests {
                 0.2 + 1.6 * i as f64 / 33.0,
             )
         })
+    }
+
+    /// The default fusion's triangulation of a frame one landmark at a time with the scalar
+    /// triangulator: what `triangulate_all` did before it ran in lanes.
+    fn triangulate_all_scalar(engine: &FusionEngine, obs: &FrameObs) -> Triangulations {
+        let mut t = Triangulations {
+            points: [None; LANDMARK_COUNT],
+            information: [Matrix3::zeros(); LANDMARK_COUNT],
+            covariance: [None; LANDMARK_COUNT],
+            masks: [0u64; LANDMARK_COUNT],
+            rejected: 0,
+        };
+        for (i, o) in obs.iter().enumerate() {
+            let views: Vec<NormalizedView> = o
+                .iter()
+                .map(|ob| {
+                    let c = &engine.cameras[ob.camera];
+                    NormalizedView {
+                        R_camera_world: c.R_camera_world,
+                        t_camera_world: c.t_camera_world,
+                        normalized: ob.normalized,
+                        focal_px: c.focal_px,
+                        confidence: ob.confidence,
+                    }
+                })
+                .collect();
+            let Ok(r) = engine.triangulator.triangulate(&views) else {
+                continue;
+            };
+            t.rejected += views.len() - r.views_used() as usize;
+            t.points[i] = Some(r.point);
+            t.information[i] = r.information;
+            t.covariance[i] = Some(r.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
+            t.masks[i] = r.used_mask;
+        }
+        t
+    }
+
+    #[test]
+    fn the_lanes_triangulate_every_landmark_as_the_scalar_triangulator_does() {
+        // Noisy frames with gross errors, missing keypoints, low confidences and an absent
+        // camera, views listed out of camera order: points, information, covariances, used views
+        // and rejected counts are equal bit for bit.
+        use rand::{Rng, SeedableRng};
+        let rig = ring_rig(6);
+        let truth = body();
+        let engine = FusionEngine::new(rig.clone(), FusionMethod::Default).unwrap();
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(19);
+        let mut fallbacks_seen = false;
+        for f in 0..60 {
+            let mut frame = frame_of(&rig, &truth);
+            for view in &mut frame.views {
+                for lm in Landmark::ALL {
+                    let Some(k) = view.get(lm).copied() else {
+                        continue;
+                    };
+                    let gross = if rng.random::<f64>() < 0.03 {
+                        70.0
+                    } else {
+                        0.0
+                    };
+                    let px = k.pixel();
+                    let kp = Keypoint2::new(
+                        px.x + rng.random_range(-3.0..3.0) + rng.random_range(-gross..=gross),
+                        px.y + rng.random_range(-3.0..3.0),
+                        rng.random_range(0.02..1.0),
+                    )
+                    .unwrap();
+                    view.set(lm, (rng.random::<f64>() > 0.1).then_some(kp));
+                }
+            }
+            frame.views.retain(|v| v.camera != f % 7);
+            frame.views.reverse();
+            let (obs, _, _) = engine.observations(&frame).unwrap();
+            let mut views = Vec::new();
+            let mut lanes = Vec::new();
+            let got = engine.triangulate_all(&obs, &mut views, &mut lanes);
+            let want = triangulate_all_scalar(&engine, &obs);
+            let bits = |t: &Triangulations| {
+                let mut v: Vec<u64> = Vec::new();
+                for i in 0..LANDMARK_COUNT {
+                    v.extend(
+                        t.points[i]
+                            .iter()
+                            .flat_map(|p| p.iter().map(|x| x.to_bits())),
+                    );
+                    v.extend(t.information[i].iter().map(|x| x.to_bits()));
+                    v.extend(
+                        t.covariance[i]
+                            .iter()
+                            .flat_map(|c| c.iter().map(|x| x.to_bits())),
+                    );
+                    v.push(t.masks[i]);
+                }
+                v.push(t.rejected as u64);
+                v
+            };
+            assert!(bits(&got) == bits(&want), "frame {f}");
+            fallbacks_seen |= want.rejected > 0;
+        }
+        assert!(
+            fallbacks_seen,
+            "some views were rejected (the scalar fallback ran)"
+        );
     }
 
     #[test]

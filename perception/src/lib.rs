@@ -32,6 +32,7 @@ pub mod operator_gate;
 pub mod qualisys;
 pub mod rig;
 pub mod rig_file;
+mod simd;
 pub mod temporal;
 pub mod triangulation;
 pub mod video_geometry;

@@ -15,234 +15,26 @@
 //! (rotation, translation, focal lengths), and each lane has its own observations, absent where
 //! its landmark was not seen.
 
-// The lane helpers must be inlined into the AVX2 function to be compiled with AVX2 at all (a
-// function not inlined is compiled for the baseline target): `inline(always)` is the point here.
+// The kernel and its helpers must be inlined into the AVX2 function to be compiled with AVX2 at
+// all: `inline(always)` is the point here.
 #![allow(clippy::inline_always)]
 
-use nalgebra::{Matrix3, Point3};
+use nalgebra::Point3;
 
 #[cfg(test)]
 use super::iter_mask;
 use super::{RobustTriangulator, Triangulated, MAX_VIEWS};
+use crate::simd::{LaneMask, LaneSym3, Lanes};
 
 /// Landmarks triangulated together.
 pub(crate) const LANES: usize = 8;
 
 /// One value per lane.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct V([f64; LANES]);
-
-/// One flag per lane: all bits set or none (so a select is three bit operations).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct M([u64; LANES]);
-
-macro_rules! lane_op {
-    ($trait:ident, $f:ident, $op:tt) => {
-        impl std::ops::$trait for V {
-            type Output = V;
-            #[inline(always)]
-            fn $f(self, o: V) -> V {
-                let mut r = [0.0; LANES];
-                for l in 0..LANES {
-                    r[l] = self.0[l] $op o.0[l];
-                }
-                V(r)
-            }
-        }
-    };
-}
-lane_op!(Add, add, +);
-lane_op!(Sub, sub, -);
-lane_op!(Mul, mul, *);
-lane_op!(Div, div, /);
-
-impl std::ops::Neg for V {
-    type Output = V;
-    #[inline(always)]
-    fn neg(self) -> V {
-        V(self.0.map(|x| -x))
-    }
-}
-
-impl V {
-    #[inline(always)]
-    fn splat(x: f64) -> V {
-        V([x; LANES])
-    }
-    #[inline(always)]
-    fn sqrt(self) -> V {
-        V(self.0.map(f64::sqrt))
-    }
-    #[inline(always)]
-    fn cmp(self, o: V, f: impl Fn(f64, f64) -> bool) -> M {
-        let mut r = [0u64; LANES];
-        for l in 0..LANES {
-            r[l] = if f(self.0[l], o.0[l]) { u64::MAX } else { 0 };
-        }
-        M(r)
-    }
-    #[inline(always)]
-    fn gt(self, o: V) -> M {
-        self.cmp(o, |a, b| a > b)
-    }
-    #[inline(always)]
-    fn le(self, o: V) -> M {
-        self.cmp(o, |a, b| a <= b)
-    }
-    #[inline(always)]
-    fn lt(self, o: V) -> M {
-        self.cmp(o, |a, b| a < b)
-    }
-    #[inline(always)]
-    fn finite(self) -> M {
-        // |x| < ∞ is false for ±∞ and NaN
-        self.cmp(V::splat(f64::INFINITY), |a, b| a.abs() < b)
-    }
-}
-
-impl M {
-    const NONE: M = M([0; LANES]);
-    #[inline(always)]
-    fn from_fn(f: impl Fn(usize) -> bool) -> M {
-        let mut r = [0u64; LANES];
-        for (l, x) in r.iter_mut().enumerate() {
-            *x = if f(l) { u64::MAX } else { 0 };
-        }
-        M(r)
-    }
-    #[inline(always)]
-    fn get(self, l: usize) -> bool {
-        self.0[l] != 0
-    }
-    #[inline(always)]
-    fn set(&mut self, l: usize, v: bool) {
-        self.0[l] = if v { u64::MAX } else { 0 };
-    }
-    #[inline(always)]
-    fn and(self, o: M) -> M {
-        let mut r = [0u64; LANES];
-        for l in 0..LANES {
-            r[l] = self.0[l] & o.0[l];
-        }
-        M(r)
-    }
-    #[inline(always)]
-    fn or(self, o: M) -> M {
-        let mut r = [0u64; LANES];
-        for l in 0..LANES {
-            r[l] = self.0[l] | o.0[l];
-        }
-        M(r)
-    }
-    #[inline(always)]
-    fn not(self) -> M {
-        M(self.0.map(|x| !x))
-    }
-    #[inline(always)]
-    fn any(self) -> bool {
-        self.0.iter().fold(0, |a, &x| a | x) != 0
-    }
-    /// `a` where set, `b` elsewhere.
-    #[inline(always)]
-    fn select(self, a: V, b: V) -> V {
-        let mut r = [0.0; LANES];
-        for l in 0..LANES {
-            r[l] = f64::from_bits((a.0[l].to_bits() & self.0[l]) | (b.0[l].to_bits() & !self.0[l]));
-        }
-        V(r)
-    }
-}
-
-/// A symmetric 3×3 matrix per lane (as [`super::Sym3`]).
-#[derive(Debug, Clone, Copy)]
-struct S3 {
-    xx: V,
-    xy: V,
-    xz: V,
-    yy: V,
-    yz: V,
-    zz: V,
-}
-
-impl S3 {
-    #[inline(always)]
-    fn zero() -> S3 {
-        let z = V::splat(0.0);
-        S3 {
-            xx: z,
-            xy: z,
-            xz: z,
-            yy: z,
-            yz: z,
-            zz: z,
-        }
-    }
-    /// [`super::Sym3::add_outer`].
-    #[inline(always)]
-    fn add_outer(&mut self, v: [V; 3], w: V) {
-        let (a, b, c) = (v[0] * w, v[1] * w, v[2] * w);
-        self.xx = self.xx + a * v[0];
-        self.xy = self.xy + a * v[1];
-        self.xz = self.xz + a * v[2];
-        self.yy = self.yy + b * v[1];
-        self.yz = self.yz + b * v[2];
-        self.zz = self.zz + c * v[2];
-    }
-    /// [`super::Sym3::add_outer`] with unit weight (`x·1 = x` exactly).
-    #[inline(always)]
-    fn add_outer_unit(&mut self, v: [V; 3]) {
-        self.xx = self.xx + v[0] * v[0];
-        self.xy = self.xy + v[0] * v[1];
-        self.xz = self.xz + v[0] * v[2];
-        self.yy = self.yy + v[1] * v[1];
-        self.yz = self.yz + v[1] * v[2];
-        self.zz = self.zz + v[2] * v[2];
-    }
-    #[inline(always)]
-    fn select(m: M, a: &S3, b: &S3) -> S3 {
-        S3 {
-            xx: m.select(a.xx, b.xx),
-            xy: m.select(a.xy, b.xy),
-            xz: m.select(a.xz, b.xz),
-            yy: m.select(a.yy, b.yy),
-            yz: m.select(a.yz, b.yz),
-            zz: m.select(a.zz, b.zz),
-        }
-    }
-    fn lane(&self, l: usize) -> Matrix3<f64> {
-        let (a, b, c) = (self.xx.0[l], self.xy.0[l], self.xz.0[l]);
-        let (d, e, f) = (self.yy.0[l], self.yz.0[l], self.zz.0[l]);
-        Matrix3::new(a, b, c, b, d, e, c, e, f)
-    }
-    /// [`super::solve_normal3`]: the solution, and where it exists.
-    #[inline(always)]
-    fn solve(&self, b: [V; 3]) -> ([V; 3], M) {
-        let (a, bb, c, d, e, f) = (self.xx, self.xy, self.xz, self.yy, self.yz, self.zz);
-        let c00 = d * f - e * e;
-        let c01 = c * e - bb * f;
-        let c02 = bb * e - c * d;
-        let c11 = a * f - c * c;
-        let c12 = bb * c - a * e;
-        let c22 = a * d - bb * bb;
-        let det = a * c00 + bb * c01 + c * c02;
-        let scale = a * d * f;
-        let ok = det
-            .finite()
-            .and(scale.finite())
-            .and(scale.gt(V::splat(0.0)))
-            .and(det.gt(V::splat(1e-12) * scale));
-        let (i00, i01, i02) = (c00 / det, c01 / det, c02 / det);
-        let (i11, i12, i22) = (c11 / det, c12 / det, c22 / det);
-        (
-            [
-                i00 * b[0] + i01 * b[1] + i02 * b[2],
-                i01 * b[0] + i11 * b[1] + i12 * b[2],
-                i02 * b[0] + i12 * b[1] + i22 * b[2],
-            ],
-            ok,
-        )
-    }
-}
+type V = Lanes<LANES>;
+/// One flag per lane.
+type M = LaneMask<LANES>;
+/// A symmetric 3×3 matrix per lane.
+type S3 = LaneSym3<LANES>;
 
 /// One camera's constants, the same for every lane.
 #[derive(Debug, Clone, Copy)]
@@ -404,10 +196,10 @@ impl RobustTriangulator {
                     z.gt(V::splat(1e-6))
                         .select((a * a + V::splat(body2)).sqrt(), first_sigma)
                 };
-                let w = V(o.confidence).sqrt() / sigma_m;
+                let w = Lanes(o.confidence).sqrt() / sigma_m;
                 let mut new_ata = ata;
                 let mut new_atb = atb;
-                for (c, axis) in [(V(o.x), 0usize), (V(o.y), 1usize)] {
+                for (c, axis) in [(Lanes(o.x), 0usize), (Lanes(o.y), 1usize)] {
                     let row = [
                         (V::splat(r[6]) * c - V::splat(r[axis * 3])) * w,
                         (V::splat(r[7]) * c - V::splat(r[axis * 3 + 1])) * w,
@@ -475,12 +267,12 @@ impl RobustTriangulator {
                 let inv_z = V::splat(1.0) / pc[2];
                 let (u, w) = (pc[0] * inv_z, pc[1] * inv_z);
                 let [sx, sy] = inv_sigma[k];
-                let (r0, r1) = ((u - V(o.x)) * sx, (w - V(o.y)) * sy);
+                let (r0, r1) = ((u - Lanes(o.x)) * sx, (w - Lanes(o.y)) * sy);
                 let norm2 = r0 * r0 + r1 * r1;
                 let huber = norm2
                     .gt(huber2)
                     .select(V::splat(self.huber_sigmas) / norm2.sqrt(), V::splat(1.0));
-                let weight = V(o.confidence) * huber;
+                let weight = Lanes(o.confidence) * huber;
                 let (ax, ay) = (inv_z * sx, inv_z * sy);
                 let j0 = [
                     (r[0] - u * r[6]) * ax,
@@ -547,12 +339,12 @@ impl RobustTriangulator {
             let (cam, o) = (&cameras[k], &obs[k]);
             let pc = project(&cam.r, &cam.t, &p);
             let front = pc[2].gt(V::splat(1e-9));
-            let ex = pc[0] / pc[2] - V(o.x);
-            let ey = pc[1] / pc[2] - V(o.y);
+            let ex = pc[0] / pc[2] - Lanes(o.x);
+            let ey = pc[1] / pc[2] - Lanes(o.y);
             let (px, py) = (ex * V::splat(cam.focal[0]), ey * V::splat(cam.focal[1]));
             let seen = use_k.and(front);
             sq = seen.select(sq + (px * px + py * py), sq);
-            conf = seen.select(conf + V(o.confidence), conf);
+            conf = seen.select(conf + Lanes(o.confidence), conf);
             let body = V::splat(self.body_noise_m) * (V::splat(1.0) / pc[2]);
             let body2 = body * body;
             let s2x = V::splat(pixel_terms[k][0]) + body2;
@@ -615,7 +407,7 @@ mod tests {
     use super::*;
     use crate::error::PerceptionError;
     use crate::triangulation::NormalizedView;
-    use nalgebra::{Vector2, Vector3};
+    use nalgebra::{Matrix3, Vector2, Vector3};
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
