@@ -135,6 +135,16 @@ impl<const N: usize> LaneMask<N> {
     }
 }
 
+/// The entries of a [`LaneSym3`], by name.
+pub(crate) struct S3Parts<const N: usize> {
+    pub(crate) xx: Lanes<N>,
+    pub(crate) xy: Lanes<N>,
+    pub(crate) xz: Lanes<N>,
+    pub(crate) yy: Lanes<N>,
+    pub(crate) yz: Lanes<N>,
+    pub(crate) zz: Lanes<N>,
+}
+
 /// A symmetric 3×3 matrix per lane (as `triangulation::Sym3`).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct LaneSym3<const N: usize> {
@@ -189,6 +199,18 @@ impl<const N: usize> LaneSym3<N> {
             yy: m.select(a.yy, b.yy),
             yz: m.select(a.yz, b.yz),
             zz: m.select(a.zz, b.zz),
+        }
+    }
+    /// The six distinct entries.
+    #[inline(always)]
+    pub(crate) fn parts(&self) -> S3Parts<N> {
+        S3Parts {
+            xx: self.xx,
+            xy: self.xy,
+            xz: self.xz,
+            yy: self.yy,
+            yz: self.yz,
+            zz: self.zz,
         }
     }
     pub(crate) fn lane(&self, l: usize) -> Matrix3<f64> {

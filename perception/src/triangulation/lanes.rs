@@ -19,12 +19,12 @@
 // all: `inline(always)` is the point here.
 #![allow(clippy::inline_always)]
 
-use nalgebra::Point3;
+use nalgebra::{Matrix3, Point3};
 
 #[cfg(test)]
 use super::iter_mask;
 use super::{RobustTriangulator, Triangulated, MAX_VIEWS};
-use crate::simd::{LaneMask, LaneSym3, Lanes};
+use crate::simd::{LaneMask, LaneSym3, Lanes, S3Parts};
 
 /// Landmarks triangulated together.
 pub(crate) const LANES: usize = 8;
@@ -314,17 +314,8 @@ impl RobustTriangulator {
             return out;
         }
 
-        // No view behind its camera (the scalar cheirality loop drops one and starts again) …
-        let mut behind = M::NONE;
-        for k in 0..m {
-            let r = &cameras[k].r;
-            let z = V::splat(r[6]) * p[0]
-                + V::splat(r[7]) * p[1]
-                + V::splat(r[8]) * p[2]
-                + V::splat(cameras[k].t[2]);
-            behind = behind.or(uses[k].and(z.le(V::splat(0.0))));
-        }
-        live = drop_lanes(live, behind.not(), &mut out, &mut uses[..m]);
+        // No view behind its camera (the scalar cheirality loop drops a view with depth ≤ 0 and
+        // starts again; `behind` below, depth ≤ 1e-9 or NaN, covers it) …
         // … and no outlier view (the scalar loop drops the worst and refines again): the first
         // round of the scalar outlier loop, with the pixel error of the views.
         let judge = M::from_fn(|l| mask[l].count_ones() > 2);
@@ -358,16 +349,54 @@ impl RobustTriangulator {
         let off = outlier.or(behind);
         live = drop_lanes(live, off.not(), &mut out, &mut uses[..m]);
 
+        // The covariance, by nalgebra's 3×3 inverse (`finish`'s `try_inverse`) written out.
+        let S3Parts {
+            xx,
+            xy,
+            xz,
+            yy,
+            yz,
+            zz,
+        } = information.parts();
+        let (m11, m12, m13, m21, m22, m23, m31, m32, m33) = (xx, xy, xz, xy, yy, yz, xz, yz, zz);
+        let minor_m12_m23 = m22 * m33 - m32 * m23;
+        let minor_m11_m23 = m21 * m33 - m31 * m23;
+        let minor_m11_m22 = m21 * m32 - m31 * m22;
+        let det = m11 * minor_m12_m23 - m12 * minor_m11_m23 + m13 * minor_m11_m22;
+        let cov = [
+            minor_m12_m23 / det,
+            (m13 * m32 - m33 * m12) / det,
+            (m12 * m23 - m22 * m13) / det,
+            -minor_m11_m23 / det,
+            (m11 * m33 - m31 * m13) / det,
+            (m13 * m21 - m23 * m11) / det,
+            minor_m11_m22 / det,
+            (m12 * m31 - m32 * m11) / det,
+            (m11 * m22 - m21 * m12) / det,
+        ];
+        let trace = cov[0] + cov[4] + cov[8];
+        // `trace.max(0.0).sqrt() <= limit` (a NaN trace counts as 0 there, as `f64::max` has it)
+        let sigma = trace.gt(zero).select(trace, zero).sqrt();
+        let invertible = det.gt(zero).or(det.lt(zero));
+        let constrained = invertible.and(sigma.le(V::splat(self.max_position_sigma_m)));
         for l in 0..LANES {
             if !live.get(l) {
                 continue;
             }
-            let point = Point3::new(p[0].0[l], p[1].0[l], p[2].0[l]);
-            out[l] = match self.finish(point, information.lane(l), mask[l], sq.0[l], conf.0[l]) {
-                Ok(t) => LaneResult::Done(t),
-                // the scalar triangulator's error for this landmark
-                Err(_) => LaneResult::Fallback,
-            };
+            if !constrained.get(l) {
+                // the scalar triangulator's `Unconstrained` (or `Degenerate`) for this landmark
+                out[l] = LaneResult::Fallback;
+                continue;
+            }
+            let n = f64::from(mask[l].count_ones());
+            out[l] = LaneResult::Done(Triangulated {
+                point: Point3::new(p[0].0[l], p[1].0[l], p[2].0[l]),
+                rms_px: (sq.0[l] / n).sqrt(),
+                used_mask: mask[l],
+                mean_confidence: conf.0[l] / n,
+                information: information.lane(l),
+                covariance: Matrix3::from_fn(|r, c| cov[3 * r + c].0[l]),
+            });
         }
         out
     }
@@ -407,7 +436,7 @@ mod tests {
     use super::*;
     use crate::error::PerceptionError;
     use crate::triangulation::NormalizedView;
-    use nalgebra::{Matrix3, Vector2, Vector3};
+    use nalgebra::{Vector2, Vector3};
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
