@@ -810,14 +810,19 @@ fn drop_off_body(
     points: &mut [Option<Point3<f64>>; LANDMARK_COUNT],
     masks: &[u64; LANDMARK_COUNT],
 ) -> usize {
-    let present: Vec<Point3<f64>> = points.iter().flatten().copied().collect();
-    if present.len() < 5 {
+    let n = points.iter().flatten().count();
+    if n < 5 {
         return 0;
     }
+    // on the stack: no allocation per frame
     let median = |axis: usize| {
-        let mut v: Vec<f64> = present.iter().map(|p| p[axis]).collect();
-        v.sort_by(f64::total_cmp);
-        v[v.len() / 2]
+        let mut v = [0.0; LANDMARK_COUNT];
+        for (slot, p) in v.iter_mut().zip(points.iter().flatten()) {
+            *slot = p[axis];
+        }
+        let v = &mut v[..n];
+        v.sort_unstable_by(f64::total_cmp);
+        v[n / 2]
     };
     let centre = Point3::new(median(0), median(1), median(2));
     let mut dropped = 0;
