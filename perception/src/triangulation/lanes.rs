@@ -227,31 +227,15 @@ impl RobustTriangulator {
             p = q;
         }
 
-        // The refinement (`refine`) from the linear estimate.
+        // The refinement (`refine`) from the linear estimate. `1/σ` of each view at the start's
+        // depth is computed in the first iteration, from the same `z` and `1/z` (`refine`
+        // computes them apart, with the same operations).
         let mut inv_sigma = [[zero; 2]; MAX_VIEWS];
-        for k in 0..m {
-            if !uses[k].any() {
-                continue;
-            }
-            let r = &cameras[k].r;
-            let z = V::splat(r[6]) * p[0]
-                + V::splat(r[7]) * p[1]
-                + V::splat(r[8]) * p[2]
-                + V::splat(cameras[k].t[2]);
-            let inv_z = z
-                .gt(V::splat(1e-9))
-                .select(V::splat(1.0) / z, V::splat(1.0));
-            let body = V::splat(self.body_noise_m) * inv_z;
-            let body2 = body * body;
-            let s2x = V::splat(pixel_terms[k][0]) + body2;
-            let s2y = V::splat(pixel_terms[k][1]) + body2;
-            inv_sigma[k] = [V::splat(1.0) / s2x.sqrt(), V::splat(1.0) / s2y.sqrt()];
-        }
         let huber2 = V::splat(self.huber_sigmas * self.huber_sigmas);
         let mut information = S3::zero();
         // Lanes still iterating (a lane stops at its own small step, as the scalar loop breaks).
         let mut active = live;
-        for _ in 0..self.iterations {
+        for iteration in 0..self.iterations {
             let mut h = S3::zero();
             let mut g = [zero; 3];
             for k in 0..m {
@@ -265,13 +249,26 @@ impl RobustTriangulator {
                 // the scalar loop skips a view with `pc.z <= 1e-9` (and keeps a NaN)
                 let take = use_k.and(pc[2].le(V::splat(1e-9)).not());
                 let inv_z = V::splat(1.0) / pc[2];
+                if iteration == 0 {
+                    let at_start = pc[2].gt(V::splat(1e-9)).select(inv_z, V::splat(1.0));
+                    let body = V::splat(self.body_noise_m) * at_start;
+                    let body2 = body * body;
+                    let s2x = V::splat(pixel_terms[k][0]) + body2;
+                    let s2y = V::splat(pixel_terms[k][1]) + body2;
+                    inv_sigma[k] = [V::splat(1.0) / s2x.sqrt(), V::splat(1.0) / s2y.sqrt()];
+                }
                 let (u, w) = (pc[0] * inv_z, pc[1] * inv_z);
                 let [sx, sy] = inv_sigma[k];
                 let (r0, r1) = ((u - Lanes(o.x)) * sx, (w - Lanes(o.y)) * sy);
                 let norm2 = r0 * r0 + r1 * r1;
-                let huber = norm2
-                    .gt(huber2)
-                    .select(V::splat(self.huber_sigmas) / norm2.sqrt(), V::splat(1.0));
+                // Huber's weight where a lane's error is beyond it (most views are not: their
+                // square root and division are then skipped; the weight is 1 either way)
+                let robust = norm2.gt(huber2);
+                let huber = if robust.any() {
+                    robust.select(V::splat(self.huber_sigmas) / norm2.sqrt(), V::splat(1.0))
+                } else {
+                    V::splat(1.0)
+                };
                 let weight = Lanes(o.confidence) * huber;
                 let (ax, ay) = (inv_z * sx, inv_z * sy);
                 let j0 = [
