@@ -31,7 +31,7 @@ use crate::error::{PerceptionError, Result};
 use crate::rig::CameraRig;
 use crate::triangulation::{
     iter_mask, DltAccumulator, LaneCamera, LaneObs, LaneResult, NormalizedView, RobustTriangulator,
-    LANES, MAX_VIEWS,
+    Triangulated, LANES, MAX_VIEWS,
 };
 
 /// Which fusion to run.
@@ -85,6 +85,29 @@ struct Triangulations {
     covariance: [Option<Matrix3<f64>>; LANDMARK_COUNT],
     masks: [u64; LANDMARK_COUNT],
     rejected: usize,
+}
+
+impl Triangulations {
+    fn new() -> Self {
+        Self {
+            points: [None; LANDMARK_COUNT],
+            information: [Matrix3::zeros(); LANDMARK_COUNT],
+            covariance: [None; LANDMARK_COUNT],
+            masks: [0u64; LANDMARK_COUNT],
+            rejected: 0,
+        }
+    }
+
+    /// Landmark `i`'s triangulation from `listed` observations.
+    fn record(&mut self, i: usize, r: &Triangulated, listed: usize) {
+        self.rejected += listed - r.views_used() as usize;
+        self.points[i] = Some(r.point);
+        self.information[i] = r.information;
+        // what the prior's `covariance_of` computes, already inverted (information from a
+        // triangulation is never all zeros)
+        self.covariance[i] = Some(r.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
+        self.masks[i] = r.used_mask;
+    }
 }
 
 /// Exchanges the left and right observations of the cameras in `cameras` (a bit per camera); each
@@ -351,13 +374,7 @@ impl FusionEngine {
         views: &mut Vec<NormalizedView>,
         lanes: &mut Vec<LaneObs>,
     ) -> Triangulations {
-        let mut t = Triangulations {
-            points: [None; LANDMARK_COUNT],
-            information: [Matrix3::zeros(); LANDMARK_COUNT],
-            covariance: [None; LANDMARK_COUNT],
-            masks: [0u64; LANDMARK_COUNT],
-            rejected: 0,
-        };
+        let mut t = Triangulations::new();
         // [`LANES`] landmarks at a time; the scalar triangulator for a landmark off the lanes'
         // common path (a view dropped, a degenerate system), which gives the same answers.
         for first in (0..LANDMARK_COUNT).step_by(LANES) {
@@ -395,33 +412,32 @@ impl FusionEngine {
                     }
                     LaneResult::TooFewViews(_) | LaneResult::Unused => continue,
                     LaneResult::Fallback => {
-                        views.clear();
-                        views.extend(o.iter().map(|ob| {
-                            let c = &self.cameras[ob.camera];
-                            NormalizedView {
-                                R_camera_world: c.R_camera_world,
-                                t_camera_world: c.t_camera_world,
-                                normalized: ob.normalized,
-                                focal_px: c.focal_px,
-                                confidence: ob.confidence,
-                            }
-                        }));
+                        self.views_into(o, views);
                         let Ok(r) = self.triangulator.triangulate(views) else {
                             continue;
                         };
                         r
                     }
                 };
-                t.rejected += o.len() - r.views_used() as usize;
-                t.points[i] = Some(r.point);
-                t.information[i] = r.information;
-                // what the prior's `covariance_of` computes, already inverted (information from
-                // a triangulation is never all zeros)
-                t.covariance[i] = Some(r.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
-                t.masks[i] = r.used_mask;
+                t.record(i, &r, o.len());
             }
         }
         t
+    }
+
+    /// One landmark's observations as the scalar triangulator takes them, into `views`.
+    fn views_into(&self, o: &[Obs], views: &mut Vec<NormalizedView>) {
+        views.clear();
+        views.extend(o.iter().map(|ob| {
+            let c = &self.cameras[ob.camera];
+            NormalizedView {
+                R_camera_world: c.R_camera_world,
+                t_camera_world: c.t_camera_world,
+                normalized: ob.normalized,
+                focal_px: c.focal_px,
+                confidence: ob.confidence,
+            }
+        }));
     }
 
     /// The cameras whose view has the person's left and right swapped, judged against the fused
@@ -960,35 +976,13 @@ pub(crate) mod tests {
     /// The default fusion's triangulation of a frame one landmark at a time with the scalar
     /// triangulator: what `triangulate_all` did before it ran in lanes.
     fn triangulate_all_scalar(engine: &FusionEngine, obs: &FrameObs) -> Triangulations {
-        let mut t = Triangulations {
-            points: [None; LANDMARK_COUNT],
-            information: [Matrix3::zeros(); LANDMARK_COUNT],
-            covariance: [None; LANDMARK_COUNT],
-            masks: [0u64; LANDMARK_COUNT],
-            rejected: 0,
-        };
+        let mut t = Triangulations::new();
+        let mut views = Vec::new();
         for (i, o) in obs.iter().enumerate() {
-            let views: Vec<NormalizedView> = o
-                .iter()
-                .map(|ob| {
-                    let c = &engine.cameras[ob.camera];
-                    NormalizedView {
-                        R_camera_world: c.R_camera_world,
-                        t_camera_world: c.t_camera_world,
-                        normalized: ob.normalized,
-                        focal_px: c.focal_px,
-                        confidence: ob.confidence,
-                    }
-                })
-                .collect();
-            let Ok(r) = engine.triangulator.triangulate(&views) else {
-                continue;
-            };
-            t.rejected += views.len() - r.views_used() as usize;
-            t.points[i] = Some(r.point);
-            t.information[i] = r.information;
-            t.covariance[i] = Some(r.covariance).filter(|c| c.iter().all(|v| v.is_finite()));
-            t.masks[i] = r.used_mask;
+            engine.views_into(o, &mut views);
+            if let Ok(r) = engine.triangulator.triangulate(&views) {
+                t.record(i, &r, o.len());
+            }
         }
         t
     }
