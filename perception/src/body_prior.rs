@@ -339,84 +339,11 @@ const ADJACENCY: [Adjacency; BONE_LANDMARKS.len()] = {
     out
 };
 
-/// Landmark updates of [`BonePrior::refine`] done side by side.
-const WIDTH: usize = 4;
-
-/// One step of the refinement's schedule: up to [`WIDTH`] landmark updates (indices into
-/// [`BONE_LANDMARKS`]) that depend on none of each other.
-type Step = [Option<u8>; WIDTH];
-
-/// The Gauss–Seidel sweeps of [`BonePrior::refine`] as steps of independent updates.
-///
-/// Sweep `s`'s update of landmark `i` reads each neighbour `j` as the sweep order left it: `j`'s
-/// sweep-`s` value when `j` comes before `i` in [`BONE_LANDMARKS`], its sweep-`s − 1` value when
-/// after. Those are its only dependencies, so any order that runs every update after the ones it
-/// reads gives the same numbers as the sweeps one landmark at a time. Greedy list scheduling, the
-/// earliest (sweep, landmark) first: the head and the body share no pair, so the head's chain
-/// (its seven landmarks all tied to each other) runs beside the body's, and the body's left and
-/// right sides beside each other. Six sweeps: 42 steps instead of 150 updates in a row.
-fn schedule(sweeps: usize) -> Vec<Step> {
-    let n = BONE_LANDMARKS.len();
-    let position = |landmark: usize| BONE_LANDMARKS.iter().position(|&i| i == landmark);
-    // done[s][k]: the step that did sweep s's update of BONE_LANDMARKS[k]
-    let mut done = vec![[None::<usize>; BONE_LANDMARKS.len()]; sweeps];
-    let mut pending: Vec<(usize, usize)> = (0..sweeps)
-        .flat_map(|s| (0..n).map(move |k| (s, k)))
-        .collect();
-    let mut steps = Vec::new();
-    while !pending.is_empty() {
-        let step = steps.len();
-        let finished = |d: Option<usize>| d.is_some_and(|at| at < step);
-        let mut chosen: Step = [None; WIDTH];
-        let mut taken = 0;
-        pending.retain(|&(s, k)| {
-            if taken == WIDTH {
-                return true;
-            }
-            let adjacency = &ADJACENCY[k];
-            let ready = (s == 0 || finished(done[s - 1][k]))
-                && adjacency.pairs[..adjacency.count]
-                    .iter()
-                    .all(|&(_, other)| {
-                        let Some(j) = position(other) else {
-                            return true;
-                        };
-                        if j < k {
-                            finished(done[s][j])
-                        } else {
-                            s == 0 || finished(done[s - 1][j])
-                        }
-                    });
-            if ready {
-                // `k` < 25 fits a byte
-                chosen[taken] = u8::try_from(k).ok();
-                taken += 1;
-                false
-            } else {
-                true
-            }
-        });
-        for &k in chosen.iter().flatten() {
-            if let Some(d) = done.iter_mut().find(|d| d[usize::from(k)].is_none()) {
-                d[usize::from(k)] = Some(step);
-            }
-        }
-        if taken == 0 {
-            // cannot happen (the first pending update is always ready); never loop forever
-            break;
-        }
-        steps.push(chosen);
-    }
-    steps
-}
-
 /// The learned bone lengths of the current operator and the per-frame refinement.
 #[derive(Debug, Clone)]
 pub struct BonePrior {
     params: BonePriorParams,
     history: Vec<BoneHistory>,
-    /// [`schedule`] of `params.sweeps`.
-    schedule: Vec<Step>,
 }
 
 impl BonePrior {
@@ -425,7 +352,6 @@ impl BonePrior {
         Self {
             params,
             history: vec![BoneHistory::default(); RIGID.len()],
-            schedule: schedule(params.sweeps),
         }
     }
 
@@ -518,74 +444,34 @@ impl BonePrior {
         }
         let measured = *points;
         let w = 1.0 / (self.params.sigma_m * self.params.sigma_m);
-        // Each step's updates side by side, pair by pair, so their chains of square roots and
-        // divisions overlap; every update is the one-landmark Gauss–Newton step of the sweeps.
-        for step in &self.schedule {
-            let mut x = [Vector3::zeros(); WIDTH];
-            let mut h = [Sym3::default(); WIDTH];
-            let mut g = [Vector3::zeros(); WIDTH];
-            let mut live = [false; WIDTH];
-            let mut constrained = [false; WIDTH];
-            let mut count = [0usize; WIDTH];
-            for (l, k) in step.iter().enumerate() {
-                let Some(k) = k.map(usize::from) else {
+        for _ in 0..self.params.sweeps {
+            for (&i, adjacency) in BONE_LANDMARKS.iter().zip(&ADJACENCY) {
+                let (Some(x), Some(x_hat)) = (points[i], measured[i]) else {
                     continue;
                 };
-                let i = BONE_LANDMARKS[k];
-                let (Some(xi), Some(x_hat)) = (points[i], measured[i]) else {
-                    continue;
-                };
-                let info = &information[i];
-                let e = xi - x_hat;
-                x[l] = xi.coords;
-                h[l] = Sym3::from_matrix(info);
-                g[l] = Vector3::new(
-                    info[(0, 0)] * e.x + info[(0, 1)] * e.y + info[(0, 2)] * e.z,
-                    info[(1, 0)] * e.x + info[(1, 1)] * e.y + info[(1, 2)] * e.z,
-                    info[(2, 0)] * e.x + info[(2, 1)] * e.y + info[(2, 2)] * e.z,
-                );
-                live[l] = true;
-                count[l] = ADJACENCY[k].count;
-            }
-            for p in 0..MAX_DEGREE {
-                for l in 0..WIDTH {
-                    if !live[l] || p >= count[l] {
-                        continue;
-                    }
-                    let Some(k) = step[l].map(usize::from) else {
+                let mut h = Sym3::from_matrix(&information[i]);
+                let mut g = information[i] * (x - x_hat);
+                let mut constrained = false;
+                for &(b, other) in &adjacency.pairs[..adjacency.count] {
+                    let (Some(l), Some(y)) = (lengths[b], points[other]) else {
                         continue;
                     };
-                    let (b, other) = ADJACENCY[k].pairs[p];
-                    let (Some(length), Some(y)) = (lengths[b], points[other]) else {
-                        continue;
-                    };
-                    let d = Vector3::new(x[l].x - y.x, x[l].y - y.y, x[l].z - y.z);
-                    let n = (d.x * d.x + d.y * d.y + d.z * d.z).sqrt();
+                    let d: Vector3<f64> = x - y;
+                    let n = d.norm();
                     if n < 1e-6 {
                         continue;
                     }
-                    let inv = 1.0 / n;
-                    let u = Vector3::new(d.x * inv, d.y * inv, d.z * inv);
-                    h[l].add_outer(&u, w);
-                    let a = (n - length) * w;
-                    g[l] = Vector3::new(g[l].x + u.x * a, g[l].y + u.y * a, g[l].z + u.z * a);
-                    constrained[l] = true;
+                    let u = d * (1.0 / n);
+                    h.add_outer(&u, w);
+                    g += u * ((n - l) * w);
+                    constrained = true;
                 }
-            }
-            for l in 0..WIDTH {
-                let Some(k) = step[l].map(usize::from) else {
-                    continue;
-                };
-                if !constrained[l] {
+                if !constrained {
                     continue;
                 }
-                if let Some(step) = h[l].solve(&g[l]) {
+                if let Some(step) = h.solve(&g) {
                     if step.iter().all(|s| s.is_finite()) {
-                        points[BONE_LANDMARKS[k]] = Some(Point3::new(
-                            x[l].x - step.x,
-                            x[l].y - step.y,
-                            x[l].z - step.z,
-                        ));
+                        points[i] = Some(x - step);
                     }
                 }
             }
@@ -608,115 +494,13 @@ pub(crate) fn covariance_of(information: &Matrix3<f64>) -> Option<Matrix3<f64>> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::triangulation::Sym3;
     use ergocell_skeleton::Landmark;
-    use nalgebra::Vector3;
 
     fn arm(elbow_x: f64) -> [Option<Point3<f64>>; LANDMARK_COUNT] {
         let mut p = [None; LANDMARK_COUNT];
         p[Landmark::LeftShoulder.index()] = Some(Point3::new(0.0, 0.0, 1.4));
         p[Landmark::LeftElbow.index()] = Some(Point3::new(elbow_x, 0.0, 1.1));
         p
-    }
-
-    /// The sweeps one landmark at a time, as `refine` ran them before the schedule.
-    fn refine_in_sweep_order(
-        prior: &BonePrior,
-        points: &mut [Option<Point3<f64>>; LANDMARK_COUNT],
-        information: &[Matrix3<f64>; LANDMARK_COUNT],
-    ) {
-        let lengths: [Option<f64>; RIGID.len()] = std::array::from_fn(|b| prior.length_m(b));
-        let measured = *points;
-        let w = 1.0 / (prior.params.sigma_m * prior.params.sigma_m);
-        for _ in 0..prior.params.sweeps {
-            for (&i, adjacency) in BONE_LANDMARKS.iter().zip(&ADJACENCY) {
-                let (Some(x), Some(x_hat)) = (points[i], measured[i]) else {
-                    continue;
-                };
-                let mut h = Sym3::from_matrix(&information[i]);
-                let mut g = information[i] * (x - x_hat);
-                let mut constrained = false;
-                for &(b, other) in &adjacency.pairs[..adjacency.count] {
-                    let (Some(l), Some(y)) = (lengths[b], points[other]) else {
-                        continue;
-                    };
-                    let d: Vector3<f64> = x - y;
-                    let n = d.norm();
-                    if n < 1e-6 {
-                        continue;
-                    }
-                    let u = d * (1.0 / n);
-                    h.add_outer(&u, w);
-                    g += u * ((n - l) * w);
-                    constrained = true;
-                }
-                if constrained {
-                    if let Some(step) = h.solve(&g) {
-                        if step.iter().all(|s| s.is_finite()) {
-                            points[i] = Some(x - step);
-                        }
-                    }
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn the_scheduled_sweeps_give_the_numbers_of_the_sweeps_in_order() {
-        // A noisy body learned over 40 frames, then refined with landmarks missing: the schedule's
-        // steps give every coordinate bit for bit as one landmark at a time does.
-        let mut seed = 3u64;
-        let mut next = || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 33) as f64 / (1u64 << 31) as f64 - 0.5
-        };
-        let body: [Point3<f64>; LANDMARK_COUNT] = std::array::from_fn(|i| {
-            Point3::new(
-                0.1 * ((i * 7) % 5) as f64,
-                0.05 * ((i * 3) % 4) as f64,
-                0.05 * i as f64,
-            )
-        });
-        for sweeps in [1, 6, 9] {
-            let mut prior = BonePrior::new(BonePriorParams {
-                sweeps,
-                ..BonePriorParams::default()
-            });
-            for frame in 0..40 {
-                let mut points = body.map(Some);
-                for p in points.iter_mut().flatten() {
-                    *p += Vector3::new(next(), next(), next()) * 0.02;
-                }
-                let information: [Matrix3<f64>; LANDMARK_COUNT] = std::array::from_fn(|_| {
-                    let a = Matrix3::from_fn(|_, _| next());
-                    a * a.transpose() * 1e4 + Matrix3::identity() * 1e3
-                });
-                if frame % 3 == 0 {
-                    points[(frame * 7) % LANDMARK_COUNT] = None;
-                    points[Landmark::LeftEar.index()] = None;
-                }
-                prior.observe(&points, &information);
-                let mut scheduled = points;
-                let mut in_order = points;
-                prior.refine(&mut scheduled, &information);
-                refine_in_sweep_order(&prior, &mut in_order, &information);
-                let bits = |p: &[Option<Point3<f64>>; LANDMARK_COUNT]| -> Vec<Option<[u64; 3]>> {
-                    p.iter()
-                        .map(|q| q.map(|q| [q.x.to_bits(), q.y.to_bits(), q.z.to_bits()]))
-                        .collect()
-                };
-                assert_eq!(
-                    bits(&scheduled),
-                    bits(&in_order),
-                    "{sweeps} sweeps, frame {frame}"
-                );
-                if frame > 20 {
-                    assert_ne!(scheduled, points, "the prior moved something");
-                }
-            }
-        }
     }
 
     #[test]
