@@ -287,6 +287,39 @@ fn one_non_numeric_csv_cell_is_skipped_and_counted_not_fatal() {
 }
 
 #[test]
+fn caliscope_cells_padded_with_blanks_read_as_the_bare_ones_and_unknown_ports_are_skipped() {
+    // the reader does not trim: every header name and cell is trimmed where it is read
+    let text = read("xy_pose33.csv");
+    let (bare, bare_stats) = caliscope(&text);
+    let mut padded = String::new();
+    for (i, line) in text.lines().enumerate() {
+        let cells: Vec<String> = line
+            .split(',')
+            .enumerate()
+            .map(|(j, c)| match (i + j) % 3 {
+                0 => format!(" {c}"),
+                1 => format!("{c}\t "),
+                _ => c.to_string(),
+            })
+            .collect();
+        padded.push_str(&cells.join(","));
+        padded.push('\n');
+    }
+    // rows of a port the rig does not have, before and after the known ones
+    let unknown = "0, 9,0,47389.9,0,520,193,,\n";
+    let padded = format!(
+        "{}{unknown}{}{unknown}",
+        padded.lines().next().unwrap().to_string() + "\n",
+        padded.split_once('\n').unwrap().1
+    );
+    let (frames, stats) = caliscope(&padded);
+    assert!(!bare.is_empty());
+    assert_eq!(frames, bare);
+    assert_eq!(stats.invalid_keypoints, bare_stats.invalid_keypoints);
+    assert_eq!(stats.skipped_records, bare_stats.skipped_records + 2);
+}
+
+#[test]
 fn caliscope_csv_without_img_loc_y_is_an_error_naming_the_column() {
     let text = read("xy_pose33.csv");
     let c = text
