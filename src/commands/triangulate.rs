@@ -22,6 +22,9 @@ use ergocell_skeleton::{Skeleton3, LANDMARK_COUNT};
 use super::signals::{StopFlag, Stopped};
 use super::{output, UsageError};
 
+/// Frames read ahead of the fusion by the reading thread (a few hundred kB: memory stays flat).
+const READ_AHEAD: usize = 64;
+
 /// Arguments of `ergocell triangulate`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -152,45 +155,64 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     };
     let (mut rejected, mut undistortion_failures) = (0, 0);
     let progress = progress_bar(frame_count);
-    for mut frame in source.by_ref() {
-        for view in &mut frame.views {
-            if let Some(m) = maps.get(view.camera) {
-                m.apply_view(view);
+    // The detections are read and parsed on a second thread, up to READ_AHEAD frames ahead of the
+    // fusion (one producer, one FIFO channel: the order is kept): reading was a third of the time.
+    // The reader hands `source` back for its statistics; it stops when the fusion does (a closed
+    // channel).
+    let source = std::thread::scope(|scope| -> anyhow::Result<FrameSource<'_>> {
+        let (frames, received) = std::sync::mpsc::sync_channel::<Frame2>(READ_AHEAD);
+        let maps = &maps;
+        let reader = scope.spawn(move || {
+            for mut frame in source.by_ref() {
+                for view in &mut frame.views {
+                    if let Some(m) = maps.get(view.camera) {
+                        m.apply_view(view);
+                    }
+                }
+                if frames.send(frame).is_err() {
+                    break;
+                }
+            }
+            source
+        });
+        for frame in received {
+            if let Some(signal) = stop.get() {
+                out.discard();
+                return Err(Stopped {
+                    signal,
+                    what: format!(
+                        "{} of {frame_count} frames triangulated, {} not written",
+                        stats.frames(),
+                        args.out.display()
+                    ),
+                }
+                .into());
+            }
+            let r = reconstruction.process_frame(&frame)?;
+            rejected += r.fused.rejected_views;
+            undistortion_failures += r.fused.undistortion_failures;
+            let swapped = r.fused.swapped_views;
+            let skeleton = r.tracked.unwrap_or(r.fused.skeleton);
+            stats.push(&skeleton);
+            per_camera.push(&rig, &frame, &skeleton, swapped);
+            progress.inc(1);
+            if let Some(e) = encoder.as_mut() {
+                e.frame_into(&skeleton, &mut text);
+                if text.len() > 1 << 20 {
+                    out.write(text.as_bytes())?;
+                    text.clear();
+                }
+            } else {
+                held.push(skeleton);
+            }
+            if held.len() == RATE_FRAMES {
+                encoder = Some(start(&mut held, &mut text));
             }
         }
-        if let Some(signal) = stop.get() {
-            out.discard();
-            return Err(Stopped {
-                signal,
-                what: format!(
-                    "{} of {frame_count} frames triangulated, {} not written",
-                    stats.frames(),
-                    args.out.display()
-                ),
-            }
-            .into());
-        }
-        let r = reconstruction.process_frame(&frame)?;
-        rejected += r.fused.rejected_views;
-        undistortion_failures += r.fused.undistortion_failures;
-        let swapped = r.fused.swapped_views;
-        let skeleton = r.tracked.unwrap_or(r.fused.skeleton);
-        stats.push(&skeleton);
-        per_camera.push(&rig, &frame, &skeleton, swapped);
-        progress.inc(1);
-        if let Some(e) = encoder.as_mut() {
-            e.frame_into(&skeleton, &mut text);
-            if text.len() > 1 << 20 {
-                out.write(text.as_bytes())?;
-                text.clear();
-            }
-        } else {
-            held.push(skeleton);
-        }
-        if held.len() == RATE_FRAMES {
-            encoder = Some(start(&mut held, &mut text));
-        }
-    }
+        reader
+            .join()
+            .map_err(|_| anyhow::anyhow!("the thread reading the detections failed"))
+    })?;
     let e = encoder.get_or_insert_with(|| start(&mut held, &mut text));
     let written = e.frames_written();
     text.push_str(&e.footer());
