@@ -6,10 +6,12 @@
 //! `cargo bench --bench triangulate_hour` (release build of the binary). Environment:
 //! `ERGOCELL_HOUR_SECONDS` (default 3600), `ERGOCELL_P2S_SECONDS` (default 60),
 //! `ERGOCELL_P2S_PYTHON` (a Python with pose2sim; default `/tmp/p2s_min/bin/python` if present; see
-//! `tools/pose2sim/README.md`). The data is generated once into `target/tmp/triangulate_hour/`
-//! (the hour is ≈ 1 GB) and reused; the synthetic cell is `perception/benches/rig.rs`'s 6-camera
-//! ring (moving body, 2 px noise, 5 % missing, 2 % gross errors, seed 1). Not run by CI (minutes
-//! and a gigabyte); figures go into the README and the closing notes.
+//! `tools/pose2sim/README.md`), `ERGOCELL_BEFORE_BIN` (another build's `ergocell`: the CSV rows are
+//! run by it too, before this build, for a before → after comparison in one run). The data is
+//! generated once into `target/tmp/triangulate_hour/` (the hour is ≈ 1 GB) and reused; the
+//! synthetic cell is `perception/benches/rig.rs`'s 6-camera ring (moving body, 2 px noise, 5 %
+//! missing, 2 % gross errors, seed 1). Not run by CI (minutes and a gigabyte); figures go into the
+//! README and the closing notes.
 
 #![allow(
     clippy::unwrap_used,
@@ -132,9 +134,21 @@ fn timed(cmd: &Command) -> (f64, f64, String) {
     )
 }
 
-fn triangulate(calibration: &Path, detections: &Path, out: &Path) -> (f64, f64, String) {
+/// `ergocell triangulate` of this build, or of `ERGOCELL_BEFORE_BIN` when `before` (another build,
+/// for a before → after comparison in one run).
+fn triangulate_by(
+    before: bool,
+    calibration: &Path,
+    detections: &Path,
+    out: &Path,
+) -> (f64, f64, String) {
+    let bin = if before {
+        std::env::var("ERGOCELL_BEFORE_BIN").unwrap()
+    } else {
+        env!("CARGO_BIN_EXE_ergocell").to_owned()
+    };
     timed(
-        Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        Command::new(bin)
             .arg("triangulate")
             .arg("--calibration")
             .arg(calibration)
@@ -144,6 +158,10 @@ fn triangulate(calibration: &Path, detections: &Path, out: &Path) -> (f64, f64, 
             .arg("--out")
             .arg(out),
     )
+}
+
+fn triangulate(calibration: &Path, detections: &Path, out: &Path) -> (f64, f64, String) {
+    triangulate_by(false, calibration, detections, out)
 }
 
 fn line<'a>(stdout: &'a str, key: &str) -> &'a str {
@@ -183,17 +201,26 @@ fn main() {
     }
     println!("| input | frames | wall s | frames/s | peak RSS MB |");
     println!("|---|---|---|---|---|");
+    // with ERGOCELL_BEFORE_BIN, each input by that build first, then by this one
+    let builds: &[bool] = if std::env::var_os("ERGOCELL_BEFORE_BIN").is_some() {
+        &[true, false]
+    } else {
+        &[false]
+    };
     for (name, path, frames) in [
         ("caliscope CSV, 1/10", &tenth, tenth_frames),
         ("caliscope CSV", &csv, hour_frames),
     ] {
-        let (s, rss, stdout) = triangulate(&calibration, path, &dir.join("out.trc"));
-        assert!(line(&stdout, "frames:") == frames.to_string(), "{stdout}");
-        println!(
-            "| {name} ({:.0} MB) | {frames} | {s:.1} | {:.0} | {rss:.0} |",
-            std::fs::metadata(path).unwrap().len() as f64 / 1e6,
-            frames as f64 / s
-        );
+        for &before in builds {
+            let (s, rss, stdout) = triangulate_by(before, &calibration, path, &dir.join("out.trc"));
+            assert!(line(&stdout, "frames:") == frames.to_string(), "{stdout}");
+            println!(
+                "| {name} ({:.0} MB){} | {frames} | {s:.1} | {:.0} | {rss:.0} |",
+                std::fs::metadata(path).unwrap().len() as f64 / 1e6,
+                if before { ", before" } else { "" },
+                frames as f64 / s
+            );
+        }
     }
 
     let p2s_frames = (p2s_s * 30.0).round() as usize;
@@ -201,6 +228,10 @@ fn main() {
     if !pose.exists() {
         write_openpose(&pose, &rig, p2s_frames);
     }
+    // once untimed first: the hour's gigabyte has just pushed the 10 800 small JSON files out of
+    // the page cache (cold, the run took 0.89 s instead of 0.15 s), and Pose2Sim, run after, reads
+    // them warm
+    triangulate(&calibration, &pose, &dir.join("openpose.trc"));
     let (s, rss, _) = triangulate(&calibration, &pose, &dir.join("openpose.trc"));
     let ours = p2s_frames as f64 / s;
     println!("| OpenPose JSON folders | {p2s_frames} | {s:.2} | {ours:.0} | {rss:.0} |");
