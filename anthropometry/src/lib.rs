@@ -1,5 +1,8 @@
-//! The one anthropometric table of the workspace: body segment lengths and standing joint heights as
-//! fractions of stature `H`.
+//! Body proportions for the workspace: the one table of body segment lengths and standing joint
+//! heights as fractions of stature `H` (this module), ANSUR II's 6,068 measured people
+//! ([`ansur`]: the real spread of proportions between people) and the stature models fitted on
+//! them ([`stature`]: stature from the ear's standing height, with a residual measured on people
+//! never fitted).
 //!
 //! # Source
 //! Drillis, R. & Contini, R. (1966), *Body Segment Parameters*, Technical Report 1166-03, Office of
@@ -31,6 +34,9 @@
 //! (it is one or two ulps off). [`THIGH`], [`SHANK`] and [`TRUNK`] are the tabulated literals; the
 //! differences themselves are in [`from_heights`], for a body model that stacks its segments on the
 //! tabulated heights.
+
+pub mod ansur;
+pub mod stature;
 
 // Heights above the floor, standing upright.
 
