@@ -646,6 +646,7 @@ pub fn leg_message(leg: &crate::session::LegTrajectory) -> JointTrajectory {
 /// One line for a person reading the terminal or the log.
 pub fn describe(e: &SessionEvent) -> String {
     use crate::session::{RobotCommand, SessionEvent as E};
+    use ergocell_ergonomics::height::DecisionBasis;
     match e {
         E::StateChanged {
             from, to, reason, ..
@@ -654,10 +655,19 @@ pub fn describe(e: &SessionEvent) -> String {
             height_m,
             uncertainty_m,
             class,
+            basis,
+            probability,
+            expected_rula_cost,
             ..
         } => format!(
-            "height measured {height_m:.3} ± {uncertainty_m:.3} m → class {}",
-            class.name()
+            "height measured {height_m:.3} ± {uncertainty_m:.3} m → class {} ({}; probability {probability:.2}{})",
+            class.name(),
+            match basis {
+                DecisionBasis::Interval => "the interval lies inside the class",
+                DecisionBasis::ExpectedRula => "across a boundary: the lowest expected RULA",
+                DecisionBasis::MostProbable => "across a boundary: the most probable class",
+            },
+            expected_rula_cost.map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
         ),
         E::TrajectoryLocked {
             class,

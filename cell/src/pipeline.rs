@@ -298,7 +298,7 @@ impl Assessment {
         Ok(Self {
             assessor: RulaAssessor::new(config.assessment)?,
             warnings: WarningTracker::new(config.warnings),
-            height: HeightEstimator::new(config.height),
+            height: HeightEstimator::new(config.height.clone()),
             height_decided: false,
             away_from_station: 0,
         })

@@ -9,51 +9,65 @@
 //! from the shoulder midpoint to the ear midpoint within [`HeightConfig::upright_max_neck_flexion_rad`]
 //! of the trunk axis (a bowed head lowers the eyes and biases both estimators low).
 //!
-//! # Two estimators (Drillis & Contini 1966, as tabulated by Winter, *Biomechanics and Motor Control
-//! of Human Movement*; fractions of stature H, from the workspace's one table,
-//! [`ergocell_anthropometry`])
-//! - **Floor to eye**: eye height above the floor is 0.936 H, so `H = (eye − floor) / 0.936` — the
-//!   eye height plus the eye-to-vertex offset of 0.064 H. The eye height is the mean of the left and
-//!   right eye landmarks along up; the floor is the configured floor height along up or, when unknown,
-//!   the lowest foot landmark (heel, foot index, ankle) of the frame.
-//! - **Segment chain**: shank (knee − ankle, 0.246 H) + thigh (hip − knee, 0.245 H) + trunk (hip
-//!   midpoint − shoulder midpoint, 0.288 H) + shoulder-to-eye along the trunk axis (0.936 − 0.818 =
-//!   0.118 H) spans ankle to eye, 0.897 H (ankle height is 0.039 H). So `H = chain / 0.897`, each leg
-//!   segment the mean of the sides seen. The three "verify" ratios of `robot.md` check out: they are
-//!   the differences of the tabulated heights (0.530 − 0.285, 0.285 − 0.039, 0.818 − 0.530).
+//! # Two estimators, fitted on measured people
+//! Both read the ear, BlazePose's landmark nearest an anatomical point of known height (the
+//! tragion), and map a standing span to stature with a line fitted on ANSUR II's measured adults
+//! ([`ergocell_anthropometry::stature`]: fitted on even subject ids, its residual measured on the
+//! odd ones, never fitted):
+//! - **Floor to ear**: the ear midpoint's height above the floor, `H = 0.0939 m + 1.0226 · span`,
+//!   residual 6.5 mm. The floor is the configured floor height along up or, when unknown, the lowest
+//!   foot landmark (heel, foot index, ankle) of the frame.
+//! - **Ankle to ear** (the segment chain): shank (knee − ankle) + thigh (hip − knee) + trunk (hip
+//!   midpoint − shoulder midpoint) + shoulder-to-ear along the trunk axis spans ankle to ear
+//!   standing, `H = 0.0761 m + 1.0813 · span`, residual 9.0 mm; each leg segment the mean of the
+//!   sides seen. It needs no floor.
+//!
+//! The pose estimator's ear landmark is not the tragion: [`EarOffset`] is how far above it the
+//! landmark sits, subtracted from both spans. Until a cell is calibrated (`ergocell height
+//! calibrate`: sessions of people measured with a stadiometer) it is 0 ± [`DEFAULT_EAR_OFFSET_SIGMA_M`],
+//! a wide default, and the estimate says so.
 //!
 //! A third, **posture-independent** estimator runs on every frame, upright or not: each limb and
 //! trunk segment length divided by its ratio (upper arm 0.186 H, forearm 0.146 H, thigh 0.245 H,
-//! shank 0.246 H, shoulder-to-hip per side 0.288 H), the median over the segments seen in a frame,
-//! then the median over frames ([`HeightEstimator::segment_estimate`]). Shoulder and hip *widths* are
-//! left out: BlazePose's shoulder and hip landmarks are joint centres, narrower than the biacromial
-//! and bi-trochanteric breadths the ratios describe. It is reported (e.g. for a seated operator) but
-//! never decides a class: the class is decided from upright frames only.
+//! shank 0.246 H, shoulder-to-hip per side 0.288 H, Drillis & Contini 1966), the median over the
+//! segments seen in a frame, then the median over frames ([`HeightEstimator::segment_estimate`]).
+//! Shoulder and hip *widths* are left out: BlazePose's shoulder and hip landmarks are joint
+//! centres, narrower than the biacromial and bi-trochanteric breadths the ratios describe. It is
+//! reported (e.g. for a seated operator) but never decides a class: the class is decided from
+//! upright frames only.
 //!
-//! The ratios are 1966 population means. We assume their person-to-person spread is 1.5 % of H for
-//! the floor-to-eye ratio and 2.5 % for the segment chain (a chain of four ratios, and BlazePose's hip
-//! landmark is not the greater trochanter); those are the estimators' model uncertainties.
+//! # Uncertainty
+//! Per estimator: the median over the upright frames of the window, with a statistical standard
+//! error `1.2533 · 1.4826 · MAD / √n`. The two medians are combined by inverse-variance weights on
+//! those statistical errors (the measurement noise is the two estimators' own); the model residual
+//! and the ear offset's uncertainty are shared by both (both read the same ear) and are added once:
+//! `σ² = σ_stat² + σ_model² + σ_offset²`, σ_model the floor-to-ear residual when that estimator is
+//! present, else the chain's. If the two disagree by more than their combined σ, σ is widened to
+//! half the disagreement.
 //!
-//! # Robust combination
-//! Per estimator: the median over the upright frames of the window, with a statistical standard error
-//! `1.2533 · 1.4826 · MAD / √n`; the estimator's σ combines it with the model uncertainty. The two
-//! are combined by inverse-variance weighting; if they disagree by more than their combined σ, σ is
-//! widened to half the disagreement.
+//! # Class decision: everyone who stands upright is served
+//! Classes: c1 below 1.68 m, c2 from 1.68 to 1.82 m inclusive, c3 above (thresholds configurable).
+//! Once [`HeightConfig::min_frames`] upright frames were used, the interval `H ± k·σ` (k =
+//! [`HeightConfig::decision_sigmas`]) decides:
+//! - inside one class: that class ([`DecisionBasis::Interval`]);
+//! - across a boundary: among the classes the interval touches, the one with the lowest expected
+//!   RULA grand score for this operator, each class's RULA-versus-stature curve at its handover
+//!   point ([`HandoverRula`], measured on the digital twin) integrated over the stature's normal
+//!   distribution ([`DecisionBasis::ExpectedRula`]); without curves, the most probable class.
 //!
-//! # Class decision
-//! Classes: c1 below 1.68 m, c2 from 1.68 to 1.82 m inclusive, c3 above (thresholds configurable). A
-//! class is decided when at least [`HeightConfig::min_frames`] upright frames were used and the
-//! interval `H ± k·σ` (k = [`HeightConfig::decision_sigmas`]) lies inside one class — and only then:
-//! an interval that straddles a boundary is undecided, however many frames agree (the frames share
-//! the person's proportions and posture, so their agreement says nothing about the model's error; a
-//! fall-back on frame agreement decided operators within 1 cm of a boundary while stating σ ≈ 2.2 cm,
-//! against its own interval). Until then the estimator keeps measuring and says why (with the share
-//! of frames that favour one class, for information). The decision is emitted once, as a
-//! [`HeightDecision`].
+//! Either way a class is chosen only if the statures its trajectory was validated for
+//! ([`HeightConfig::served_m`]) contain the whole interval: no operator is served outside them.
+//! Choosing the neighbouring class for an operator 1 cm from a boundary costs a little comfort, not
+//! safety. The decision states the chosen class's probability (the normal mass of its stature
+//! range) and its expected cost: the expected RULA grand score with it minus with the operator's
+//! true class. The decision is emitted once, as a [`HeightDecision`]; the estimator stays
+//! undecided, and says why, only while too few upright frames were seen or when no class's
+//! validated statures hold the interval.
 
 use std::collections::VecDeque;
 
-use ergocell_anthropometry::{from_heights, EYE_HEIGHT, FOREARM, SHANK, THIGH, TRUNK, UPPER_ARM};
+use ergocell_anthropometry::stature::{StatureModel, ANKLE_TO_EAR, FLOOR_TO_EAR};
+use ergocell_anthropometry::{FOREARM, SHANK, THIGH, TRUNK, UPPER_ARM};
 use ergocell_skeleton::{Landmark, Skeleton3};
 use nalgebra::{Point3, Vector3};
 use serde::{Deserialize, Serialize};
@@ -61,12 +75,10 @@ use serde::{Deserialize, Serialize};
 use crate::angles::UpVector;
 use crate::ErgonomicsError;
 
-/// Ankle-to-eye chain over stature: shank 0.246 + thigh 0.245 + trunk 0.288 + shoulder-to-eye 0.118.
-pub const CHAIN_RATIO: f64 = SHANK + THIGH + TRUNK + from_heights::EYE_ABOVE_SHOULDER;
-/// Assumed relative spread of the eye-height ratio between people.
-pub const EYE_MODEL_REL_SIGMA: f64 = 0.015;
-/// Assumed relative spread of the chain ratio between people.
-pub const CHAIN_MODEL_REL_SIGMA: f64 = 0.025;
+/// The uncertainty (1σ) of the ear landmark's offset from the tragion until a cell is calibrated,
+/// metres: a fifth of an adult ear's height (about 60 mm), so that ±2σ spans the ear's middle 60 %.
+/// A guess, deliberately wide; `ergocell height calibrate` replaces it with a measurement.
+pub const DEFAULT_EAR_OFFSET_SIGMA_M: f64 = 0.012;
 /// Assumed relative spread of a single segment's ratio between people.
 pub const SEGMENT_MODEL_REL_SIGMA: f64 = 0.04;
 
@@ -149,6 +161,26 @@ impl HeightClass {
         }
     }
 
+    /// The three classes, shortest first.
+    pub const ALL: [HeightClass; 3] = [HeightClass::C1, HeightClass::C2, HeightClass::C3];
+
+    const fn index(self) -> usize {
+        match self {
+            HeightClass::C1 => 0,
+            HeightClass::C2 => 1,
+            HeightClass::C3 => 2,
+        }
+    }
+
+    /// The statures of this class, `[lo, hi]` (c1 from 0, c3 to 3 m).
+    pub fn range_m(self, t: &ClassThresholds) -> [f64; 2] {
+        match self {
+            HeightClass::C1 => [0.0, t.c1_below_m],
+            HeightClass::C2 => [t.c1_below_m, t.c2_up_to_m],
+            HeightClass::C3 => [t.c2_up_to_m, 3.0],
+        }
+    }
+
     pub const fn name(self) -> &'static str {
         match self {
             HeightClass::C1 => "c1",
@@ -158,8 +190,148 @@ impl HeightClass {
     }
 }
 
+/// How far above the anatomical tragion the pose estimator puts its ear landmark, along up, and
+/// how well that is known.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct EarOffset {
+    /// Metres; positive = the landmark sits above the tragion (the estimate would read tall).
+    pub offset_m: f64,
+    /// One standard deviation of `offset_m`, metres.
+    pub sigma_m: f64,
+    /// `Some(n)`: measured by `ergocell height calibrate` on `n` sessions; `None`: the default.
+    pub calibrated_sessions: Option<usize>,
+}
+
+impl Default for EarOffset {
+    /// Uncalibrated: 0 ± [`DEFAULT_EAR_OFFSET_SIGMA_M`].
+    fn default() -> Self {
+        Self {
+            offset_m: 0.0,
+            sigma_m: DEFAULT_EAR_OFFSET_SIGMA_M,
+            calibrated_sessions: None,
+        }
+    }
+}
+
+impl EarOffset {
+    /// A measured offset; both numbers finite, σ positive and the offset within ±0.1 m (an ear
+    /// landmark 10 cm from the ear is a mislabelled point or a wrong calibration, not an offset).
+    pub fn calibrated(
+        offset_m: f64,
+        sigma_m: f64,
+        sessions: usize,
+    ) -> Result<Self, ErgonomicsError> {
+        check_range("height.ear_offset_m", offset_m, -0.1, 0.1)?;
+        check_range("height.ear_offset_sigma_m", sigma_m, 1e-6, 0.1)?;
+        Ok(Self {
+            offset_m,
+            sigma_m,
+            calibrated_sessions: Some(sessions),
+        })
+    }
+}
+
+fn check_range(field: &'static str, value: f64, min: f64, max: f64) -> Result<(), ErgonomicsError> {
+    if !value.is_finite() {
+        return Err(ErgonomicsError::NonFinite { field, value });
+    }
+    if !(min..=max).contains(&value) {
+        return Err(ErgonomicsError::OutOfRange {
+            field,
+            value,
+            min,
+            max,
+        });
+    }
+    Ok(())
+}
+
+/// The statures each class's trajectory was validated for, `[min_m, max_m]` (c1, c2, c3): a class
+/// is chosen only for an operator whose whole interval lies inside its range.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ServedStatures {
+    ranges_m: [[f64; 2]; 3],
+}
+
+impl ServedStatures {
+    /// Each range finite, `min < max`, inside 0.5–2.5 m.
+    pub fn new(ranges_m: [[f64; 2]; 3]) -> Result<Self, ErgonomicsError> {
+        for [lo, hi] in ranges_m {
+            check_range("served stature min_m", lo, 0.5, 2.5)?;
+            check_range("served stature max_m", hi, lo, 2.5)?;
+        }
+        Ok(Self { ranges_m })
+    }
+
+    /// The statures `class`'s trajectory serves.
+    pub fn of(&self, class: HeightClass) -> [f64; 2] {
+        self.ranges_m[class.index()]
+    }
+}
+
+/// Each class's expected RULA grand score for an operator of a given stature holding the part at
+/// that class's handover point: curves measured on the digital twin (`ergocell sim handover-rula`),
+/// piecewise linear between the statures, constant beyond the ends.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HandoverRula {
+    /// Increasing statures, metres.
+    pub statures_m: Vec<f64>,
+    /// Mean RULA grand score at each stature, per class.
+    pub c1: Vec<f64>,
+    pub c2: Vec<f64>,
+    pub c3: Vec<f64>,
+}
+
+impl HandoverRula {
+    /// Checks the shape: at least two strictly increasing statures, one finite score in 1..=7 per
+    /// stature and class.
+    pub fn check(&self) -> Result<(), ErgonomicsError> {
+        let n = self.statures_m.len();
+        if n < 2 || !self.statures_m.windows(2).all(|w| w[0] < w[1]) {
+            return Err(ErgonomicsError::HandoverRula(format!(
+                "statures_m must hold at least two increasing statures (got {n})"
+            )));
+        }
+        for h in &self.statures_m {
+            check_range("handover_rula.statures_m", *h, 0.5, 2.5)?;
+        }
+        for (name, v) in [("c1", &self.c1), ("c2", &self.c2), ("c3", &self.c3)] {
+            if v.len() != n {
+                return Err(ErgonomicsError::HandoverRula(format!(
+                    "{name} has {} scores for {n} statures",
+                    v.len()
+                )));
+            }
+            for x in v {
+                check_range("handover_rula score", *x, 1.0, 7.0)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The expected grand score of `class` at `stature_m`.
+    pub fn at(&self, class: HeightClass, stature_m: f64) -> f64 {
+        let v = match class {
+            HeightClass::C1 => &self.c1,
+            HeightClass::C2 => &self.c2,
+            HeightClass::C3 => &self.c3,
+        };
+        let h = &self.statures_m;
+        let i = h.partition_point(|x| *x <= stature_m);
+        match i {
+            0 => v[0],
+            i if i >= h.len() => v[h.len() - 1],
+            i => {
+                let s = (stature_m - h[i - 1]) / (h[i] - h[i - 1]);
+                v[i - 1] + s * (v[i] - v[i - 1])
+            }
+        }
+    }
+}
+
 /// Height estimation settings.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct HeightConfig {
     pub up: UpVector,
     /// Floor height along `up`, metres; `None` = the lowest foot landmark of each frame.
@@ -179,6 +351,14 @@ pub struct HeightConfig {
     pub decision_sigmas: f64,
     /// Upright frames kept (the most recent; default 600).
     pub window_frames: usize,
+    /// The ear landmark's offset from the tragion (default: uncalibrated).
+    pub ear_offset: EarOffset,
+    /// The statures each class's trajectory serves; `None`: every class serves any stature (an
+    /// offline analysis with no robot).
+    pub served_m: Option<ServedStatures>,
+    /// The classes' RULA-versus-stature curves that choose between classes across a boundary;
+    /// `None`: the most probable class.
+    pub handover_rula: Option<HandoverRula>,
 }
 
 impl HeightConfig {
@@ -195,6 +375,9 @@ impl HeightConfig {
             min_frames: 15,
             decision_sigmas: 2.0,
             window_frames: 600,
+            ear_offset: EarOffset::default(),
+            served_m: None,
+            handover_rula: None,
         }
     }
 }
@@ -213,19 +396,47 @@ pub struct EstimatorResult {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HeightEstimate {
     pub height_m: f64,
-    /// One standard deviation.
+    /// One standard deviation: statistical, model and ear offset combined.
     pub uncertainty_m: f64,
+    /// The ear landmark offset's share of `uncertainty_m` and whether it was calibrated.
+    pub ear_offset: EarOffset,
     /// Upright frames used.
     pub frames_used: usize,
     pub estimators: Vec<EstimatorResult>,
 }
 
 /// How a class was decided.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-#[serde(tag = "basis", rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum DecisionBasis {
-    /// `height ± k·σ` lies inside the class (the only rule).
-    Interval { sigmas: f64 },
+    /// `height ± k·σ` lies inside the class.
+    Interval,
+    /// The interval straddles a boundary: the class with the lowest expected RULA grand score.
+    ExpectedRula,
+    /// The interval straddles a boundary and no RULA curves are configured: the most probable class.
+    MostProbable,
+}
+
+impl DecisionBasis {
+    pub const fn name(self) -> &'static str {
+        match self {
+            DecisionBasis::Interval => "interval",
+            DecisionBasis::ExpectedRula => "expected_rula",
+            DecisionBasis::MostProbable => "most_probable",
+        }
+    }
+}
+
+/// One class the decision weighed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ClassOption {
+    pub class: HeightClass,
+    /// The normal mass of the class's statures under the estimate.
+    pub probability: f64,
+    /// The expected RULA grand score with this class's handover (`None` without curves).
+    pub expected_rula: Option<f64>,
+    /// Whether the class's trajectory serves the whole interval.
+    pub served: bool,
 }
 
 /// The class decision event.
@@ -235,6 +446,17 @@ pub struct HeightDecision {
     pub class: HeightClass,
     pub estimate: HeightEstimate,
     pub basis: DecisionBasis,
+    /// Half-width of the interval in σ.
+    pub sigmas: f64,
+    /// `estimate ± sigmas · σ`: the statures the chosen class's trajectory must serve.
+    pub interval_m: [f64; 2],
+    /// The probability that `class` is the operator's true class.
+    pub probability: f64,
+    /// The expected RULA grand score with `class` minus with the operator's true class (≥ 0 up to
+    /// the curves' noise; 0 when the interval lies in one class); `None` without curves.
+    pub expected_rula_cost: Option<f64>,
+    /// Every class the interval touches, with its probability and expected score.
+    pub options: Vec<ClassOption>,
 }
 
 /// Where the estimator is.
@@ -254,17 +476,54 @@ pub enum HeightStatus {
 /// Per-frame estimates of one upright frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct FrameEstimate {
-    eye: Option<f64>,
+    ear: Option<f64>,
     chain: Option<f64>,
 }
 
 impl FrameEstimate {
     fn combined(&self) -> Option<f64> {
-        match (self.eye, self.chain) {
+        match (self.ear, self.chain) {
             (Some(a), Some(b)) => Some(0.5 * (a + b)),
             (a, b) => a.or(b),
         }
     }
+}
+
+/// The standard normal cumulative distribution (Abramowitz & Stegun 26.2.17 through erf 7.1.26,
+/// absolute error below 1.5e-7).
+fn normal_cdf(z: f64) -> f64 {
+    let x = z.abs() / std::f64::consts::SQRT_2;
+    let t = 1.0 / (1.0 + 0.327_591_1 * x);
+    let poly = t
+        * (0.254_829_592
+            + t * (-0.284_496_736
+                + t * (1.421_413_741 + t * (-1.453_152_027 + t * 1.061_405_429))));
+    let erf = 1.0 - poly * (-x * x).exp();
+    if z >= 0.0 {
+        0.5 * (1.0 + erf)
+    } else {
+        0.5 * (1.0 - erf)
+    }
+}
+
+/// The probability that a normal `(mean, sigma)` stature lies in `[lo, hi]`.
+fn mass(mean: f64, sigma: f64, [lo, hi]: [f64; 2]) -> f64 {
+    (normal_cdf((hi - mean) / sigma) - normal_cdf((lo - mean) / sigma)).clamp(0.0, 1.0)
+}
+
+/// Statures and normal weights over `mean ± 4σ` (161 points), for expectations.
+fn normal_grid(mean: f64, sigma: f64) -> impl Iterator<Item = (f64, f64)> {
+    const N: usize = 161;
+    let norm: f64 = (0..N)
+        .map(|i| {
+            let z = -4.0 + 8.0 * i as f64 / (N - 1) as f64;
+            (-0.5 * z * z).exp()
+        })
+        .sum();
+    (0..N).map(move |i| {
+        let z = -4.0 + 8.0 * i as f64 / (N - 1) as f64;
+        (mean + z * sigma, (-0.5 * z * z).exp() / norm)
+    })
 }
 
 /// Statures a person can have, metres: a per-frame estimate outside is not used (it is a unit or
@@ -431,11 +690,12 @@ impl HeightEstimator {
 
     fn frame_estimate(&self, s: &Skeleton3) -> FrameEstimate {
         let up = &self.config.up;
-        let eyes: Vec<Point3<f64>> = [Landmark::LeftEye, Landmark::RightEye]
+        let offset = self.config.ear_offset.offset_m;
+        let ears: Vec<Point3<f64>> = [Landmark::LeftEar, Landmark::RightEar]
             .iter()
             .filter_map(|l| s.position(*l))
             .collect();
-        let eye_mid = match eyes.as_slice() {
+        let ear_mid = match ears.as_slice() {
             [a, b] => Some(mid(*a, *b)),
             [a] => Some(*a),
             _ => None,
@@ -454,10 +714,11 @@ impl HeightEstimator {
             .map(|p| up.height_of(&p))
             .min_by(f64::total_cmp)
         });
-        let eye = eye_mid
+        let ear = ear_mid
             .zip(floor)
-            .map(|(e, f)| (up.height_of(&e) - f) / EYE_HEIGHT)
-            .filter(|h| *h > 0.0);
+            .map(|(e, f)| up.height_of(&e) - f - offset)
+            .filter(|span| *span > 0.0)
+            .map(|span| FLOOR_TO_EAR.stature_m(span));
 
         let shank: Vec<f64> = [
             (Landmark::LeftKnee, Landmark::LeftAnkle),
@@ -484,11 +745,11 @@ impl HeightEstimator {
             );
             let trunk = shoulders - hips;
             let t = trunk / trunk.norm().max(1e-9);
-            let head = (eye_mid? - shoulders).dot(&t);
-            let total = mean_of(&shank)? + mean_of(&thigh)? + trunk.norm() + head;
-            Some(total / CHAIN_RATIO).filter(|h| *h > 0.0)
+            let head = (ear_mid? - shoulders).dot(&t);
+            let span = mean_of(&shank)? + mean_of(&thigh)? + trunk.norm() + head - offset;
+            (span > 0.0).then(|| ANKLE_TO_EAR.stature_m(span))
         })();
-        FrameEstimate { eye, chain }
+        FrameEstimate { ear, chain }
     }
 
     /// Feeds one frame. Returns the class decision the first time it is made.
@@ -519,37 +780,51 @@ impl HeightEstimator {
 
     /// The current estimate over the upright frames of the window.
     pub fn estimate(&self) -> Option<HeightEstimate> {
-        let eye: Vec<f64> = self.window.iter().filter_map(|e| e.eye).collect();
+        let ear: Vec<f64> = self.window.iter().filter_map(|e| e.ear).collect();
         let chain: Vec<f64> = self.window.iter().filter_map(|e| e.chain).collect();
+        let offset = self.config.ear_offset;
         let mut estimators = Vec::new();
-        for (name, values, rel) in [
-            ("floor_to_eye", &eye, EYE_MODEL_REL_SIGMA),
-            ("segment_chain", &chain, CHAIN_MODEL_REL_SIGMA),
+        // (median, statistical standard error, model residual) per estimator present.
+        let mut parts: Vec<(f64, f64, f64)> = Vec::new();
+        for (name, values, model) in [
+            ("floor_to_ear", &ear, &FLOOR_TO_EAR),
+            ("ankle_to_ear", &chain, &ANKLE_TO_EAR),
         ] {
             if let Some((h, se)) = robust_location(values) {
+                let StatureModel {
+                    residual_sigma_m, ..
+                } = *model;
                 estimators.push(EstimatorResult {
                     name,
                     height_m: h,
-                    sigma_m: se.hypot(rel * h),
+                    sigma_m: se.hypot(residual_sigma_m).hypot(offset.sigma_m),
                     frames: values.len(),
                 });
+                parts.push((h, se, residual_sigma_m));
             }
         }
-        if estimators.is_empty() {
-            return None;
-        }
-        let weights: Vec<f64> = estimators
+        let (_, _, model_sigma_m) = *parts.first()?;
+        // Inverse-variance weights on the statistical errors only (floored at 0.1 mm: noiseless
+        // frames have a MAD of 0); the model and the offset are shared by both and added once.
+        let weights: Vec<f64> = parts
             .iter()
-            .map(|e| 1.0 / e.sigma_m.max(1e-6).powi(2))
+            .map(|(_, se, _)| 1.0 / se.max(1e-4).powi(2))
             .collect();
         let wsum: f64 = weights.iter().sum();
-        let height_m = estimators
+        let height_m = parts
             .iter()
             .zip(&weights)
-            .map(|(e, w)| e.height_m * w)
+            .map(|((h, _, _), w)| h * w)
             .sum::<f64>()
             / wsum;
-        let mut uncertainty_m = 1.0 / wsum.sqrt();
+        let se = parts
+            .iter()
+            .zip(&weights)
+            .map(|((_, se, _), w)| (w * se).powi(2))
+            .sum::<f64>()
+            .sqrt()
+            / wsum;
+        let mut uncertainty_m = se.hypot(model_sigma_m).hypot(offset.sigma_m);
         if let [a, b] = estimators.as_slice() {
             let spread = (a.height_m - b.height_m).abs();
             if spread > a.sigma_m.hypot(b.sigma_m) {
@@ -559,46 +834,103 @@ impl HeightEstimator {
         Some(HeightEstimate {
             height_m,
             uncertainty_m,
+            ear_offset: offset,
             frames_used: self.window.len(),
             estimators,
         })
     }
 
-    fn try_decide(&self, stamp_nanos: i64) -> Option<HeightDecision> {
+    /// The class for `estimate` (see the module docs), or why none can be chosen.
+    pub fn choose(
+        &self,
+        estimate: HeightEstimate,
+        stamp_nanos: i64,
+    ) -> Result<HeightDecision, String> {
         let c = &self.config;
-        if self.window.len() < c.min_frames {
-            return None;
-        }
-        let estimate = self.estimate()?;
         let t = &c.thresholds;
         let k = c.decision_sigmas;
-        let lo = HeightClass::of(estimate.height_m - k * estimate.uncertainty_m, t);
-        let hi = HeightClass::of(estimate.height_m + k * estimate.uncertainty_m, t);
-        // A straddling interval is undecided: the session's safe handling takes over.
-        (lo == hi).then_some(HeightDecision {
+        let (h, sigma) = (estimate.height_m, estimate.uncertainty_m.max(1e-6));
+        let interval_m = [h - k * sigma, h + k * sigma];
+        let serves = |class: HeightClass| {
+            c.served_m.is_none_or(|s| {
+                let [lo, hi] = s.of(class);
+                lo <= interval_m[0] && interval_m[1] <= hi
+            })
+        };
+        let expected = |class: HeightClass| {
+            c.handover_rula.as_ref().map(|curves| {
+                normal_grid(h, sigma)
+                    .map(|(x, w)| w * curves.at(class, x))
+                    .sum::<f64>()
+            })
+        };
+        // Every class the interval touches.
+        let options: Vec<ClassOption> = HeightClass::ALL
+            .into_iter()
+            .filter(|class| {
+                let [lo, hi] = class.range_m(t);
+                interval_m[0] <= hi && lo <= interval_m[1]
+            })
+            .map(|class| ClassOption {
+                class,
+                probability: mass(h, sigma, class.range_m(t)),
+                expected_rula: expected(class),
+                served: serves(class),
+            })
+            .collect();
+        let basis = match options.as_slice() {
+            [_] => DecisionBasis::Interval,
+            _ if c.handover_rula.is_some() => DecisionBasis::ExpectedRula,
+            _ => DecisionBasis::MostProbable,
+        };
+        let chosen = options
+            .iter()
+            .filter(|o| o.served)
+            .min_by(|a, b| match basis {
+                DecisionBasis::ExpectedRula => a
+                    .expected_rula
+                    .unwrap_or(f64::INFINITY)
+                    .total_cmp(&b.expected_rula.unwrap_or(f64::INFINITY))
+                    .then(b.probability.total_cmp(&a.probability)),
+                _ => b.probability.total_cmp(&a.probability),
+            })
+            .copied();
+        let Some(chosen) = chosen else {
+            let names: Vec<&str> = options.iter().map(|o| o.class.name()).collect();
+            return Err(format!(
+                "{h:.3} ± {:.3} m ({k}σ) reaches beyond the statures that class {}'s trajectory \
+                 was validated for: no class serves this operator",
+                k * sigma,
+                names.join(" or "),
+            ));
+        };
+        // Expected cost: the chosen class's score minus the true class's, over the stature's
+        // distribution.
+        let expected_rula_cost = c.handover_rula.as_ref().map(|curves| {
+            normal_grid(h, sigma)
+                .map(|(x, w)| {
+                    w * (curves.at(chosen.class, x) - curves.at(HeightClass::of(x, t), x))
+                })
+                .sum::<f64>()
+        });
+        Ok(HeightDecision {
             stamp_nanos,
-            class: lo,
+            class: chosen.class,
             estimate,
-            basis: DecisionBasis::Interval { sigmas: k },
+            basis,
+            sigmas: k,
+            interval_m,
+            probability: chosen.probability,
+            expected_rula_cost,
+            options,
         })
     }
 
-    /// The most common class among per-frame estimates and its share.
-    fn agreement(&self) -> Option<(HeightClass, f64)> {
-        let t = &self.config.thresholds;
-        let classes: Vec<HeightClass> = self
-            .window
-            .iter()
-            .filter_map(FrameEstimate::combined)
-            .map(|h| HeightClass::of(h, t))
-            .collect();
-        let n = classes.len();
-        [HeightClass::C1, HeightClass::C2, HeightClass::C3]
-            .into_iter()
-            .map(|c| (c, classes.iter().filter(|x| **x == c).count()))
-            .max_by_key(|(_, k)| *k)
-            .filter(|_| n > 0)
-            .map(|(c, k)| (c, k as f64 / n as f64))
+    fn try_decide(&self, stamp_nanos: i64) -> Option<HeightDecision> {
+        if self.window.len() < self.config.min_frames {
+            return None;
+        }
+        self.choose(self.estimate()?, stamp_nanos).ok()
     }
 
     /// Where the estimator stands.
@@ -623,17 +955,11 @@ impl HeightEstimator {
                 c.min_frames
             )
         } else if let Some(e) = &estimate {
-            let k = c.decision_sigmas;
-            let agree = self.agreement().map_or(String::new(), |(cl, f)| {
-                format!("; {:.0}% of frames say {}", f * 100.0, cl.name())
-            });
-            format!(
-                "{:.3} ± {:.3} m ({k}σ) straddles a class boundary ({:.2} / {:.2} m){agree}: undecided",
-                e.height_m,
-                k * e.uncertainty_m,
-                c.thresholds.c1_below_m,
-                c.thresholds.c2_up_to_m,
-            )
+            match self.choose(e.clone(), 0) {
+                Err(why) => why,
+                // Decided on the next frame (the window has what it needs).
+                Ok(d) => format!("class {} on the next frame", d.class.name()),
+            }
         } else {
             "no usable estimate".to_owned()
         };

@@ -4,7 +4,9 @@
 //! A [`PoseSpec`] builds the 33 BlazePose landmarks of a person of a given stature from the Drillis &
 //! Contini (1966) segment ratios (tabulated by Winter; the workspace's one table,
 //! [`ergocell_anthropometry`]), in a body frame with x to the person's right, y forwards and z up,
-//! feet on the floor at z = 0; then maps it to the world with an arbitrary rotation and
+//! feet on the floor at z = 0 — except the ears, which stand where ANSUR II's stature model
+//! ([`ergocell_anthropometry::stature::FLOOR_TO_EAR`]) puts the tragion of a person of that
+//! stature, so the height estimator's ear models see the person they were fitted on; then maps it to the world with an arbitrary rotation and
 //! translation. The world "up" of the pose is [`PoseSpec::up`]. Every joint angle is applied as a
 //! rotation, so the angles the extractor should recover are exactly the ones set here (see
 //! [`crate::angles`] for the definitions).
@@ -110,9 +112,10 @@ impl PoseSpec {
 
     /// The 33 landmark positions in the world frame.
     pub fn points(&self) -> [Point3<f64>; LANDMARK_COUNT] {
+        use ergocell_anthropometry::stature::FLOOR_TO_EAR;
         use ergocell_anthropometry::{
-            from_heights, ANKLE_HEIGHT, FOREARM, HAND, HIP_WIDTH, SHANK, SHOULDER_WIDTH, THIGH,
-            TRUNK, UPPER_ARM,
+            from_heights, ANKLE_HEIGHT, FOREARM, HAND, HIP_WIDTH, SHANK, SHOULDER_HEIGHT,
+            SHOULDER_WIDTH, THIGH, TRUNK, UPPER_ARM,
         };
         use Landmark as L;
         let h = self.stature_m;
@@ -186,14 +189,10 @@ impl PoseSpec {
             L::RightEyeOuter,
             head(Vector3::new(0.026 * h, 0.042 * h, eye_z)),
         );
-        set(
-            L::LeftEar,
-            head(Vector3::new(-0.043 * h, 0.0, eye_z - 0.005 * h)),
-        );
-        set(
-            L::RightEar,
-            head(Vector3::new(0.043 * h, 0.0, eye_z - 0.005 * h)),
-        );
+        // The ears where ANSUR II's stature model puts a person of this stature's tragion.
+        let ear_z = FLOOR_TO_EAR.span_m(h) - SHOULDER_HEIGHT * h;
+        set(L::LeftEar, head(Vector3::new(-0.043 * h, 0.0, ear_z)));
+        set(L::RightEar, head(Vector3::new(0.043 * h, 0.0, ear_z)));
         set(
             L::MouthLeft,
             head(Vector3::new(-0.014 * h, 0.050 * h, eye_z - 0.040 * h)),

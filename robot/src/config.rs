@@ -208,12 +208,30 @@ impl CellConfig {
     }
 }
 
-/// Stature bounds (m) of the operators a class serves. The open-ended classes get explicit bounds.
+/// Stature bounds (m) of a class. `min_m..=max_m` is the class itself, for which the handover
+/// point is derived (the grasp band); `served_min_m..=served_max_m`, wider, is what the trajectory
+/// is validated and served for (the body envelope of the separation check covers it): the height
+/// decision may choose a neighbouring class for an operator near a boundary, and this is how far it
+/// may reach. Left out, the served range is the class's own.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct StatureBounds {
     pub min_m: f64,
     pub max_m: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub served_min_m: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub served_max_m: Option<f64>,
+}
+
+impl StatureBounds {
+    /// The statures the trajectory is validated and served for, `(min_m, max_m)`.
+    pub fn served_m(&self) -> (f64, f64) {
+        (
+            self.served_min_m.unwrap_or(self.min_m),
+            self.served_max_m.unwrap_or(self.max_m),
+        )
+    }
 }
 
 /// The handover point in the station frame and the direction of the final approach.
@@ -326,6 +344,20 @@ impl TrajectorySpec {
         {
             return config_err(&format!(
                 "stature bounds must satisfy 1.0 < min_m < max_m < 2.5 (got {} .. {})",
+                s.min_m, s.max_m
+            ));
+        }
+        let (lo, hi) = s.served_m();
+        if !(lo.is_finite()
+            && hi.is_finite()
+            && 1.0 < lo
+            && lo <= s.min_m
+            && s.max_m <= hi
+            && hi < 2.5)
+        {
+            return config_err(&format!(
+                "served statures must contain the class's: 1.0 < served_min_m <= min_m < max_m <= \
+                 served_max_m < 2.5 (got served {lo} .. {hi}, class {} .. {})",
                 s.min_m, s.max_m
             ));
         }

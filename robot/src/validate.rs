@@ -347,6 +347,8 @@ pub struct ValidationReport {
     pub reasons: Vec<String>,
     pub robot: String,
     pub stature_m: [f64; 2],
+    /// The statures the trajectory is validated and served for (the body envelope's).
+    pub served_stature_m: [f64; 2],
     pub tool: String,
     pub handover: HandoverCheck,
     pub joints: Vec<JointMargins>,
@@ -466,7 +468,8 @@ fn body_capsules(
 ) -> Vec<(&'static str, Point3<f64>, Point3<f64>, f64)> {
     use anthropometry::{CHIN_HEIGHT, HIP_HEIGHT, SHOULDER_HEIGHT};
     let T_cell_station = cell.T_cell_station();
-    let (h_min, h_max) = (spec.stature.min_m, spec.stature.max_m);
+    // Every operator the trajectory may serve, not only the class's own.
+    let (h_min, h_max) = spec.stature.served_m();
     let at = |z: f64| T_cell_station * Point3::new(0.0, 0.0, z);
     let r_head = spec.envelope.head_radius_m;
     let head_lo = CHIN_HEIGHT * h_min + r_head;
@@ -610,6 +613,10 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
         reasons,
         robot: model.name().to_owned(),
         stature_m: [spec.stature.min_m, spec.stature.max_m],
+        served_stature_m: {
+            let (lo, hi) = spec.stature.served_m();
+            [lo, hi]
+        },
         tool: spec.tool.name.clone(),
         handover: handover.check,
         joints: joints.value,
@@ -1392,8 +1399,13 @@ impl fmt::Display for ValidationReport {
         writeln!(f, "  {}", self.description)?;
         writeln!(
             f,
-            "  robot {}; tool {}; stature {:.2}–{:.2} m",
-            self.robot, self.tool, self.stature_m[0], self.stature_m[1]
+            "  robot {}; tool {}; stature {:.2}–{:.2} m (served and checked for {:.2}–{:.2} m)",
+            self.robot,
+            self.tool,
+            self.stature_m[0],
+            self.stature_m[1],
+            self.served_stature_m[0],
+            self.served_stature_m[1]
         )?;
         for r in &self.reasons {
             writeln!(f, "  REJECTED because: {r}")?;

@@ -11,7 +11,8 @@
 //! stacked on the ankle height, so standing upright the model puts the eyes at 0.936 H and the
 //! shoulder joints at 0.818 H (to rounding), which is what the ergonomics height estimator inverts.
 //! Face offsets (nose, eyes, ears, mouth) follow the same layout as `ergocell_ergonomics::pose`, so
-//! both crates agree on where BlazePose puts them.
+//! both crates agree on where BlazePose puts them; the ears stand where ANSUR II's stature model
+//! ([`ergocell_anthropometry::stature::FLOOR_TO_EAR`]) puts the tragion of a person of that stature.
 //!
 //! # Frames
 //! The body frame has its origin on the floor below the hip midpoint, x forward (where the operator
@@ -162,6 +163,9 @@ impl Operator {
         let r_head = ry(q.neck_flexion_rad) * rz(q.neck_yaw_rad);
         let eye_z = from_heights::EYE_ABOVE_SHOULDER * h;
         let head = |v: Vector3<f64>| trunk(neck + r_head * v);
+        // The ears where ANSUR II's stature model puts a person of this stature's tragion.
+        let ear_z =
+            ergocell_anthropometry::stature::FLOOR_TO_EAR.span_m(h) - r::SHOULDER_HEIGHT * h;
         set(
             L::Nose,
             head(Vector3::new(0.055 * h, 0.0, eye_z - 0.018 * h)),
@@ -187,10 +191,7 @@ impl Operator {
             set(inner, head(Vector3::new(0.045 * h, sy * 0.010 * h, eye_z)));
             set(eye, head(Vector3::new(0.045 * h, sy * 0.018 * h, eye_z)));
             set(outer, head(Vector3::new(0.042 * h, sy * 0.026 * h, eye_z)));
-            set(
-                ear,
-                head(Vector3::new(0.0, sy * 0.043 * h, eye_z - 0.005 * h)),
-            );
+            set(ear, head(Vector3::new(0.0, sy * 0.043 * h, ear_z)));
             set(
                 mouth,
                 head(Vector3::new(0.050 * h, sy * 0.014 * h, eye_z - 0.040 * h)),

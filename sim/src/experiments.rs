@@ -31,6 +31,7 @@ use std::collections::BTreeMap;
 
 use ergocell_cell::{Pipeline, PipelineConfig, TrackedFrame};
 use ergocell_ergonomics::assess::BodyRegion;
+use ergocell_ergonomics::height::DecisionBasis;
 use ergocell_ergonomics::rula::action_level;
 use ergocell_ergonomics::{
     AssessmentConfig, FrameAssessment, HeightClass, HeightConfig, HeightStatus, RulaAssessor,
@@ -634,6 +635,11 @@ pub struct HeightRow {
     pub true_class: HeightClass,
     /// `None` = undecided.
     pub decided_class: Option<HeightClass>,
+    /// How the class was decided: `interval` (the ±kσ interval inside one class: a wrong class
+    /// here is confidently wrong) or across a boundary (a stated probability below certainty).
+    pub basis: Option<DecisionBasis>,
+    /// The decision's stated probability that its class is the true one.
+    pub probability: Option<f64>,
 }
 
 /// Result of [`height`].
@@ -645,8 +651,11 @@ pub struct HeightResult {
     pub class_accuracy: f64,
     /// The same over operators more than 2 cm from a class boundary.
     pub class_accuracy_beyond_2cm: f64,
-    /// Operators given a wrong class.
+    /// Operators given a wrong class although their whole interval lay inside it.
     pub confidently_wrong: usize,
+    /// Operators given the neighbouring class across a boundary (stated probability below
+    /// certainty).
+    pub wrong_across_boundary: usize,
     pub undecided: usize,
     /// The half-width of the stated interval in σ (the estimator's `decision_sigmas`).
     pub interval_sigmas: f64,
@@ -680,9 +689,14 @@ pub fn height(
         let ticks = simulate(setup, i, h, &script)?;
         // The height as the session decides it: the pipeline's first decision, which is final.
         let pipeline = run_pipeline(setup, &ticks, |_, _| Ok(()))?;
-        let (estimate, decided_class) = match pipeline.height_status() {
-            HeightStatus::Decided(d) => (Some(d.estimate), Some(d.class)),
-            HeightStatus::Measuring { estimate, .. } => (estimate, None),
+        let (estimate, decided_class, basis, probability) = match pipeline.height_status() {
+            HeightStatus::Decided(d) => (
+                Some(d.estimate),
+                Some(d.class),
+                Some(d.basis),
+                Some(round6(d.probability)),
+            ),
+            HeightStatus::Measuring { estimate, .. } => (estimate, None, None, None),
         };
         let estimated_m = estimate.as_ref().map(|e| e.height_m);
         let uncertainty_m = estimate.as_ref().map(|e| round6(e.uncertainty_m));
@@ -692,6 +706,8 @@ pub fn height(
             uncertainty_m,
             true_class: HeightClass::of(h, &t),
             decided_class,
+            basis,
+            probability,
         });
         progress(i + 1, count);
     }
@@ -729,7 +745,17 @@ pub fn height(
         ),
         confidently_wrong: rows
             .iter()
-            .filter(|r| r.decided_class.is_some_and(|c| c != r.true_class))
+            .filter(|r| {
+                r.decided_class.is_some_and(|c| c != r.true_class)
+                    && r.basis == Some(DecisionBasis::Interval)
+            })
+            .count(),
+        wrong_across_boundary: rows
+            .iter()
+            .filter(|r| {
+                r.decided_class.is_some_and(|c| c != r.true_class)
+                    && r.basis != Some(DecisionBasis::Interval)
+            })
             .count(),
         undecided: rows.iter().filter(|r| r.decided_class.is_none()).count(),
         operators: rows,

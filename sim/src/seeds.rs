@@ -278,8 +278,11 @@ pub struct HeightSeeds {
     pub undecided: Option<Spread>,
     pub coverage: Option<Spread>,
     pub coverage_1sigma: Option<Spread>,
-    /// Operators given a wrong class, over every seed's whole population.
+    /// Operators given a wrong class although their whole interval lay inside it, over every
+    /// seed's whole population.
     pub confidently_wrong_total: usize,
+    /// Operators given the neighbouring class across a boundary, over every seed.
+    pub wrong_across_boundary_total: usize,
     pub operators_total: usize,
     pub goals: Vec<Goal>,
 }
@@ -292,7 +295,8 @@ pub const NOMINAL_2SIGMA: f64 = 0.9545;
 /// Summarises height runs, one per seed.
 pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
     let pick = |f: &dyn Fn(&HeightResult) -> f64| runs.iter().map(f).collect::<Vec<f64>>();
-    let goals = vec![
+    let goals =
+        vec![
         Goal::judge("MAE ≤ 1.5 cm", seeds, |i| {
             let m = runs[i].mae_m;
             (m.is_nan() || m > HEIGHT_MAE_GOAL_M).then(|| format!("MAE {:.2} cm", m * 100.0))
@@ -305,12 +309,19 @@ pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
                 (a < 1.0).then(|| format!("{:.1} % right", a * 100.0))
             },
         ),
+        Goal::judge("every operator standing upright is served (0 undecided)", seeds, |i| {
+            let n = runs[i].undecided;
+            (n > 0).then(|| format!("{n} undecided"))
+        }),
         Goal::judge("no operator confidently in the wrong class", seeds, |i| {
             let r = &runs[i];
             let wrong: Vec<String> = r
                 .operators
                 .iter()
-                .filter(|o| o.decided_class.is_some_and(|c| c != o.true_class))
+                .filter(|o| {
+                    o.decided_class.is_some_and(|c| c != o.true_class)
+                        && o.basis == Some(ergocell_ergonomics::height::DecisionBasis::Interval)
+                })
                 .map(|o| {
                     format!(
                         "{:.3} m {} → {} (estimated {})",
@@ -344,6 +355,7 @@ pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
         coverage: spread(seeds, &pick(&|r| r.coverage), Worse::Lower),
         coverage_1sigma: spread(seeds, &pick(&|r| r.coverage_1sigma), Worse::Lower),
         confidently_wrong_total: runs.iter().map(|r| r.confidently_wrong).sum(),
+        wrong_across_boundary_total: runs.iter().map(|r| r.wrong_across_boundary).sum(),
         operators_total: runs.iter().map(|r| r.operators.len()).sum(),
         goals,
     }

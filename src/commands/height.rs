@@ -47,6 +47,17 @@ fn print_estimate(e: &HeightEstimate) {
         "stature: {:.3} m ± {:.3} m (1σ), from {} upright frames",
         e.height_m, e.uncertainty_m, e.frames_used
     );
+    let o = &e.ear_offset;
+    match o.calibrated_sessions {
+        Some(n) => println!(
+            "  ear landmark offset {:+.4} ± {:.4} m, calibrated on {n} sessions",
+            o.offset_m, o.sigma_m
+        ),
+        None => println!(
+            "  ear landmark offset uncalibrated: {:+.4} ± {:.4} m assumed (`ergocell height calibrate` measures it)",
+            o.offset_m, o.sigma_m
+        ),
+    }
     for x in &e.estimators {
         println!(
             "  {:<14} {:.3} m ± {:.3} m ({} frames)",
@@ -89,13 +100,43 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     match &status {
         HeightStatus::Decided(d) => {
             print_estimate(&d.estimate);
-            let DecisionBasis::Interval { sigmas } = d.basis;
-            let basis = format!("the ±{sigmas}σ interval lies inside the class");
+            let [lo, hi] = d.interval_m;
+            let basis = match d.basis {
+                DecisionBasis::Interval => format!(
+                    "the ±{}σ interval {lo:.3}–{hi:.3} m lies inside the class",
+                    d.sigmas
+                ),
+                DecisionBasis::ExpectedRula => format!(
+                    "the ±{}σ interval {lo:.3}–{hi:.3} m straddles a boundary: the lowest expected RULA",
+                    d.sigmas
+                ),
+                DecisionBasis::MostProbable => format!(
+                    "the ±{}σ interval {lo:.3}–{hi:.3} m straddles a boundary: the most probable class",
+                    d.sigmas
+                ),
+            };
             println!(
                 "class: {} (decided at frame {}: {basis})",
                 d.class.name(),
                 decided_at.map_or_else(|| "?".to_owned(), |i| i.to_string())
             );
+            for o in &d.options {
+                println!(
+                    "  {}: probability {:.3}{}{}",
+                    o.class.name(),
+                    o.probability,
+                    o.expected_rula
+                        .map_or(String::new(), |r| format!(", expected RULA {r:.2}")),
+                    if o.served {
+                        ""
+                    } else {
+                        ", its trajectory does not serve this interval"
+                    }
+                );
+            }
+            if let Some(cost) = d.expected_rula_cost {
+                println!("expected cost against the true class: {cost:+.3} RULA grand score");
+            }
             if let Some(now) = estimator.estimate() {
                 if now.frames_used > d.estimate.frames_used {
                     println!(

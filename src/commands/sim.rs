@@ -626,8 +626,8 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
                     spread_text(sum.coverage_1sigma.as_ref(), 1.0, 3)
                 );
                 println!(
-                    "  confidently wrong {} of {} operators",
-                    sum.confidently_wrong_total, sum.operators_total
+                    "  confidently wrong {} of {} operators; the neighbouring class across a boundary: {}",
+                    sum.confidently_wrong_total, sum.operators_total, sum.wrong_across_boundary_total
                 );
                 print_goals(&sum.goals);
             }
@@ -858,13 +858,14 @@ fn print_adaptation(r: &Adaptation) {
 fn print_height(r: &HeightResult) {
     println!(
         "{} operators: MAE {:.2} cm; class accuracy {:.1}% overall, {:.1}% beyond 2 cm of a boundary; \
-         {} undecided, {} confidently wrong",
+         {} undecided, {} confidently wrong, {} given the neighbouring class across a boundary",
         r.operators.len(),
         r.mae_m * 100.0,
         r.class_accuracy * 100.0,
         r.class_accuracy_beyond_2cm * 100.0,
         r.undecided,
-        r.confidently_wrong
+        r.confidently_wrong,
+        r.wrong_across_boundary
     );
 }
 

@@ -364,7 +364,7 @@ impl TrajectoryProvider for FileTrajectories {
         let path = self.layout.spec(class);
         let spec = TrajectorySpec::from_toml_str(&self.read(&path)?)
             .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
-        Ok((spec.stature.min_m, spec.stature.max_m))
+        Ok(spec.stature.served_m())
     }
 
     fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {

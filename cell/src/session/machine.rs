@@ -1,7 +1,8 @@
 //! The session state machine (see the module docs of [`crate::session`]).
 
+use ergocell_ergonomics::height::ServedStatures;
 use ergocell_ergonomics::warnings::WarningKind;
-use ergocell_ergonomics::{HeightDecision, HeightStatus, UpVector};
+use ergocell_ergonomics::{HeightClass, HeightDecision, HeightStatus, UpVector};
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{SessionLock, TrajectoryClass};
 use ergocell_skeleton::{Landmark, Skeleton3};
@@ -116,11 +117,20 @@ impl SessionMachine {
     pub fn new(
         rig: CameraRig,
         config: SessionConfig,
-        pipeline: PipelineConfig,
-        provider: Box<dyn TrajectoryProvider>,
+        mut pipeline: PipelineConfig,
+        mut provider: Box<dyn TrajectoryProvider>,
     ) -> Result<Self, CellError> {
         // RULA and the height need the world's vertical: a rig without one cannot carry a session.
         rig_up(&rig)?;
+        // The height decision chooses only a class whose trajectory serves the operator's whole
+        // interval; a class whose bounds cannot be read serves no one (and `lock_trajectory` says
+        // why if it is ever chosen).
+        let served = HeightClass::ALL.map(|class| {
+            provider
+                .stature_bounds_m(trajectory_class(class))
+                .map_or([0.5, 0.5], |(lo, hi)| [lo, hi])
+        });
+        pipeline.height.served_m = Some(ServedStatures::new(served)?);
         let pairs = rig.pairs().iter().map(|p| (p.left, p.right)).collect();
         let cameras = rig
             .cameras()
@@ -455,12 +465,19 @@ impl SessionMachine {
             height_m: e.height_m,
             uncertainty_m: e.uncertainty_m,
             class: decision.class,
+            basis: decision.basis,
+            probability: decision.probability,
+            expected_rula_cost: decision.expected_rula_cost,
         });
         let reason = format!(
-            "stature {:.3} ± {:.3} m → class {}",
+            "stature {:.3} ± {:.3} m → class {} (probability {:.2}{})",
             e.height_m,
             e.uncertainty_m,
-            decision.class.name()
+            decision.class.name(),
+            decision.probability,
+            decision
+                .expected_rula_cost
+                .map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
         );
         self.decision = Some(decision);
         self.transition(now_nanos, SessionState::ClassDecided, &reason, events);
@@ -708,16 +725,16 @@ impl SessionMachine {
             return;
         };
         let class = trajectory_class(decision.class);
-        let height_m = decision.estimate.height_m;
-        // A class's trajectory suits the statures it was derived and validated for; the open-ended
-        // classes (c1, c3) have explicit bounds. Outside them the robot does not move.
+        let [lo_m, hi_m] = decision.interval_m;
+        // A class's trajectory suits the statures it was validated and is served for: the
+        // operator's whole interval must lie inside them. Outside, the robot does not move.
         match self.provider.stature_bounds_m(class) {
-            Ok((min_m, max_m)) if (min_m..=max_m).contains(&height_m) => {}
+            Ok((min_m, max_m)) if min_m <= lo_m && hi_m <= max_m => {}
             Ok((min_m, max_m)) => {
                 let why = format!(
-                    "operator stature {height_m:.3} m is outside the statures class {class}'s trajectory \
-                     was validated for ({min_m:.2}–{max_m:.2} m): the robot does not move; a trajectory for \
-                     this stature must be derived, validated and approved first"
+                    "operator stature {lo_m:.3}–{hi_m:.3} m reaches outside the statures class {class}'s \
+                     trajectory was validated for ({min_m:.2}–{max_m:.2} m): the robot does not move; a \
+                     trajectory for this stature must be derived, validated and approved first"
                 );
                 self.abort(now_nanos, robot, &why, events);
                 return;

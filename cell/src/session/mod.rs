@@ -25,6 +25,7 @@ mod machine;
 
 pub use machine::{SessionMachine, SessionSummary};
 
+use ergocell_ergonomics::height::DecisionBasis;
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
 use ergocell_perception::View2;
 use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
@@ -132,6 +133,13 @@ pub enum SessionEvent {
         height_m: f64,
         uncertainty_m: f64,
         class: HeightClass,
+        /// How it was chosen: inside one class, or across a boundary.
+        basis: DecisionBasis,
+        /// The probability that `class` is the operator's true class.
+        probability: f64,
+        /// Expected RULA grand score with `class` minus with the true class (`None` without the
+        /// classes' RULA curves).
+        expected_rula_cost: Option<f64>,
     },
     TrajectoryLocked {
         stamp_nanos: i64,
@@ -254,8 +262,9 @@ pub trait RobotSink {
 /// Verified trajectories: every call re-reads and re-verifies the lock and its approval.
 pub trait TrajectoryProvider {
     fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError>;
-    /// The statures `(min_m, max_m)` the class's trajectory was derived and validated for (written
-    /// in its trajectory file, covered by the lock's hash).
+    /// The statures `(min_m, max_m)` the class's trajectory was validated and is served for (its
+    /// trajectory file's served range, covered by the lock's hash): the class's own statures
+    /// widened by what the height decision can reach across a boundary.
     fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError>;
 }
 
