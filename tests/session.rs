@@ -1062,6 +1062,9 @@ fn cycle_session(
     script.cycles = cycles;
     script.rest_secs =
         2.0 * leg_nanos as f64 * 1e-9 + cfg.next_part_after_nanos as f64 * 1e-9 + 1.0;
+    // The class is decided after 30 upright frames at the station (3 s at this test's 10 Hz) and
+    // the first leg takes the lock's 5 s: the operator reaches once the part is there.
+    script.idle_secs += 2.0;
     let limit = ((script.duration_secs() + 30.0) * 1e9) as i64;
     let mut sim = Simulation::new(
         rig(),

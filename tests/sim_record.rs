@@ -33,6 +33,9 @@ fn handovers() -> Handovers {
         c1_stature_m: [1.55, 1.68],
         c2_stature_m: [1.68, 1.82],
         c3_stature_m: [1.82, 1.95],
+        c1_served_m: [1.55, 1.68],
+        c2_served_m: [1.68, 1.82],
+        c3_served_m: [1.82, 1.95],
     }
 }
 

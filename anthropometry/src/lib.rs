@@ -36,6 +36,7 @@
 //! tabulated heights.
 
 pub mod ansur;
+pub mod body;
 pub mod stature;
 
 // Heights above the floor, standing upright.

@@ -23,7 +23,7 @@
 //! the rig file), because it is a property of the calibration.
 
 use ergocell_ergonomics::assess::{MuscleUseConfig, Thresholds};
-use ergocell_ergonomics::height::ClassThresholds;
+use ergocell_ergonomics::height::{ClassThresholds, EarOffset, MIN_CALIBRATION_SESSIONS};
 use ergocell_ergonomics::{AssessmentConfig, HeightConfig, TaskConfig, UpVector, WarningConfig};
 use ergocell_perception::temporal::OneEuroParams;
 use ergocell_perception::FusionMethod;
@@ -116,6 +116,10 @@ impl CellSettings {
         height.min_frames = h.min_frames;
         height.decision_sigmas = h.decision_sigmas;
         height.window_frames = h.window_frames;
+        height.ear_offset = h.ear_offset().map_err(|reason| CellError::Config {
+            file: "the cell configuration".to_owned(),
+            reason,
+        })?;
         Ok(PipelineConfig {
             reconstruction: ReconstructionConfig {
                 fusion: p.fusion.method(),
@@ -260,6 +264,7 @@ impl CellSettings {
                 return Err(format!("{key} = 0: at least one frame is needed"));
             }
         }
+        h.ear_offset()?;
         Ok(())
     }
 }
@@ -603,6 +608,37 @@ struct HeightFile {
     min_frames: usize,
     decision_sigmas: f64,
     window_frames: usize,
+    /// The ear landmark's offset from the tragion, measured by `ergocell height calibrate`
+    /// (all three keys together, or none: uncalibrated).
+    ear_offset_m: Option<f64>,
+    ear_offset_sigma_m: Option<f64>,
+    ear_offset_sessions: Option<usize>,
+}
+
+impl HeightFile {
+    /// The configured ear offset: calibrated when the three keys are given, the default otherwise.
+    fn ear_offset(&self) -> Result<EarOffset, String> {
+        match (
+            self.ear_offset_m,
+            self.ear_offset_sigma_m,
+            self.ear_offset_sessions,
+        ) {
+            (None, None, None) => Ok(EarOffset::default()),
+            (Some(offset), Some(sigma), Some(sessions)) => {
+                if sessions < MIN_CALIBRATION_SESSIONS {
+                    return Err(format!(
+                        "height.ear_offset_sessions = {sessions}: a calibration needs at least \
+                         {MIN_CALIBRATION_SESSIONS} sessions (`ergocell height calibrate`)"
+                    ));
+                }
+                EarOffset::calibrated(offset, sigma, sessions).map_err(|e| e.to_string())
+            }
+            _ => Err("height.ear_offset_m, height.ear_offset_sigma_m and \
+                      height.ear_offset_sessions go together (`ergocell height calibrate` writes \
+                      all three)"
+                .to_owned()),
+        }
+    }
 }
 
 impl Default for HeightFile {
@@ -619,6 +655,9 @@ impl Default for HeightFile {
             min_frames: h.min_frames,
             decision_sigmas: h.decision_sigmas,
             window_frames: h.window_frames,
+            ear_offset_m: None,
+            ear_offset_sigma_m: None,
+            ear_offset_sessions: None,
         }
     }
 }
@@ -738,5 +777,48 @@ mod tests {
         assert_eq!(p.warnings.dwell_nanos, 1_000_000_000);
         assert_eq!(p.height.thresholds.c1_below_m(), 1.65);
         assert_eq!(p.assessment.smoothing_window_nanos, 0);
+    }
+
+    #[test]
+    fn a_calibrated_ear_offset_is_read_whole_or_refused() {
+        let with = |keys: &str| format!("{SHIPPED}\n[height]\n{keys}\n");
+        let s = CellSettings::from_toml_str(
+            &with("ear_offset_m = 0.012\near_offset_sigma_m = 0.004\near_offset_sessions = 5"),
+            "cell.toml",
+        )
+        .unwrap();
+        let o = s.pipeline(UpVector::z()).unwrap().height.ear_offset;
+        assert_eq!(
+            (o.offset_m, o.sigma_m, o.calibrated_sessions),
+            (0.012, 0.004, Some(5))
+        );
+        // Uncalibrated by default.
+        let d = CellSettings::from_toml_str(SHIPPED, "cell.toml").unwrap();
+        assert_eq!(
+            d.pipeline(UpVector::z())
+                .unwrap()
+                .height
+                .ear_offset
+                .calibrated_sessions,
+            None
+        );
+        for (keys, why) in [
+            ("ear_offset_m = 0.012", "go together"),
+            (
+                "ear_offset_m = 0.012\near_offset_sigma_m = 0.004\near_offset_sessions = 3",
+                "at least 5",
+            ),
+            (
+                "ear_offset_m = 12.0\near_offset_sigma_m = 0.004\near_offset_sessions = 5",
+                "ear_offset_m",
+            ),
+            (
+                "ear_offset_m = 0.01\near_offset_sigma_m = -1.0\near_offset_sessions = 5",
+                "ear_offset_sigma_m",
+            ),
+        ] {
+            let e = CellSettings::from_toml_str(&with(keys), "cell.toml").unwrap_err();
+            assert!(e.to_string().contains(why), "{keys}: {e}");
+        }
     }
 }

@@ -18,6 +18,19 @@ if [ "${1:-}" = "--check" ]; then
   out=$(mktemp -d)
   trap 'rm -rf "$out"' EXIT
 fi
+# The classes' RULA curves first: the height decision (and so the height experiment) reads them from
+# trajectories/handover_rula.toml; --check compares the committed file with what the code produces.
+if [ "$out" = docs/sim ]; then
+  "$bin" sim handover-rula --seeds 1..4 --out-dir trajectories >/dev/null
+  mv trajectories/handover_rula.svg docs/sim/handover_rula.svg
+else
+  "$bin" sim handover-rula --seeds 1..4 --out-dir "$out" >/dev/null
+  if ! cmp -s "$out/handover_rula.toml" trajectories/handover_rula.toml; then
+    echo "trajectories/handover_rula.toml differs from what the code produces: run docs/sim/make.sh and commit" >&2
+    exit 1
+  fi
+  rm -f "$out/handover_rula.toml" "$out/handover_rula.svg"
+fi
 for experiment in table1 adaptation height rula-agreement; do
   "$bin" sim "$experiment" --seed 1 --out-dir "$out" >/dev/null
   "$bin" sim "$experiment" --seeds 101..120 --out-dir "$out" >"$out/${experiment//-/_}_seeds.txt"

@@ -95,6 +95,9 @@ pub enum ErgonomicsError {
     /// Height class thresholds must be ordered.
     #[error("height class thresholds must satisfy 0 < c1_below_m ({c1_below_m}) <= c2_up_to_m ({c2_up_to_m})")]
     BadClassThresholds { c1_below_m: f64, c2_up_to_m: f64 },
+    /// The ear offset cannot be calibrated from these sessions.
+    #[error("height calibration: {0}")]
+    Calibration(String),
     /// The classes' RULA-versus-stature curves are malformed.
     #[error("handover RULA curves: {0}")]
     HandoverRula(String),

@@ -65,9 +65,9 @@ fn both_estimators_recover_the_stature_and_decide_the_class() {
             }
         }
         let (k, d) = decision.expect("decided");
-        assert_eq!(k, 14, "after the 15 frames the config asks for");
+        assert_eq!(k, 29, "after the 30 frames the config asks for");
         assert_eq!(d.class, class);
-        assert_eq!(d.estimate.frames_used, 15);
+        assert_eq!(d.estimate.frames_used, 30);
         assert!((d.estimate.height_m - stature).abs() < 0.005, "{d:?}");
         assert!(d.estimate.uncertainty_m > 0.0 && d.estimate.uncertainty_m < 0.05);
         assert_eq!(d.estimate.estimators.len(), 2);
@@ -108,7 +108,7 @@ fn an_interval_that_straddles_a_boundary_is_decided_at_once_and_stays_served() {
     // No curves: the most probable class, c2 (1.69 m is above 1.68 m).
     let (found, _) = decide(config.clone());
     let (k, d) = found.expect("decided");
-    assert_eq!(k, 14, "after the 15 frames the config asks for");
+    assert_eq!(k, 29, "after the 30 frames the config asks for");
     assert_eq!(d.basis, DecisionBasis::MostProbable);
     assert_eq!(d.class, HeightClass::C2);
     assert!(d.interval_m[0] < 1.68 && 1.68 < d.interval_m[1], "{d:?}");
@@ -386,4 +386,63 @@ fn height_of_a_physically_impossible_operator_is_never_classed() {
             HeightStatus::Decided(d) => panic!("×{scale}: classed {d:?}"),
         }
     }
+}
+
+#[test]
+fn an_ear_offset_is_calibrated_from_five_sessions_and_removed() {
+    use ergocell_ergonomics::height::{calibrate_ear_offset, CalibrationSample};
+    // Five people whose ear landmark sits 15 mm above the tragion: the uncalibrated estimate reads
+    // tall by the model's slope times 15 mm (noiseless synthetic bodies: exactly).
+    let mut samples = Vec::new();
+    for stature in [1.58, 1.66, 1.73, 1.80, 1.91] {
+        let s = spec(stature);
+        let mut sk_est = estimator(&s);
+        for k in 0..30 {
+            let mut sk = frame(&s, k);
+            for lm in [Landmark::LeftEar, Landmark::RightEar] {
+                let mut e = *sk.get(lm).unwrap();
+                e.position_m = Point3::from(e.position_m.coords + s.up() * 0.015);
+                sk.set(lm, Some(e)).unwrap();
+            }
+            sk_est.push(&sk);
+        }
+        samples.push(CalibrationSample::from_estimate(
+            &sk_est.estimate().unwrap(),
+            stature,
+        ));
+    }
+    let offset = calibrate_ear_offset(&samples).unwrap();
+    // The chain reads a few millimetres tall on these bodies (see above), which the calibration
+    // takes in with the offset: within 2 mm.
+    assert!((offset.offset_m - 0.015).abs() < 0.002, "{offset:?}");
+    assert_eq!(offset.calibrated_sessions, Some(5));
+    // The model's 6.5 mm residual over √5, widened by Student's t(4): about 4 mm.
+    assert!(
+        offset.sigma_m > 0.0035 && offset.sigma_m < 0.0045,
+        "{offset:?}"
+    );
+    // With the offset configured, the same person is measured as without it.
+    let s = spec(1.75);
+    let mut config = HeightConfig::new(UpVector::new(s.up()).unwrap());
+    config.ear_offset = offset;
+    let mut est = HeightEstimator::new(config);
+    for k in 0..30 {
+        let mut sk = frame(&s, k);
+        for lm in [Landmark::LeftEar, Landmark::RightEar] {
+            let mut e = *sk.get(lm).unwrap();
+            e.position_m = Point3::from(e.position_m.coords + s.up() * 0.015);
+            sk.set(lm, Some(e)).unwrap();
+        }
+        est.push(&sk);
+    }
+    let e = est.estimate().unwrap();
+    assert!((e.height_m - 1.75).abs() < 0.003, "{e:?}");
+    assert!(e.uncertainty_m < 0.010, "calibrated: {e:?}");
+    // Too few sessions, or statures that are not a person's, are refused with the reason.
+    let e = calibrate_ear_offset(&samples[..4]).unwrap_err();
+    assert!(e.to_string().contains("at least 5"), "{e}");
+    let mut bad = samples.clone();
+    bad[2].measured_m = 175.0;
+    let e = calibrate_ear_offset(&bad).unwrap_err();
+    assert!(e.to_string().contains("session 3"), "{e}");
 }

@@ -58,6 +58,15 @@ fn every_file_in_config_and_trajectories_parses() {
                                 .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
                         }
                     }
+                } else if name == "handover_rula.toml" {
+                    // The classes' RULA curves (read by the height decision, not the robot): a
+                    // stature list and one equally long list per class.
+                    let t: toml::Table = toml::from_str(&text).unwrap();
+                    let len = |k: &str| t[k].as_array().map(Vec::len).unwrap_or_default();
+                    assert!(len("statures_m") >= 2, "{}", path.display());
+                    for class in ["c1", "c2", "c3"] {
+                        assert_eq!(len(class), len("statures_m"), "{}: {class}", path.display());
+                    }
                 } else {
                     assert!(
                         !path.starts_with(layout.dir()),

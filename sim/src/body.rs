@@ -32,23 +32,53 @@
 //! ergonomics' definitions (elevation from the trunk's downward axis; abduction `asin(â·o)`) recover
 //! exactly these values when humeral rotation is zero.
 
+use ergocell_anthropometry::body::Body;
 use ergocell_skeleton::{Landmark, LANDMARK_COUNT};
 use nalgebra::{Point3, Rotation3, Vector3};
 use serde::Serialize;
 
 use crate::SimError;
 
-/// A simulated operator: stature and the segment lengths derived from it.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+/// A simulated operator: a body (stature-scaled or a measured person's) and the working hand.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Operator {
-    stature_m: f64,
+    body: Body,
     /// True for a right-handed operator (reaches with the right hand).
     pub right_handed: bool,
 }
 
+impl Serialize for Operator {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut s = serializer.serialize_struct("Operator", 3)?;
+        s.serialize_field("stature_m", &self.body.stature_m)?;
+        s.serialize_field("right_handed", &self.right_handed)?;
+        s.serialize_field("subject_id", &self.body.subject_id)?;
+        s.end()
+    }
+}
+
 impl Operator {
-    /// An operator of this stature (0.5–2.5 m), right-handed.
+    /// An operator of this stature (0.5–2.5 m) with Drillis & Contini's proportions
+    /// ([`Body::average`]), right-handed.
     pub fn new(stature_m: f64) -> Result<Self, SimError> {
+        Self::check_stature(stature_m)?;
+        Ok(Self {
+            body: Body::average(stature_m),
+            right_handed: true,
+        })
+    }
+
+    /// A measured person's body ([`Body::measured`]), right-handed.
+    pub fn measured(person: &ergocell_anthropometry::ansur::Person) -> Result<Self, SimError> {
+        Self::check_stature(person.stature_m)?;
+        Ok(Self {
+            body: Body::measured(person),
+            right_handed: true,
+        })
+    }
+
+    fn check_stature(stature_m: f64) -> Result<(), SimError> {
         if !(0.5..=2.5).contains(&stature_m) {
             return Err(SimError::BadParameter {
                 name: "stature_m",
@@ -56,10 +86,7 @@ impl Operator {
                 why: "must be within 0.5..=2.5 m",
             });
         }
-        Ok(Self {
-            stature_m,
-            right_handed: true,
-        })
+        Ok(())
     }
 
     /// The same operator, left-handed.
@@ -71,12 +98,17 @@ impl Operator {
 
     /// True stature, metres.
     pub fn stature_m(&self) -> f64 {
-        self.stature_m
+        self.body.stature_m
+    }
+
+    /// The body's dimensions.
+    pub fn body(&self) -> &Body {
+        &self.body
     }
 
     /// A segment length or height: `ratio · H`.
     pub fn len(&self, ratio: f64) -> f64 {
-        ratio * self.stature_m
+        ratio * self.body.stature_m
     }
 
     /// The 33 landmarks of this operator in `posture`, world frame.
@@ -96,27 +128,25 @@ impl Operator {
 
     /// Landmarks, grasp points and the torso/head geometry used for occlusion.
     pub(crate) fn kinematics(&self, q: &Posture) -> Kinematics {
-        use ergocell_anthropometry::{self as r, from_heights};
         use Landmark as L;
-        let h = self.stature_m;
+        let b = &self.body;
+        let h = b.stature_m;
         let mut p = [Point3::origin(); LANDMARK_COUNT];
         let mut set = |l: L, v: Vector3<f64>| p[l.index()] = Point3::from(v);
 
         // Legs: thigh and shank angles from vertical (positive = forward), pelvis at the height that
         // puts the longer leg's ankle at its standing height.
         let leg = |hip_flex: f64, knee_flex: f64| {
-            let thigh =
-                Vector3::new(hip_flex.sin(), 0.0, -hip_flex.cos()) * (from_heights::THIGH * h);
+            let thigh = Vector3::new(hip_flex.sin(), 0.0, -hip_flex.cos()) * b.thigh_m;
             let shank_angle = hip_flex - knee_flex;
-            let shank = Vector3::new(shank_angle.sin(), 0.0, -shank_angle.cos())
-                * (from_heights::SHANK * h);
+            let shank = Vector3::new(shank_angle.sin(), 0.0, -shank_angle.cos()) * b.shank_m;
             (thigh, shank)
         };
         let (tl, sl) = leg(q.left_leg.hip_flexion_rad, q.left_leg.knee_flexion_rad);
         let (tr, sr) = leg(q.right_leg.hip_flexion_rad, q.right_leg.knee_flexion_rad);
         let drop = (-(tl + sl).z).max(-(tr + sr).z);
-        let hip_mid = Vector3::new(0.0, 0.0, r::ANKLE_HEIGHT * h + drop);
-        let hip_y = 0.5 * r::HIP_WIDTH * h;
+        let hip_mid = Vector3::new(0.0, 0.0, b.ankle_height_m + drop);
+        let hip_y = 0.5 * b.hip_width_m;
         for (sy, (thigh, shank), ids) in [
             (
                 1.0,
@@ -144,28 +174,26 @@ impl Operator {
             let hip = hip_mid + Vector3::new(0.0, sy * hip_y, 0.0);
             let knee = hip + thigh;
             let ankle = knee + shank;
-            let foot_drop = r::ANKLE_HEIGHT * h;
+            let foot_drop = b.ankle_height_m;
             set(ids[0], hip);
             set(ids[1], knee);
             set(ids[2], ankle);
             set(ids[3], ankle + Vector3::new(-0.025 * h, 0.0, -foot_drop));
             set(
                 ids[4],
-                ankle + Vector3::new((r::FOOT - 0.025) * h, 0.0, -foot_drop),
+                ankle + Vector3::new(b.foot_m - 0.025 * h, 0.0, -foot_drop),
             );
         }
 
         // Trunk about the hip midpoint.
         let r_trunk = ry(q.trunk_flexion_rad) * rx(q.trunk_side_bend_rad) * rz(q.trunk_twist_rad);
         let trunk = |v: Vector3<f64>| hip_mid + r_trunk * v;
-        let trunk_len = from_heights::TRUNK * h;
+        let trunk_len = b.trunk_m;
         let neck = Vector3::new(0.0, 0.0, trunk_len);
         let r_head = ry(q.neck_flexion_rad) * rz(q.neck_yaw_rad);
-        let eye_z = from_heights::EYE_ABOVE_SHOULDER * h;
+        let eye_z = b.eye_above_shoulder_m;
         let head = |v: Vector3<f64>| trunk(neck + r_head * v);
-        // The ears where ANSUR II's stature model puts a person of this stature's tragion.
-        let ear_z =
-            ergocell_anthropometry::stature::FLOOR_TO_EAR.span_m(h) - r::SHOULDER_HEIGHT * h;
+        let ear_z = b.ear_above_shoulder_m;
         set(
             L::Nose,
             head(Vector3::new(0.055 * h, 0.0, eye_z - 0.018 * h)),
@@ -200,7 +228,7 @@ impl Operator {
         let head_centre = head(Vector3::new(0.012 * h, 0.0, eye_z - 0.01 * h));
 
         // Arms in the trunk frame.
-        let shoulder_y = 0.5 * r::SHOULDER_WIDTH * h;
+        let shoulder_y = 0.5 * b.shoulder_width_m;
         let mut grasp = [Vector3::zeros(); 2];
         for (k, (sy, arm, ids)) in [
             (
@@ -234,13 +262,13 @@ impl Operator {
             let down = -Vector3::z();
             let shoulder = Vector3::new(0.0, sy * shoulder_y, trunk_len + arm.shoulder_raise_m);
             let r_upper = ry(-arm.flexion_rad) * rx(sy * arm.abduction_rad);
-            let elbow = shoulder + r_upper * down * (r::UPPER_ARM * h);
+            let elbow = shoulder + r_upper * down * b.upper_arm_m;
             let r_fore = r_upper * rz(sy * arm.humeral_rotation_rad) * ry(-arm.elbow_flexion_rad);
-            let wrist = elbow + r_fore * down * (r::FOREARM * h);
+            let wrist = elbow + r_fore * down * b.forearm_m;
             // Palm faces the body's midline when the arm hangs (thumb forward); flexion bends the
             // hand towards the palm.
             let r_hand = r_fore * rx(-sy * arm.wrist_flexion_rad);
-            let knuckles = 0.45 * r::HAND * h;
+            let knuckles = 0.45 * b.hand_m;
             let half_width = 0.012 * h;
             set(ids[0], trunk(shoulder));
             set(ids[1], trunk(elbow));

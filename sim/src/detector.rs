@@ -60,6 +60,15 @@ pub struct DetectorNoise {
     pub stamp_jitter_sigma_nanos: f64,
     /// Fewer landmarks than this inside the image: the person is not detected (default 8).
     pub min_landmarks_in_frame: usize,
+    /// How far above the anatomical tragion the detector puts both ear landmarks, along the world's
+    /// up (z), metres (default 0): the offset a cell's `height calibrate` measures.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub ear_offset_m: f64,
+}
+
+#[allow(clippy::trivially_copy_pass_by_ref)] // serde's skip_serializing_if passes a reference
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 impl Default for DetectorNoise {
@@ -75,6 +84,7 @@ impl Default for DetectorNoise {
             drop_probability: 0.02,
             stamp_jitter_sigma_nanos: 3.0e6,
             min_landmarks_in_frame: 8,
+            ear_offset_m: 0.0,
         }
     }
 }
@@ -94,6 +104,7 @@ impl DetectorNoise {
             drop_probability: 0.0,
             stamp_jitter_sigma_nanos: 0.0,
             min_landmarks_in_frame: 0,
+            ear_offset_m: 0.0,
         }
     }
 
@@ -131,6 +142,13 @@ impl DetectorNoise {
             if !(lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo <= hi && hi <= max) {
                 return bad(name, lo, "range must be ordered, finite and within bounds");
             }
+        }
+        if !(self.ear_offset_m.is_finite() && self.ear_offset_m.abs() <= 0.1) {
+            return bad(
+                "ear_offset_m",
+                self.ear_offset_m,
+                "must be finite and within ±0.1 m",
+            );
         }
         Ok(())
     }
@@ -213,7 +231,10 @@ pub(crate) fn render_view(
     let mut pixels = [None; LANDMARK_COUNT];
     let mut in_frame = 0;
     for lm in Landmark::ALL {
-        let p = kin.points[lm.index()];
+        let mut p = kin.points[lm.index()];
+        if matches!(lm, Landmark::LeftEar | Landmark::RightEar) {
+            p.z += noise.ear_offset_m;
+        }
         if let Ok(px) = camera.project(&p) {
             if camera.in_image(&px) {
                 pixels[lm.index()] = Some(px);

@@ -29,9 +29,12 @@
 
 use std::collections::BTreeMap;
 
+use ergocell_anthropometry::ansur::{Person, Split};
 use ergocell_cell::{Pipeline, PipelineConfig, TrackedFrame};
 use ergocell_ergonomics::assess::BodyRegion;
-use ergocell_ergonomics::height::DecisionBasis;
+use ergocell_ergonomics::height::{
+    calibrate_ear_offset, CalibrationSample, DecisionBasis, EarOffset, HandoverRula, ServedStatures,
+};
 use ergocell_ergonomics::rula::action_level;
 use ergocell_ergonomics::{
     AssessmentConfig, FrameAssessment, HeightClass, HeightConfig, HeightStatus, RulaAssessor,
@@ -87,6 +90,11 @@ pub struct Handovers {
     pub c1_stature_m: [f64; 2],
     pub c2_stature_m: [f64; 2],
     pub c3_stature_m: [f64; 2],
+    /// The statures each class's trajectory is validated and served for (its file's served range,
+    /// wider than the class): what the height decision may choose the class for.
+    pub c1_served_m: [f64; 2],
+    pub c2_served_m: [f64; 2],
+    pub c3_served_m: [f64; 2],
 }
 
 impl Handovers {
@@ -106,6 +114,15 @@ impl Handovers {
             HeightClass::C2 => self.c2_stature_m,
             HeightClass::C3 => self.c3_stature_m,
         }
+    }
+
+    /// The served statures of every class, for the height decision.
+    pub fn served(&self) -> Result<ServedStatures, SimError> {
+        Ok(ServedStatures::new([
+            self.c1_served_m,
+            self.c2_served_m,
+            self.c3_served_m,
+        ])?)
     }
 
     /// Whether the cell would hand over to an operator of this stature in `class` (inside the
@@ -343,6 +360,25 @@ fn pipeline(setup: &Setup) -> Result<Pipeline, SimError> {
         setup.rig.clone(),
         PipelineConfig::new(up()?),
     )?)
+}
+
+/// [`run_pipeline`] with a pipeline configured by `config`.
+pub fn run_pipeline_with(
+    setup: &Setup,
+    config: PipelineConfig,
+    ticks: &[Tick],
+    mut f: impl FnMut(usize, &TrackedFrame) -> Result<(), SimError>,
+) -> Result<Pipeline, SimError> {
+    let mut p = Pipeline::new(setup.rig.clone(), config)?;
+    for tick in ticks {
+        for output in p.push_views(tick.frame.stamp_nanos, tick.frame.views.clone()) {
+            let output = output?;
+            if let Some(tracked) = &output.tracked {
+                f(nearest_tick(ticks, output.stamp_nanos), tracked)?;
+            }
+        }
+    }
+    Ok(p)
 }
 
 /// Runs the controller's pipeline over a session's ticks as the session does (each tick's views
@@ -628,6 +664,8 @@ pub fn adaptation(
 /// One operator of the height experiment.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HeightRow {
+    /// The ANSUR II person simulated.
+    pub subject_id: u32,
     pub true_m: f64,
     pub estimated_m: Option<f64>,
     /// The estimate's stated uncertainty (1σ), metres: at the decision, or at the end when undecided.
@@ -640,11 +678,23 @@ pub struct HeightRow {
     pub basis: Option<DecisionBasis>,
     /// The decision's stated probability that its class is the true one.
     pub probability: Option<f64>,
+    /// Seconds from the operator's arrival at the station (standing upright) to the decision; 0
+    /// when decided on the way in.
+    pub decided_after_s: Option<f64>,
+    /// The decision's RULA cost: the class's curve minus the true class's curve at the true
+    /// stature (grand score; `None` without curves or undecided).
+    pub rula_cost: Option<f64>,
+    /// Whether any trajectory serves this stature at all (inside some class's served range).
+    pub servable: bool,
 }
 
 /// Result of [`height`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HeightResult {
+    /// The cell's ear offset, as its calibration sessions measured it (or the default).
+    pub calibration: EarOffset,
+    /// The detector's true ear offset in this run, metres.
+    pub detector_ear_offset_m: f64,
     /// Mean absolute stature error over operators with an estimate, metres.
     pub mae_m: f64,
     /// Share of all operators whose decided class is correct.
@@ -656,7 +706,21 @@ pub struct HeightResult {
     /// Operators given the neighbouring class across a boundary (stated probability below
     /// certainty).
     pub wrong_across_boundary: usize,
+    /// Servable operators left undecided.
     pub undecided: usize,
+    /// Operators whose stature no trajectory serves (never given a class, by design).
+    pub not_servable: usize,
+    /// Operators within 2 cm of a class boundary.
+    pub near_boundary: usize,
+    /// Decided operators per class.
+    pub decided_per_class: [usize; 3],
+    /// Seconds from arrival at the station to the decision: median and 95th percentile.
+    pub decision_time_median_s: f64,
+    pub decision_time_p95_s: f64,
+    /// The decisions' RULA cost (chosen class minus true class at the true stature): mean and worst
+    /// over the decided operators (`None` without curves).
+    pub rula_cost_mean: Option<f64>,
+    pub rula_cost_worst: Option<f64>,
     /// The half-width of the stated interval in σ (the estimator's `decision_sigmas`).
     pub interval_sigmas: f64,
     /// Empirical coverage: the share of operators with an estimate whose true stature lies inside the
@@ -667,63 +731,194 @@ pub struct HeightResult {
     pub operators: Vec<HeightRow>,
 }
 
-/// A population of `count` operators uniform in 1.50–2.00 m, each standing idle for `idle_secs`.
+/// What the height experiment simulates besides the rig and the detector.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeightOptions {
+    /// Operators drawn, without replacement, from the reporting half of the people (odd subject ids).
+    pub count: usize,
+    /// Seconds each operator stands idle at the station.
+    pub idle_secs: f64,
+    /// Calibration sessions drawn from the fitting half (even subject ids) before the operators, as
+    /// `ergocell height calibrate` would run them; 0 = an uncalibrated cell.
+    pub calibration_sessions: usize,
+    /// The classes' RULA-versus-stature curves the decision and its cost use.
+    pub rula: Option<HandoverRula>,
+}
+
+fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let i = ((sorted.len() - 1) as f64 * q).round() as usize;
+    sorted[i.min(sorted.len() - 1)]
+}
+
+/// Draws `k` distinct indices of `0..n` (a partial Fisher–Yates shuffle).
+fn draw(rng: &mut ChaCha8Rng, n: usize, k: usize) -> Vec<usize> {
+    let mut idx: Vec<usize> = (0..n).collect();
+    let k = k.min(n);
+    for i in 0..k {
+        let j = i + (rng.random::<f64>() * (n - i) as f64) as usize;
+        idx.swap(i, j.min(n - 1));
+    }
+    idx.truncate(k);
+    idx
+}
+
+/// The cell controller's pipeline as `config/cell.toml`'s defaults set it up (the operator zone
+/// around the station at the world origin, so the height is measured only there).
+fn cell_pipeline() -> Result<PipelineConfig, SimError> {
+    Ok(ergocell_cell::CellSettings::default().pipeline(up()?)?)
+}
+
+/// One person standing idle at the station: the ticks, with the detector of `setup`.
+fn simulate_person(
+    setup: &Setup,
+    session: usize,
+    person: &Person,
+    handovers: &Handovers,
+    idle_secs: f64,
+) -> Result<Vec<Tick>, SimError> {
+    let mut script = SessionScript::new(handovers.before_m);
+    script.cycles = 0;
+    script.idle_secs = idle_secs;
+    script.walk_out_secs = 0.0;
+    let config = SimConfig {
+        noise: setup.noise,
+        ..SimConfig::new(session_seed(setup.seed, session))
+    };
+    Simulation::new(
+        setup.rig.clone(),
+        Operator::measured(person)?,
+        script,
+        config,
+    )?
+    .collect()
+}
+
+/// The operator's stature as a cell calibrates it: measured over the whole session with no ear
+/// offset subtracted, as `ergocell height calibrate` does.
+fn calibration_sample(
+    setup: &Setup,
+    ticks: &[Tick],
+    person: &Person,
+) -> Result<Option<CalibrationSample>, SimError> {
+    let mut config = cell_pipeline()?;
+    config.height.min_frames = usize::MAX;
+    config.height.ear_offset = EarOffset {
+        offset_m: 0.0,
+        ..EarOffset::default()
+    };
+    let p = run_pipeline_with(setup, config, ticks, |_, _| Ok(()))?;
+    Ok(match p.height_status() {
+        HeightStatus::Measuring {
+            estimate: Some(e), ..
+        } => Some(CalibrationSample::from_estimate(&e, person.stature_m)),
+        _ => None,
+    })
+}
+
+/// The stature experiment on measured people: ANSUR II adults (the reporting half, odd subject ids,
+/// never used to fit the stature model or calibrate) each standing idle at the station for
+/// `idle_secs`, after the cell was calibrated on `calibration_sessions` people of the fitting half.
 pub fn height(
     setup: &Setup,
     handovers: &Handovers,
-    count: usize,
-    idle_secs: f64,
+    people: &[Person],
+    options: &HeightOptions,
     progress: Progress<'_>,
 ) -> Result<HeightResult, SimError> {
+    let fit: Vec<&Person> = people.iter().filter(|p| p.split() == Split::Fit).collect();
+    let report: Vec<&Person> = people
+        .iter()
+        .filter(|p| p.split() == Split::Report)
+        .collect();
+    let mut rng = ChaCha8Rng::seed_from_u64(setup.seed);
+    rng.set_stream(8);
+    let total = options.calibration_sessions + options.count;
+    // 1. Calibration: sessions 1_000_000.. keep their seeds apart from the operators'.
+    let calibration = if options.calibration_sessions == 0 {
+        EarOffset::default()
+    } else {
+        let mut samples = Vec::new();
+        for (k, i) in draw(&mut rng, fit.len(), options.calibration_sessions)
+            .into_iter()
+            .enumerate()
+        {
+            let ticks =
+                simulate_person(setup, 1_000_000 + k, fit[i], handovers, options.idle_secs)?;
+            if let Some(s) = calibration_sample(setup, &ticks, fit[i])? {
+                samples.push(s);
+            }
+            progress(k + 1, total);
+        }
+        calibrate_ear_offset(&samples)?
+    };
+
+    // 2. The operators.
+    let served = handovers.served()?;
+    let mut config = cell_pipeline()?;
+    config.height.ear_offset = calibration;
+    config.height.served_m = Some(served);
+    config.height.handover_rula.clone_from(&options.rula);
+    let t = config.height.thresholds;
+    let k = config.height.decision_sigmas;
     let mut population = ChaCha8Rng::seed_from_u64(setup.seed);
     population.set_stream(7);
-    let cfg = HeightConfig::new(up()?);
-    let t = cfg.thresholds;
-    let mut rows = Vec::with_capacity(count);
-    for i in 0..count {
-        let h = round6(1.50 + 0.50 * population.random::<f64>());
-        let mut script = SessionScript::new(handovers.before_m);
-        script.cycles = 0;
-        script.idle_secs = idle_secs;
-        script.walk_out_secs = 0.0;
-        let ticks = simulate(setup, i, h, &script)?;
+    let mut rows = Vec::with_capacity(options.count);
+    for (i, j) in draw(&mut population, report.len(), options.count)
+        .into_iter()
+        .enumerate()
+    {
+        let person = report[j];
+        let h = person.stature_m;
+        let ticks = simulate_person(setup, i, person, handovers, options.idle_secs)?;
+        let arrived = ticks
+            .iter()
+            .find(|t| t.truth.phase != Phase::WalkIn)
+            .map_or(0, |t| t.truth.stamp_nanos);
         // The height as the session decides it: the pipeline's first decision, which is final.
-        let pipeline = run_pipeline(setup, &ticks, |_, _| Ok(()))?;
-        let (estimate, decided_class, basis, probability) = match pipeline.height_status() {
-            HeightStatus::Decided(d) => (
-                Some(d.estimate),
-                Some(d.class),
-                Some(d.basis),
-                Some(round6(d.probability)),
-            ),
-            HeightStatus::Measuring { estimate, .. } => (estimate, None, None, None),
+        let pipeline = run_pipeline_with(setup, config.clone(), &ticks, |_, _| Ok(()))?;
+        let (estimate, decision) = match pipeline.height_status() {
+            HeightStatus::Decided(d) => (Some(d.estimate.clone()), Some(d)),
+            HeightStatus::Measuring { estimate, .. } => (estimate, None),
         };
-        let estimated_m = estimate.as_ref().map(|e| e.height_m);
-        let uncertainty_m = estimate.as_ref().map(|e| round6(e.uncertainty_m));
-        rows.push(HeightRow {
-            true_m: h,
-            estimated_m: estimated_m.map(round6),
-            uncertainty_m,
-            true_class: HeightClass::of(h, &t),
-            decided_class,
-            basis,
-            probability,
+        let true_class = HeightClass::of(h, &t);
+        let rula_cost = decision.as_ref().and_then(|d| {
+            options
+                .rula
+                .as_ref()
+                .map(|c| round6(c.at(d.class, h) - c.at(true_class, h)))
         });
-        progress(i + 1, count);
+        rows.push(HeightRow {
+            subject_id: person.subject_id,
+            true_m: round6(h),
+            estimated_m: estimate.as_ref().map(|e| round6(e.height_m)),
+            uncertainty_m: estimate.as_ref().map(|e| round6(e.uncertainty_m)),
+            true_class,
+            decided_class: decision.as_ref().map(|d| d.class),
+            basis: decision.as_ref().map(|d| d.basis),
+            probability: decision.as_ref().map(|d| round6(d.probability)),
+            decided_after_s: decision
+                .as_ref()
+                .map(|d| round6(((d.stamp_nanos - arrived) as f64 * 1e-9).max(0.0))),
+            rula_cost,
+            servable: HeightClass::ALL.iter().any(|c| {
+                let [lo, hi] = served.of(*c);
+                (lo..=hi).contains(&h)
+            }),
+        });
+        progress(options.calibration_sessions + i + 1, total);
     }
+    let count = rows.len();
     let errors: Vec<f64> = rows
         .iter()
         .filter_map(|r| r.estimated_m.map(|e| (e - r.true_m).abs()))
         .collect();
-    let correct = |r: &&HeightRow| r.decided_class == Some(r.true_class);
-    let correct_beyond = |r: &&&HeightRow| r.decided_class == Some(r.true_class);
-    let beyond: Vec<&HeightRow> = rows
-        .iter()
-        .filter(|r| {
-            (r.true_m - t.c1_below_m()).abs() > 0.02 && (r.true_m - t.c2_up_to_m()).abs() > 0.02
-        })
-        .collect();
-    let k = cfg.decision_sigmas;
+    let near = |r: &HeightRow| {
+        (r.true_m - t.c1_below_m()).abs() <= 0.02 || (r.true_m - t.c2_up_to_m()).abs() <= 0.02
+    };
+    let beyond: Vec<&HeightRow> = rows.iter().filter(|r| !near(r)).collect();
     let covered = |sigmas: f64| {
         let with: Vec<bool> = rows
             .iter()
@@ -734,32 +929,125 @@ pub fn height(
             .collect();
         round6(with.iter().filter(|c| **c).count() as f64 / with.len().max(1) as f64)
     };
+    let mut times: Vec<f64> = rows.iter().filter_map(|r| r.decided_after_s).collect();
+    times.sort_by(f64::total_cmp);
+    let costs: Vec<f64> = rows.iter().filter_map(|r| r.rula_cost).collect();
+    let wrong = |r: &&HeightRow| r.decided_class.is_some_and(|c| c != r.true_class);
     Ok(HeightResult {
+        calibration,
+        detector_ear_offset_m: setup.noise.ear_offset_m,
         interval_sigmas: k,
         coverage: covered(k),
         coverage_1sigma: covered(1.0),
         mae_m: round6(mean(&errors)),
-        class_accuracy: round6(rows.iter().filter(correct).count() as f64 / count.max(1) as f64),
+        class_accuracy: round6(
+            rows.iter()
+                .filter(|r| r.decided_class == Some(r.true_class))
+                .count() as f64
+                / count.max(1) as f64,
+        ),
         class_accuracy_beyond_2cm: round6(
-            beyond.iter().filter(correct_beyond).count() as f64 / beyond.len().max(1) as f64,
+            beyond
+                .iter()
+                .filter(|r| r.decided_class == Some(r.true_class))
+                .count() as f64
+                / beyond.len().max(1) as f64,
         ),
         confidently_wrong: rows
             .iter()
-            .filter(|r| {
-                r.decided_class.is_some_and(|c| c != r.true_class)
-                    && r.basis == Some(DecisionBasis::Interval)
-            })
+            .filter(wrong)
+            .filter(|r| r.basis == Some(DecisionBasis::Interval))
             .count(),
         wrong_across_boundary: rows
             .iter()
-            .filter(|r| {
-                r.decided_class.is_some_and(|c| c != r.true_class)
-                    && r.basis != Some(DecisionBasis::Interval)
-            })
+            .filter(wrong)
+            .filter(|r| r.basis != Some(DecisionBasis::Interval))
             .count(),
-        undecided: rows.iter().filter(|r| r.decided_class.is_none()).count(),
+        undecided: rows
+            .iter()
+            .filter(|r| r.servable && r.decided_class.is_none())
+            .count(),
+        not_servable: rows.iter().filter(|r| !r.servable).count(),
+        near_boundary: rows.iter().filter(|r| near(r)).count(),
+        decided_per_class: HeightClass::ALL
+            .map(|c| rows.iter().filter(|r| r.decided_class == Some(c)).count()),
+        decision_time_median_s: round6(quantile(&times, 0.5)),
+        decision_time_p95_s: round6(quantile(&times, 0.95)),
+        rula_cost_mean: (!costs.is_empty()).then(|| round6(mean(&costs))),
+        rula_cost_worst: costs.iter().copied().max_by(f64::total_cmp).map(round6),
         operators: rows,
     })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Each class's RULA at its handover point, per stature
+
+/// Statures of the handover-RULA curves: 1.40–2.10 m in 2 cm steps (beyond every served range).
+pub fn handover_rula_statures() -> Vec<f64> {
+    (0..=35)
+        .map(|i| round6(1.40 + 0.02 * f64::from(i)))
+        .collect()
+}
+
+/// Each class's RULA-versus-stature curve: the mean true RULA grand score (worse side) over the
+/// holding frames of an operator of each stature (Drillis & Contini's proportions, the robot's
+/// planning model) handed the part at the class's handover point, averaged over `seeds` (each a
+/// session of `cycles` handovers). The ground truth, not the pipeline: the curve is what the class
+/// does to the operator, not what the cameras measure of it.
+pub fn handover_rula(
+    rig: &CameraRig,
+    handovers: &Handovers,
+    statures_m: &[f64],
+    cycles: usize,
+    seeds: &[u64],
+    progress: Progress<'_>,
+) -> Result<HandoverRula, SimError> {
+    let total = statures_m.len() * 3 * seeds.len();
+    let mut done = 0;
+    let mut curves = [Vec::new(), Vec::new(), Vec::new()];
+    for (i, &h) in statures_m.iter().enumerate() {
+        for (k, class) in HeightClass::ALL.into_iter().enumerate() {
+            let mut per_seed = Vec::new();
+            for &seed in seeds {
+                let setup = Setup {
+                    rig: rig.clone(),
+                    noise: DetectorNoise::none(),
+                    seed,
+                };
+                let mut script = SessionScript::new(handovers.for_class(class));
+                script.cycles = cycles;
+                let ticks = simulate(&setup, i, h, &script)?;
+                let truth = truth_headlines(&ticks)?;
+                let grand: Vec<f64> = ticks
+                    .iter()
+                    .zip(&truth)
+                    .filter(|(t, _)| matches!(t.truth.phase, Phase::Hold { .. }))
+                    .filter_map(|(_, s)| s.map(|s| f64::from(s.grand)))
+                    .collect();
+                per_seed.push(mean(&grand));
+                done += 1;
+                progress(done, total);
+            }
+            let m = mean(&per_seed);
+            if !m.is_finite() {
+                return Err(SimError::BadParameter {
+                    name: "stature_m",
+                    value: h,
+                    why: "no holding frame was scored at this stature: no curve point",
+                });
+            }
+            curves[k].push((m * 1e4).round() / 1e4);
+        }
+    }
+    let [c1, c2, c3] = curves;
+    let rula = HandoverRula {
+        statures_m: statures_m.to_vec(),
+        c1,
+        c2,
+        c3,
+    };
+    rula.check()?;
+    Ok(rula)
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -19,7 +19,6 @@
 //! gaze (and [`ReachConfig::eye_up_rad`] upward) on their own, the neck the rest; looking down or
 //! ahead the head never flexes less than the base posture's habitual flexion.
 
-use ergocell_anthropometry as anthropometry;
 use nalgebra::{DMatrix, DVector, Point3};
 
 use crate::body::{Operator, Posture};
@@ -269,7 +268,8 @@ fn d(x: f64) -> f64 {
 
 /// The longest reach of the working hand's grasp point from the shoulder, metres (arm straight).
 pub fn arm_reach_m(op: &Operator) -> f64 {
-    op.len(anthropometry::UPPER_ARM + anthropometry::FOREARM + 0.5 * 0.45 * anthropometry::HAND)
+    let b = op.body();
+    b.upper_arm_m + b.forearm_m + 0.5 * 0.45 * b.hand_m
 }
 
 #[cfg(test)]

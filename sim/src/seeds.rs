@@ -276,28 +276,48 @@ pub struct HeightSeeds {
     pub mae_m: Option<Spread>,
     pub class_accuracy_beyond_2cm: Option<Spread>,
     pub undecided: Option<Spread>,
+    pub not_servable: Option<Spread>,
     pub coverage: Option<Spread>,
     pub coverage_1sigma: Option<Spread>,
+    pub decision_time_median_s: Option<Spread>,
+    pub decision_time_p95_s: Option<Spread>,
+    pub rula_cost_mean: Option<Spread>,
+    pub rula_cost_worst: Option<Spread>,
+    /// The calibrated ear offset per seed, metres.
+    pub calibrated_offset_m: Option<Spread>,
+    /// The ±kσ coverage over every seed's operators together (60 operators a seed move a
+    /// seed's own coverage by about ±3 points by chance alone; their calibration is shared).
+    pub coverage_pooled: f64,
+    pub coverage_1sigma_pooled: f64,
     /// Operators given a wrong class although their whole interval lay inside it, over every
     /// seed's whole population.
     pub confidently_wrong_total: usize,
     /// Operators given the neighbouring class across a boundary, over every seed.
     pub wrong_across_boundary_total: usize,
+    /// Operators within 2 cm of a boundary, over every seed.
+    pub near_boundary_total: usize,
+    /// Decided operators per class (c1, c2, c3), over every seed.
+    pub decided_per_class_total: [usize; 3],
     pub operators_total: usize,
     pub goals: Vec<Goal>,
 }
 
 /// The MAE goal of the height experiment, metres.
-pub const HEIGHT_MAE_GOAL_M: f64 = 0.015;
+pub const HEIGHT_MAE_GOAL_M: f64 = 0.010;
 /// The nominal coverage of a ±2σ interval of a normal error.
 pub const NOMINAL_2SIGMA: f64 = 0.9545;
+/// How far from nominal the coverage may be.
+pub const COVERAGE_TOLERANCE: f64 = 0.03;
 
 /// Summarises height runs, one per seed.
 pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
     let pick = |f: &dyn Fn(&HeightResult) -> f64| runs.iter().map(f).collect::<Vec<f64>>();
-    let goals =
-        vec![
-        Goal::judge("MAE ≤ 1.5 cm", seeds, |i| {
+    let mut goals = vec![
+        Goal::judge("every servable operator standing upright is served (0 undecided)", seeds, |i| {
+            let n = runs[i].undecided;
+            (n > 0).then(|| format!("{n} undecided"))
+        }),
+        Goal::judge("MAE ≤ 1.0 cm", seeds, |i| {
             let m = runs[i].mae_m;
             (m.is_nan() || m > HEIGHT_MAE_GOAL_M).then(|| format!("MAE {:.2} cm", m * 100.0))
         }),
@@ -309,10 +329,6 @@ pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
                 (a < 1.0).then(|| format!("{:.1} % right", a * 100.0))
             },
         ),
-        Goal::judge("every operator standing upright is served (0 undecided)", seeds, |i| {
-            let n = runs[i].undecided;
-            (n > 0).then(|| format!("{n} undecided"))
-        }),
         Goal::judge("no operator confidently in the wrong class", seeds, |i| {
             let r = &runs[i];
             let wrong: Vec<String> = r
@@ -335,14 +351,62 @@ pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
             (!wrong.is_empty()).then(|| wrong.join("; "))
         }),
         Goal::judge(
-            "the stated ±kσ interval covers the truth at least at its nominal level (0.954 for 2σ)",
+            "the stated ±2σ interval covers the truth within 3 points of its nominal 0.954 (each seed's 60 operators)",
             seeds,
             |i| {
                 let c = runs[i].coverage;
-                (c < NOMINAL_2SIGMA).then(|| format!("coverage {c:.3}"))
+                ((c - NOMINAL_2SIGMA).abs() > COVERAGE_TOLERANCE)
+                    .then(|| format!("coverage {c:.3}"))
+            },
+        ),
+        Goal::judge(
+            "time from standing at the station to the decision: median ≤ 3 s, p95 ≤ 6 s",
+            seeds,
+            |i| {
+                let r = &runs[i];
+                (r.decision_time_median_s.is_nan()
+                    || r.decision_time_median_s > 3.0
+                    || r.decision_time_p95_s > 6.0)
+                    .then(|| {
+                        format!(
+                            "median {:.1} s, p95 {:.1} s",
+                            r.decision_time_median_s, r.decision_time_p95_s
+                        )
+                    })
             },
         ),
     ];
+    if runs.iter().all(|r| r.rula_cost_mean.is_some()) {
+        goals.push(Goal::judge(
+            "the decision's RULA cost (chosen minus true class): mean ≤ 0.05, worst ≤ 0.2",
+            seeds,
+            |i| {
+                let r = &runs[i];
+                let (m, w) = (
+                    r.rula_cost_mean.unwrap_or(f64::NAN),
+                    r.rula_cost_worst.unwrap_or(f64::NAN),
+                );
+                (m.is_nan() || m > 0.05 || w > 0.2).then(|| format!("mean {m:.3}, worst {w:.3}"))
+            },
+        ));
+    }
+    let pooled = |sigmas_of: &dyn Fn(&HeightResult) -> f64| {
+        let (mut inside, mut n) = (0usize, 0usize);
+        for r in runs {
+            let k = sigmas_of(r);
+            for o in &r.operators {
+                if let (Some(e), Some(u)) = (o.estimated_m, o.uncertainty_m) {
+                    n += 1;
+                    inside += usize::from((e - o.true_m).abs() <= k * u);
+                }
+            }
+        }
+        (inside as f64 / n.max(1) as f64 * 1e6).round() / 1e6
+    };
+    let optional = |f: &dyn Fn(&HeightResult) -> Option<f64>, worse| {
+        let v: Vec<f64> = runs.iter().map(|r| f(r).unwrap_or(f64::NAN)).collect();
+        spread(seeds, &v, worse)
+    };
     HeightSeeds {
         seeds: seeds.to_vec(),
         mae_m: spread(seeds, &pick(&|r| r.mae_m), Worse::Higher),
@@ -352,10 +416,21 @@ pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
             Worse::Lower,
         ),
         undecided: spread(seeds, &pick(&|r| r.undecided as f64), Worse::Higher),
+        not_servable: spread(seeds, &pick(&|r| r.not_servable as f64), Worse::Higher),
         coverage: spread(seeds, &pick(&|r| r.coverage), Worse::Lower),
         coverage_1sigma: spread(seeds, &pick(&|r| r.coverage_1sigma), Worse::Lower),
+        decision_time_median_s: spread(seeds, &pick(&|r| r.decision_time_median_s), Worse::Higher),
+        decision_time_p95_s: spread(seeds, &pick(&|r| r.decision_time_p95_s), Worse::Higher),
+        rula_cost_mean: optional(&|r| r.rula_cost_mean, Worse::Higher),
+        rula_cost_worst: optional(&|r| r.rula_cost_worst, Worse::Higher),
+        calibrated_offset_m: spread(seeds, &pick(&|r| r.calibration.offset_m), Worse::Higher),
+        coverage_pooled: pooled(&|r| r.interval_sigmas),
+        coverage_1sigma_pooled: pooled(&|_| 1.0),
         confidently_wrong_total: runs.iter().map(|r| r.confidently_wrong).sum(),
         wrong_across_boundary_total: runs.iter().map(|r| r.wrong_across_boundary).sum(),
+        near_boundary_total: runs.iter().map(|r| r.near_boundary).sum(),
+        decided_per_class_total: [0, 1, 2]
+            .map(|k| runs.iter().map(|r| r.decided_per_class[k]).sum()),
         operators_total: runs.iter().map(|r| r.operators.len()).sum(),
         goals,
     }

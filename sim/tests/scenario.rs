@@ -180,6 +180,9 @@ fn handovers() -> ergocell_sim::experiments::Handovers {
         c1_stature_m: [1.50, 1.68],
         c2_stature_m: [1.68, 1.82],
         c3_stature_m: [1.82, 2.00],
+        c1_served_m: [1.44, 1.74],
+        c2_served_m: [1.62, 1.88],
+        c3_served_m: [1.76, 2.06],
     }
 }
 
@@ -197,7 +200,14 @@ fn same_seed_gives_byte_identical_experiment_json() {
     let json = |seed: u64| {
         let mut none = |_: usize, _: usize| {};
         let t = table1(&setup(seed), &handovers(), &[1.6, 1.9], 1, &mut none).unwrap();
-        let h = height(&setup(seed), &handovers(), 2, 3.0, &mut none).unwrap();
+        let people = ergocell_anthropometry::ansur::people().unwrap();
+        let options = ergocell_sim::experiments::HeightOptions {
+            count: 2,
+            idle_secs: 3.0,
+            calibration_sessions: 0,
+            rula: None,
+        };
+        let h = height(&setup(seed), &handovers(), &people, &options, &mut none).unwrap();
         let r = rula_agreement(&setup(seed), &handovers(), &[1.7], 1, &mut none).unwrap();
         format!(
             "{}{}{}",

@@ -7,6 +7,16 @@
 //!
 //! Prints the estimate with its uncertainty (1σ), each estimator, and the class with the frame it was
 //! decided at, or "undecided" and why.
+//!
+//! ```text
+//! ergocell height calibrate --session a.json=1.712 --session b.json=1.655 … [--config config/cell.toml]
+//!                           [--rig config/rig.toml | --up x,y,z] [--dry-run] [--json]
+//! ```
+//!
+//! Measures the pose estimator's ear-landmark offset on sessions of people whose stature was
+//! measured with a stadiometer (at least 5) and writes it into the cell configuration's `[height]`
+//! (`ear_offset_m`, `ear_offset_sigma_m`, `ear_offset_sessions`; the file's comments and layout kept,
+//! written to a temporary file and moved into place).
 
 use std::path::PathBuf;
 
@@ -18,10 +28,13 @@ use super::UsageError;
 
 /// Arguments of `ergocell height`.
 #[derive(Debug, clap::Args)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
 pub struct Args {
+    #[command(subcommand)]
+    pub command: Option<Sub>,
     /// 3D landmark file from `ergocell triangulate` (.json, .csv or .trc).
-    #[arg(long)]
-    pub landmarks: PathBuf,
+    #[arg(long, required = true)]
+    pub landmarks: Option<PathBuf>,
     /// The world's up vector in the file's frame, `x,y,z` (default: the `up` of the rig file).
     #[arg(long, value_parser = parse_up, allow_hyphen_values = true)]
     pub up: Option<UpVector>,
@@ -40,6 +53,165 @@ pub struct Args {
     /// Print the status as JSON.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `ergocell height`'s subcommands.
+#[derive(Debug, clap::Subcommand)]
+pub enum Sub {
+    /// Measure the pose estimator's ear-landmark offset on sessions of people of known stature and
+    /// write it into the cell configuration.
+    Calibrate(CalibrateArgs),
+}
+
+/// Arguments of `ergocell height calibrate`.
+#[derive(Debug, clap::Args)]
+pub struct CalibrateArgs {
+    /// One session: a 3D landmark file of a person standing upright at the station (from
+    /// `ergocell triangulate`, or a recording's landmarks) and their stature measured with a
+    /// stadiometer, metres: `<file>=<stature_m>`. At least 5.
+    #[arg(long = "session", value_parser = parse_session, required = true)]
+    pub sessions: Vec<(PathBuf, f64)>,
+    /// The cell configuration whose `[height]` settings measure, and which the offset is written into.
+    #[arg(long, default_value = "config/cell.toml")]
+    pub config: PathBuf,
+    /// The world's up vector in the files' frame, `x,y,z` (default: the `up` of the rig file).
+    #[arg(long, value_parser = parse_up, allow_hyphen_values = true)]
+    pub up: Option<UpVector>,
+    /// The calibration the landmarks were triangulated with; its `up` is the default for `--up`.
+    #[arg(long, default_value = "config/rig.toml")]
+    pub rig: PathBuf,
+    /// Print the result; do not write the cell configuration.
+    #[arg(long)]
+    pub dry_run: bool,
+    /// Print the result as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn parse_session(s: &str) -> Result<(PathBuf, f64), String> {
+    let (file, stature) = s
+        .rsplit_once('=')
+        .ok_or_else(|| format!("expected <file>=<stature_m>, got {s:?}"))?;
+    let stature_m: f64 = stature
+        .trim()
+        .parse()
+        .map_err(|e| format!("{s:?}: the stature {stature:?} is not a number of metres: {e}"))?;
+    if !(stature_m.is_finite() && (0.5..=2.5).contains(&stature_m)) {
+        return Err(format!(
+            "{s:?}: stature {stature_m} m is not a person's (0.5–2.5 m; centimetres given as metres?)"
+        ));
+    }
+    if file.is_empty() {
+        return Err(format!("{s:?}: no landmark file before '='"));
+    }
+    Ok((PathBuf::from(file), stature_m))
+}
+
+fn calibrate(args: &CalibrateArgs) -> anyhow::Result<()> {
+    use anyhow::Context as _;
+    use ergocell_ergonomics::height::{calibrate_ear_offset, CalibrationSample, EarOffset};
+    let text = std::fs::read_to_string(&args.config).with_context(|| {
+        format!(
+            "cannot read {} (the calibration is written into the cell's own configuration: pass \
+             --config with an existing file)",
+            args.config.display()
+        )
+    })?;
+    let label = args.config.display().to_string();
+    let settings = ergocell_cell::CellSettings::from_toml_str(&text, &label)
+        .map_err(|e| UsageError(e.to_string()))?;
+    let up = resolve_up(args.up, &args.rig)?;
+    let mut config = settings.pipeline(up)?.height;
+    // Measured with no offset subtracted, over every upright frame, never deciding.
+    config.ear_offset = EarOffset::default();
+    config.min_frames = usize::MAX;
+    let mut samples = Vec::new();
+    let mut rows = Vec::new();
+    for (path, measured_m) in &args.sessions {
+        for (other, _) in &args.sessions {
+            if std::ptr::eq(path, other) {
+                break;
+            }
+            if super::output::same_path(path, other) {
+                return Err(UsageError(format!(
+                    "--session {}: the same session given twice",
+                    path.display()
+                ))
+                .into());
+            }
+        }
+        let frames = read_skeletons(path)?;
+        let mut estimator = HeightEstimator::new(config.clone());
+        for f in &frames {
+            estimator.push(f);
+        }
+        let estimate = estimator.estimate().ok_or_else(|| {
+            UsageError(format!(
+                "--session {}: no upright frame in {} frames (the person must stand straight at the \
+                 station, facing the cameras)",
+                path.display(),
+                frames.len()
+            ))
+        })?;
+        let sample = CalibrationSample::from_estimate(&estimate, *measured_m);
+        rows.push(serde_json::json!({
+            "session": path.display().to_string(),
+            "measured_m": measured_m,
+            "estimated_m": sample.estimated_m,
+            "upright_frames": estimate.frames_used,
+        }));
+        samples.push(sample);
+    }
+    let offset = calibrate_ear_offset(&samples).map_err(|e| UsageError(e.to_string()))?;
+    let Some(sessions) = offset.calibrated_sessions else {
+        anyhow::bail!("the calibration returned no session count");
+    };
+    if args.json {
+        let doc =
+            serde_json::json!({ "ear_offset": offset, "sessions": rows, "written": !args.dry_run });
+        println!("{}", serde_json::to_string_pretty(&doc)?);
+    } else {
+        for (r, s) in rows.iter().zip(&samples) {
+            println!(
+                "  {}: measured {:.3} m, estimated {:.3} m uncalibrated ({:+.1} mm)",
+                r["session"].as_str().unwrap_or("?"),
+                s.measured_m,
+                s.estimated_m,
+                (s.estimated_m - s.measured_m) * 1e3
+            );
+        }
+        println!(
+            "ear landmark offset: {:+.1} ± {:.1} mm (1σ) from {sessions} sessions",
+            offset.offset_m * 1e3,
+            offset.sigma_m * 1e3
+        );
+    }
+    if args.dry_run {
+        return Ok(());
+    }
+    let mut doc: toml_edit::DocumentMut = text
+        .parse()
+        .map_err(|e| UsageError(format!("{label}: {e}")))?;
+    if !doc.contains_table("height") {
+        doc["height"] = toml_edit::table();
+    }
+    let round = |x: f64| (x * 1e6).round() / 1e6;
+    doc["height"]["ear_offset_m"] = toml_edit::value(round(offset.offset_m));
+    doc["height"]["ear_offset_sigma_m"] = toml_edit::value(round(offset.sigma_m));
+    doc["height"]["ear_offset_sessions"] = toml_edit::value(i64::try_from(sessions)?);
+    let new_text = doc.to_string();
+    // What is written must read back as a valid configuration with this offset.
+    ergocell_cell::CellSettings::from_toml_str(&new_text, &label)
+        .map_err(|e| anyhow::anyhow!("the calibrated configuration does not read back: {e}"))?;
+    let mut out = super::output::Partial::create("--config", &args.config, true)?;
+    out.write(new_text.as_bytes())?;
+    out.finish()?;
+    if !args.json {
+        println!(
+            "wrote [height] ear_offset_m, ear_offset_sigma_m, ear_offset_sessions into {label}"
+        );
+    }
+    Ok(())
 }
 
 fn print_estimate(e: &HeightEstimate) {
@@ -67,7 +239,13 @@ fn print_estimate(e: &HeightEstimate) {
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let frames = read_skeletons(&args.landmarks)?;
+    if let Some(Sub::Calibrate(c)) = &args.command {
+        return calibrate(c);
+    }
+    let Some(landmarks) = &args.landmarks else {
+        return Err(UsageError("--landmarks is required".to_owned()).into());
+    };
+    let frames = read_skeletons(landmarks)?;
     let mut config = HeightConfig::new(resolve_up(args.up, &args.rig)?);
     config.floor_height_m = args.floor_height_m;
     config.thresholds = ClassThresholds::new(args.c1_below_m, args.c2_up_to_m)
@@ -92,11 +270,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         println!("{}", serde_json::to_string_pretty(&doc)?);
         return Ok(());
     }
-    println!(
-        "{} frames read from {}",
-        frames.len(),
-        args.landmarks.display()
-    );
+    println!("{} frames read from {}", frames.len(), landmarks.display());
     match &status {
         HeightStatus::Decided(d) => {
             print_estimate(&d.estimate);

@@ -19,11 +19,12 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
+use ergocell_ergonomics::height::HandoverRula;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySpec};
 use ergocell_sim::experiments::{
-    self, Adaptation, Handovers, HeightResult, RulaAgreement, Setup, Table1,
+    self, Adaptation, Handovers, HeightOptions, HeightResult, RulaAgreement, Setup, Table1,
 };
 use ergocell_sim::seeds::{self, Goal, Spread};
 use ergocell_sim::{ring_rig, DetectorNoise, RingRigConfig};
@@ -53,6 +54,10 @@ pub enum Experiment {
     Height,
     /// Per-frame RULA agreement (exact and Cohen's κ), noisy pipeline vs ground truth.
     RulaAgreement,
+    /// Each class's RULA-versus-stature curve at its handover point (the truth, averaged over the
+    /// seeds of `--seeds`, default 1..4): writes `handover_rula.toml` into `--out-dir`, the data the
+    /// height decision reads from the trajectories folder.
+    HandoverRula,
 }
 
 impl Experiment {
@@ -62,6 +67,7 @@ impl Experiment {
             Experiment::Adaptation => "adaptation",
             Experiment::Height => "height",
             Experiment::RulaAgreement => "rula_agreement",
+            Experiment::HandoverRula => "handover_rula",
         }
     }
 }
@@ -112,6 +118,13 @@ pub struct Common {
     /// `ergocell report <before> --compare <after>`.
     #[arg(long, global = true)]
     pub record_height: Option<f64>,
+    /// height: calibration sessions (people of the fitting half of ANSUR II) before the operators,
+    /// as `ergocell height calibrate` runs them; 0 = an uncalibrated cell.
+    #[arg(long, global = true, default_value_t = 5)]
+    pub calibration_sessions: usize,
+    /// height: how far above the tragion the simulated detector puts the ear landmarks, metres.
+    #[arg(long, global = true, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub ear_offset_m: f64,
 }
 
 /// The seeds of `--seeds`.
@@ -162,6 +175,7 @@ fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     let T_world_station = cell.T_cell_station();
     let mut points = Vec::new();
     let mut statures = Vec::new();
+    let mut served = Vec::new();
     let layout = TrajectoryLayout::new(&common.trajectories);
     for class in TrajectoryClass::ALL {
         let path = layout.spec(class);
@@ -171,6 +185,8 @@ fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
         let h = &spec.handover;
         points.push(T_world_station * Point3::new(h.forward_m, h.lateral_m, h.height_m));
         statures.push([spec.stature.min_m, spec.stature.max_m]);
+        let (lo, hi) = spec.stature.served_m();
+        served.push([lo, hi]);
     }
     let [forward, lateral, height] = common.before_handover;
     Ok(Handovers {
@@ -181,7 +197,96 @@ fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
         c1_stature_m: statures[0],
         c2_stature_m: statures[1],
         c3_stature_m: statures[2],
+        c1_served_m: served[0],
+        c2_served_m: served[1],
+        c3_served_m: served[2],
     })
+}
+
+/// The classes' RULA-versus-stature curves, `handover_rula.toml` in the trajectories folder (or the
+/// shipped one); `None` when there is none.
+pub fn load_handover_rula(trajectories: &Path) -> anyhow::Result<Option<HandoverRula>> {
+    let path = trajectories.join(HANDOVER_RULA_FILE);
+    if !path.exists() && !ergocell::shipped::falls_back(&path) {
+        return Ok(None);
+    }
+    let (text, label) = ergocell::shipped::read_or_shipped(&path)?;
+    let rula: HandoverRula =
+        toml::from_str(&text).map_err(|e| UsageError(format!("{label}: {e}")))?;
+    rula.check()
+        .map_err(|e| UsageError(format!("{label}: {e}")))?;
+    Ok(Some(rula))
+}
+
+use ergocell::session::provider::HANDOVER_RULA_FILE;
+
+fn height_options(c: &Common) -> anyhow::Result<HeightOptions> {
+    Ok(HeightOptions {
+        count: c.operators.unwrap_or(60),
+        idle_secs: 12.0,
+        calibration_sessions: c.calibration_sessions,
+        rula: load_handover_rula(&c.trajectories)?,
+    })
+}
+
+fn run_handover_rula(c: &Common) -> anyhow::Result<()> {
+    let seeds = c
+        .seeds
+        .as_ref()
+        .map_or_else(|| vec![1, 2, 3, 4], |s| s.0.clone());
+    let rig = load_rig(&c.cameras)?;
+    let handovers = load_handovers(c)?;
+    let pb = progress_bar("handover_rula");
+    let statures = experiments::handover_rula_statures();
+    let rula = experiments::handover_rula(
+        &rig,
+        &handovers,
+        &statures,
+        c.cycles,
+        &seeds,
+        &mut |done, total| {
+            pb.set_length(total as u64);
+            pb.set_position(done as u64);
+        },
+    )?;
+    pb.finish_and_clear();
+    std::fs::create_dir_all(&c.out_dir)
+        .with_context(|| format!("creating {}", c.out_dir.display()))?;
+    let seeds_text: Vec<String> = seeds.iter().map(u64::to_string).collect();
+    let text = format!(
+        "# Each class's RULA-versus-stature curve at its handover point: the mean true RULA grand score\n\
+         # (worse side) of an operator of each stature (Drillis & Contini's proportions) holding the part at\n\
+         # the class's handover point, over {} handover cycles and seeds {}. The height decision reads it:\n\
+         # across a class boundary it chooses the class with the lowest expected score. Regenerate after\n\
+         # changing a handover point (review the diff):\n\
+         #   ergocell sim handover-rula --seeds {}..{} --out-dir trajectories\n{}",
+        c.cycles,
+        seeds_text.join(", "),
+        seeds.first().copied().unwrap_or(1),
+        seeds.last().copied().unwrap_or(1),
+        toml::to_string(&rula)?
+    );
+    let path = c.out_dir.join(HANDOVER_RULA_FILE);
+    std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
+    if !c.json {
+        let plot = c.out_dir.join("handover_rula.svg");
+        line_chart(
+            &plot,
+            "Each class's mean RULA grand score at its handover point, per stature (truth)",
+            "stature, m",
+            "mean RULA grand score while holding",
+            &rula.statures_m,
+            &[
+                ("c1", &rula.c1, COLORS[0], false),
+                ("c2", &rula.c2, COLORS[1], false),
+                ("c3", &rula.c3, COLORS[2], false),
+            ],
+            (1.0, 7.0),
+        )?;
+        println!("wrote {}", path.display());
+        println!("wrote {}", plot.display());
+    }
+    Ok(())
 }
 
 fn progress_bar(what: &str) -> ProgressBar {
@@ -202,6 +307,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
         );
     }
+    if matches!(args.experiment, Experiment::HandoverRula) {
+        return run_handover_rula(c);
+    }
     if let Some(SeedRange(seeds)) = &c.seeds {
         return run_seeds(args, seeds);
     }
@@ -209,10 +317,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         rig: load_rig(&c.cameras)?,
         noise: DetectorNoise {
             pixel_sigma_px: c.noise_px,
+            ear_offset_m: c.ear_offset_m,
             ..DetectorNoise::default()
         },
         seed: c.seed,
     };
+    setup
+        .noise
+        .validate()
+        .map_err(|e| UsageError(e.to_string()))?;
     let handovers = load_handovers(c)?;
     let name = args.experiment.name();
     let pb = progress_bar(name);
@@ -223,6 +336,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     std::fs::create_dir_all(&c.out_dir)
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
     let (value, figures) = match args.experiment {
+        Experiment::HandoverRula => return run_handover_rula(c),
         Experiment::Table1 => {
             let r = experiments::table1(
                 &setup,
@@ -268,13 +382,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             (serde_json::to_value(&r)?, plot_adaptation(&r, &c.out_dir)?)
         }
         Experiment::Height => {
-            let r = experiments::height(
-                &setup,
-                &handovers,
-                c.operators.unwrap_or(60),
-                12.0,
-                &mut tick,
-            )?;
+            let people = ergocell_anthropometry::ansur::people()?;
+            let r =
+                experiments::height(&setup, &handovers, &people, &height_options(c)?, &mut tick)?;
             pb.finish_and_clear();
             if !c.json {
                 print_height(&r);
@@ -436,8 +546,10 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
     let rig = load_rig(&c.cameras)?;
     let noise = DetectorNoise {
         pixel_sigma_px: c.noise_px,
+        ear_offset_m: c.ear_offset_m,
         ..DetectorNoise::default()
     };
+    noise.validate().map_err(|e| UsageError(e.to_string()))?;
     let handovers = load_handovers(c)?;
     let name = args.experiment.name();
     std::fs::create_dir_all(&c.out_dir)
@@ -454,6 +566,7 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
         seed,
     };
     let (value, figures) = match args.experiment {
+        Experiment::HandoverRula => return run_handover_rula(c),
         Experiment::Table1 => {
             let operators = statures(c.operators.unwrap_or(5));
             let runs = each(seeds, &pb, |s| {
@@ -592,14 +705,10 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
             (serde_json::to_value(&sum)?, vec![path])
         }
         Experiment::Height => {
+            let people = ergocell_anthropometry::ansur::people()?;
+            let options = height_options(c)?;
             let runs = each(seeds, &pb, |s| {
-                experiments::height(
-                    &setup(s),
-                    &handovers,
-                    c.operators.unwrap_or(60),
-                    12.0,
-                    &mut |_, _| {},
-                )
+                experiments::height(&setup(s), &handovers, &people, &options, &mut |_, _| {})
             })?;
             pb.finish_and_clear();
             let sum = seeds::height(seeds, &runs);
@@ -626,8 +735,35 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
                     spread_text(sum.coverage_1sigma.as_ref(), 1.0, 3)
                 );
                 println!(
-                    "  confidently wrong {} of {} operators; the neighbouring class across a boundary: {}",
-                    sum.confidently_wrong_total, sum.operators_total, sum.wrong_across_boundary_total
+                    "  coverage pooled   ±kσ {:.3}, ±1σ {:.3} over all {} operators",
+                    sum.coverage_pooled, sum.coverage_1sigma_pooled, sum.operators_total
+                );
+                println!(
+                    "  decided after     median {} s, p95 {} s",
+                    spread_text(sum.decision_time_median_s.as_ref(), 1.0, 2),
+                    spread_text(sum.decision_time_p95_s.as_ref(), 1.0, 2)
+                );
+                println!(
+                    "  RULA cost         mean {}, worst {}",
+                    spread_text(sum.rula_cost_mean.as_ref(), 1.0, 3),
+                    spread_text(sum.rula_cost_worst.as_ref(), 1.0, 3)
+                );
+                println!(
+                    "  calibrated offset {} mm",
+                    spread_text(sum.calibrated_offset_m.as_ref(), 1000.0, 1)
+                );
+                println!(
+                    "  not servable      {} (no trajectory serves their stature)",
+                    spread_text(sum.not_servable.as_ref(), 1.0, 1)
+                );
+                let [c1, c2, c3] = sum.decided_per_class_total;
+                println!(
+                    "  confidently wrong {} of {} operators; the neighbouring class across a boundary: {} \
+                     ({} within 2 cm of a boundary); decided c1 {c1}, c2 {c2}, c3 {c3}",
+                    sum.confidently_wrong_total,
+                    sum.operators_total,
+                    sum.wrong_across_boundary_total,
+                    sum.near_boundary_total
                 );
                 print_goals(&sum.goals);
             }
@@ -856,6 +992,26 @@ fn print_adaptation(r: &Adaptation) {
 }
 
 fn print_height(r: &HeightResult) {
+    let o = &r.calibration;
+    println!(
+        "ear offset: {:+.1} ± {:.1} mm ({}); the detector's true offset {:+.1} mm",
+        o.offset_m * 1e3,
+        o.sigma_m * 1e3,
+        o.calibrated_sessions
+            .map_or("uncalibrated".to_owned(), |n| format!(
+                "calibrated on {n} sessions"
+            )),
+        r.detector_ear_offset_m * 1e3
+    );
+    println!(
+        "decided after standing at the station: median {:.2} s, p95 {:.2} s; RULA cost of the decision: {}",
+        r.decision_time_median_s,
+        r.decision_time_p95_s,
+        match (r.rula_cost_mean, r.rula_cost_worst) {
+            (Some(m), Some(w)) => format!("mean {m:.3}, worst {w:.3}"),
+            _ => "no curves".to_owned(),
+        }
+    );
     println!(
         "{} operators: MAE {:.2} cm; class accuracy {:.1}% overall, {:.1}% beyond 2 cm of a boundary; \
          {} undecided, {} confidently wrong, {} given the neighbouring class across a boundary",
@@ -1224,7 +1380,7 @@ fn plot_height(r: &HeightResult, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
         .margin(15)
         .x_label_area_size(45)
         .y_label_area_size(60)
-        .build_cartesian_2d(1.48..2.02, -4.0..4.0)
+        .build_cartesian_2d(1.38..2.08, -4.0..4.0)
         .map_err(plot_err)?;
     chart
         .configure_mesh()

@@ -38,6 +38,10 @@ struct DemoSigner {
     locks: Vec<(TrajectoryClass, String, String, String)>,
 }
 
+/// The classes' RULA-versus-stature curves, in the trajectories folder (`ergocell sim handover-rula`
+/// writes it).
+pub const HANDOVER_RULA_FILE: &str = "handover_rula.toml";
+
 /// The principal of the demo's throwaway key.
 pub const DEMO_PRINCIPAL: &str = "ergocell-demo-key@simulator.invalid";
 
@@ -360,6 +364,26 @@ impl FileTrajectories {
 }
 
 impl TrajectoryProvider for FileTrajectories {
+    fn handover_rula(
+        &mut self,
+    ) -> Result<Option<ergocell_ergonomics::height::HandoverRula>, ProviderError> {
+        let path = self.layout.dir().join(HANDOVER_RULA_FILE);
+        let present = if self.trajectories_shipped {
+            crate::shipped::file(&path).is_some()
+        } else {
+            path.exists()
+        };
+        if !present {
+            return Ok(None);
+        }
+        let text = self.read(&path)?;
+        let rula: ergocell_ergonomics::height::HandoverRula =
+            toml::from_str(&text).map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
+        rula.check()
+            .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
+        Ok(Some(rula))
+    }
+
     fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
         let path = self.layout.spec(class);
         let spec = TrajectorySpec::from_toml_str(&self.read(&path)?)

@@ -131,6 +131,12 @@ impl SessionMachine {
                 .map_or([0.5, 0.5], |(lo, hi)| [lo, hi])
         });
         pipeline.height.served_m = Some(ServedStatures::new(served)?);
+        // Curves that cannot be read are a configuration error, not a silent fall-back.
+        pipeline.height.handover_rula =
+            provider.handover_rula().map_err(|e| CellError::Config {
+                file: "the classes' handover RULA curves".to_owned(),
+                reason: e.to_string(),
+            })?;
         let pairs = rig.pairs().iter().map(|p| (p.left, p.right)).collect();
         let cameras = rig
             .cameras()

@@ -25,7 +25,7 @@ mod machine;
 
 pub use machine::{SessionMachine, SessionSummary};
 
-use ergocell_ergonomics::height::DecisionBasis;
+use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
 use ergocell_perception::View2;
 use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
@@ -266,6 +266,12 @@ pub trait TrajectoryProvider {
     /// trajectory file's served range, covered by the lock's hash): the class's own statures
     /// widened by what the height decision can reach across a boundary.
     fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError>;
+    /// The classes' RULA-versus-stature curves at their handover points (measured on the digital
+    /// twin, shipped beside the trajectories), which the height decision weighs across a class
+    /// boundary; `None`: there are none, and the decision takes the most probable class.
+    fn handover_rula(&mut self) -> Result<Option<HandoverRula>, ProviderError> {
+        Ok(None)
+    }
 }
 
 /// The trajectory class a height class selects.
