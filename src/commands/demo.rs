@@ -437,6 +437,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .map_err(|e| anyhow::anyhow!(e))?;
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
+    // The class is decided after 30 upright frames at the station (1 s at 30 Hz) and the first leg
+    // takes 5 s: the operator stands a second longer before reaching, so the part is there, and at
+    // rest, before their hand is.
+    script.idle_secs += 1.0;
     // The cell's cycle sets the operator's: after taking a part the operator works on it at the
     // station (the script's rest) while the robot goes home, takes the next part and brings it.
     script.rest_secs = operator_rest_secs(&lock, &settings);
