@@ -558,8 +558,9 @@ pub struct HeightDecision {
     pub interval_m: [f64; 2],
     /// The probability that `class` is the operator's true class.
     pub probability: f64,
-    /// The expected RULA grand score with `class` minus with the operator's true class (≥ 0 up to
-    /// the curves' noise; 0 when the interval lies in one class); `None` without curves.
+    /// The expected RULA grand score with `class` minus with the operator's true class (0 when the
+    /// interval lies in one class; negative when the chosen class's handover suits this operator
+    /// better than their own class's would); `None` without curves.
     pub expected_rula_cost: Option<f64>,
     /// Every class the interval touches, with its probability and expected score.
     pub options: Vec<ClassOption>,
