@@ -55,6 +55,11 @@ pub struct Snapshot {
     pub held_reason: Option<String>,
     /// The decided height class (`c1`…), once decided.
     pub class: Option<String>,
+    /// The probability that `class` is the operator's true class, once decided.
+    pub class_probability: Option<f64>,
+    /// Whether the stature interval straddled a class boundary (the operator was served by the
+    /// class with the lower expected RULA, or the more probable one), once decided.
+    pub across_boundary: Option<bool>,
     /// The worse side's RULA action level of the latest assessed frame.
     pub action_level: Option<u8>,
     pub grand_score: Option<u8>,
@@ -141,6 +146,10 @@ impl Display {
             .then(|| machine.hold_reason().map(str::to_owned))
             .flatten();
         snap.class.clone_from(&machine.summary().class);
+        snap.class_probability = machine.decision().map(|d| d.probability);
+        snap.across_boundary = machine
+            .decision()
+            .map(|d| d.basis != ergocell_ergonomics::height::DecisionBasis::Interval);
         snap.warnings = active.values().cloned().collect();
         snap.seq += 1;
         snap.sent_unix_ms = unix_ms();

@@ -546,7 +546,8 @@ pub fn session_state_message(
     stamp_nanos: i64,
     reason: &str,
 ) -> SessionState {
-    let estimate = machine.decision().map(|d| &d.estimate);
+    let decision = machine.decision();
+    let estimate = decision.map(|d| &d.estimate);
     SessionState {
         header: Header::new(stamp_nanos, "world"),
         state: machine.state().name().to_owned(),
@@ -561,6 +562,11 @@ pub fn session_state_message(
         cameras_fresh: u32::try_from(machine.cameras_fresh()).unwrap_or(u32::MAX),
         stereo_pairs_tracking: u32::try_from(machine.pairs_tracking()).unwrap_or(u32::MAX),
         trajectory_approved_by: machine.approved_by(),
+        height_decision_basis: decision.map_or(String::new(), |d| d.basis.name().to_owned()),
+        height_class_probability: decision.map_or(f64::NAN, |d| d.probability),
+        height_expected_rula_cost: decision
+            .and_then(|d| d.expected_rula_cost)
+            .unwrap_or(f64::NAN),
     }
 }
 

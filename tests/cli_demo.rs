@@ -41,6 +41,11 @@ fn demo_runs_a_whole_session_and_records_it() {
     for expected in [
         "DEMO APPROVAL",
         "→ class c2",
+        // The default operator stands 1 cm above the c1/c2 boundary: served across it, the
+        // decision's basis, probability and expected cost said.
+        "(true 1.690 m) → class c2",
+        "across a boundary: the lowest expected RULA; probability 0.",
+        "decision:       expected_rula (probability 0.",
         &format!("= the shipped lock {sha}, same samples"),
         "locked: sha256 ",
         "robot ← HOLD",
@@ -71,6 +76,28 @@ fn demo_runs_a_whole_session_and_records_it() {
     );
 
     let bytes = std::fs::read(&out).unwrap();
+    // The recording carries the class decision as fields: its basis, probability and expected cost.
+    let decided: Vec<ergocell_bridge::msg::SessionState> = mcap::MessageStream::new(&bytes)
+        .unwrap()
+        .map(|m| m.unwrap())
+        .filter(|m| m.channel.topic == "/ergocell/session_state")
+        .map(|m| {
+            ergocell_bridge::cdr::decode::<ergocell_bridge::msg::SessionState>(&m.data).unwrap()
+        })
+        .filter(|s| s.state == "class_decided")
+        .collect();
+    let d = decided
+        .first()
+        .expect("no class_decided session state recorded");
+    assert_eq!(
+        (d.height_class.as_str(), d.height_decision_basis.as_str()),
+        ("c2", "expected_rula")
+    );
+    assert!(
+        (0.5..1.0).contains(&d.height_class_probability)
+            && d.height_expected_rula_cost.abs() <= 0.2,
+        "{d:?}"
+    );
     let topics: BTreeSet<String> = mcap::MessageStream::new(&bytes)
         .unwrap()
         .map(|m| m.unwrap().channel.topic.clone())
@@ -265,4 +292,45 @@ fn demo_in(dir: &Path, args: &[&str]) -> std::process::Output {
         .args(args)
         .output()
         .unwrap()
+}
+
+/// Near a boundary the cell may serve an operator with the neighbouring class (its trajectory is
+/// validated for their stature): the simulated operator then reaches where that class's robot brings
+/// the part, and takes every part. A 1.675 m operator (class c1, 5 mm below the boundary) is served
+/// by c2 on seed 42, at the lower expected RULA.
+#[test]
+fn an_operator_served_by_the_neighbouring_class_takes_every_part() {
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-demo-neighbour.mcap");
+    let run = demo_in(
+        Path::new(env!("CARGO_MANIFEST_DIR")),
+        &[
+            "--stature-m",
+            "1.675",
+            "--cycles",
+            "2",
+            "--no-faults",
+            "--force",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+    );
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    for expected in [
+        "(true 1.675 m) → class c2",
+        "the operator (class c1) reaches for class c2's handover point (2 cycle(s))",
+        "decision:       expected_rula (probability 0.",
+        "true class c1",
+        "(2 part(s) taken at the handover point)",
+        "session:        session_ended",
+    ] {
+        assert!(
+            stdout.contains(expected),
+            "missing `{expected}` in:\n{stdout}"
+        );
+    }
 }

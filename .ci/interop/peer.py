@@ -14,6 +14,7 @@ field as in the .msg files; Cyclone serialises XCDR1 for these plain types. Prin
 stdout at the end.
 """
 
+import math
 import json
 import os
 import sys
@@ -99,6 +100,9 @@ class SessionState(IdlStruct, typename="ergocell_msgs::msg::dds_::SessionState_"
     cameras_fresh: uint32
     stereo_pairs_tracking: uint32
     trajectory_approved_by: sequence[str]
+    height_decision_basis: str
+    height_class_probability: float64
+    height_expected_rula_cost: float64
 
 
 @dataclass
@@ -250,6 +254,7 @@ def main():
         "lock_sha256": lock["lock_sha256"],
         "trajectory_sha256_seen": [],
         "height_class_seen": [],
+        "class_decisions_seen": [],
         "skeletons": 0,
         "skeleton_points_max": 0,
         "skeleton_frame_ids": [],
@@ -349,6 +354,12 @@ def main():
                 report["trajectory_sha256_seen"].append(s.trajectory_sha256)
             if s.height_class and s.height_class not in report["height_class_seen"]:
                 report["height_class_seen"].append(s.height_class)
+            if s.height_decision_basis:
+                finite = lambda x: round(x, 3) if math.isfinite(x) else None
+                d = [s.height_class, s.height_decision_basis, finite(s.height_class_probability),
+                     finite(s.height_expected_rula_cost)]
+                if d not in report["class_decisions_seen"]:
+                    report["class_decisions_seen"].append(d)
             if s.state == "session_ended":
                 ended = True
         if now >= next_js:

@@ -32,7 +32,7 @@ trap 'rm -rf "$tmp"' EXIT
 # (a lock covers it) and approved with the key.
 mkdir -p "$tmp/traj" "$tmp/cell"
 cp -r config/. "$tmp/cell/"
-cp trajectories/c*.toml "$tmp/traj/"
+cp trajectories/c*.toml trajectories/handover_rula.toml "$tmp/traj/"
 ssh-keygen -q -t ed25519 -N "" -C "ergocell interop test key (not a sign-off)" -f "$tmp/interop_key"
 printf 'interop@ci.invalid namespaces="ergocell-trajectory-approval" %s\n' "$(cat "$tmp/interop_key.pub")" \
   > "$tmp/cell/approvers/allowed_signers"
@@ -301,6 +301,10 @@ if len(t) >= 2:
 check(r["holds"] >= 1, "the hold (empty JointTrajectory) reached the controller")
 check(r["lock_sha256"] in r["trajectory_sha256_seen"], "the session state carried the lock's sha256")
 check("c2" in r["height_class_seen"], "the session state carried the height class")
+cd = r["class_decisions_seen"]
+check(any(c == "c2" and b == "expected_rula" and p is not None and 0.5 <= p < 1.0 and k is not None
+          and abs(k) <= 0.2 for c, b, p, k in cd),
+      f"the session state carried the near-boundary decision (class, basis, probability, expected RULA cost): {cd}")
 check("working" in r["states"] and "held" in r["states"] and r["states"][-1] == "session_ended",
       "session states working, held, session_ended arrived (reliable, transient local)")
 check(r["skeletons"] > 100 and r["skeleton_points_max"] >= 30 and r["skeleton_frame_ids"] == ["world"],

@@ -240,6 +240,9 @@ pub struct SessionState {
     pub cameras_fresh: u32,
     pub stereo_pairs_tracking: u32,
     pub trajectory_approved_by: Vec<String>,
+    pub height_decision_basis: String,
+    pub height_class_probability: f64,
+    pub height_expected_rula_cost: f64,
 }
 
 impl RosMessage for SessionState {
@@ -259,6 +262,9 @@ impl RosMessage for SessionState {
         ("uint32", "cameras_fresh"),
         ("uint32", "stereo_pairs_tracking"),
         ("string[]", "trajectory_approved_by"),
+        ("string", "height_decision_basis"),
+        ("float64", "height_class_probability"),
+        ("float64", "height_expected_rula_cost"),
     ];
 }
 

@@ -86,6 +86,13 @@ pub struct Facts {
     pub height_m: Option<f64>,
     pub height_uncertainty_m: Option<f64>,
     pub height_class: Option<String>,
+    /// How the class was decided (`interval`, `expected_rula`, `most_probable`); `None` when not
+    /// decided or recorded before the decision carried it.
+    pub decision_basis: Option<String>,
+    /// The probability that the class is the operator's true class.
+    pub class_probability: Option<f64>,
+    /// Expected RULA grand score with the class minus with the operator's true class.
+    pub expected_rula_cost: Option<f64>,
     pub trajectory_sha256: Option<String>,
     pub approved_by: Vec<String>,
     pub states: Vec<StateChange>,
@@ -776,6 +783,11 @@ fn facts(states: &[Stamped<SessionState>], t0: u64) -> Facts {
         height_m: measured.map(|s| s.message.height_m),
         height_uncertainty_m: measured.and_then(|s| finite(s.message.height_uncertainty_m)),
         height_class: decided.map(|s| s.message.height_class.clone()),
+        decision_basis: decided
+            .map(|s| s.message.height_decision_basis.clone())
+            .filter(|b| !b.is_empty()),
+        class_probability: decided.and_then(|s| finite(s.message.height_class_probability)),
+        expected_rula_cost: decided.and_then(|s| finite(s.message.height_expected_rula_cost)),
         trajectory_sha256: locked.map(|s| s.message.trajectory_sha256.clone()),
         approved_by: locked.map_or_else(Vec::new, |s| s.message.trajectory_approved_by.clone()),
         states: states

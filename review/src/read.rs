@@ -271,7 +271,7 @@ impl Reader {
             topics::ERGONOMICS => take(&schema, &m.data, t, &mut rec.ergonomics),
             topics::REBA => take(&schema, &m.data, t, &mut rec.reba),
             topics::WARNINGS => take(&schema, &m.data, t, &mut rec.warnings),
-            topics::SESSION_STATE => take(&schema, &m.data, t, &mut rec.states),
+            topics::SESSION_STATE => take_session_state(&schema, &m.data, t, &mut rec.states),
             topics::ROBOT_MARKERS => take(&schema, &m.data, t, &mut rec.robot_markers),
             topics::JOINT_TRAJECTORY => take(&schema, &m.data, t, &mut rec.trajectories),
             topics::CONTROLLER_EVENTS => take(&schema, &m.data, t, &mut rec.controller_events),
@@ -397,6 +397,60 @@ fn take<M: RosMessage + DeserializeOwned>(
     into.push(Stamped {
         log_time_nanos,
         message,
+    });
+    Ok(())
+}
+
+/// `SessionState` as recorded before it carried the height decision's basis, probability and
+/// expected RULA cost (the same fields, without the last three): such recordings stay reviewable.
+#[derive(serde::Deserialize)]
+struct SessionStateWithoutDecision {
+    header: ergocell_bridge::msg::Header,
+    state: String,
+    reason: String,
+    height_m: f64,
+    height_uncertainty_m: f64,
+    height_class: String,
+    trajectory_sha256: String,
+    robot_held: bool,
+    cameras_fresh: u32,
+    stereo_pairs_tracking: u32,
+    trajectory_approved_by: Vec<String>,
+}
+
+/// Decodes a `SessionState`, or one of the layout before the decision's fields (those then NaN or
+/// empty: unknown).
+fn take_session_state(
+    schema: &str,
+    data: &[u8],
+    log_time_nanos: u64,
+    into: &mut Vec<Stamped<SessionState>>,
+) -> Result<(), String> {
+    let current = take(schema, data, log_time_nanos, into);
+    if current.is_ok() || schema != SessionState::type_name() {
+        return current;
+    }
+    let Ok(old) = cdr::decode::<SessionStateWithoutDecision>(data) else {
+        return current;
+    };
+    into.push(Stamped {
+        log_time_nanos,
+        message: SessionState {
+            header: old.header,
+            state: old.state,
+            reason: old.reason,
+            height_m: old.height_m,
+            height_uncertainty_m: old.height_uncertainty_m,
+            height_class: old.height_class,
+            trajectory_sha256: old.trajectory_sha256,
+            robot_held: old.robot_held,
+            cameras_fresh: old.cameras_fresh,
+            stereo_pairs_tracking: old.stereo_pairs_tracking,
+            trajectory_approved_by: old.trajectory_approved_by,
+            height_decision_basis: String::new(),
+            height_class_probability: f64::NAN,
+            height_expected_rula_cost: f64::NAN,
+        },
     });
     Ok(())
 }
@@ -543,6 +597,60 @@ mod tests {
             state: name.to_owned(),
             ..SessionState::default()
         }
+    }
+
+    /// A recording made before `SessionState` carried the decision's fields still reads: the
+    /// decision's fields are unknown, the rest as recorded; a damaged payload is still refused.
+    #[test]
+    fn a_session_state_without_the_decision_fields_still_reads() {
+        #[derive(serde::Serialize)]
+        struct Old {
+            header: ergocell_bridge::msg::Header,
+            state: String,
+            reason: String,
+            height_m: f64,
+            height_uncertainty_m: f64,
+            height_class: String,
+            trajectory_sha256: String,
+            robot_held: bool,
+            cameras_fresh: u32,
+            stereo_pairs_tracking: u32,
+            trajectory_approved_by: Vec<String>,
+        }
+        let old = cdr::encode(&Old {
+            header: ergocell_bridge::msg::Header::default(),
+            state: "class_decided".into(),
+            reason: "r".into(),
+            height_m: 1.7,
+            height_uncertainty_m: 0.01,
+            height_class: "c2".into(),
+            trajectory_sha256: String::new(),
+            robot_held: false,
+            cameras_fresh: 6,
+            stereo_pairs_tracking: 3,
+            trajectory_approved_by: vec!["a".into()],
+        })
+        .unwrap();
+        let schema = SessionState::type_name();
+        let mut into = Vec::new();
+        take_session_state(&schema, &old, 5, &mut into).unwrap();
+        let m = &into[0].message;
+        assert_eq!((m.height_class.as_str(), m.cameras_fresh), ("c2", 6));
+        assert_eq!(m.trajectory_approved_by, ["a"]);
+        assert!(m.height_class_probability.is_nan() && m.height_decision_basis.is_empty());
+        // The current layout reads with its fields.
+        let now = cdr::encode(&SessionState {
+            height_decision_basis: "expected_rula".into(),
+            height_class_probability: 0.79,
+            height_expected_rula_cost: -0.02,
+            ..state("class_decided")
+        })
+        .unwrap();
+        take_session_state(&schema, &now, 6, &mut into).unwrap();
+        assert_eq!(into[1].message.height_class_probability, 0.79);
+        // Cut short, neither layout reads.
+        assert!(take_session_state(&schema, &old[..old.len() - 9], 7, &mut into).is_err());
+        assert_eq!(into.len(), 2);
     }
 
     #[test]

@@ -406,6 +406,9 @@ pub struct Simulation {
     rest: Posture,
     idle: Posture,
     reach: Vec<(Point3<f64>, Posture)>,
+    /// Each cycle's drawn offset of the hand's target from the handover point (kept so a retarget
+    /// moves the point and keeps the operator's variation).
+    reach_offsets_m: Vec<nalgebra::Vector3<f64>>,
     /// The floor pick's solved posture, if the script has one.
     pick: Option<Posture>,
     rng: ChaCha8Rng,
@@ -454,15 +457,17 @@ impl Simulation {
         };
         rest.neck_flexion_rad = draw(&mut motion, habits.rest_neck_flexion_rad);
         let mut reach = Vec::with_capacity(script.cycles);
+        let mut reach_offsets_m = Vec::with_capacity(script.cycles);
         for _ in 0..script.cycles {
-            let target = script.handover_m
-                + nalgebra::Vector3::new(
-                    gaussian(&mut motion),
-                    gaussian(&mut motion),
-                    gaussian(&mut motion),
-                ) * script.target_sigma_m;
+            let offset = nalgebra::Vector3::new(
+                gaussian(&mut motion),
+                gaussian(&mut motion),
+                gaussian(&mut motion),
+            ) * script.target_sigma_m;
+            let target = script.handover_m + offset;
             let sol = solve_reach(&operator, &rest, &target, &config.reach)?;
             reach.push((target, sol.posture));
+            reach_offsets_m.push(offset);
         }
         // No random draws: a script without a pick is unchanged, one with it differs only there.
         let pick = match &script.floor_pick {
@@ -481,6 +486,7 @@ impl Simulation {
             rest,
             idle,
             reach,
+            reach_offsets_m,
             pick,
             rng,
             next: 0,
@@ -516,6 +522,56 @@ impl Simulation {
     /// The floor pick's solved posture, if the script has one.
     pub fn floor_pick_posture(&self) -> Option<&Posture> {
         self.pick.as_ref()
+    }
+
+    /// When cycle `cycle`'s reach begins, nanoseconds (the script's clock).
+    fn cycle_start_nanos(&self, cycle: usize) -> i64 {
+        let sc = &self.script;
+        let mut t = sc.walk_in_secs + sc.idle_secs + cycle as f64 * sc.cycle_secs();
+        if let Some(p) = &sc.floor_pick {
+            if p.after_cycle <= cycle {
+                t += p.duration_secs();
+            }
+        }
+        self.config.start_nanos + (t * 1e9).round() as i64
+    }
+
+    /// Moves the handover point for every cycle whose reach begins at or after `from_nanos` (the
+    /// operator reaches where the robot brings the part: the cell may decide a class other than the
+    /// operator's own near a boundary). Each cycle keeps its own drawn variation around the point;
+    /// the reaching postures are solved again. A cycle already begun keeps its target. Returns the
+    /// number of cycles moved.
+    pub fn retarget_handover(
+        &mut self,
+        handover_m: Point3<f64>,
+        from_nanos: i64,
+    ) -> Result<usize, SimError> {
+        for v in [handover_m.x, handover_m.y, handover_m.z] {
+            if !v.is_finite() {
+                return Err(SimError::BadParameter {
+                    name: "handover_m",
+                    value: v,
+                    why: "not finite",
+                });
+            }
+        }
+        let first = (0..self.script.cycles)
+            .find(|&c| self.cycle_start_nanos(c) >= from_nanos)
+            .unwrap_or(self.script.cycles);
+        let mut moved = Vec::with_capacity(self.script.cycles - first);
+        for c in first..self.script.cycles {
+            let target = handover_m + self.reach_offsets_m[c];
+            let sol = solve_reach(&self.operator, &self.rest, &target, &self.config.reach)?;
+            moved.push((target, sol.posture));
+        }
+        let n = moved.len();
+        for (k, r) in moved.into_iter().enumerate() {
+            self.reach[first + k] = r;
+        }
+        if first == 0 {
+            self.script.handover_m = handover_m;
+        }
+        Ok(n)
     }
 
     /// The phase and posture at time `t_nanos` (pure: no randomness, no state).

@@ -283,3 +283,54 @@ fn adaptation_reports_operators_outside_the_validated_statures_as_not_served() {
     let json = serde_json::to_value(&r).unwrap();
     assert!(json["mean_grand_score_after"][0].is_null());
 }
+
+/// The cell may decide a neighbouring class near a boundary: the simulated operator then reaches
+/// where the robot brings the part. Cycles not begun move by exactly the shift (each keeping its own
+/// drawn variation), a cycle already begun keeps its target, the rest of the session is unchanged.
+#[test]
+fn retargeting_moves_the_cycles_not_yet_begun_by_the_shift() {
+    let make = || {
+        let mut script = SessionScript::new(c2_handover());
+        script.cycles = 3;
+        Simulation::new(
+            reference_rig(),
+            Operator::new(1.69).unwrap(),
+            script,
+            SimConfig::new(11),
+        )
+        .unwrap()
+    };
+    let base = make();
+    let shift = nalgebra::Vector3::new(0.0, 0.02, -0.05);
+    let sc = base.script().clone();
+    let cycle_nanos = ((sc.reach_secs + sc.hold_secs + sc.return_secs + sc.rest_secs) * 1e9) as i64;
+    let first_nanos = ((sc.walk_in_secs + sc.idle_secs) * 1e9) as i64;
+    // During the first cycle's reach: cycles 1 and 2 move, cycle 0 keeps its target.
+    let mut moved = make();
+    let n = moved
+        .retarget_handover(c2_handover() + shift, first_nanos + 1_000_000)
+        .unwrap();
+    assert_eq!(n, 2);
+    let hold = |sim: &Simulation, cycle: i64| {
+        let t =
+            first_nanos + cycle * cycle_nanos + ((sc.reach_secs + 0.5 * sc.hold_secs) * 1e9) as i64;
+        let (phase, _, target) = sim.posture_at(t);
+        assert!(matches!(phase, Phase::Hold { .. }), "{phase:?}");
+        target.unwrap()
+    };
+    assert_eq!(hold(&base, 0), hold(&moved, 0));
+    for c in 1..3 {
+        let d = hold(&moved, c) - hold(&base, c);
+        assert!((d - shift).norm() < 1e-12, "cycle {c}: moved by {d:?}");
+    }
+    // The hand reaches the moved point: its pose differs from the base's at the hold.
+    let t = first_nanos + cycle_nanos + ((sc.reach_secs + 0.5 * sc.hold_secs) * 1e9) as i64;
+    assert_ne!(base.posture_at(t).1, moved.posture_at(t).1);
+    // Before the first reach everything moves; a non-finite point is refused.
+    let mut all = make();
+    assert_eq!(all.retarget_handover(c2_handover() + shift, 0).unwrap(), 3);
+    assert_eq!(all.script().handover_m, c2_handover() + shift);
+    assert!(all
+        .retarget_handover(Point3::new(f64::NAN, 0.0, 1.0), 0)
+        .is_err());
+}

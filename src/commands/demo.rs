@@ -76,8 +76,9 @@ pub struct Args {
     /// Folder of the trajectory files and `locks/`. Default: the shipped `trajectories/`.
     #[arg(long)]
     pub trajectories: Option<PathBuf>,
-    /// The simulated operator's stature, metres.
-    #[arg(long, default_value_t = 1.75)]
+    /// The simulated operator's stature, metres (default 1 cm above the c1/c2 boundary: served
+    /// across the boundary, with the decision's probability and expected RULA cost).
+    #[arg(long, default_value_t = 1.69)]
     pub stature_m: f64,
     /// Handover cycles (0..=10000; 1655 ≈ an 8-hour shift). The session may run for the script's duration (walk in, height,
     /// cycles × 17.4 s: the robot's round trip per part, floor pick, walk out) plus 30 s; then it is stopped with the robot held.
@@ -432,9 +433,23 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let lock = LockFile::from_toml_str(true_class, &lock_text)
         .map_err(|e| anyhow::anyhow!("lock of {true_class}: {e}"))?;
     let [hx, hy, hz] = lock.summary.handover_station_m;
-    let geometry = provider
+    let mut geometry = provider
         .robot_geometry(true_class)
         .map_err(|e| anyhow::anyhow!(e))?;
+    // Near a boundary the cell may serve the operator with the neighbouring class (its trajectory is
+    // validated for their stature): the operator then reaches where that class's robot brings the part.
+    let mut handovers = Vec::new();
+    for class in TrajectoryClass::ALL {
+        let text = provider.lock_text(class).map_err(|e| anyhow::anyhow!(e))?;
+        let [x, y, z] = LockFile::from_toml_str(class, &text)
+            .map_err(|e| anyhow::anyhow!("lock of {class}: {e}"))?
+            .summary
+            .handover_station_m;
+        let geometry = provider
+            .robot_geometry(class)
+            .map_err(|e| anyhow::anyhow!(e))?;
+        handovers.push((class, Point3::new(x, y, z), geometry));
+    }
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
     // The class is decided after 30 upright frames at the station (1 s at 30 Hz) and the first leg
@@ -642,6 +657,28 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         let events = machine.step(now, views, &mut robot);
         report(&events, now, start);
+        for e in &events {
+            let SessionEvent::ClassDecided { class, .. } = e else {
+                continue;
+            };
+            let decided = trajectory_class(*class);
+            if decided == true_class {
+                continue;
+            }
+            if let Some((_, point, g)) = handovers.iter().find(|(c, ..)| *c == decided) {
+                let moved = source
+                    .simulation_mut()
+                    .retarget_handover(*point, now)
+                    .context(
+                        "the simulated operator cannot reach the decided class's handover point",
+                    )?;
+                geometry = g.clone();
+                say!(
+                    "  t={:5.1} s  (simulator) the operator (class {true_class}) reaches for class {decided}'s handover point ({moved} cycle(s))",
+                    secs(now, start)
+                );
+            }
+        }
         if let Some(d) = &display {
             d.display.update(&machine, &events);
         }
@@ -744,6 +781,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         args.stature_m,
         s.class.as_deref().unwrap_or("none")
     );
+    if let Some(d) = machine.decision() {
+        say!(
+            "  decision:       {} (probability {:.2}{}); true class {true_class}",
+            d.basis.name(),
+            d.probability,
+            d.expected_rula_cost
+                .map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
+        );
+    }
     say!(
         "  trajectory:     {}",
         s.lock_sha256.as_deref().unwrap_or("not locked")

@@ -194,7 +194,7 @@ fn summary(data: &ReviewData) -> String {
         .iter()
         .map(|s| {
             format!(
-                "{}: {} frames over {:.1} s, {} warnings, height {}, class {}{}",
+                "{}: {} frames over {:.1} s, {} warnings, height {}, class {}{}{}",
                 s.label,
                 s.frames.t.len(),
                 s.frames.t.last().copied().unwrap_or(0.0),
@@ -203,6 +203,15 @@ fn summary(data: &ReviewData) -> String {
                     .height_m
                     .map_or("not measured".to_owned(), |h| format!("{h:.3} m")),
                 s.facts.height_class.as_deref().unwrap_or("none"),
+                match (&s.facts.decision_basis, s.facts.class_probability) {
+                    (Some(b), Some(p)) => format!(
+                        " ({b}, probability {p:.2}{})",
+                        s.facts
+                            .expected_rula_cost
+                            .map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
+                    ),
+                    _ => String::new(),
+                },
                 if s.source.complete {
                     ""
                 } else {

@@ -53,7 +53,11 @@
       list.appendChild(li);
     }
     $("none").style.display = s.warnings.length ? "none" : "";
-    $("class").textContent = s.class ? "height class " + s.class : "";
+    let cls = s.class ? "height class " + s.class : "";
+    if (s.class && s.class_probability != null) {
+      cls += ` (probability ${s.class_probability.toFixed(2)}` + (s.across_boundary ? ", near a class boundary)" : ")");
+    }
+    $("class").textContent = cls;
     $("seq").textContent = "update " + s.seq;
     drawSkeleton(s.skeleton || []);
   }

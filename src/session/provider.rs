@@ -374,6 +374,13 @@ impl TrajectoryProvider for FileTrajectories {
             path.exists()
         };
         if !present {
+            tracing::warn!(
+                "no {} beside the trajectories: an operator whose stature interval straddles a \
+                 class boundary is served by the more probable class, not the one with the lower \
+                 expected RULA (`ergocell sim handover-rula --out-dir {}` writes it)",
+                path.display(),
+                self.layout.dir().display()
+            );
             return Ok(None);
         }
         let text = self.read(&path)?;

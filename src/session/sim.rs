@@ -33,6 +33,11 @@ impl SimSource {
         }
     }
 
+    /// The simulation, to move the operator's handover point once the cell has decided a class.
+    pub fn simulation_mut(&mut self) -> &mut Simulation {
+        &mut self.sim
+    }
+
     fn silenced(&self, camera: CameraIndex, t: i64) -> bool {
         self.outages
             .iter()

@@ -261,6 +261,7 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
     source: { file: label, bytes: 1048576 + seed * 12345, messages: frames * 14 + 40, complete: problems.length === 0, problems },
     facts: {
       height_m: 1.746, height_uncertainty_m: 0.023, height_class: 'c2',
+      decision_basis: 'interval', class_probability: 0.98, expected_rula_cost: 0,
       trajectory_sha256: '3f6c1a9e0b7d4c2f8a5e6b1d9c0f7a2e4b8d6c3a1f0e9d8c7b6a5f4e3d2c1b0a',
       approved_by: ['M. Keller (EHS)'], states,
       ...(legacy ? {} : { parts_taken: parts }),

@@ -1,7 +1,7 @@
 // The operator display (`ergocell demo --display`) in headless Chromium:
 //   node web/e2e/display.e2e.mjs <url> <screenshot.png> [restart]
 // Checks: the page connects and shows the session's state as it changes; a posture warning appears
-// with its advice and the action level's colour; after a reload the current state is back at once
+// with its advice and the action level's colour, and the height class with its probability; after a reload the current state is back at once
 // (the server sends its snapshot on connect); with `restart`, when the server goes away the page says
 // so and, once a server is back on the same address, reconnects by itself. Prints the event-to-screen
 // latency (server send time → after the next paint, same machine clock) of every update it rendered.
@@ -38,6 +38,13 @@ await main(async (b) => {
   if (!/—/.test(w.text)) fail(`the warning has no advice: ${JSON.stringify(w.text)}`);
   if (!(Number(w.al) >= 2)) fail(`a warning is shown but the action level is ${w.al}`);
   pass(`a warning is on screen: "${w.text}" (action level ${w.al}, colour ${w.colour})`);
+  // The class the cell decided, with the decision's probability (the demo's operator stands 1 cm
+  // above the c1/c2 boundary: served across it).
+  const cls = (await page.textContent('#class')).trim();
+  if (!/^height class c[123] \(probability (0\.\d\d|1\.00)(, near a class boundary)?\)$/.test(cls)) {
+    fail(`the height class and its probability are not shown: ${JSON.stringify(cls)}`);
+  }
+  pass(`the height class is shown with its probability: "${cls}"`);
   await screenshot(b, shot);
   const before = await page.evaluate(() => window.__latencies.slice());
 

@@ -73,7 +73,15 @@ await main(async (b) => {
   if (parts.join() !== 'trunk,neck,left_upper_arm,right_upper_arm') fail(`the static postures table lists ${JSON.stringify(parts)}, not trunk, neck and both upper arms`);
   pass(`REBA and action level rows in the regions table; task segments ${phases.join(', ')}; static postures of ${parts.join(', ')}`);
 
-  // 6. the screenshot.
+  // 6. the height class with the decision's probability, expected RULA cost and basis (the demo's
+  // operator stands 1 cm above the c1/c2 boundary).
+  const facts = await page.textContent('#facts');
+  if (!/Height class\s*c[123]\s*probability (0\.\d\d|1\.00), expected RULA cost [+-]\d\.\d\d/.test(facts)) {
+    fail(`the session facts lack the class decision's probability and cost: ${JSON.stringify(facts.slice(0, 300))}`);
+  }
+  pass(`the class decision is in the session facts: ${JSON.stringify(facts.match(/Height class.*?(boundary[^A-Z]*|class)(?=[A-Z])/s)?.[0] ?? '')}`);
+
+  // 7. the screenshot.
   await page.mouse.move(5, 5);
   await page.waitForTimeout(200);
   await screenshot(b, shot);

@@ -161,6 +161,10 @@ export function normalizeSession(s, index) {
       height_m: num(facts.height_m),
       height_uncertainty_m: num(facts.height_uncertainty_m),
       height_class: facts.height_class ?? null,
+      // The class decision's basis, probability and expected RULA cost (absent in older data).
+      decision_basis: facts.decision_basis ?? null,
+      class_probability: num(facts.class_probability),
+      expected_rula_cost: num(facts.expected_rula_cost),
       trajectory_sha256: facts.trajectory_sha256 ?? null,
       approved_by: arr(facts.approved_by).map(String),
       states: arr(facts.states).filter((x) => x && typeof x === 'object'),

@@ -28,6 +28,21 @@ function heightText(f) {
   return `${f.height_m.toFixed(3)} m${u}`;
 }
 
+const BASIS = {
+  interval: 'its stature interval lies inside the class',
+  expected_rula: 'across a boundary: the lowest expected RULA',
+  most_probable: 'across a boundary: the most probable class',
+};
+
+function classText(f) {
+  if (!f.height_class) return '<span class="muted">undecided</span>';
+  const badge = `<span class="badge">${esc(f.height_class)}</span>`;
+  if (f.class_probability == null) return badge;
+  const basis = BASIS[f.decision_basis] ?? f.decision_basis ?? '';
+  const cost = f.expected_rula_cost != null ? `, expected RULA cost ${f.expected_rula_cost >= 0 ? '+' : ''}${f.expected_rula_cost.toFixed(2)}` : '';
+  return `${badge} <span class="small">probability ${f.class_probability.toFixed(2)}${cost}</span><br><span class="muted small">${esc(basis)}</span>`;
+}
+
 function hashText(h) {
   if (!h) return '<span class="muted">none locked</span>';
   return `<code title="${esc(h)}">${esc(String(h).slice(0, 12))}…</code>`;
@@ -51,7 +66,7 @@ export function renderFacts(el, sessions) {
   const rows = [
     ['Recording', (s) => `<span class="file" title="${esc(s.source.file ?? s.label)}">${esc(s.source.file ?? s.label)}</span><br><span class="muted small">${sourceText(s)}</span>`],
     ['Operator height', (s) => heightText(s.facts)],
-    ['Height class', (s) => (s.facts.height_class ? `<span class="badge">${esc(s.facts.height_class)}</span>` : '<span class="muted">undecided</span>')],
+    ['Height class', (s) => classText(s.facts)],
     ['Locked trajectory', (s) => hashText(s.facts.trajectory_sha256)],
     ['Approved by', (s) => approvalText(s.facts)],
     ['Parts taken', (s) => (s.hasPartsTaken ? String(s.partsTaken.length) : '<span class="muted">not recorded</span>')],

@@ -183,7 +183,10 @@ def main():
 
     def on_event(m):
         report["events"].append({"state": m.state, "reason": m.reason, "height_class": m.height_class,
-                                 "trajectory_sha256": m.trajectory_sha256, "robot_held": m.robot_held})
+                                 "trajectory_sha256": m.trajectory_sha256, "robot_held": m.robot_held,
+                                 "height_decision_basis": m.height_decision_basis,
+                                 "height_class_probability": m.height_class_probability,
+                                 "height_expected_rula_cost": m.height_expected_rula_cost})
 
     def on_ergonomics(m):
         report["ergonomics"] += 1

@@ -32,7 +32,7 @@ trap 'if [ -n "${KEEP_LOGS:-}" ]; then cp "$tmp"/*.run "$tmp"/*.peer "$tmp"/*.js
 # a trust file naming it.
 mkdir -p "$tmp/traj" "$tmp/cell"
 cp -r config/. "$tmp/cell/"
-cp trajectories/c*.toml "$tmp/traj/"
+cp trajectories/c*.toml trajectories/handover_rula.toml "$tmp/traj/"
 ssh-keygen -q -t ed25519 -N "" -C "ergocell rclpy test key (not a sign-off)" -f "$tmp/key"
 printf 'rclpy@ci.invalid namespaces="ergocell-trajectory-approval" %s\n' "$(cat "$tmp/key.pub")" \
   > "$tmp/cell/approvers/allowed_signers"
@@ -118,6 +118,16 @@ check("height measured" in run and "class c2" in run,
       "rclpy's CameraLandmarks were fused by run: height measured, class c2")
 check("class_decided" in states and "trajectory_locked" in states,
       "every session event reached the rclpy reader: class_decided and trajectory_locked included")
+# The demo's operator stands 1 cm above the c1/c2 boundary (1.69 m): served across it, the choice, its
+# probability and its expected RULA cost as fields of the session event.
+decided = [e for e in r["events"] if e["state"] == "class_decided"]
+d = decided[0] if decided else {}
+check(d.get("height_class") == "c2" and d.get("height_decision_basis") == "expected_rula"
+      and 0.5 <= d.get("height_class_probability", -1) < 1.0
+      and abs(d.get("height_expected_rula_cost", 9)) <= 0.2,
+      f"the near-boundary operator (1.69 m) was served: class {d.get('height_class')}, "
+      f"{d.get('height_decision_basis')}, probability {d.get('height_class_probability', float('nan')):.2f}, "
+      f"expected RULA cost {d.get('height_expected_rula_cost', float('nan')):+.2f} (fields of the class_decided event)")
 locked = [e for e in r["events"] if e["state"] == "trajectory_locked"]
 check(bool(locked) and locked[0]["trajectory_sha256"] == r["lock_sha256"],
       "the locked trajectory's hash in the session event is the lock's")
