@@ -598,7 +598,7 @@ impl FrameEstimate {
 
 /// The standard normal cumulative distribution (Abramowitz & Stegun 26.2.17 through erf 7.1.26,
 /// absolute error below 1.5e-7).
-fn normal_cdf(z: f64) -> f64 {
+pub fn normal_cdf(z: f64) -> f64 {
     let x = z.abs() / std::f64::consts::SQRT_2;
     let t = 1.0 / (1.0 + 0.327_591_1 * x);
     let poly = t

@@ -743,6 +743,8 @@ pub struct HeightOptions {
     pub calibration_sessions: usize,
     /// The classes' RULA-versus-stature curves the decision and its cost use.
     pub rula: Option<HandoverRula>,
+    /// The decision interval's half-width in σ; `None`: the cell's (`HeightConfig::decision_sigmas`).
+    pub decision_sigmas: Option<f64>,
 }
 
 fn quantile(sorted: &[f64], q: f64) -> f64 {
@@ -861,6 +863,9 @@ pub fn height(
     config.height.ear_offset = calibration;
     config.height.served_m = Some(served);
     config.height.handover_rula.clone_from(&options.rula);
+    if let Some(k) = options.decision_sigmas {
+        config.height.decision_sigmas = k;
+    }
     let t = config.height.thresholds;
     let k = config.height.decision_sigmas;
     let mut population = ChaCha8Rng::seed_from_u64(setup.seed);

@@ -306,6 +306,10 @@ pub struct HeightSeeds {
 pub const HEIGHT_MAE_GOAL_M: f64 = 0.010;
 /// The nominal coverage of a ±2σ interval of a normal error.
 pub const NOMINAL_2SIGMA: f64 = 0.9545;
+/// The nominal coverage of a ±kσ interval of a normal error.
+pub fn nominal_coverage(k: f64) -> f64 {
+    2.0 * ergocell_ergonomics::height::normal_cdf(k) - 1.0
+}
 /// How far from nominal the coverage may be.
 pub const COVERAGE_TOLERANCE: f64 = 0.03;
 
@@ -351,11 +355,16 @@ pub fn height(seeds: &[u64], runs: &[HeightResult]) -> HeightSeeds {
             (!wrong.is_empty()).then(|| wrong.join("; "))
         }),
         Goal::judge(
-            "the stated ±2σ interval covers the truth within 3 points of its nominal 0.954 (each seed's 60 operators)",
+            &format!(
+                "the stated ±{k}σ interval covers the truth within 3 points of its nominal {nominal:.3} (each seed's {n} operators)",
+                k = runs.first().map_or(2.0, |r| r.interval_sigmas),
+                nominal = runs.first().map_or(NOMINAL_2SIGMA, |r| nominal_coverage(r.interval_sigmas)),
+                n = runs.first().map_or(0, |r| r.operators.len()),
+            ),
             seeds,
             |i| {
                 let c = runs[i].coverage;
-                ((c - NOMINAL_2SIGMA).abs() > COVERAGE_TOLERANCE)
+                ((c - nominal_coverage(runs[i].interval_sigmas)).abs() > COVERAGE_TOLERANCE)
                     .then(|| format!("coverage {c:.3}"))
             },
         ),

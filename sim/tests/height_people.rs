@@ -45,6 +45,7 @@ fn an_injected_ear_offset_is_learned_and_removed() {
         idle_secs: 6.0,
         calibration_sessions: 5,
         rula: None,
+        decision_sigmas: None,
     };
     let mut none = |_: usize, _: usize| {};
     let clean = height(&setup(7, 0.0), &handovers(), &people, &options, &mut none).unwrap();

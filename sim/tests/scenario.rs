@@ -206,6 +206,7 @@ fn same_seed_gives_byte_identical_experiment_json() {
             idle_secs: 3.0,
             calibration_sessions: 0,
             rula: None,
+            decision_sigmas: None,
         };
         let h = height(&setup(seed), &handovers(), &people, &options, &mut none).unwrap();
         let r = rula_agreement(&setup(seed), &handovers(), &[1.7], 1, &mut none).unwrap();

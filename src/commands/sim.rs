@@ -125,6 +125,10 @@ pub struct Common {
     /// height: how far above the tragion the simulated detector puts the ear landmarks, metres.
     #[arg(long, global = true, default_value_t = 0.0, allow_hyphen_values = true)]
     pub ear_offset_m: f64,
+    /// height: the decision interval's half-width in σ (default: the cell's, 2); wider trades
+    /// confident mistakes for more operators decided across a boundary.
+    #[arg(long, global = true)]
+    pub decision_sigmas: Option<f64>,
 }
 
 /// The seeds of `--seeds`.
@@ -226,6 +230,14 @@ fn height_options(c: &Common) -> anyhow::Result<HeightOptions> {
         idle_secs: 12.0,
         calibration_sessions: c.calibration_sessions,
         rula: load_handover_rula(&c.trajectories)?,
+        decision_sigmas: match c.decision_sigmas {
+            Some(k) if !(k.is_finite() && (1.0..=4.0).contains(&k)) => {
+                anyhow::bail!(UsageError(format!(
+                    "--decision-sigmas {k}: expected 1 to 4"
+                )))
+            }
+            k => k,
+        },
     })
 }
 
