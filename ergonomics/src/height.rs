@@ -511,6 +511,25 @@ pub struct HeightEstimate {
     pub estimators: Vec<EstimatorResult>,
 }
 
+/// No class's trajectory is validated for the operator's whole stature interval: the session
+/// cannot serve them (they stand beyond every served range).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error(
+    "{height_m:.3} ± {reach_m:.3} m ({sigmas}σ) reaches beyond the statures that class {}'s \
+     trajectory was validated for: no class serves this operator",
+    classes.iter().map(|c| c.name()).collect::<Vec<_>>().join(" or ")
+)]
+pub struct NoClassServes {
+    /// The estimated stature, metres.
+    pub height_m: f64,
+    /// The interval's half-width, metres.
+    pub reach_m: f64,
+    /// The interval's half-width in σ.
+    pub sigmas: f64,
+    /// The classes the interval touches.
+    pub classes: Vec<HeightClass>,
+}
+
 /// How a class was decided.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -959,7 +978,7 @@ impl HeightEstimator {
         &self,
         estimate: HeightEstimate,
         stamp_nanos: i64,
-    ) -> Result<HeightDecision, String> {
+    ) -> Result<HeightDecision, NoClassServes> {
         let c = &self.config;
         let t = &c.thresholds;
         let k = c.decision_sigmas;
@@ -1010,13 +1029,12 @@ impl HeightEstimator {
             })
             .copied();
         let Some(chosen) = chosen else {
-            let names: Vec<&str> = options.iter().map(|o| o.class.name()).collect();
-            return Err(format!(
-                "{h:.3} ± {:.3} m ({k}σ) reaches beyond the statures that class {}'s trajectory \
-                 was validated for: no class serves this operator",
-                k * sigma,
-                names.join(" or "),
-            ));
+            return Err(NoClassServes {
+                height_m: h,
+                reach_m: k * sigma,
+                sigmas: k,
+                classes: options.iter().map(|o| o.class).collect(),
+            });
         };
         // Expected cost: the chosen class's score minus the true class's, over the stature's
         // distribution.
@@ -1070,7 +1088,7 @@ impl HeightEstimator {
             )
         } else if let Some(e) = &estimate {
             match self.choose(e.clone(), 0) {
-                Err(why) => why,
+                Err(why) => why.to_string(),
                 // Decided on the next frame (the window has what it needs).
                 Ok(d) => format!("class {} on the next frame", d.class.name()),
             }

@@ -83,7 +83,7 @@ pub enum RobotError {
         entry: usize,
         /// The entry's name, control characters escaped.
         approved_by: String,
-        reason: String,
+        reason: Box<crate::signing::ApprovalError>,
     },
     /// The robot is not where the trajectory starts.
     #[error("joint `{joint}` is at {current_rad:.4} rad but the trajectory starts at {start_rad:.4} rad")]

@@ -306,7 +306,9 @@ impl ApprovalsFile {
     ) -> Result<(&'p str, String), RobotError> {
         let principal = principal.trim();
         signing::check_principal(principal)?;
-        signing::check_utc_time(approved_at_utc).map_err(|reason| RobotError::Config { reason })?;
+        signing::check_utc_time(approved_at_utc).map_err(|e| RobotError::Config {
+            reason: e.to_string(),
+        })?;
         self.check_chain()?;
         Ok((principal, self.head_sha256()))
     }
@@ -426,7 +428,7 @@ impl ApprovalsFile {
                 class: lock.class.to_string(),
                 entry: self.approval.len(),
                 approved_by: signing::printable(&entry.approved_by),
-                reason,
+                reason: Box::new(reason),
             })?;
         self.approval.push(entry);
         Ok(&self.approval[self.approval.len() - 1])
@@ -777,7 +779,7 @@ pub fn verify(inputs: &VerifyInputs<'_>) -> Result<ApprovedTrajectory, VerifyFai
                 class: class.to_string(),
                 entry: i,
                 approved_by: signing::printable(&a.approved_by),
-                reason,
+                reason: Box::new(reason),
             }),
         }
     }

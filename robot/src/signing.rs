@@ -35,6 +35,49 @@ pub const ALLOWED_SIGNERS: &str = "approvers/allowed_signers";
 /// The revocation list, relative to the cell config's folder.
 pub const REVOKED_KEYS: &str = "approvers/revoked_keys";
 
+/// Why an approval is refused: a field that is not well formed, or a signature that does not
+/// check out against the cell's trust files.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ApprovalError {
+    /// The approver's name is not one exact principal.
+    #[error("approver `{approver}` {why}")]
+    BadApprover { approver: String, why: &'static str },
+    /// The approval time is not RFC 3339 UTC written as `YYYY-MM-DDTHH:MM:SSZ`.
+    #[error("approved_at_utc `{text}` {why}")]
+    BadTime { text: String, why: String },
+    /// A hash field is not a lowercase hex SHA-256.
+    #[error("{field} `{value}` is not a SHA-256 in lowercase hex")]
+    BadHash { field: &'static str, value: String },
+    /// The signature does not parse as an SSHSIG.
+    #[error("the signature is not an SSH signature ({why})")]
+    NotSignature { why: String },
+    /// The signature was made for another purpose.
+    #[error("the signature was made for namespace `{namespace}`, not `{APPROVAL_NAMESPACE}`")]
+    WrongNamespace { namespace: String },
+    /// The signing key is on the revocation list.
+    #[error("key {fingerprint} is revoked ({REVOKED_KEYS})")]
+    Revoked { fingerprint: String },
+    /// The signing key is not in the allowed-signers file.
+    #[error("key {fingerprint} is not a trusted approver's key (not in {ALLOWED_SIGNERS})")]
+    Untrusted { fingerprint: String },
+    /// The signing key is trusted, but for other principals.
+    #[error(
+        "key {fingerprint} is trusted for {trusted_for}, not for `{approver}` ({ALLOWED_SIGNERS})"
+    )]
+    WrongPrincipal {
+        fingerprint: String,
+        trusted_for: String,
+        approver: String,
+    },
+    /// The signature is not over this entry's message.
+    #[error(
+        "the signature does not match the entry (its class, lock hash, name, time or previous hash \
+         was edited, or the signature was made for another entry)"
+    )]
+    Mismatch,
+}
+
 /// First line of every approval message (its format version).
 const MESSAGE_HEADER: &str = "ergocell trajectory approval v1";
 
@@ -129,8 +172,15 @@ pub fn is_sha256_hex(text: &str) -> bool {
 /// Checks that `principal` can be an approver's name: non-empty, no whitespace, no control
 /// characters, no comma or quote (the allowed-signers syntax), no wildcard.
 pub fn check_principal(principal: &str) -> Result<(), RobotError> {
-    let bad = |why: &str| RobotError::Config {
-        reason: format!("approver `{}` {why}", printable(principal)),
+    approver_ok(principal).map_err(|e| RobotError::Config {
+        reason: e.to_string(),
+    })
+}
+
+fn approver_ok(principal: &str) -> Result<(), ApprovalError> {
+    let bad = |why: &'static str| ApprovalError::BadApprover {
+        approver: printable(principal),
+        why,
     };
     if principal.is_empty() {
         return Err(bad("is empty"));
@@ -214,7 +264,10 @@ impl TrustedSigners {
     /// signature (`-----BEGIN SSH SIGNATURE-----`).
     pub fn sign(&self, claim: &ApprovalClaim<'_>, key: &PrivateKey) -> Result<String, RobotError> {
         let public = key.public_key();
-        self.check_signer(claim.approved_by, public)?;
+        self.check_signer(claim.approved_by, public)
+            .map_err(|e| RobotError::Config {
+                reason: e.to_string(),
+            })?;
         let message = approval_message(claim);
         let sig = key
             .sign(APPROVAL_NAMESPACE, HashAlg::Sha512, message.as_bytes())
@@ -229,35 +282,27 @@ impl TrustedSigners {
     /// Checks one approval: its time is RFC 3339 UTC, `signature` is an SSHSIG in the approval
     /// namespace, by a key the allowed-signers file lists for `claim.approved_by`, not revoked, over
     /// exactly [`approval_message`]`(claim)`. The error says which of these failed.
-    pub fn verify(&self, claim: &ApprovalClaim<'_>, signature: &str) -> Result<(), String> {
+    pub fn verify(&self, claim: &ApprovalClaim<'_>, signature: &str) -> Result<(), ApprovalError> {
         check_claim(claim)?;
         let sig = SshSig::from_pem(signature.trim())
-            .map_err(|e| format!("the signature is not an SSH signature ({e})"))?;
+            .map_err(|e| ApprovalError::NotSignature { why: e.to_string() })?;
         if sig.namespace() != APPROVAL_NAMESPACE {
-            return Err(format!(
-                "the signature was made for namespace `{}`, not `{APPROVAL_NAMESPACE}`",
-                printable(sig.namespace())
-            ));
+            return Err(ApprovalError::WrongNamespace {
+                namespace: printable(sig.namespace()),
+            });
         }
         let public = PublicKey::from(sig.public_key().clone());
-        self.check_signer(claim.approved_by, &public)
-            .map_err(|e| e.to_string())?;
+        self.check_signer(claim.approved_by, &public)?;
         public
             .verify(APPROVAL_NAMESPACE, approval_message(claim).as_bytes(), &sig)
-            .map_err(|_| {
-                "the signature does not match the entry (its class, lock hash, name, time or \
-                 previous hash was edited, or the signature was made for another entry)"
-                    .to_owned()
-            })
+            .map_err(|_| ApprovalError::Mismatch)
     }
 
-    fn check_signer(&self, principal: &str, key: &PublicKey) -> Result<(), RobotError> {
-        check_principal(principal)?;
-        let fp = fingerprint(key);
+    fn check_signer(&self, principal: &str, key: &PublicKey) -> Result<(), ApprovalError> {
+        approver_ok(principal)?;
+        let fingerprint = fingerprint(key);
         if self.is_revoked(key) {
-            return Err(RobotError::Config {
-                reason: format!("key {fp} is revoked ({REVOKED_KEYS})"),
-            });
+            return Err(ApprovalError::Revoked { fingerprint });
         }
         let listed = self
             .keys
@@ -265,26 +310,20 @@ impl TrustedSigners {
             .filter(|k| k.key.key_data() == key.key_data())
             .collect::<Vec<_>>();
         if listed.is_empty() {
-            return Err(RobotError::Config {
-                reason: format!(
-                    "key {fp} is not a trusted approver's key (not in {ALLOWED_SIGNERS})"
-                ),
-            });
+            return Err(ApprovalError::Untrusted { fingerprint });
         }
         if !listed
             .iter()
             .any(|k| k.principals.iter().any(|p| p == principal))
         {
-            return Err(RobotError::Config {
-                reason: format!(
-                    "key {fp} is trusted for {}, not for `{}` ({ALLOWED_SIGNERS})",
-                    listed
-                        .iter()
-                        .flat_map(|k| k.principals.iter().map(|p| format!("`{p}`")))
-                        .collect::<Vec<_>>()
-                        .join(", "),
-                    printable(principal)
-                ),
+            return Err(ApprovalError::WrongPrincipal {
+                fingerprint,
+                trusted_for: listed
+                    .iter()
+                    .flat_map(|k| k.principals.iter().map(|p| format!("`{p}`")))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                approver: printable(principal),
             });
         }
         Ok(())
@@ -304,43 +343,36 @@ impl fmt::Display for TrustedKey {
 }
 
 /// Checks `text` is an RFC 3339 time in UTC (`…Z` or `+00:00`).
-pub fn check_utc_time(text: &str) -> Result<(), String> {
+pub fn check_utc_time(text: &str) -> Result<(), ApprovalError> {
+    let bad = |why: String| ApprovalError::BadTime {
+        text: printable(text),
+        why,
+    };
     let t = time::OffsetDateTime::parse(text, &time::format_description::well_known::Rfc3339)
-        .map_err(|e| {
-            format!(
-                "approved_at_utc `{}` is not an RFC 3339 time ({e})",
-                printable(text)
-            )
-        })?;
+        .map_err(|e| bad(format!("is not an RFC 3339 time ({e})")))?;
     if !t.offset().is_utc() {
-        return Err(format!(
-            "approved_at_utc `{}` is not in UTC",
-            printable(text)
-        ));
+        return Err(bad("is not in UTC".to_owned()));
     }
     if rfc3339_utc(t.unix_timestamp()).ok().as_deref() != Some(text) {
-        return Err(format!(
-            "approved_at_utc `{}` is not written as YYYY-MM-DDTHH:MM:SSZ",
-            printable(text)
-        ));
+        return Err(bad("is not written as YYYY-MM-DDTHH:MM:SSZ".to_owned()));
     }
     Ok(())
 }
 
 /// Checks the fields of a claim read from a file before they are shown or trusted: the principal,
 /// the time, and both hashes as lowercase hex.
-pub fn check_claim(claim: &ApprovalClaim<'_>) -> Result<(), String> {
-    check_principal(claim.approved_by).map_err(|e| e.to_string())?;
+pub fn check_claim(claim: &ApprovalClaim<'_>) -> Result<(), ApprovalError> {
+    approver_ok(claim.approved_by)?;
     check_utc_time(claim.approved_at_utc)?;
-    for (name, value) in [
+    for (field, value) in [
         ("lock_sha256", claim.lock_sha256),
         ("previous_sha256", claim.previous_sha256),
     ] {
         if !is_sha256_hex(value) {
-            return Err(format!(
-                "{name} `{}` is not a SHA-256 in lowercase hex",
-                printable(value)
-            ));
+            return Err(ApprovalError::BadHash {
+                field,
+                value: printable(value),
+            });
         }
     }
     Ok(())

@@ -501,27 +501,41 @@ pub fn rula_agreement(seeds: &[u64], runs: &[RulaAgreement]) -> RulaSeeds {
     }
 }
 
+/// A seed range that does not parse.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{text:?}: {why}")]
+pub struct BadSeeds {
+    /// The part of the range that was refused.
+    pub text: String,
+    pub why: String,
+}
+
 /// Parses a seed range: `A..B` (inclusive of both ends, as the docs write 101..120) or a count `N`
 /// (seeds 1..=N).
-pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
+pub fn parse_seeds(text: &str) -> Result<Vec<u64>, BadSeeds> {
     let t = text.trim();
+    let bad = |text: &str, why: String| BadSeeds {
+        text: text.to_owned(),
+        why,
+    };
     let (a, b) = match t.split_once("..") {
         Some((a, b)) => {
             let b = b.strip_prefix('=').unwrap_or(b);
             (
-                a.trim().parse::<u64>().map_err(|e| format!("{a:?}: {e}"))?,
-                b.trim().parse::<u64>().map_err(|e| format!("{b:?}: {e}"))?,
+                a.trim().parse::<u64>().map_err(|e| bad(a, e.to_string()))?,
+                b.trim().parse::<u64>().map_err(|e| bad(b, e.to_string()))?,
             )
         }
         None => (
             1,
             t.parse::<u64>()
-                .map_err(|e| format!("{t:?}: expected A..B or a count: {e}"))?,
+                .map_err(|e| bad(t, format!("expected A..B or a count: {e}")))?,
         ),
     };
     if a > b || b - a >= 10_000 {
-        return Err(format!(
-            "{t:?}: expected A..B with A ≤ B and at most 10000 seeds"
+        return Err(bad(
+            t,
+            "expected A..B with A ≤ B and at most 10000 seeds".to_owned(),
         ));
     }
     Ok((a..=b).collect())

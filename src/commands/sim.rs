@@ -135,7 +135,7 @@ pub struct Common {
 #[derive(Debug, Clone)]
 pub struct SeedRange(pub Vec<u64>);
 
-fn parse_seed_range(text: &str) -> Result<SeedRange, String> {
+fn parse_seed_range(text: &str) -> Result<SeedRange, ergocell_sim::seeds::BadSeeds> {
     ergocell_sim::seeds::parse_seeds(text).map(SeedRange)
 }
 
