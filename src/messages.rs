@@ -567,6 +567,15 @@ pub fn session_state_message(
         height_expected_rula_cost: decision
             .and_then(|d| d.expected_rula_cost)
             .unwrap_or(f64::NAN),
+        parts_taken: machine.summary().parts_taken,
+        last_part_hand: machine
+            .summary()
+            .last_part
+            .map_or(String::new(), |p| p.hand.to_owned()),
+        last_part_closest_m: machine
+            .summary()
+            .last_part
+            .map_or(f64::NAN, |p| p.closest_m),
     }
 }
 
@@ -603,6 +612,17 @@ pub fn session_state_messages(
         };
         let mut m = session_state_message(machine, now_nanos, &reason);
         current.name().clone_into(&mut m.state);
+        if let E::PartTaken {
+            part,
+            hand,
+            closest_m,
+            ..
+        } = e
+        {
+            m.parts_taken = *part;
+            (*hand).clone_into(&mut m.last_part_hand);
+            m.last_part_closest_m = *closest_m;
+        }
         out.push(m);
     }
     out

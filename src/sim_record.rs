@@ -165,6 +165,10 @@ pub fn record(
                 // The true stature (the simulator knows it), not a measurement: no uncertainty.
                 height_uncertainty_m: f64::NAN,
                 height_class: class.name().to_owned(),
+                // The class is the truth's, not a decision: no basis, probability or cost.
+                height_class_probability: f64::NAN,
+                height_expected_rula_cost: f64::NAN,
+                last_part_closest_m: f64::NAN,
                 ..SessionState::default()
             };
             rec.write(topics::SESSION_STATE, now, &state)?;

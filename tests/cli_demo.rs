@@ -77,17 +77,17 @@ fn demo_runs_a_whole_session_and_records_it() {
 
     let bytes = std::fs::read(&out).unwrap();
     // The recording carries the class decision as fields: its basis, probability and expected cost.
-    let decided: Vec<ergocell_bridge::msg::SessionState> = mcap::MessageStream::new(&bytes)
+    let states: Vec<ergocell_bridge::msg::SessionState> = mcap::MessageStream::new(&bytes)
         .unwrap()
         .map(|m| m.unwrap())
         .filter(|m| m.channel.topic == "/ergocell/session_state")
         .map(|m| {
             ergocell_bridge::cdr::decode::<ergocell_bridge::msg::SessionState>(&m.data).unwrap()
         })
-        .filter(|s| s.state == "class_decided")
         .collect();
-    let d = decided
-        .first()
+    let d = states
+        .iter()
+        .find(|s| s.state == "class_decided")
         .expect("no class_decided session state recorded");
     assert_eq!(
         (d.height_class.as_str(), d.height_decision_basis.as_str()),
@@ -97,6 +97,27 @@ fn demo_runs_a_whole_session_and_records_it() {
         (0.5..1.0).contains(&d.height_class_probability)
             && d.height_expected_rula_cost.abs() <= 0.2,
         "{d:?}"
+    );
+    // The part taken, as fields: the state of its event says part 1, the hand and the distance; the
+    // last state still carries them.
+    let taken = states
+        .iter()
+        .find(|s| s.reason.starts_with("part 1 taken"))
+        .expect("no part-taken session state recorded");
+    assert_eq!(taken.parts_taken, 1, "{taken:?}");
+    assert!(
+        matches!(taken.last_part_hand.as_str(), "left" | "right")
+            && (0.0..0.3).contains(&taken.last_part_closest_m)
+            && taken.reason.contains(&format!(
+                "{} hand came to {:.3} m",
+                taken.last_part_hand, taken.last_part_closest_m
+            )),
+        "{taken:?}"
+    );
+    let last = states.last().unwrap();
+    assert_eq!(
+        (last.parts_taken, last.last_part_hand.as_str()),
+        (1, taken.last_part_hand.as_str())
     );
     let topics: BTreeSet<String> = mcap::MessageStream::new(&bytes)
         .unwrap()

@@ -103,6 +103,9 @@ class SessionState(IdlStruct, typename="ergocell_msgs::msg::dds_::SessionState_"
     height_decision_basis: str
     height_class_probability: float64
     height_expected_rula_cost: float64
+    parts_taken: uint32
+    last_part_hand: str
+    last_part_closest_m: float64
 
 
 @dataclass

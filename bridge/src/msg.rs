@@ -243,6 +243,9 @@ pub struct SessionState {
     pub height_decision_basis: String,
     pub height_class_probability: f64,
     pub height_expected_rula_cost: f64,
+    pub parts_taken: u32,
+    pub last_part_hand: String,
+    pub last_part_closest_m: f64,
 }
 
 impl RosMessage for SessionState {
@@ -265,6 +268,9 @@ impl RosMessage for SessionState {
         ("string", "height_decision_basis"),
         ("float64", "height_class_probability"),
         ("float64", "height_expected_rula_cost"),
+        ("uint32", "parts_taken"),
+        ("string", "last_part_hand"),
+        ("float64", "last_part_closest_m"),
     ];
 }
 

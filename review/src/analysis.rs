@@ -11,7 +11,7 @@
 //!
 //! The robot: its TCP from the recorded markers; each leg it was sent, its holds and the controller's
 //! events from the joint trajectory topic and `/ergocell/controller_events` (see [`Robot`]; the
-//! feedback folded into its leg); the parts the operator took from the session states' reasons.
+//! feedback folded into its leg); the parts the operator took from the session states' fields (in recordings made before those, their reasons).
 
 use ergocell_bridge::msg::{
     ControllerEvent, ErgonomicState, JointTrajectory, RebaSide, RebaState, RulaSide, SessionState,
@@ -97,7 +97,7 @@ pub struct Facts {
     pub approved_by: Vec<String>,
     pub states: Vec<StateChange>,
     /// The cell's cycle: each part the operator took at the handover point (from the states'
-    /// reasons, "part N taken: …"), in order.
+    /// fields; in recordings made before them, from their reasons), in order.
     pub parts_taken: Vec<PartTaken>,
 }
 
@@ -778,16 +778,17 @@ fn facts(states: &[Stamped<SessionState>], t0: u64) -> Facts {
     let last = |f: &dyn Fn(&SessionState) -> bool| states.iter().rev().find(|s| f(&s.message));
     let measured = last(&|s| s.height_m.is_finite());
     let decided = last(&|s| !s.height_class.is_empty());
+    let with_basis = decided.filter(|s| !s.message.height_decision_basis.is_empty());
     let locked = last(&|s| !s.trajectory_sha256.is_empty());
     Facts {
         height_m: measured.map(|s| s.message.height_m),
         height_uncertainty_m: measured.and_then(|s| finite(s.message.height_uncertainty_m)),
         height_class: decided.map(|s| s.message.height_class.clone()),
-        decision_basis: decided
-            .map(|s| s.message.height_decision_basis.clone())
-            .filter(|b| !b.is_empty()),
-        class_probability: decided.and_then(|s| finite(s.message.height_class_probability)),
-        expected_rula_cost: decided.and_then(|s| finite(s.message.height_expected_rula_cost)),
+        // Without a basis the decision's numbers were not recorded (an older recording, or one
+        // written without them): unknown, not zero.
+        decision_basis: with_basis.map(|s| s.message.height_decision_basis.clone()),
+        class_probability: with_basis.and_then(|s| finite(s.message.height_class_probability)),
+        expected_rula_cost: with_basis.and_then(|s| finite(s.message.height_expected_rula_cost)),
         trajectory_sha256: locked.map(|s| s.message.trajectory_sha256.clone()),
         approved_by: locked.map_or_else(Vec::new, |s| s.message.trajectory_approved_by.clone()),
         states: states
@@ -802,41 +803,61 @@ fn facts(states: &[Stamped<SessionState>], t0: u64) -> Facts {
     }
 }
 
-/// The parts taken, from the states' reasons ("part 2 taken: the operator's left hand came to
-/// 0.083 m of the handover point and left it; …"); each part once.
+/// The parts taken, from the session states' fields (`parts_taken`, `last_part_hand`,
+/// `last_part_closest_m`); each part once. A recording made before the states carried them has
+/// only the state's reason for people ("part 2 taken: the operator's left hand came to 0.083 m of
+/// the handover point …"): for those messages alone ([`legacy_part_from_reason`]) it is read.
 fn parts_taken(states: &[Stamped<SessionState>], t0: u64) -> Vec<PartTaken> {
     let mut parts: Vec<PartTaken> = Vec::new();
     for s in states {
-        let reason = &s.message.reason;
-        let Some((part, rest)) = reason
-            .strip_prefix("part ")
-            .and_then(|r| r.split_once(' '))
-            .and_then(|(n, rest)| Some((n.parse::<u32>().ok()?, rest)))
-        else {
+        let m = &s.message;
+        let taken = if m.parts_taken > 0 {
+            Some((
+                m.parts_taken,
+                Some(m.last_part_hand.clone()).filter(|h| matches!(h.as_str(), "left" | "right")),
+                finite(m.last_part_closest_m),
+            ))
+        } else {
+            legacy_part_from_reason(&m.reason)
+        };
+        let Some((part, hand, distance_m)) = taken else {
             continue;
         };
-        if !rest.starts_with("taken") || parts.iter().any(|p| p.part == part) {
+        if parts.iter().any(|p| p.part == part) {
             continue;
         }
-        let hand = rest
-            .split_once("operator's ")
-            .and_then(|(_, r)| r.split_whitespace().next())
-            .filter(|h| matches!(*h, "left" | "right"))
-            .map(str::to_owned);
-        let distance_m = rest
-            .split_once("came to ")
-            .and_then(|(_, r)| r.split_once(" m"))
-            .and_then(|(d, _)| d.trim().parse::<f64>().ok())
-            .and_then(finite);
         parts.push(PartTaken {
             t: secs(s.log_time_nanos, t0),
             part,
             hand,
             distance_m,
-            reason: reason.clone(),
+            reason: m.reason.clone(),
         });
     }
     parts
+}
+
+/// A part taken, as the reason of a session state recorded before the states carried it as fields
+/// said it: `part N taken: the operator's <hand> hand came to <d> m of …`.
+fn legacy_part_from_reason(reason: &str) -> Option<(u32, Option<String>, Option<f64>)> {
+    let (part, rest) = reason
+        .strip_prefix("part ")
+        .and_then(|r| r.split_once(' '))
+        .and_then(|(n, rest)| Some((n.parse::<u32>().ok()?, rest)))?;
+    if !rest.starts_with("taken") {
+        return None;
+    }
+    let hand = rest
+        .split_once("operator's ")
+        .and_then(|(_, r)| r.split_whitespace().next())
+        .filter(|h| matches!(*h, "left" | "right"))
+        .map(str::to_owned);
+    let distance_m = rest
+        .split_once("came to ")
+        .and_then(|(_, r)| r.split_once(" m"))
+        .and_then(|(d, _)| d.trim().parse::<f64>().ok())
+        .and_then(finite);
+    Some((part, hand, distance_m))
 }
 
 fn robot(rec: &Recording, t0: u64) -> Robot {
@@ -1432,6 +1453,51 @@ mod tests {
             [
                 (3.0, 1, Some("left"), Some(0.083)),
                 (8.0, 2, Some("right"), Some(0.083))
+            ]
+        );
+    }
+
+    /// Today's states carry the part as fields: the review reads them, whatever the reason says.
+    #[test]
+    fn parts_taken_are_read_from_the_fields() {
+        const S: u64 = 1_000_000_000;
+        let state = |reason: &str| SessionState {
+            state: "working".to_owned(),
+            reason: reason.to_owned(),
+            ..SessionState::default()
+        };
+        let taken = |part: u32, hand: &str, closest: f64, reason: &str| SessionState {
+            parts_taken: part,
+            last_part_hand: hand.into(),
+            last_part_closest_m: closest,
+            ..state(reason)
+        };
+        let states = vec![
+            stamped(S, state("trajectory sent: home → handover")),
+            stamped(4 * S, taken(1, "right", 0.021, "worded otherwise")),
+            // Later states repeat the latest part: counted once.
+            stamped(5 * S, taken(1, "right", 0.021, "state working → held")),
+            stamped(
+                9 * S,
+                taken(
+                    2,
+                    "left",
+                    0.004,
+                    "part 7 taken: the operator's right hand came to 9 m",
+                ),
+            ),
+        ];
+        let f = facts(&states, S);
+        let parts: Vec<(f64, u32, Option<&str>, Option<f64>)> = f
+            .parts_taken
+            .iter()
+            .map(|p| (p.t, p.part, p.hand.as_deref(), p.distance_m))
+            .collect();
+        assert_eq!(
+            parts,
+            [
+                (3.0, 1, Some("right"), Some(0.021)),
+                (8.0, 2, Some("left"), Some(0.004))
             ]
         );
     }

@@ -401,8 +401,9 @@ fn take<M: RosMessage + DeserializeOwned>(
     Ok(())
 }
 
-/// `SessionState` as recorded before it carried the height decision's basis, probability and
-/// expected RULA cost (the same fields, without the last three): such recordings stay reviewable.
+/// `SessionState` as recorded before it carried the height decision (basis, probability, expected
+/// RULA cost) and the parts taken as fields (the same fields, without those six): such recordings
+/// stay reviewable.
 #[derive(serde::Deserialize)]
 struct SessionStateWithoutDecision {
     header: ergocell_bridge::msg::Header,
@@ -418,8 +419,8 @@ struct SessionStateWithoutDecision {
     trajectory_approved_by: Vec<String>,
 }
 
-/// Decodes a `SessionState`, or one of the layout before the decision's fields (those then NaN or
-/// empty: unknown).
+/// Decodes a `SessionState`, or one of the layout before the decision's and the parts' fields (those
+/// then NaN, empty or 0: unknown; the review reads such a recording's parts from the reasons).
 fn take_session_state(
     schema: &str,
     data: &[u8],
@@ -450,6 +451,9 @@ fn take_session_state(
             height_decision_basis: String::new(),
             height_class_probability: f64::NAN,
             height_expected_rula_cost: f64::NAN,
+            parts_taken: 0,
+            last_part_hand: String::new(),
+            last_part_closest_m: f64::NAN,
         },
     });
     Ok(())

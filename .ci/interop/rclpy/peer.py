@@ -186,7 +186,9 @@ def main():
                                  "trajectory_sha256": m.trajectory_sha256, "robot_held": m.robot_held,
                                  "height_decision_basis": m.height_decision_basis,
                                  "height_class_probability": m.height_class_probability,
-                                 "height_expected_rula_cost": m.height_expected_rula_cost})
+                                 "height_expected_rula_cost": m.height_expected_rula_cost,
+                                 "parts_taken": m.parts_taken, "last_part_hand": m.last_part_hand,
+                                 "last_part_closest_m": m.last_part_closest_m})
 
     def on_ergonomics(m):
         report["ergonomics"] += 1

@@ -128,6 +128,12 @@ check(d.get("height_class") == "c2" and d.get("height_decision_basis") == "expec
       f"the near-boundary operator (1.69 m) was served: class {d.get('height_class')}, "
       f"{d.get('height_decision_basis')}, probability {d.get('height_class_probability', float('nan')):.2f}, "
       f"expected RULA cost {d.get('height_expected_rula_cost', float('nan')):+.2f} (fields of the class_decided event)")
+taken = [e for e in r["events"] if e.get("parts_taken", 0) >= 1]
+t1 = taken[0] if taken else {}
+check(t1.get("parts_taken") == 1 and t1.get("last_part_hand") in ("left", "right")
+      and 0 <= t1.get("last_part_closest_m", -1) < 0.3 and t1.get("reason", "").startswith("part 1 taken"),
+      f"the part taken arrived as fields of its session event: part {t1.get('parts_taken')}, "
+      f"{t1.get('last_part_hand')} hand, {t1.get('last_part_closest_m', float('nan')):.3f} m from the handover point")
 locked = [e for e in r["events"] if e["state"] == "trajectory_locked"]
 check(bool(locked) and locked[0]["trajectory_sha256"] == r["lock_sha256"],
       "the locked trajectory's hash in the session event is the lock's")

@@ -66,8 +66,22 @@ pub struct SessionSummary {
     pub robot_commands: u32,
     /// Parts the operator took at the handover point (completed handovers: the cell's cycles).
     pub parts_taken: u32,
+    /// The latest part taken: its number, the hand, and how close that hand's palm centre came to
+    /// the handover point, metres.
+    pub last_part: Option<PartTakenFacts>,
     pub ended: bool,
     pub end_reason: String,
+}
+
+/// One part the operator took at the handover point.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct PartTakenFacts {
+    /// 1 for the session's first part.
+    pub part: u32,
+    /// "left" or "right".
+    pub hand: &'static str,
+    /// How close that hand's palm centre came to the handover point, metres.
+    pub closest_m: f64,
 }
 
 /// The session state machine. One per operator session.
@@ -618,6 +632,11 @@ impl SessionMachine {
                 if self.motion == Motion::Moving(Leg::ToHome) {
                     self.summary.parts_taken += 1;
                     let part = self.summary.parts_taken;
+                    self.summary.last_part = Some(PartTakenFacts {
+                        part,
+                        hand,
+                        closest_m,
+                    });
                     tracing::info!(part, hand, closest_m, "part taken");
                     events.insert(
                         at,

@@ -23,7 +23,7 @@
 pub mod dummy;
 mod machine;
 
-pub use machine::{SessionMachine, SessionSummary};
+pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 
 use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
