@@ -37,22 +37,6 @@ impl RobotGeometry {
         })
     }
 
-    /// The lock's path tolerances per joint ([`ergocell_robot::monitor::path_tolerances`]): its
-    /// separation margin shared over the joints by their lever arms along its samples, at most `cap_rad`.
-    pub fn path_tolerances(
-        &self,
-        lock: &ergocell_robot::LockFile,
-        cap_rad: f64,
-    ) -> Result<Vec<f64>, RobotError> {
-        ergocell_robot::monitor::path_tolerances(
-            &self.model,
-            &self.T_flange_tcp,
-            &lock.trajectory.point,
-            lock.summary.min_separation_m - lock.summary.required_separation_m,
-            cap_rad,
-        )
-    }
-
     /// The class's handover point in the world.
     pub fn handover_world(&self) -> Point3<f64> {
         self.handover_world

@@ -312,7 +312,7 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
     let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 1, "{out}");
     assert!(
-        out.contains("refused: invalid configuration: approver `Dr.\\nc3: OK` contains whitespace")
+        out.contains("refused: approver `Dr.\\nc3: OK` contains whitespace")
             && !out.contains("\nc3: OK"),
         "{out}"
     );

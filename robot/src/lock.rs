@@ -36,7 +36,7 @@ use crate::validate::{sha256_hex, InputHashes, LockedTrajectory, SAFETY_NOTE};
 use crate::RobotError;
 
 /// Version tag of the lock format.
-pub const LOCK_FORMAT: &str = "ergocell-trajectory-lock/2";
+pub const LOCK_FORMAT: &str = "ergocell-trajectory-lock/3";
 
 /// Headline numbers of the validation, kept in the lock for the reviewer.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -51,6 +51,10 @@ pub struct LockSummary {
     pub required_separation_m: f64,
     pub min_singular_value: f64,
     pub handover_station_m: [f64; 3],
+    /// The execution monitor's path tolerance per joint, radians (controller joint order), derived
+    /// by the validation ([`crate::ValidationReport::path_tolerance_rad`]): signed off with the
+    /// trajectory, carried with every leg; the cell may only tighten it.
+    pub path_tolerance_rad: Vec<f64>,
 }
 
 /// One knot of the locked trajectory.
@@ -131,6 +135,7 @@ impl LockFile {
                 required_separation_m: r.separation.required_m,
                 min_singular_value: r.singularity.min_singular_value,
                 handover_station_m: r.handover.target_station_m,
+                path_tolerance_rad: r.path_tolerance_rad.clone(),
             },
             trajectory: LockTrajectory {
                 joint_names: locked.joint_names().to_vec(),
@@ -172,10 +177,27 @@ impl LockFile {
 
     /// Parse a lock file and check its format, class and own hash.
     pub fn from_toml_str(class: TrajectoryClass, text: &str) -> Result<Self, RobotError> {
+        // The format first: a lock of an earlier format says so, not which field it lacks.
+        #[derive(Deserialize)]
+        struct Format {
+            format: String,
+        }
         let corrupt = |reason: String| RobotError::LockCorrupt {
             class: class.to_string(),
             reason,
         };
+        let stale = |format: &str| {
+            corrupt(format!(
+                "format `{}`, expected `{LOCK_FORMAT}`: lock it again with this version \
+                 (`ergocell trajectories lock`) and have it approved again",
+                signing::printable(format)
+            ))
+        };
+        if let Ok(f) = toml::from_str::<Format>(text) {
+            if f.format != LOCK_FORMAT {
+                return Err(stale(&f.format));
+            }
+        }
         let lock: Self = toml::from_str(text).map_err(|e| {
             corrupt(format!(
                 "does not parse: {}",
@@ -183,10 +205,7 @@ impl LockFile {
             ))
         })?;
         if lock.format != LOCK_FORMAT {
-            return Err(corrupt(format!(
-                "format `{}`, expected `{LOCK_FORMAT}`",
-                lock.format
-            )));
+            return Err(stale(&lock.format));
         }
         if lock.class != class {
             return Err(corrupt(format!("file is for class {}", lock.class)));
@@ -196,6 +215,15 @@ impl LockFile {
             return Err(corrupt(format!(
                 "content was edited: recorded lock_sha256 {}, content hashes to {actual}",
                 lock.lock_sha256
+            )));
+        }
+        let tol = &lock.summary.path_tolerance_rad;
+        if tol.len() != lock.trajectory.joint_names.len()
+            || !tol.iter().all(|t| t.is_finite() && *t > 0.0)
+        {
+            return Err(corrupt(format!(
+                "path_tolerance_rad {tol:?}: expected one finite positive tolerance per joint ({})",
+                lock.trajectory.joint_names.len()
             )));
         }
         Ok(lock)
@@ -489,6 +517,10 @@ impl ApprovedTrajectory {
     }
     pub fn joint_names(&self) -> &[String] {
         &self.lock.trajectory.joint_names
+    }
+    /// The execution monitor's path tolerance per joint, radians, as locked and approved.
+    pub fn path_tolerance_rad(&self) -> &[f64] {
+        &self.lock.summary.path_tolerance_rad
     }
     pub fn points(&self) -> &[LockPoint] {
         &self.lock.trajectory.point

@@ -590,6 +590,19 @@ pub fn path_tolerances(
     margin_m: f64,
     cap_rad: f64,
 ) -> Result<Vec<f64>, RobotError> {
+    let positions: Vec<&[f64]> = points.iter().map(|p| p.positions_rad.as_slice()).collect();
+    path_tolerances_of(model, T_flange_tcp, &positions, margin_m, cap_rad)
+}
+
+/// [`path_tolerances`] over joint positions (`[sample][joint]`, radians): what the validation
+/// derives for its lock ([`crate::LockSummary::path_tolerance_rad`]).
+pub fn path_tolerances_of(
+    model: &RobotModel,
+    T_flange_tcp: &Isometry3<f64>,
+    positions: &[&[f64]],
+    margin_m: f64,
+    cap_rad: f64,
+) -> Result<Vec<f64>, RobotError> {
     let invalid = |reason: String| RobotError::Config {
         reason: format!("path tolerances: {reason}"),
     };
@@ -603,10 +616,10 @@ pub fn path_tolerances(
     }
     let n = model.dof();
     let mut arms = vec![0.0_f64; n];
-    for p in points {
+    for p in positions {
         for (a, r) in arms
             .iter_mut()
-            .zip(model.joint_lever_arms_m(&p.positions_rad, T_flange_tcp)?)
+            .zip(model.joint_lever_arms_m(p, T_flange_tcp)?)
         {
             *a = a.max(r);
         }

@@ -361,9 +361,18 @@ pub struct ValidationReport {
     /// False when the QP was not solved: the check values below are then not a trajectory's.
     pub checks_run: bool,
     pub dense_samples_per_interval: usize,
+    /// The execution monitor's path tolerance per joint, radians, derived here from the separation
+    /// margin this validation found and the arm's lever arms along the locked samples
+    /// ([`crate::monitor::path_tolerances_of`], at most [`PATH_TOLERANCE_MAX_RAD`]); locked and
+    /// signed with the trajectory. Empty when the checks did not run or left no margin.
+    pub path_tolerance_rad: Vec<f64>,
     pub inputs: InputHashes,
     pub note: String,
 }
+
+/// The largest path tolerance a lock derives for a joint (a joint whose motion moves nothing: half a
+/// turn is no tolerance at all); the cell caps it further (`[ros] path_tolerance_rad`).
+pub const PATH_TOLERANCE_MAX_RAD: f64 = std::f64::consts::PI;
 
 /// A validated trajectory: only [`plan_and_validate`] builds one, and only from a `Solved` QP with
 /// every check passing.
@@ -591,9 +600,27 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
     let separation = check_separation(&samples, &body_capsules(cell, spec), model, cell, spec);
     let singularity = check_singularity(&samples, cell);
     let handover = check_handover(model, spec, &frames, &trajectory);
+    let margin_m = separation.value.min_separation_m - separation.value.required_m;
+    let path_tolerance_rad = if checks_run && margin_m > 0.0 {
+        let knots: Vec<&[f64]> = trajectory.q.iter().map(Vec::as_slice).collect();
+        crate::monitor::path_tolerances_of(
+            model,
+            &frames.T_flange_tcp,
+            &knots,
+            margin_m,
+            PATH_TOLERANCE_MAX_RAD,
+        )?
+    } else {
+        Vec::new()
+    };
 
     let mut reasons = solved.reasons;
     reasons.extend(handover.outside_band);
+    if checks_run && path_tolerance_rad.is_empty() {
+        reasons.push(format!(
+            "no path tolerance for the execution monitor: the separation margin is {margin_m:.4} m"
+        ));
+    }
     if checks_run {
         reasons.extend(
             boundary
@@ -628,6 +655,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
         ik: knots.ik,
         checks_run,
         dense_samples_per_interval: JOINT_SAMPLES_PER_INTERVAL,
+        path_tolerance_rad,
         inputs: hashes.clone(),
         note: SAFETY_NOTE.to_owned(),
     };
@@ -1483,6 +1511,19 @@ impl fmt::Display for ValidationReport {
             "Separation: min {:.3} m (required {:.3} m) between {} and the operator's {} at t = {:.2} s",
             s.min_separation_m, s.required_m, s.arm_segment, s.body_part, s.at_time_s
         )?;
+        if !self.path_tolerance_rad.is_empty() {
+            writeln!(
+                f,
+                "Execution monitor's path tolerance per joint (the separation margin {:.3} m over the joints' lever arms; \
+                 locked and signed with the trajectory; the cell may only tighten it): {} rad",
+                s.min_separation_m - s.required_m,
+                self.path_tolerance_rad
+                    .iter()
+                    .map(|t| format!("{t:.4}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )?;
+        }
         let g = &self.singularity;
         writeln!(
             f,

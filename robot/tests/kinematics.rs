@@ -345,4 +345,45 @@ fn path_tolerances_from_the_lock_keep_the_whole_arm_within_its_separation_margin
     );
     // No margin, no tolerance: an error.
     assert!(path_tolerances(&s.model, &tool, points, 0.0, 0.05).is_err());
+    // The lock carries what the validation derived (signed with it): the same tolerances, capped
+    // only at half a turn; the cell's cap (here 0.05 rad) only tightens them.
+    let locked = &lock.summary.path_tolerance_rad;
+    let derived = path_tolerances(
+        &s.model,
+        &tool,
+        points,
+        margin,
+        ergocell_robot::validate::PATH_TOLERANCE_MAX_RAD,
+    )
+    .unwrap();
+    assert_eq!(locked, &derived);
+    for (l, t) in locked.iter().zip(&tol) {
+        assert_eq!(l.min(0.05), *t);
+    }
+}
+
+/// A lock of the earlier format (no path tolerances) is refused with what to do, not with the field
+/// it lacks; a lock whose tolerances were edited fails its own hash.
+#[test]
+fn a_lock_without_its_path_tolerances_is_refused_saying_relock() {
+    use ergocell_robot::{LockFile, TrajectoryClass};
+    let text = common::read("trajectories/locks/c2.lock.toml");
+    let old: String = text
+        .lines()
+        .filter(|l| !l.starts_with("path_tolerance_rad"))
+        .map(|l| l.replace("ergocell-trajectory-lock/3", "ergocell-trajectory-lock/2") + "\n")
+        .collect();
+    let e = LockFile::from_toml_str(TrajectoryClass::C2, &old)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("format `ergocell-trajectory-lock/2`") && e.contains("lock it again"),
+        "{e}"
+    );
+    let loosened = text.replacen("path_tolerance_rad = [0.0", "path_tolerance_rad = [0.9", 1);
+    assert_ne!(loosened, text);
+    let e = LockFile::from_toml_str(TrajectoryClass::C2, &loosened)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("content was edited"), "{e}");
 }

@@ -193,11 +193,8 @@ struct RosRobot {
         ergocell_bridge::action::GoalTolerances,
     )>,
     latest: Arc<Mutex<Option<JointState>>>,
-    /// Where the path tolerances come from (the lock files) and the `[ros]` settings.
-    provider: FileTrajectories,
+    /// The `[ros]` settings (the path tolerances' cap among them).
     ros: RosConfig,
-    /// The last lock's hash and its derived path tolerances.
-    tolerances: Option<(String, Vec<f64>)>,
     /// The execution monitor, once a leg was sent (`[ros] monitor_execution`); shared with the
     /// monitor task, which judges every sample with it.
     monitor: Arc<Mutex<Option<ExecutionMonitor>>>,
@@ -214,21 +211,24 @@ impl RosRobot {
     }
 
     /// The path tolerances of the lock `lock_sha256`, derived once per lock.
-    fn path_tolerances(&mut self, lock_sha256: &str) -> Result<Vec<f64>, BackendError> {
-        if let Some((sha, t)) = &self.tolerances {
-            if sha == lock_sha256 {
-                return Ok(t.clone());
-            }
-        }
-        let t = self
-            .provider
-            .path_tolerances(lock_sha256, self.ros.path_tolerance_rad)
-            .map_err(|e| BackendError {
+    /// The leg's path tolerances: the lock's (derived when it was validated, signed off with it),
+    /// each at most `[ros] path_tolerance_rad`. A leg without them is not sent.
+    fn path_tolerances(
+        &self,
+        trajectory: &ergocell::session::LegTrajectory,
+    ) -> Result<Vec<f64>, BackendError> {
+        let t = &trajectory.path_tolerance_rad;
+        if t.len() != trajectory.joint_names.len() || !t.iter().all(|v| v.is_finite() && *v > 0.0) {
+            return Err(BackendError {
                 backend: "execution monitor",
-                reason: e.to_string(),
-            })?;
-        self.tolerances = Some((lock_sha256.to_owned(), t.clone()));
-        Ok(t)
+                reason: format!(
+                    "the leg carries path tolerances {t:?}, not one positive tolerance per joint ({})",
+                    trajectory.joint_names.len()
+                ),
+            });
+        }
+        let cap = self.ros.path_tolerance_rad;
+        Ok(t.iter().map(|v| v.min(cap)).collect())
     }
 
     /// Starts monitoring `trajectory` (a leg just sent), making the monitor if needed.
@@ -322,12 +322,12 @@ impl RobotSink for RosRobot {
         match command {
             RobotCommand::Execute {
                 leg,
-                lock_sha256,
+                lock_sha256: _,
                 trajectory,
             } => {
                 let label = leg_label(*leg);
                 // No tolerances, no monitor: the leg is not sent (the robot does not move).
-                let path_rad = self.path_tolerances(lock_sha256)?;
+                let path_rad = self.path_tolerances(trajectory)?;
                 if self.ros.monitor_execution {
                     self.watch_leg(now_nanos, label, trajectory, &path_rad)?;
                 }
@@ -785,9 +785,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             publisher: Arc::new(joint_trajectory),
             action,
             latest: latest.clone(),
-            provider: FileTrajectories::new(&args.config, &args.trajectories, &approvals),
             ros: ros.clone(),
-            tolerances: None,
             monitor: Arc::new(Mutex::new(None)),
             events: Vec::new(),
         };

@@ -151,38 +151,6 @@ impl FileTrajectories {
             .map_err(|e| ProviderError(format!("robot geometry for the recording ({class}): {e}")))
     }
 
-    /// The path tolerances of the lock whose hash is `lock_sha256` (whichever class it is), at most
-    /// `cap_rad` ([`RobotGeometry::path_tolerances`]).
-    pub fn path_tolerances(
-        &self,
-        lock_sha256: &str,
-        cap_rad: f64,
-    ) -> Result<Vec<f64>, ProviderError> {
-        for class in [
-            TrajectoryClass::C1,
-            TrajectoryClass::C2,
-            TrajectoryClass::C3,
-        ] {
-            let Ok(text) = self.lock_text(class) else {
-                continue;
-            };
-            let Ok(lock) = ergocell_robot::LockFile::from_toml_str(class, &text) else {
-                continue;
-            };
-            if lock.lock_sha256 == lock_sha256 {
-                return self
-                    .robot_geometry(class)?
-                    .path_tolerances(&lock, cap_rad)
-                    .map_err(|e| {
-                        ProviderError(format!("path tolerances of the {class} lock: {e}"))
-                    });
-            }
-        }
-        Err(ProviderError(format!(
-            "no lock with hash {lock_sha256} to derive the path tolerances from"
-        )))
-    }
-
     /// The trusted approvers' files (`approvers/allowed_signers` and `approvers/revoked_keys` beside
     /// the cell file; in a demo, the demo key's one-line list and no revocations).
     fn trust_texts(&self) -> Result<(String, String), ProviderError> {

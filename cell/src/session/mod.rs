@@ -97,6 +97,9 @@ pub struct LegPoint {
 pub struct LegTrajectory {
     pub joint_names: Vec<String>,
     pub points: Vec<LegPoint>,
+    /// The execution monitor's path tolerance per joint, radians: the lock's, derived when it was
+    /// validated and signed off with it (the backend may only tighten it).
+    pub path_tolerance_rad: Vec<f64>,
 }
 
 impl LegTrajectory {
@@ -304,5 +307,6 @@ pub fn leg_trajectory(approved: &ApprovedTrajectory, leg: Leg) -> LegTrajectory 
     LegTrajectory {
         joint_names: approved.joint_names().to_vec(),
         points,
+        path_tolerance_rad: approved.path_tolerance_rad().to_vec(),
     }
 }
