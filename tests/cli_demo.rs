@@ -355,3 +355,77 @@ fn an_operator_served_by_the_neighbouring_class_takes_every_part() {
         );
     }
 }
+
+/// The faults are a schedule the user can change: a file with only a longer blackout once the robot
+/// brought the second part holds the robot once, drops no single camera and makes no class change request; a file
+/// naming a camera the rig lacks is refused before anything runs (exit 2).
+#[test]
+fn demo_plays_a_fault_schedule_from_a_file() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-demo-faults");
+    std::fs::create_dir_all(&dir).unwrap();
+    let faults = dir.join("faults.toml");
+    std::fs::write(
+        &faults,
+        "[[fault]]\nkind = \"cameras_silent\"\nafter = \"arrived_with_part\"\npart = 2\nat_s = 0.5\nfor_s = 1.5\n",
+    )
+    .unwrap();
+    let out = dir.join("faults.mcap");
+    let run = demo_in(
+        Path::new(env!("CARGO_MANIFEST_DIR")),
+        &[
+            "--cycles",
+            "1",
+            "--no-floor-pick",
+            "--force",
+            "--faults",
+            faults.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+    );
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    for expected in [
+        "faults: every camera silent for 1.5 s, 0.5 s after the robot arrives with part 2",
+        "robot ← HOLD",
+        "state held → working",
+        "0 change request(s) refused",
+        "(1 part(s) taken at the handover point)",
+    ] {
+        assert!(
+            stdout.contains(expected),
+            "missing `{expected}` in:\n{stdout}"
+        );
+    }
+    // s1_left goes silent once, in the blackout (the default schedule also drops it alone).
+    assert_eq!(
+        stdout.matches("camera s1_left degraded").count(),
+        1,
+        "{stdout}"
+    );
+    std::fs::write(
+        &faults,
+        "[[fault]]\nkind = \"cameras_silent\"\nafter = \"working\"\nat_s = 1\nfor_s = 1\ncameras = [\"s9_left\"]\n",
+    )
+    .unwrap();
+    let bad = demo_in(
+        Path::new(env!("CARGO_MANIFEST_DIR")),
+        &[
+            "--force",
+            "--faults",
+            faults.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert_eq!(bad.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("faults.toml") && stderr.contains("no camera `s9_left` in the rig"),
+        "{stderr}"
+    );
+}

@@ -16,6 +16,8 @@
 //!   every level a documented parameter ([`DetectorNoise`]).
 //! - [`experiments`]: the seed paper's Table 1 and Figs. 7–9, height estimation and RULA agreement,
 //!   run through the real perception and ergonomics crates.
+//! - [`faults`]: the demo's faults (silent cameras, a class change request) as a schedule timed
+//!   from the cell's cycle, a file a user or a test can change.
 //! - [`session`]: the session script (walk in → idle → N handovers → walk out) and the simulation
 //!   clock; each [`Tick`] carries the ground truth and every camera's [`View2`](ergocell_perception::View2).
 //!
@@ -55,6 +57,7 @@ pub mod body;
 pub mod cameras;
 pub mod detector;
 pub mod experiments;
+pub mod faults;
 pub mod reach;
 pub mod seeds;
 pub mod session;
@@ -91,4 +94,7 @@ pub enum SimError {
     /// The cell controller's pipeline could not be built on the rig (experiments).
     #[error(transparent)]
     Cell(#[from] ergocell_cell::CellError),
+    /// A fault schedule that does not parse or names what the rig does not have.
+    #[error("fault schedule {file}: {reason}")]
+    Faults { file: String, reason: String },
 }

@@ -303,7 +303,7 @@ fn retargeting_moves_the_cycles_not_yet_begun_by_the_shift() {
     };
     let base = make();
     let shift = nalgebra::Vector3::new(0.0, 0.02, -0.05);
-    let sc = base.script().clone();
+    let sc = *base.script();
     let cycle_nanos = ((sc.reach_secs + sc.hold_secs + sc.return_secs + sc.rest_secs) * 1e9) as i64;
     let first_nanos = ((sc.walk_in_secs + sc.idle_secs) * 1e9) as i64;
     // During the first cycle's reach: cycles 1 and 2 move, cycle 0 keeps its target.

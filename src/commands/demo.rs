@@ -41,6 +41,7 @@ use ergocell_ergonomics::HeightClass;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::View2;
 use ergocell_robot::{LockFile, TrajectoryClass};
+use ergocell_sim::faults::{FaultPlayer, FaultSchedule, Silenced};
 use ergocell_sim::{CameraBump, FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
 
@@ -97,9 +98,15 @@ pub struct Args {
     /// Camera frame rate, Hz (the seed paper's cameras: 10 Hz).
     #[arg(long, default_value_t = 10.0)]
     pub fps: f64,
-    /// Do not inject the camera faults.
-    #[arg(long)]
+    /// Do not inject the camera faults (the supervisor's class change request stays).
+    #[arg(long, conflicts_with = "faults")]
     pub no_faults: bool,
+    /// The faults to play, a TOML schedule (`ergocell_sim::faults`: silent cameras and class change
+    /// requests, timed from the robot starting to work or arriving with a part). Default: one camera
+    /// silent 5.5 s into work, a class change request 2 s in, every camera silent 0.3 s after the
+    /// robot brought the second part.
+    #[arg(long)]
+    pub faults: Option<PathBuf>,
     /// Leave out the floor pick (after the first handover cycle the operator bends down for a dropped
     /// part, 0.40 m above the floor: a bad posture that raises a RULA warning).
     #[arg(long)]
@@ -379,6 +386,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         ),
     };
     let (rig, _) = parse_rig(&rig_text, &rig_label).map_err(|e| UsageError(e.to_string()))?;
+    let mut schedule = match &args.faults {
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|e| {
+                UsageError(format!("--faults {}: cannot read it: {e}", path.display()))
+            })?;
+            let names: Vec<&str> = rig.cameras().iter().map(|c| c.id.as_str()).collect();
+            FaultSchedule::from_toml_str(&text, &path.display().to_string(), &names)
+                .map_err(|e| UsageError(e.to_string()))?
+        }
+        None => FaultSchedule::demo(),
+    };
+    if args.no_faults {
+        schedule
+            .faults
+            .retain(|f| f.kind != ergocell_sim::faults::FaultKind::CamerasSilent);
+    }
 
     // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
     remove_stale_demo_dirs(&std::env::temp_dir());
@@ -521,6 +544,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         args.seed,
         out.display()
     );
+    if schedule.faults.is_empty() {
+        say!("  faults: none");
+    } else {
+        let list: Vec<String> = schedule.faults.iter().map(ToString::to_string).collect();
+        say!("  faults: {}", list.join("; "));
+    }
     if let Some(p) = &script.floor_pick {
         say!(
             "  floor pick after handover cycle {}: the operator bends down for a dropped part {:.2} m above the floor (robot not involved)",
@@ -536,8 +565,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut sim_done = false;
     let mut was_picking = false;
     let mut working_since: Option<i64> = None;
-    let mut blackout_from: Option<i64> = None;
-    let mut change_requested = false;
+    let mut faults = FaultPlayer::new(schedule);
     let mut last_status = start;
     let mut interrupted: Option<Signal> = None;
     let mut rula = "RULA -".to_owned();
@@ -623,33 +651,25 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             // The script is over and the cell is empty; the cameras keep publishing "nobody".
             views = (0..rig.len()).map(|k| View2::empty(k, now)).collect();
         }
-        // Faults while working: s1_left silent 5.5–6.5 s after the robot starts; every camera for
-        // 1.2 s once the robot has brought the next part after the first was taken and has stood
-        // 0.3 s at the handover point (the operator works on the first part meanwhile).
-        if let (Some(w), false) = (working_since, args.no_faults) {
-            let t = now - w;
-            if (5_500_000_000..6_500_000_000).contains(&t) {
-                views.retain(|v| v.camera != 0);
-            }
-            if blackout_from.is_none() && machine.summary().parts_taken >= 1 {
-                if let Some((
-                    sent,
-                    RobotCommand::Execute {
-                        leg: Leg::ToHandover,
-                        trajectory,
-                        ..
-                    },
-                )) = robot.received.last()
-                {
-                    let arrived = sent + (trajectory.duration_s() * 1e9).round() as i64;
-                    if now - arrived >= 300_000_000 {
-                        blackout_from = Some(now);
-                    }
-                }
-            }
-            if blackout_from.is_some_and(|b| now - b < 1_200_000_000) {
-                views.clear();
-            }
+        // The fault schedule: the robot's arrival with each part is a moment it is timed from.
+        if let Some((
+            sent,
+            RobotCommand::Execute {
+                leg: Leg::ToHandover,
+                trajectory,
+                ..
+            },
+        )) = robot.received.last()
+        {
+            let arrived = sent + (trajectory.duration_s() * 1e9).round() as i64;
+            faults.arrived_with_part(machine.summary().parts_taken + 1, arrived);
+        }
+        let fault = faults.step(now);
+        if fault.silenced != Silenced::None {
+            views.retain(|v| {
+                rig.camera(v.camera)
+                    .is_none_or(|c| !fault.silenced.drops(c.id.as_str()))
+            });
         }
         for v in &views {
             let m = messages::landmarks_message(&rig, v);
@@ -702,23 +722,21 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         recording::record_events(&mut rec, &machine, now, &events)?;
         if working_since.is_none() && machine.state() == SessionState::Working {
             working_since = Some(now);
+            faults.working(now);
         }
-        // A supervisor asks for another class mid-session: refused.
-        if let (Some(w), false) = (working_since, change_requested) {
-            if now - w >= 2_000_000_000 {
-                change_requested = true;
-                let other = if machine.summary().class.as_deref() == Some("c3") {
-                    TrajectoryClass::C1
-                } else {
-                    TrajectoryClass::C3
-                };
-                let e = machine.request_class(now, other);
-                report(std::slice::from_ref(&e), now, start);
-                if let Some(d) = &display {
-                    d.display.update(&machine, std::slice::from_ref(&e));
-                }
-                recording::record_events(&mut rec, &machine, now, &[e])?;
+        // A supervisor asks for another class mid-session (the schedule's request): refused.
+        if fault.class_change_request {
+            let other = if machine.summary().class.as_deref() == Some("c3") {
+                TrajectoryClass::C1
+            } else {
+                TrajectoryClass::C3
+            };
+            let e = machine.request_class(now, other);
+            report(std::slice::from_ref(&e), now, start);
+            if let Some(d) = &display {
+                d.display.update(&machine, std::slice::from_ref(&e));
             }
+            recording::record_events(&mut rec, &machine, now, &[e])?;
         }
         let names = lock.trajectory.joint_names.clone();
         if let Some(position) = robot.joint_positions(now, &names) {
