@@ -1,5 +1,8 @@
-//! The `ergocell` binary's library half: the cell controller's session state machine and its
-//! recording, shared by the `demo`, `run` and `replay` commands and by the integration tests.
+//! The `ergocell` binary's library half: the I/O around the cell's core (the session state machine
+//! lives in `ergocell_cell` and is re-exported as [`session`], with the file-reading trajectory
+//! provider and the simulated landmark source beside it), the core ↔ ROS message conversions
+//! ([`messages`]), the MCAP recorder, the operator display and review servers, the shipped reference
+//! cell; shared by the commands and by the integration tests.
 //!
 //! `anyhow` stays in the command modules of the binary; this half returns typed errors.
 

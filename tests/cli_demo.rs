@@ -315,6 +315,22 @@ fn demo_in(dir: &Path, args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
+/// `ergocell demo <args>` from the repository root: it succeeds, and its output says each of
+/// `expected`; returns the output.
+fn demo_saying(args: &[&str], expected: &[&str]) -> String {
+    let run = demo_in(Path::new(env!("CARGO_MANIFEST_DIR")), args);
+    let stdout = String::from_utf8_lossy(&run.stdout).into_owned();
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    for e in expected {
+        assert!(stdout.contains(e), "missing `{e}` in:\n{stdout}");
+    }
+    stdout
+}
+
 /// Near a boundary the cell may serve an operator with the neighbouring class (its trajectory is
 /// validated for their stature): the simulated operator then reaches where that class's robot brings
 /// the part, and takes every part. A 1.675 m operator (class c1, 5 mm below the boundary) is served
@@ -322,8 +338,7 @@ fn demo_in(dir: &Path, args: &[&str]) -> std::process::Output {
 #[test]
 fn an_operator_served_by_the_neighbouring_class_takes_every_part() {
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-demo-neighbour.mcap");
-    let run = demo_in(
-        Path::new(env!("CARGO_MANIFEST_DIR")),
+    demo_saying(
         &[
             "--stature-m",
             "1.675",
@@ -334,31 +349,20 @@ fn an_operator_served_by_the_neighbouring_class_takes_every_part() {
             "--out",
             out.to_str().unwrap(),
         ],
+        &[
+            "(true 1.675 m) → class c2",
+            "the operator (class c1) reaches for class c2's handover point (2 cycle(s))",
+            "decision:       expected_rula (probability 0.",
+            "true class c1",
+            "(2 part(s) taken at the handover point)",
+            "session:        session_ended",
+        ],
     );
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(
-        run.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
-    for expected in [
-        "(true 1.675 m) → class c2",
-        "the operator (class c1) reaches for class c2's handover point (2 cycle(s))",
-        "decision:       expected_rula (probability 0.",
-        "true class c1",
-        "(2 part(s) taken at the handover point)",
-        "session:        session_ended",
-    ] {
-        assert!(
-            stdout.contains(expected),
-            "missing `{expected}` in:\n{stdout}"
-        );
-    }
 }
 
 /// The faults are a schedule the user can change: a file with only a longer blackout once the robot
-/// brought the second part holds the robot once, drops no single camera and makes no class change request; a file
-/// naming a camera the rig lacks is refused before anything runs (exit 2).
+/// brought the second part holds the robot once, drops no single camera and makes no class change
+/// request; a file naming a camera the rig lacks is refused before anything runs (exit 2).
 #[test]
 fn demo_plays_a_fault_schedule_from_a_file() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-demo-faults");
@@ -370,8 +374,7 @@ fn demo_plays_a_fault_schedule_from_a_file() {
     )
     .unwrap();
     let out = dir.join("faults.mcap");
-    let run = demo_in(
-        Path::new(env!("CARGO_MANIFEST_DIR")),
+    let stdout = demo_saying(
         &[
             "--cycles",
             "1",
@@ -382,25 +385,14 @@ fn demo_plays_a_fault_schedule_from_a_file() {
             "--out",
             out.to_str().unwrap(),
         ],
+        &[
+            "faults: every camera silent for 1.5 s, 0.5 s after the robot arrives with part 2",
+            "robot ← HOLD",
+            "state held → working",
+            "0 change request(s) refused",
+            "(1 part(s) taken at the handover point)",
+        ],
     );
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(
-        run.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
-    for expected in [
-        "faults: every camera silent for 1.5 s, 0.5 s after the robot arrives with part 2",
-        "robot ← HOLD",
-        "state held → working",
-        "0 change request(s) refused",
-        "(1 part(s) taken at the handover point)",
-    ] {
-        assert!(
-            stdout.contains(expected),
-            "missing `{expected}` in:\n{stdout}"
-        );
-    }
     // s1_left goes silent once, in the blackout (the default schedule also drops it alone).
     assert_eq!(
         stdout.matches("camera s1_left degraded").count(),

@@ -1425,6 +1425,14 @@ mod tests {
         assert_eq!(legs[0].feedback_count, None);
     }
 
+    /// (t, part, hand, distance) of each part taken.
+    fn parts_of(f: &Facts) -> Vec<(f64, u32, Option<&str>, Option<f64>)> {
+        f.parts_taken
+            .iter()
+            .map(|p| (p.t, p.part, p.hand.as_deref(), p.distance_m))
+            .collect()
+    }
+
     #[test]
     fn parts_taken_are_read_from_the_states_reasons_once_each() {
         let state = |reason: &str| SessionState {
@@ -1442,14 +1450,8 @@ mod tests {
             stamped(9 * S, state(&taken(2, "right"))),
             stamped(10 * S, state("part of the cell")),
         ];
-        let f = facts(&states, S);
-        let parts: Vec<(f64, u32, Option<&str>, Option<f64>)> = f
-            .parts_taken
-            .iter()
-            .map(|p| (p.t, p.part, p.hand.as_deref(), p.distance_m))
-            .collect();
         assert_eq!(
-            parts,
+            parts_of(&facts(&states, S)),
             [
                 (3.0, 1, Some("left"), Some(0.083)),
                 (8.0, 2, Some("right"), Some(0.083))
@@ -1487,14 +1489,8 @@ mod tests {
                 ),
             ),
         ];
-        let f = facts(&states, S);
-        let parts: Vec<(f64, u32, Option<&str>, Option<f64>)> = f
-            .parts_taken
-            .iter()
-            .map(|p| (p.t, p.part, p.hand.as_deref(), p.distance_m))
-            .collect();
         assert_eq!(
-            parts,
+            parts_of(&facts(&states, S)),
             [
                 (3.0, 1, Some("right"), Some(0.021)),
                 (8.0, 2, Some("left"), Some(0.004))

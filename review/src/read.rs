@@ -405,6 +405,7 @@ fn take<M: RosMessage + DeserializeOwned>(
 /// RULA cost) and the parts taken as fields (the same fields, without those six): such recordings
 /// stay reviewable.
 #[derive(serde::Deserialize)]
+#[cfg_attr(test, derive(serde::Serialize))]
 struct SessionStateWithoutDecision {
     header: ergocell_bridge::msg::Header,
     state: String,
@@ -607,21 +608,7 @@ mod tests {
     /// decision's fields are unknown, the rest as recorded; a damaged payload is still refused.
     #[test]
     fn a_session_state_without_the_decision_fields_still_reads() {
-        #[derive(serde::Serialize)]
-        struct Old {
-            header: ergocell_bridge::msg::Header,
-            state: String,
-            reason: String,
-            height_m: f64,
-            height_uncertainty_m: f64,
-            height_class: String,
-            trajectory_sha256: String,
-            robot_held: bool,
-            cameras_fresh: u32,
-            stereo_pairs_tracking: u32,
-            trajectory_approved_by: Vec<String>,
-        }
-        let old = cdr::encode(&Old {
+        let old = cdr::encode(&SessionStateWithoutDecision {
             header: ergocell_bridge::msg::Header::default(),
             state: "class_decided".into(),
             reason: "r".into(),

@@ -595,7 +595,7 @@ pub fn path_tolerances(
 }
 
 /// [`path_tolerances`] over joint positions (`[sample][joint]`, radians): what the validation
-/// derives for its lock ([`crate::LockSummary::path_tolerance_rad`]).
+/// derives for its lock ([`crate::lock::LockSummary::path_tolerance_rad`]).
 pub fn path_tolerances_of(
     model: &RobotModel,
     T_flange_tcp: &Isometry3<f64>,
