@@ -669,6 +669,11 @@ pub fn leg_message(leg: &crate::session::LegTrajectory) -> JointTrajectory {
     }
 }
 
+/// ", expected RULA cost +0.02" for a class decision's expected cost, or nothing without one.
+pub fn rula_cost_clause(cost: Option<f64>) -> String {
+    cost.map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
+}
+
 /// One line for a person reading the terminal or the log.
 pub fn describe(e: &SessionEvent) -> String {
     use crate::session::{RobotCommand, SessionEvent as E};
@@ -693,7 +698,7 @@ pub fn describe(e: &SessionEvent) -> String {
                 DecisionBasis::ExpectedRula => "across a boundary: the lowest expected RULA",
                 DecisionBasis::MostProbable => "across a boundary: the most probable class",
             },
-            expected_rula_cost.map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
+            rula_cost_clause(*expected_rula_cost)
         ),
         E::TrajectoryLocked {
             class,

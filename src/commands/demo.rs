@@ -456,9 +456,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let lock = LockFile::from_toml_str(true_class, &lock_text)
         .map_err(|e| anyhow::anyhow!("lock of {true_class}: {e}"))?;
     let [hx, hy, hz] = lock.summary.handover_station_m;
-    let mut geometry = provider
-        .robot_geometry(true_class)
-        .map_err(|e| anyhow::anyhow!(e))?;
     // Near a boundary the cell may serve the operator with the neighbouring class (its trajectory is
     // validated for their stature): the operator then reaches where that class's robot brings the part.
     let mut handovers = Vec::new();
@@ -473,6 +470,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .map_err(|e| anyhow::anyhow!(e))?;
         handovers.push((class, Point3::new(x, y, z), geometry));
     }
+    let mut geometry = handovers
+        .iter()
+        .find(|(c, ..)| *c == true_class)
+        .map(|(.., g)| g.clone())
+        .context("no robot geometry for the operator's class")?;
     let mut script = SessionScript::new(Point3::new(hx, hy, hz));
     script.cycles = args.cycles;
     // The class is decided after 30 upright frames at the station (1 s at 30 Hz) and the first leg
@@ -564,7 +566,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut now = start;
     let mut sim_done = false;
     let mut was_picking = false;
-    let mut working_since: Option<i64> = None;
     let mut faults = FaultPlayer::new(schedule);
     let mut last_status = start;
     let mut interrupted: Option<Signal> = None;
@@ -720,8 +721,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             }
         }
         recording::record_events(&mut rec, &machine, now, &events)?;
-        if working_since.is_none() && machine.state() == SessionState::Working {
-            working_since = Some(now);
+        if machine.state() == SessionState::Working {
+            // The first call counts: the moment the faults are timed from.
             faults.working(now);
         }
         // A supervisor asks for another class mid-session (the schedule's request): refused.
@@ -804,8 +805,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             "  decision:       {} (probability {:.2}{}); true class {true_class}",
             d.basis.name(),
             d.probability,
-            d.expected_rula_cost
-                .map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
+            messages::rula_cost_clause(d.expected_rula_cost)
         );
     }
     say!(

@@ -206,9 +206,7 @@ fn summary(data: &ReviewData) -> String {
                 match (&s.facts.decision_basis, s.facts.class_probability) {
                     (Some(b), Some(p)) => format!(
                         " ({b}, probability {p:.2}{})",
-                        s.facts
-                            .expected_rula_cost
-                            .map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
+                        ergocell::messages::rula_cost_clause(s.facts.expected_rula_cost)
                     ),
                     _ => String::new(),
                 },
