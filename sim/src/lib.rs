@@ -18,6 +18,7 @@
 //!   run through the real perception and ergonomics crates.
 //! - [`faults`]: the demo's faults (silent cameras, a class change request) as a schedule timed
 //!   from the cell's cycle, a file a user or a test can change.
+//! - [`source`]: the simulator as the cell's landmark source ([`source::SimSource`]).
 //! - [`session`]: the session script (walk in → idle → N handovers → walk out) and the simulation
 //!   clock; each [`Tick`] carries the ground truth and every camera's [`View2`](ergocell_perception::View2).
 //!
@@ -61,6 +62,7 @@ pub mod faults;
 pub mod reach;
 pub mod seeds;
 pub mod session;
+pub mod source;
 
 pub use body::{ArmPosture, LegPosture, Operator, Posture};
 pub use cameras::{ring_rig, RingRigConfig};

@@ -25,13 +25,13 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 use ergocell::messages;
-use ergocell::recording::{self, topics, McapRecorder};
+use ergocell::recording::{self, topics, McapRecorder, Recording};
+use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
-use ergocell::session::sim::SimSource;
 use ergocell::session::{
-    trajectory_class, LandmarkSource, Leg, RobotCommand, RobotSink, SessionEvent, SessionMachine,
-    SessionState,
+    trajectory_class, CellLoop, CellOutputs, LandmarkSource, Leg, OutputError, RobotCommand,
+    RobotSink, SessionEvent, SessionMachine, SessionState,
 };
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
@@ -39,13 +39,14 @@ use ergocell_cell::CellSettings;
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
 use ergocell_perception::rig_file::parse_rig;
-use ergocell_perception::View2;
+use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_sim::faults::{FaultPlayer, FaultSchedule, Silenced};
+use ergocell_sim::source::SimSource;
 use ergocell_sim::{CameraBump, FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
 
-use super::signals::{Signal, StopFlag, Stopped};
+use super::signals::{StopFlag, Stopped};
 use super::{output, UsageError};
 
 /// The default recording (with a number added when it exists: `ergocell-demo-2.mcap`, …).
@@ -233,6 +234,30 @@ struct Soak {
 }
 
 impl Soak {
+    /// A report every `minutes` of simulated time from `start`; prints the first line.
+    fn new(minutes: u64, start: i64) -> Self {
+        let every_nanos = i64::try_from(minutes).unwrap_or(1) * 60_000_000_000;
+        say!(
+            "  soak: t=  0.00 h  RSS {} MiB",
+            rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}"))
+        );
+        Self {
+            every_nanos,
+            next_nanos: start + every_nanos,
+            steps_us: Vec::new(),
+        }
+    }
+
+    /// One step's wall time; a line when one is due.
+    fn step(&mut self, now: i64, start: i64, step_started: std::time::Instant) {
+        self.steps_us
+            .push(step_started.elapsed().as_secs_f64() * 1e6);
+        if now >= self.next_nanos {
+            self.next_nanos += self.every_nanos;
+            self.line(secs(now, start) / 3600.0);
+        }
+    }
+
     fn line(&mut self, elapsed_h: f64) {
         self.steps_us.sort_by(f64::total_cmp);
         let q = |p: f64| {
@@ -351,27 +376,106 @@ fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
     Ok((path, moved))
 }
 
-pub fn run(args: &Args) -> anyhow::Result<()> {
-    // First of all: a stop signal from here on holds the robot and closes the recording.
-    let stop = StopFlag::install()?;
+/// The demo's outputs: the console (every session event, a status line), the operator display and
+/// the recording, in that order for every step.
+struct DemoOutputs {
+    recording: Recording,
+    display: Option<DisplayServer>,
+    start: i64,
+    /// The newest frame's RULA, for the status line.
+    rula: String,
+}
+
+impl CellOutputs for DemoOutputs {
+    fn session_step(
+        &mut self,
+        now: i64,
+        machine: &SessionMachine,
+        events: &[SessionEvent],
+    ) -> Result<(), OutputError> {
+        report(events, now, self.start);
+        if let Some(d) = &self.display {
+            d.display.update(machine, events);
+        }
+        for e in events {
+            if let SessionEvent::Frame {
+                assessment: Some(a),
+                ..
+            } = e
+            {
+                let score = |side: Option<&ergocell_ergonomics::SideAssessment>| {
+                    side.map_or("-".to_owned(), |s| s.scores.final_score.to_string())
+                };
+                self.rula = format!(
+                    "RULA left {} right {} (action level {})",
+                    score(a.left.as_ref()),
+                    score(a.right.as_ref()),
+                    a.headline().map_or(0, |h| h.scores.action_level)
+                );
+            }
+        }
+        self.recording
+            .with(|rec| recording::record_events(rec, machine, now, events));
+        self.recording.new_failure().map_or(Ok(()), Err)
+    }
+
+    fn take_failure(&mut self) -> Option<OutputError> {
+        self.recording.new_failure()
+    }
+}
+
+/// Each class's handover point (the station frame of its lock, in the world here) and robot geometry.
+struct Handover {
+    class: TrajectoryClass,
+    point: Point3<f64>,
+    geometry: RobotGeometry,
+    lock: LockFile,
+}
+
+fn handovers(provider: &FileTrajectories) -> anyhow::Result<Vec<Handover>> {
+    TrajectoryClass::ALL
+        .into_iter()
+        .map(|class| {
+            let text = provider.lock_text(class).map_err(|e| anyhow::anyhow!(e))?;
+            let lock = LockFile::from_toml_str(class, &text)
+                .map_err(|e| anyhow::anyhow!("lock of {class}: {e}"))?;
+            let [x, y, z] = lock.summary.handover_station_m;
+            let geometry = provider
+                .robot_geometry(class)
+                .map_err(|e| anyhow::anyhow!(e))?;
+            Ok(Handover {
+                class,
+                point: Point3::new(x, y, z),
+                geometry,
+                lock,
+            })
+        })
+        .collect()
+}
+
+fn check_args(args: &Args) -> Result<(), UsageError> {
     if !(1.3..=2.2).contains(&args.stature_m) {
         return Err(UsageError(format!(
             "--stature-m {:?} is outside 1.3..=2.2 m",
             args.stature_m
-        ))
-        .into());
+        )));
     }
     if !(1.0..=120.0).contains(&args.fps) {
-        return Err(UsageError(format!("--fps {:?} is outside 1..=120 Hz", args.fps)).into());
+        return Err(UsageError(format!(
+            "--fps {:?} is outside 1..=120 Hz",
+            args.fps
+        )));
     }
     if args.cycles > MAX_CYCLES {
         return Err(UsageError(format!(
             "--cycles {} is more than {MAX_CYCLES}",
             args.cycles
-        ))
-        .into());
+        )));
     }
-    let (out, moved) = output_path(args)?;
+    Ok(())
+}
+
+fn read_rig(args: &Args) -> anyhow::Result<CameraRig> {
     let (rig_text, rig_label) = match &args.rig {
         Some(path) => (
             std::fs::read_to_string(path)
@@ -379,13 +483,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             path.display().to_string(),
         ),
         None => (
-            shipped::file(std::path::Path::new(shipped::RIG))
+            shipped::file(Path::new(shipped::RIG))
                 .context("the shipped rig is missing from the binary")?
                 .to_owned(),
             shipped::label(shipped::RIG),
         ),
     };
-    let (rig, _) = parse_rig(&rig_text, &rig_label).map_err(|e| UsageError(e.to_string()))?;
+    Ok(parse_rig(&rig_text, &rig_label)
+        .map_err(|e| UsageError(e.to_string()))?
+        .0)
+}
+
+fn fault_schedule(args: &Args, rig: &CameraRig) -> Result<FaultSchedule, UsageError> {
     let mut schedule = match &args.faults {
         Some(path) => {
             let text = std::fs::read_to_string(path).map_err(|e| {
@@ -402,29 +511,25 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .faults
             .retain(|f| f.kind != ergocell_sim::faults::FaultKind::CamerasSilent);
     }
+    Ok(schedule)
+}
 
-    // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
-    remove_stale_demo_dirs(&std::env::temp_dir());
-    let demo_dir =
-        TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
-    private_dir(&demo_dir.0)?;
-    let approvals_dir = demo_dir.0.join("approvals");
+/// The provider on the shipped (or given) files with demo approvals in `approvals_dir`, said loudly.
+fn demo_provider(
+    args: &Args,
+    approvals_dir: &Path,
+    start: i64,
+) -> anyhow::Result<FileTrajectories> {
     // A throwaway Ed25519 key derived from the demo's seed (same seed, same demo locks); the run
     // trusts it alone.
     let seed = ergocell_robot::signing::derived_seed("ergocell demo approval key v1", args.seed);
     let provider = FileTrajectories::with_shipped_defaults(
         args.cell.as_deref(),
         args.trajectories.as_deref(),
-        &approvals_dir,
+        approvals_dir,
     )
     .with_demo_key(&seed)
     .map_err(|e| anyhow::anyhow!("demo approvals: {e}"))?;
-    let cell_text = provider
-        .cell_text()
-        .map_err(|e| UsageError(e.to_string()))?;
-    let settings = CellSettings::from_toml_str(&cell_text, &provider.cell_label())
-        .map_err(|e| UsageError(e.to_string()))?;
-    let start = wall_clock_nanos();
     say!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
     say!(
         "  DEMO APPROVAL: the shipped trajectories are re-locked and approved for this run only, in {},",
@@ -446,36 +551,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .approve_for_demo(class, &stamp)
             .map_err(|e| anyhow::anyhow!("{class}: {e}"))?;
     }
+    Ok(provider)
+}
 
-    // The simulated operator reaches for the handover point of their true class (the session itself
-    // measures the height and decides the class from the cameras).
-    let true_class = trajectory_class(HeightClass::of(args.stature_m, &ClassThresholds::default()));
-    let lock_text = provider
-        .lock_text(true_class)
-        .map_err(|e| anyhow::anyhow!(e))?;
-    let lock = LockFile::from_toml_str(true_class, &lock_text)
-        .map_err(|e| anyhow::anyhow!("lock of {true_class}: {e}"))?;
-    let [hx, hy, hz] = lock.summary.handover_station_m;
-    // Near a boundary the cell may serve the operator with the neighbouring class (its trajectory is
-    // validated for their stature): the operator then reaches where that class's robot brings the part.
-    let mut handovers = Vec::new();
-    for class in TrajectoryClass::ALL {
-        let text = provider.lock_text(class).map_err(|e| anyhow::anyhow!(e))?;
-        let [x, y, z] = LockFile::from_toml_str(class, &text)
-            .map_err(|e| anyhow::anyhow!("lock of {class}: {e}"))?
-            .summary
-            .handover_station_m;
-        let geometry = provider
-            .robot_geometry(class)
-            .map_err(|e| anyhow::anyhow!(e))?;
-        handovers.push((class, Point3::new(x, y, z), geometry));
-    }
-    let mut geometry = handovers
-        .iter()
-        .find(|(c, ..)| *c == true_class)
-        .map(|(.., g)| g.clone())
-        .context("no robot geometry for the operator's class")?;
-    let mut script = SessionScript::new(Point3::new(hx, hy, hz));
+/// The simulated operator's session script: reaching for `own`'s handover point, cycling at the
+/// cell's pace.
+fn script(args: &Args, own: &Handover, settings: &CellSettings) -> SessionScript {
+    let mut script = SessionScript::new(own.point);
     script.cycles = args.cycles;
     // The class is decided after 30 upright frames at the station (1 s at 30 Hz) and the first leg
     // takes 5 s: the operator stands a second longer before reaching, so the part is there, and at
@@ -483,15 +565,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     script.idle_secs += 1.0;
     // The cell's cycle sets the operator's: after taking a part the operator works on it at the
     // station (the script's rest) while the robot goes home, takes the next part and brings it.
-    script.rest_secs = operator_rest_secs(&lock, &settings);
+    script.rest_secs = operator_rest_secs(&own.lock, settings);
     if !args.no_floor_pick {
         script.floor_pick = Some(FloorPick::new(args.cycles.min(1)));
     }
-    // The session's time limit: the script, then the robot's way home.
-    let limit_secs = script.duration_secs() + MARGIN_SECS;
-    let period_nanos = (1e9 / args.fps).round() as i64;
+    script
+}
+
+fn sim_config(args: &Args, rig: &CameraRig, start: i64) -> anyhow::Result<SimConfig> {
     let mut sim_config = SimConfig::new(args.seed);
-    sim_config.frame_period_nanos = period_nanos;
+    sim_config.frame_period_nanos = (1e9 / args.fps).round() as i64;
     sim_config.start_nanos = start;
     if let Some(name) = &args.bump_camera {
         let camera = rig.index_of_name(name).ok_or_else(|| {
@@ -515,23 +598,63 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             rotation_rad: [0.0, args.bump_deg.to_radians(), 0.0],
         });
     }
+    Ok(sim_config)
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    // First of all: a stop signal from here on holds the robot and closes the recording.
+    let stop = StopFlag::install()?;
+    check_args(args)?;
+    let (out, moved) = output_path(args)?;
+    let rig = read_rig(args)?;
+    let schedule = fault_schedule(args, &rig)?;
+
+    // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
+    remove_stale_demo_dirs(&std::env::temp_dir());
+    let demo_dir =
+        TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
+    private_dir(&demo_dir.0)?;
+    let start = wall_clock_nanos();
+    let provider = demo_provider(args, &demo_dir.0.join("approvals"), start)?;
+    let cell_text = provider
+        .cell_text()
+        .map_err(|e| UsageError(e.to_string()))?;
+    let settings = CellSettings::from_toml_str(&cell_text, &provider.cell_label())
+        .map_err(|e| UsageError(e.to_string()))?;
+
+    // The simulated operator reaches for the handover point of their true class (the session itself
+    // measures the height and decides the class from the cameras); near a boundary the cell may
+    // serve them with the neighbouring class (validated for their stature), and they then reach
+    // where that class's robot brings the part.
+    let true_class = trajectory_class(HeightClass::of(args.stature_m, &ClassThresholds::default()));
+    let handovers = handovers(&provider)?;
+    let own = handovers
+        .iter()
+        .find(|h| h.class == true_class)
+        .context("no handover for the operator's class")?;
+    let script = script(args, own, &settings);
+    // The session's time limit: the script, then the robot's way home.
+    let limit_secs = script.duration_secs() + MARGIN_SECS;
+    let floor_pick = script.floor_pick;
     let sim = Simulation::new(
         rig.clone(),
         Operator::new(args.stature_m)?,
         script,
-        sim_config,
+        sim_config(args, &rig, start)?,
     )?;
-    let home = lock
+    let joints = own.lock.trajectory.joint_names.clone();
+    let home = own
+        .lock
         .trajectory
         .point
         .first()
         .map(|p| p.positions_rad.clone())
         .context("lock file without points")?;
     // The newest command is all the demo reads back (the blackout waits for a leg's arrival).
-    let mut robot = DummyRobot::new(lock.trajectory.joint_names.clone(), home).keeping_last(1);
-    let mut machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
+    let robot = DummyRobot::new(joints.clone(), home).keeping_last(1);
+    let machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
         .map_err(|e| UsageError(e.to_string()))?;
-    let mut rec = McapRecorder::from_file(output::create("--out", &out, args.force)?)?;
+    let rec = McapRecorder::from_file(output::create("--out", &out, args.force)?)?;
     if moved {
         say!(
             "  {DEFAULT_OUT} exists (kept): recording into {} (--out names the file, --force overwrites)",
@@ -552,7 +675,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let list: Vec<String> = schedule.faults.iter().map(ToString::to_string).collect();
         say!("  faults: {}", list.join("; "));
     }
-    if let Some(p) = &script.floor_pick {
+    if let Some(p) = &floor_pick {
         say!(
             "  floor pick after handover cycle {}: the operator bends down for a dropped part {:.2} m above the floor (robot not involved)",
             p.after_cycle,
@@ -560,99 +683,187 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         );
     }
     say!();
-
-    // The cameras: the simulator as a landmark source (a view arrives at its tick's time).
-    let mut source = SimSource::new(sim, Vec::new());
-    let mut now = start;
-    let mut sim_done = false;
-    let mut was_picking = false;
-    let mut faults = FaultPlayer::new(schedule);
-    let mut last_status = start;
-    let mut interrupted: Option<Signal> = None;
-    let mut rula = "RULA -".to_owned();
-    let limit = start + (limit_secs * 1e9).round() as i64;
-    let mut soak = args.soak_report.map(|minutes| {
-        let every_nanos = i64::try_from(minutes).unwrap_or(1) * 60_000_000_000;
-        Soak {
-            every_nanos,
-            next_nanos: start + every_nanos,
-            steps_us: Vec::new(),
-        }
-    });
-    if soak.is_some() {
-        say!(
-            "  soak: t=  0.00 h  RSS {} MiB",
-            rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}"))
-        );
-    }
-    let display = match args.display {
-        Some(addr) => Some(DisplayServer::start(addr)?),
-        None => None,
+    let outputs = DemoOutputs {
+        recording: Recording::new(Some(rec)),
+        display: args.display.map(DisplayServer::start).transpose()?,
+        start,
+        rula: "RULA -".to_owned(),
     };
-    let wall_start = instant();
-    while machine.state() != SessionState::SessionEnded {
-        if display.is_some() {
-            // real time: the page shows the session as it happens
-            let due = std::time::Duration::from_nanos(u64::try_from(now - start).unwrap_or(0));
-            if let Some(wait) = due.checked_sub(wall_start.elapsed()) {
-                std::thread::sleep(wait);
-            }
+    let why = format!(
+        "the demo's time limit was reached: {limit_secs:.1} s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for the robot's way home)",
+        limit_secs - MARGIN_SECS
+    );
+    let mut cell = CellLoop::new(machine, robot, outputs)
+        .with_deadline(start + (limit_secs * 1e9).round() as i64, why);
+    let mut twin = Twin {
+        source: SimSource::new(sim),
+        faults: FaultPlayer::new(schedule),
+        handovers: &handovers,
+        geometry: own.geometry.clone(),
+        true_class,
+        joints,
+        rig: &rig,
+        start,
+        period_nanos: (1e9 / args.fps).round() as i64,
+    };
+    let now = twin.play(&mut cell, &stop, args.soak_report)?;
+    let (machine, _, outputs) = cell.into_parts();
+    drop(outputs.display);
+    let messages = outputs.recording.close()?;
+    drop(demo_dir);
+    summary(&machine, args, true_class, secs(now, start));
+    say!(
+        "  recording:      {} ({} messages; open in Foxglove or `ros2 bag info`)",
+        out.display(),
+        messages.map_or("n/a".to_owned(), |m| m.to_string())
+    );
+    if let Some(signal) = stop.get() {
+        return Err(Stopped {
+            signal,
+            what: format!("robot held, recording {} closed", out.display()),
         }
-        let step_started = instant();
-        if let Some(signal) = stop.get() {
-            interrupted = Some(signal);
-            let events = machine.shutdown(now, &mut robot, signal.name());
-            report(&events, now, start);
-            if let Some(d) = &display {
-                d.display.update(&machine, &events);
-            }
-            recording::record_events(&mut rec, &machine, now, &events)?;
-            break;
-        }
-        if now > limit {
-            let why = format!(
-                "the demo's time limit was reached: {limit_secs:.1} s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for the robot's way home)",
-                limit_secs - MARGIN_SECS
-            );
-            let events = machine.shutdown(now, &mut robot, &why);
-            report(&events, now, start);
-            if let Some(d) = &display {
-                d.display.update(&machine, &events);
-            }
-            recording::record_events(&mut rec, &machine, now, &events)?;
-            break;
-        }
-        let mut views = Vec::new();
-        if !sim_done {
-            match source.poll(now)? {
-                Some(v) => {
-                    views = v;
-                    // The simulator's ground truth: when the operator bends down and stands up.
-                    let picking = source
-                        .last_tick
-                        .as_ref()
-                        .is_some_and(|t| matches!(t.truth.phase, Phase::FloorPick { .. }));
-                    if picking != was_picking {
-                        was_picking = picking;
-                        say!(
-                            "  t={:5.1} s  (simulator) {}",
-                            secs(now, start),
-                            if picking {
-                                "operator bends down for the dropped part (floor pick)"
-                            } else {
-                                "operator stands back up with the part"
-                            }
-                        );
-                    }
+        .into());
+    }
+    let s = machine.summary();
+    if !s.ended {
+        anyhow::bail!("the session did not end normally: {}", s.end_reason);
+    }
+    Ok(())
+}
+
+/// The digital twin around the cell loop: the simulated cameras with the fault schedule, and the
+/// simulated robot's joint states and markers recorded as a real cell's would be.
+struct Twin<'a> {
+    source: SimSource,
+    faults: FaultPlayer,
+    handovers: &'a [Handover],
+    /// The served class's robot geometry (its TCP and handover point, for the recording's markers).
+    geometry: RobotGeometry,
+    true_class: TrajectoryClass,
+    joints: Vec<String>,
+    rig: &'a CameraRig,
+    start: i64,
+    period_nanos: i64,
+}
+
+type DemoLoop = CellLoop<DummyRobot, DemoOutputs>;
+
+impl Twin<'_> {
+    /// Plays the session to its end on the simulator's clock; the time it ended.
+    fn play(
+        &mut self,
+        cell: &mut DemoLoop,
+        stop: &StopFlag,
+        soak_minutes: Option<u64>,
+    ) -> anyhow::Result<i64> {
+        let start = self.start;
+        let mut now = start;
+        let mut sim_done = false;
+        let mut was_picking = false;
+        let mut last_status = start;
+        let mut soak = soak_minutes.map(|minutes| Soak::new(minutes, start));
+        let wall_start = instant();
+        loop {
+            if cell.outputs().display.is_some() {
+                // real time: the page shows the session as it happens
+                let due = std::time::Duration::from_nanos(u64::try_from(now - start).unwrap_or(0));
+                if let Some(wait) = due.checked_sub(wall_start.elapsed()) {
+                    std::thread::sleep(wait);
                 }
-                None => sim_done = true,
+            }
+            let step_started = instant();
+            if let Some(signal) = stop.get() {
+                cell.stop(signal.name());
+            }
+            // Ctrl-C, the time limit, a recording that failed: ended (held) before this tick's views.
+            if cell.check(now).is_some() {
+                break;
+            }
+            let mut views = Vec::new();
+            if !sim_done {
+                match self.source.poll(now)? {
+                    Some(v) => {
+                        views = v;
+                        // The simulator's ground truth: when the operator bends down and stands up.
+                        let picking = self
+                            .source
+                            .last_tick
+                            .as_ref()
+                            .is_some_and(|t| matches!(t.truth.phase, Phase::FloorPick { .. }));
+                        if picking != was_picking {
+                            was_picking = picking;
+                            say!(
+                                "  t={:5.1} s  (simulator) {}",
+                                secs(now, start),
+                                if picking {
+                                    "operator bends down for the dropped part (floor pick)"
+                                } else {
+                                    "operator stands back up with the part"
+                                }
+                            );
+                        }
+                    }
+                    None => sim_done = true,
+                }
+            }
+            if sim_done {
+                // The script is over and the cell is empty; the cameras keep publishing "nobody".
+                views = (0..self.rig.len()).map(|k| View2::empty(k, now)).collect();
+            }
+            let class_change = self.apply_faults(cell, now, &mut views);
+            let rig = self.rig;
+            cell.outputs_mut().recording.with(|rec| {
+                views.iter().try_for_each(|v| {
+                    let m = messages::landmarks_message(rig, v);
+                    rec.write(&topics::camera(&m.camera_id), now, &m)
+                })
+            });
+            let step = cell.step(now, views);
+            self.follow_decision(&step.events, now)?;
+            if cell.machine().state() == SessionState::Working {
+                // The first call counts: the moment the faults are timed from.
+                self.faults.working(now);
+            }
+            // A supervisor asks for another class mid-session (the schedule's request): refused.
+            if class_change {
+                let other = if cell.machine().summary().class.as_deref() == Some("c3") {
+                    TrajectoryClass::C1
+                } else {
+                    TrajectoryClass::C3
+                };
+                cell.request_class(now, other);
+            }
+            self.record_robot(cell, now);
+            if now - last_status >= 5_000_000_000 {
+                last_status = now;
+                let m = cell.machine();
+                say!(
+                    "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {}",
+                    secs(now, start),
+                    m.state().name(),
+                    m.cameras_fresh(),
+                    self.rig.len(),
+                    m.pairs_tracking(),
+                    cell.outputs().rula
+                );
+            }
+            if let Some(soak) = soak.as_mut() {
+                soak.step(now, start, step_started);
+            }
+            now += self.period_nanos;
+            if step.ended.is_some() {
+                break;
             }
         }
-        if sim_done {
-            // The script is over and the cell is empty; the cameras keep publishing "nobody".
-            views = (0..rig.len()).map(|k| View2::empty(k, now)).collect();
+        if let Some(soak) = soak.as_mut() {
+            soak.line(secs(now, start) / 3600.0);
         }
-        // The fault schedule: the robot's arrival with each part is a moment it is timed from.
+        Ok(now)
+    }
+
+    /// The fault schedule at `now`: silenced cameras' views dropped; whether a class change request
+    /// is due. The robot's arrival with each part is a moment the schedule is timed from.
+    fn apply_faults(&mut self, cell: &DemoLoop, now: i64, views: &mut Vec<View2>) -> bool {
         if let Some((
             sent,
             RobotCommand::Execute {
@@ -660,136 +871,86 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 trajectory,
                 ..
             },
-        )) = robot.received.last()
+        )) = cell.robot().received.last()
         {
             let arrived = sent + (trajectory.duration_s() * 1e9).round() as i64;
-            faults.arrived_with_part(machine.summary().parts_taken + 1, arrived);
+            self.faults
+                .arrived_with_part(cell.machine().summary().parts_taken + 1, arrived);
         }
-        let fault = faults.step(now);
+        let fault = self.faults.step(now);
         if fault.silenced != Silenced::None {
             views.retain(|v| {
-                rig.camera(v.camera)
+                self.rig
+                    .camera(v.camera)
                     .is_none_or(|c| !fault.silenced.drops(c.id.as_str()))
             });
         }
-        for v in &views {
-            let m = messages::landmarks_message(&rig, v);
-            rec.write(&topics::camera(&m.camera_id), now, &m)?;
-        }
-        let events = machine.step(now, views, &mut robot);
-        report(&events, now, start);
-        for e in &events {
+        fault.class_change_request
+    }
+
+    /// Once the cell decides a class other than the operator's own, the simulated operator reaches
+    /// where that class's robot brings the part.
+    fn follow_decision(&mut self, events: &[SessionEvent], now: i64) -> anyhow::Result<()> {
+        for e in events {
             let SessionEvent::ClassDecided { class, .. } = e else {
                 continue;
             };
             let decided = trajectory_class(*class);
-            if decided == true_class {
+            if decided == self.true_class {
                 continue;
             }
-            if let Some((_, point, g)) = handovers.iter().find(|(c, ..)| *c == decided) {
-                let moved = source
+            if let Some(h) = self.handovers.iter().find(|h| h.class == decided) {
+                let moved = self
+                    .source
                     .simulation_mut()
-                    .retarget_handover(*point, now)
+                    .retarget_handover(h.point, now)
                     .context(
                         "the simulated operator cannot reach the decided class's handover point",
                     )?;
-                geometry = g.clone();
+                self.geometry = h.geometry.clone();
                 say!(
-                    "  t={:5.1} s  (simulator) the operator (class {true_class}) reaches for class {decided}'s handover point ({moved} cycle(s))",
-                    secs(now, start)
+                    "  t={:5.1} s  (simulator) the operator (class {}) reaches for class {decided}'s handover point ({moved} cycle(s))",
+                    secs(now, self.start),
+                    self.true_class
                 );
             }
         }
-        if let Some(d) = &display {
-            d.display.update(&machine, &events);
-        }
-        for e in &events {
-            if let SessionEvent::Frame {
-                assessment: Some(a),
-                ..
-            } = e
-            {
-                let score = |side: Option<&ergocell_ergonomics::SideAssessment>| {
-                    side.map_or("-".to_owned(), |s| s.scores.final_score.to_string())
-                };
-                rula = format!(
-                    "RULA left {} right {} (action level {})",
-                    score(a.left.as_ref()),
-                    score(a.right.as_ref()),
-                    a.headline().map_or(0, |h| h.scores.action_level)
-                );
-            }
-        }
-        recording::record_events(&mut rec, &machine, now, &events)?;
-        if machine.state() == SessionState::Working {
-            // The first call counts: the moment the faults are timed from.
-            faults.working(now);
-        }
-        // A supervisor asks for another class mid-session (the schedule's request): refused.
-        if fault.class_change_request {
-            let other = if machine.summary().class.as_deref() == Some("c3") {
-                TrajectoryClass::C1
-            } else {
-                TrajectoryClass::C3
-            };
-            let e = machine.request_class(now, other);
-            report(std::slice::from_ref(&e), now, start);
-            if let Some(d) = &display {
-                d.display.update(&machine, std::slice::from_ref(&e));
-            }
-            recording::record_events(&mut rec, &machine, now, &[e])?;
-        }
-        let names = lock.trajectory.joint_names.clone();
-        if let Some(position) = robot.joint_positions(now, &names) {
-            let js = JointState {
-                header: Header::new(now, ""),
-                name: names,
-                position,
-                ..JointState::default()
-            };
+        Ok(())
+    }
+
+    /// The simulated robot's joint state and TCP marker, recorded as a real cell's.
+    fn record_robot(&self, cell: &mut DemoLoop, now: i64) {
+        let Some(position) = cell.robot_mut().joint_positions(now, &self.joints) else {
+            return;
+        };
+        let js = JointState {
+            header: Header::new(now, ""),
+            name: self.joints.clone(),
+            position,
+            ..JointState::default()
+        };
+        let g = &self.geometry;
+        cell.outputs_mut().recording.with(|rec| {
             rec.write(topics::JOINT_STATES, now, &js)?;
-            if let Some(p) = geometry.tcp_world(&js) {
+            if let Some(p) = g.tcp_world(&js) {
                 rec.write(
                     topics::ROBOT_MARKERS,
                     now,
-                    &messages::robot_markers_message(now, Some(p), Some(geometry.handover_world())),
+                    &messages::robot_markers_message(now, Some(p), Some(g.handover_world())),
                 )?;
             }
-        }
-        if now - last_status >= 5_000_000_000 {
-            last_status = now;
-            say!(
-                "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {rula}",
-                secs(now, start),
-                machine.state().name(),
-                machine.cameras_fresh(),
-                rig.len(),
-                machine.pairs_tracking()
-            );
-        }
-        if let Some(soak) = soak.as_mut() {
-            soak.steps_us
-                .push(step_started.elapsed().as_secs_f64() * 1e6);
-            if now >= soak.next_nanos {
-                soak.next_nanos += soak.every_nanos;
-                soak.line(secs(now, start) / 3600.0);
-            }
-        }
-        now += period_nanos;
+            Ok(())
+        });
     }
-    if let Some(soak) = soak.as_mut() {
-        soak.line(secs(now, start) / 3600.0);
-    }
-    let messages = rec.finish()?;
-    drop(demo_dir);
+}
 
+fn summary(machine: &SessionMachine, args: &Args, true_class: TrajectoryClass, elapsed_s: f64) {
     let s = machine.summary();
     say!();
     say!("summary");
     say!(
-        "  session:        {} after {:.1} s of simulated time",
-        machine.state(),
-        secs(now, start)
+        "  session:        {} after {elapsed_s:.1} s of simulated time",
+        machine.state()
     );
     say!(
         "  height:         {} (true {:.3} m) → class {}",
@@ -840,21 +1001,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         s.parts_taken
     );
     say!("  ended:          {}", s.end_reason);
-    say!(
-        "  recording:      {} ({messages} messages; open in Foxglove or `ros2 bag info`)",
-        out.display()
-    );
-    if let Some(signal) = interrupted {
-        return Err(Stopped {
-            signal,
-            what: format!("robot held, recording {} closed", out.display()),
-        }
-        .into());
-    }
-    if !s.ended {
-        anyhow::bail!("the session did not end normally: {}", s.end_reason);
-    }
-    Ok(())
 }
 
 fn report(events: &[SessionEvent], now: i64, start: i64) {

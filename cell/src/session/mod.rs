@@ -20,9 +20,11 @@
 //! [`SessionConfig::max_frame_age_nanos`]. A hold is a software hold through the controller's normal
 //! interface, not an emergency stop.
 
+pub mod cell_loop;
 pub mod dummy;
 mod machine;
 
+pub use cell_loop::{CellLoop, CellOutputs, EndCause, Ending, OutputError};
 pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 
 use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};

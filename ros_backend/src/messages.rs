@@ -12,7 +12,7 @@ use ergocell_perception::video_geometry::{VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, Keypoint2, View2};
 use ergocell_skeleton::LANDMARK_COUNT;
 
-use crate::session::{SessionEvent, SessionMachine};
+use ergocell_cell::session::{SessionEvent, SessionMachine};
 
 /// One message a session step sends out, by its role (the topic comes from the publisher's
 /// configuration or, in a recording, from [`ergocell_bridge::topics`]).
@@ -635,10 +635,10 @@ pub fn session_state_messages(
 /// on receipt, on its own clock. A stamp from this PC's clock would shift or cut the start if the
 /// two clocks disagree (a past stamp skips points). `stamp_nanos` only stamps the hold.
 pub fn command_message(
-    command: &crate::session::RobotCommand,
+    command: &ergocell_cell::session::RobotCommand,
     stamp_nanos: i64,
 ) -> JointTrajectory {
-    use crate::session::RobotCommand;
+    use ergocell_cell::session::RobotCommand;
     use JointTrajectory;
     match command {
         RobotCommand::Execute { trajectory, .. } => leg_message(trajectory),
@@ -650,7 +650,7 @@ pub fn command_message(
 }
 
 /// A leg of the locked trajectory as a `trajectory_msgs/JointTrajectory` (zero stamp).
-pub fn leg_message(leg: &crate::session::LegTrajectory) -> JointTrajectory {
+pub fn leg_message(leg: &ergocell_cell::session::LegTrajectory) -> JointTrajectory {
     use ergocell_bridge::msg::{Duration, JointTrajectory, JointTrajectoryPoint};
     JointTrajectory {
         header: Header::default(),
@@ -676,7 +676,7 @@ pub fn rula_cost_clause(cost: Option<f64>) -> String {
 
 /// One line for a person reading the terminal or the log.
 pub fn describe(e: &SessionEvent) -> String {
-    use crate::session::{RobotCommand, SessionEvent as E};
+    use ergocell_cell::session::{RobotCommand, SessionEvent as E};
     use ergocell_ergonomics::height::DecisionBasis;
     match e {
         E::StateChanged {

@@ -1,34 +1,26 @@
-//! The simulator backend: camera views from `ergocell_sim`, with scheduled camera faults.
+//! The simulator as the cell's landmark source: the twin's camera views, each arriving at its
+//! tick's time, through the same [`LandmarkSource`] trait the ROS 2 camera subscriptions implement.
+//! Faults (silent cameras) are the caller's to apply from a [`crate::faults::FaultPlayer`].
 
-use ergocell_perception::{CameraIndex, View2};
-use ergocell_sim::{Simulation, Tick};
+use ergocell_cell::session::{BackendError, LandmarkSource};
+use ergocell_perception::View2;
 
-use super::{BackendError, LandmarkSource};
-
-/// A camera fault: `cameras` send nothing from `from_nanos` (inclusive) to `to_nanos` (exclusive).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct CameraOutage {
-    pub cameras: Vec<CameraIndex>,
-    pub from_nanos: i64,
-    pub to_nanos: i64,
-}
+use crate::{Simulation, Tick};
 
 /// Views from a running simulation; a view arrives at its tick's time.
 #[derive(Debug)]
 pub struct SimSource {
     sim: Simulation,
     pending: Option<Tick>,
-    outages: Vec<CameraOutage>,
     /// The ground truth of the last tick delivered.
     pub last_tick: Option<Tick>,
 }
 
 impl SimSource {
-    pub fn new(sim: Simulation, outages: Vec<CameraOutage>) -> Self {
+    pub fn new(sim: Simulation) -> Self {
         Self {
             sim,
             pending: None,
-            outages,
             last_tick: None,
         }
     }
@@ -36,12 +28,6 @@ impl SimSource {
     /// The simulation, to move the operator's handover point once the cell has decided a class.
     pub fn simulation_mut(&mut self) -> &mut Simulation {
         &mut self.sim
-    }
-
-    fn silenced(&self, camera: CameraIndex, t: i64) -> bool {
-        self.outages
-            .iter()
-            .any(|o| o.cameras.contains(&camera) && (o.from_nanos..o.to_nanos).contains(&t))
     }
 }
 
@@ -72,14 +58,7 @@ impl LandmarkSource for SimSource {
                 self.pending = Some(tick);
                 return Ok(Some(out));
             }
-            let t = tick.frame.stamp_nanos;
-            out.extend(
-                tick.frame
-                    .views
-                    .iter()
-                    .filter(|v| !self.silenced(v.camera, t))
-                    .cloned(),
-            );
+            out.extend(tick.frame.views.iter().cloned());
             self.last_tick = Some(tick);
         }
     }

@@ -192,9 +192,9 @@ pub fn record(
 /// Records a step's events (the same messages the cell publishes).
 pub fn record_events(
     rec: &mut McapRecorder,
-    machine: &crate::session::SessionMachine,
+    machine: &ergocell_cell::session::SessionMachine,
     now_nanos: i64,
-    events: &[crate::session::SessionEvent],
+    events: &[ergocell_cell::session::SessionEvent],
 ) -> Result<(), RecordingError> {
     record(
         rec,
@@ -240,6 +240,82 @@ pub fn read_camera_landmarks(bytes: &[u8]) -> Result<CameraReadout, RecordingErr
         }
     }
     Ok(out)
+}
+
+/// A session's recording that cannot stop silently: the recorder while it works and its first write
+/// error, after which nothing more is written. The cell loop asks for the failure
+/// ([`Recording::new_failure`]) and ends the session, held: a cell that records must not run on
+/// unrecorded.
+pub struct Recording {
+    recorder: Option<McapRecorder>,
+    failure: Option<String>,
+    reported: bool,
+}
+
+impl Recording {
+    /// Recording into `recorder`, or not recording at all (`None`).
+    pub fn new(recorder: Option<McapRecorder>) -> Self {
+        Self {
+            recorder,
+            failure: None,
+            reported: false,
+        }
+    }
+
+    /// Recording, and nothing has failed.
+    pub fn is_on(&self) -> bool {
+        self.recorder.is_some() && self.failure.is_none()
+    }
+
+    /// Runs one write; its error is kept (logged once) instead of ending the caller's loop unheld.
+    pub fn with(&mut self, write: impl FnOnce(&mut McapRecorder) -> Result<(), RecordingError>) {
+        if !self.is_on() {
+            return;
+        }
+        if let Some(rec) = self.recorder.as_mut() {
+            if let Err(e) = write(rec) {
+                // the whole chain: "MCAP: I/O error …: No space left on device (os error 28)"
+                let mut why = e.to_string();
+                let mut source = std::error::Error::source(&e);
+                while let Some(s) = source {
+                    let text = s.to_string();
+                    if !why.contains(&text) {
+                        why = format!("{why}: {text}");
+                    }
+                    source = s.source();
+                }
+                tracing::error!(error = %why, "the recording cannot be written");
+                self.failure = Some(why);
+            }
+        }
+    }
+
+    /// The failure, the first time it is asked for after it happened.
+    pub fn new_failure(&mut self) -> Option<ergocell_cell::session::OutputError> {
+        if self.reported {
+            return None;
+        }
+        let why = self.failure.clone()?;
+        self.reported = true;
+        Some(ergocell_cell::session::OutputError {
+            output: "recording",
+            why,
+        })
+    }
+
+    /// Closes the recording with its summary and footer: the messages written, or `None` when there
+    /// was no recording or it failed (what reached the disk stays readable, without its footer).
+    pub fn close(self) -> Result<Option<u64>, RecordingError> {
+        if self.failure.is_some() {
+            return Ok(None);
+        }
+        self.recorder.map(McapRecorder::finish).transpose()
+    }
+
+    /// Whether a write failed.
+    pub fn failed(&self) -> bool {
+        self.failure.is_some()
+    }
 }
 
 #[cfg(test)]

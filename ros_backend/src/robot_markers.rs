@@ -64,7 +64,7 @@ mod tests {
     use super::*;
 
     fn geometry() -> RobotGeometry {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
         let read = |p: &str| std::fs::read_to_string(root.join(p)).unwrap();
         RobotGeometry::from_texts(
             &read("config/cell.toml"),

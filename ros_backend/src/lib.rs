@@ -1,0 +1,25 @@
+//! The cell's ROS 2 backend: everything between the core (`ergocell_cell`, no ROS) and the network.
+//!
+//! - [`messages`]: every core ↔ ROS message conversion, and [`messages::step_messages`], the one
+//!   mapping from a step's events to the messages the cell sends (published and recorded alike).
+//! - [`recording`]: the MCAP recorder (rosbag2's layout) and [`recording::Recording`], a recording
+//!   whose first failure is kept for the cell loop to end the session on.
+//! - [`robot`]: the robot sink over ROS 2 ([`robot::RosRobot`]: the joint trajectory topic or a
+//!   FollowJointTrajectory goal per leg, the hold as cancel + empty trajectory), the KUKA driver's
+//!   state ([`robot::DriverState`]).
+//! - [`monitor`]: the execution monitor's own task: every `/joint_states` sample judged against the
+//!   locked leg as it arrives, the hold published at once on a deviation.
+//! - [`outputs`]: the cell's publishers and recorder as one [`ergocell_cell::session::CellOutputs`].
+//! - [`clock`]: the wall clock at this boundary, advanced monotonically ([`clock::SessionClock`]).
+//! - [`robot_markers`]: the robot's TCP and handover point for the recording's markers.
+//!
+//! The binary's `run` composes these around [`ergocell_cell::session::CellLoop`]; the topics, QoS,
+//! node and security are `ergocell_bridge`'s.
+
+pub mod clock;
+pub mod messages;
+pub mod monitor;
+pub mod outputs;
+pub mod recording;
+pub mod robot;
+pub mod robot_markers;

@@ -1,0 +1,469 @@
+//! The robot over ROS 2: commands out on the controller's trajectory topic or as FollowJointTrajectory
+//! goals, positions in from `/joint_states`, the KUKA driver's state, and what each report from the
+//! robot side means for the session ([`RobotInput`], [`feed`]).
+//!
+//! The transport is behind [`TrajectoryTopic`] (a ROS 2 publisher on a cell; a fake in tests) and
+//! the FollowJointTrajectory task's channel, so the rules here are tested without DDS
+//! (`tests/failure_table.rs`).
+
+use std::sync::{Arc, Mutex};
+
+use ergocell_bridge::action::GoalTolerances;
+use ergocell_bridge::controller::{ControllerCommand, ControllerReport};
+use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, JointState, JointTrajectory};
+use ergocell_bridge::transport::{Publisher, RosConfig};
+use ergocell_cell::session::{
+    BackendError, CellLoop, CellOutputs, Leg, LegTrajectory, RobotCommand, RobotSink,
+};
+use ergocell_robot::monitor::{ExecutionMonitor, MonitorSettings};
+
+use crate::messages;
+use crate::monitor::MonitorNote;
+
+/// The controller's joint trajectory topic: every command in topic mode, and in action mode the
+/// empty trajectory of a hold too (it overrides any active goal), beside the cancel.
+pub trait TrajectoryTopic: Send + Sync {
+    fn publish(&self, message: JointTrajectory) -> Result<(), String>;
+}
+
+impl TrajectoryTopic for Publisher<JointTrajectory> {
+    fn publish(&self, message: JointTrajectory) -> Result<(), String> {
+        Publisher::publish(self, message).map_err(|e| format!("{e:?}"))
+    }
+}
+
+/// The robot side's events, published on `/ergocell/controller_events` and recorded, in order: the
+/// robot sink and the monitor push, the cell's outputs drain.
+pub type EventQueue = Arc<Mutex<Vec<ControllerEvent>>>;
+
+/// The execution monitor shared between the robot sink (which starts each leg) and the monitor task
+/// (which judges every sample).
+pub type SharedMonitor = Arc<Mutex<Option<ExecutionMonitor>>>;
+
+/// The robot over ROS 2, as the session's [`RobotSink`].
+pub struct RosRobot<T: TrajectoryTopic = Publisher<JointTrajectory>> {
+    topic: Arc<T>,
+    /// Action mode: the FollowJointTrajectory task's commands and the goals' tolerances.
+    action: Option<(
+        tokio::sync::mpsc::UnboundedSender<ControllerCommand>,
+        GoalTolerances,
+    )>,
+    /// The newest joint state (the monitor task writes it).
+    latest: Arc<Mutex<Option<JointState>>>,
+    /// The `[ros]` settings (the path tolerances' cap, the monitor's settings).
+    ros: RosConfig,
+    monitor: SharedMonitor,
+    events: EventQueue,
+    /// The driver's state, when `[ros] driver_state` reads it.
+    driver: Option<DriverState>,
+    /// What was last said about the driver: nothing yet, or its readiness (`None`: ready).
+    driver_said: Said,
+    /// A goal the controller accepted and has not finished.
+    goal_outstanding: bool,
+    /// After the monitor's deviation: sample arrival → cancel and hold published, milliseconds.
+    held_after_ms: Option<f64>,
+}
+
+impl<T: TrajectoryTopic> RosRobot<T> {
+    /// The robot on `topic`, with FollowJointTrajectory goals through `action` when the cell uses the
+    /// action interface.
+    pub fn new(
+        topic: Arc<T>,
+        action: Option<(
+            tokio::sync::mpsc::UnboundedSender<ControllerCommand>,
+            GoalTolerances,
+        )>,
+        ros: RosConfig,
+    ) -> Self {
+        let driver = ros.driver_state.then(DriverState::default);
+        Self {
+            topic,
+            action,
+            latest: Arc::new(Mutex::new(None)),
+            ros,
+            monitor: Arc::new(Mutex::new(None)),
+            events: Arc::new(Mutex::new(Vec::new())),
+            driver,
+            driver_said: Said::Nothing,
+            goal_outstanding: false,
+            held_after_ms: None,
+        }
+    }
+
+    /// After the monitor's deviation: how long from the bad sample's arrival to the hold, ms.
+    pub fn held_after_ms(&self) -> Option<f64> {
+        self.held_after_ms
+    }
+
+    /// The trajectory topic (the monitor task publishes its hold on it).
+    pub fn topic(&self) -> Arc<T> {
+        self.topic.clone()
+    }
+
+    /// The FollowJointTrajectory task's command channel (the monitor task cancels through it).
+    pub fn cancel_channel(&self) -> Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>> {
+        self.action.as_ref().map(|(tx, _)| tx.clone())
+    }
+
+    pub fn monitor(&self) -> SharedMonitor {
+        self.monitor.clone()
+    }
+
+    pub fn latest(&self) -> Arc<Mutex<Option<JointState>>> {
+        self.latest.clone()
+    }
+
+    pub fn events(&self) -> EventQueue {
+        self.events.clone()
+    }
+
+    /// A goal is running on the controller (accepted, no result yet).
+    pub fn goal_outstanding(&self) -> bool {
+        self.goal_outstanding
+    }
+
+    fn push(&self, event: ControllerEvent) {
+        if let Ok(mut q) = self.events.lock() {
+            q.push(event);
+        }
+    }
+
+    fn publish(&self, message: JointTrajectory) -> Result<(), BackendError> {
+        self.topic.publish(message).map_err(|reason| BackendError {
+            backend: "ROS 2 joint trajectory",
+            reason,
+        })
+    }
+
+    /// The leg's path tolerances: the lock's (derived when it was validated, signed off with it),
+    /// each at most `[ros] path_tolerance_rad`. A leg without them is not sent.
+    fn path_tolerances(&self, trajectory: &LegTrajectory) -> Result<Vec<f64>, BackendError> {
+        let t = &trajectory.path_tolerance_rad;
+        if t.len() != trajectory.joint_names.len() || !t.iter().all(|v| v.is_finite() && *v > 0.0) {
+            return Err(BackendError {
+                backend: "execution monitor",
+                reason: format!(
+                    "the leg carries path tolerances {t:?}, not one positive tolerance per joint ({})",
+                    trajectory.joint_names.len()
+                ),
+            });
+        }
+        let cap = self.ros.path_tolerance_rad;
+        Ok(t.iter().map(|v| v.min(cap)).collect())
+    }
+
+    /// Starts monitoring `trajectory` (a leg just sent), making the monitor if needed.
+    fn watch_leg(
+        &mut self,
+        now_nanos: i64,
+        label: &str,
+        trajectory: &LegTrajectory,
+        path_rad: &[f64],
+    ) -> Result<(), BackendError> {
+        let refused = |e: ergocell_robot::monitor::MonitorError| BackendError {
+            backend: "execution monitor",
+            reason: e.to_string(),
+        };
+        let mut guard = self.monitor.lock().map_err(|_| BackendError {
+            backend: "execution monitor",
+            reason: "the monitor task failed".to_owned(),
+        })?;
+        let fits = guard.as_ref().is_some_and(|m| {
+            m.joints() == trajectory.joint_names.as_slice()
+                && m.settings().path_tolerance_rad == path_rad
+        });
+        if !fits {
+            let settings = MonitorSettings {
+                path_tolerance_rad: path_rad.to_vec(),
+                goal_tolerance_rad: self.ros.goal_tolerance_rad,
+                goal_time_tolerance_s: self.ros.goal_time_tolerance_s,
+                rest_tolerance_rad: self.ros.rest_tolerance_rad,
+                stall_window_s: self.ros.stall_window_s,
+                stop_time_s: self.ros.stop_time_s,
+            };
+            *guard = Some(
+                ExecutionMonitor::new(trajectory.joint_names.clone(), settings).map_err(refused)?,
+            );
+        }
+        if let Some(m) = guard.as_mut() {
+            let p = &trajectory.points;
+            m.leg_sent(
+                now_nanos,
+                label,
+                p.iter().map(|k| k.time_from_start_s).collect(),
+                p.iter().map(|k| k.positions_rad.clone()).collect(),
+                p.iter().map(|k| k.velocities_rad_s.clone()).collect(),
+            )
+            .map_err(refused)?;
+        }
+        Ok(())
+    }
+
+    fn with_monitor(&self, f: impl FnOnce(&mut ExecutionMonitor)) {
+        if let Some(m) = self.monitor.lock().ok().as_mut().and_then(|g| g.as_mut()) {
+            f(m);
+        }
+    }
+}
+
+/// A leg's name in the controller's reports.
+pub fn leg_label(leg: Leg) -> &'static str {
+    match leg {
+        Leg::ToHandover => "home → handover",
+        Leg::ToHome => "handover → home",
+    }
+}
+
+/// Joint values in radians as printed and published: "0.0187, 0.0194, …".
+pub fn radians_list(values: &[f64]) -> String {
+    values
+        .iter()
+        .map(|t| format!("{t:.4}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The FollowJointTrajectory task is gone: nothing can be sent to the controller.
+fn controller_task_stopped() -> BackendError {
+    BackendError {
+        backend: "ROS 2 FollowJointTrajectory",
+        reason: "the controller task has stopped".to_owned(),
+    }
+}
+
+/// A controller event of `kind` about `leg` with `text`.
+pub fn controller_event(now_nanos: i64, kind: &str, leg: &str, text: String) -> ControllerEvent {
+    ControllerEvent {
+        header: ergocell_bridge::msg::Header::new(now_nanos, ""),
+        kind: kind.to_owned(),
+        leg: leg.to_owned(),
+        text,
+        max_error: f64::NAN,
+        ..ControllerEvent::default()
+    }
+}
+
+impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
+    fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError> {
+        let message = messages::command_message(command, now_nanos);
+        match command {
+            RobotCommand::Execute {
+                leg,
+                lock_sha256: _,
+                trajectory,
+            } => {
+                let label = leg_label(*leg);
+                // No tolerances, no monitor: the leg is not sent (the robot does not move).
+                let path_rad = self.path_tolerances(trajectory)?;
+                if self.ros.monitor_execution {
+                    self.watch_leg(now_nanos, label, trajectory, &path_rad)?;
+                }
+                match &self.action {
+                    None => {
+                        self.publish(message)?;
+                        // The controller starts a topic trajectory on receipt.
+                        self.with_monitor(|m| m.leg_started(now_nanos));
+                    }
+                    Some((commands, tolerances)) => commands
+                        .send(ControllerCommand::Execute {
+                            label: label.to_owned(),
+                            goal: Box::new(ergocell_bridge::action::goal(
+                                message,
+                                &path_rad,
+                                *tolerances,
+                            )),
+                        })
+                        .map_err(|_| controller_task_stopped())?,
+                }
+                self.push(controller_event(
+                    now_nanos,
+                    "goal_sent",
+                    label,
+                    format!(
+                        "{} points over {:.2} s; path tolerances {} rad",
+                        trajectory.points.len(),
+                        trajectory.duration_s(),
+                        radians_list(&path_rad)
+                    ),
+                ));
+                Ok(())
+            }
+            RobotCommand::Hold { .. } => {
+                self.with_monitor(|m| m.held(now_nanos));
+                let Some((commands, _)) = &self.action else {
+                    return self.publish(message);
+                };
+                // Both, so that either stops the robot: the cancel ends the goal the controller
+                // reports on, the empty trajectory overrides whatever it runs.
+                let cancel = commands
+                    .send(ControllerCommand::Cancel)
+                    .map_err(|_| controller_task_stopped());
+                self.publish(message)?;
+                cancel
+            }
+        }
+    }
+
+    fn joint_positions(&mut self, _now_nanos: i64, names: &[String]) -> Option<Vec<f64>> {
+        self.latest
+            .lock()
+            .ok()?
+            .as_ref()
+            .and_then(|js| js.positions_for(names))
+    }
+}
+
+/// What was last said about the driver's readiness.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Said {
+    Nothing,
+    /// `None`: ready; `Some(why)`: not ready.
+    Readiness(Option<String>),
+}
+
+/// The KUKA driver's state as kuka_drivers reports it (`[ros] driver_state`).
+#[derive(Debug, Default)]
+pub struct DriverState {
+    configured: Option<bool>,
+    controlling: bool,
+    /// "stopped by user (4)" / "stopped by error (6)" since the last "control started".
+    stopped: Option<String>,
+}
+
+impl DriverState {
+    pub fn on_configured(&mut self, configured: bool) {
+        self.configured = Some(configured);
+    }
+
+    pub fn on_event(&mut self, e: &HardwareEvent) {
+        use ergocell_bridge::msg::HardwareEvent as H;
+        match e.event {
+            H::CONTROL_STARTED => {
+                self.controlling = true;
+                self.stopped = None;
+            }
+            H::CONTROL_STOPPED | H::ERROR => {
+                self.controlling = false;
+                self.stopped = Some(e.describe());
+            }
+            _ => {}
+        }
+    }
+
+    /// Why no goal may be sent now, if none may.
+    pub fn unready(&self) -> Option<String> {
+        match self.configured {
+            None => return Some("waiting for the KUKA driver: no is_configured yet".to_owned()),
+            Some(false) => return Some("the KUKA driver is not configured".to_owned()),
+            Some(true) => {}
+        }
+        if let Some(s) = &self.stopped {
+            return Some(format!("the KUKA driver reports: {s}"));
+        }
+        (!self.controlling).then(|| "waiting for the KUKA driver: control not started".to_owned())
+    }
+}
+
+/// What the robot side reports to the cell loop.
+#[derive(Debug)]
+pub enum RobotInput {
+    /// The execution monitor's task.
+    Monitor(MonitorNote),
+    /// The FollowJointTrajectory task: the controller's answer, feedback or result.
+    Controller(ControllerReport),
+    /// The driver's `is_configured`.
+    DriverConfigured(bool),
+    /// The driver's hardware event.
+    DriverEvent(HardwareEvent),
+}
+
+/// What the robot side's report means for the session, applied to `cell`: a deviation or a failed
+/// goal ends the session held (the first reason wins); stale joint states and a driver that is not
+/// ready hold the robot until they clear; every report worth keeping becomes a controller event.
+/// Returns the line to print for a person, if any.
+pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
+    cell: &mut CellLoop<RosRobot<T>, O>,
+    now_nanos: i64,
+    input: RobotInput,
+) -> Option<String> {
+    let robot = cell.robot_mut();
+    match input {
+        RobotInput::Monitor(note) => match note {
+            MonitorNote::Sample(..) => None,
+            MonitorNote::Deviation {
+                event,
+                held_after_ms,
+            } => {
+                let line = format!(
+                    "{} — cancelled and held {held_after_ms:.3} ms after the sample arrived",
+                    event.text
+                );
+                let why = event.text.clone();
+                robot.held_after_ms = Some(held_after_ms);
+                robot.push(event);
+                cell.robot_failed(why);
+                Some(line)
+            }
+            MonitorNote::Stale(event) => {
+                let why = event.text.clone();
+                robot.push(event);
+                cell.set_joint_states_stale(Some(why.clone()));
+                Some(why)
+            }
+            MonitorNote::Back(event) => {
+                robot.push(event);
+                cell.set_joint_states_stale(None);
+                None
+            }
+        },
+        RobotInput::Controller(report) => {
+            tracing::info!(?report, "controller");
+            robot.goal_outstanding = report.goal_running();
+            if matches!(report, ControllerReport::Accepted { .. }) {
+                // The controller starts an accepted goal now.
+                robot.with_monitor(|m| m.leg_started(now_nanos));
+            }
+            robot.push(report.to_message(now_nanos));
+            let line = format!("controller: {}", report.describe());
+            if let Some(why) = report.failure() {
+                cell.robot_failed(why);
+            }
+            Some(line)
+        }
+        RobotInput::DriverConfigured(configured) => {
+            robot.driver.as_mut()?.on_configured(configured);
+            driver_readiness(cell, now_nanos)
+        }
+        RobotInput::DriverEvent(e) => {
+            let line = format!("driver: {} ({})", e.describe(), e.robot_name);
+            robot.driver.as_mut()?.on_event(&e);
+            Some(match driver_readiness(cell, now_nanos) {
+                Some(more) => format!("{line}\n  {more}"),
+                None => line,
+            })
+        }
+    }
+}
+
+/// The driver's readiness into the cell, said (and published as an event) when it changes.
+pub fn driver_readiness<T: TrajectoryTopic, O: CellOutputs>(
+    cell: &mut CellLoop<RosRobot<T>, O>,
+    now_nanos: i64,
+) -> Option<String> {
+    let robot = cell.robot_mut();
+    let why = robot.driver.as_ref()?.unready();
+    if robot.driver_said == Said::Readiness(why.clone()) {
+        return None;
+    }
+    let text = why
+        .clone()
+        .unwrap_or_else(|| "configured and controlling".to_owned());
+    let status = if why.is_some() { "not_ready" } else { "ready" };
+    robot.push(ControllerEvent {
+        status: status.to_owned(),
+        ..controller_event(now_nanos, "driver", "", text.clone())
+    });
+    robot.driver_said = Said::Readiness(why.clone());
+    cell.set_driver_unready(why);
+    Some(format!("driver: {text}"))
+}
