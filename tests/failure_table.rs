@@ -19,7 +19,7 @@ use ergocell::session::{
     TrajectoryProvider,
 };
 use ergocell_bridge::controller::{ControllerCommand, ControllerReport};
-use ergocell_bridge::msg::{HardwareEvent, Header, JointState, JointTrajectory};
+use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, Header, JointState, JointTrajectory};
 use ergocell_bridge::transport::{RobotInterface, RosConfig};
 use ergocell_cell::CellSettings;
 use ergocell_perception::rig_file::parse_rig;
@@ -318,7 +318,7 @@ impl Harness {
 /// controller's words as the reason.
 #[test]
 fn the_controller_refusing_aborting_or_not_answering_a_goal_ends_the_session_held() {
-    let label = "home → handover".to_owned();
+    let label = ergocell_ros_backend::robot::leg_label(Leg::ToHandover);
     let cases = [
         (
             ControllerReport::Rejected {
@@ -365,6 +365,19 @@ fn the_controller_refusing_aborting_or_not_answering_a_goal_ends_the_session_hel
             &Harness::ended,
         );
         h.assert_ended_held(&failure, kind);
+        let queue = h.cell.robot().events();
+        let answer = queue
+            .lock()
+            .unwrap()
+            .iter()
+            .find(|e| e.kind == kind)
+            .cloned()
+            .unwrap();
+        assert_eq!(
+            (answer.leg_id, answer.leg.as_str()),
+            (ControllerEvent::LEG_TO_HANDOVER, "home → handover"),
+            "the leg as a field, and in words"
+        );
         let rx = h.action.as_mut().unwrap();
         assert!(
             std::iter::from_fn(|| rx.try_recv().ok())

@@ -28,45 +28,59 @@ pub type FjtClient<F> = ActionClient<FollowJointTrajectoryGoal, FollowJointTraje
 pub enum ControllerCommand {
     /// Run this goal (`label` names it in reports, e.g. the leg).
     Execute {
-        label: String,
+        label: GoalLabel,
         goal: Box<FollowJointTrajectoryGoal>,
     },
     /// Cancel the running goal, if any.
     Cancel,
 }
 
+/// What a goal is about, in the reports and their messages: the leg as the message's constant
+/// (`ControllerEvent::LEG_*`, for programs) and in words (for people; what `{label}` prints).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GoalLabel {
+    pub leg_id: u8,
+    pub text: String,
+}
+
+impl std::fmt::Display for GoalLabel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
 /// What the controller said.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ControllerReport {
     Accepted {
-        label: String,
+        label: GoalLabel,
     },
     Rejected {
-        label: String,
+        label: GoalLabel,
     },
     /// No answer to the goal request within the timeout.
     NoResponse {
-        label: String,
+        label: GoalLabel,
         waited_s: f64,
     },
     /// The goal could not be sent or its result not read.
     Failed {
-        label: String,
+        label: GoalLabel,
         reason: String,
     },
     /// ergocell asked the controller to cancel the running goal.
     CancelRequested {
-        label: String,
+        label: GoalLabel,
     },
     /// Feedback: the first message, then every 25th.
     Feedback {
-        label: String,
+        label: GoalLabel,
         count: u64,
         max_error_rad: Option<f64>,
     },
     /// The goal's end: its status (`succeeded`, `aborted`, `canceled`, …) and the result.
     Finished {
-        label: String,
+        label: GoalLabel,
         status: &'static str,
         error_code: i32,
         error_string: String,
@@ -142,10 +156,11 @@ impl ControllerReport {
     /// The report as the `ergocell_msgs/ControllerEvent` published and recorded.
     pub fn to_message(&self, stamp_nanos: i64) -> crate::msg::ControllerEvent {
         use crate::msg::{ControllerEvent, Header};
-        let base = |kind: &str, label: &str| ControllerEvent {
+        let base = |kind: &str, label: &GoalLabel| ControllerEvent {
             header: Header::new(stamp_nanos, ""),
             kind: kind.to_owned(),
-            leg: label.to_owned(),
+            leg: label.text.clone(),
+            leg_id: label.leg_id,
             max_error: f64::NAN,
             ..ControllerEvent::default()
         };
@@ -328,7 +343,10 @@ mod tests {
 
     #[test]
     fn rejections_aborts_and_error_codes_hold_with_the_controllers_reason_cancels_do_not() {
-        let l = || "home → handover".to_owned();
+        let l = || GoalLabel {
+            leg_id: crate::msg::ControllerEvent::LEG_TO_HANDOVER,
+            text: "home → handover".to_owned(),
+        };
         assert!(ControllerReport::Rejected { label: l() }
             .failure()
             .is_some_and(|r| r.contains("rejected the goal (home → handover)")));
@@ -384,6 +402,14 @@ mod tests {
         );
         assert_eq!(m.text, "joint_2 0.3 rad off");
         assert_eq!(m.header.stamp.to_nanos(), 7);
+        assert_eq!(
+            (m.leg.as_str(), m.leg_id),
+            (
+                "home → handover",
+                crate::msg::ControllerEvent::LEG_TO_HANDOVER
+            ),
+            "the leg in words and as the constant"
+        );
         let m = ControllerReport::Feedback {
             label: l(),
             count: 25,

@@ -490,6 +490,17 @@ pub struct ControllerEvent {
     pub feedback_count: u32,
     pub max_error: f64,
     pub sample_stamp: Time,
+    /// The leg as a constant ([`ControllerEvent::LEG_TO_HANDOVER`], …): what programs read.
+    pub leg_id: u8,
+}
+
+impl ControllerEvent {
+    /// Not about a leg (the monitor's and the driver's events).
+    pub const LEG_NONE: u8 = 0;
+    /// Home → handover: the locked trajectory as stored.
+    pub const LEG_TO_HANDOVER: u8 = 1;
+    /// Handover → home: the locked trajectory time-reversed.
+    pub const LEG_TO_HOME: u8 = 2;
 }
 
 impl RosMessage for ControllerEvent {
@@ -508,6 +519,7 @@ impl RosMessage for ControllerEvent {
         ("uint32", "feedback_count"),
         ("float64", "max_error"),
         ("builtin_interfaces/Time", "sample_stamp"),
+        ("uint8", "leg_id"),
     ];
 }
 
@@ -764,6 +776,30 @@ mod tests {
             msg_fields(POINT_DEF).len(),
             5,
             "JointTrajectoryPoint has five fields"
+        );
+    }
+
+    #[test]
+    fn the_controller_events_leg_constants_are_the_msg_files() {
+        let constants: Vec<(String, u8)> = ControllerEvent::DEFINITION
+            .lines()
+            .map(|l| l.split('#').next().unwrap_or("").trim())
+            .filter_map(|l| {
+                let (decl, value) = l.split_once('=')?;
+                let name = decl.split_whitespace().nth(1)?.to_owned();
+                Some((name, value.trim().parse().ok()?))
+            })
+            .collect();
+        assert_eq!(
+            constants,
+            [
+                ("LEG_NONE".to_owned(), ControllerEvent::LEG_NONE),
+                (
+                    "LEG_TO_HANDOVER".to_owned(),
+                    ControllerEvent::LEG_TO_HANDOVER
+                ),
+                ("LEG_TO_HOME".to_owned(), ControllerEvent::LEG_TO_HOME),
+            ]
         );
     }
 

@@ -175,8 +175,10 @@ pub struct RobotLeg {
     pub t_end: f64,
     /// The trajectory's duration (its last point's time from start), seconds.
     pub planned_s: f64,
-    /// "home → handover", "handover → home", or "" when it cannot be told.
+    /// "home → handover", "handover → home", or "" when it cannot be told (for people).
     pub leg: String,
+    /// The same as `ControllerEvent::LEG_*` (`LEG_NONE` when it cannot be told).
+    pub leg_id: u8,
     /// The controller's status at its end (succeeded, aborted, canceled, …), or rejected, failed,
     /// no_response; held or replaced when a hold or the next leg came before its planned end; sent
     /// when nothing reported its end.
@@ -585,7 +587,7 @@ fn handover_spans(robot: &Robot) -> Vec<(f64, f64)> {
         .legs
         .iter()
         .enumerate()
-        .filter(|(_, l)| l.leg == "home → handover")
+        .filter(|(_, l)| l.leg_id == ControllerEvent::LEG_TO_HANDOVER)
         .map(|(k, l)| {
             let end = robot
                 .legs
@@ -892,9 +894,14 @@ fn robot(rec: &Recording, t0: u64) -> Robot {
 /// A leg's first or last point within this of home (each joint, radians) starts or ends there.
 const HOME_TOLERANCE_RAD: f64 = 0.01;
 
-/// The leg names `ergocell run` reports and records.
-const TO_HANDOVER: &str = "home → handover";
-const TO_HOME: &str = "handover → home";
+/// A leg in words, from its constant (what the review shows).
+fn leg_words(leg_id: u8) -> &'static str {
+    match leg_id {
+        ControllerEvent::LEG_TO_HANDOVER => "home → handover",
+        ControllerEvent::LEG_TO_HOME => "handover → home",
+        _ => "",
+    }
+}
 
 fn near(a: &[f64], b: &[f64]) -> bool {
     !a.is_empty()
@@ -908,7 +915,7 @@ fn near(a: &[f64], b: &[f64]) -> bool {
 struct LegDraft {
     start: u64,
     planned_nanos: u64,
-    leg: String,
+    leg_id: u8,
     /// Reported end: time, outcome, words.
     end: Option<(u64, String, String)>,
     /// Cut short before its planned end: time, outcome.
@@ -957,19 +964,19 @@ fn robot_legs(
                 && e.message.kind == "goal_sent"
                 && (e.log_time_nanos == t || event_time(e) == t)
         });
-        let leg = if let Some(i) = sent {
+        let leg_id = if let Some(i) = sent {
             named[i] = true;
-            events[i].message.leg.clone()
+            events[i].message.leg_id
         } else {
             let at_home = |p: Option<&ergocell_bridge::msg::JointTrajectoryPoint>| {
                 p.zip(home).is_some_and(|(p, h)| near(&p.positions, h))
             };
             if at_home(points.first()) {
-                TO_HANDOVER.to_owned()
+                ControllerEvent::LEG_TO_HANDOVER
             } else if at_home(points.last()) {
-                TO_HOME.to_owned()
+                ControllerEvent::LEG_TO_HOME
             } else {
-                String::new()
+                ControllerEvent::LEG_NONE
             }
         };
         // Cut short by the next command (a hold or the next leg) sent before its planned end.
@@ -987,7 +994,7 @@ fn robot_legs(
         drafts.push(LegDraft {
             start: t,
             planned_nanos,
-            leg,
+            leg_id,
             end: None,
             cut,
             feedback_count: None,
@@ -999,7 +1006,7 @@ fn robot_legs(
     for e in &events {
         let m = &e.message;
         let kind = m.kind.as_str();
-        let about_leg = !m.leg.is_empty()
+        let about_leg = m.leg_id != ControllerEvent::LEG_NONE
             && matches!(
                 kind,
                 "feedback" | "finished" | "rejected" | "failed" | "no_response"
@@ -1010,7 +1017,7 @@ fn robot_legs(
             let open = |d: &LegDraft| d.start <= e.log_time_nanos && d.end.is_none();
             let k = drafts
                 .iter()
-                .rposition(|d| open(d) && d.leg == m.leg)
+                .rposition(|d| open(d) && d.leg_id == m.leg_id)
                 .or_else(|| drafts.iter().rposition(open));
             if let Some(d) = k.and_then(|k| drafts.get_mut(k)) {
                 let count = (kind == "feedback" || kind == "finished").then_some(m.feedback_count);
@@ -1066,7 +1073,8 @@ fn robot_legs(
                 t_start: round_to(secs(d.start, t0), 6),
                 t_end: round_to(secs(end, t0), 6),
                 planned_s: round_to(d.planned_nanos as f64 * 1e-9, 6),
-                leg: d.leg,
+                leg: leg_words(d.leg_id).to_owned(),
+                leg_id: d.leg_id,
                 outcome,
                 end_known,
                 feedback_count: d.feedback_count,
@@ -1300,10 +1308,17 @@ mod tests {
         ])
     }
 
+    /// An event about the leg named `leg` (its constant as `ergocell run` sets it).
     fn event(kind: &str, leg: &str) -> ControllerEvent {
+        let leg_id = match leg {
+            "home → handover" => ControllerEvent::LEG_TO_HANDOVER,
+            "handover → home" => ControllerEvent::LEG_TO_HOME,
+            _ => ControllerEvent::LEG_NONE,
+        };
         ControllerEvent {
             kind: kind.to_owned(),
             leg: leg.to_owned(),
+            leg_id,
             max_error: f64::NAN,
             ..ControllerEvent::default()
         }

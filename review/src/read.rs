@@ -274,7 +274,9 @@ impl Reader {
             topics::SESSION_STATE => take_session_state(&schema, &m.data, t, &mut rec.states),
             topics::ROBOT_MARKERS => take(&schema, &m.data, t, &mut rec.robot_markers),
             topics::JOINT_TRAJECTORY => take(&schema, &m.data, t, &mut rec.trajectories),
-            topics::CONTROLLER_EVENTS => take(&schema, &m.data, t, &mut rec.controller_events),
+            topics::CONTROLLER_EVENTS => {
+                take_controller_event(&schema, &m.data, t, &mut rec.controller_events)
+            }
             _ => Ok(()),
         };
         if let Err(why) = outcome {
@@ -460,6 +462,65 @@ fn take_session_state(
     Ok(())
 }
 
+/// `ControllerEvent` as recorded before it carried the leg as a constant (`leg_id`): such recordings
+/// stay reviewable.
+#[derive(serde::Deserialize)]
+#[cfg_attr(test, derive(serde::Serialize))]
+struct ControllerEventWithoutLegId {
+    header: ergocell_bridge::msg::Header,
+    kind: String,
+    leg: String,
+    status: String,
+    error_code: i32,
+    text: String,
+    feedback_count: u32,
+    max_error: f64,
+    sample_stamp: ergocell_bridge::msg::Time,
+}
+
+/// The leg constant of an event recorded before `leg_id`, from the words `ergocell run` wrote for
+/// the two legs then (the only place the review reads a leg from words).
+fn legacy_leg_id(words: &str) -> u8 {
+    match words {
+        "home → handover" => ControllerEvent::LEG_TO_HANDOVER,
+        "handover → home" => ControllerEvent::LEG_TO_HOME,
+        _ => ControllerEvent::LEG_NONE,
+    }
+}
+
+/// Decodes a `ControllerEvent`, or one of the layout before `leg_id` (the leg's constant then from
+/// its words).
+fn take_controller_event(
+    schema: &str,
+    data: &[u8],
+    log_time_nanos: u64,
+    into: &mut Vec<Stamped<ControllerEvent>>,
+) -> Result<(), String> {
+    let current = take(schema, data, log_time_nanos, into);
+    if current.is_ok() || schema != ControllerEvent::type_name() {
+        return current;
+    }
+    let Ok(old) = cdr::decode::<ControllerEventWithoutLegId>(data) else {
+        return current;
+    };
+    into.push(Stamped {
+        log_time_nanos,
+        message: ControllerEvent {
+            leg_id: legacy_leg_id(&old.leg),
+            header: old.header,
+            kind: old.kind,
+            leg: old.leg,
+            status: old.status,
+            error_code: old.error_code,
+            text: old.text,
+            feedback_count: old.feedback_count,
+            max_error: old.max_error,
+            sample_stamp: old.sample_stamp,
+        },
+    });
+    Ok(())
+}
+
 /// The messages of `v` whose log time `f` accepts.
 fn part<M: Clone>(v: &[Stamped<M>], f: &dyn Fn(u64) -> bool) -> Vec<Stamped<M>> {
     v.iter().filter(|m| f(m.log_time_nanos)).cloned().collect()
@@ -604,6 +665,54 @@ mod tests {
         }
     }
 
+    /// A recording made before `ControllerEvent` carried `leg_id` still reads: the leg's constant
+    /// from its words; the current layout reads its constant, not the words.
+    #[test]
+    fn a_controller_event_without_the_leg_constant_still_reads() {
+        let old = |leg: &str| {
+            cdr::encode(&ControllerEventWithoutLegId {
+                header: ergocell_bridge::msg::Header::default(),
+                kind: "finished".into(),
+                leg: leg.into(),
+                status: "succeeded".into(),
+                error_code: 0,
+                text: String::new(),
+                feedback_count: 3,
+                max_error: f64::NAN,
+                sample_stamp: ergocell_bridge::msg::Time::default(),
+            })
+            .unwrap()
+        };
+        let schema = ControllerEvent::type_name();
+        let mut into = Vec::new();
+        for (k, leg) in ["home → handover", "handover → home", ""]
+            .iter()
+            .enumerate()
+        {
+            take_controller_event(&schema, &old(leg), k as u64, &mut into).unwrap();
+        }
+        let ids: Vec<u8> = into.iter().map(|e| e.message.leg_id).collect();
+        assert_eq!(
+            ids,
+            [
+                ControllerEvent::LEG_TO_HANDOVER,
+                ControllerEvent::LEG_TO_HOME,
+                ControllerEvent::LEG_NONE
+            ]
+        );
+        assert_eq!(into[0].message.feedback_count, 3);
+        let now = cdr::encode(&ControllerEvent {
+            leg: "whatever words".into(),
+            leg_id: ControllerEvent::LEG_TO_HOME,
+            ..event("finished", "")
+        })
+        .unwrap();
+        take_controller_event(&schema, &now, 9, &mut into).unwrap();
+        assert_eq!(into[3].message.leg_id, ControllerEvent::LEG_TO_HOME);
+        let cut = old("home → handover");
+        assert!(take_controller_event(&schema, &cut[..cut.len() - 9], 10, &mut into).is_err());
+    }
+
     /// A recording made before `SessionState` carried the decision's fields still reads: the
     /// decision's fields are unknown, the rest as recorded; a damaged payload is still refused.
     #[test]
@@ -692,10 +801,17 @@ mod tests {
         assert_eq!(split_sessions(&one).len(), 1);
     }
 
+    /// An event about the leg named `leg` (its constant as `ergocell run` sets it).
     fn event(kind: &str, leg: &str) -> ControllerEvent {
+        let leg_id = match leg {
+            "home → handover" => ControllerEvent::LEG_TO_HANDOVER,
+            "handover → home" => ControllerEvent::LEG_TO_HOME,
+            _ => ControllerEvent::LEG_NONE,
+        };
         ControllerEvent {
             kind: kind.to_owned(),
             leg: leg.to_owned(),
+            leg_id,
             max_error: f64::NAN,
             ..ControllerEvent::default()
         }

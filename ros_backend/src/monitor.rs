@@ -16,7 +16,7 @@ use futures::StreamExt as _;
 
 use crate::clock::{instant, now_nanos, SessionClock};
 use crate::messages;
-use crate::robot::{controller_event, SharedMonitor, TrajectoryTopic};
+use crate::robot::{controller_event, no_leg, SharedMonitor, TrajectoryTopic};
 
 /// What the monitor tells the cell loop.
 #[derive(Debug)]
@@ -117,7 +117,7 @@ impl<T: TrajectoryTopic> Judge<T> {
                 notes.push(MonitorNote::Back(controller_event(
                     now,
                     "monitor",
-                    "",
+                    &no_leg(),
                     "joint states back".to_owned(),
                 )));
             }
@@ -137,7 +137,7 @@ impl<T: TrajectoryTopic> Judge<T> {
                     tracing::error!(error = %e, "the execution monitor's hold was not published");
                 }
                 let held_after_ms = arrival.elapsed().as_secs_f64() * 1e3;
-                let mut event = controller_event(now, "monitor", "", d.to_string());
+                let mut event = controller_event(now, "monitor", &no_leg(), d.to_string());
                 event.max_error = worst;
                 event.sample_stamp = js.header.stamp;
                 notes.push(MonitorNote::Deviation {
@@ -168,7 +168,10 @@ impl<T: TrajectoryTopic> Judge<T> {
         let why = format!("joint states stale (none for more than {timeout_s} s)");
         tracing::warn!(age_s = age, "{why}");
         Some(MonitorNote::Stale(controller_event(
-            now, "monitor", "", why,
+            now,
+            "monitor",
+            &no_leg(),
+            why,
         )))
     }
 }

@@ -9,7 +9,7 @@
 use std::sync::{Arc, Mutex};
 
 use ergocell_bridge::action::GoalTolerances;
-use ergocell_bridge::controller::{ControllerCommand, ControllerReport};
+use ergocell_bridge::controller::{ControllerCommand, ControllerReport, GoalLabel};
 use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, JointState, JointTrajectory};
 use ergocell_bridge::transport::{Publisher, RosConfig};
 use ergocell_cell::session::{
@@ -206,11 +206,23 @@ impl<T: TrajectoryTopic> RosRobot<T> {
     }
 }
 
-/// A leg's name in the controller's reports.
-pub fn leg_label(leg: Leg) -> &'static str {
-    match leg {
-        Leg::ToHandover => "home → handover",
-        Leg::ToHome => "handover → home",
+/// A leg as the controller's reports and events name it: the message's constant and the words.
+pub fn leg_label(leg: Leg) -> GoalLabel {
+    let (leg_id, text) = match leg {
+        Leg::ToHandover => (ControllerEvent::LEG_TO_HANDOVER, "home → handover"),
+        Leg::ToHome => (ControllerEvent::LEG_TO_HOME, "handover → home"),
+    };
+    GoalLabel {
+        leg_id,
+        text: text.to_owned(),
+    }
+}
+
+/// Not about a leg (the monitor's and the driver's events).
+pub fn no_leg() -> GoalLabel {
+    GoalLabel {
+        leg_id: ControllerEvent::LEG_NONE,
+        text: String::new(),
     }
 }
 
@@ -232,11 +244,17 @@ fn controller_task_stopped() -> BackendError {
 }
 
 /// A controller event of `kind` about `leg` with `text`.
-pub fn controller_event(now_nanos: i64, kind: &str, leg: &str, text: String) -> ControllerEvent {
+pub fn controller_event(
+    now_nanos: i64,
+    kind: &str,
+    leg: &GoalLabel,
+    text: String,
+) -> ControllerEvent {
     ControllerEvent {
         header: ergocell_bridge::msg::Header::new(now_nanos, ""),
         kind: kind.to_owned(),
-        leg: leg.to_owned(),
+        leg: leg.text.clone(),
+        leg_id: leg.leg_id,
         text,
         max_error: f64::NAN,
         ..ControllerEvent::default()
@@ -256,7 +274,7 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
                 // No tolerances, no monitor: the leg is not sent (the robot does not move).
                 let path_rad = self.path_tolerances(trajectory)?;
                 if self.ros.monitor_execution {
-                    self.watch_leg(now_nanos, label, trajectory, &path_rad)?;
+                    self.watch_leg(now_nanos, &label.text, trajectory, &path_rad)?;
                 }
                 match &self.action {
                     None => {
@@ -266,7 +284,7 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
                     }
                     Some((commands, tolerances)) => commands
                         .send(ControllerCommand::Execute {
-                            label: label.to_owned(),
+                            label: label.clone(),
                             goal: Box::new(ergocell_bridge::action::goal(
                                 message,
                                 &path_rad,
@@ -278,7 +296,7 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
                 self.push(controller_event(
                     now_nanos,
                     "goal_sent",
-                    label,
+                    &label,
                     format!(
                         "{} points over {:.2} s; path tolerances {} rad",
                         trajectory.points.len(),
@@ -461,7 +479,7 @@ pub fn driver_readiness<T: TrajectoryTopic, O: CellOutputs>(
     let status = if why.is_some() { "not_ready" } else { "ready" };
     robot.push(ControllerEvent {
         status: status.to_owned(),
-        ..controller_event(now_nanos, "driver", "", text.clone())
+        ..controller_event(now_nanos, "driver", &no_leg(), text.clone())
     });
     robot.driver_said = Said::Readiness(why.clone());
     cell.set_driver_unready(why);

@@ -215,7 +215,8 @@ def main():
     report["controller_events"] = []
     node.create_subscription(ControllerEvent, "/ergocell/controller_events",
                              lambda m: report["controller_events"].append(
-                                 {"kind": m.kind, "leg": m.leg, "status": m.status, "error_code": m.error_code,
+                                 {"kind": m.kind, "leg": m.leg, "leg_id": m.leg_id, "status": m.status,
+                                  "error_code": m.error_code,
                                   "text": m.text, "feedback_count": m.feedback_count,
                                   "sample_stamp": (m.sample_stamp.sec, m.sample_stamp.nanosec)}),
                              qos(True, True, 100))

@@ -195,9 +195,13 @@ check(a["results"][:1] == ["aborted"] and "the controller aborted the goal (home
       "joint_2 beyond its path tolerance (stand-in fault)" in arun and "robot held" in arun and "run exit 1" in arun,
       "abort: the session ended held with the controller's reason (PATH_TOLERANCE_VIOLATED and its error string)")
 
-def legs_in_order(events, leg, end_status):
-    """goal_sent, accepted, feedback, finished(end_status) for `leg`, in this order."""
-    kinds = [(e["kind"], e["status"]) for e in events if e["leg"] == leg]
+from ergocell_msgs.msg import ControllerEvent as _CE
+TO_HANDOVER, TO_HOME = _CE.LEG_TO_HANDOVER, _CE.LEG_TO_HOME
+
+def legs_in_order(events, leg_id, end_status):
+    """goal_sent, accepted, feedback, finished(end_status) for the leg `leg_id` (its constant, not
+    its words), in this order."""
+    kinds = [(e["kind"], e["status"]) for e in events if e["leg_id"] == leg_id]
     try:
         i = kinds.index(("goal_sent", ""))
         j = kinds.index(("accepted", ""), i)
@@ -220,7 +224,7 @@ def recorded_controller_events(name):
     with open(f"{t}/{name}.mcap", "rb") as f:
         for _s, ch, m in make_reader(f).iter_messages(topics=["/ergocell/controller_events"]):
             e = deserialize_message(m.data, ControllerEvent)
-            out.append({"kind": e.kind, "leg": e.leg, "status": e.status, "error_code": e.error_code,
+            out.append({"kind": e.kind, "leg": e.leg, "leg_id": e.leg_id, "status": e.status, "error_code": e.error_code,
                         "text": e.text, "feedback_count": e.feedback_count})
     return out
 
@@ -234,13 +238,13 @@ check("held: waiting for the KUKA driver" in nrun and f["control_started_at"] is
       and f["first_goal_at"] is not None and f["first_goal_at"] > f["control_started_at"],
       "the session held the locked trajectory until the driver said 'control started', then sent the first goal "
       f"({(f['first_goal_at'] or 0) - (f['control_started_at'] or 0):.3f} s after it)")
-check(legs_in_order(ev, "home → handover", "succeeded") and legs_in_order(ev, "handover → home", "succeeded")
+check(legs_in_order(ev, TO_HANDOVER, "succeeded") and legs_in_order(ev, TO_HOME, "succeeded")
       and driver_then_goal(ev),
       "rclpy read every controller event in order: driver not ready → ready, then per leg goal_sent → accepted → "
       "feedback → finished(succeeded)")
 rec = recorded_controller_events("normal")
 fin = [e for e in rec if e["kind"] == "finished"]
-check(legs_in_order(rec, "home → handover", "succeeded") and legs_in_order(rec, "handover → home", "succeeded")
+check(legs_in_order(rec, TO_HANDOVER, "succeeded") and legs_in_order(rec, TO_HOME, "succeeded")
       and all(e["error_code"] == 0 and e["feedback_count"] > 50 for e in fin) and len(fin) == len(legs),
       f"the recording holds the goals' feedback and results ({len(rec)} controller events; results "
       f"{[(e['leg'], e['status'], e['feedback_count']) for e in fin]})")
