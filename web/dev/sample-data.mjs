@@ -223,12 +223,12 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
   const cycle = robot && frames > 0 && !legacy;
   const HO = 'home → handover', HH = 'handover → home';
   const legs = cycle ? [
-    { t_start: 3.0, t_end: 5.08, planned_s: 2.0, leg: HO, outcome: 'succeeded', end_known: true, feedback_count: 21, max_error: 0.0021, text: '' },
-    { t_start: 7.0, t_end: 9.06, planned_s: 2.0, leg: HH, outcome: 'succeeded', end_known: true, feedback_count: 21, max_error: 0.0034, text: '' },
-    { t_start: 13.0, t_end: 15.1, planned_s: 2.0, leg: HO, outcome: 'succeeded', end_known: true, feedback_count: 22, max_error: 0.0019, text: '' },
-    { t_start: 17.0, t_end: 18.05, planned_s: 2.0, leg: HH, outcome: 'canceled', end_known: true, feedback_count: 11, max_error: 0.0022, text: '' },
-    { t_start: 23.0, t_end: 25.4, planned_s: 2.0, leg: HO, outcome: 'aborted', end_known: true, feedback_count: 24, max_error: 0.0412, text: 'PATH_TOLERANCE_VIOLATED (-4): a4 beyond its path tolerance' },
-    { t_start: 27.0, t_end: 29.0, planned_s: 2.0, leg: HH, outcome: 'sent', end_known: false, feedback_count: null, max_error: null, text: '' },
+    { t_start: 3.0, t_end: 5.08, planned_s: 2.0, leg: HO, leg_id: 1, outcome: 'succeeded', end_known: true, feedback_count: 21, max_error: 0.0021, text: '' },
+    { t_start: 7.0, t_end: 9.06, planned_s: 2.0, leg: HH, leg_id: 2, outcome: 'succeeded', end_known: true, feedback_count: 21, max_error: 0.0034, text: '' },
+    { t_start: 13.0, t_end: 15.1, planned_s: 2.0, leg: HO, leg_id: 1, outcome: 'succeeded', end_known: true, feedback_count: 22, max_error: 0.0019, text: '' },
+    { t_start: 17.0, t_end: 18.05, planned_s: 2.0, leg: HH, leg_id: 2, outcome: 'canceled', end_known: true, feedback_count: 11, max_error: 0.0022, text: '' },
+    { t_start: 23.0, t_end: 25.4, planned_s: 2.0, leg: HO, leg_id: 1, outcome: 'aborted', end_known: true, feedback_count: 24, max_error: 0.0412, text: 'PATH_TOLERANCE_VIOLATED (-4): a4 beyond its path tolerance' },
+    { t_start: 27.0, t_end: 29.0, planned_s: 2.0, leg: HH, leg_id: 2, outcome: 'sent', end_known: false, feedback_count: null, max_error: null, text: '' },
   ] : [];
   const ev = (t, kind, leg = '', extra = {}) => ({ t, kind, leg, status: '', error_code: 0, text: '', max_error: null, ...extra });
   const events = cycle ? [

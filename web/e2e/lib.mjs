@@ -152,6 +152,8 @@ export async function robotStripChecks(b, what, { events = false } = {}) {
   });
   if (!seen.legs) fail(`${what}: no robot leg on the timeline's strip`);
   if (!seen.legend || !/^robot leg/.test(seen.legend)) fail(`${what}: no "robot leg" row in the timeline's legend (${JSON.stringify(seen.legend)})`);
+  // A leg is coloured by its constant (leg_id), so a named leg is never drawn in the colour of an unknown one.
+  if (!seen.color || seen.color.join() === [0x90, 0xa4, 0xae].join()) fail(`${what}: the widest leg is drawn as an unnamed leg (its leg_id not read)`);
   if (!seen.pixel || seen.pixel.some((v, i) => Math.abs(v - seen.color[i]) > 12)) fail(`${what}: the widest leg's band is not drawn in its colour: pixel ${JSON.stringify(seen.pixel)}, expected ${JSON.stringify(seen.color)}`);
   const leg = await page.$('#timeline .rmark.leg[data-e2e="widest"]');
   await leg.hover();

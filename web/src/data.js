@@ -48,6 +48,8 @@ function robotLegs(a) {
       t_end: Math.max(l.t_start, l.t_end),
       planned_s: num(l.planned_s),
       leg: str(l.leg),
+      // ergocell_msgs/ControllerEvent's LEG_* constant (0: not known)
+      leg_id: Number.isInteger(l.leg_id) ? l.leg_id : 0,
       outcome: str(l.outcome),
       end_known: l.end_known !== false,
       feedback_count: num(l.feedback_count),

@@ -110,7 +110,7 @@ function readoutHtml(s, f) {
     return `<span class="gs${q ? ' unc' : ''}"${tip}><i style="background:${color}"></i>${letter} ${g(v)}${q ? '<span class="q">?</span>' : ''}</span>`;
   };
   const leg = legAt(s.robotLegs, t);
-  const robot = leg ? `<span class="rl"><i style="background:${legColor(leg.leg)}"></i>robot ${esc(leg.leg || 'leg')}</span>` : '';
+  const robot = leg ? `<span class="rl"><i style="background:${legColor(leg)}"></i>robot ${esc(leg.leg || 'leg')}</span>` : '';
   const reba = s.hasReba ? `<span class="st" title="REBA score (Hignett &amp; McAtamney 2000) per side, 1–15">REBA L ${g(s.rebaLeft[f])} · R ${g(s.rebaRight[f])}</span>` : '';
   return `${side('Left', 'L', SERIES_COLORS.left, s.grandLeft[f], s.uncertainLeft[f])}${side('Right', 'R', SERIES_COLORS.right, s.grandRight[f], s.uncertainRight[f])}${al}${reba}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}${robot}`;
 }

@@ -111,7 +111,7 @@ export function renderRobot(el, sessions, onSeek) {
     const items = [
       ...s.robotLegs.map((l) => ({
         t: l.t_start,
-        html: `<span class="leg-name"><i class="leg-chip" style="background:${legColor(l.leg)}"></i>${esc(l.leg || 'leg')}</span></button><span class="dur" title="${l.planned_s != null ? `planned ${l.planned_s.toFixed(2)} s` : ''}">${(l.t_end - l.t_start).toFixed(2)} s</span>${outcomeBadge(l)}${
+        html: `<span class="leg-name"><i class="leg-chip" style="background:${legColor(l)}"></i>${esc(l.leg || 'leg')}</span></button><span class="dur" title="${l.planned_s != null ? `planned ${l.planned_s.toFixed(2)} s` : ''}">${(l.t_end - l.t_start).toFixed(2)} s</span>${outcomeBadge(l)}${
           l.feedback_count != null ? `<span class="reason">${l.feedback_count} feedback message${l.feedback_count === 1 ? '' : 's'}${l.max_error != null ? ` · largest joint error ${l.max_error.toFixed(4)} rad` : ''}</span>` : ''
         }${l.text ? `<span class="reason">${esc(l.text)}</span>` : ''}`,
       })),

@@ -10,9 +10,10 @@ const KIND_COLOR = { raised: '#ef5350', changed: '#ffb020', cleared: '#38d39f' }
 export const SERIES_COLORS = { left: '#4ea1ff', right: '#ffa94d', action: '#e05cff' };
 
 // The robot strip along the top of the plot: one band per leg, coloured by its direction.
-export const LEG_COLORS = { 'home → handover': '#26c6da', 'handover → home': '#c0ca33' };
+// By the leg's constant (ergocell_msgs/ControllerEvent LEG_TO_HANDOVER = 1, LEG_TO_HOME = 2), never its words.
+export const LEG_COLORS = { 1: '#26c6da', 2: '#c0ca33' };
 const LEG_OTHER = '#90a4ae';
-export const legColor = (name) => LEG_COLORS[name] || LEG_OTHER;
+export const legColor = (leg) => (leg && LEG_COLORS[leg.leg_id]) || LEG_OTHER;
 const HOLD_COLOR = '#ef5350';
 const STRIP_PX = 14; // the strip's height, CSS px; score 7 stays below it
 const BAND_TOP_PX = 2;
@@ -276,7 +277,7 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
       const x0 = Math.max(left, a);
       const x1 = Math.min(right, b);
       if (x1 - x0 < 0.5) continue;
-      const color = legColor(l.leg);
+      const color = legColor(l);
       ctx.fillStyle = color;
       if (l.end_known) {
         ctx.fillRect(x0, y, x1 - x0, bh);
@@ -411,7 +412,7 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
       const row = document.createElement('tr');
       row.className = 'u-series u-robot';
       row.title = 'the strip at the top: each robot leg (red ticks: holds; diamonds: controller events and parts taken)';
-      row.innerHTML = `<th><div class="u-marker" style="background:linear-gradient(90deg, ${LEG_COLORS['home → handover']} 50%, ${LEG_COLORS['handover → home']} 50%)"></div><div class="u-label">robot leg</div></th><td class="u-value">–</td>`;
+      row.innerHTML = `<th><div class="u-marker" style="background:linear-gradient(90deg, ${LEG_COLORS[1]} 50%, ${LEG_COLORS[2]} 50%)"></div><div class="u-label">robot leg</div></th><td class="u-value">–</td>`;
       body.appendChild(row);
       legCell = row.querySelector('.u-value');
     }
@@ -431,7 +432,7 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
   for (const l of legs) {
     const el = document.createElement('div');
     el.className = `rmark leg ${outcomeClass(l.outcome)}`;
-    el.dataset.color = legColor(l.leg);
+    el.dataset.color = legColor(l);
     el.dataset.leg = l.leg;
     el.dataset.t = String(l.t_start);
     el.dataset.tEnd = String(l.t_end);
