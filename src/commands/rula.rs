@@ -307,37 +307,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
                 "headline": frame.headline().map(|h| h.side),
             }));
         } else {
-            let head = frame.headline().map_or("-", |h| h.side.name());
-            println!(
-                "{t:8.3}  left: {}  right: {}  worse: {head}",
-                side_text(frame.left.as_ref()),
-                side_text(frame.right.as_ref())
-            );
-            let why = [
-                ("left uncertain", why_uncertain(frame.left.as_ref())),
-                ("right uncertain", why_uncertain(frame.right.as_ref())),
-                ("not scored", frame.unscored_reasons.clone()),
-            ];
-            for ((label, reasons), last) in why.into_iter().zip(&mut last_why) {
-                if reasons != *last {
-                    if !reasons.is_empty() {
-                        println!("{t:8.3}  why {label}: {}", reasons.join("; "));
-                    }
-                    *last = reasons;
-                }
-            }
-            for e in &new_events {
-                println!(
-                    "{t:8.3}  WARNING {:?}: {}{}",
-                    e.kind,
-                    e.message,
-                    if e.uncertain {
-                        " [uncertain tracking]"
-                    } else {
-                        ""
-                    }
-                );
-            }
+            print_frame_text(t, &frame, &new_events, &mut last_why);
         }
         events.extend(new_events);
     }
@@ -354,6 +324,58 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         println!("{}", serde_json::to_string_pretty(&doc)?);
         return Ok(());
     }
+    print_track_summary(&s, &events, t0);
+    Ok(())
+}
+
+/// One frame as text: the scores per side, the reasons when they change (`last_why`: those last
+/// printed), the warnings.
+fn print_frame_text(
+    t: f64,
+    frame: &ergocell_ergonomics::FrameAssessment,
+    new_events: &[ergocell_ergonomics::WarningEvent],
+    last_why: &mut [Vec<String>; 3],
+) {
+    let head = frame.headline().map_or("-", |h| h.side.name());
+    println!(
+        "{t:8.3}  left: {}  right: {}  worse: {head}",
+        side_text(frame.left.as_ref()),
+        side_text(frame.right.as_ref())
+    );
+    let why = [
+        ("left uncertain", why_uncertain(frame.left.as_ref())),
+        ("right uncertain", why_uncertain(frame.right.as_ref())),
+        ("not scored", frame.unscored_reasons.clone()),
+    ];
+    for ((label, reasons), last) in why.into_iter().zip(last_why.iter_mut()) {
+        if reasons != *last {
+            if !reasons.is_empty() {
+                println!("{t:8.3}  why {label}: {}", reasons.join("; "));
+            }
+            *last = reasons;
+        }
+    }
+    for e in new_events {
+        println!(
+            "{t:8.3}  WARNING {:?}: {}{}",
+            e.kind,
+            e.message,
+            if e.uncertain {
+                " [uncertain tracking]"
+            } else {
+                ""
+            }
+        );
+    }
+}
+
+/// The summary of `rula track` as text: time shares, regions, exposure, static postures, task
+/// segments, warnings per region (`t0`: the first frame's stamp).
+fn print_track_summary(
+    s: &ergocell_ergonomics::summary::SessionSummary,
+    events: &[ergocell_ergonomics::WarningEvent],
+    t0: i64,
+) {
     println!();
     println!(
         "summary: {} frames over {:.2} s, {} scored, {} uncertain, unscored {:.1}% of the time",
@@ -495,5 +517,4 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         })
         .collect();
     println!("warnings raised per region: {}", raised.join(", "));
-    Ok(())
 }

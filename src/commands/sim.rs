@@ -403,61 +403,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             }
             (serde_json::to_value(&r)?, plot_height(&r, &c.out_dir)?)
         }
-        Experiment::RulaAgreement => {
-            let operators = statures(c.operators.unwrap_or(6));
-            let r =
-                experiments::rula_agreement(&setup, &handovers, &operators, c.cycles, &mut tick)?;
-            // The same sessions at other pixel-noise levels: how agreement depends on the detector.
-            let mut sweep = Vec::new();
-            for noise_px in NOISE_SWEEP_PX {
-                let s = Setup {
-                    noise: DetectorNoise {
-                        pixel_sigma_px: noise_px,
-                        ..setup.noise
-                    },
-                    ..setup.clone()
-                };
-                let a = experiments::rula_agreement(
-                    &s,
-                    &handovers,
-                    &operators,
-                    c.cycles,
-                    &mut |_, _| {},
-                )?;
-                sweep.push((noise_px, a));
-            }
-            pb.finish_and_clear();
-            if !c.json {
-                print_agreement(&r);
-                println!("noise sweep (σ px: grand exact / κ, action level exact / κ):");
-                for (n, a) in &sweep {
-                    println!(
-                        "  {n:>4.1} px: {:.3} / {:.3}, {:.3} / {:.3}",
-                        a.grand_score.exact,
-                        a.grand_score.kappa,
-                        a.action_level.exact,
-                        a.action_level.kappa
-                    );
-                }
-            }
-            let mut value = serde_json::to_value(&r)?;
-            if let Some(obj) = value.as_object_mut() {
-                let rows = sweep
-                    .iter()
-                    .map(|(n, a)| {
-                        serde_json::json!({
-                            "noise_px": n,
-                            "grand_score": {"exact": a.grand_score.exact, "kappa": a.grand_score.kappa},
-                            "action_level": {"exact": a.action_level.exact, "kappa": a.action_level.kappa},
-                        })
-                    })
-                    .collect();
-                obj.insert("noise_sweep".into(), serde_json::Value::Array(rows));
-            }
-            let mut figures = plot_agreement(&r, &c.out_dir)?;
-            figures.push(plot_noise_sweep(&sweep, &c.out_dir)?);
-            (value, figures)
-        }
+        Experiment::RulaAgreement => one_rula_agreement(c, &setup, &handovers, &mut tick, &pb)?,
     };
     let setup_json = serde_json::json!({
         "seed": c.seed,
@@ -468,6 +414,63 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         "handovers_m": handovers,
     });
     write_result(c, name, value, setup_json, &figures)
+}
+
+/// RULA agreement on one seed, and the same sessions at other pixel-noise levels (how agreement
+/// depends on the detector): the result with its sweep, and the figures.
+fn one_rula_agreement(
+    c: &Common,
+    setup: &Setup,
+    handovers: &Handovers,
+    tick: &mut dyn FnMut(usize, usize),
+    pb: &ProgressBar,
+) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+    let operators = statures(c.operators.unwrap_or(6));
+    let r = experiments::rula_agreement(setup, handovers, &operators, c.cycles, tick)?;
+    // The same sessions at other pixel-noise levels: how agreement depends on the detector.
+    let mut sweep = Vec::new();
+    for noise_px in NOISE_SWEEP_PX {
+        let s = Setup {
+            noise: DetectorNoise {
+                pixel_sigma_px: noise_px,
+                ..setup.noise
+            },
+            ..setup.clone()
+        };
+        let a = experiments::rula_agreement(&s, handovers, &operators, c.cycles, &mut |_, _| {})?;
+        sweep.push((noise_px, a));
+    }
+    pb.finish_and_clear();
+    if !c.json {
+        print_agreement(&r);
+        println!("noise sweep (σ px: grand exact / κ, action level exact / κ):");
+        for (n, a) in &sweep {
+            println!(
+                "  {n:>4.1} px: {:.3} / {:.3}, {:.3} / {:.3}",
+                a.grand_score.exact,
+                a.grand_score.kappa,
+                a.action_level.exact,
+                a.action_level.kappa
+            );
+        }
+    }
+    let mut value = serde_json::to_value(&r)?;
+    if let Some(obj) = value.as_object_mut() {
+        let rows = sweep
+            .iter()
+            .map(|(n, a)| {
+                serde_json::json!({
+                    "noise_px": n,
+                    "grand_score": {"exact": a.grand_score.exact, "kappa": a.grand_score.kappa},
+                    "action_level": {"exact": a.action_level.exact, "kappa": a.action_level.kappa},
+                })
+            })
+            .collect();
+        obj.insert("noise_sweep".into(), serde_json::Value::Array(rows));
+    }
+    let mut figures = plot_agreement(&r, &c.out_dir)?;
+    figures.push(plot_noise_sweep(&sweep, &c.out_dir)?);
+    Ok((value, figures))
 }
 
 /// Adds `setup` to `doc`, writes `<file_stem>.json` into `--out-dir` and prints the JSON (`--json`)
@@ -579,341 +582,10 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
     };
     let (value, figures) = match args.experiment {
         Experiment::HandoverRula => return run_handover_rula(c),
-        Experiment::Table1 => {
-            let operators = statures(c.operators.unwrap_or(5));
-            let runs = each(seeds, &pb, |s| {
-                experiments::table1(&setup(s), &handovers, &operators, c.cycles, &mut |_, _| {})
-            })?;
-            pb.finish_and_clear();
-            let sum = seeds::table1(seeds, &runs);
-            if !c.json {
-                println!(
-                    "Table 1 over seeds {seeds:?}: RMSE per landmark, cm, mean ± s.d. (worst seed)"
-                );
-                for (i, lm) in sum.landmarks.iter().enumerate() {
-                    println!(
-                        "  {lm:<16} default {}  best pair {}  paper {}",
-                        spread_text(sum.default_rmse_m[i].as_ref(), 100.0, 2),
-                        spread_text(sum.best_pair_rmse_m[i].as_ref(), 100.0, 1),
-                        spread_text(sum.paper_rmse_m[i].as_ref(), 100.0, 1)
-                    );
-                }
-                print_goals(&sum.goals);
-            }
-            let path = c.out_dir.join("table1_seeds.svg");
-            let worst = |v: &[Option<f64>], hi: bool| {
-                let it = v.iter().flatten().copied();
-                100.0
-                    * if hi {
-                        it.fold(f64::NAN, f64::max)
-                    } else {
-                        it.fold(f64::NAN, f64::min)
-                    }
-            };
-            let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
-            let default_worst: Vec<f64> = runs
-                .iter()
-                .map(|r| worst(r.rmse_m.get("default_fusion").map_or(&[][..], |v| v), true))
-                .collect();
-            let pair_best: Vec<f64> = runs.iter().map(|r| worst(&r.best_pair(), false)).collect();
-            let paper_best: Vec<f64> = runs
-                .iter()
-                .map(|r| worst(r.rmse_m.get("paper_fusion").map_or(&[][..], |v| v), false))
-                .collect();
-            let top = pair_best
-                .iter()
-                .chain(&paper_best)
-                .chain(&default_worst)
-                .copied()
-                .filter(|v| v.is_finite())
-                .fold(1.0, f64::max);
-            line_chart(
-                &path,
-                "Table 1 per seed: the default fusion's worst landmark vs the others' best, cm",
-                "seed",
-                "RMSE, cm",
-                &x,
-                &[
-                    (
-                        "default fusion, worst landmark",
-                        &default_worst,
-                        COLORS[5],
-                        false,
-                    ),
-                    (
-                        "best single pair, best landmark",
-                        &pair_best,
-                        COLORS[3],
-                        false,
-                    ),
-                    ("paper fusion, best landmark", &paper_best, COLORS[4], false),
-                ],
-                (0.0, top * 1.1),
-            )?;
-            (serde_json::to_value(&sum)?, vec![path])
-        }
-        Experiment::Adaptation => {
-            let heights = experiments::adaptation_heights();
-            let runs = each(seeds, &pb, |s| {
-                experiments::adaptation(&setup(s), &handovers, &heights, c.cycles, &mut |_, _| {})
-            })?;
-            pb.finish_and_clear();
-            let sum = seeds::adaptation(seeds, &runs);
-            if !c.json {
-                println!("adaptation over seeds {seeds:?}: mean grand score while holding the part, mean ± s.d. (worst seed)");
-                for (i, h) in sum.heights_m.iter().enumerate() {
-                    println!(
-                        "  {h:.2} m  before {}  after {}  truth after {}",
-                        spread_text(sum.before[i].as_ref(), 1.0, 2),
-                        spread_text(sum.after[i].as_ref(), 1.0, 2),
-                        spread_text(sum.true_after[i].as_ref(), 1.0, 2)
-                    );
-                }
-                print_goals(&sum.goals);
-            }
-            let path = c.out_dir.join("adaptation_seeds.svg");
-            let col = |v: &[Option<Spread>], f: fn(&Spread) -> f64| -> Vec<f64> {
-                v.iter().map(|s| s.as_ref().map_or(f64::NAN, f)).collect()
-            };
-            let goal = vec![seeds::ADAPTATION_MAX_AFTER; sum.heights_m.len()];
-            line_chart(
-                &path,
-                &format!(
-                    "Adaptation over {} seeds: mean grand score while holding the part",
-                    seeds.len()
-                ),
-                "operator stature, m",
-                "mean RULA grand score",
-                &sum.heights_m,
-                &[
-                    (
-                        "before, mean over seeds",
-                        &col(&sum.before, |s| s.mean),
-                        COLORS[0],
-                        false,
-                    ),
-                    (
-                        "after, mean over seeds",
-                        &col(&sum.after, |s| s.mean),
-                        COLORS[5],
-                        false,
-                    ),
-                    (
-                        "after, worst seed",
-                        &col(&sum.after, |s| s.max),
-                        COLORS[4],
-                        false,
-                    ),
-                    (
-                        "truth after, worst seed",
-                        &col(&sum.true_after, |s| s.max),
-                        COLORS[4],
-                        true,
-                    ),
-                    ("goal ≤ 3.00", &goal, RED, true),
-                ],
-                (2.0, 4.5),
-            )?;
-            (serde_json::to_value(&sum)?, vec![path])
-        }
-        Experiment::Height => {
-            let people = ergocell_anthropometry::ansur::people()?;
-            let options = height_options(c)?;
-            let runs = each(seeds, &pb, |s| {
-                experiments::height(&setup(s), &handovers, &people, &options, &mut |_, _| {})
-            })?;
-            pb.finish_and_clear();
-            let sum = seeds::height(seeds, &runs);
-            if !c.json {
-                println!("height over seeds {seeds:?} (mean ± s.d., worst seed):");
-                println!(
-                    "  MAE               {} cm",
-                    spread_text(sum.mae_m.as_ref(), 100.0, 2)
-                );
-                println!(
-                    "  right beyond 2 cm {}",
-                    spread_text(sum.class_accuracy_beyond_2cm.as_ref(), 1.0, 3)
-                );
-                println!(
-                    "  undecided         {}",
-                    spread_text(sum.undecided.as_ref(), 1.0, 1)
-                );
-                println!(
-                    "  coverage ±kσ      {}",
-                    spread_text(sum.coverage.as_ref(), 1.0, 3)
-                );
-                println!(
-                    "  coverage ±1σ      {}",
-                    spread_text(sum.coverage_1sigma.as_ref(), 1.0, 3)
-                );
-                println!(
-                    "  coverage pooled   ±kσ {:.3}, ±1σ {:.3} over all {} operators",
-                    sum.coverage_pooled, sum.coverage_1sigma_pooled, sum.operators_total
-                );
-                println!(
-                    "  decided after     median {} s, p95 {} s",
-                    spread_text(sum.decision_time_median_s.as_ref(), 1.0, 2),
-                    spread_text(sum.decision_time_p95_s.as_ref(), 1.0, 2)
-                );
-                println!(
-                    "  RULA cost         mean {}, worst {}",
-                    spread_text(sum.rula_cost_mean.as_ref(), 1.0, 3),
-                    spread_text(sum.rula_cost_worst.as_ref(), 1.0, 3)
-                );
-                println!(
-                    "  calibrated offset {} mm",
-                    spread_text(sum.calibrated_offset_m.as_ref(), 1000.0, 1)
-                );
-                println!(
-                    "  not servable      {} (no trajectory serves their stature)",
-                    spread_text(sum.not_servable.as_ref(), 1.0, 1)
-                );
-                let [c1, c2, c3] = sum.decided_per_class_total;
-                println!(
-                    "  confidently wrong {} of {} operators; the neighbouring class across a boundary: {} \
-                     ({} within 2 cm of a boundary); decided c1 {c1}, c2 {c2}, c3 {c3}",
-                    sum.confidently_wrong_total,
-                    sum.operators_total,
-                    sum.wrong_across_boundary_total,
-                    sum.near_boundary_total
-                );
-                print_goals(&sum.goals);
-            }
-            let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
-            let per = |s: Option<&Spread>, scale: f64| -> Vec<f64> {
-                s.map_or_else(
-                    || vec![f64::NAN; x.len()],
-                    |s| s.per_seed.iter().map(|v| v * scale).collect(),
-                )
-            };
-            let mae = c.out_dir.join("height_seeds_mae.svg");
-            line_chart(
-                &mae,
-                "Stature per seed: mean absolute error and undecided operators",
-                "seed",
-                "MAE, cm  |  undecided operators / 10",
-                &x,
-                &[
-                    ("MAE, cm", &per(sum.mae_m.as_ref(), 100.0), COLORS[5], false),
-                    (
-                        "undecided / 10",
-                        &per(sum.undecided.as_ref(), 0.1),
-                        COLORS[3],
-                        false,
-                    ),
-                    ("goal MAE ≤ 1.5 cm", &vec![1.5; x.len()], RED, true),
-                ],
-                (0.0, 2.0),
-            )?;
-            let cov = c.out_dir.join("height_seeds_coverage.svg");
-            line_chart(
-                &cov,
-                "Coverage of the stated stature interval per seed (share of operators whose truth lies inside)",
-                "seed",
-                "coverage",
-                &x,
-                &[
-                    ("±kσ (k = 2)", &per(sum.coverage.as_ref(), 1.0), COLORS[5], false),
-                    ("±1σ", &per(sum.coverage_1sigma.as_ref(), 1.0), COLORS[3], false),
-                    ("nominal 2σ 0.954", &vec![seeds::NOMINAL_2SIGMA; x.len()], RED, true),
-                    ("nominal 1σ 0.683", &vec![0.6827; x.len()], COLORS[0], true),
-                ],
-                (0.0, 1.05),
-            )?;
-            (serde_json::to_value(&sum)?, vec![mae, cov])
-        }
-        Experiment::RulaAgreement => {
-            let operators = statures(c.operators.unwrap_or(6));
-            let runs = each(seeds, &pb, |s| {
-                experiments::rula_agreement(
-                    &setup(s),
-                    &handovers,
-                    &operators,
-                    c.cycles,
-                    &mut |_, _| {},
-                )
-            })?;
-            pb.finish_and_clear();
-            let sum = seeds::rula_agreement(seeds, &runs);
-            if !c.json {
-                println!(
-                    "RULA agreement over seeds {seeds:?} at {} px (mean ± s.d., worst seed):",
-                    c.noise_px
-                );
-                println!(
-                    "  grand score exact  {}",
-                    spread_text(sum.grand_exact.as_ref(), 1.0, 3)
-                );
-                println!(
-                    "  grand score κ      {}",
-                    spread_text(sum.grand_kappa.as_ref(), 1.0, 3)
-                );
-                println!(
-                    "  action level exact {}",
-                    spread_text(sum.action_level_exact.as_ref(), 1.0, 3)
-                );
-                println!(
-                    "  action level κ     {}",
-                    spread_text(sum.action_level_kappa.as_ref(), 1.0, 3)
-                );
-                for (j, r) in sum.region_names.iter().enumerate() {
-                    println!(
-                        "  {r:<10} exact  {}",
-                        spread_text(sum.region_exact[j].as_ref(), 1.0, 3)
-                    );
-                }
-                print_goals(&sum.goals);
-            }
-            let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
-            let per = |s: Option<&Spread>| -> Vec<f64> {
-                s.map_or_else(|| vec![f64::NAN; x.len()], |s| s.per_seed.clone())
-            };
-            let path = c.out_dir.join("rula_agreement_seeds.svg");
-            line_chart(
-                &path,
-                &format!(
-                    "RULA agreement with ground truth per seed ({} px)",
-                    c.noise_px
-                ),
-                "seed",
-                "agreement",
-                &x,
-                &[
-                    (
-                        "grand score exact",
-                        &per(sum.grand_exact.as_ref()),
-                        COLORS[5],
-                        false,
-                    ),
-                    (
-                        "grand score κ",
-                        &per(sum.grand_kappa.as_ref()),
-                        COLORS[4],
-                        false,
-                    ),
-                    (
-                        "action level κ",
-                        &per(sum.action_level_kappa.as_ref()),
-                        COLORS[3],
-                        false,
-                    ),
-                    (
-                        "goal exact ≥ 0.90",
-                        &vec![seeds::RULA_EXACT_GOAL; x.len()],
-                        RED,
-                        true,
-                    ),
-                    (
-                        "goal κ > 0.84",
-                        &vec![seeds::RULA_KAPPA_GOAL; x.len()],
-                        COLORS[0],
-                        true,
-                    ),
-                ],
-                (0.5, 1.0),
-            )?;
-            (serde_json::to_value(&sum)?, vec![path])
-        }
+        Experiment::Table1 => seeds_table1(c, seeds, &setup, &handovers, &pb)?,
+        Experiment::Adaptation => seeds_adaptation(c, seeds, &setup, &handovers, &pb)?,
+        Experiment::Height => seeds_height(c, seeds, &setup, &handovers, &pb)?,
+        Experiment::RulaAgreement => seeds_rula_agreement(c, seeds, &setup, &handovers, &pb)?,
     };
     let setup_json = serde_json::json!({
         "seeds": seeds,
@@ -924,6 +596,365 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
         "handovers_m": handovers,
     });
     write_result(c, &format!("{name}_seeds"), value, setup_json, &figures)
+}
+
+/// Table 1 on every seed: the per-landmark RMSE summary and its figure.
+fn seeds_table1(
+    c: &Common,
+    seeds: &[u64],
+    setup: &dyn Fn(u64) -> Setup,
+    handovers: &Handovers,
+    pb: &ProgressBar,
+) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+    let operators = statures(c.operators.unwrap_or(5));
+    let runs = each(seeds, pb, |s| {
+        experiments::table1(&setup(s), handovers, &operators, c.cycles, &mut |_, _| {})
+    })?;
+    pb.finish_and_clear();
+    let sum = seeds::table1(seeds, &runs);
+    if !c.json {
+        println!("Table 1 over seeds {seeds:?}: RMSE per landmark, cm, mean ± s.d. (worst seed)");
+        for (i, lm) in sum.landmarks.iter().enumerate() {
+            println!(
+                "  {lm:<16} default {}  best pair {}  paper {}",
+                spread_text(sum.default_rmse_m[i].as_ref(), 100.0, 2),
+                spread_text(sum.best_pair_rmse_m[i].as_ref(), 100.0, 1),
+                spread_text(sum.paper_rmse_m[i].as_ref(), 100.0, 1)
+            );
+        }
+        print_goals(&sum.goals);
+    }
+    let path = c.out_dir.join("table1_seeds.svg");
+    let worst = |v: &[Option<f64>], hi: bool| {
+        let it = v.iter().flatten().copied();
+        100.0
+            * if hi {
+                it.fold(f64::NAN, f64::max)
+            } else {
+                it.fold(f64::NAN, f64::min)
+            }
+    };
+    let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
+    let default_worst: Vec<f64> = runs
+        .iter()
+        .map(|r| worst(r.rmse_m.get("default_fusion").map_or(&[][..], |v| v), true))
+        .collect();
+    let pair_best: Vec<f64> = runs.iter().map(|r| worst(&r.best_pair(), false)).collect();
+    let paper_best: Vec<f64> = runs
+        .iter()
+        .map(|r| worst(r.rmse_m.get("paper_fusion").map_or(&[][..], |v| v), false))
+        .collect();
+    let top = pair_best
+        .iter()
+        .chain(&paper_best)
+        .chain(&default_worst)
+        .copied()
+        .filter(|v| v.is_finite())
+        .fold(1.0, f64::max);
+    line_chart(
+        &path,
+        "Table 1 per seed: the default fusion's worst landmark vs the others' best, cm",
+        "seed",
+        "RMSE, cm",
+        &x,
+        &[
+            (
+                "default fusion, worst landmark",
+                &default_worst,
+                COLORS[5],
+                false,
+            ),
+            (
+                "best single pair, best landmark",
+                &pair_best,
+                COLORS[3],
+                false,
+            ),
+            ("paper fusion, best landmark", &paper_best, COLORS[4], false),
+        ],
+        (0.0, top * 1.1),
+    )?;
+    Ok((serde_json::to_value(&sum)?, vec![path]))
+}
+
+/// The adaptation experiment on every seed: the summary and its figure.
+fn seeds_adaptation(
+    c: &Common,
+    seeds: &[u64],
+    setup: &dyn Fn(u64) -> Setup,
+    handovers: &Handovers,
+    pb: &ProgressBar,
+) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+    let heights = experiments::adaptation_heights();
+    let runs = each(seeds, pb, |s| {
+        experiments::adaptation(&setup(s), handovers, &heights, c.cycles, &mut |_, _| {})
+    })?;
+    pb.finish_and_clear();
+    let sum = seeds::adaptation(seeds, &runs);
+    if !c.json {
+        println!("adaptation over seeds {seeds:?}: mean grand score while holding the part, mean ± s.d. (worst seed)");
+        for (i, h) in sum.heights_m.iter().enumerate() {
+            println!(
+                "  {h:.2} m  before {}  after {}  truth after {}",
+                spread_text(sum.before[i].as_ref(), 1.0, 2),
+                spread_text(sum.after[i].as_ref(), 1.0, 2),
+                spread_text(sum.true_after[i].as_ref(), 1.0, 2)
+            );
+        }
+        print_goals(&sum.goals);
+    }
+    let path = c.out_dir.join("adaptation_seeds.svg");
+    let col = |v: &[Option<Spread>], f: fn(&Spread) -> f64| -> Vec<f64> {
+        v.iter().map(|s| s.as_ref().map_or(f64::NAN, f)).collect()
+    };
+    let goal = vec![seeds::ADAPTATION_MAX_AFTER; sum.heights_m.len()];
+    line_chart(
+        &path,
+        &format!(
+            "Adaptation over {} seeds: mean grand score while holding the part",
+            seeds.len()
+        ),
+        "operator stature, m",
+        "mean RULA grand score",
+        &sum.heights_m,
+        &[
+            (
+                "before, mean over seeds",
+                &col(&sum.before, |s| s.mean),
+                COLORS[0],
+                false,
+            ),
+            (
+                "after, mean over seeds",
+                &col(&sum.after, |s| s.mean),
+                COLORS[5],
+                false,
+            ),
+            (
+                "after, worst seed",
+                &col(&sum.after, |s| s.max),
+                COLORS[4],
+                false,
+            ),
+            (
+                "truth after, worst seed",
+                &col(&sum.true_after, |s| s.max),
+                COLORS[4],
+                true,
+            ),
+            ("goal ≤ 3.00", &goal, RED, true),
+        ],
+        (2.0, 4.5),
+    )?;
+    Ok((serde_json::to_value(&sum)?, vec![path]))
+}
+
+/// The height experiment on every seed: the summary and its two figures.
+fn seeds_height(
+    c: &Common,
+    seeds: &[u64],
+    setup: &dyn Fn(u64) -> Setup,
+    handovers: &Handovers,
+    pb: &ProgressBar,
+) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+    let people = ergocell_anthropometry::ansur::people()?;
+    let options = height_options(c)?;
+    let runs = each(seeds, pb, |s| {
+        experiments::height(&setup(s), handovers, &people, &options, &mut |_, _| {})
+    })?;
+    pb.finish_and_clear();
+    let sum = seeds::height(seeds, &runs);
+    if !c.json {
+        println!("height over seeds {seeds:?} (mean ± s.d., worst seed):");
+        println!(
+            "  MAE               {} cm",
+            spread_text(sum.mae_m.as_ref(), 100.0, 2)
+        );
+        println!(
+            "  right beyond 2 cm {}",
+            spread_text(sum.class_accuracy_beyond_2cm.as_ref(), 1.0, 3)
+        );
+        println!(
+            "  undecided         {}",
+            spread_text(sum.undecided.as_ref(), 1.0, 1)
+        );
+        println!(
+            "  coverage ±kσ      {}",
+            spread_text(sum.coverage.as_ref(), 1.0, 3)
+        );
+        println!(
+            "  coverage ±1σ      {}",
+            spread_text(sum.coverage_1sigma.as_ref(), 1.0, 3)
+        );
+        println!(
+            "  coverage pooled   ±kσ {:.3}, ±1σ {:.3} over all {} operators",
+            sum.coverage_pooled, sum.coverage_1sigma_pooled, sum.operators_total
+        );
+        println!(
+            "  decided after     median {} s, p95 {} s",
+            spread_text(sum.decision_time_median_s.as_ref(), 1.0, 2),
+            spread_text(sum.decision_time_p95_s.as_ref(), 1.0, 2)
+        );
+        println!(
+            "  RULA cost         mean {}, worst {}",
+            spread_text(sum.rula_cost_mean.as_ref(), 1.0, 3),
+            spread_text(sum.rula_cost_worst.as_ref(), 1.0, 3)
+        );
+        println!(
+            "  calibrated offset {} mm",
+            spread_text(sum.calibrated_offset_m.as_ref(), 1000.0, 1)
+        );
+        println!(
+            "  not servable      {} (no trajectory serves their stature)",
+            spread_text(sum.not_servable.as_ref(), 1.0, 1)
+        );
+        let [c1, c2, c3] = sum.decided_per_class_total;
+        println!(
+            "  confidently wrong {} of {} operators; the neighbouring class across a boundary: {} \
+             ({} within 2 cm of a boundary); decided c1 {c1}, c2 {c2}, c3 {c3}",
+            sum.confidently_wrong_total,
+            sum.operators_total,
+            sum.wrong_across_boundary_total,
+            sum.near_boundary_total
+        );
+        print_goals(&sum.goals);
+    }
+    let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
+    let per = |s: Option<&Spread>, scale: f64| -> Vec<f64> {
+        s.map_or_else(
+            || vec![f64::NAN; x.len()],
+            |s| s.per_seed.iter().map(|v| v * scale).collect(),
+        )
+    };
+    let mae = c.out_dir.join("height_seeds_mae.svg");
+    line_chart(
+        &mae,
+        "Stature per seed: mean absolute error and undecided operators",
+        "seed",
+        "MAE, cm  |  undecided operators / 10",
+        &x,
+        &[
+            ("MAE, cm", &per(sum.mae_m.as_ref(), 100.0), COLORS[5], false),
+            (
+                "undecided / 10",
+                &per(sum.undecided.as_ref(), 0.1),
+                COLORS[3],
+                false,
+            ),
+            ("goal MAE ≤ 1.5 cm", &vec![1.5; x.len()], RED, true),
+        ],
+        (0.0, 2.0),
+    )?;
+    let cov = c.out_dir.join("height_seeds_coverage.svg");
+    line_chart(
+        &cov,
+        "Coverage of the stated stature interval per seed (share of operators whose truth lies inside)",
+        "seed",
+        "coverage",
+        &x,
+        &[
+            ("±kσ (k = 2)", &per(sum.coverage.as_ref(), 1.0), COLORS[5], false),
+            ("±1σ", &per(sum.coverage_1sigma.as_ref(), 1.0), COLORS[3], false),
+            ("nominal 2σ 0.954", &vec![seeds::NOMINAL_2SIGMA; x.len()], RED, true),
+            ("nominal 1σ 0.683", &vec![0.6827; x.len()], COLORS[0], true),
+        ],
+        (0.0, 1.05),
+    )?;
+    Ok((serde_json::to_value(&sum)?, vec![mae, cov]))
+}
+
+/// RULA agreement on every seed: the summary and its figure.
+fn seeds_rula_agreement(
+    c: &Common,
+    seeds: &[u64],
+    setup: &dyn Fn(u64) -> Setup,
+    handovers: &Handovers,
+    pb: &ProgressBar,
+) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+    let operators = statures(c.operators.unwrap_or(6));
+    let runs = each(seeds, pb, |s| {
+        experiments::rula_agreement(&setup(s), handovers, &operators, c.cycles, &mut |_, _| {})
+    })?;
+    pb.finish_and_clear();
+    let sum = seeds::rula_agreement(seeds, &runs);
+    if !c.json {
+        println!(
+            "RULA agreement over seeds {seeds:?} at {} px (mean ± s.d., worst seed):",
+            c.noise_px
+        );
+        println!(
+            "  grand score exact  {}",
+            spread_text(sum.grand_exact.as_ref(), 1.0, 3)
+        );
+        println!(
+            "  grand score κ      {}",
+            spread_text(sum.grand_kappa.as_ref(), 1.0, 3)
+        );
+        println!(
+            "  action level exact {}",
+            spread_text(sum.action_level_exact.as_ref(), 1.0, 3)
+        );
+        println!(
+            "  action level κ     {}",
+            spread_text(sum.action_level_kappa.as_ref(), 1.0, 3)
+        );
+        for (j, r) in sum.region_names.iter().enumerate() {
+            println!(
+                "  {r:<10} exact  {}",
+                spread_text(sum.region_exact[j].as_ref(), 1.0, 3)
+            );
+        }
+        print_goals(&sum.goals);
+    }
+    let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
+    let per = |s: Option<&Spread>| -> Vec<f64> {
+        s.map_or_else(|| vec![f64::NAN; x.len()], |s| s.per_seed.clone())
+    };
+    let path = c.out_dir.join("rula_agreement_seeds.svg");
+    line_chart(
+        &path,
+        &format!(
+            "RULA agreement with ground truth per seed ({} px)",
+            c.noise_px
+        ),
+        "seed",
+        "agreement",
+        &x,
+        &[
+            (
+                "grand score exact",
+                &per(sum.grand_exact.as_ref()),
+                COLORS[5],
+                false,
+            ),
+            (
+                "grand score κ",
+                &per(sum.grand_kappa.as_ref()),
+                COLORS[4],
+                false,
+            ),
+            (
+                "action level κ",
+                &per(sum.action_level_kappa.as_ref()),
+                COLORS[3],
+                false,
+            ),
+            (
+                "goal exact ≥ 0.90",
+                &vec![seeds::RULA_EXACT_GOAL; x.len()],
+                RED,
+                true,
+            ),
+            (
+                "goal κ > 0.84",
+                &vec![seeds::RULA_KAPPA_GOAL; x.len()],
+                COLORS[0],
+                true,
+            ),
+        ],
+        (0.5, 1.0),
+    )?;
+    Ok((serde_json::to_value(&sum)?, vec![path]))
 }
 
 /// Pixel-noise levels of the RULA-agreement sweep, pixels.

@@ -94,26 +94,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         rig.pairs().len()
     );
 
-    let format = match args.format.as_deref() {
-        Some(f) => f.to_owned(),
-        None if args.detections.is_dir() => "openpose".to_owned(),
-        None => "caliscope".to_owned(),
-    };
-    let mut source = if format == "caliscope" {
-        FrameSource::caliscope(&args.detections, &rig)?
-    } else {
-        let keypoints = KeypointFormat::from_name(&args.keypoints)
-            .ok_or_else(|| UsageError(format!("unknown keypoint layout {}", args.keypoints)))?;
-        FrameSource::openpose(&args.detections, &rig, keypoints, args.rate_hz)?
-    };
-    let maps = video_maps(&rig, &args.video_geometry, source.video_sizes())?;
-    let frame_count = source.frame_count();
-    if frame_count == 0 {
-        bail!(UsageError(format!(
-            "{}: no frames found",
-            args.detections.display()
-        )));
-    }
+    let (mut source, maps, frame_count) = open_detections(args, &rig)?;
 
     // The cell controller's reconstruction stage with its defaults, but every frame written (no
     // tracked gate: a file keeps what was seen) and the filter only when asked for.
@@ -227,6 +208,48 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         );
     }
     out.finish()?;
+    print_source_warnings(&source);
+    let counts = ViewCounts {
+        rejected,
+        undistortion_failures,
+    };
+    print_report(args, &rig, &stats, &per_camera, counts, elapsed);
+    println!("wrote {}", args.out.display());
+    Ok(())
+}
+
+/// The detections (`--format`, or by what `--detections` is: a folder of OpenPose JSON, else a
+/// caliscope file) with each camera's video geometry, and how many frames they hold (none: a usage
+/// error).
+fn open_detections<'a>(
+    args: &'a Args,
+    rig: &'a CameraRig,
+) -> anyhow::Result<(FrameSource<'a>, Vec<VideoMap>, usize)> {
+    let format = match args.format.as_deref() {
+        Some(f) => f.to_owned(),
+        None if args.detections.is_dir() => "openpose".to_owned(),
+        None => "caliscope".to_owned(),
+    };
+    let source = if format == "caliscope" {
+        FrameSource::caliscope(&args.detections, rig)?
+    } else {
+        let keypoints = KeypointFormat::from_name(&args.keypoints)
+            .ok_or_else(|| UsageError(format!("unknown keypoint layout {}", args.keypoints)))?;
+        FrameSource::openpose(&args.detections, rig, keypoints, args.rate_hz)?
+    };
+    let maps = video_maps(rig, &args.video_geometry, source.video_sizes())?;
+    let frame_count = source.frame_count();
+    if frame_count == 0 {
+        bail!(UsageError(format!(
+            "{}: no frames found",
+            args.detections.display()
+        )));
+    }
+    Ok((source, maps, frame_count))
+}
+
+/// The reader's warnings (the first [`MAX_WARNINGS`]) and its statistics' warning.
+fn print_source_warnings(source: &FrameSource<'_>) {
     for w in source.warnings().iter().take(MAX_WARNINGS) {
         eprintln!("warning: {w}");
     }
@@ -239,7 +262,30 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     if let Some(w) = source.stats().warning() {
         eprintln!("warning: {w}");
     }
+}
 
+/// Views the fusion left out: rejected (outliers, behind the camera) and keypoints outside the
+/// lens model.
+#[derive(Debug, Clone, Copy)]
+struct ViewCounts {
+    rejected: usize,
+    undistortion_failures: usize,
+}
+
+/// What the run found: landmarks triangulated, reprojection per camera, left/right swaps, rejected
+/// views, bone-length variation, throughput.
+fn print_report(
+    args: &Args,
+    rig: &CameraRig,
+    stats: &StreamingStats,
+    per_camera: &PerCameraReprojection,
+    counts: ViewCounts,
+    elapsed: f64,
+) {
+    let ViewCounts {
+        rejected,
+        undistortion_failures,
+    } = counts;
     let frames = stats.frames();
     let triangulated = stats.landmarks();
     println!("frames:                   {frames}");
@@ -289,8 +335,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         "throughput:               {:.0} frames/s ({frames} frames in {elapsed:.2} s: reading, fusion and writing)",
         frames as f64 / elapsed.max(1e-9)
     );
-    println!("wrote {}", args.out.display());
-    Ok(())
 }
 
 /// Fused frames held back to estimate the frame rate a TRC header states (the whole recording when
