@@ -212,13 +212,14 @@ fn a_full_blazepose_skeleton_scores_exactly_as_before() {
     }
     assert_eq!(f.headline().unwrap().side, Side::Right);
 
-    // Upright with the left arm reaching: (3, 2), as in `ergonomics/tests/assess_warnings.rs`.
+    // Upright with the left arm reaching: (3, 2), as in `ergonomics/tests/assess_warnings.rs` (the
+    // neck 5° down, inside RULA's 0–10° band rather than on its 0° edge).
     let spec = PoseSpec::reaching();
     let left_reach = PoseSpec {
         left_arm: spec.right_arm,
         right_arm: PoseSpec::default().right_arm,
         trunk_flexion_rad: 0.0,
-        neck_flexion_rad: 0.0,
+        neck_flexion_rad: 5f64.to_radians(),
         ..spec
     };
     let f = &assess_frames(&left_reach, None, 1)[0];

@@ -21,9 +21,11 @@
 //!   score — the one computation behind `ergocell rula track`'s summary and the offline review.
 //! - [`export`]: spreadsheet exports (CSV): a row per assessed frame and the session summary, units in
 //!   the column names.
-//! - [`pose`]: synthetic skeletons posed to known angles, for tests and benchmarks.
+//! - [`pose`]: synthetic skeletons posed to known angles, for tests and benchmarks: postures of the
+//!   workspace's one body model (`ergocell_body`, the digital twin's too).
 //!
-//! Depends only on [`ergocell_skeleton`]; knows nothing of cameras, ROS or the robot, and does no I/O:
+//! Depends on [`ergocell_skeleton`], `ergocell_anthropometry` and `ergocell_body`; knows nothing of
+//! cameras, ROS or the robot, and does no I/O:
 //! the binary reads files and passes text or values in. Time comes in as `stamp_nanos` on each frame.
 //! Angles are radians in code; degrees appear only at the methods' boundaries — the RULA and REBA
 //! worksheets and ISO 11226's zones, all written in degrees — and in reports and messages.

@@ -1,17 +1,16 @@
-//! Synthetic skeletons posed to known angles, for tests and benchmarks (ergonomics cannot depend on
-//! the simulator crate).
+//! Synthetic skeletons posed to known angles, for tests and benchmarks.
 //!
-//! A [`PoseSpec`] builds the 33 BlazePose landmarks of a person of a given stature from the Drillis &
-//! Contini (1966) segment ratios (tabulated by Winter; the workspace's one table,
-//! [`ergocell_anthropometry`]), in a body frame with x to the person's right, y forwards and z up,
-//! feet on the floor at z = 0 — except the ears, which stand where ANSUR II's stature model
-//! ([`ergocell_anthropometry::stature::FLOOR_TO_EAR`]) puts the tragion of a person of that
-//! stature, so the height estimator's ear models see the person they were fitted on; then maps it to the world with an arbitrary rotation and
-//! translation. The world "up" of the pose is [`PoseSpec::up`]. Every joint angle is applied as a
-//! rotation, so the angles the extractor should recover are exactly the ones set here (see
-//! [`crate::angles`] for the definitions).
+//! A [`PoseSpec`] is a posture of the workspace's one body model ([`ergocell_body`], the digital
+//! twin's too: the same forward kinematics and axis convention — x forward, y to the person's left,
+//! z up): an average body of the given stature (Drillis & Contini 1966, tabulated by Winter; the ears
+//! where ANSUR II's stature model puts a person of that stature's tragion, so the height
+//! estimator's ear models see the person they were fitted on), mapped to the world with an
+//! arbitrary rotation and translation. The world "up" of the pose is [`PoseSpec::up`]. Every joint
+//! angle is applied as a rotation, so the angles the extractor should recover are exactly the ones
+//! set here (see [`crate::angles`] for the definitions).
 
-use ergocell_skeleton::{Landmark, Skeleton3, LANDMARK_COUNT};
+use ergocell_body::{ArmPosture, Body, LegPosture, Posture};
+use ergocell_skeleton::{Skeleton3, LANDMARK_COUNT};
 use nalgebra::{Point3, Rotation3, Vector3};
 
 /// One arm's pose, radians (metres for the shoulder raise).
@@ -44,9 +43,10 @@ pub struct PoseSpec {
     pub knee_flexion_rad: f64,
     pub left_arm: ArmPose,
     pub right_arm: ArmPose,
-    /// Body frame (x right, y forward, z up) → world.
+    /// Body frame (the body model's: x forward, y to the person's left, z up; origin on the floor
+    /// below the hip midpoint) → world.
     pub world_rotation: Rotation3<f64>,
-    /// Position of the body origin (floor between the feet) in the world, metres.
+    /// Position of the body origin (the floor below the hip midpoint) in the world, metres.
     pub world_translation: Vector3<f64>,
     pub stamp_nanos: i64,
 }
@@ -75,16 +75,6 @@ impl Default for PoseSpec {
     }
 }
 
-fn rx(a: f64) -> Rotation3<f64> {
-    Rotation3::from_axis_angle(&Vector3::x_axis(), a)
-}
-fn ry(a: f64) -> Rotation3<f64> {
-    Rotation3::from_axis_angle(&Vector3::y_axis(), a)
-}
-fn rz(a: f64) -> Rotation3<f64> {
-    Rotation3::from_axis_angle(&Vector3::z_axis(), a)
-}
-
 impl PoseSpec {
     /// The golden reaching pose the assessment tests score: right arm 100° up, elbow 20°, wrist
     /// flexed 25°; trunk 30° and neck 25° forward; the left arm hanging with a straight wrist; in a
@@ -110,152 +100,45 @@ impl PoseSpec {
         self.world_rotation * Vector3::z()
     }
 
-    /// The 33 landmark positions in the world frame.
-    pub fn points(&self) -> [Point3<f64>; LANDMARK_COUNT] {
-        use ergocell_anthropometry::stature::FLOOR_TO_EAR;
-        use ergocell_anthropometry::{
-            from_heights, ANKLE_HEIGHT, FOREARM, HAND, HIP_WIDTH, SHANK, SHOULDER_HEIGHT,
-            SHOULDER_WIDTH, THIGH, TRUNK, UPPER_ARM,
+    /// The pose as the body model's posture (standing at the body frame's origin, heading 0).
+    pub fn posture(&self) -> Posture {
+        let arm = |a: &ArmPose| ArmPosture {
+            flexion_rad: a.flexion_rad,
+            abduction_rad: a.abduction_rad,
+            humeral_rotation_rad: 0.0,
+            elbow_flexion_rad: a.elbow_flexion_rad,
+            wrist_flexion_rad: a.wrist_flexion_rad,
+            shoulder_raise_m: a.shoulder_raise_m,
+            wrist_deviation_rad: a.wrist_deviation_rad,
         };
-        use Landmark as L;
-        let h = self.stature_m;
-        let mut p = [Point3::origin(); LANDMARK_COUNT];
-        let mut set = |l: L, v: Vector3<f64>| p[l.index()] = Point3::from(v);
-
-        // Legs, built from the floor up so that bent knees keep the feet on the floor.
-        let half_k = self.knee_flexion_rad * 0.5;
-        let hip_x = HIP_WIDTH * h * 0.5;
-        let ankle_z = ANKLE_HEIGHT * h;
-        let shank = Vector3::new(0.0, half_k.sin(), half_k.cos()) * (SHANK * h);
-        let thigh = Vector3::new(0.0, -half_k.sin(), half_k.cos()) * (THIGH * h);
-        for (sx, ankle, heel, toe, knee, hip) in [
-            (
-                -1.0,
-                L::LeftAnkle,
-                L::LeftHeel,
-                L::LeftFootIndex,
-                L::LeftKnee,
-                L::LeftHip,
-            ),
-            (
-                1.0,
-                L::RightAnkle,
-                L::RightHeel,
-                L::RightFootIndex,
-                L::RightKnee,
-                L::RightHip,
-            ),
-        ] {
-            let a = Vector3::new(sx * hip_x, 0.0, ankle_z);
-            set(ankle, a);
-            set(heel, Vector3::new(sx * hip_x, -0.025 * h, 0.0));
-            set(toe, Vector3::new(sx * hip_x, 0.10 * h, 0.0));
-            set(knee, a + shank);
-            set(hip, a + shank + thigh);
+        // Both knees bent alike with the feet on the floor: each thigh forward by half the knee
+        // angle, each shank back by the other half.
+        let leg = LegPosture {
+            hip_flexion_rad: 0.5 * self.knee_flexion_rad,
+            knee_flexion_rad: self.knee_flexion_rad,
+        };
+        Posture {
+            position_m: [0.0, 0.0],
+            heading_rad: 0.0,
+            trunk_flexion_rad: self.trunk_flexion_rad,
+            trunk_side_bend_rad: self.trunk_side_bend_rad,
+            trunk_twist_rad: self.trunk_twist_rad,
+            neck_flexion_rad: self.neck_flexion_rad,
+            neck_yaw_rad: self.neck_twist_rad,
+            left_arm: arm(&self.left_arm),
+            right_arm: arm(&self.right_arm),
+            left_leg: leg,
+            right_leg: leg,
         }
-        let hip_mid = Vector3::new(0.0, 0.0, ankle_z) + shank + thigh;
+    }
 
-        // Upper body, in the trunk's own frame, rotated about the hip midpoint.
-        let r_trunk =
-            rx(-self.trunk_flexion_rad) * ry(self.trunk_side_bend_rad) * rz(self.trunk_twist_rad);
-        let trunk = |v: Vector3<f64>| hip_mid + r_trunk * v;
-        let trunk_len = TRUNK * h;
-        let shoulder_x = SHOULDER_WIDTH * h * 0.5;
-
-        // Head about the neck base (shoulder midpoint).
-        let neck = Vector3::new(0.0, 0.0, trunk_len);
-        let r_head = rx(-self.neck_flexion_rad) * rz(self.neck_twist_rad);
-        let eye_z = from_heights::EYE_ABOVE_SHOULDER * h;
-        let head = |v: Vector3<f64>| trunk(neck + r_head * v);
-        set(
-            L::Nose,
-            head(Vector3::new(0.0, 0.055 * h, eye_z - 0.018 * h)),
-        );
-        set(
-            L::LeftEyeInner,
-            head(Vector3::new(-0.010 * h, 0.045 * h, eye_z)),
-        );
-        set(L::LeftEye, head(Vector3::new(-0.018 * h, 0.045 * h, eye_z)));
-        set(
-            L::LeftEyeOuter,
-            head(Vector3::new(-0.026 * h, 0.042 * h, eye_z)),
-        );
-        set(
-            L::RightEyeInner,
-            head(Vector3::new(0.010 * h, 0.045 * h, eye_z)),
-        );
-        set(L::RightEye, head(Vector3::new(0.018 * h, 0.045 * h, eye_z)));
-        set(
-            L::RightEyeOuter,
-            head(Vector3::new(0.026 * h, 0.042 * h, eye_z)),
-        );
-        // The ears where ANSUR II's stature model puts a person of this stature's tragion.
-        let ear_z = FLOOR_TO_EAR.span_m(h) - SHOULDER_HEIGHT * h;
-        set(L::LeftEar, head(Vector3::new(-0.043 * h, 0.0, ear_z)));
-        set(L::RightEar, head(Vector3::new(0.043 * h, 0.0, ear_z)));
-        set(
-            L::MouthLeft,
-            head(Vector3::new(-0.014 * h, 0.050 * h, eye_z - 0.040 * h)),
-        );
-        set(
-            L::MouthRight,
-            head(Vector3::new(0.014 * h, 0.050 * h, eye_z - 0.040 * h)),
-        );
-
-        // Arms, in the trunk frame.
-        for (sx, arm, ids) in [
-            (
-                -1.0,
-                &self.left_arm,
-                [
-                    L::LeftShoulder,
-                    L::LeftElbow,
-                    L::LeftWrist,
-                    L::LeftIndex,
-                    L::LeftPinky,
-                    L::LeftThumb,
-                ],
-            ),
-            (
-                1.0,
-                &self.right_arm,
-                [
-                    L::RightShoulder,
-                    L::RightElbow,
-                    L::RightWrist,
-                    L::RightIndex,
-                    L::RightPinky,
-                    L::RightThumb,
-                ],
-            ),
-        ] {
-            let shoulder = Vector3::new(sx * shoulder_x, 0.0, trunk_len + arm.shoulder_raise_m);
-            let r_upper = ry(-sx * arm.abduction_rad) * rx(arm.flexion_rad);
-            let down = -Vector3::z();
-            let elbow = shoulder + r_upper * down * (UPPER_ARM * h);
-            let r_fore = r_upper * rx(arm.elbow_flexion_rad);
-            let wrist = elbow + r_fore * down * (FOREARM * h);
-            let r_hand = r_fore * ry(sx * arm.wrist_flexion_rad) * rx(arm.wrist_deviation_rad);
-            let knuckles = 0.45 * HAND * h;
-            let half_width = 0.012 * h;
-            set(ids[0], trunk(shoulder));
-            set(ids[1], trunk(elbow));
-            set(ids[2], trunk(wrist));
-            set(
-                ids[3],
-                trunk(wrist + r_hand * Vector3::new(0.0, half_width, -knuckles)),
-            );
-            set(
-                ids[4],
-                trunk(wrist + r_hand * Vector3::new(0.0, -half_width, -knuckles)),
-            );
-            set(
-                ids[5],
-                trunk(wrist + r_hand * Vector3::new(0.0, 1.5 * half_width, -0.5 * knuckles)),
-            );
-        }
-
-        p.map(|q| Point3::from(self.world_rotation * q.coords + self.world_translation))
+    /// The 33 landmark positions in the world frame: the body model's
+    /// ([`ergocell_body::kinematics`], an average body of this stature) mapped by the world pose.
+    pub fn points(&self) -> [Point3<f64>; LANDMARK_COUNT] {
+        let body = Body::average(self.stature_m);
+        ergocell_body::kinematics(&body, &self.posture())
+            .points
+            .map(|q| Point3::from(self.world_rotation * q.coords + self.world_translation))
     }
 
     /// The pose as a skeleton with confidence 1 everywhere. A pose with non-finite parameters gives

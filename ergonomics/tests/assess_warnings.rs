@@ -49,12 +49,14 @@ fn both_sides_are_scored_and_the_worse_is_the_headline() {
     assert_eq!(f.headline().unwrap().side, Side::Right);
     assert!(!r.uncertain, "{:?}", r.uncertain_reasons);
 
-    // Upright, the left arm reaching: the left side is worse and is the headline.
+    // Upright, the left arm reaching: the left side is worse and is the headline. (The neck looks
+    // 5° down: inside RULA's 0–10° band, not on its 0° edge, where a rotated world's rounding
+    // decides between flexion and extension.)
     let left_reach = PoseSpec {
         left_arm: spec.right_arm,
         right_arm: PoseSpec::default().right_arm,
         trunk_flexion_rad: 0.0,
-        neck_flexion_rad: 0.0,
+        neck_flexion_rad: 5f64.to_radians(),
         ..spec
     };
     let f = assessor_for(&left_reach)
@@ -370,7 +372,9 @@ fn session_summary_shares_add_up() {
     let mut assessor = assessor_for(&spec);
     let mut summary = SummaryBuilder::new(SEC);
     for k in 0..20 {
+        // Relaxed: the neck 5° down, inside RULA's 0–10° band rather than on its 0° edge.
         let relaxed = PoseSpec {
+            neck_flexion_rad: 5f64.to_radians(),
             world_rotation: spec.world_rotation,
             world_translation: spec.world_translation,
             ..PoseSpec::default()

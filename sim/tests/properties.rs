@@ -19,6 +19,7 @@ fn random_arm(rng: &mut ChaCha8Rng) -> ArmPosture {
         elbow_flexion_rad: uniform(rng, 0.0, 2.5),
         wrist_flexion_rad: uniform(rng, -1.0, 1.0),
         shoulder_raise_m: uniform(rng, 0.0, 0.04),
+        wrist_deviation_rad: 0.0,
     }
 }
 
