@@ -9,8 +9,10 @@
 //! proof through real DDS; these pin each row's rule.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::{Arc, Mutex};
+
+mod common;
 
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
@@ -22,7 +24,6 @@ use ergocell_bridge::controller::{ControllerCommand, ControllerReport};
 use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, Header, JointState, JointTrajectory};
 use ergocell_bridge::transport::{RobotInterface, RosConfig};
 use ergocell_cell::CellSettings;
-use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_robot::TrajectoryClass;
 use ergocell_ros_backend::monitor::Judge;
@@ -41,26 +42,12 @@ fn root() -> &'static Path {
 }
 
 fn rig() -> CameraRig {
-    let text = std::fs::read_to_string(root().join("config/rig.toml")).unwrap();
-    parse_rig(&text, "config/rig.toml").unwrap().0
+    common::reference_rig()
 }
 
 /// The repository's trajectories with a demo approval of c2 in a temp folder of its own.
 fn provider(name: &str) -> FileTrajectories {
-    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("failure-{name}-{n}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    let p = FileTrajectories::new(
-        &root().join("config/cell.toml"),
-        &root().join("trajectories"),
-        &dir,
-    )
-    .with_demo_key(&[7; 32])
-    .unwrap();
-    p.approve_for_demo(TrajectoryClass::C2, "2026-01-01T00:00:00Z")
-        .unwrap();
-    p
+    common::demo_provider(&format!("failure-{name}"), Some(TrajectoryClass::C2))
 }
 
 fn ros(interface: RobotInterface, driver_state: bool) -> RosConfig {
@@ -235,6 +222,15 @@ impl Harness {
         for note in self.judge.sample(self.now, js, arrival, 0.0) {
             feed(&mut self.cell, self.now, RobotInput::Monitor(note));
         }
+    }
+
+    /// The KUKA driver's hardware event `event` (kuka_drivers' `HardwareEvent` numbers).
+    fn driver_event(&mut self, now: i64, event: u8) {
+        let e = HardwareEvent {
+            robot_name: "lbr".to_owned(),
+            event,
+        };
+        feed(&mut self.cell, now, RobotInput::DriverEvent(e));
     }
 
     /// Until the first leg (home → handover) has gone out, faithfully executed.
@@ -580,14 +576,7 @@ fn no_goal_is_sent_until_the_driver_is_configured_and_controlling() {
         Some("waiting for the KUKA driver: control not started")
     );
     let now = h.now;
-    feed(
-        &mut h.cell,
-        now,
-        RobotInput::DriverEvent(HardwareEvent {
-            robot_name: "lbr".to_owned(),
-            event: HardwareEvent::CONTROL_STARTED,
-        }),
-    );
+    h.driver_event(now, HardwareEvent::CONTROL_STARTED);
     h.until_first_leg();
     assert!(h
         .controller_events()
@@ -601,24 +590,10 @@ fn the_driver_stopping_holds_the_robot() {
     for event in [HardwareEvent::CONTROL_STOPPED, HardwareEvent::ERROR] {
         let mut h = Harness::new(&format!("driver-{event}"), RobotInterface::Topic, true);
         feed(&mut h.cell, 0, RobotInput::DriverConfigured(true));
-        feed(
-            &mut h.cell,
-            0,
-            RobotInput::DriverEvent(HardwareEvent {
-                robot_name: "lbr".to_owned(),
-                event: HardwareEvent::CONTROL_STARTED,
-            }),
-        );
+        h.driver_event(0, HardwareEvent::CONTROL_STARTED);
         h.until_first_leg();
         let now = h.now;
-        feed(
-            &mut h.cell,
-            now,
-            RobotInput::DriverEvent(HardwareEvent {
-                robot_name: "lbr".to_owned(),
-                event,
-            }),
-        );
+        h.driver_event(now, event);
         assert!(
             h.run(h.now + 1_000 * MS, &mut |_, _, q| Sample::Send(q), &|h| h
                 .cell

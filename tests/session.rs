@@ -6,6 +6,8 @@
 
 use std::path::{Path, PathBuf};
 
+mod common;
+
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
@@ -13,7 +15,6 @@ use ergocell::session::{
     TrajectoryProvider,
 };
 use ergocell_cell::CellSettings;
-use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::TrajectoryClass;
 use ergocell_sim::{Operator, Phase, SessionScript, SimConfig, Simulation};
@@ -27,29 +28,11 @@ fn root() -> &'static Path {
 }
 
 fn rig() -> CameraRig {
-    let text = std::fs::read_to_string(root().join("config/rig.toml")).unwrap();
-    parse_rig(&text, "config/rig.toml").unwrap().0
+    common::reference_rig()
 }
 
-/// A provider on the repository's files with a demo approval of `approve` in a fresh temp folder
-/// of its own (numbered: tests running in parallel may ask for the same `name`, e.g. `home()`, and
-/// must not remove each other's approvals).
 fn provider(name: &str, approve: Option<TrajectoryClass>) -> FileTrajectories {
-    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("session-{name}-{n}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    let p = FileTrajectories::new(
-        &root().join("config/cell.toml"),
-        &root().join("trajectories"),
-        &dir,
-    )
-    .with_demo_key(&[7; 32])
-    .unwrap();
-    if let Some(class) = approve {
-        p.approve_for_demo(class, "2026-01-01T00:00:00Z").unwrap();
-    }
-    p
+    common::demo_provider(&format!("session-{name}"), approve)
 }
 
 fn simulation(cycles: usize) -> Simulation {

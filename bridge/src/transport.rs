@@ -471,16 +471,24 @@ impl RosNode {
 pub struct CellTopics {
     pub cameras: Vec<Subscription<CameraLandmarks>>,
     pub joint_states: Subscription<JointState>,
+    /// The robot's command (the robot sink's: every command, or a hold's empty trajectory).
     pub joint_trajectory: Publisher<JointTrajectory>,
+    /// What the cell publishes of its sessions.
+    pub publishers: CellPublishers,
+    /// With `driver_state`: kuka_drivers' `is_configured` and `hardware_event`.
+    pub driver: Option<(Subscription<BoolMsg>, Subscription<HardwareEvent>)>,
+}
+
+/// What the cell publishes of its sessions (the robot command aside).
+pub struct CellPublishers {
     pub session_state: Publisher<SessionState>,
+    /// The same messages, every one (deeper history).
     pub session_events: Publisher<SessionState>,
     pub ergonomics: Publisher<ErgonomicState>,
     pub reba: Publisher<RebaState>,
     pub warnings: Publisher<PostureWarning>,
     pub skeleton: Publisher<MarkerArray>,
     pub controller_events: Publisher<ControllerEvent>,
-    /// With `driver_state`: kuka_drivers' `is_configured` and `hardware_event`.
-    pub driver: Option<(Subscription<BoolMsg>, Subscription<HardwareEvent>)>,
 }
 
 impl CellTopics {
@@ -491,11 +499,7 @@ impl CellTopics {
             .iter()
             .map(|id| node.subscription(&cfg.camera_topic_of(id), qos::CAMERA_LANDMARKS))
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(Self {
-            cameras,
-            joint_states: node.subscription(&cfg.joint_states_topic, qos::JOINT_STATES)?,
-            joint_trajectory: node
-                .publisher(&cfg.joint_trajectory_topic, qos::TRAJECTORY_COMMAND)?,
+        let publishers = CellPublishers {
             session_state: node.publisher(&cfg.session_state_topic, qos::SESSION_STATE)?,
             session_events: node.publisher(&cfg.session_events_topic, qos::SESSION_EVENTS)?,
             ergonomics: node.publisher(&cfg.ergonomics_topic, qos::PER_FRAME_STATE)?,
@@ -504,6 +508,13 @@ impl CellTopics {
             skeleton: node.publisher(&cfg.skeleton_topic, qos::PER_FRAME_STATE)?,
             controller_events: node
                 .publisher(&cfg.controller_events_topic, qos::CONTROLLER_EVENTS)?,
+        };
+        Ok(Self {
+            cameras,
+            joint_states: node.subscription(&cfg.joint_states_topic, qos::JOINT_STATES)?,
+            joint_trajectory: node
+                .publisher(&cfg.joint_trajectory_topic, qos::TRAJECTORY_COMMAND)?,
+            publishers,
             driver: if cfg.driver_state {
                 Some((
                     node.subscription(&cfg.is_configured_topic, qos::DRIVER_STATE)?,

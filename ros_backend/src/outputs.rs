@@ -2,27 +2,14 @@
 //! side's controller events first (published and recorded, in order), then the step's messages
 //! ([`messages::step_messages`]), published and recorded alike.
 
-use ergocell_bridge::msg::{
-    ControllerEvent, ErgonomicState, MarkerArray, PostureWarning, RebaState, SessionState,
-};
+use ergocell_bridge::msg::ControllerEvent;
+pub use ergocell_bridge::transport::CellPublishers as Publishers;
 use ergocell_bridge::transport::Publisher;
 use ergocell_cell::session::{CellOutputs, OutputError, SessionEvent, SessionMachine};
 
 use crate::messages::{self, Outgoing};
 use crate::recording::{self, topics, Recording};
 use crate::robot::EventQueue;
-
-/// The cell's publishers (the robot command is the robot sink's).
-pub struct Publishers {
-    pub session_state: Publisher<SessionState>,
-    /// The same messages, every one (deeper history).
-    pub session_events: Publisher<SessionState>,
-    pub ergonomics: Publisher<ErgonomicState>,
-    pub reba: Publisher<RebaState>,
-    pub warnings: Publisher<PostureWarning>,
-    pub skeleton: Publisher<MarkerArray>,
-    pub controller_events: Publisher<ControllerEvent>,
-}
 
 fn published<M: serde::Serialize + std::fmt::Debug>(
     p: &Publisher<M>,

@@ -33,7 +33,7 @@ use ergocell_robot::TrajectoryClass;
 use ergocell_ros_backend::clock::{instant, now_nanos, SessionClock};
 use ergocell_ros_backend::messages;
 use ergocell_ros_backend::monitor::{monitor_task, Judge, MonitorNote, MonitorStats};
-use ergocell_ros_backend::outputs::{Publishers, RosOutputs};
+use ergocell_ros_backend::outputs::RosOutputs;
 use ergocell_ros_backend::recording::{self, topics, McapRecorder, Recording};
 use ergocell_ros_backend::robot::{driver_readiness, feed, radians_list, RobotInput, RosRobot};
 use ergocell_ros_backend::robot_markers::RobotGeometry;
@@ -397,15 +397,7 @@ async fn serve(
         display,
         ros: RosOutputs {
             events: robot.events(),
-            publishers: Publishers {
-                session_state: topics.session_state,
-                session_events: topics.session_events,
-                ergonomics: topics.ergonomics,
-                reba: topics.reba,
-                warnings: topics.warnings,
-                skeleton: topics.skeleton,
-                controller_events: topics.controller_events,
-            },
+            publishers: topics.publishers,
             recording: recording.take().unwrap_or_else(|| Recording::new(None)),
             published_frame: false,
         },

@@ -1,5 +1,6 @@
 //! Shared by the integration tests: a running `ergocell review`, killed on drop, and the demo session
-//! the review tests review; a scratch folder outside the repository.
+//! the review tests review; a scratch folder outside the repository; the reference rig and a
+//! trajectory provider with demo approvals (the session tests').
 
 #![allow(clippy::unwrap_used, clippy::expect_used, dead_code)]
 
@@ -147,4 +148,38 @@ pub fn skip_browser_test() -> bool {
         return true;
     }
     false
+}
+
+/// The reference cell's rig (`config/rig.toml`).
+pub fn reference_rig() -> ergocell_perception::CameraRig {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("config/rig.toml")).unwrap();
+    ergocell_perception::rig_file::parse_rig(&text, "config/rig.toml")
+        .unwrap()
+        .0
+}
+
+/// A provider on the repository's files with a demo approval of `approve` in a fresh temp folder
+/// of its own (numbered: tests running in parallel may ask for the same `name` and must not remove
+/// each other's approvals).
+pub fn demo_provider(
+    name: &str,
+    approve: Option<ergocell_robot::TrajectoryClass>,
+) -> ergocell::session::provider::FileTrajectories {
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("provider-{name}-{n}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let p = ergocell::session::provider::FileTrajectories::new(
+        &root.join("config/cell.toml"),
+        &root.join("trajectories"),
+        &dir,
+    )
+    .with_demo_key(&[7; 32])
+    .unwrap();
+    if let Some(class) = approve {
+        p.approve_for_demo(class, "2026-01-01T00:00:00Z").unwrap();
+    }
+    p
 }
