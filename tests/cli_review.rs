@@ -520,10 +520,16 @@ fn robot_cycle() -> PathBuf {
             ..JointTrajectory::default()
         })
     };
+    // The leg as `ergocell run` records it: its constant and its words.
     let event = |t: i64, kind: &str, leg: &str| ControllerEvent {
         header: Header::new(t, ""),
         kind: kind.to_owned(),
         leg: leg.to_owned(),
+        leg_id: match leg {
+            "home → handover" => ControllerEvent::LEG_TO_HANDOVER,
+            "handover → home" => ControllerEvent::LEG_TO_HOME,
+            _ => ControllerEvent::LEG_NONE,
+        },
         max_error: f64::NAN,
         ..ControllerEvent::default()
     };

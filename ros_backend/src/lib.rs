@@ -1,5 +1,6 @@
 //! The cell's ROS 2 backend: everything between the core (`ergocell_cell`, no ROS) and the network.
 //!
+//! - [`cameras`]: the camera topics' messages checked into views ([`cameras::CameraInbox`]).
 //! - [`messages`]: every core ↔ ROS message conversion, and [`messages::step_messages`], the one
 //!   mapping from a step's events to the messages the cell sends (published and recorded alike).
 //! - [`recording`]: the MCAP recorder (rosbag2's layout) and [`recording::Recording`], a recording
@@ -16,6 +17,7 @@
 //! The binary's `run` composes these around [`ergocell_cell::session::CellLoop`]; the topics, QoS,
 //! node and security are `ergocell_bridge`'s.
 
+pub mod cameras;
 pub mod clock;
 pub mod messages;
 pub mod monitor;

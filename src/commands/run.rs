@@ -30,6 +30,7 @@ use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::video_geometry::VideoGeometry;
 use ergocell_perception::CameraRig;
 use ergocell_robot::TrajectoryClass;
+use ergocell_ros_backend::cameras::CameraInbox;
 use ergocell_ros_backend::clock::{instant, now_nanos, SessionClock};
 use ergocell_ros_backend::messages;
 use ergocell_ros_backend::monitor::{monitor_task, Judge, MonitorNote, MonitorStats};
@@ -456,7 +457,7 @@ async fn drive(
     let mut markers = Markers::default();
     let mut tick = tokio::time::interval(Duration::from_millis(20));
     let mut latency = Latency::start();
-    let mut rejected = 0u64;
+    let mut inbox = CameraInbox::new(setup.rig.clone(), setup.video_geometries.clone());
     let mut sessions_done = 0u32;
     let first = messages::session_state_message(cell.machine(), clock.now(), "started");
     let p = &cell.outputs().ros.publishers;
@@ -474,13 +475,7 @@ async fn drive(
                         let m: CameraLandmarks = m;
                         let now = clock.now();
                         cell.outputs_mut().ros.recording.with(|rec| rec.write(&topics::camera(&m.camera_id), now, &m));
-                        match messages::view_from_message_with(&setup.rig, &setup.video_geometries, &m) {
-                            Ok(v) => views.push(v),
-                            Err(e) => {
-                                rejected += 1;
-                                tracing::warn!(error = %e, "camera message rejected");
-                            }
-                        }
+                        views.extend(inbox.accept(&m));
                     }
                     Err(e) => tracing::warn!(error = ?e, "camera read error"),
                 }
@@ -527,7 +522,7 @@ async fn drive(
         sessions_done += 1;
         let more = args.sessions.is_none_or(|n| sessions_done < n);
         if ending.cause == EndCause::Session && cell.machine().summary().ended && more {
-            print_summary(cell.machine(), rejected);
+            print_summary(cell.machine(), inbox.rejected());
             cell.next_session(setup.new_machine()?);
             println!("next session: waiting for an operator");
             continue;
@@ -547,7 +542,7 @@ async fn drive(
             Ok(None) | Err(_) => break,
         }
     }
-    print_summary(cell.machine(), rejected);
+    print_summary(cell.machine(), inbox.rejected());
     if args.latency_report {
         latency.print();
     }
