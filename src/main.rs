@@ -3,6 +3,40 @@
 //! The binary is the only place that reads files, the clock and the network; the library crates do the
 //! work. Each subcommand lives in its own module under `commands/`.
 
+/// The commands' `println!`: a closed stdout (`ergocell trajectories lock | head -1`) drops the line
+/// and the command finishes its work (every lock written, every file closed); std's macro panics
+/// with "failed printing to stdout" halfway through. Shadows std's in every command module.
+macro_rules! println {
+    () => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout());
+    }};
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($t)*);
+    }};
+}
+
+/// The commands' `print!`, as [`println!`].
+macro_rules! print {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = write!(std::io::stdout(), $($t)*);
+    }};
+}
+
+/// The commands' `eprintln!`: a closed stderr drops the line, as [`println!`].
+macro_rules! eprintln {
+    () => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr());
+    }};
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($t)*);
+    }};
+}
+
 mod commands;
 
 use clap::{Parser, Subcommand};

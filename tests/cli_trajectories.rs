@@ -530,3 +530,62 @@ fn regex_free_replace_time(good: &str, value: &str) -> String {
         .join("\n")
         + "\n"
 }
+
+/// A stdout closed early (`ergocell trajectories lock | head -1`) is no reason to stop halfway:
+/// every class is locked, the exit is 0 and nothing panics.
+#[test]
+fn a_closed_stdout_does_not_stop_the_work_halfway() {
+    let dir = fresh_cell("trajectories_closed_stdout");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&dir)
+        .args(["trajectories", "lock"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The reader is gone before the first line is written.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{:?}: {err}", out.status);
+    assert!(!err.contains("panicked"), "{err}");
+    for class in ["c1", "c2", "c3"] {
+        assert!(
+            dir.join(format!("trajectories/locks/{class}.lock.toml"))
+                .exists(),
+            "{class} locked"
+        );
+    }
+}
+
+/// A write cut short — the file-size limit reached mid-write (SIGXFSZ kills the process, as a full
+/// disk or a kill would cut the write) — leaves the previous lock whole: locks are written beside and
+/// moved into place, never truncated in place.
+#[cfg(unix)]
+#[test]
+fn a_lock_write_cut_short_leaves_the_previous_lock_whole() {
+    let dir = fresh_cell("trajectories_cut_write");
+    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let lock = dir.join("trajectories/locks/c2.lock.toml");
+    let before = std::fs::read(&lock).unwrap();
+    assert!(before.len() > 16 * 1024, "{} bytes", before.len());
+    // Files of at most 8 blocks (4–8 KiB, by the shell's unit) for the re-lock.
+    let status = Command::new("sh")
+        .current_dir(&dir)
+        .args([
+            "-c",
+            "ulimit -f 8; exec \"$0\" trajectories lock --class c2",
+            env!("CARGO_BIN_EXE_ergocell"),
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status()
+        .unwrap();
+    assert!(!status.success(), "the write was cut: {status:?}");
+    assert_eq!(
+        std::fs::read(&lock).unwrap(),
+        before,
+        "the previous lock is whole"
+    );
+}

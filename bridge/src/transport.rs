@@ -209,6 +209,10 @@ struct CellFile {
     ros: Option<RosConfig>,
 }
 
+/// The largest DDS domain id ROS 2 allows: RTPS puts domain `d`'s ports at 7400 + 250·d + …, and
+/// above 232 they leave the 16-bit port range (ROS 2 "The ROS_DOMAIN_ID": 0–232, 0–101 safe on Linux).
+pub const MAX_DOMAIN_ID: u16 = 232;
+
 impl RosConfig {
     /// The `[ros]` table of a cell config file (other tables are read by other crates).
     pub fn from_cell_toml(text: &str) -> Result<Self, BridgeError> {
@@ -219,6 +223,13 @@ impl RosConfig {
             .ok_or_else(|| BridgeError::Config("no [ros] table".to_owned()))?;
         if cfg.cameras.is_empty() {
             return Err(BridgeError::Config("[ros] cameras is empty".to_owned()));
+        }
+        if cfg.domain_id > MAX_DOMAIN_ID {
+            return Err(BridgeError::Config(format!(
+                "[ros] domain_id = {}: ROS 2 allows 0..={MAX_DOMAIN_ID} (above, the DDS ports run past \
+                 65535 and wrap onto other domains')",
+                cfg.domain_id
+            )));
         }
         if cfg.feedback_layout().is_none() {
             return Err(BridgeError::Config(format!(
@@ -588,6 +599,14 @@ mod tests {
         assert!(RosConfig::from_cell_toml("[ros]\ncameras = [\"a\"]\ntypo = 1\n").is_err());
         assert!(RosConfig::from_cell_toml("[robot]\n").is_err());
         assert!(RosConfig::from_cell_toml("[ros]\ncameras = []\n").is_err());
+        let domain = |id: u32| {
+            RosConfig::from_cell_toml(&format!("[ros]\ncameras = [\"a\"]\ndomain_id = {id}\n"))
+        };
+        assert_eq!(domain(232).unwrap().domain_id, 232);
+        for id in [233, 250] {
+            let e = domain(id).unwrap_err().to_string();
+            assert!(e.contains("domain_id = ") && e.contains("0..=232"), "{e}");
+        }
     }
 
     #[test]

@@ -19,6 +19,10 @@ pub struct BoardSpec {
     square_m: f64,
 }
 
+/// The square sizes a calibration board can have, metres: a size outside is almost always in the
+/// wrong unit (millimetres: `--square-m 25` would report an 83-metre baseline).
+pub const SQUARE_RANGE_M: std::ops::RangeInclusive<f64> = 0.002..=0.5;
+
 impl BoardSpec {
     /// A board with `cols` inner corners per row, `rows` rows and squares of `square_m` metres.
     pub fn new(cols: usize, rows: usize, square_m: f64) -> Result<Self> {
@@ -38,6 +42,11 @@ impl BoardSpec {
         }
         if !(square_m.is_finite() && square_m > 0.0) {
             return bad("the square size must be a positive number of metres");
+        }
+        if !SQUARE_RANGE_M.contains(&square_m) {
+            return bad(
+                "a checkerboard's squares are 2 mm to 0.5 m: give the size in metres (25 mm is 0.025)",
+            );
         }
         Ok(Self {
             cols,
@@ -115,6 +124,11 @@ mod tests {
         ));
         assert!(BoardSpec::parse("9x6", 0.0).is_err());
         assert!(BoardSpec::parse("9x6", f64::NAN).is_err());
+        // Millimetres for metres is refused, saying so.
+        let e = BoardSpec::parse("9x6", 25.0).unwrap_err().to_string();
+        assert!(e.contains("in metres"), "{e}");
+        assert!(BoardSpec::parse("9x6", 0.001).is_err());
+        assert!(BoardSpec::parse("9x6", 0.5).is_ok());
     }
 
     #[test]

@@ -153,14 +153,6 @@ fn wall_clock_nanos() -> i64 {
         .map_or(0, |d| i64::try_from(d.as_nanos()).unwrap_or(i64::MAX))
 }
 
-/// `println!` that ignores a closed stdout (`ergocell demo | head` must not panic).
-macro_rules! say {
-    ($($t:tt)*) => {{
-        use std::io::Write as _;
-        let _ = writeln!(std::io::stdout(), $($t)*);
-    }};
-}
-
 /// Resident memory of this process, MiB (Linux `/proc/self/status`; `None` elsewhere).
 fn rss_mib() -> Option<f64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
@@ -206,7 +198,7 @@ impl DisplayServer {
                 }
             })
             .context("display thread")?;
-        say!("  operator display: http://{bound}/ (the session runs in real time)");
+        println!("  operator display: http://{bound}/ (the session runs in real time)");
         Ok(Self {
             display,
             stop: Some(stop),
@@ -237,7 +229,7 @@ impl Soak {
     /// A report every `minutes` of simulated time from `start`; prints the first line.
     fn new(minutes: u64, start: i64) -> Self {
         let every_nanos = i64::try_from(minutes).unwrap_or(1) * 60_000_000_000;
-        say!(
+        println!(
             "  soak: t=  0.00 h  RSS {} MiB",
             rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}"))
         );
@@ -266,7 +258,7 @@ impl Soak {
                 .copied()
                 .unwrap_or(f64::NAN)
         };
-        say!(
+        println!(
             "  soak: t={elapsed_h:6.2} h  RSS {} MiB  step p50 {:.0} µs  p99 {:.0} µs  max {:.0} µs  ({} steps)",
             rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}")),
             q(0.5),
@@ -530,20 +522,20 @@ fn demo_provider(
     )
     .with_demo_key(&seed)
     .map_err(|e| anyhow::anyhow!("demo approvals: {e}"))?;
-    say!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
-    say!(
+    println!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
+    println!(
         "  DEMO APPROVAL: the shipped trajectories are re-locked and approved for this run only, in {},",
         approvals_dir.display()
     );
-    say!(
+    println!(
         "  signed by a throwaway Ed25519 key derived from seed {} ({}), the only key this run trusts",
         args.seed,
         ergocell::session::provider::DEMO_PRINCIPAL
     );
     for (class, demo_sha, reviewed_sha) in provider.demo_locks() {
-        say!("  {class}: demo lock {demo_sha} = the shipped lock {reviewed_sha}, same samples, re-locked under the demo key");
+        println!("  {class}: demo lock {demo_sha} = the shipped lock {reviewed_sha}, same samples, re-locked under the demo key");
     }
-    say!("  (a simulator-only sign-off; a real cell trusts its engineers' keys in config/approvers/ and needs `ergocell trajectories approve`)");
+    println!("  (a simulator-only sign-off; a real cell trusts its engineers' keys in config/approvers/ and needs `ergocell trajectories approve`)");
     let stamp = ergocell_robot::signing::rfc3339_utc(start.div_euclid(1_000_000_000))
         .map_err(|e| anyhow::anyhow!(e))?;
     for class in TrajectoryClass::ALL {
@@ -656,12 +648,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .map_err(|e| UsageError(e.to_string()))?;
     let rec = McapRecorder::from_file(output::create("--out", &out, args.force)?)?;
     if moved {
-        say!(
+        println!(
             "  {DEFAULT_OUT} exists (kept): recording into {} (--out names the file, --force overwrites)",
             out.display()
         );
     }
-    say!(
+    println!(
         "  operator {:.2} m, {} handover cycles, {} cameras, seed {}; recording {}",
         args.stature_m,
         args.cycles,
@@ -670,19 +662,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         out.display()
     );
     if schedule.faults.is_empty() {
-        say!("  faults: none");
+        println!("  faults: none");
     } else {
         let list: Vec<String> = schedule.faults.iter().map(ToString::to_string).collect();
-        say!("  faults: {}", list.join("; "));
+        println!("  faults: {}", list.join("; "));
     }
     if let Some(p) = &floor_pick {
-        say!(
+        println!(
             "  floor pick after handover cycle {}: the operator bends down for a dropped part {:.2} m above the floor (robot not involved)",
             p.after_cycle,
             p.target_m.z
         );
     }
-    say!();
+    println!();
     let outputs = DemoOutputs {
         recording: Recording::new(Some(rec)),
         display: args.display.map(DisplayServer::start).transpose()?,
@@ -712,7 +704,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let messages = outputs.recording.close()?;
     drop(demo_dir);
     summary(&machine, args, true_class, secs(now, start));
-    say!(
+    println!(
         "  recording:      {} ({} messages; open in Foxglove or `ros2 bag info`)",
         out.display(),
         messages.map_or("n/a".to_owned(), |m| m.to_string())
@@ -792,7 +784,7 @@ impl Twin<'_> {
                             .is_some_and(|t| matches!(t.truth.phase, Phase::FloorPick { .. }));
                         if picking != was_picking {
                             was_picking = picking;
-                            say!(
+                            println!(
                                 "  t={:5.1} s  (simulator) {}",
                                 secs(now, start),
                                 if picking {
@@ -837,7 +829,7 @@ impl Twin<'_> {
             if now - last_status >= 5_000_000_000 {
                 last_status = now;
                 let m = cell.machine();
-                say!(
+                println!(
                     "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {}",
                     secs(now, start),
                     m.state().name(),
@@ -908,7 +900,7 @@ impl Twin<'_> {
                         "the simulated operator cannot reach the decided class's handover point",
                     )?;
                 self.geometry = h.geometry.clone();
-                say!(
+                println!(
                     "  t={:5.1} s  (simulator) the operator (class {}) reaches for class {decided}'s handover point ({moved} cycle(s))",
                     secs(now, self.start),
                     self.true_class
@@ -946,13 +938,13 @@ impl Twin<'_> {
 
 fn summary(machine: &SessionMachine, args: &Args, true_class: TrajectoryClass, elapsed_s: f64) {
     let s = machine.summary();
-    say!();
-    say!("summary");
-    say!(
+    println!();
+    println!("summary");
+    println!(
         "  session:        {} after {elapsed_s:.1} s of simulated time",
         machine.state()
     );
-    say!(
+    println!(
         "  height:         {} (true {:.3} m) → class {}",
         s.height_m.map_or("not measured".to_owned(), |h| format!(
             "{h:.3} ± {:.3} m",
@@ -962,45 +954,40 @@ fn summary(machine: &SessionMachine, args: &Args, true_class: TrajectoryClass, e
         s.class.as_deref().unwrap_or("none")
     );
     if let Some(d) = machine.decision() {
-        say!(
+        println!(
             "  decision:       {} (probability {:.2}{}); true class {true_class}",
             d.basis.name(),
             d.probability,
             messages::rula_cost_clause(d.expected_rula_cost)
         );
     }
-    say!(
+    println!(
         "  trajectory:     {}",
         s.lock_sha256.as_deref().unwrap_or("not locked")
     );
-    say!(
+    println!(
         "  frames:         {} fused, {} with the operator tracked",
-        s.frames_fused,
-        s.frames_tracked
+        s.frames_fused, s.frames_tracked
     );
-    say!(
+    println!(
         "  RULA:           {} warnings raised, worst action level {}",
-        s.warnings_raised,
-        s.max_action_level
+        s.warnings_raised, s.max_action_level
     );
-    say!(
+    println!(
         "  faults:         {} camera degradation(s), {} hold(s), {} change request(s) refused",
-        s.camera_degradations,
-        s.holds,
-        s.changes_refused
+        s.camera_degradations, s.holds, s.changes_refused
     );
     if !s.cameras_out_of_calibration.is_empty() {
-        say!(
+        println!(
             "  recalibrate:    {} (out of calibration, left out of fusion)",
             s.cameras_out_of_calibration.join(", ")
         );
     }
-    say!(
+    println!(
         "  robot commands: {} ({} part(s) taken at the handover point)",
-        s.robot_commands,
-        s.parts_taken
+        s.robot_commands, s.parts_taken
     );
-    say!("  ended:          {}", s.end_reason);
+    println!("  ended:          {}", s.end_reason);
 }
 
 fn report(events: &[SessionEvent], now: i64, start: i64) {
@@ -1013,6 +1000,6 @@ fn report(events: &[SessionEvent], now: i64, start: i64) {
                 continue;
             }
         }
-        say!("  t={:5.1} s  {}", secs(now, start), messages::describe(e));
+        println!("  t={:5.1} s  {}", secs(now, start), messages::describe(e));
     }
 }

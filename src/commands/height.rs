@@ -220,15 +220,16 @@ fn print_estimate(e: &HeightEstimate) {
         e.height_m, e.uncertainty_m, e.frames_used
     );
     let o = &e.ear_offset;
-    match o.calibrated_sessions {
-        Some(n) => println!(
+    if let Some(n) = o.calibrated_sessions {
+        println!(
             "  ear landmark offset {:+.4} ± {:.4} m, calibrated on {n} sessions",
             o.offset_m, o.sigma_m
-        ),
-        None => println!(
+        );
+    } else {
+        println!(
             "  ear landmark offset uncalibrated: {:+.4} ± {:.4} m assumed (`ergocell height calibrate` measures it)",
             o.offset_m, o.sigma_m
-        ),
+        );
     }
     for x in &e.estimators {
         println!(

@@ -185,7 +185,7 @@ impl Partial {
             }
             let _ = std::fs::remove_file(&self.temp);
         }
-        Ok(())
+        sync_parent(&self.out)
     }
 
     /// Removes the temporary file; the output stays as it was.
@@ -202,12 +202,30 @@ impl Drop for Partial {
     }
 }
 
-/// Writes `bytes` to the output file (see [`create`]).
+/// Writes `bytes` to the output file atomically ([`Partial`]: a temporary file beside it, synced,
+/// then moved onto it, and the folder synced): a full disk, a kill or a power cut leaves the previous
+/// file as it was, never a cut one.
 pub fn write(flag: &str, out: &Path, force: bool, bytes: &[u8]) -> anyhow::Result<()> {
-    let mut file = create(flag, out, force)?;
-    file.write_all(bytes)
-        .and_then(|()| file.flush())
-        .with_context(|| format!("cannot write {}", out.display()))
+    let mut partial = Partial::create(flag, out, force)?;
+    partial.write(bytes)?;
+    partial.finish()
+}
+
+/// Replaces the project file `path` (a lock, an approvals file) with `bytes` atomically, as
+/// [`write`] does with `--force`: the previous file stays whole until the new one is complete.
+pub fn replace(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
+    write("", path, true, bytes)
+}
+
+/// Syncs the folder of `path`, so that a rename into it survives a power cut.
+fn sync_parent(path: &Path) -> anyhow::Result<()> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    File::open(dir)
+        .and_then(|d| d.sync_all())
+        .with_context(|| format!("cannot sync the folder {}", dir.display()))
 }
 
 /// The first free name of `default_name` in its folder: itself, then `<stem>-2.<ext>`, `-3`, … (the

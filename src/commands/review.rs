@@ -28,16 +28,6 @@ use tokio::net::TcpListener;
 
 use super::{output, signals, UsageError};
 
-/// `println!` that ignores a closed stdout: `ergocell review x.mcap | head -1` (or a test that reads
-/// only the URL line) must not bring the server down.
-macro_rules! say {
-    ($($t:tt)*) => {{
-        let mut out = std::io::stdout();
-        let _ = writeln!(out, $($t)*);
-        let _ = out.flush();
-    }};
-}
-
 /// The recordings to review (both commands).
 #[derive(Debug, clap::Args)]
 pub struct Input {
@@ -263,7 +253,7 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
     output::write("--out", &args.out, args.force, html.as_bytes())?;
     if let (Some(path), Some(bytes)) = (&args.csv, frames_csv) {
         output::write("--csv", path, args.force, &bytes)?;
-        say!(
+        println!(
             "frames CSV: {} ({} rows)",
             path.display(),
             first.frames.t.len()
@@ -271,10 +261,10 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
     }
     if let (Some(path), Some(bytes)) = (&args.summary_csv, summary_csv) {
         output::write("--summary-csv", path, args.force, &bytes)?;
-        say!("summary CSV: {}", path.display());
+        println!("summary CSV: {}", path.display());
     }
-    say!("{}", summary(&data));
-    say!(
+    println!("{}", summary(&data));
+    println!(
         "report: {} ({:.1} MB, self-contained: opens offline in any browser)",
         args.out.display(),
         html.len() as f64 / 1e6
@@ -310,17 +300,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         });
         let served = Arc::new(Served::new(page::served_page(&data), json, allowed_hosts));
         let app = review_server::router(served);
-        say!("{}", summary(&data));
+        println!("{}", summary(&data));
         let shown = if addr.ip().is_unspecified() {
             SocketAddr::new(IpAddr::V4(Ipv4Addr::LOCALHOST), addr.port())
         } else {
             addr
         };
-        say!("review: http://{shown}/");
+        println!("review: http://{shown}/");
         if !loopback {
-            say!("  serving on {addr} to the network, as asked (--bind)");
+            println!("  serving on {addr} to the network, as asked (--bind)");
         }
-        say!("  Ctrl-C (or SIGTERM) stops the server");
+        println!("  Ctrl-C (or SIGTERM) stops the server");
         let limits = Limits {
             header_timeout: Duration::from_millis(args.header_timeout_ms),
             stall_timeout: Duration::from_millis(args.stall_timeout_ms),
@@ -328,7 +318,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             shutdown_grace: SHUTDOWN_GRACE,
         };
         let signal = review_server::serve(listener, app, limits, stop).await;
-        say!("review: stopped by {}", signal.name());
+        println!("review: stopped by {}", signal.name());
         anyhow::Ok(())
     })
 }

@@ -556,11 +556,13 @@ fn list(classes: &[TrajectoryClass]) -> String {
         .join(", ")
 }
 
+/// Writes a lock or an approvals file atomically (`output::replace`): a full disk or a kill leaves
+/// the previous file whole, never cut mid-signature.
 fn write(path: &Path, text: &str) -> anyhow::Result<()> {
     if let Some(dir) = path.parent() {
         fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
-    fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+    super::output::replace(path, text.as_bytes())
 }
 
 /// Writes `text` to a file that must not exist yet (never overwrites: the user's data is kept).
