@@ -15,7 +15,9 @@
 //!   way for that long is closed, whatever it is doing (a client that stopped reading its response).
 //! - **at most [`MAX_CONNECTIONS`] connections** at a time. The next one is not refused: the open
 //!   connection that has gone longest without a request under way is closed to make room. Only when
-//!   all are answering requests does the new one wait (in the kernel's accept queue).
+//!   all are answering requests does the new one wait (in the kernel's accept queue). An event stream
+//!   (the operator display's `GET /events`) is resumable — the page reconnects by itself — and counts
+//!   as no request under way once its headers are out: open pages cannot keep the next one out.
 //!
 //! When `stop` resolves, [`serve`] stops accepting, closes the connections with no request under way
 //! (a half-sent request is not waited for), and gives responses under way up to
@@ -219,7 +221,8 @@ impl Drop for Busy {
 /// A response body that keeps its request counted as under way until hyper is done with it.
 struct Tracked {
     body: axum::body::Body,
-    _busy: Busy,
+    /// `None` for an event stream (never "under way": see [`serve_connection`]).
+    _busy: Option<Busy>,
 }
 
 impl axum::body::HttpBody for Tracked {
@@ -430,6 +433,15 @@ async fn serve_connection<S>(
         let response = routed.call(request);
         async move {
             let response = response.await?;
+            // An event stream (server-sent events: the operator display's pages) is under way for as
+            // long as the page is open, and resumable: EventSource reconnects by itself. It counts as
+            // no request under way once its headers are out, so that many open (or idle) pages cannot
+            // keep a new one out: the longest-open one is closed to make room.
+            let streaming = response
+                .headers()
+                .get(header::CONTENT_TYPE)
+                .is_some_and(|v| v.as_bytes().starts_with(b"text/event-stream"));
+            let busy = (!streaming).then_some(busy);
             Ok::<_, Infallible>(response.map(|body| Tracked { body, _busy: busy }))
         }
     });
