@@ -116,19 +116,27 @@ pub struct ImportStats {
     /// (frame, camera) slots with no detection file at all (e.g. a deleted OpenPose JSON): that
     /// camera is missing from that frame only.
     pub missing_views: usize,
+    /// Keypoints given more than once for one camera and frame (caliscope rows repeated for a
+    /// `sync_index`): left out, since which one is the operator's cannot be told.
+    pub duplicate_keypoints: usize,
 }
 
 impl ImportStats {
     /// One line for the user when anything was left out, `None` when the import was clean.
     pub fn warning(&self) -> Option<String> {
-        if self.invalid_keypoints == 0 && self.skipped_records == 0 && self.missing_views == 0 {
+        if self.invalid_keypoints == 0
+            && self.skipped_records == 0
+            && self.missing_views == 0
+            && self.duplicate_keypoints == 0
+        {
             return None;
         }
         Some(format!(
             "{} invalid keypoints (NaN/inf pixel or confidence outside 0..1), {} unusable records \
-             (malformed or non-UTF-8 files, unparsable rows) and {} missing views (no file for that \
-             camera and frame) were left out",
-            self.invalid_keypoints, self.skipped_records, self.missing_views
+             (malformed or non-UTF-8 files, unparsable rows), {} missing views (no file for that \
+             camera and frame) and {} keypoints given more than once for one camera and frame (which \
+             one is the operator's cannot be told) were left out",
+            self.invalid_keypoints, self.skipped_records, self.missing_views, self.duplicate_keypoints
         ))
     }
 }

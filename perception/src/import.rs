@@ -494,8 +494,9 @@ pub fn parse_caliscope_xy(
 /// file). A missing required column ([`CALISCOPE_REQUIRED_COLUMNS`]) is an error naming it; after
 /// that nothing is fatal: a row that cannot be used — a non-numeric or non-UTF-8 cell, a wrong number
 /// of fields, an unknown port or point id, a non-finite time — is skipped and counted in
-/// `stats.skipped_records`; an empty or non-finite pixel is an invalid keypoint. Rows are independent,
-/// so a skipped row never shifts another. The frame's stamp is the earliest camera time of that sync
+/// `stats.skipped_records`; an empty or non-finite pixel is an invalid keypoint; a keypoint given
+/// twice for one camera and sync index is left out (`stats.duplicate_keypoints`: which row is the
+/// operator's cannot be told). Rows are independent, so a skipped row never shifts another. The frame's stamp is the earliest camera time of that sync
 /// index.
 pub fn parse_caliscope_xy_bytes(
     bytes: &[u8],
@@ -504,7 +505,7 @@ pub fn parse_caliscope_xy_bytes(
     stats: &mut ImportStats,
 ) -> Result<Vec<Frame2>> {
     let mut rows = CaliscopeRows::new(bytes, source_name)?;
-    let mut frames: BTreeMap<i64, BTreeMap<CameraIndex, View2>> = BTreeMap::new();
+    let mut frames: BTreeMap<i64, BTreeMap<CameraIndex, Assembling>> = BTreeMap::new();
     while let Some(row) = rows.next_row(rig, stats) {
         add_row(frames.entry(row.sync_index).or_default(), &row, stats);
     }
@@ -663,13 +664,36 @@ impl<R: std::io::Read> CaliscopeRows<R> {
 }
 
 /// Adds one row to its frame's views.
-fn add_row(views: &mut BTreeMap<CameraIndex, View2>, row: &CaliscopeRow, stats: &mut ImportStats) {
-    let view = views
-        .entry(row.camera)
-        .or_insert_with(|| View2::empty(row.camera, row.stamp_nanos));
+/// One camera's view of a sync index being assembled, with which landmarks rows have given.
+struct Assembling {
+    view: View2,
+    /// Bit `i`: a row gave landmark `i` (seen or not).
+    given: u64,
+}
+
+fn add_row(
+    views: &mut BTreeMap<CameraIndex, Assembling>,
+    row: &CaliscopeRow,
+    stats: &mut ImportStats,
+) {
+    let a = views.entry(row.camera).or_insert_with(|| Assembling {
+        view: View2::empty(row.camera, row.stamp_nanos),
+        given: 0,
+    });
+    let bit = 1_u64 << row.landmark.index();
+    if a.given & bit != 0 {
+        // The same keypoint twice for one camera and sync index (two detections, or rows merged
+        // from two files): which is the operator's cannot be told, so neither is used.
+        if a.view.get(row.landmark).is_some() {
+            a.view.set(row.landmark, None);
+        }
+        stats.duplicate_keypoints += 1;
+        return;
+    }
+    a.given |= bit;
     match row.pixel {
         Some((u, v)) => match Keypoint2::new(u, v, 1.0) {
-            Ok(k) => view.set(row.landmark, Some(k)),
+            Ok(k) => a.view.set(row.landmark, Some(k)),
             Err(_) => stats.invalid_keypoints += 1,
         },
         None => stats.invalid_keypoints += 1,
@@ -677,8 +701,8 @@ fn add_row(views: &mut BTreeMap<CameraIndex, View2>, row: &CaliscopeRow, stats: 
 }
 
 /// A frame from its views; its stamp is the earliest camera time.
-fn frame_of(views: BTreeMap<CameraIndex, View2>) -> Frame2 {
-    let views: Vec<View2> = views.into_values().collect();
+fn frame_of(views: BTreeMap<CameraIndex, Assembling>) -> Frame2 {
+    let views: Vec<View2> = views.into_values().map(|a| a.view).collect();
     let stamp_nanos = views.iter().map(|v| v.stamp_nanos).min().unwrap_or(0);
     Frame2 { stamp_nanos, views }
 }
@@ -749,7 +773,7 @@ pub struct CaliscopeStream<'r, R: std::io::Read> {
     rows: CaliscopeRows<R>,
     rig: &'r CameraRig,
     stats: ImportStats,
-    current: Option<(i64, BTreeMap<CameraIndex, View2>)>,
+    current: Option<(i64, BTreeMap<CameraIndex, Assembling>)>,
 }
 
 impl<'r, R: std::io::Read> CaliscopeStream<'r, R> {

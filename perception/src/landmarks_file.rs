@@ -165,19 +165,43 @@ impl LandmarksEncoder {
     }
 }
 
-/// Reads a recording of skeletons.
+/// The farthest a landmark may lie from the world's origin, metres: a camera rig watches a person
+/// within a few metres of it. Beyond, the file is not in metres or not sound (landmarks × 1e300 once
+/// scored a plausible RULA and a stature of "inf m").
+pub const MAX_DISTANCE_M: f64 = 1.0e4;
+
+/// Reads a recording of skeletons. A landmark farther than [`MAX_DISTANCE_M`] from the origin is an
+/// error naming its frame.
 pub fn read_landmarks(
     text: &str,
     format: LandmarksFormat,
     source_name: &str,
 ) -> Result<Vec<Skeleton3>> {
-    match format {
+    let frames = match format {
         LandmarksFormat::Json => {
-            serde_json::from_str(text).map_err(|e| parse_err(source_name, "(file)", e))
+            serde_json::from_str(text).map_err(|e| parse_err(source_name, "(file)", e))?
         }
-        LandmarksFormat::Csv => read_csv(text, source_name),
-        LandmarksFormat::Trc => read_trc(text, source_name),
+        LandmarksFormat::Csv => read_csv(text, source_name)?,
+        LandmarksFormat::Trc => read_trc(text, source_name)?,
+    };
+    for (i, s) in frames.iter().enumerate() {
+        for lm in Landmark::ALL {
+            if let Some(p) = s.position(lm) {
+                let d = p.coords.amax();
+                if d > MAX_DISTANCE_M {
+                    return Err(parse_err(
+                        source_name,
+                        format!("frame {i}, {}", lm.name()),
+                        format!(
+                            "at ({}, {}, {}): {d:e} m from the origin, not a person a camera rig watches (a file not in metres?)",
+                            p.x, p.y, p.z
+                        ),
+                    ));
+                }
+            }
+        }
     }
+    Ok(frames)
 }
 
 #[derive(Debug, Serialize, Deserialize)]
@@ -373,5 +397,33 @@ mod tests {
             .to_string();
         assert!(err.contains("not a TRC"), "{err}");
         assert!(LandmarksFormat::from_path(std::path::Path::new("a.txt")).is_err());
+    }
+
+    /// A landmark beyond 10 km of the origin (× 1e300, or a file not in metres) is refused naming
+    /// the frame and landmark, in every format.
+    #[test]
+    fn landmarks_far_beyond_a_camera_rig_are_refused() {
+        let mut rec = recording();
+        let far = LandmarkEstimate {
+            position_m: Point3::new(0.1e300, 0.0, 1.0),
+            confidence: 0.75,
+            reprojection_error_px: None,
+            views: 2,
+        };
+        rec[1].set(Landmark::LeftWrist, Some(far)).unwrap();
+        for format in [
+            LandmarksFormat::Json,
+            LandmarksFormat::Csv,
+            LandmarksFormat::Trc,
+        ] {
+            let text = write_landmarks(&rec, format, "rec.trc", 10.0);
+            let err = read_landmarks(&text, format, "rec")
+                .unwrap_err()
+                .to_string();
+            assert!(
+                err.contains("frame 1, left_wrist") && err.contains("from the origin"),
+                "{format:?}: {err}"
+            );
+        }
     }
 }

@@ -462,3 +462,28 @@ fn a_one_camera_rig_or_coincident_cameras_are_errors_not_all_null_output() {
     }
     FusionEngine::new(rig(), FusionMethod::Default).unwrap();
 }
+
+/// A keypoint given twice for one camera and sync index (a row repeated 300 px away, as rows merged
+/// from two detections would be) is left out and counted, never merged silently.
+#[test]
+fn a_keypoint_given_twice_for_one_frame_is_left_out_and_named() {
+    let text = read("xy_pose33.csv");
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let rows: Vec<&str> = lines.take(40).collect();
+    let mut fields: Vec<String> = rows[0].split(',').map(str::to_owned).collect();
+    let x: f64 = fields[5].parse().unwrap();
+    fields[5] = format!("{}", x + 300.0);
+    let (port, point): (usize, usize) = (fields[1].parse().unwrap(), fields[4].parse().unwrap());
+    let clean = format!("{header}\n{}\n", rows.join("\n"));
+    let dirty = format!("{header}\n{}\n{}\n", rows.join("\n"), fields.join(","));
+    let (a, sa) = caliscope(&clean);
+    let (b, sb) = caliscope(&dirty);
+    assert_eq!((sa.duplicate_keypoints, sb.duplicate_keypoints), (0, 1));
+    assert!(view(&a[0], port).unwrap().keypoints()[point].is_some());
+    assert!(
+        view(&b[0], port).unwrap().keypoints()[point].is_none(),
+        "neither of the two is used"
+    );
+    assert!(sb.warning().unwrap().contains("more than once"));
+}

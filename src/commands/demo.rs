@@ -646,7 +646,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let robot = DummyRobot::new(joints.clone(), home).keeping_last(1);
     let machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
         .map_err(|e| UsageError(e.to_string()))?;
-    let rec = McapRecorder::from_file(output::create("--out", &out, args.force)?)?;
+    // The default name is taken when the file is created: a demo started meanwhile in this folder
+    // may have taken the one chosen at the start, and then this one moves on to the next.
+    let (file, out, moved) = if args.out.is_none() && !args.force {
+        let (file, path) = output::create_next_free(Path::new(DEFAULT_OUT))?;
+        let moved = path != Path::new(DEFAULT_OUT);
+        (file, path, moved)
+    } else {
+        (output::create("--out", &out, args.force)?, out, moved)
+    };
+    let rec = McapRecorder::from_file(file)?;
     if moved {
         println!(
             "  {DEFAULT_OUT} exists (kept): recording into {} (--out names the file, --force overwrites)",

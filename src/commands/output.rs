@@ -228,6 +228,44 @@ fn sync_parent(path: &Path) -> anyhow::Result<()> {
         .with_context(|| format!("cannot sync the folder {}", dir.display()))
 }
 
+/// Creates the first free name of `default_name` in its folder — itself, then `<stem>-2.<ext>`, … —
+/// with `create_new`, so that two commands started together never take the same name (one that
+/// appears between the look and the creation is passed over): the file and its path.
+pub fn create_next_free(default_name: &Path) -> anyhow::Result<(File, std::path::PathBuf)> {
+    let stem = default_name
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let ext = default_name
+        .extension()
+        .map(|e| format!(".{}", e.to_string_lossy()))
+        .unwrap_or_default();
+    for n in 1..10_000 {
+        let candidate = if n == 1 {
+            default_name.to_owned()
+        } else {
+            default_name.with_file_name(format!("{stem}-{n}{ext}"))
+        };
+        match std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&candidate)
+        {
+            Ok(file) => return Ok((file, candidate)),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {}
+            Err(e) => {
+                return Err(
+                    anyhow::Error::new(e).context(format!("cannot create {}", candidate.display()))
+                )
+            }
+        }
+    }
+    Err(UsageError(format!(
+        "{} and {stem}-2{ext} … {stem}-9999{ext} all exist: name the file with --out",
+        default_name.display()
+    ))
+    .into())
+}
+
 /// The first free name of `default_name` in its folder: itself, then `<stem>-2.<ext>`, `-3`, … (the
 /// demo's default recording, so running the README's first command twice keeps the first session).
 pub fn next_free(default_name: &Path) -> anyhow::Result<std::path::PathBuf> {
@@ -252,4 +290,27 @@ pub fn next_free(default_name: &Path) -> anyhow::Result<std::path::PathBuf> {
         default_name.display()
     ))
     .into())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two commands that both looked and found the default free still get two files: the second
+    /// creation moves on to the next name.
+    #[test]
+    fn the_next_free_name_is_taken_atomically() {
+        let dir = std::env::temp_dir().join(format!("ergocell-next-free-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let default = dir.join("ergocell-demo.mcap");
+        assert_eq!(next_free(&default).unwrap(), default);
+        let (_a, first) = create_next_free(&default).unwrap();
+        let (_b, second) = create_next_free(&default).unwrap();
+        let (_c, third) = create_next_free(&default).unwrap();
+        assert_eq!(first, default);
+        assert_eq!(second, dir.join("ergocell-demo-2.mcap"));
+        assert_eq!(third, dir.join("ergocell-demo-3.mcap"));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
