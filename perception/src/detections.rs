@@ -119,6 +119,10 @@ pub struct ImportStats {
     /// Keypoints given more than once for one camera and frame (caliscope rows repeated for a
     /// `sync_index`): left out, since which one is the operator's cannot be told.
     pub duplicate_keypoints: usize,
+    /// Rows for a camera the rig does not have (a caliscope `port` N with no camera `cam_N`).
+    pub unknown_camera_records: usize,
+    /// The first such port, to name it.
+    pub first_unknown_port: Option<i64>,
 }
 
 impl ImportStats {
@@ -128,11 +132,24 @@ impl ImportStats {
             && self.skipped_records == 0
             && self.missing_views == 0
             && self.duplicate_keypoints == 0
+            && self.unknown_camera_records == 0
         {
             return None;
         }
+        let unknown = match self.first_unknown_port {
+            Some(port) if self.unknown_camera_records > 0 => format!(
+                "{} rows for cameras the calibration does not have (the first: caliscope port \
+                 {port}, which would be camera cam_{port}) and ",
+                self.unknown_camera_records
+            ),
+            _ if self.unknown_camera_records > 0 => format!(
+                "{} rows for cameras the calibration does not have and ",
+                self.unknown_camera_records
+            ),
+            _ => String::new(),
+        };
         Some(format!(
-            "{} invalid keypoints (NaN/inf pixel or confidence outside 0..1), {} unusable records \
+            "{unknown}{} invalid keypoints (NaN/inf pixel or confidence outside 0..1), {} unusable records \
              (malformed or non-UTF-8 files, unparsable rows), {} missing views (no file for that \
              camera and frame) and {} keypoints given more than once for one camera and frame (which \
              one is the operator's cannot be told) were left out",

@@ -48,6 +48,25 @@ pub enum PerceptionError {
         distance_m: f64,
         limit_m: f64,
     },
+    /// Two camera centres are farther apart than one cell's cameras can be.
+    #[error(
+        "cameras `{first}` and `{second}` are {distance_m:.1} m apart (more than {limit_m} m): one \
+         cell's cameras are metres apart, so the calibration is not in metres (millimetres?); \
+         ergocell reads metres"
+    )]
+    RigTooLarge {
+        first: CameraId,
+        second: CameraId,
+        distance_m: f64,
+        limit_m: f64,
+    },
+    /// The point the cameras' optical axes converge on is behind every camera.
+    #[error(
+        "every camera faces away from where the cameras' optical axes meet ({x:.2}, {y:.2}, {z:.2}) m: \
+         no camera would see the operator. Are the extrinsics inverted (each camera's pose in the \
+         world, camera→world, given where world→camera is expected)?"
+    )]
+    CamerasFaceAway { x: f64, y: f64, z: f64 },
     /// A point is behind the camera (or on its centre plane): it has no image.
     #[error("point is behind camera `{camera}` (depth {depth_m} m)")]
     BehindCamera { camera: CameraId, depth_m: f64 },

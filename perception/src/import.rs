@@ -637,7 +637,8 @@ impl<R: std::io::Read> CaliscopeRows<R> {
                 continue;
             };
             let Some(camera) = self.camera_of_port(rig, port) else {
-                stats.skipped_records += 1;
+                stats.unknown_camera_records += 1;
+                stats.first_unknown_port.get_or_insert(port);
                 continue;
             };
             let Some(landmark) = usize::try_from(point_id)

@@ -4,7 +4,7 @@
 //! and fusion combines them. Our default fusion uses every camera directly (N-view), but the pairs are
 //! kept because the paper's baseline and the per-pair diagnostics need them.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Point3, Vector3};
 
 use crate::camera::{Camera, CameraId};
 use crate::error::{PerceptionError, Result};
@@ -23,6 +23,30 @@ pub struct StereoPair {
 
 /// Two camera centres closer than this (metres) are the same centre: [`CameraRig::new`] refuses them.
 pub const MIN_CAMERA_SEPARATION_M: f64 = 1e-3;
+
+/// Two camera centres farther apart than this (metres) cannot be one cell's cameras:
+/// [`CameraRig::new`] refuses them (a calibration in millimetres read as metres).
+pub const MAX_CAMERA_SPREAD_M: f64 = 100.0;
+
+/// Where the cameras' optical axes come closest together (least squares), when their directions
+/// pin a point down (not all nearly parallel).
+fn convergence_point(cameras: &[Camera]) -> Option<Point3<f64>> {
+    let mut a = Matrix3::zeros();
+    let mut b = Vector3::zeros();
+    for c in cameras {
+        let forward = c.T_camera_world.rotation.inverse() * Vector3::z();
+        let m = Matrix3::identity() - forward * forward.transpose();
+        a += m;
+        b += m * c.position_world().coords;
+    }
+    let eig = a.symmetric_eigen().eigenvalues;
+    let (lo, hi) = (eig.min(), eig.max());
+    // NaN (never for validated cameras) also lands here.
+    if lo.partial_cmp(&(0.05 * hi)) != Some(std::cmp::Ordering::Greater) {
+        return None;
+    }
+    a.try_inverse().map(|inv| Point3::from(inv * b))
+}
 
 /// A validated set of cameras: unique ids, valid parameters, distinct centres (at least
 /// [`MIN_CAMERA_SEPARATION_M`] apart), pairs that reference real cameras.
@@ -65,6 +89,30 @@ impl CameraRig {
                         limit_m: MIN_CAMERA_SEPARATION_M,
                     });
                 }
+            }
+        }
+        // A rig in millimetres read as metres: its cameras are kilometres apart.
+        for (i, c) in centres.iter().enumerate() {
+            for (j, other) in centres[..i].iter().enumerate() {
+                let distance_m = (c - other).norm();
+                if distance_m > MAX_CAMERA_SPREAD_M || distance_m.is_nan() {
+                    return Err(PerceptionError::RigTooLarge {
+                        first: cameras[j].id.clone(),
+                        second: cameras[i].id.clone(),
+                        distance_m,
+                        limit_m: MAX_CAMERA_SPREAD_M,
+                    });
+                }
+            }
+        }
+        // Cameras that all look away from where their axes meet see no one (inverted extrinsics).
+        if let Some(p) = convergence_point(&cameras) {
+            if cameras.iter().all(|c| (c.T_camera_world * p).z <= 0.0) {
+                return Err(PerceptionError::CamerasFaceAway {
+                    x: p.x,
+                    y: p.y,
+                    z: p.z,
+                });
             }
         }
         let mut rig = Self {
@@ -224,6 +272,60 @@ mod tests {
             CameraRig::new(vec![], &[], None),
             Err(PerceptionError::EmptyRig)
         ));
+    }
+
+    /// Four cameras on a 3 m ring, 1.5 m up, looking at the operator's chest (the cell's layout), or
+    /// each turned round to look straight away from it.
+    fn ring(turned_away: bool) -> Vec<Camera> {
+        (0..4)
+            .map(|i| {
+                let a = f64::from(i) * std::f64::consts::FRAC_PI_2;
+                let eye = Point3::new(3.0 * a.cos(), 3.0 * a.sin(), 1.5);
+                let chest = Point3::new(0.0, 0.0, 1.2);
+                let target = if turned_away {
+                    eye + (eye - chest)
+                } else {
+                    chest
+                };
+                Camera::look_at(
+                    CameraId::new(format!("cam{i}")).unwrap(),
+                    eye,
+                    target,
+                    Vector3::z(),
+                    cam("x").intrinsics,
+                    Distortion::default(),
+                )
+                .unwrap()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_rig_in_millimetres_or_facing_away_is_refused_naming_why() {
+        assert!(CameraRig::new(ring(false), &[], None).is_ok());
+        // The same ring in millimetres: 4.2 km between neighbours.
+        let mm: Vec<Camera> = ring(false)
+            .into_iter()
+            .map(|c| {
+                let t = c.T_camera_world.translation.vector * 1000.0;
+                Camera::new(
+                    c.id.clone(),
+                    c.intrinsics,
+                    Distortion::default(),
+                    c.T_camera_world.rotation.to_rotation_matrix(),
+                    t,
+                )
+                .unwrap()
+            })
+            .collect();
+        let e = CameraRig::new(mm, &[], None).unwrap_err();
+        assert!(matches!(e, PerceptionError::RigTooLarge { .. }), "{e}");
+        assert!(e.to_string().contains("millimetres"), "{e}");
+        // Every camera turned away.
+        let e = CameraRig::new(ring(true), &[], None).unwrap_err();
+        assert!(matches!(e, PerceptionError::CamerasFaceAway { .. }), "{e}");
+        // Two cameras side by side looking the same way (a stereo bar) pin no point down: accepted.
+        assert!(CameraRig::new(vec![cam("a"), cam("b")], &[], None).is_ok());
     }
 
     #[test]

@@ -316,7 +316,12 @@ fn caliscope_cells_padded_with_blanks_read_as_the_bare_ones_and_unknown_ports_ar
     assert!(!bare.is_empty());
     assert_eq!(frames, bare);
     assert_eq!(stats.invalid_keypoints, bare_stats.invalid_keypoints);
-    assert_eq!(stats.skipped_records, bare_stats.skipped_records + 2);
+    assert_eq!(stats.skipped_records, bare_stats.skipped_records);
+    assert_eq!(
+        stats.unknown_camera_records,
+        bare_stats.unknown_camera_records + 2
+    );
+    assert_eq!(stats.first_unknown_port, Some(9));
 }
 
 #[test]
@@ -486,4 +491,33 @@ fn a_keypoint_given_twice_for_one_frame_is_left_out_and_named() {
         "neither of the two is used"
     );
     assert!(sb.warning().unwrap().contains("more than once"));
+}
+
+/// Rows for a camera the calibration does not have (caliscope `port` 9, no `cam_9`) are counted and
+/// named, not read as "0 frames" with a guess about the file changing.
+#[test]
+fn rows_for_an_unknown_port_are_named() {
+    let text = read("xy_pose33.csv");
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let rows: Vec<String> = lines
+        .take(40)
+        .map(|row| {
+            let mut fields: Vec<&str> = row.split(',').collect();
+            fields[1] = "9";
+            fields.join(",")
+        })
+        .collect();
+    let (_, stats) = caliscope(&format!("{header}\n{}\n", rows.join("\n")));
+    assert_eq!(stats.unknown_camera_records, 40);
+    assert_eq!(stats.first_unknown_port, Some(9));
+    let w = stats.warning().unwrap();
+    assert!(
+        w.contains("40 rows for cameras the calibration does not have"),
+        "{w}"
+    );
+    assert!(
+        w.contains("caliscope port 9, which would be camera cam_9"),
+        "{w}"
+    );
 }

@@ -367,8 +367,20 @@ impl RobotModel {
 ///
 /// Velocity and effort limits must be finite and ≥ 0 here (0 is urdf-rs's default for joints without
 /// `<limit>`); the arm's own joints are held to the stricter rules of [`RobotModel::from_urdf_str`].
+/// The most links (and joints) a URDF may have.
+pub const MAX_URDF_LINKS: usize = 1000;
+
 fn check_urdf_for_k(robot: &urdf_rs::Robot) -> Result<(), RobotError> {
     let unsupported = |reason: String| RobotError::UnsupportedUrdf { reason };
+    // `k` builds its tree recursively: a chain thousands of links deep overflows the stack. A robot
+    // cell's URDF has tens of links.
+    if robot.links.len() > MAX_URDF_LINKS || robot.joints.len() > MAX_URDF_LINKS {
+        return Err(unsupported(format!(
+            "{} links and {} joints: at most {MAX_URDF_LINKS} of each",
+            robot.links.len(),
+            robot.joints.len()
+        )));
+    }
     for (i, link) in robot.links.iter().enumerate() {
         if robot.links[..i].iter().any(|l| l.name == link.name) {
             return Err(unsupported(format!(

@@ -166,3 +166,33 @@ fn panic_in_k_guards_leave_the_shipped_urdf_and_equal_limits_alone() {
             .unwrap_err();
     assert_names(&err, "joint_1", "lower 0.5 / upper 0.5");
 }
+
+/// A chain of links `depth` deep, each the child of the one before.
+fn chain_urdf(depth: usize) -> String {
+    use std::fmt::Write as _;
+    let mut urdf = String::from("<robot name=\"deep\">\n<link name=\"l0\"/>\n");
+    for i in 1..=depth {
+        writeln!(
+            urdf,
+            "<link name=\"l{i}\"/>\n<joint name=\"j{i}\" type=\"fixed\"><parent link=\"l{}\"/><child link=\"l{i}\"/></joint>",
+            i - 1
+        )
+        .unwrap();
+    }
+    urdf.push_str("</robot>\n");
+    urdf
+}
+
+/// A URDF whose chain is 50,000 links deep used to overflow the stack in `k`'s recursive tree
+/// building (SIGABRT): now it is refused with the count, and one at the limit still loads.
+#[test]
+fn a_urdf_chain_fifty_thousand_links_deep_is_refused_not_a_stack_overflow() {
+    let err = RobotModel::from_urdf_str(&chain_urdf(50_000), "l0", "l50000").unwrap_err();
+    assert!(matches!(err, RobotError::UnsupportedUrdf { .. }), "{err}");
+    assert!(err.to_string().contains("at most 1000"), "{err}");
+    // At the limit it parses (and fails only for want of a moving joint, not by crashing).
+    let at_limit = RobotModel::from_urdf_str(&chain_urdf(999), "l0", "l999");
+    if let Err(e) = at_limit {
+        assert!(!e.to_string().contains("at most 1000"), "{e}");
+    }
+}
