@@ -194,7 +194,8 @@ pub fn lock_toml(data: &[u8]) {
     }
 }
 
-/// An approvals file: parsed, and its hash chain checked.
+/// An approvals file: parsed, and its hash chain checked; the same bytes as the approvers' files,
+/// the site authority's key file and its signature.
 pub fn approvals_toml(data: &[u8]) {
     let Some(text) = text(data) else { return };
     if let Ok(file) = ApprovalsFile::from_toml_str(text) {
@@ -213,6 +214,25 @@ pub fn approvals_toml(data: &[u8]) {
     }
     // The same bytes as an allowed-signers file and a revocation list.
     let _ = ergocell_robot::TrustedSigners::parse(text, text);
+    // As the site authority's key file, and as its signature over approvers' files: no bytes but
+    // the authority's own signature make a list that trusts keys count.
+    let _ = ergocell_robot::authority::Authority::parse(text, text);
+    let site = ergocell_robot::signing::key_from_seed(&[90; 32], "site");
+    if let Ok(line) = ergocell_robot::signing::public_key_openssh(&site) {
+        if let Ok(authority) = ergocell_robot::authority::Authority::parse(&line, "") {
+            let allowed = format!(
+                "a@b namespaces=\"{}\" {line}\n",
+                ergocell_robot::signing::APPROVAL_NAMESPACE
+            );
+            assert!(ergocell_robot::authority::anchored_signers(
+                &allowed,
+                "",
+                Some(text),
+                Ok(&authority)
+            )
+            .is_err());
+        }
+    }
 }
 
 /// A session recording (MCAP), through the review's reader and `replay`'s camera reader.

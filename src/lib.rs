@@ -9,9 +9,11 @@
 
 pub mod display;
 pub mod fuzzing;
+pub mod input;
 pub mod review_server;
 pub mod session;
 pub mod shipped;
 pub mod sim_record;
+pub mod trust_anchor;
 
 pub use ergocell_ros_backend::{messages, recording, robot_markers};

@@ -9,8 +9,10 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Output, Stdio};
 use std::time::Duration;
 
-use ergocell::recording::{topics, McapRecorder};
-use ergocell_bridge::msg::{Header, OperatorPose, SessionState};
+use ergocell::recording::topics;
+use ergocell_bridge::msg::SessionState;
+
+mod common;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -67,34 +69,7 @@ fn assert_usage_error(o: &Output, needles: &[&str]) {
     }
 }
 
-/// A small but complete recording (one operator session) for `report`.
-fn recording(path: &Path) {
-    let mut rec = McapRecorder::create(path).unwrap();
-    let s = 1_000_000_000i64;
-    let state = |t: i64, name: &str| SessionState {
-        header: Header::new(t, "world"),
-        state: name.to_owned(),
-        height_m: 1.75,
-        height_class: "c2".to_owned(),
-        ..SessionState::default()
-    };
-    rec.write(topics::SESSION_STATE, 0, &state(0, "working"))
-        .unwrap();
-    for f in 0..20 {
-        let t = f * s / 10;
-        let pose = OperatorPose {
-            header: Header::new(t, "world"),
-            x: vec![0.0; 33],
-            y: vec![0.0; 33],
-            z: vec![1.0; 33],
-            ..OperatorPose::default()
-        };
-        rec.write(topics::OPERATOR_POSE, t, &pose).unwrap();
-    }
-    rec.write(topics::SESSION_STATE, 2 * s, &state(2 * s, "session_ended"))
-        .unwrap();
-    rec.finish().unwrap();
-}
+use common::small_recording as recording;
 
 /// Row "an existing recording is truncated": every file the user names is refused when it exists,
 /// before any work (here even before the inputs are read), and written with `--force`.
@@ -573,4 +548,77 @@ fn run_exits_without_rustdds_error_lines() {
     );
     let errors: Vec<&str> = stderr.lines().filter(|l| l.contains(" ERROR ")).collect();
     assert!(errors.is_empty(), "ERROR lines on exit: {errors:#?}");
+}
+
+/// Every file the cell reads is an input, named by a flag or not: `run --record` and `demo --out`
+/// onto a lock, an approvals file, the approvers' files, the URDF or a trajectory file are refused,
+/// `--force` or not, and the file is left as it was.
+#[test]
+fn an_output_onto_any_file_the_cell_reads_is_refused_even_with_force() {
+    let dir = Scratch::new("cell-inputs");
+    let root = root();
+    for sub in ["config", "trajectories"] {
+        let status = Command::new("cp")
+            .args(["-r"])
+            .arg(root.join(sub))
+            .arg(dir.path(sub))
+            .status()
+            .unwrap();
+        assert!(status.success());
+    }
+    std::fs::create_dir_all(dir.path("trajectories/approvals")).unwrap();
+    let approvals = dir.file("trajectories/approvals/c2.toml", "# approvals\n");
+    let targets = [
+        "trajectories/locks/c2.lock.toml",
+        "trajectories/c2.toml",
+        "trajectories/approvals/c2.toml",
+        "config/approvers/allowed_signers",
+        "config/approvers/revoked_keys",
+        "config/robots/iiwa14_r820.urdf",
+    ];
+    let before: Vec<Vec<u8>> = targets
+        .iter()
+        .map(|t| std::fs::read(dir.path(t)).unwrap())
+        .collect();
+    for target in targets {
+        let o = ergocell(
+            &dir.0,
+            &["run", "--record", target, "--force", "--max-secs", "1"],
+        );
+        assert_usage_error(
+            &o,
+            &["is also an input (a file the cell reads:", "--force or not"],
+        );
+        let o = ergocell(
+            &dir.0,
+            &[
+                "demo",
+                "--cell",
+                "config/cell.toml",
+                "--trajectories",
+                "trajectories",
+                "--out",
+                target,
+                "--force",
+            ],
+        );
+        assert_usage_error(
+            &o,
+            &["is also an input (a file the cell reads:", "--force or not"],
+        );
+    }
+    // The shipped cell (no --cell): its files in this folder are still the user's.
+    let o = ergocell(
+        &dir.0,
+        &["demo", "--out", "trajectories/c2.toml", "--force"],
+    );
+    assert_usage_error(&o, &["is also an input"]);
+    for (t, b) in targets.iter().zip(&before) {
+        assert_eq!(
+            &std::fs::read(dir.path(t)).unwrap(),
+            b,
+            "{t} left as it was"
+        );
+    }
+    assert_eq!(std::fs::read_to_string(approvals).unwrap(), "# approvals\n");
 }

@@ -8,74 +8,9 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for entry in std::fs::read_dir(from).unwrap() {
-        let path = entry.unwrap().path();
-        let dest = to.join(path.file_name().unwrap());
-        if path.is_dir() {
-            copy_dir(&path, &dest);
-        } else {
-            std::fs::copy(&path, &dest).unwrap();
-        }
-    }
-}
+mod common;
 
-/// A fresh cell: `config/` and the trajectory files (no locks, no approvals).
-fn fresh_cell(name: &str) -> PathBuf {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    copy_dir(&root.join("config"), &dir.join("config"));
-    std::fs::create_dir_all(dir.join("trajectories")).unwrap();
-    for class in ["c1", "c2", "c3"] {
-        std::fs::copy(
-            root.join(format!("trajectories/{class}.toml")),
-            dir.join(format!("trajectories/{class}.toml")),
-        )
-        .unwrap();
-    }
-    dir
-}
-
-const ALICE: &str = "alice@plant.example";
-const BOB: &str = "bob@plant.example";
-
-/// Writes an Ed25519 key made from `seed` as `<dir>/<name>` (OpenSSH private key, mode 0600, as
-/// ssh-keygen writes it) and returns its allowed-signers line for `principal`.
-fn key_file(dir: &Path, name: &str, seed: u8, principal: &str) -> String {
-    use ergocell_robot::signing;
-    let key = signing::key_from_seed(&[seed; 32], name);
-    let path = dir.join(name);
-    std::fs::write(&path, signing::private_key_openssh(&key).unwrap()).unwrap();
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600)).unwrap();
-    }
-    format!(
-        "{principal} namespaces=\"{}\" {}\n",
-        signing::APPROVAL_NAMESPACE,
-        signing::public_key_openssh(&key).unwrap()
-    )
-}
-
-/// A fresh cell whose config/approvers/allowed_signers trusts alice and bob; their keys (and
-/// mallory's, trusted by no one) in `<dir>/keys/`.
-fn fresh_cell_with_approvers(name: &str) -> PathBuf {
-    let dir = fresh_cell(name);
-    let keys = dir.join("keys");
-    std::fs::create_dir_all(&keys).unwrap();
-    let alice = key_file(&keys, "alice", 1, ALICE);
-    let bob = key_file(&keys, "bob", 2, BOB);
-    key_file(&keys, "mallory", 3, "mallory@elsewhere.example");
-    std::fs::write(
-        dir.join("config/approvers/allowed_signers"),
-        format!("# test approvers\n{alice}{bob}"),
-    )
-    .unwrap();
-    dir
-}
+use common::{fresh_cell, AnchoredCell, ALICE, BOB};
 
 /// `ssh-keygen`, when this machine has it; CI sets ERGOCELL_REQUIRE_SSH_KEYGEN=1 so it cannot be skipped.
 fn ssh_keygen() -> Option<&'static str> {
@@ -106,47 +41,50 @@ fn ergocell(dir: &Path, args: &[&str]) -> (i32, String, String) {
 
 #[test]
 fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
-    let dir = fresh_cell_with_approvers("trajectories_workflow");
+    let Some(cell) = AnchoredCell::new("trajectories_workflow") else {
+        return;
+    };
+    let dir = cell.dir.clone();
 
-    let (code, out, _) = ergocell(&dir, &["trajectories", "validate", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "validate", "--class", "c2"]);
     assert_eq!(code, 0, "{out}");
     assert!(
         out.contains("class c2 — ACCEPTED") && out.contains("status Solved"),
         "{out}"
     );
 
-    let (code, out, _) = ergocell(&dir, &["trajectories", "validate", "--json"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "validate", "--json"]);
     assert_eq!(code, 0);
     let json: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(json.as_array().unwrap().len(), 3);
     assert_eq!(json[1]["report"]["qp"]["status"], "Solved");
 
     // Verify before lock: fails, naming the missing lock.
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 1);
     assert!(out.contains("no lock file"), "{out}");
 
-    let (code, out, err) = ergocell(&dir, &["trajectories", "lock"]);
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock"]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(dir.join("trajectories/locks/c2.lock.toml").exists());
 
     // Locked but not approved: verify fails and says what is missing; --allow-unapproved passes.
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify"]);
     assert_eq!(code, 1);
     assert!(
         out.contains("no approval for lock sha256") && out.contains("approve --class c1"),
         "{out}"
     );
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--allow-unapproved"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--allow-unapproved"]);
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("NOT APPROVED"));
 
-    let (code, out, err) = approve(&dir, "c2", ALICE, "keys/alice");
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
     assert_eq!(code, 0, "{out}{err}");
     let approvals = std::fs::read_to_string(dir.join("trajectories/approvals/c2.toml")).unwrap();
     assert!(approvals.contains(&format!("approved_by = \"{ALICE}\"")));
     assert!(approvals.contains("-----BEGIN SSH SIGNATURE-----"));
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 0, "{out}");
     assert!(
         out.contains("c2: OK") && out.contains(ALICE) && out.contains("signature verified"),
@@ -163,7 +101,7 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
         bytes[at] + 1
     };
     std::fs::write(&path, &bytes).unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 1, "{out}");
     assert!(
         out.contains("trajectory file trajectories/c2.toml changed"),
@@ -171,7 +109,7 @@ fn validate_lock_approve_verify_and_a_one_byte_edit_fails_verify() {
     );
 
     // An edited trajectory cannot be approved either.
-    let (code, _, err) = approve(&dir, "c2", ALICE, "keys/alice");
+    let (code, _, err) = cell.approve("c2", ALICE, "keys/alice");
     assert_eq!(code, 1);
     assert!(err.contains("refusing to approve"), "{err}");
 }
@@ -183,19 +121,19 @@ fn a_hand_edited_and_rehashed_lock_is_neither_approved_nor_verified() {
     use ergocell_robot::lock::LockFile;
     use ergocell_robot::TrajectoryClass;
 
-    let dir = fresh_cell_with_approvers("trajectories_forged_lock");
-    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c1"]);
+    let Some(cell) = AnchoredCell::new("trajectories_forged_lock") else {
+        return;
+    };
+    let dir = cell.dir.clone();
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c1"]);
     assert_eq!(code, 0, "{out}{err}");
-    let (code, out, _) = ergocell(
-        &dir,
-        &[
-            "trajectories",
-            "verify",
-            "--class",
-            "c1",
-            "--allow-unapproved",
-        ],
-    );
+    let (code, out, _) = cell.ergocell(&[
+        "trajectories",
+        "verify",
+        "--class",
+        "c1",
+        "--allow-unapproved",
+    ]);
     assert_eq!(code, 0, "{out}");
 
     let path = dir.join("trajectories/locks/c1.lock.toml");
@@ -208,7 +146,7 @@ fn a_hand_edited_and_rehashed_lock_is_neither_approved_nor_verified() {
     lock.lock_sha256 = lock.content_sha256();
     std::fs::write(&path, lock.to_toml().unwrap()).unwrap();
 
-    let (code, _, err) = approve(&dir, "c1", ALICE, "keys/alice");
+    let (code, _, err) = cell.approve("c1", ALICE, "keys/alice");
     assert_eq!(code, 1);
     assert!(
         err.contains("does not hold the validated trajectory")
@@ -216,16 +154,13 @@ fn a_hand_edited_and_rehashed_lock_is_neither_approved_nor_verified() {
         "{err}"
     );
     assert!(!dir.join("trajectories/approvals/c1.toml").exists());
-    let (code, out, _) = ergocell(
-        &dir,
-        &[
-            "trajectories",
-            "verify",
-            "--class",
-            "c1",
-            "--allow-unapproved",
-        ],
-    );
+    let (code, out, _) = cell.ergocell(&[
+        "trajectories",
+        "verify",
+        "--class",
+        "c1",
+        "--allow-unapproved",
+    ]);
     assert_eq!(code, 1, "{out}");
     assert!(
         out.contains("c1: FAIL") && out.contains("point 40: velocities_rad_s[1]"),
@@ -241,22 +176,6 @@ fn an_unknown_class_is_a_usage_error() {
     assert!(err.contains("unknown trajectory class"), "{err}");
 }
 
-fn approve(dir: &Path, class: &str, by: &str, key: &str) -> (i32, String, String) {
-    ergocell(
-        dir,
-        &[
-            "trajectories",
-            "approve",
-            "--class",
-            class,
-            "--by",
-            by,
-            "--key",
-            key,
-        ],
-    )
-}
-
 /// The forgeries of issue 16 through the command line: an outsider's key, someone else's key, a
 /// name that draws a fake line, a hand-written entry, an edited last entry, a removed entry, a revoked
 /// key and a trust file edited without re-locking — each refused, naming why. And OpenSSH agrees:
@@ -264,27 +183,25 @@ fn approve(dir: &Path, class: &str, by: &str, key: &str) -> (i32, String, String
 /// `ssh-keygen -Y sign` made.
 #[test]
 fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
-    let dir = fresh_cell_with_approvers("trajectories_signed");
-    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c2"]);
+    let Some(cell) = AnchoredCell::new("trajectories_signed") else {
+        return;
+    };
+    let dir = cell.dir.clone();
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
     assert_eq!(code, 0, "{out}{err}");
     let approvals = dir.join("trajectories/approvals/c2.toml");
 
     // An outsider's key, and a trusted key used under another engineer's name.
-    let (code, _, err) = approve(&dir, "c2", "mallory@elsewhere.example", "keys/mallory");
+    let (code, _, err) = cell.approve("c2", "mallory@elsewhere.example", "keys/mallory");
     assert_eq!(code, 1);
     assert!(err.contains("is not a trusted approver's key"), "{err}");
-    let (code, _, err) = approve(&dir, "c2", ALICE, "keys/bob");
+    let (code, _, err) = cell.approve("c2", ALICE, "keys/bob");
     assert!(
         code == 1 && err.contains("not for `alice@plant.example`"),
         "{err}"
     );
     // A name that would print a fake verdict line.
-    let (code, _, err) = approve(
-        &dir,
-        "c2",
-        "Alice\nc3: OK — approved\u{1b}[31m",
-        "keys/alice",
-    );
+    let (code, _, err) = cell.approve("c2", "Alice\nc3: OK — approved\u{1b}[31m", "keys/alice");
     assert!(
         code == 1 && err.contains("control character") && !err.contains("\nc3: OK"),
         "{err}"
@@ -309,7 +226,7 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
         ),
     )
     .unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 1, "{out}");
     assert!(
         out.contains("refused: approver `Dr.\\nc3: OK` contains whitespace")
@@ -323,7 +240,7 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
         text.replace("Dr.\\nc3: OK", "dr.chief@plant.example"),
     )
     .unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert!(
         code == 1 && out.contains("refused: the signature is not an SSH signature"),
         "{out}"
@@ -331,27 +248,24 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
     std::fs::remove_file(&approvals).unwrap();
 
     // Alice approves; the approval verifies.
-    let (code, out, err) = approve(&dir, "c2", ALICE, "keys/alice");
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
     assert_eq!(code, 0, "{out}{err}");
     let good = std::fs::read_to_string(&approvals).unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert_eq!(code, 0, "{out}");
 
     // OpenSSH checks the approval with the cell's own trust file.
     if let Some(keygen) = ssh_keygen() {
-        let (code, message, err) = ergocell(
-            &dir,
-            &[
-                "trajectories",
-                "approval-message",
-                "--class",
-                "c2",
-                "--entry",
-                "0",
-                "--signature-out",
-                "entry0.sig",
-            ],
-        );
+        let (code, message, err) = cell.ergocell(&[
+            "trajectories",
+            "approval-message",
+            "--class",
+            "c2",
+            "--entry",
+            "0",
+            "--signature-out",
+            "entry0.sig",
+        ]);
         assert_eq!(code, 0, "{err}");
         let verify = |message: &str| {
             use std::io::Write as _;
@@ -397,19 +311,16 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
         assert!(!ok, "ssh-keygen must refuse an edited message");
 
         // Two steps: ergocell writes the message, ssh-keygen signs it, ergocell appends it.
-        let (code, out, err) = ergocell(
-            &dir,
-            &[
-                "trajectories",
-                "approve",
-                "--class",
-                "c2",
-                "--by",
-                BOB,
-                "--message-out",
-                "bob.txt",
-            ],
-        );
+        let (code, out, err) = cell.ergocell(&[
+            "trajectories",
+            "approve",
+            "--class",
+            "c2",
+            "--by",
+            BOB,
+            "--message-out",
+            "bob.txt",
+        ]);
         assert_eq!(code, 0, "{out}{err}");
         let signed = Command::new(keygen)
             .current_dir(&dir)
@@ -429,35 +340,29 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
             "{}",
             String::from_utf8_lossy(&signed.stderr)
         );
-        let (code, out, err) = ergocell(
-            &dir,
-            &[
-                "trajectories",
-                "approve",
-                "--class",
-                "c2",
-                "--signed",
-                "bob.txt",
-            ],
-        );
+        let (code, out, err) = cell.ergocell(&[
+            "trajectories",
+            "approve",
+            "--class",
+            "c2",
+            "--signed",
+            "bob.txt",
+        ]);
         assert_eq!(code, 0, "{out}{err}");
-        let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+        let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
         assert!(
             code == 0 && out.contains(ALICE) && out.contains(BOB),
             "{out}"
         );
         // The same signed message cannot be appended twice (the chain moved on).
-        let (code, _, err) = ergocell(
-            &dir,
-            &[
-                "trajectories",
-                "approve",
-                "--class",
-                "c2",
-                "--signed",
-                "bob.txt",
-            ],
-        );
+        let (code, _, err) = cell.ergocell(&[
+            "trajectories",
+            "approve",
+            "--class",
+            "c2",
+            "--signed",
+            "bob.txt",
+        ]);
         assert!(code == 1 && err.contains("write a new message"), "{err}");
         std::fs::write(&approvals, &good).unwrap();
     }
@@ -468,7 +373,7 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
         good.replacen("approved_at_utc = \"20", "approved_at_utc = \"19", 1),
     )
     .unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert!(
         code == 1 && out.contains("the signature does not match the entry"),
         "{out}"
@@ -476,14 +381,14 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
     // Its time replaced by words.
     let words = regex_free_replace_time(&good, "not a time at all");
     std::fs::write(&approvals, words).unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert!(
         code == 1 && out.contains("is not an RFC 3339 time"),
         "{out}"
     );
     // The entry removed: nothing approves the lock.
     std::fs::write(&approvals, "").unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert!(
         code == 1 && out.contains("no approval for lock sha256"),
         "{out}"
@@ -500,19 +405,24 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
     text.push_str(&alice_pub);
     text.push('\n');
     std::fs::write(&revoked, text).unwrap();
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert!(
         code == 1
+            && out.contains("approvers: NOT TRUSTED")
+            && out.contains("edited after signing")
             && out.contains("revoked approvers' keys approvers/revoked_keys")
             && out.contains("changed since the lock was written"),
         "{out}"
     );
-    // Re-locked: alice can no longer approve, and her old approval does not carry over.
-    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c2"]);
+    // The site's authority signs the revocation; re-locked: alice can no longer approve, and her
+    // old approval does not carry over.
+    let (code, out, err) = cell.ergocell(&["trajectories", "sign-approvers", "--key", "keys/site"]);
     assert_eq!(code, 0, "{out}{err}");
-    let (code, _, err) = approve(&dir, "c2", ALICE, "keys/alice");
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, _, err) = cell.approve("c2", ALICE, "keys/alice");
     assert!(code == 1 && err.contains("is revoked"), "{err}");
-    let (code, out, _) = ergocell(&dir, &["trajectories", "verify", "--class", "c2"]);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert!(code == 1 && out.contains("none for this hash"), "{out}");
 }
 
@@ -588,4 +498,331 @@ fn a_lock_write_cut_short_leaves_the_previous_lock_whole() {
         before,
         "the previous lock is whole"
     );
+}
+
+/// The hostile user with write access to the project folder: her own key appended to the allowed
+/// signers, the cell loosened, the class re-locked and approved by herself. `verify` refuses it and
+/// says why (the approvers' files are not what the site's authority signed), as does the provider
+/// `ergocell run` checks every trajectory with; so do her other ways round: signing the files with
+/// her own key, or pointing the cell at an anchor she controls.
+#[test]
+fn the_mallory_attack_is_refused_by_verify_and_by_run_naming_why() {
+    use ergocell::session::TrajectoryProvider as _;
+    use ergocell_robot::TrajectoryClass;
+    let Some(cell) = AnchoredCell::new("trajectories_mallory") else {
+        return;
+    };
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+    assert!(code == 0 && out.contains("c2: OK"), "{out}");
+    cell.provider().verify(TrajectoryClass::C2).unwrap();
+
+    cell.mallory_attack(TrajectoryClass::C2);
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("approvers: NOT TRUSTED")
+            && out.contains("edited after signing")
+            && out.contains("c2: FAIL")
+            && out.contains("is not a trusted approver's key")
+            && !out.contains("c2: OK"),
+        "{out}"
+    );
+    let refused = cell
+        .provider()
+        .verify(TrajectoryClass::C2)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        refused.contains("trusted approvers") && refused.contains("edited after signing"),
+        "{refused}"
+    );
+
+    // She signs the edited files with her own key: refused, the signature is not written.
+    let sig_path = cell.dir.join("config/approvers/approvers.sig");
+    let sig_before = std::fs::read(&sig_path).unwrap();
+    let (code, _, err) =
+        cell.ergocell(&["trajectories", "sign-approvers", "--key", "keys/mallory"]);
+    assert!(
+        code == 1 && err.contains("not the site's approvers authority"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read(&sig_path).unwrap(), sig_before);
+    // She writes that signature herself: verify names the key that is not the authority.
+    let mallory = ergocell_robot::signing::private_key_from_openssh(
+        &std::fs::read_to_string(cell.dir.join("keys/mallory")).unwrap(),
+    )
+    .unwrap();
+    let allowed =
+        std::fs::read_to_string(cell.dir.join("config/approvers/allowed_signers")).unwrap();
+    let revoked = std::fs::read_to_string(cell.dir.join("config/approvers/revoked_keys")).unwrap();
+    std::fs::write(
+        &sig_path,
+        ergocell_robot::authority::sign_approvers(&allowed, &revoked, &mallory).unwrap(),
+    )
+    .unwrap();
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        code == 1 && out.contains("which is not the site's approvers authority"),
+        "{out}"
+    );
+    // She installs her key as an "anchor" in a folder of her own (here: one owned by uid 1000, and
+    // one in the project folder that the cell's account can write).
+    for (anchor, owner) in [
+        (cell.dir.join("my-anchor"), 1000),
+        (cell.dir.join("config/anchor"), 0),
+    ] {
+        use std::os::unix::fs::PermissionsExt as _;
+        std::fs::create_dir_all(&anchor).unwrap();
+        let key = anchor.join("approvers-authority.pub");
+        std::fs::write(
+            &key,
+            ergocell_robot::signing::public_key_openssh(&mallory).unwrap(),
+        )
+        .unwrap();
+        std::os::unix::fs::chown(&key, Some(owner), None).unwrap();
+        if owner == 0 {
+            // The project folder as a service account's: writable by its group.
+            std::fs::set_permissions(
+                cell.dir.join("config"),
+                std::fs::Permissions::from_mode(0o775),
+            )
+            .unwrap();
+        }
+        let out = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(&cell.dir)
+            .env("ERGOCELL_TRUST_ANCHOR_DIR", &anchor)
+            .args(["trajectories", "verify", "--class", "c2"])
+            .output()
+            .unwrap();
+        let said = String::from_utf8_lossy(&out.stdout);
+        assert!(!out.status.success(), "{said}");
+        assert!(
+            said.contains("owned by uid 1000, not root")
+                || said.contains("writable by group or others (mode 775)"),
+            "{said}"
+        );
+    }
+}
+
+/// Approvers that trust keys but come without the authority's signature, or on a machine without
+/// the authority installed, approve nothing; the shipped list (no keys) needs neither.
+#[test]
+fn unsigned_approvers_or_a_missing_authority_approve_nothing() {
+    let Some(cell) = AnchoredCell::new("trajectories_unsigned") else {
+        return;
+    };
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    std::fs::remove_file(cell.dir.join("config/approvers/approvers.sig")).unwrap();
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        code == 1 && out.contains("approvers.sig is missing"),
+        "{out}"
+    );
+    let (code, out, err) = cell.ergocell(&["trajectories", "sign-approvers", "--key", "keys/site"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("checked against the site's approvers authority"),
+        "{out}"
+    );
+    let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+    assert!(code == 0 && out.contains("c2: OK"), "{out}");
+    // The same cell on a machine where no authority is installed.
+    let out = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&cell.dir)
+        .env("ERGOCELL_TRUST_ANCHOR_DIR", cell.dir.join("no-such-folder"))
+        .args(["trajectories", "verify", "--class", "c2"])
+        .output()
+        .unwrap();
+    let said = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        !out.status.success() && said.contains("no approvers authority is installed"),
+        "{said}"
+    );
+    // The shipped approvers (no key) need no authority: the integrity check still passes.
+    let dir = fresh_cell("trajectories_unsigned_shipped");
+    let (code, out, err) = ergocell(&dir, &["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, _) = ergocell(
+        &dir,
+        &[
+            "trajectories",
+            "verify",
+            "--class",
+            "c2",
+            "--allow-unapproved",
+        ],
+    );
+    assert!(code == 0 && !out.contains("NOT TRUSTED"), "{out}");
+}
+
+/// `lock` of every class is all or nothing: with c3's trajectory file broken, c1 and c2 are not
+/// re-locked either, and every lock keeps its bytes.
+#[test]
+fn lock_of_all_classes_writes_nothing_when_one_class_fails() {
+    let dir = fresh_cell("trajectories_lock_all_or_nothing");
+    let (code, out, err) = ergocell(&dir, &["trajectories", "lock"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let locks: Vec<PathBuf> = ["c1", "c2", "c3"]
+        .iter()
+        .map(|c| dir.join(format!("trajectories/locks/{c}.lock.toml")))
+        .collect();
+    let before: Vec<Vec<u8>> = locks.iter().map(|p| std::fs::read(p).unwrap()).collect();
+    // A change that would give c1 and c2 new locks (the arm's capsules), and c3's file broken.
+    let cell = dir.join("config/cell.toml");
+    let text = std::fs::read_to_string(&cell).unwrap();
+    std::fs::write(
+        &cell,
+        text.replace("link_radius_m = 0.08", "link_radius_m = 0.07"),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("trajectories/c3.toml"),
+        "class = \"c3\"\nnot toml at all\n",
+    )
+    .unwrap();
+    let (code, _, err) = ergocell(&dir, &["trajectories", "lock"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("c3: not locked") && err.contains("no lock file was written"),
+        "{err}"
+    );
+    for (p, b) in locks.iter().zip(&before) {
+        assert_eq!(&std::fs::read(p).unwrap(), b, "{} kept", p.display());
+    }
+}
+
+/// Fault injection: `lock`, `approve` and `report --force` on a full filesystem (a small tmpfs,
+/// filled to the last block, in a mount namespace of the test's own) fail with an error saying so,
+/// and leave the previous lock, approvals and report byte for byte.
+#[test]
+fn lock_approve_and_report_on_a_full_filesystem_leave_the_previous_files_intact() {
+    let Some(cell) = AnchoredCell::new("trajectories_full_disk") else {
+        return;
+    };
+    let mountable = Command::new("unshare")
+        .args(["-m", "sh", "-c", "mount -t tmpfs -o size=64k tmpfs /mnt"])
+        .status()
+        .is_ok_and(|s| s.success());
+    if !mountable {
+        assert!(
+            std::env::var_os("ERGOCELL_REQUIRE_ANCHOR").is_none(),
+            "CI must be able to mount a tmpfs in a mount namespace (root)"
+        );
+        eprintln!("skipped: cannot mount a tmpfs here");
+        return;
+    }
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    common::small_recording(&cell.dir.join("rec.mcap"));
+    let (code, out, err) = cell.ergocell(&["report", "rec.mcap", "--out", "report.html"]);
+    assert_eq!(code, 0, "{out}{err}");
+
+    // In a mount namespace: the cell copied onto a 4 MiB tmpfs, which is then filled.
+    let script = r#"
+        set -u
+        mount -t tmpfs -o size=4m tmpfs "$FULL" || exit 90
+        cp -r "$CELL"/. "$FULL"/ && cd "$FULL" || exit 91
+        files="trajectories/locks/c2.lock.toml trajectories/approvals/c2.toml report.html"
+        sha256sum $files > "$CELL/before.sha256"
+        dd if=/dev/zero of=fill bs=4096 2>/dev/null
+        df -k . | tail -1 | awk '{print "free kB: " $4}'
+        "$BIN" trajectories lock --class c2 > lock.out 2> "$CELL/lock.err"; echo "lock exit $?"
+        "$BIN" trajectories approve --class c2 --by bob@plant.example --key keys/bob > /dev/null 2> "$CELL/approve.err"; echo "approve exit $?"
+        "$BIN" report rec.mcap --out report.html --force > /dev/null 2> "$CELL/report.err"; echo "report exit $?"
+        sha256sum $files > "$CELL/after.sha256"
+    "#;
+    let full = std::env::temp_dir().join(format!("ergocell-full-{}", std::process::id()));
+    std::fs::create_dir_all(&full).unwrap();
+    let out = Command::new("unshare")
+        .args(["-m", "sh", "-c", script])
+        .env("FULL", &full)
+        .env("CELL", &cell.dir)
+        .env("BIN", env!("CARGO_BIN_EXE_ergocell"))
+        .env("ERGOCELL_TRUST_ANCHOR_DIR", &cell.anchor)
+        .output()
+        .unwrap();
+    let _ = std::fs::remove_dir(&full);
+    let said = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        said.contains("free kB: 0"),
+        "the filesystem is full: {said}"
+    );
+    for (step, file) in [
+        ("lock", "lock.err"),
+        ("approve", "approve.err"),
+        ("report", "report.err"),
+    ] {
+        let err = std::fs::read_to_string(cell.dir.join(file)).unwrap();
+        assert!(
+            !said.contains(&format!("{step} exit 0")),
+            "{step} cannot succeed on a full disk: {said}{err}"
+        );
+        assert!(
+            err.contains("No space left on device") && !err.contains("panicked"),
+            "{step}: {err}"
+        );
+    }
+    let before = std::fs::read_to_string(cell.dir.join("before.sha256")).unwrap();
+    let after = std::fs::read_to_string(cell.dir.join("after.sha256")).unwrap();
+    assert_eq!(
+        before, after,
+        "the previous lock, approvals and report are intact"
+    );
+    assert_eq!(before.lines().count(), 3);
+}
+
+/// An approval signed by a trusted key but dated 1970 or 2099 (a wrong clock, or a made-up entry)
+/// is refused by `verify` and by the provider `run` uses, naming the date.
+#[test]
+fn approvals_dated_1970_or_2099_are_refused() {
+    use ergocell::session::TrajectoryProvider as _;
+    use ergocell_robot::lock::{ApprovalsFile, LockFile};
+    use ergocell_robot::TrajectoryClass;
+    let Some(cell) = AnchoredCell::new("trajectories_dates") else {
+        return;
+    };
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let read = |p: &str| std::fs::read_to_string(cell.dir.join(p)).unwrap();
+    let trusted = ergocell_robot::TrustedSigners::parse(
+        &read("config/approvers/allowed_signers"),
+        &read("config/approvers/revoked_keys"),
+    )
+    .unwrap();
+    let lock = LockFile::from_toml_str(
+        TrajectoryClass::C2,
+        &read("trajectories/locks/c2.lock.toml"),
+    )
+    .unwrap();
+    let alice = ergocell_robot::signing::private_key_from_openssh(&read("keys/alice")).unwrap();
+    let approvals = cell.dir.join("trajectories/approvals/c2.toml");
+    std::fs::create_dir_all(approvals.parent().unwrap()).unwrap();
+    for (date, why) in [
+        ("1970-01-01T00:00:00Z", "before 2026-01-01"),
+        ("2099-01-01T00:00:00Z", "in the future"),
+    ] {
+        let mut file = ApprovalsFile::default();
+        file.approve(&lock, ALICE, date, &trusted, &alice).unwrap();
+        std::fs::write(&approvals, file.to_toml().unwrap()).unwrap();
+        let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+        assert!(
+            code == 1 && out.contains("c2: FAIL") && out.contains(date) && out.contains(why),
+            "{out}"
+        );
+        let refused = cell
+            .provider()
+            .verify(TrajectoryClass::C2)
+            .unwrap_err()
+            .to_string();
+        assert!(refused.contains(why), "{refused}");
+    }
 }

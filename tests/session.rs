@@ -128,14 +128,13 @@ impl Run {
         cycles: usize,
         settings: &CellSettings,
     ) -> Self {
+        Self::with_provider(provider(name, approve), cycles, settings)
+    }
+
+    fn with_provider(provider: FileTrajectories, cycles: usize, settings: &CellSettings) -> Self {
         let (names, home) = home();
         Self {
-            machine: SessionMachine::from_settings(
-                rig(),
-                settings,
-                Box::new(provider(name, approve)),
-            )
-            .unwrap(),
+            machine: SessionMachine::from_settings(rig(), settings, Box::new(provider)).unwrap(),
             robot: DummyRobot::new(names, home),
             sim: simulation(cycles),
             events: Vec::new(),
@@ -442,6 +441,32 @@ fn an_unapproved_lock_never_moves_the_robot() {
         .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
     assert!(run.machine.summary().end_reason.contains("not verified"));
     assert!(run.machine.lock_sha256().is_none());
+}
+
+/// `ergocell run`'s session on a cell where a hostile user appended her key to the approvers,
+/// loosened the cell, re-locked and approved c2 herself: the session ends without moving the robot,
+/// saying the approvers' files are not what the site's authority signed.
+#[test]
+fn the_mallory_attack_never_moves_the_robot() {
+    let Some(cell) = common::AnchoredCell::new("session-mallory") else {
+        return;
+    };
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    cell.mallory_attack(TrajectoryClass::C2);
+    let mut run = Run::with_provider(cell.provider(), 1, &CellSettings::default());
+    run.run_until(12_000_000_000, &|m| m.state() == SessionState::SessionEnded);
+    assert_eq!(run.machine.state(), SessionState::SessionEnded);
+    assert!(run
+        .robot
+        .received
+        .iter()
+        .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
+    let reason = &run.machine.summary().end_reason;
+    assert!(
+        reason.contains("not verified") && reason.contains("edited after signing"),
+        "{reason}"
+    );
 }
 
 #[test]

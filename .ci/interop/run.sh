@@ -27,18 +27,10 @@ trap 'rm -rf "$tmp"' EXIT
 # The session the cameras will replay: the simulator at 30 Hz, one handover cycle, with the faults.
 "$bin" --log error demo --cycles 1 --fps 30 --out "$tmp/session.mcap" > "$tmp/demo.log"
 
-# A signed approval for this test only (never trajectories/approvals/): a copy of the cell whose
-# approvers' file trusts one throwaway key made here by ssh-keygen, c2 re-locked under that trust file
-# (a lock covers it) and approved with the key.
-mkdir -p "$tmp/traj" "$tmp/cell"
-cp -r config/. "$tmp/cell/"
-cp trajectories/c*.toml trajectories/handover_rula.toml "$tmp/traj/"
-ssh-keygen -q -t ed25519 -N "" -C "ergocell interop test key (not a sign-off)" -f "$tmp/interop_key"
-printf 'interop@ci.invalid namespaces="ergocell-trajectory-approval" %s\n' "$(cat "$tmp/interop_key.pub")" \
-  > "$tmp/cell/approvers/allowed_signers"
-"$bin" trajectories --cell "$tmp/cell/cell.toml" --trajectories-dir "$tmp/traj" lock --class c2 > /dev/null
-"$bin" trajectories --cell "$tmp/cell/cell.toml" --trajectories-dir "$tmp/traj" approve --class c2 \
-  --by interop@ci.invalid --key "$tmp/interop_key" > /dev/null
+# A signed approval for this test only: c2 of a copy of the cell, approved under a throwaway
+# authority (.ci/interop/approved-cell.sh).
+who=interop@ci.invalid
+source .ci/interop/approved-cell.sh
 
 export CYCLONEDDS_URI="file://$PWD/.ci/interop/cyclonedds.xml"
 export RUST_LOG=warn

@@ -15,6 +15,8 @@
 //!   the path tolerances derived from the lock.
 //! * [`signing`]: who may approve (OpenSSH allowed signers, revoked keys) and the exact bytes an
 //!   approval's SSH signature covers.
+//! * [`authority`]: the site's approvers authority, whose signature makes the approvers' files count
+//!   (the trust anchor outside the project folder).
 //!
 //! The library reads no files: it parses strings, and the binary reads files and the clock. It knows
 //! nothing of cameras, ergonomics or ROS. The lock is a software guarantee on top of the robot's own
@@ -26,6 +28,7 @@
 // Checks are written `!(value <= limit)` on purpose: a NaN must fail them.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod authority;
 pub mod config;
 mod error;
 pub mod ik;

@@ -254,6 +254,11 @@ impl TrustedSigners {
         &self.keys
     }
 
+    /// Adds revocations from elsewhere (the site authority's own list) to the project's.
+    pub fn revoke_also(&mut self, keys: &[PublicKey]) {
+        self.revoked.extend(keys.iter().cloned());
+    }
+
     /// Whether `key` is on the revocation list.
     pub fn is_revoked(&self, key: &PublicKey) -> bool {
         self.revoked.iter().any(|r| r.key_data() == key.key_data())
@@ -355,6 +360,42 @@ pub fn check_utc_time(text: &str) -> Result<(), ApprovalError> {
     }
     if rfc3339_utc(t.unix_timestamp()).ok().as_deref() != Some(text) {
         return Err(bad("is not written as YYYY-MM-DDTHH:MM:SSZ".to_owned()));
+    }
+    Ok(())
+}
+
+/// The earliest time an approval may bear: ergocell's signed approvals did not exist before.
+pub const EARLIEST_APPROVAL_UTC: &str = "2026-01-01T00:00:00Z";
+const EARLIEST_APPROVAL_UNIX: i64 = 1_767_225_600;
+
+/// How far in the future of the verifying machine's clock an approval's time may be (clocks of two
+/// machines disagree by seconds, not minutes).
+pub const APPROVAL_CLOCK_SKEW_S: i64 = 300;
+
+/// Checks that an approval's time (already well formed, [`check_utc_time`]) is one an approval can
+/// bear at `now_unix` (seconds, the verifying machine's clock): not before
+/// [`EARLIEST_APPROVAL_UTC`] and not more than [`APPROVAL_CLOCK_SKEW_S`] in the future. A date of
+/// 1970 or 2099 is a wrong clock or a made-up entry, and is refused either way.
+pub fn check_approval_time(text: &str, now_unix: i64) -> Result<(), ApprovalError> {
+    check_utc_time(text)?;
+    let bad = |why: String| ApprovalError::BadTime {
+        text: printable(text),
+        why,
+    };
+    let t = time::OffsetDateTime::parse(text, &time::format_description::well_known::Rfc3339)
+        .map_err(|e| bad(format!("is not an RFC 3339 time ({e})")))?
+        .unix_timestamp();
+    if t < EARLIEST_APPROVAL_UNIX {
+        return Err(bad(format!(
+            "is before {EARLIEST_APPROVAL_UTC}, when ergocell's signed approvals began"
+        )));
+    }
+    if t > now_unix.saturating_add(APPROVAL_CLOCK_SKEW_S) {
+        return Err(bad(format!(
+            "is in the future of this machine's clock ({}): a wrong clock where it was signed, or \
+             a made-up entry",
+            rfc3339_utc(now_unix).unwrap_or_else(|_| now_unix.to_string())
+        )));
     }
     Ok(())
 }

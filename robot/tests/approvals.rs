@@ -334,3 +334,25 @@ fn the_shipped_trust_file_trusts_no_one_and_parses() {
     let t = TrustedSigners::parse(&allowed, &revoked).unwrap();
     assert!(t.keys().is_empty());
 }
+
+/// Approvals dated 1970 or 2099 are refused: before signed approvals existed, or in the future of
+/// the verifying clock beyond a few minutes' skew; the edges are exact.
+#[test]
+fn an_approval_dated_1970_or_2099_is_refused() {
+    use ergocell_robot::signing::{check_approval_time, APPROVAL_CLOCK_SKEW_S};
+    let now = 1_796_000_000; // 2026-12-1x
+    for (text, ok) in [
+        ("1970-01-01T00:00:00Z", false),
+        ("2025-12-31T23:59:59Z", false),
+        ("2026-01-01T00:00:00Z", true),
+        ("2099-01-01T00:00:00Z", false),
+    ] {
+        assert_eq!(check_approval_time(text, now).is_ok(), ok, "{text}");
+    }
+    let at = |t: i64| ergocell_robot::signing::rfc3339_utc(t).unwrap();
+    assert!(check_approval_time(&at(now + APPROVAL_CLOCK_SKEW_S), now).is_ok());
+    let e = check_approval_time(&at(now + APPROVAL_CLOCK_SKEW_S + 1), now).unwrap_err();
+    assert!(e.to_string().contains("in the future"), "{e}");
+    let e = check_approval_time("1970-01-01T00:00:00Z", now).unwrap_err();
+    assert!(e.to_string().contains("before 2026-01-01"), "{e}");
+}

@@ -319,8 +319,8 @@ fn detect_all(
 ) -> anyhow::Result<Vec<ImageResult>> {
     let bytes: Vec<Vec<u8>> = paths
         .iter()
-        .map(|p| std::fs::read(p).with_context(|| format!("reading {}", p.display())))
-        .collect::<anyhow::Result<_>>()?;
+        .map(|p| ergocell::input::read(p, ergocell::input::Kind::Image))
+        .collect::<Result<_, _>>()?;
     let bar = if std::io::stderr().is_terminal() {
         let bar = ProgressBar::new(paths.len() as u64);
         if let Ok(style) =

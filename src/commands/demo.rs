@@ -354,6 +354,22 @@ fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
     if let Some(cell) = &args.cell {
         inputs.push(("--cell", cell));
     }
+    if let Some(faults) = &args.faults {
+        inputs.push(("--faults", faults));
+    }
+    // Every file the cell reads is an input, not only the ones named by a flag.
+    let trajectories = ergocell_robot::TrajectoryLayout::new(
+        args.trajectories
+            .as_deref()
+            .unwrap_or(Path::new(ergocell_robot::TrajectoryLayout::DEFAULT_DIR)),
+    );
+    let read = FileTrajectories::with_shipped_defaults(
+        args.cell.as_deref(),
+        args.trajectories.as_deref(),
+        trajectories.approvals_dir(),
+    )
+    .input_files();
+    inputs.extend(read.iter().map(|p| ("a file the cell reads:", p.as_path())));
     if let Some(out) = &args.out {
         output::check("--out", out, args.force, &inputs)?;
         return Ok((out.clone(), false));
@@ -470,8 +486,7 @@ fn check_args(args: &Args) -> Result<(), UsageError> {
 fn read_rig(args: &Args) -> anyhow::Result<CameraRig> {
     let (rig_text, rig_label) = match &args.rig {
         Some(path) => (
-            std::fs::read_to_string(path)
-                .with_context(|| format!("cannot read {}", path.display()))?,
+            ergocell::input::read_text(path, ergocell::input::Kind::Config)?,
             path.display().to_string(),
         ),
         None => (
@@ -489,9 +504,8 @@ fn read_rig(args: &Args) -> anyhow::Result<CameraRig> {
 fn fault_schedule(args: &Args, rig: &CameraRig) -> Result<FaultSchedule, UsageError> {
     let mut schedule = match &args.faults {
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| {
-                UsageError(format!("--faults {}: cannot read it: {e}", path.display()))
-            })?;
+            let text = ergocell::input::read_text(path, ergocell::input::Kind::Config)
+                .map_err(|e| UsageError(format!("--faults: {e}")))?;
             let names: Vec<&str> = rig.cameras().iter().map(|c| c.id.as_str()).collect();
             FaultSchedule::from_toml_str(&text, &path.display().to_string(), &names)
                 .map_err(|e| UsageError(e.to_string()))?

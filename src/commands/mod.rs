@@ -22,14 +22,18 @@ pub mod triangulate;
 pub struct UsageError(pub String);
 
 /// Exit code for an error: 130 / 143 for a command stopped by SIGINT / SIGTERM (robot held,
-/// recording closed: [`signals::Stopped`]), 2 for bad input, 1 for everything else.
+/// recording closed: [`signals::Stopped`]), 2 for bad input (a [`UsageError`], or an input file
+/// that cannot be read: [`ergocell::input::InputError`]), 1 for everything else.
 pub fn exit_code(err: &anyhow::Error) -> u8 {
     if let Some(stopped) = err
         .chain()
         .find_map(<dyn std::error::Error>::downcast_ref::<signals::Stopped>)
     {
         stopped.signal.exit_code()
-    } else if err.chain().any(<dyn std::error::Error>::is::<UsageError>) {
+    } else if err
+        .chain()
+        .any(|e| e.is::<UsageError>() || e.is::<ergocell::input::InputError>())
+    {
         2
     } else {
         1

@@ -7,7 +7,6 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::Context as _;
 use ergocell_ergonomics::reba::{parse_worksheets, score_worksheet, RebaScores};
 
 use super::UsageError;
@@ -37,8 +36,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
 }
 
 fn score(input: &Path) -> anyhow::Result<()> {
-    let text =
-        std::fs::read_to_string(input).with_context(|| format!("reading {}", input.display()))?;
+    let text = ergocell::input::read_text(input, ergocell::input::Kind::Data)?;
     let worksheets =
         parse_worksheets(&text).map_err(|e| UsageError(format!("{}: {e}", input.display())))?;
     let out = worksheets

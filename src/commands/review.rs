@@ -21,6 +21,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use anyhow::Context as _;
+use ergocell::input::{self, Kind};
 use ergocell::review_server::{self, Limits, Served, MAX_CONNECTIONS, SHUTDOWN_GRACE};
 use ergocell_review::read::split_sessions;
 use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
@@ -113,7 +114,7 @@ fn load(
     path: &Path,
     session: usize,
 ) -> anyhow::Result<(SessionReview, ergocell_review::Recording)> {
-    let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let bytes = input::read(path, Kind::Recording)?;
     let recording =
         read_recording(&bytes).map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
     let mut parts = split_sessions(&recording);

@@ -20,7 +20,7 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::Context as _;
+use ergocell::input::{self, Kind};
 use ergocell_cell::{Assessment, PipelineConfig};
 use ergocell_ergonomics::activity::{ActivityConfig, ActivityTracker};
 use ergocell_ergonomics::assess::{BodyRegion, SideAssessment};
@@ -130,8 +130,7 @@ pub fn parse_up(s: &str) -> Result<UpVector, String> {
 /// Reads a 3D landmark recording; a malformed file is a usage error.
 pub fn read_skeletons(path: &Path) -> anyhow::Result<Vec<Skeleton3>> {
     let format = LandmarksFormat::from_path(path).map_err(|e| UsageError(e.to_string()))?;
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let text = input::read_text(path, Kind::Data)?;
     let frames = read_landmarks(&text, format, &path.display().to_string())
         .map_err(|e| UsageError(e.to_string()))?;
     if frames.is_empty() {
@@ -148,8 +147,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
 }
 
 fn score(input: &Path) -> anyhow::Result<()> {
-    let text =
-        std::fs::read_to_string(input).with_context(|| format!("reading {}", input.display()))?;
+    let text = input::read_text(input, Kind::Data)?;
     let worksheets =
         parse_worksheets(&text).map_err(|e| UsageError(format!("{}: {e}", input.display())))?;
     let mut out: Vec<RulaScores> = Vec::with_capacity(worksheets.len());
@@ -247,8 +245,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     let frames = read_skeletons(&args.landmarks)?;
     let task: TaskConfig = match &args.task {
         Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
+            let text = input::read_text(path, Kind::Config)?;
             serde_json::from_str(&text)
                 .map_err(|e| UsageError(format!("{}: {e}", path.display())))?
         }

@@ -192,14 +192,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .into());
         }
     }
+    let flagged = [
+        ("--config", args.config.as_path()),
+        ("--rig", args.rig.as_path()),
+    ];
     if let Some(record) = &args.record {
-        let inputs = [
-            ("--config", args.config.as_path()),
-            ("--rig", args.rig.as_path()),
-        ];
-        output::check("--record", record, args.force, &inputs)?;
+        // Before anything is read: an existing file without --force, or a named input.
+        output::check("--record", record, args.force, &flagged)?;
     }
     let setup = Setup::load(args)?;
+    if let Some(record) = &args.record {
+        // Every file the cell reads is an input, not only the ones named by a flag.
+        let read = setup.provider().input_files();
+        let mut inputs = flagged.to_vec();
+        inputs.extend(read.iter().map(|p| ("a file the cell reads:", p.as_path())));
+        output::check("--record", record, args.force, &inputs)?;
+    }
     // The first session's machine before anything is started: a cell that cannot run is said now.
     let machine = setup.new_machine()?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
@@ -775,8 +783,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     let (cell_text, cell_label) = ergocell::shipped::read_or_shipped(&args.config)?;
     let ros = RosConfig::from_cell_toml(&cell_text)
         .map_err(|e| UsageError(format!("{cell_label}: {e}")))?;
-    let bytes = std::fs::read(&args.recording)
-        .with_context(|| format!("cannot read {}", args.recording.display()))?;
+    let bytes = ergocell::input::read(&args.recording, ergocell::input::Kind::Recording)?;
     // Camera messages in log-time order; a recording cut by a crash is read up to its last chunk.
     let recording::CameraReadout {
         mut frames,

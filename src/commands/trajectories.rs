@@ -17,7 +17,16 @@
 //! ergocell trajectories verify [--class c2] [--allow-unapproved]
 //!                                                        lock hash, input hashes, limits, approvals agree,
 //!                                                        and the lock holds what validation produces now
+//! ergocell trajectories sign-approvers --key <site authority key>
+//! ergocell trajectories sign-approvers --signed approvers.sig
+//!                                                        the site's approvers authority signs
+//!                                                        config/approvers/ (approvers.sig)
+//! ergocell trajectories approvers-message               what that signature covers, for ssh-keygen
 //! ```
+//!
+//! The keys in `config/approvers/allowed_signers` count only under the signature of the site's
+//! approvers authority, whose public key is installed read-only outside the project
+//! ([`ergocell::trust_anchor`]): editing the project folder can stop the cell, never approve.
 //!
 //! Paths default to `trajectories/` and `config/cell.toml` under the current directory. The lock is a
 //! software guarantee on top of the robot's own safety controller, not a replacement for it.
@@ -26,6 +35,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context as _};
+use ergocell::trust_anchor;
+use ergocell_robot::authority;
 use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
 use ergocell_robot::signing::{self, printable, TrustedSigners};
 use ergocell_robot::{
@@ -88,8 +99,9 @@ pub enum Sub {
         #[arg(long, requires = "signed")]
         signature: Option<PathBuf>,
     },
-    /// Print the exact message an approval entry signed (pipe it into `ssh-keygen -Y verify`), and
-    /// with `--signature-out` write its signature to a new file.
+    /// Print the exact message an approval entry signed (for `ssh-keygen -Y verify`), and with
+    /// `--signature-out` write its signature to a new file. Write the message to a file first and
+    /// then run ssh-keygen: in one pipeline ssh-keygen may open the signature before it exists.
     ApprovalMessage {
         #[arg(long, value_parser = parse_class)]
         class: TrajectoryClass,
@@ -108,6 +120,19 @@ pub enum Sub {
         #[arg(long)]
         allow_unapproved: bool,
     },
+    /// The site's approvers authority signs the approvers' files (allowed_signers and revoked_keys
+    /// beside the cell file) into approvers/approvers.sig: with `--key`, or `--signed` with a
+    /// signature `ssh-keygen -Y sign -n ergocell-approvers` made over `approvers-message`.
+    SignApprovers {
+        /// The authority's OpenSSH Ed25519 private key (not passphrase-protected).
+        #[arg(long, conflicts_with = "signed", required_unless_present = "signed")]
+        key: Option<PathBuf>,
+        /// A signature made by `ssh-keygen` over the output of `approvers-message`.
+        #[arg(long)]
+        signed: Option<PathBuf>,
+    },
+    /// Print the exact message the authority's signature over the approvers' files covers.
+    ApproversMessage,
 }
 
 fn parse_class(s: &str) -> Result<TrajectoryClass, String> {
@@ -156,6 +181,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             class,
             allow_unapproved,
         } => verify(&ctx, *class, *allow_unapproved),
+        Sub::SignApprovers { key, signed } => {
+            sign_approvers(&ctx, key.as_deref(), signed.as_deref())
+        }
+        Sub::ApproversMessage => {
+            print!(
+                "{}",
+                authority::approvers_message(&ctx.trust_texts.0, &ctx.trust_texts.1)
+            );
+            Ok(())
+        }
     }
 }
 
@@ -165,9 +200,14 @@ struct Context {
     cell: CellConfig,
     urdf_text: String,
     model: RobotModel,
-    /// The trusted approvers' files' texts (allowed signers, revoked keys) and their parse.
+    /// The folder of the cell file (the approvers' files are in its `approvers/`).
+    cell_dir: PathBuf,
+    /// The trusted approvers' files' texts (allowed signers, revoked keys).
     trust_texts: (String, String),
+    /// The approvers trusted under the site's authority; none when they are not (`trust_problem`).
     trusted: TrustedSigners,
+    /// Why the approvers' files are not trusted, when they are not.
+    trust_problem: Option<String>,
 }
 
 impl Context {
@@ -189,20 +229,28 @@ impl Context {
         let revoked_path = dir.join(signing::REVOKED_KEYS);
         let allowed = read(&allowed_path)?;
         let revoked = read(&revoked_path)?;
-        let trusted = TrustedSigners::parse(&allowed, &revoked).map_err(|e| {
+        TrustedSigners::parse(&allowed, &revoked).map_err(|e| {
             UsageError(format!(
                 "{} / {}: {e}",
                 allowed_path.display(),
                 revoked_path.display()
             ))
         })?;
+        let anchored =
+            trust_anchor::trusted_signers(dir, &allowed, &revoked, &trust_anchor::anchor_dir());
+        let (trusted, trust_problem) = match anchored {
+            Ok(t) => (t, None),
+            Err(why) => (TrustedSigners::default(), Some(why)),
+        };
         Ok(Self {
             layout: TrajectoryLayout::new(&args.trajectories_dir),
             cell,
             urdf_text,
             model,
+            cell_dir: dir.to_owned(),
             trust_texts: (allowed, revoked),
             trusted,
+            trust_problem,
         })
     }
 
@@ -237,7 +285,7 @@ impl Context {
 /// Reads a file of the cell or the trajectories folder. `trajectories` works on the files on disk
 /// only (it writes locks and approvals beside them), so a missing default says where it looked.
 fn read(path: &Path) -> anyhow::Result<String> {
-    fs::read_to_string(path).with_context(|| {
+    ergocell::input::read_text(path, ergocell::input::Kind::Config).with_context(|| {
         if path.is_relative() {
             format!(
                 "cannot read {} (relative to {}: run from the cell's folder, or pass --cell and --trajectories-dir)",
@@ -296,26 +344,47 @@ fn validate(ctx: &Context, class: Option<TrajectoryClass>, json: bool) -> anyhow
     }
 }
 
+/// Validates every class asked for first and writes their locks only when all are accepted: a bad
+/// class (or an unreadable trajectory file) leaves every lock as it was, never some re-locked and
+/// some not.
 fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result<()> {
     let mut failed = Vec::new();
+    let mut bad_input = false;
+    let mut locks = Vec::new();
     for class in classes(class) {
-        let (spec, hashes) = ctx.spec(class)?;
-        let inputs = PlanInputs {
-            model: &ctx.model,
-            cell: &ctx.cell,
-            spec: &spec,
-            hashes: &hashes,
-        };
-        let locked =
-            match plan_and_validate(&inputs).and_then(ergocell_robot::Validation::into_locked) {
-                Ok(l) => l,
-                Err(e) => {
-                    eprintln!("{class}: not locked: {e}");
-                    failed.push(class);
-                    continue;
-                }
+        let locked = ctx.spec(class).and_then(|(spec, hashes)| {
+            let inputs = PlanInputs {
+                model: &ctx.model,
+                cell: &ctx.cell,
+                spec: &spec,
+                hashes: &hashes,
             };
-        let lock = LockFile::from_locked(&locked);
+            plan_and_validate(&inputs)
+                .and_then(ergocell_robot::Validation::into_locked)
+                .map_err(anyhow::Error::from)
+        });
+        match locked {
+            Ok(l) => locks.push((class, LockFile::from_locked(&l))),
+            Err(e) => {
+                eprintln!("{class}: not locked: {e:#}");
+                bad_input |= e.chain().any(<dyn std::error::Error>::is::<UsageError>);
+                failed.push(class);
+            }
+        }
+    }
+    if !failed.is_empty() {
+        let why = format!(
+            "not locked: {} — no lock file was written (every lock is as it was)",
+            list(&failed)
+        );
+        // A malformed file is bad input (exit 2); a class that does not validate is a rejection (1).
+        return Err(if bad_input {
+            UsageError(why).into()
+        } else {
+            anyhow::anyhow!(why)
+        });
+    }
+    for (class, lock) in locks {
         let path = ctx.layout.lock(class);
         write(&path, &lock.to_toml()?)?;
         println!(
@@ -325,11 +394,10 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
         );
         println!("    review it, then: ergocell trajectories approve --class {class} --by <principal> --key <ssh key>");
     }
-    if failed.is_empty() {
-        Ok(())
-    } else {
-        bail!("not locked: {}", list(&failed))
+    if let Some(why) = &ctx.trust_problem {
+        eprintln!("note: the approvers' files are not trusted, so no approval of these locks will count until they are: {why}");
     }
+    Ok(())
 }
 
 /// Re-plan the class from the current inputs and check that the lock holds exactly that trajectory:
@@ -377,6 +445,9 @@ fn approve(
     by: Option<&str>,
     how: ApproveHow<'_>,
 ) -> anyhow::Result<()> {
+    if let Some(why) = &ctx.trust_problem {
+        bail!("the approvers' files are not trusted: {why}\nrefusing to approve");
+    }
     let (spec, current) = ctx.spec(class)?;
     let lock_path = ctx.layout.lock(class);
     let lock_text = read(&lock_path)
@@ -473,6 +544,9 @@ fn verify(
     allow_unapproved: bool,
 ) -> anyhow::Result<()> {
     let mut failed = Vec::new();
+    if let Some(why) = &ctx.trust_problem {
+        println!("approvers: NOT TRUSTED — {why}\n  (no approval counts until the site's approvers authority signs these files)");
+    }
     for class in classes(class) {
         let (spec, current) = ctx.spec(class)?;
         let lock_path = ctx.layout.lock(class);
@@ -502,7 +576,15 @@ fn verify(
                 continue;
             }
         }
-        match lock::verify(&inputs) {
+        let verified = lock::verify(&inputs).and_then(|approved| {
+            ergocell::session::provider::check_approval_times(&approved, trust_anchor::now_unix())
+                .map(|()| approved)
+                .map_err(|why| lock::VerifyFailure {
+                    class,
+                    problems: vec![ergocell_robot::RobotError::Config { reason: why }],
+                })
+        });
+        match verified {
             Ok(approved) => {
                 let names: Vec<String> = approved
                     .approvals()
@@ -546,6 +628,54 @@ fn verify(
     } else {
         bail!("verification failed: {}", list(&failed))
     }
+}
+
+/// The site's approvers authority signs the approvers' files (see [`Sub::SignApprovers`]). When the
+/// authority is installed here the signature is checked against it before it is written; a
+/// signature it would refuse is never written.
+fn sign_approvers(ctx: &Context, key: Option<&Path>, signed: Option<&Path>) -> anyhow::Result<()> {
+    let (allowed, revoked) = &ctx.trust_texts;
+    let signature = match (key, signed) {
+        (Some(key_path), None) => {
+            let key = signing::private_key_from_openssh(&read(key_path)?)
+                .map_err(|e| UsageError(format!("{}: {e}", key_path.display())))?;
+            authority::sign_approvers(allowed, revoked, &key)?
+        }
+        (None, Some(sig_path)) => read(sig_path)?,
+        _ => {
+            return Err(
+                UsageError("sign-approvers needs one of --key or --signed".to_owned()).into(),
+            )
+        }
+    };
+    let anchor = trust_anchor::anchor_dir();
+    let checked = match trust_anchor::load_authority(&anchor) {
+        Ok(authority) => {
+            authority
+                .verify(allowed, revoked, &signature)
+                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to write the signature"))?;
+            format!(
+                "checked against the site's approvers authority in {} ({})",
+                anchor.display(),
+                authority.fingerprints()
+            )
+        }
+        Err(trust_anchor::AnchorError::Missing(path)) => format!(
+            "NOT checked: no approvers authority is installed here ({} does not exist); the cell \
+             trusts these approvers only if its authority holds the signing key",
+            path.display()
+        ),
+        Err(e) => bail!("{e}\nrefusing to write the signature"),
+    };
+    let path = ctx.cell_dir.join(authority::APPROVERS_SIGNATURE);
+    write(&path, &signature)?;
+    println!(
+        "approvers signed: {} ({} key(s) trusted, {})",
+        path.display(),
+        TrustedSigners::parse(allowed, revoked)?.keys().len(),
+        checked
+    );
+    Ok(())
 }
 
 fn list(classes: &[TrajectoryClass]) -> String {

@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context as _};
+use ergocell::input::{self, Kind};
 use ergocell_cell::{Reconstruction, ReconstructionConfig};
 use ergocell_perception::detections::{Frame2, ImportStats};
 use ergocell_perception::import::{
@@ -84,8 +85,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         )));
     }
     let calibration_name = args.calibration.display().to_string();
-    let text = std::fs::read_to_string(&args.calibration)
-        .with_context(|| format!("reading {calibration_name}"))?;
+    let text = input::read_text(&args.calibration, Kind::Config)?;
     let (rig, rig_format) =
         parse_rig(&text, &calibration_name).map_err(|e| UsageError(e.to_string()))?;
     eprintln!(
@@ -202,6 +202,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let elapsed = started.elapsed().as_secs_f64();
     if written != frame_count {
         out.discard();
+        if let Some(w) = source.stats().warning() {
+            bail!(
+                "{}: {frame_count} frames found, {written} usable: {w}",
+                args.detections.display()
+            );
+        }
         bail!(
             "{}: {frame_count} frames announced, {written} read (the detections changed while being read?)",
             args.detections.display()
@@ -396,7 +402,7 @@ impl<'r> FrameSource<'r> {
             });
         }
         eprintln!("note: {name}: rows not in sync_index order, so the whole file is read first");
-        let bytes = std::fs::read(path).with_context(|| format!("reading {name}"))?;
+        let bytes = input::read(path, Kind::Data)?;
         let mut stats = ImportStats::default();
         let frames = parse_caliscope_xy_bytes(&bytes, &name, rig, &mut stats)
             .map_err(|e| UsageError(e.to_string()))?;
@@ -510,7 +516,7 @@ impl Iterator for FrameSource<'_> {
                 // the file names are full paths (as listed)
                 plan.frame(
                     k,
-                    |_, name| std::fs::read(name).map_err(|e| format!("cannot read it: {e}")),
+                    |_, name| input::read(Path::new(name), Kind::Data).map_err(|e| e.to_string()),
                     stats,
                 )
             }
@@ -540,8 +546,7 @@ struct VideoSize {
 }
 
 fn read_video_sidecar(path: &Path) -> anyhow::Result<VideoSize> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let text = input::read_text(path, Kind::Config)?;
     serde_json::from_str(&text).map_err(|e| {
         UsageError(format!(
             "{}: not a video description (width and height in pixels): {e}",

@@ -26,6 +26,8 @@ pub struct FileTrajectories {
     trajectories_shipped: bool,
     /// `ergocell demo` (and tests): a throwaway key trusted instead of the cell's approvers.
     demo: Option<DemoSigner>,
+    /// The folder of the site's approvers authority ([`crate::trust_anchor`]).
+    anchor_dir: PathBuf,
 }
 
 /// The demo's throwaway approver: its key, the one-line trust list naming it, and the locks made
@@ -56,6 +58,7 @@ impl FileTrajectories {
             cell_shipped: crate::shipped::falls_back(cell_path),
             trajectories_shipped: crate::shipped::dir_falls_back(trajectories_dir),
             demo: None,
+            anchor_dir: crate::trust_anchor::anchor_dir(),
         }
     }
 
@@ -77,6 +80,7 @@ impl FileTrajectories {
             cell_shipped: cell_path.is_none(),
             trajectories_shipped: trajectories_dir.is_none(),
             demo: None,
+            anchor_dir: crate::trust_anchor::anchor_dir(),
         }
     }
 
@@ -103,6 +107,40 @@ impl FileTrajectories {
     /// A file of the trajectories folder (a trajectory file or a lock).
     fn read(&self, path: &Path) -> Result<String, ProviderError> {
         Self::read_from(path, self.trajectories_shipped)
+    }
+
+    /// Every file on disk this provider reads (or would, once it exists): the cell file, its URDF,
+    /// the approvers' files and the authority's signature, the trust anchor's files, and per class
+    /// the trajectory file, its lock and its approvals, and the classes' RULA curves. An output
+    /// must be none of them (`--force` or not).
+    pub fn input_files(&self) -> Vec<PathBuf> {
+        // Shipped files are listed by their place in a cell folder too: a run from this folder
+        // would read them there, and they are the user's files either way.
+        let dir = self.cell_path.parent().unwrap_or_else(|| Path::new("."));
+        let mut files = vec![self.cell_path.clone()];
+        if let Ok((_, cell, _, _)) = self.cell_and_urdf() {
+            files.push(dir.join(&cell.robot.urdf));
+        }
+        for name in [
+            signing::ALLOWED_SIGNERS,
+            signing::REVOKED_KEYS,
+            ergocell_robot::authority::APPROVERS_SIGNATURE,
+        ] {
+            files.push(dir.join(name));
+        }
+        for name in [
+            crate::trust_anchor::AUTHORITY_FILE,
+            crate::trust_anchor::ANCHOR_REVOKED,
+        ] {
+            files.push(self.anchor_dir.join(name));
+        }
+        for class in TrajectoryClass::ALL {
+            files.push(self.layout.spec(class));
+            files.push(self.layout.lock(class));
+            files.push(self.layout.approvals(class));
+        }
+        files.push(self.layout.dir().join(HANDOVER_RULA_FILE));
+        files
     }
 
     /// The cell file's text.
@@ -183,8 +221,13 @@ impl FileTrajectories {
         let spec = TrajectorySpec::from_toml_str(&spec_text)
             .map_err(|e| ProviderError(format!("{}: {e}", spec_path.display())))?;
         let (allowed, revoked) = self.trust_texts()?;
-        let trusted = TrustedSigners::parse(&allowed, &revoked)
-            .map_err(|e| ProviderError(format!("trusted approvers: {e}")))?;
+        let trusted = if self.demo.is_some() {
+            TrustedSigners::parse(&allowed, &revoked).map_err(|e| e.to_string())
+        } else {
+            let dir = self.cell_path.parent().unwrap_or_else(|| Path::new("."));
+            crate::trust_anchor::trusted_signers(dir, &allowed, &revoked, &self.anchor_dir)
+        }
+        .map_err(|e| ProviderError(format!("trusted approvers: {e}")))?;
         let hashes = InputHashes::new(
             spec_text.as_bytes(),
             urdf_text.as_bytes(),
@@ -212,6 +255,14 @@ impl FileTrajectories {
                 .map(|(c, _, demo, reviewed)| (*c, demo.clone(), reviewed.clone()))
                 .collect()
         })
+    }
+
+    /// The folder of the site's approvers authority, instead of the environment's or the default
+    /// ([`crate::trust_anchor::anchor_dir`]).
+    #[must_use]
+    pub fn with_anchor_dir(mut self, dir: &Path) -> Self {
+        dir.clone_into(&mut self.anchor_dir);
+        self
     }
 
     /// For `ergocell demo` and tests: trust only a throwaway Ed25519 key made from `seed` (principal
@@ -383,8 +434,19 @@ impl TrajectoryProvider for FileTrajectories {
             approvals_toml: approvals.as_deref(),
             trusted: &trusted,
         };
-        lock::verify(&inputs).map_err(|f| ProviderError(f.to_string()))
+        let approved = lock::verify(&inputs).map_err(|f| ProviderError(f.to_string()))?;
+        check_approval_times(&approved, crate::trust_anchor::now_unix()).map_err(ProviderError)?;
+        Ok(approved)
     }
+}
+
+/// Every approval's time is one an approval can bear now ([`signing::check_approval_time`]).
+pub fn check_approval_times(approved: &ApprovedTrajectory, now_unix: i64) -> Result<(), String> {
+    for a in approved.approvals() {
+        signing::check_approval_time(&a.approved_at_utc, now_unix)
+            .map_err(|e| format!("approval by {}: {e}", signing::printable(&a.approved_by)))?;
+    }
+    Ok(())
 }
 
 /// What [`FileTrajectories::current`] read.

@@ -28,17 +28,9 @@ tmp=$(mktemp -d)
 trap 'if [ -n "${KEEP_LOGS:-}" ]; then cp "$tmp"/*.run "$tmp"/*.peer "$tmp"/*.json "$KEEP_LOGS"/ 2>/dev/null; fi; rm -rf "$tmp"' EXIT
 
 "$bin" --log error demo --cycles 1 --fps 30 --no-faults --out "$tmp/session.mcap" > "$tmp/demo.log"
-# A signed approval for this test only (as .ci/interop/run.sh does): a throwaway key, c2 re-locked under
-# a trust file naming it.
-mkdir -p "$tmp/traj" "$tmp/cell"
-cp -r config/. "$tmp/cell/"
-cp trajectories/c*.toml trajectories/handover_rula.toml "$tmp/traj/"
-ssh-keygen -q -t ed25519 -N "" -C "ergocell rclpy test key (not a sign-off)" -f "$tmp/key"
-printf 'rclpy@ci.invalid namespaces="ergocell-trajectory-approval" %s\n' "$(cat "$tmp/key.pub")" \
-  > "$tmp/cell/approvers/allowed_signers"
-"$bin" trajectories --cell "$tmp/cell/cell.toml" --trajectories-dir "$tmp/traj" lock --class c2 > /dev/null
-"$bin" trajectories --cell "$tmp/cell/cell.toml" --trajectories-dir "$tmp/traj" approve --class c2 \
-  --by rclpy@ci.invalid --key "$tmp/key" > /dev/null
+# A signed approval for this test only (.ci/interop/approved-cell.sh): c2 of a copy of the cell.
+who=rclpy@ci.invalid
+source .ci/interop/approved-cell.sh
 
 # The action cell: the same cell, commanding through FollowJointTrajectory.
 python3 - "$tmp/cell/cell.toml" "$tmp/cell/action.toml" <<'PY'
