@@ -27,15 +27,10 @@ fn ssh_keygen() -> Option<&'static str> {
 }
 
 fn ergocell(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
+    common::outcome(
+        Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(dir)
+            .args(args),
     )
 }
 

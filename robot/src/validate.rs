@@ -771,8 +771,20 @@ fn check_inputs(
     let dof = model.dof();
     let controller_names = cell.robot.controller_joint_names.names(dof)?;
     if cell.robot.max_acceleration_rad_s2.len() != dof {
+        // Say where the expected count comes from: a URDF whose chain was cut reads as a wrong
+        // acceleration list otherwise.
         return Err(RobotError::DofMismatch {
-            what: "robot.max_acceleration_rad_s2".to_owned(),
+            what: format!(
+                "robot.max_acceleration_rad_s2 (one per moving joint of the URDF's chain {} → {}: {})",
+                cell.robot.base_link,
+                cell.robot.flange_link,
+                model
+                    .joints()
+                    .iter()
+                    .map(|j| j.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
             expected: dof,
             got: cell.robot.max_acceleration_rad_s2.len(),
         });

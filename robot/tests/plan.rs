@@ -348,3 +348,19 @@ fn the_planar_arm_recovers_the_posture_that_reaches_a_point() {
     assert!(!tall.in_zone() && (tall.elbow_flexion_rad.to_degrees() - 57.2).abs() < 0.1);
     assert!(ArmPosture::holding(1.50, 0.394, 0.963).unwrap().in_zone());
 }
+
+/// A URDF chain cut short (here the flange named at link_4: 4 moving joints) is said as such: the
+/// acceleration list's count is explained by the chain it must match, joints named.
+#[test]
+fn a_cut_urdf_chain_names_the_chain_not_only_the_acceleration_list() {
+    let mut s = common::shipped();
+    s.model = ergocell_robot::RobotModel::from_urdf_str(&s.urdf, "link_0", "link_4").unwrap();
+    s.cell.robot.flange_link = "link_4".to_owned();
+    let spec = TrajectorySpec::from_toml_str(&common::spec_text(TrajectoryClass::C2)).unwrap();
+    let e = plan(&s, &spec).unwrap_err().to_string();
+    assert!(
+        e.contains("one per moving joint of the URDF's chain link_0 → link_4")
+            && e.contains("expected 4 values, got 7"),
+        "{e}"
+    );
+}

@@ -236,6 +236,16 @@ pub fn key_file(dir: &Path, name: &str, seed: u8, principal: &str) -> String {
     )
 }
 
+/// Runs `command` to its end: (exit code, stdout, stderr).
+pub fn outcome(command: &mut Command) -> (i32, String, String) {
+    let out = command.output().unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
 /// Whether this process runs as root (/proc/self is owned by the effective uid).
 pub fn is_root() -> bool {
     use std::os::unix::fs::MetadataExt as _;
@@ -299,16 +309,11 @@ impl AnchoredCell {
 
     /// Runs the binary in the cell's folder with the anchor: (exit code, stdout, stderr).
     pub fn ergocell(&self, args: &[&str]) -> (i32, String, String) {
-        let out = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-            .current_dir(&self.dir)
-            .env("ERGOCELL_TRUST_ANCHOR_DIR", &self.anchor)
-            .args(args)
-            .output()
-            .unwrap();
-        (
-            out.status.code().unwrap(),
-            String::from_utf8(out.stdout).unwrap(),
-            String::from_utf8(out.stderr).unwrap(),
+        outcome(
+            Command::new(env!("CARGO_BIN_EXE_ergocell"))
+                .current_dir(&self.dir)
+                .env("ERGOCELL_TRUST_ANCHOR_DIR", &self.anchor)
+                .args(args),
         )
     }
 
