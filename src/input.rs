@@ -50,10 +50,11 @@ impl Kind {
 #[non_exhaustive]
 pub enum InputError {
     /// The file cannot be opened or read.
-    #[error("cannot read {}: {source}", path.display())]
+    #[error("cannot read {}: {error}", path.display())]
     Io {
         path: PathBuf,
-        source: std::io::Error,
+        // Not `source`: the message already says it, and `{:#}` would print it twice.
+        error: std::io::Error,
     },
     /// A folder, or a device.
     #[error("{} is {what}, not a file", path.display())]
@@ -73,9 +74,9 @@ pub enum InputError {
 /// Reads `path` whole as `kind` (see the module docs).
 pub fn read(path: &Path, kind: Kind) -> Result<Vec<u8>, InputError> {
     use std::os::unix::fs::FileTypeExt as _;
-    let io = |source| InputError::Io {
+    let io = |error| InputError::Io {
         path: path.to_owned(),
-        source,
+        error,
     };
     let meta = fs::metadata(path).map_err(io)?;
     let file_type = meta.file_type();

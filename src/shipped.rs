@@ -91,7 +91,6 @@ pub fn dir_falls_back(dir: &std::path::Path) -> bool {
 /// A command's input file: the file at `path`, or when [`falls_back`] the shipped one (and a note on
 /// stderr says so). Returns the text and the name to use in messages.
 pub fn read_or_shipped(path: &std::path::Path) -> anyhow::Result<(String, String)> {
-    use anyhow::Context as _;
     if let Some(text) = file(path).filter(|_| falls_back(path)) {
         eprintln!(
             "note: {} is not in {}: using the one shipped in the binary",
@@ -100,8 +99,7 @@ pub fn read_or_shipped(path: &std::path::Path) -> anyhow::Result<(String, String
         );
         return Ok((text.to_owned(), label(&path.display().to_string())));
     }
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let text = crate::input::read_text(path, crate::input::Kind::Config)?;
     Ok((text, path.display().to_string()))
 }
 

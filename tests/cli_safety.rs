@@ -622,3 +622,39 @@ fn an_output_onto_any_file_the_cell_reads_is_refused_even_with_force() {
     }
     assert_eq!(std::fs::read_to_string(approvals).unwrap(), "# approvals\n");
 }
+
+/// One rule for exit codes on bad input: a missing, unreadable or malformed input file is exit 2
+/// (as clap's usage errors), whichever command reads it; the message names the file once.
+#[test]
+fn a_missing_or_malformed_input_is_exit_2_for_every_command() {
+    let dir = Scratch::new("exit-codes");
+    dir.file("bad.toml", "this is [ not toml\n");
+    dir.file("bad.json", "not json\n");
+    for args in [
+        &["run", "--config", "nosuch.toml", "--max-secs", "1"][..],
+        &["run", "--config", "bad.toml", "--max-secs", "1"][..],
+        &["demo", "--cell", "nosuch.toml", "--out", "a.mcap"][..],
+        &["demo", "--cell", "bad.toml", "--out", "a.mcap"][..],
+        &["demo", "--trajectories", "nosuch", "--out", "a.mcap"][..],
+        &[
+            "security",
+            "create-keystore",
+            "--keystore",
+            "ks",
+            "--config",
+            "nosuch.toml",
+        ][..],
+        &["trajectories", "--cell", "bad.toml", "validate"][..],
+        &["report", "nosuch.mcap", "--out", "r.html"][..],
+        &["report", "bad.json", "--out", "r.html"][..],
+        &["rula", "score", "--input", "bad.json"][..],
+        &["rula", "track", "--landmarks", "nosuch.json"][..],
+    ] {
+        let o = ergocell(&dir.0, args);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        let once = err.matches("No such file or directory").count() <= 1;
+        assert!(once, "{args:?} says it twice: {err}");
+    }
+}

@@ -368,9 +368,11 @@ pub fn check_utc_time(text: &str) -> Result<(), ApprovalError> {
 pub const EARLIEST_APPROVAL_UTC: &str = "2026-01-01T00:00:00Z";
 const EARLIEST_APPROVAL_UNIX: i64 = 1_767_225_600;
 
-/// How far in the future of the verifying machine's clock an approval's time may be (clocks of two
-/// machines disagree by seconds, not minutes).
-pub const APPROVAL_CLOCK_SKEW_S: i64 = 300;
+/// How far in the future of the verifying machine's clock an approval's time may be: a day. The
+/// approving machine's clock and the cell PC's may disagree, and the cell's may be stepped back
+/// mid-session (NTP, a wrong time set by hand) while the robot must keep serving; a date years
+/// ahead is still refused.
+pub const APPROVAL_CLOCK_SKEW_S: i64 = 86_400;
 
 /// Checks that an approval's time (already well formed, [`check_utc_time`]) is one an approval can
 /// bear at `now_unix` (seconds, the verifying machine's clock): not before

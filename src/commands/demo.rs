@@ -535,7 +535,8 @@ fn demo_provider(
         approvals_dir,
     )
     .with_demo_key(&seed)
-    .map_err(|e| anyhow::anyhow!("demo approvals: {e}"))?;
+    // The cell's or the trajectories' files could not be read or used: bad input.
+    .map_err(|e| UsageError(format!("demo approvals: {e}")))?;
     println!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
     println!(
         "  DEMO APPROVAL: the shipped trajectories are re-locked and approved for this run only, in {},",
