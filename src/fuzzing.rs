@@ -206,9 +206,24 @@ pub fn approvals_toml(data: &[u8]) {
         for a in &file.approval {
             assert!(nobody.verify(&a.claim(), &a.signature).is_err());
             if ergocell_robot::signing::check_claim(&a.claim()).is_ok() {
-                let fields = ergocell_robot::signing::parse_approval_message(&a.message())
-                    .unwrap_or_else(|e| panic!("a checked claim's message must parse: {e}"));
+                let (action, fields) =
+                    ergocell_robot::signing::parse_approval_message(&a.message())
+                        .unwrap_or_else(|e| panic!("a checked claim's message must parse: {e}"));
                 assert_eq!(fields[2], a.approved_by);
+                assert_eq!(action, a.action);
+            }
+        }
+        // What the chain decides, and the witness's check and next line: in range, never a panic.
+        for class in ergocell_robot::TrajectoryClass::ALL {
+            let standing = file.standing(class);
+            assert!(standing
+                .approvals
+                .iter()
+                .chain(standing.withdrawn.iter())
+                .all(|&i| i < file.approval.len()));
+            let witness = ergocell_robot::witness::Witness::parse(text);
+            if witness.check("a", class, &file).is_ok() {
+                let _ = witness.sighting_line("a", class, &file, &nobody, "2026-12-05T00:00:00Z");
             }
         }
     }

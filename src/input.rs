@@ -71,6 +71,13 @@ pub enum InputError {
     NotUtf8 { path: PathBuf, at: usize },
 }
 
+impl InputError {
+    /// The file is not there (as opposed to there and unreadable).
+    pub fn is_not_found(&self) -> bool {
+        matches!(self, InputError::Io { error, .. } if error.kind() == std::io::ErrorKind::NotFound)
+    }
+}
+
 /// Reads `path` whole as `kind` (see the module docs).
 pub fn read(path: &Path, kind: Kind) -> Result<Vec<u8>, InputError> {
     use std::os::unix::fs::FileTypeExt as _;

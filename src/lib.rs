@@ -15,5 +15,6 @@ pub mod session;
 pub mod shipped;
 pub mod sim_record;
 pub mod trust_anchor;
+pub mod witness;
 
 pub use ergocell_ros_backend::{messages, recording, robot_markers};

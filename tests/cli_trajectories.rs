@@ -359,7 +359,9 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
             "bob.txt",
         ]);
         assert!(code == 1 && err.contains("write a new message"), "{err}");
+        // Rolled back to alice's approval on purpose: the witness that would refuse it is cleared.
         std::fs::write(&approvals, &good).unwrap();
+        forget_witness(&cell.dir);
     }
 
     // The last entry edited (its time): the chain cannot see it, the signature does.
@@ -419,6 +421,11 @@ fn approvals_are_signed_and_forgeries_are_refused_naming_why() {
     assert!(code == 1 && err.contains("is revoked"), "{err}");
     let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
     assert!(code == 1 && out.contains("none for this hash"), "{out}");
+}
+
+/// Deletes the cell's witness of its approvals, for tests that swap approvals files on purpose.
+fn forget_witness(cell: &Path) {
+    let _ = std::fs::remove_dir_all(cell.join("trajectories/approvals/.witness"));
 }
 
 /// `good` with its (only) approved_at_utc value replaced by `value`.
@@ -808,6 +815,8 @@ fn approvals_dated_1970_or_2099_are_refused() {
         let mut file = ApprovalsFile::default();
         file.approve(&lock, ALICE, date, &trusted, &alice).unwrap();
         std::fs::write(&approvals, file.to_toml().unwrap()).unwrap();
+        // Each date on a fresh file: the witness of the one before would refuse the swap.
+        forget_witness(&cell.dir);
         let (code, out, _) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
         assert!(
             code == 1 && out.contains("c2: FAIL") && out.contains(date) && out.contains(why),
@@ -820,4 +829,163 @@ fn approvals_dated_1970_or_2099_are_refused() {
             .to_string();
         assert!(refused.contains(why), "{refused}");
     }
+}
+
+/// The lock's whole history binds its approval: a lock restored from an older copy, lock and
+/// approvals restored together, and a deleted withdrawal are each refused by `verify` and by the
+/// provider `run` uses, naming why; a withdrawal stops the class until it is approved anew.
+#[test]
+fn a_rollback_a_restored_lock_and_a_deleted_withdrawal_are_refused() {
+    use ergocell::session::TrajectoryProvider as _;
+    use ergocell_robot::TrajectoryClass;
+    let Some(cell) = AnchoredCell::new("trajectories_rollback") else {
+        return;
+    };
+    let lock_path = cell.dir.join("trajectories/locks/c2.lock.toml");
+    let approvals_path = cell.dir.join("trajectories/approvals/c2.toml");
+    let verify = || cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+    let refused = || {
+        cell.provider()
+            .verify(TrajectoryClass::C2)
+            .unwrap_err()
+            .to_string()
+    };
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    let old_lock = std::fs::read(&lock_path).unwrap();
+    let old_approvals = std::fs::read(&approvals_path).unwrap();
+    // The class changed (a comment is enough: the trajectory file's hash is in the lock), re-locked
+    // and the new lock approved.
+    let spec = cell.dir.join("trajectories/c2.toml");
+    let mut text = std::fs::read_to_string(&spec).unwrap();
+    text.push_str("# reviewed again\n");
+    std::fs::write(&spec, text).unwrap();
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = cell.approve("c2", BOB, "keys/bob");
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, _) = verify();
+    assert!(code == 0 && out.contains("c2: OK"), "{out}");
+    let new_lock = std::fs::read(&lock_path).unwrap();
+    let new_approvals = std::fs::read(&approvals_path).unwrap();
+    // The witness lives beside the approvals, never tracked by git.
+    let witness = cell.dir.join("trajectories/approvals/.witness");
+    assert_eq!(
+        std::fs::read_to_string(witness.join(".gitignore"))
+            .unwrap()
+            .lines()
+            .last(),
+        Some("*")
+    );
+
+    // 1. The old lock (and the old trajectory file) restored beside the current approvals.
+    let new_spec = std::fs::read(&spec).unwrap();
+    std::fs::write(
+        &spec,
+        &new_spec[..new_spec.len() - "# reviewed again\n".len()],
+    )
+    .unwrap();
+    std::fs::write(&lock_path, &old_lock).unwrap();
+    let (code, out, _) = verify();
+    assert!(
+        code == 1
+            && out.contains("this lock was approved (entry 0, by alice@plant.example")
+            && out.contains("restored from a backup or from git"),
+        "{out}"
+    );
+    assert!(refused().contains("restored from a backup or from git"));
+    // 2. Its approvals restored with it: the chain is the old one, valid in itself; the witness
+    // saw two entries.
+    std::fs::write(&approvals_path, &old_approvals).unwrap();
+    let (code, out, _) = verify();
+    assert!(
+        code == 1
+            && out.contains("has 1 entries, but on")
+            && out.contains("it had 2")
+            && out.contains("restored from an older copy"),
+        "{out}"
+    );
+    assert!(refused().contains("restored from an older copy"));
+    // Approving on top of the cut-back file is refused too (it would fork the chain).
+    let (code, _, err) = cell.approve("c2", ALICE, "keys/alice");
+    assert!(
+        code == 1 && err.contains("restored from an older copy"),
+        "{err}"
+    );
+
+    // 3. The current files back: OK. Bob withdraws: refused, saying so; run refuses the class.
+    std::fs::write(&spec, &new_spec).unwrap();
+    std::fs::write(&lock_path, &new_lock).unwrap();
+    std::fs::write(&approvals_path, &new_approvals).unwrap();
+    let (code, out, _) = verify();
+    assert!(code == 0 && out.contains("c2: OK"), "{out}");
+    let (code, out, err) = cell.ergocell(&[
+        "trajectories",
+        "withdraw",
+        "--class",
+        "c2",
+        "--by",
+        BOB,
+        "--key",
+        "keys/bob",
+    ]);
+    assert!(
+        code == 0 && out.contains("WITHDRAWN by bob@plant.example"),
+        "{out}{err}"
+    );
+    let (code, out, _) = verify();
+    assert!(
+        code == 1 && out.contains("its approval was withdrawn (entry 2, by bob@plant.example"),
+        "{out}"
+    );
+    assert!(refused().contains("withdrawn"));
+    let withdrawn = std::fs::read(&approvals_path).unwrap();
+    // Mallory's key cannot withdraw (nor could it approve).
+    let (code, _, err) = cell.ergocell(&[
+        "trajectories",
+        "withdraw",
+        "--class",
+        "c2",
+        "--by",
+        BOB,
+        "--key",
+        "keys/mallory",
+    ]);
+    assert!(code == 1 && err.contains("refusing to withdraw"), "{err}");
+    // 4. The withdrawal deleted (the file as it was before it): the witness saw it.
+    std::fs::write(&approvals_path, &new_approvals).unwrap();
+    let (code, out, _) = verify();
+    assert!(code == 1 && out.contains("it had 3"), "{out}");
+    assert!(refused().contains("it had 3"));
+    // Nothing is added on top of the cut-back file either.
+    let (code, out, err) = cell.ergocell(&[
+        "trajectories",
+        "withdraw",
+        "--class",
+        "c2",
+        "--by",
+        BOB,
+        "--key",
+        "keys/bob",
+    ]);
+    assert!(
+        code == 1 && err.contains("restored from an older copy"),
+        "{out}{err}"
+    );
+    // 5. The withdrawal back, and the lock approved anew after review: it runs.
+    std::fs::write(&approvals_path, &withdrawn).unwrap();
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, _) = verify();
+    assert!(code == 0 && out.contains("c2: OK"), "{out}");
+    cell.provider().verify(TrajectoryClass::C2).unwrap();
+    // The witness holds one line per new length seen: 1, 2, 3 and 4 entries.
+    let sighted = std::fs::read_to_string(witness.join("witness.jsonl")).unwrap();
+    assert_eq!(sighted.lines().count(), 4, "{sighted}");
+    // 6. The whole approvals file deleted: an empty chain, where the witness saw four entries.
+    std::fs::remove_file(&approvals_path).unwrap();
+    let (code, out, _) = verify();
+    assert!(code == 1 && out.contains("has 0 entries, but on"), "{out}");
 }

@@ -74,6 +74,19 @@ pub enum RobotError {
         lock_sha256: String,
         detail: String,
     },
+    /// The approvals file holds less than the witness saw of it, or other entries: entries were
+    /// deleted or edited, or it was restored from an older copy ([`crate::witness`]).
+    #[error(
+        "{class}: the approvals file {what} (witness line {witness_line}): entries were removed or \
+         edited, or the file was restored from an older copy. Restore the newer file; an approval \
+         or withdrawal once seen cannot be taken back by deleting it"
+    )]
+    RolledBack {
+        class: String,
+        /// What differs, e.g. "has 1 entries, but on 2026-12-05T00:13:00Z it had 2".
+        what: String,
+        witness_line: usize,
+    },
     /// An approval of the lock is there but cannot be trusted (bad signature, untrusted or revoked
     /// key, malformed time, …): the lock is refused.
     #[error("{class}: approval entry {entry} (approved by {approved_by}) refused: {reason}")]

@@ -17,6 +17,8 @@
 //!   approval's SSH signature covers.
 //! * [`authority`]: the site's approvers authority, whose signature makes the approvers' files count
 //!   (the trust anchor outside the project folder).
+//! * [`witness`]: what the cell has seen of each approvals file, so that one cut back (a deleted
+//!   withdrawal, a rollback from a backup) is refused.
 //!
 //! The library reads no files: it parses strings, and the binary reads files and the clock. It knows
 //! nothing of cameras, ergonomics or ROS. The lock is a software guarantee on top of the robot's own
@@ -40,6 +42,7 @@ pub mod pose;
 pub mod qp;
 pub mod signing;
 pub mod validate;
+pub mod witness;
 
 pub use config::{CellConfig, TrajectoryClass, TrajectorySpec};
 pub use error::RobotError;

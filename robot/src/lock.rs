@@ -9,11 +9,16 @@
 //!   SHA-256 of the previous entry (so the file is a hash chain and an edited or removed earlier entry
 //!   is caught), and the approver's **SSH signature** over exactly those fields
 //!   ([`crate::signing::approval_message`]): without the private key of a trusted approver no one can
-//!   write an approval, edit one (the last included) or move one to another lock.
+//!   write an approval, edit one (the last included) or move one to another lock. An entry with
+//!   `action = "withdraw"` (signed over a message of its own kind) takes the standing approval back.
+//! * **The chain decides** ([`ApprovalsFile::standing`]): only the lock named by the class's *last*
+//!   approval may run, and not once a withdrawal follows it. A lock file restored from an older copy
+//!   is refused as superseded, and a withdrawn lock runs again only when approved anew. What the
+//!   chain cannot show by itself (its own last entries deleted) the [`crate::witness`] catches.
 //! * [`verify`] checks the lock's own hash, every input hash against the current files (the trusted
-//!   approvers' files among them), the locked samples against the current URDF's limits, and that an
-//!   approval of exactly this lock hash carries a valid signature by a trusted, unrevoked key for its
-//!   principal. Only then does it hand out an [`ApprovedTrajectory`], the only thing the controller
+//!   approvers' files among them), the locked samples against the current URDF's limits, and that the
+//!   chain's standing approval is of exactly this lock hash, each of its entries signed by a
+//!   trusted, unrevoked key for its principal. Only then does it hand out an [`ApprovedTrajectory`], the only thing the controller
 //!   may send.
 //! * [`check_matches_validation`] ties the samples to validation: the review commands re-plan from the
 //!   current inputs and refuse a lock (hand-edited and re-hashed, say) that does not hold that result.
@@ -31,7 +36,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::config::TrajectoryClass;
 use crate::model::RobotModel;
-use crate::signing::{self, ApprovalClaim, TrustedSigners};
+use crate::signing::{self, Action, ApprovalClaim, TrustedSigners};
 use crate::validate::{sha256_hex, InputHashes, LockedTrajectory, SAFETY_NOTE};
 use crate::RobotError;
 
@@ -235,6 +240,10 @@ impl LockFile {
 #[serde(deny_unknown_fields)]
 pub struct Approval {
     pub class: TrajectoryClass,
+    /// An approval (the default, and then not written) or a withdrawal of the approval of
+    /// `lock_sha256`.
+    #[serde(default, skip_serializing_if = "Action::is_approve")]
+    pub action: Action,
     pub lock_sha256: String,
     /// The approver's principal, as the allowed-signers file lists it.
     pub approved_by: String,
@@ -252,6 +261,7 @@ impl Approval {
     /// The fields the signature covers.
     pub fn claim(&self) -> ApprovalClaim<'_> {
         ApprovalClaim {
+            action: self.action,
             class: self.class.as_str(),
             lock_sha256: &self.lock_sha256,
             approved_by: &self.approved_by,
@@ -341,6 +351,54 @@ impl ApprovalsFile {
         Ok((principal, self.head_sha256()))
     }
 
+    /// What the chain says of `class` now: which lock its last approval names, who approved it
+    /// since, and whether that approval was withdrawn after. Entries for another class are passed
+    /// over (they are [`verify`]'s business). Signatures are not checked here.
+    pub fn standing(&self, class: TrajectoryClass) -> Standing {
+        let mut standing = Standing::default();
+        for (i, e) in self.approval.iter().enumerate() {
+            if e.class != class {
+                continue;
+            }
+            let same = standing.lock_sha256.as_deref() == Some(e.lock_sha256.as_str());
+            match e.action {
+                Action::Approve if same && standing.withdrawn.is_none() => {
+                    standing.approvals.push(i);
+                }
+                Action::Approve => {
+                    standing = Standing {
+                        lock_sha256: Some(e.lock_sha256.clone()),
+                        approvals: vec![i],
+                        withdrawn: None,
+                    };
+                }
+                Action::Withdraw if same && standing.withdrawn.is_none() => {
+                    standing.withdrawn = Some(i);
+                }
+                // Withdrawing what does not stand changes nothing (and is refused when written).
+                Action::Withdraw => {}
+            }
+        }
+        standing
+    }
+
+    /// The lock hash a withdrawal of `class` now takes back: the standing, not withdrawn approval's.
+    fn withdrawable(&self, class: TrajectoryClass) -> Result<String, RobotError> {
+        let standing = self.standing(class);
+        match (standing.lock_sha256, standing.withdrawn) {
+            (Some(lock), None) => Ok(lock),
+            (Some(_), Some(i)) => Err(RobotError::Config {
+                reason: format!(
+                    "nothing to withdraw: the approval of {class} was already withdrawn (entry {i}, by {})",
+                    signing::printable(&self.approval[i].approved_by)
+                ),
+            }),
+            (None, _) => Err(RobotError::Config {
+                reason: format!("nothing to withdraw: no approval of {class} in this file"),
+            }),
+        }
+    }
+
     /// The exact message the next approval of `lock` by `principal` at `approved_at_utc` signs, for
     /// signing outside ergocell (`ssh-keygen -Y sign`, then [`ApprovalsFile::append_signed`]).
     pub fn next_message(
@@ -351,10 +409,31 @@ impl ApprovalsFile {
     ) -> Result<String, RobotError> {
         let (principal, previous_sha256) = self.next_fields(principal, approved_at_utc)?;
         Ok(signing::approval_message(&ApprovalClaim {
+            action: Action::Approve,
             class: lock.class.as_str(),
             lock_sha256: &lock.lock_sha256,
             approved_by: principal,
             approved_at_utc,
+            previous_sha256: &previous_sha256,
+        }))
+    }
+
+    /// The exact message the withdrawal of `class`'s standing approval by `principal` at
+    /// `withdrawn_at_utc` signs (then [`ApprovalsFile::append_signed_withdrawal`]).
+    pub fn next_withdrawal_message(
+        &self,
+        class: TrajectoryClass,
+        principal: &str,
+        withdrawn_at_utc: &str,
+    ) -> Result<String, RobotError> {
+        let (principal, previous_sha256) = self.next_fields(principal, withdrawn_at_utc)?;
+        let lock_sha256 = self.withdrawable(class)?;
+        Ok(signing::approval_message(&ApprovalClaim {
+            action: Action::Withdraw,
+            class: class.as_str(),
+            lock_sha256: &lock_sha256,
+            approved_by: principal,
+            approved_at_utc: withdrawn_at_utc,
             previous_sha256: &previous_sha256,
         }))
     }
@@ -370,24 +449,75 @@ impl ApprovalsFile {
         key: &ssh_key::PrivateKey,
     ) -> Result<&Approval, RobotError> {
         let (principal, previous_sha256) = self.next_fields(principal, approved_at_utc)?;
-        let claim = ApprovalClaim {
-            class: lock.class.as_str(),
-            lock_sha256: &lock.lock_sha256,
-            approved_by: principal,
+        self.sign_and_push(
+            Action::Approve,
+            lock.class,
+            lock.lock_sha256.clone(),
+            principal,
             approved_at_utc,
+            previous_sha256,
+            trusted,
+            key,
+        )
+    }
+
+    /// Append the withdrawal of `class`'s standing approval by `principal` at `withdrawn_at_utc`,
+    /// signed with `key`: any trusted approver may withdraw (stopping a motion is the safe way), and
+    /// the lock does not run again until an approval of it follows. Needs no lock file: the
+    /// withdrawal names the hash the chain approved.
+    pub fn withdraw(
+        &mut self,
+        class: TrajectoryClass,
+        principal: &str,
+        withdrawn_at_utc: &str,
+        trusted: &TrustedSigners,
+        key: &ssh_key::PrivateKey,
+    ) -> Result<&Approval, RobotError> {
+        let (principal, previous_sha256) = self.next_fields(principal, withdrawn_at_utc)?;
+        let lock_sha256 = self.withdrawable(class)?;
+        self.sign_and_push(
+            Action::Withdraw,
+            class,
+            lock_sha256,
+            principal,
+            withdrawn_at_utc,
+            previous_sha256,
+            trusted,
+            key,
+        )
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn sign_and_push(
+        &mut self,
+        action: Action,
+        class: TrajectoryClass,
+        lock_sha256: String,
+        principal: &str,
+        at_utc: &str,
+        previous_sha256: String,
+        trusted: &TrustedSigners,
+        key: &ssh_key::PrivateKey,
+    ) -> Result<&Approval, RobotError> {
+        let claim = ApprovalClaim {
+            action,
+            class: class.as_str(),
+            lock_sha256: &lock_sha256,
+            approved_by: principal,
+            approved_at_utc: at_utc,
             previous_sha256: &previous_sha256,
         };
         let signature = trusted.sign(&claim, key)?;
         self.push_checked(
             Approval {
-                class: lock.class,
-                lock_sha256: lock.lock_sha256.clone(),
+                class,
+                action,
+                lock_sha256,
                 approved_by: principal.to_owned(),
-                approved_at_utc: approved_at_utc.to_owned(),
+                approved_at_utc: at_utc.to_owned(),
                 previous_sha256,
                 signature,
             },
-            lock,
             trusted,
         )
     }
@@ -402,43 +532,94 @@ impl ApprovalsFile {
         signature: &str,
         trusted: &TrustedSigners,
     ) -> Result<&Approval, RobotError> {
-        let [class, lock_sha256, approved_by, approved_at_utc, previous_sha256] =
+        self.append_signed_as(
+            Action::Approve,
+            lock.class,
+            &lock.lock_sha256,
+            message,
+            signature,
+            trusted,
+        )
+    }
+
+    /// Append a withdrawal signed outside ergocell: `message` must be the withdrawal of `class`'s
+    /// standing approval at this file's current head ([`ApprovalsFile::next_withdrawal_message`]).
+    pub fn append_signed_withdrawal(
+        &mut self,
+        class: TrajectoryClass,
+        message: &str,
+        signature: &str,
+        trusted: &TrustedSigners,
+    ) -> Result<&Approval, RobotError> {
+        let lock_sha256 = self.withdrawable(class)?;
+        self.append_signed_as(
+            Action::Withdraw,
+            class,
+            &lock_sha256,
+            message,
+            signature,
+            trusted,
+        )
+    }
+
+    fn append_signed_as(
+        &mut self,
+        expected: Action,
+        expected_class: TrajectoryClass,
+        expected_lock: &str,
+        message: &str,
+        signature: &str,
+        trusted: &TrustedSigners,
+    ) -> Result<&Approval, RobotError> {
+        let (action, [class, lock_sha256, approved_by, approved_at_utc, previous_sha256]) =
             signing::parse_approval_message(message)?;
         let refuse = |reason: String| RobotError::Config {
             reason: format!("the signed message does not fit: {reason}"),
         };
-        if class != lock.class.as_str() {
+        if action != expected {
             return Err(refuse(format!(
-                "it approves class {}, not {}",
-                signing::printable(&class),
-                lock.class
+                "it is {}, not {} (approve a lock with `approve --signed`, withdraw with \
+                 `withdraw --signed`)",
+                action.message_noun(),
+                expected.message_noun()
             )));
         }
-        if lock_sha256 != lock.lock_sha256 {
+        if class != expected_class.as_str() {
             return Err(refuse(format!(
-                "it approves lock {}, the current lock is {} (re-lock since? write a new message)",
-                signing::printable(&lock_sha256),
-                lock.lock_sha256
+                "it is for class {}, not {expected_class}",
+                signing::printable(&class),
             )));
+        }
+        if lock_sha256 != expected_lock {
+            return Err(refuse(match action {
+                Action::Approve => format!(
+                    "it approves lock {}, the current lock is {expected_lock} (re-lock since? write a new message)",
+                    signing::printable(&lock_sha256),
+                ),
+                Action::Withdraw => format!(
+                    "it withdraws lock {}, the approval standing is of lock {expected_lock} (write a new message)",
+                    signing::printable(&lock_sha256),
+                ),
+            }));
         }
         self.check_chain()?;
         if previous_sha256 != self.head_sha256() {
             return Err(refuse(
-                "its previous_sha256 is not the approvals file's last entry (another approval was \
+                "its previous_sha256 is not the approvals file's last entry (another entry was \
                  added since the message was written: write a new message)"
                     .to_owned(),
             ));
         }
         self.push_checked(
             Approval {
-                class: lock.class,
+                class: expected_class,
+                action,
                 lock_sha256,
                 approved_by,
                 approved_at_utc,
                 previous_sha256,
                 signature: signature.trim().to_owned() + "\n",
             },
-            lock,
             trusted,
         )
     }
@@ -447,13 +628,12 @@ impl ApprovalsFile {
     fn push_checked(
         &mut self,
         entry: Approval,
-        lock: &LockFile,
         trusted: &TrustedSigners,
     ) -> Result<&Approval, RobotError> {
         trusted
             .verify(&entry.claim(), &entry.signature)
             .map_err(|reason| RobotError::ApprovalRefused {
-                class: lock.class.to_string(),
+                class: entry.class.to_string(),
                 entry: self.approval.len(),
                 approved_by: signing::printable(&entry.approved_by),
                 reason: Box::new(reason),
@@ -461,6 +641,19 @@ impl ApprovalsFile {
         self.approval.push(entry);
         Ok(&self.approval[self.approval.len() - 1])
     }
+}
+
+/// What an approvals file's chain says of one class now ([`ApprovalsFile::standing`]).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Standing {
+    /// The lock hash the class's last approval names (`None`: never approved). An approval of
+    /// another lock earlier in the chain is superseded: only this lock may run.
+    pub lock_sha256: Option<String>,
+    /// The entries approving that lock since it was last approved anew (after a withdrawal or an
+    /// approval of another lock).
+    pub approvals: Vec<usize>,
+    /// The entry that withdrew those approvals, if one did.
+    pub withdrawn: Option<usize>,
 }
 
 /// Everything [`verify`] compares. The caller reads the files and hashes the current inputs with
@@ -799,35 +992,92 @@ pub fn verify(inputs: &VerifyInputs<'_>) -> Result<ApprovedTrajectory, VerifyFai
             class,
             problems: vec![e],
         })?;
-    let mut approvals = Vec::new();
-    let mut refused = Vec::new();
-    for (i, a) in file.approval.iter().enumerate() {
-        if a.class != class || a.lock_sha256 != lock.lock_sha256 {
-            continue;
-        }
-        match inputs.trusted.verify(&a.claim(), &a.signature) {
-            Ok(()) => approvals.push(a.clone()),
-            Err(reason) => refused.push(RobotError::ApprovalRefused {
-                class: class.to_string(),
-                entry: i,
-                approved_by: signing::printable(&a.approved_by),
-                reason: Box::new(reason),
-            }),
-        }
-    }
-    // One forged or broken approval of this lock refuses the lock, whatever else the file holds.
+    let standing = file.standing(class);
+    let entry = |i: usize| &file.approval[i];
+    let who = |i: usize| {
+        format!(
+            "entry {i}, by {} at {}",
+            signing::printable(&entry(i).approved_by),
+            signing::printable(&entry(i).approved_at_utc)
+        )
+    };
+    // The entries that decide for this lock, checked: one forged or broken among them refuses the
+    // lock, whatever else the file holds. (Superseded entries and those of another lock are not:
+    // revoking a former approver's key must not unmake the history.)
+    let deciding: Vec<usize> = if standing.lock_sha256.as_deref() == Some(&lock.lock_sha256) {
+        standing
+            .approvals
+            .iter()
+            .copied()
+            .chain(standing.withdrawn)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let refused: Vec<RobotError> = deciding
+        .iter()
+        .filter_map(|&i| {
+            let a = entry(i);
+            inputs
+                .trusted
+                .verify(&a.claim(), &a.signature)
+                .err()
+                .map(|reason| RobotError::ApprovalRefused {
+                    class: class.to_string(),
+                    entry: i,
+                    approved_by: signing::printable(&a.approved_by),
+                    reason: Box::new(reason),
+                })
+        })
+        .collect();
     if !refused.is_empty() {
         return Err(VerifyFailure {
             class,
             problems: refused,
         });
     }
-    if approvals.is_empty() {
+    match standing.lock_sha256.as_deref() {
+        Some(approved) if approved == lock.lock_sha256 => {}
+        Some(approved) => {
+            let earlier = file
+                .approval
+                .iter()
+                .rposition(|a| a.class == class && a.lock_sha256 == lock.lock_sha256);
+            let last = standing.approvals.last().copied().unwrap_or_default();
+            return Err(not_approved(match earlier {
+                Some(i) => format!(
+                    "this lock was approved ({}), but a later approval ({}) is of another lock, \
+                     {approved}: this lock file is older than the approvals (restored from a backup \
+                     or from git?). Restore that lock, or have this one reviewed and approved again",
+                    who(i),
+                    who(last)
+                ),
+                None => format!(
+                    "the approvals file has {} entries, none for this hash; its last approval is of \
+                     lock {approved} ({}). An approval of an earlier lock does not carry over",
+                    file.approval.len(),
+                    who(last)
+                ),
+            }));
+        }
+        None => {
+            return Err(not_approved(format!(
+                "the approvals file has {} entries, none approving class {class}",
+                file.approval.len()
+            )))
+        }
+    }
+    if let Some(w) = standing.withdrawn {
         return Err(not_approved(format!(
-            "the approvals file has {} entries, none for this hash (an approval of an earlier lock does not carry over)",
-            file.approval.len()
+            "its approval was withdrawn ({}); it runs again only once a safety engineer approves it anew",
+            who(w)
         )));
     }
+    let approvals = standing
+        .approvals
+        .iter()
+        .map(|&i| entry(i).clone())
+        .collect();
     Ok(ApprovedTrajectory { lock, approvals })
 }
 

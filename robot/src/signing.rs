@@ -81,44 +81,124 @@ pub enum ApprovalError {
 /// First line of every approval message (its format version).
 const MESSAGE_HEADER: &str = "ergocell trajectory approval v1";
 
-/// The fields an approval signs, in the order they are written.
+/// First line of every withdrawal message: a withdrawal signs other bytes than any approval, so one
+/// can never be read as the other.
+const WITHDRAWAL_HEADER: &str = "ergocell trajectory withdrawal v1";
+
+/// What an entry of an approvals file says of the lock it names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Action {
+    /// A sign-off: the lock may run.
+    #[default]
+    Approve,
+    /// The sign-off is taken back: the lock may not run until it is approved again.
+    Withdraw,
+}
+
+impl Action {
+    /// True for [`Action::Approve`] (an approval entry writes no `action` field, so entries written
+    /// before withdrawals existed keep their bytes and hashes).
+    pub fn is_approve(&self) -> bool {
+        *self == Action::Approve
+    }
+
+    fn header(self) -> &'static str {
+        match self {
+            Action::Approve => MESSAGE_HEADER,
+            Action::Withdraw => WITHDRAWAL_HEADER,
+        }
+    }
+
+    /// The message's names of the `approved_by` / `approved_at_utc` fields.
+    fn field_names(self) -> [&'static str; 5] {
+        match self {
+            Action::Approve => [
+                "class",
+                "lock_sha256",
+                "approved_by",
+                "approved_at_utc",
+                "previous_sha256",
+            ],
+            Action::Withdraw => [
+                "class",
+                "lock_sha256",
+                "withdrawn_by",
+                "withdrawn_at_utc",
+                "previous_sha256",
+            ],
+        }
+    }
+}
+
+impl Action {
+    /// "an approval message" / "a withdrawal message".
+    pub fn message_noun(self) -> &'static str {
+        match self {
+            Action::Approve => "an approval message",
+            Action::Withdraw => "a withdrawal message",
+        }
+    }
+}
+
+impl fmt::Display for Action {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Action::Approve => "approval",
+            Action::Withdraw => "withdrawal",
+        })
+    }
+}
+
+/// The fields an approval (or a withdrawal) signs, in the order they are written.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ApprovalClaim<'a> {
+    pub action: Action,
     pub class: &'a str,
     pub lock_sha256: &'a str,
+    /// Who signs (for a withdrawal: who withdraws).
     pub approved_by: &'a str,
+    /// When (for a withdrawal: when it was withdrawn).
     pub approved_at_utc: &'a str,
     pub previous_sha256: &'a str,
 }
 
 /// The exact bytes an approval's signature covers: the class, the lock's hash, the approver's
-/// principal, the time and the previous entry's hash, one `key: value` line each after a version line.
+/// principal, the time and the previous entry's hash, one `key: value` line each after a version line
+/// (a withdrawal: its own version line, and `withdrawn_by` / `withdrawn_at_utc`).
 /// Editing any of them (or moving a signature to another lock, class or place in the chain) breaks it.
 pub fn approval_message(claim: &ApprovalClaim<'_>) -> String {
+    let [class, lock, by, at, previous] = claim.action.field_names();
     format!(
-        "{MESSAGE_HEADER}\nclass: {}\nlock_sha256: {}\napproved_by: {}\napproved_at_utc: {}\nprevious_sha256: {}\n",
-        claim.class, claim.lock_sha256, claim.approved_by, claim.approved_at_utc, claim.previous_sha256
+        "{}\n{class}: {}\n{lock}: {}\n{by}: {}\n{at}: {}\n{previous}: {}\n",
+        claim.action.header(),
+        claim.class,
+        claim.lock_sha256,
+        claim.approved_by,
+        claim.approved_at_utc,
+        claim.previous_sha256
     )
 }
 
-/// Parses a message written by [`approval_message`] back into its fields (for the two-step flow, where
-/// the engineer signs the message file with `ssh-keygen` and hands back message and signature).
-pub fn parse_approval_message(text: &str) -> Result<[String; 5], RobotError> {
+/// Parses a message written by [`approval_message`] back into its kind and fields (for the two-step
+/// flow, where the engineer signs the message file with `ssh-keygen` and hands back message and
+/// signature).
+pub fn parse_approval_message(text: &str) -> Result<(Action, [String; 5]), RobotError> {
     let bad = |reason: String| RobotError::Config {
         reason: format!("not an approval message: {reason}"),
     };
     let mut lines = text.lines();
-    if lines.next() != Some(MESSAGE_HEADER) {
-        return Err(bad(format!("the first line is not `{MESSAGE_HEADER}`")));
-    }
+    let action = match lines.next() {
+        Some(MESSAGE_HEADER) => Action::Approve,
+        Some(WITHDRAWAL_HEADER) => Action::Withdraw,
+        _ => {
+            return Err(bad(format!(
+                "the first line is neither `{MESSAGE_HEADER}` nor `{WITHDRAWAL_HEADER}`"
+            )))
+        }
+    };
     let mut out: [String; 5] = Default::default();
-    for (slot, key) in out.iter_mut().zip([
-        "class",
-        "lock_sha256",
-        "approved_by",
-        "approved_at_utc",
-        "previous_sha256",
-    ]) {
+    for (slot, key) in out.iter_mut().zip(action.field_names()) {
         let line = lines
             .next()
             .ok_or_else(|| bad(format!("no `{key}:` line")))?;
@@ -132,6 +212,7 @@ pub fn parse_approval_message(text: &str) -> Result<[String; 5], RobotError> {
         return Err(bad("text after the last field".to_owned()));
     }
     if approval_message(&ApprovalClaim {
+        action,
         class: &out[0],
         lock_sha256: &out[1],
         approved_by: &out[2],
@@ -143,7 +224,7 @@ pub fn parse_approval_message(text: &str) -> Result<[String; 5], RobotError> {
             "not byte for byte what `approve --message-out` writes".to_owned()
         ));
     }
-    Ok(out)
+    Ok((action, out))
 }
 
 /// `text` with everything but printable ASCII and the space escaped (`\n`, `\u{1b}`, `\u{202e}`, …),
@@ -349,6 +430,11 @@ impl fmt::Display for TrustedKey {
 
 /// Checks `text` is an RFC 3339 time in UTC (`…Z` or `+00:00`).
 pub fn check_utc_time(text: &str) -> Result<(), ApprovalError> {
+    utc_unix_time(text).map(|_| ())
+}
+
+/// [`check_utc_time`], giving the time in Unix seconds.
+fn utc_unix_time(text: &str) -> Result<i64, ApprovalError> {
     let bad = |why: String| ApprovalError::BadTime {
         text: printable(text),
         why,
@@ -361,7 +447,7 @@ pub fn check_utc_time(text: &str) -> Result<(), ApprovalError> {
     if rfc3339_utc(t.unix_timestamp()).ok().as_deref() != Some(text) {
         return Err(bad("is not written as YYYY-MM-DDTHH:MM:SSZ".to_owned()));
     }
-    Ok(())
+    Ok(t.unix_timestamp())
 }
 
 /// The earliest time an approval may bear: ergocell's signed approvals did not exist before.
@@ -379,14 +465,11 @@ pub const APPROVAL_CLOCK_SKEW_S: i64 = 86_400;
 /// [`EARLIEST_APPROVAL_UTC`] and not more than [`APPROVAL_CLOCK_SKEW_S`] in the future. A date of
 /// 1970 or 2099 is a wrong clock or a made-up entry, and is refused either way.
 pub fn check_approval_time(text: &str, now_unix: i64) -> Result<(), ApprovalError> {
-    check_utc_time(text)?;
+    let t = utc_unix_time(text)?;
     let bad = |why: String| ApprovalError::BadTime {
         text: printable(text),
         why,
     };
-    let t = time::OffsetDateTime::parse(text, &time::format_description::well_known::Rfc3339)
-        .map_err(|e| bad(format!("is not an RFC 3339 time ({e})")))?
-        .unix_timestamp();
     if t < EARLIEST_APPROVAL_UNIX {
         return Err(bad(format!(
             "is before {EARLIEST_APPROVAL_UTC}, when ergocell's signed approvals began"

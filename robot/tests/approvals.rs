@@ -99,7 +99,7 @@ fn a_valid_signed_approval_verifies_and_its_message_names_every_signed_field() {
         assert!(m.contains(field), "{m}");
     }
     assert_eq!(
-        signing::parse_approval_message(&m).unwrap()[2],
+        signing::parse_approval_message(&m).unwrap().1[2],
         common::ALICE
     );
 }
@@ -247,6 +247,7 @@ fn a_time_that_is_not_rfc3339_utc_is_refused_at_approve_and_at_verify() {
         .unwrap_err();
     assert!(err.to_string().contains("not an RFC 3339 time"), "{err}");
     let claim = ApprovalClaim {
+        action: signing::Action::Approve,
         class: "c2",
         lock_sha256: &f.lock.lock_sha256,
         approved_by: common::ALICE,
@@ -355,4 +356,310 @@ fn an_approval_dated_1970_or_2099_is_refused() {
     assert!(e.to_string().contains("in the future"), "{e}");
     let e = check_approval_time("1970-01-01T00:00:00Z", now).unwrap_err();
     assert!(e.to_string().contains("before 2026-01-01"), "{e}");
+}
+
+/// `file` with an approval of another lock (another hash) appended, by bob.
+fn with_later_lock_approved(f: &Fixture, mut file: ApprovalsFile) -> ApprovalsFile {
+    let mut later = f.lock.clone();
+    later.lock_sha256 = "cd".repeat(32);
+    file.approve(
+        &later,
+        common::BOB,
+        "2026-12-02T09:00:00Z",
+        &f.t.trusted,
+        &f.t.bob,
+    )
+    .unwrap();
+    file
+}
+
+#[test]
+fn a_lock_older_than_the_chains_last_approval_is_refused_as_superseded() {
+    let f = fixture();
+    // The lock was approved, then re-locked and the new lock approved: the old lock file, restored
+    // from git or a backup beside the current approvals, must not run on its old approval.
+    let file = with_later_lock_approved(&f, approved(&f));
+    let err = verify(&f, &file.to_toml().unwrap(), &f.t.trusted).unwrap_err();
+    assert!(
+        err.contains("this lock was approved (entry 0, by alice@plant.example")
+            && err.contains("a later approval (entry 1, by bob@plant.example")
+            && err.contains(&"cd".repeat(32))
+            && err.contains("restored from a backup or from git"),
+        "{err}"
+    );
+    // Reviewed and approved again, the restored lock runs: the chain's last approval decides.
+    let mut file = file;
+    file.approve(
+        &f.lock,
+        common::ALICE,
+        "2026-12-02T10:00:00Z",
+        &f.t.trusted,
+        &f.t.alice,
+    )
+    .unwrap();
+    let approved = lock::verify(&VerifyInputs {
+        class: CLASS,
+        lock_toml: &f.lock_toml,
+        current_inputs: &f.current,
+        model: &f.s.model,
+        approvals_toml: Some(&file.to_toml().unwrap()),
+        trusted: &f.t.trusted,
+    })
+    .unwrap();
+    // Only the approval since the lock was approved anew is listed, not the superseded one.
+    assert_eq!(approved.approvals().len(), 1);
+    assert_eq!(
+        approved.approvals()[0].approved_at_utc,
+        "2026-12-02T10:00:00Z"
+    );
+}
+
+#[test]
+fn a_withdrawn_approval_stops_the_lock_until_it_is_approved_anew() {
+    let f = fixture();
+    let mut file = approved(&f);
+    // Any trusted approver may withdraw; the withdrawal names the standing lock by itself.
+    let w = file
+        .withdraw(
+            CLASS,
+            common::BOB,
+            "2026-12-01T12:00:00Z",
+            &f.t.trusted,
+            &f.t.bob,
+        )
+        .unwrap()
+        .clone();
+    assert_eq!(w.lock_sha256, f.lock.lock_sha256);
+    assert!(w
+        .message()
+        .starts_with("ergocell trajectory withdrawal v1\n"));
+    assert!(w.message().contains("withdrawn_by: bob@plant.example\n"));
+    let text = file.to_toml().unwrap();
+    assert!(text.contains("action = \"withdraw\""), "{text}");
+    let err = verify(&f, &text, &f.t.trusted).unwrap_err();
+    assert!(
+        err.contains(
+            "its approval was withdrawn (entry 1, by bob@plant.example at 2026-12-01T12:00:00Z)"
+        ),
+        "{err}"
+    );
+    // Withdrawing twice is refused, and so is withdrawing where nothing was approved.
+    let err = file
+        .clone()
+        .withdraw(
+            CLASS,
+            common::BOB,
+            "2026-12-01T12:05:00Z",
+            &f.t.trusted,
+            &f.t.bob,
+        )
+        .unwrap_err();
+    assert!(err.to_string().contains("already withdrawn"), "{err}");
+    let err = ApprovalsFile::default()
+        .withdraw(
+            CLASS,
+            common::BOB,
+            "2026-12-01T12:05:00Z",
+            &f.t.trusted,
+            &f.t.bob,
+        )
+        .unwrap_err();
+    assert!(err.to_string().contains("nothing to withdraw"), "{err}");
+    // An untrusted key cannot withdraw either (a forged stop is refused, not obeyed silently).
+    assert!(approved(&f)
+        .withdraw(
+            CLASS,
+            common::BOB,
+            "2026-12-01T12:00:00Z",
+            &f.t.trusted,
+            &f.t.mallory
+        )
+        .is_err());
+    // Approved anew, it runs.
+    file.approve(
+        &f.lock,
+        common::ALICE,
+        "2026-12-01T13:00:00Z",
+        &f.t.trusted,
+        &f.t.alice,
+    )
+    .unwrap();
+    verify(&f, &file.to_toml().unwrap(), &f.t.trusted).unwrap();
+}
+
+#[test]
+fn a_withdrawal_cannot_be_turned_into_an_approval_nor_forged() {
+    let f = fixture();
+    let mut file = approved(&f);
+    file.withdraw(
+        CLASS,
+        common::BOB,
+        "2026-12-01T12:00:00Z",
+        &f.t.trusted,
+        &f.t.bob,
+    )
+    .unwrap();
+    // The withdrawal's `action` edited back to an approval (chain recomputed): its signature is
+    // over a withdrawal message, so the entry is refused and the lock with it.
+    let mut entries = file.approval.clone();
+    entries[1].action = signing::Action::Approve;
+    let err = verify(&f, &rechain(entries), &f.t.trusted).unwrap_err();
+    assert!(
+        err.contains("entry 1") && err.contains("does not match"),
+        "{err}"
+    );
+    // A withdrawal entry with mallory's signature: refused, naming it.
+    let mut entries = approved(&f).approval;
+    let mut forged = entries[0].clone();
+    forged.action = signing::Action::Withdraw;
+    forged.signature =
+        f.t.mallory
+            .sign(
+                signing::APPROVAL_NAMESPACE,
+                ssh_key::HashAlg::Sha512,
+                forged.message().as_bytes(),
+            )
+            .unwrap()
+            .to_pem(ssh_key::LineEnding::LF)
+            .unwrap();
+    entries.push(forged);
+    let err = verify(&f, &rechain(entries), &f.t.trusted).unwrap_err();
+    assert!(
+        err.contains("entry 1") && err.contains("not a trusted approver"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_withdrawal_signed_outside_ergocell_is_appended_and_an_approval_message_is_not() {
+    let f = fixture();
+    let mut file = approved(&f);
+    let message = file
+        .next_withdrawal_message(CLASS, common::ALICE, "2026-12-01T12:00:00Z")
+        .unwrap();
+    let (action, fields) = signing::parse_approval_message(&message).unwrap();
+    assert_eq!(action, signing::Action::Withdraw);
+    let sig =
+        f.t.alice
+            .sign(
+                signing::APPROVAL_NAMESPACE,
+                ssh_key::HashAlg::Sha512,
+                message.as_bytes(),
+            )
+            .unwrap()
+            .to_pem(ssh_key::LineEnding::LF)
+            .unwrap();
+    // The withdrawal message offered as an approval is refused, saying what it is.
+    let err = file
+        .clone()
+        .append_signed(&f.lock, &message, &sig, &f.t.trusted)
+        .unwrap_err();
+    assert!(
+        err.to_string()
+            .contains("it is a withdrawal message, not an approval message"),
+        "{err}"
+    );
+    file.append_signed_withdrawal(CLASS, &message, &sig, &f.t.trusted)
+        .unwrap();
+    assert_eq!(file.approval[1].approved_by, fields[2]);
+    let err = verify(&f, &file.to_toml().unwrap(), &f.t.trusted).unwrap_err();
+    assert!(err.contains("withdrawn"), "{err}");
+}
+
+mod witness {
+    use super::*;
+    use ergocell_robot::witness::Witness;
+
+    const PATH: &str = "/cell/trajectories/approvals/c2.toml";
+
+    /// The witness after seeing `file` (empty witness, one line recorded).
+    fn seen(f: &Fixture, file: &ApprovalsFile) -> String {
+        Witness::default()
+            .sighting_line(PATH, CLASS, file, &f.t.trusted, "2026-12-01T12:00:00Z")
+            .unwrap()
+    }
+
+    #[test]
+    fn a_deleted_last_entry_or_an_older_copy_is_refused() {
+        let f = fixture();
+        let mut file = approved(&f);
+        file.withdraw(
+            CLASS,
+            common::BOB,
+            "2026-12-01T12:00:00Z",
+            &f.t.trusted,
+            &f.t.bob,
+        )
+        .unwrap();
+        let witness = Witness::parse(&seen(&f, &file));
+        assert!(witness.unreadable.is_empty(), "{:?}", witness.unreadable);
+        witness.check(PATH, CLASS, &file).unwrap();
+        // The withdrawal deleted: the chain alone is intact and the lock would verify again...
+        let cut = ApprovalsFile {
+            approval: file.approval[..1].to_vec(),
+        };
+        cut.check_chain().unwrap();
+        verify(&f, &cut.to_toml().unwrap(), &f.t.trusted).unwrap();
+        // ...but the witness saw two entries.
+        let err = witness.check(PATH, CLASS, &cut).unwrap_err().to_string();
+        assert!(
+            err.contains("has 1 entries, but on 2026-12-01T12:00:00Z it had 2")
+                && err.contains("witness line 1"),
+            "{err}"
+        );
+        // A same-length chain that ends otherwise (an older copy with other entries) is refused
+        // too; a longer one that keeps what was seen passes, and only then is a new line due.
+        let other = with_later_lock_approved(&f, approved(&f));
+        assert_eq!(other.approval.len(), 2);
+        assert!(witness.check(PATH, CLASS, &other).is_err());
+        let mut longer = file.clone();
+        longer
+            .approve(
+                &f.lock,
+                common::ALICE,
+                "2026-12-01T13:00:00Z",
+                &f.t.trusted,
+                &f.t.alice,
+            )
+            .unwrap();
+        witness.check(PATH, CLASS, &longer).unwrap();
+        assert!(witness
+            .sighting_line(PATH, CLASS, &file, &f.t.trusted, "2026-12-01T13:00:00Z")
+            .is_none());
+        let next = witness
+            .sighting_line(PATH, CLASS, &longer, &f.t.trusted, "2026-12-01T13:00:00Z")
+            .unwrap();
+        assert!(next.contains("\"entries\":3"), "{next}");
+        // A forged entry appended (no trusted key signed it) is not witnessed: removing it later
+        // is no rollback.
+        let mut forged = longer.clone();
+        let mut entry = forged.approval[2].clone();
+        entry.previous_sha256 = forged.head_sha256();
+        entry.approved_at_utc = "2026-12-01T14:00:00Z".to_owned();
+        forged.approval.push(entry);
+        forged.check_chain().unwrap();
+        assert!(witness
+            .sighting_line(PATH, CLASS, &forged, &f.t.trusted, "2026-12-01T14:00:00Z")
+            .unwrap()
+            .contains("\"entries\":3"));
+        // Sightings of another file or class do not bind this one.
+        assert!(witness.check("/elsewhere/c2.toml", CLASS, &cut).is_ok());
+        assert!(witness.check(PATH, TrajectoryClass::C3, &cut).is_ok());
+    }
+
+    #[test]
+    fn a_damaged_witness_line_is_named_and_passed_over() {
+        let f = fixture();
+        let file = approved(&f);
+        let line = seen(&f, &file);
+        // A torn append (no newline) and a garbage line are named; the good line still binds.
+        let text = format!("not json\n{line}{}", &line[..line.len() / 2]);
+        let witness = Witness::parse(&text);
+        assert_eq!(witness.unreadable.len(), 2, "{:?}", witness.unreadable);
+        assert!(witness.unreadable[0].starts_with("line 1:"));
+        assert!(witness.unreadable[1].contains("line 3: cut short"));
+        assert!(witness
+            .check(PATH, CLASS, &ApprovalsFile::default())
+            .is_err());
+    }
 }

@@ -99,6 +99,29 @@ pub enum Sub {
         #[arg(long, requires = "signed")]
         signature: Option<PathBuf>,
     },
+    /// Withdraw the standing approval of a class (any trusted approver may): its lock does not run
+    /// again until a safety engineer approves it anew. With `--key`, or in two steps with
+    /// `--message-out` and then `--signed`, like `approve`.
+    Withdraw {
+        #[arg(long, value_parser = parse_class)]
+        class: TrajectoryClass,
+        /// The withdrawing approver's principal, exactly as config/approvers/allowed_signers lists it.
+        #[arg(long, required_unless_present = "signed")]
+        by: Option<String>,
+        /// Sign with this OpenSSH Ed25519 private key (not passphrase-protected).
+        #[arg(long, conflicts_with_all = ["message_out", "signed"])]
+        key: Option<PathBuf>,
+        /// Write the withdrawal message to this new file and stop: sign it with
+        /// `ssh-keygen -Y sign -f <key> -n ergocell-trajectory-approval <file>`, then `--signed <file>`.
+        #[arg(long, conflicts_with = "signed")]
+        message_out: Option<PathBuf>,
+        /// Append the withdrawal of this message file, signed by `ssh-keygen` into `<file>.sig`.
+        #[arg(long, conflicts_with = "by")]
+        signed: Option<PathBuf>,
+        /// The signature file for `--signed` (default `<message>.sig`).
+        #[arg(long, requires = "signed")]
+        signature: Option<PathBuf>,
+    },
     /// Print the exact message an approval entry signed (for `ssh-keygen -Y verify`), and with
     /// `--signature-out` write its signature to a new file. Write the message to a file first and
     /// then run ssh-keygen: in one pipeline ssh-keygen may open the signature before it exists.
@@ -153,24 +176,29 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             signed,
             signature,
         } => {
-            let how = match (key, message_out, signed) {
-                (Some(key), None, None) => ApproveHow::Key(key),
-                (None, Some(out), None) => ApproveHow::MessageOut(out),
-                (None, None, Some(message)) => ApproveHow::Signed {
-                    message,
-                    signature: signature
-                        .clone()
-                        .unwrap_or_else(|| with_suffix(message, ".sig")),
-                },
-                _ => {
-                    return Err(UsageError(
-                        "approve needs one of --key <private key>, --message-out <file> or --signed <file>"
-                            .to_owned(),
-                    )
-                    .into())
-                }
-            };
+            let how = ApproveHow::from_args(
+                key.as_deref(),
+                message_out.as_deref(),
+                signed.as_deref(),
+                signature.as_deref(),
+            )?;
             approve(&ctx, *class, by.as_deref(), how)
+        }
+        Sub::Withdraw {
+            class,
+            by,
+            key,
+            message_out,
+            signed,
+            signature,
+        } => {
+            let how = ApproveHow::from_args(
+                key.as_deref(),
+                message_out.as_deref(),
+                signed.as_deref(),
+                signature.as_deref(),
+            )?;
+            withdraw(&ctx, *class, by.as_deref(), how)
         }
         Sub::ApprovalMessage {
             class,
@@ -433,6 +461,69 @@ enum ApproveHow<'a> {
     },
 }
 
+impl<'a> ApproveHow<'a> {
+    /// The one way `approve` or `withdraw` was asked to sign.
+    fn from_args(
+        key: Option<&'a Path>,
+        message_out: Option<&'a Path>,
+        signed: Option<&'a Path>,
+        signature: Option<&'a Path>,
+    ) -> Result<Self, UsageError> {
+        match (key, message_out, signed) {
+            (Some(key), None, None) => Ok(ApproveHow::Key(key)),
+            (None, Some(out), None) => Ok(ApproveHow::MessageOut(out)),
+            (None, None, Some(message)) => Ok(ApproveHow::Signed {
+                message,
+                signature: signature.map_or_else(|| with_suffix(message, ".sig"), Path::to_owned),
+            }),
+            _ => Err(UsageError(
+                "needs one of --key <private key>, --message-out <file> or --signed <file>"
+                    .to_owned(),
+            )),
+        }
+    }
+}
+
+/// The class's approvals file (empty if there is none yet), its chain checked and checked against
+/// the cell's witness ([`ergocell::witness`]): a file cut back is refused before anything is added.
+fn load_approvals(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<ApprovalsFile> {
+    let path = ctx.layout.approvals(class);
+    let file = if path.exists() {
+        ApprovalsFile::from_toml_str(&read(&path)?)
+            .and_then(|f| f.check_chain().map(|()| f))
+            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?
+    } else {
+        // A missing file is an empty chain: one the witness saw entries of was deleted.
+        ApprovalsFile::default()
+    };
+    witness(ctx, &path, class, &file)?;
+    Ok(file)
+}
+
+/// [`ergocell::witness::observe`] with the trusted approvers, its notes on standard error.
+fn observe(
+    path: &Path,
+    class: TrajectoryClass,
+    file: &ApprovalsFile,
+    trusted: &TrustedSigners,
+) -> Result<(), ergocell_robot::RobotError> {
+    let notes = ergocell::witness::observe(path, class, file, trusted)?;
+    for note in notes {
+        eprintln!("note: {note}");
+    }
+    Ok(())
+}
+
+/// [`observe`] for the commands that write the approvals file: a refusal names the file.
+fn witness(
+    ctx: &Context,
+    path: &Path,
+    class: TrajectoryClass,
+    file: &ApprovalsFile,
+) -> anyhow::Result<()> {
+    observe(path, class, file, &ctx.trusted).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+}
+
 fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
     let mut s = path.as_os_str().to_owned();
     s.push(suffix);
@@ -465,12 +556,7 @@ fn approve(
     matches_validation(ctx, &spec, &current, &lock)
         .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?;
     let approvals_path = ctx.layout.approvals(class);
-    let mut file = if approvals_path.exists() {
-        ApprovalsFile::from_toml_str(&read(&approvals_path)?)
-            .map_err(|e| UsageError(format!("{}: {e}", approvals_path.display())))?
-    } else {
-        ApprovalsFile::default()
-    };
+    let mut file = load_approvals(ctx, class)?;
     let approval = match how {
         ApproveHow::Key(key_path) => {
             let by = by.unwrap_or_default();
@@ -501,11 +587,78 @@ fn approve(
         }
     };
     write(&approvals_path, &file.to_toml()?)?;
+    witness(ctx, &approvals_path, class, &file)?;
     println!(
         "{class}: approved by {} at {} (signature verified) — lock_sha256 {} — recorded in {}",
         printable(&approval.approved_by),
         approval.approved_at_utc,
         approval.lock_sha256,
+        approvals_path.display()
+    );
+    Ok(())
+}
+
+fn withdraw(
+    ctx: &Context,
+    class: TrajectoryClass,
+    by: Option<&str>,
+    how: ApproveHow<'_>,
+) -> anyhow::Result<()> {
+    if let Some(why) = &ctx.trust_problem {
+        bail!("the approvers' files are not trusted: {why}\nrefusing to withdraw");
+    }
+    let approvals_path = ctx.layout.approvals(class);
+    if !approvals_path.exists() {
+        return Err(UsageError(format!(
+            "{} does not exist: {class} has no approval to withdraw",
+            approvals_path.display()
+        ))
+        .into());
+    }
+    let mut file = load_approvals(ctx, class)?;
+    let entry = match how {
+        ApproveHow::Key(key_path) => {
+            let key = signing::private_key_from_openssh(&read(key_path)?)
+                .map_err(|e| UsageError(format!("{}: {e}", key_path.display())))?;
+            file.withdraw(
+                class,
+                by.unwrap_or_default(),
+                &now_rfc3339()?,
+                &ctx.trusted,
+                &key,
+            )
+            .map_err(|e| anyhow::anyhow!("{e}\nrefusing to withdraw"))?
+            .clone()
+        }
+        ApproveHow::MessageOut(out) => {
+            let message =
+                file.next_withdrawal_message(class, by.unwrap_or_default(), &now_rfc3339()?)?;
+            write_new(out, &message)?;
+            println!(
+                "{class}: wrote the withdrawal message to {} — sign it with\n  ssh-keygen -Y sign -f <your key> -n {} {}\nthen: ergocell trajectories withdraw --class {class} --signed {}",
+                out.display(),
+                signing::APPROVAL_NAMESPACE,
+                out.display(),
+                out.display()
+            );
+            return Ok(());
+        }
+        ApproveHow::Signed { message, signature } => {
+            let text = read(message)?;
+            let sig = read(&signature)?;
+            file.append_signed_withdrawal(class, &text, &sig, &ctx.trusted)
+                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to withdraw"))?
+                .clone()
+        }
+    };
+    write(&approvals_path, &file.to_toml()?)?;
+    witness(ctx, &approvals_path, class, &file)?;
+    println!(
+        "{class}: approval of lock_sha256 {} WITHDRAWN by {} at {} (signature verified) — recorded in {}; \
+         the lock does not run until it is approved again",
+        entry.lock_sha256,
+        printable(&entry.approved_by),
+        entry.approved_at_utc,
         approvals_path.display()
     );
     Ok(())
@@ -560,6 +713,17 @@ fn verify(
         };
         let approvals_path = ctx.layout.approvals(class);
         let approvals_text = fs::read_to_string(&approvals_path).ok();
+        // A missing file is an empty chain for the witness; one that does not parse or whose
+        // chain is broken is left to `lock::verify` to report.
+        let chain = approvals_text
+            .as_deref()
+            .map_or(Ok(ApprovalsFile::default()), |t| {
+                ApprovalsFile::from_toml_str(t).and_then(|f| f.check_chain().map(|()| f))
+            });
+        let seen = match chain {
+            Ok(file) => observe(&approvals_path, class, &file, &ctx.trusted),
+            Err(_) => Ok(()),
+        };
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,
@@ -584,6 +748,18 @@ fn verify(
                     problems: vec![ergocell_robot::RobotError::Config { reason: why }],
                 })
         });
+        // The witness's refusal joins the others (a forged entry is also one it did not see).
+        let verified = match (verified, seen) {
+            (verified, Ok(())) => verified,
+            (Ok(_), Err(e)) => Err(lock::VerifyFailure {
+                class,
+                problems: vec![e],
+            }),
+            (Err(mut failure), Err(e)) => {
+                failure.problems.push(e);
+                Err(failure)
+            }
+        };
         match verified {
             Ok(approved) => {
                 let names: Vec<String> = approved

@@ -140,6 +140,7 @@ impl FileTrajectories {
             files.push(self.layout.approvals(class));
         }
         files.push(self.layout.dir().join(HANDOVER_RULA_FILE));
+        files.push(crate::witness::witness_path(self.layout.approvals_dir()));
         files
     }
 
@@ -425,7 +426,13 @@ impl TrajectoryProvider for FileTrajectories {
             ..
         } = self.current(class)?;
         let lock_text = self.lock_text(class)?;
-        let approvals = std::fs::read_to_string(self.layout.approvals(class)).ok();
+        let approvals_path = self.layout.approvals(class);
+        let approvals = std::fs::read_to_string(&approvals_path).ok();
+        // The demo's approvals are its own, written afresh each run: no witness of them.
+        let seen = match self.demo {
+            None => witness_check(&approvals_path, class, approvals.as_deref(), &trusted),
+            Some(_) => Ok(()),
+        };
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,
@@ -434,10 +441,39 @@ impl TrajectoryProvider for FileTrajectories {
             approvals_toml: approvals.as_deref(),
             trusted: &trusted,
         };
-        let approved = lock::verify(&inputs).map_err(|f| ProviderError(f.to_string()))?;
+        // Both reasons when both fail (a forged entry is also one the witness did not see).
+        let approved = match (lock::verify(&inputs), seen) {
+            (Ok(approved), Ok(())) => approved,
+            (Ok(_), Err(e)) => return Err(e),
+            (Err(f), Ok(())) => return Err(ProviderError(f.to_string())),
+            (Err(f), Err(e)) => return Err(ProviderError(format!("{f}\n  - {}", e.0))),
+        };
         check_approval_times(&approved, crate::trust_anchor::now_unix()).map_err(ProviderError)?;
         Ok(approved)
     }
+}
+
+/// Checks an approvals file against the cell's witness and records it there
+/// ([`crate::witness::observe`]); a file that does not parse or whose chain is broken is left to
+/// [`lock::verify`] to report. A missing file (`None`) is an empty chain: one the witness saw
+/// entries of was deleted.
+fn witness_check(
+    path: &Path,
+    class: TrajectoryClass,
+    text: Option<&str>,
+    trusted: &TrustedSigners,
+) -> Result<(), ProviderError> {
+    let file = match text.map(ApprovalsFile::from_toml_str) {
+        None => ApprovalsFile::default(),
+        Some(Ok(file)) if file.check_chain().is_ok() => file,
+        Some(_) => return Ok(()),
+    };
+    let notes = crate::witness::observe(path, class, &file, trusted)
+        .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
+    for note in notes {
+        tracing::warn!("{note}");
+    }
+    Ok(())
 }
 
 /// Every approval's time is one an approval can bear now ([`signing::check_approval_time`]).
