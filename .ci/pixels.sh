@@ -6,10 +6,12 @@
 #  - triangulate refuses the letterboxed cameras until their video geometry is declared;
 #  - with it, every camera's landmarks triangulate across the four cameras: >= 95 % of the landmarks,
 #    a median reprojection error under MAX_MEDIAN_PX overall and MAX_CAMERA_PX per camera (measured
-#    on the first 10 frames, 2026-12-03: 14.7 px overall, 6.4-19.3 px per camera; caliscope's own
+#    on all 100 frames: 15.2 px overall, 9.2-17.8 px per camera; caliscope's own
 #    4-camera MediaPipe recording reads 16.0 px overall with the same code: BlazePose's joints are not
 #    the same anatomical point in every view. A wrong pose, an axis flip or an undeclared letterbox
 #    reads hundreds of pixels or nothing at all);
+#  - the detector's error, each view against the other views, is measured and printed (its tables are
+#    docs/detector-error.md's Pose2Sim figures);
 #  - rula track scores every frame.
 # Usage: .ci/pixels.sh target/release/ergocell DETECT_DIR
 set -euo pipefail
@@ -31,9 +33,11 @@ grep -q "its video is 1080x1920 (its folder's video.json) but it was calibrated 
 echo "   refused without --video-geometry: $(grep -o 'camera cam0[12]: its video is [0-9x]*' "$tmp/refused.err")"
 
 "$bin" triangulate --calibration "$calib" --detections "$det" --rate-hz 60 \
-  --video-geometry cam01=fit --video-geometry cam02=fit --out "$tmp/demo.trc" > "$tmp/tri.out" 2> "$tmp/tri.err" \
+  --video-geometry cam01=fit --video-geometry cam02=fit --out "$tmp/demo.trc" \
+  --detector-error "$tmp/detector-error.json" > "$tmp/tri.out" 2> "$tmp/tri.err" \
   || { cat "$tmp/tri.err" >&2; exit 1; }
-grep -E "frames:|triangulated|median|swaps|variation" "$tmp/tri.out"
+grep -E "frames:|triangulated|median reprojection|swaps|variation" "$tmp/tri.out"
+sed -n '/^detector error/,/^wrote/p' "$tmp/tri.out"
 python3 - "$tmp/tri.out" "$MAX_MEDIAN_PX" "$MAX_CAMERA_PX" <<'PY'
 import re, sys
 text = open(sys.argv[1]).read()

@@ -206,6 +206,78 @@ fn caliscope_recording_gives_a_summary_and_json() {
     assert_eq!(frames.len(), 267);
 }
 
+/// `--detector-error` on caliscope's real recording: each view judged by the others, tables on
+/// stdout and the same figures as JSON.
+#[test]
+fn the_detector_error_of_a_real_recording_is_measured_view_against_view() {
+    let data = repo().join("../shared/data/caliscope-4cam");
+    let out = tmp("caliscope_err_out").with_extension("json");
+    let err = tmp("caliscope_err").with_extension("json");
+    let (code, stdout, stderr) = ergocell(&[
+        "triangulate",
+        "--calibration",
+        data.join("config.toml").to_str().unwrap(),
+        "--detections",
+        data.join("xy_pose33.csv").to_str().unwrap(),
+        "--force",
+        "--out",
+        out.to_str().unwrap(),
+        "--detector-error",
+        err.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stdout}\n{stderr}");
+    assert!(
+        stdout.contains("detector error, each view against the other views (267 frames"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("(the detections carry no confidence)"),
+        "{stdout}"
+    );
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&err).unwrap()).unwrap();
+    assert_eq!(report["frames"], 267);
+    let cameras = report["cameras"].as_array().unwrap();
+    assert_eq!(cameras.len(), 4);
+    for c in cameras {
+        let (seen, missing) = (
+            c["frames_seen"].as_u64().unwrap(),
+            c["frames_missing"].as_u64().unwrap(),
+        );
+        assert_eq!(seen + missing, 267, "{c}");
+    }
+    // An upper-body recording: face and arms measured, legs not at all.
+    let groups = report["groups"].as_array().unwrap();
+    let count = |i: usize| groups[i][1]["total"]["count"].as_u64().unwrap();
+    assert!(
+        count(0) > 1000 && count(1) > 1000 && count(3) == 0,
+        "{groups:?}"
+    );
+    // A MediaPipe detector, not garbage: the median error is 1–10 % of the person's image height,
+    // and persistent + jitter bound it (|a + b| ≤ |a| + |b| holds per residual, so at the median
+    // the parts cannot both be far below it).
+    let all = &report["all"];
+    let p50 = all["total"]["p50"].as_f64().unwrap();
+    assert!((0.01..0.10).contains(&p50), "{all}");
+    let parts = all["persistent"]["p50"].as_f64().unwrap() + all["jitter"]["p50"].as_f64().unwrap();
+    assert!(parts >= 0.5 * p50, "{all}");
+    assert_eq!(report["confidence_error_spearman"], serde_json::Value::Null);
+    // The report is an output like --out: never onto an input.
+    let (code, _, stderr) = ergocell(&[
+        "triangulate",
+        "--calibration",
+        data.join("config.toml").to_str().unwrap(),
+        "--detections",
+        data.join("xy_pose33.csv").to_str().unwrap(),
+        "--force",
+        "--out",
+        out.to_str().unwrap(),
+        "--detector-error",
+        data.join("xy_pose33.csv").to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+}
+
 #[test]
 fn malformed_calibration_and_unknown_output_format_exit_with_code_2() {
     let dir = tmp("bad_calibration");

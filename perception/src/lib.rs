@@ -15,7 +15,8 @@
 //! - [`operator_gate`]: which views show the operator and which someone else (a single-person
 //!   detector per camera, two people in the cell).
 //! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter.
-//! - [`metrics`], [`landmarks_file`]: bone-length consistency and the 3D output formats.
+//! - [`metrics`], [`landmarks_file`]: bone-length consistency and the 3D output formats;
+//!   [`detector_error`]: the real detector's error, each view judged by the others.
 //!
 //! No I/O: callers pass file contents and get text back. Knows nothing of ROS or the robot.
 
@@ -23,6 +24,7 @@ pub mod body_prior;
 pub mod camera;
 pub mod camera_health;
 pub mod detections;
+pub mod detector_error;
 pub mod error;
 pub mod fusion;
 pub mod import;

@@ -8,6 +8,7 @@ use anyhow::{bail, Context as _};
 use ergocell::input::{self, Kind};
 use ergocell_cell::{Reconstruction, ReconstructionConfig};
 use ergocell_perception::detections::{Frame2, ImportStats};
+use ergocell_perception::detector_error;
 use ergocell_perception::import::{
     match_camera_folders, parse_caliscope_xy_bytes, scan_caliscope_xy, CaliscopeStream,
     OpenPosePlan,
@@ -64,6 +65,14 @@ pub struct Args {
     /// video size differs from the calibration and has no declaration is refused.
     #[arg(long = "video-geometry", value_name = "CAMERA=SPEC")]
     pub video_geometry: Vec<String>,
+    /// Also measure the detector's error, each view against the other views
+    /// (`ergocell_perception::detector_error`), print its tables and write them to this JSON file
+    /// (refused if it exists, unless --force). Holds the detections in memory.
+    #[arg(long, value_name = "FILE.json")]
+    pub detector_error: Option<PathBuf>,
+    /// The window whose mean residual is a view's persistent error, seconds (with --detector-error).
+    #[arg(long, default_value_t = 1.0, requires = "detector_error")]
+    pub persistent_window_s: f64,
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
@@ -78,6 +87,24 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             ("--detections", args.detections.as_path()),
         ],
     )?;
+    if let Some(path) = &args.detector_error {
+        output::check(
+            "--detector-error",
+            path,
+            args.force,
+            &[
+                ("--calibration", args.calibration.as_path()),
+                ("--detections", args.detections.as_path()),
+                ("--out", args.out.as_path()),
+            ],
+        )?;
+        if !(args.persistent_window_s.is_finite() && args.persistent_window_s > 0.0) {
+            bail!(UsageError(format!(
+                "--persistent-window-s must be positive, got {}",
+                args.persistent_window_s
+            )));
+        }
+    }
     if !(args.rate_hz.is_finite() && args.rate_hz > 0.0) {
         bail!(UsageError(format!(
             "--rate-hz must be positive, got {}",
@@ -135,6 +162,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         e
     };
     let (mut rejected, mut undistortion_failures) = (0, 0);
+    let mut kept_frames: Vec<Frame2> = Vec::new();
     let progress = progress_bar(frame_count);
     // The detections are read and parsed on a second thread, up to READ_AHEAD frames ahead of the
     // fusion (one producer, one FIFO channel: the order is kept): reading was a third of the time.
@@ -170,6 +198,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 .into());
             }
             let r = reconstruction.process_frame(&frame)?;
+            if args.detector_error.is_some() {
+                kept_frames.push(frame.clone());
+            }
             rejected += r.fused.rejected_views;
             undistortion_failures += r.fused.undistortion_failures;
             let swapped = r.fused.swapped_views;
@@ -221,6 +252,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     };
     print_report(args, &rig, &stats, &per_camera, counts, elapsed);
     println!("wrote {}", args.out.display());
+    if let Some(path) = &args.detector_error {
+        let config = detector_error::MeasureConfig {
+            window_s: args.persistent_window_s,
+            ..detector_error::MeasureConfig::default()
+        };
+        let report =
+            detector_error::measure(&rig, &kept_frames, &config).report(&rig, config.window_s);
+        print_detector_error(&report);
+        let json = serde_json::to_string_pretty(&report)?;
+        output::write("--detector-error", path, args.force, json.as_bytes())?;
+        println!("wrote {}", path.display());
+    }
     Ok(())
 }
 
@@ -341,6 +384,68 @@ fn print_report(
         "throughput:               {:.0} frames/s ({frames} frames in {elapsed:.2} s: reading, fusion and writing)",
         frames as f64 / elapsed.max(1e-9)
     );
+}
+
+/// The detector-error tables ([`detector_error::DetectorErrorReport`]) on stdout, relative errors in
+/// per cent of the person's image height.
+fn print_detector_error(r: &detector_error::DetectorErrorReport) {
+    let pct =
+        |q: &detector_error::Quantiles| format!("{:>5.2} {:>5.2}", 100.0 * q.p50, 100.0 * q.p90);
+    println!(
+        "\ndetector error, each view against the other views ({} frames; % of the person's image height, median p90; persistent = mean over {} s):",
+        r.frames, r.window_s
+    );
+    println!(
+        "  {:<16} {:>7} {:>11} {:>11} {:>11} {:>13}",
+        "", "n", "total", "persistent", "jitter", "total px"
+    );
+    let row = |name: &str, s: &detector_error::ErrorStats| {
+        println!(
+            "  {name:<16} {:>7} {:>11} {:>11} {:>11} {:>6.1} {:>6.1}",
+            s.total.count,
+            pct(&s.total),
+            pct(&s.persistent),
+            pct(&s.jitter),
+            s.total_px.p50,
+            s.total_px.p90
+        );
+    };
+    row("all", &r.all);
+    for (name, s) in &r.groups {
+        row(name, s);
+    }
+    for c in &r.cameras {
+        row(&format!("camera {}", c.camera), &c.error);
+        println!(
+            "  {:<16} seen in {} frames, missing in {}, {:.1}% of landmarks dropped, {} frames left/right-swapped, {} someone else",
+            "", c.frames_seen, c.frames_missing, 100.0 * c.landmark_dropout, c.swapped_frames, c.identity_switches
+        );
+    }
+    println!("  by confidence:");
+    for b in &r.by_confidence {
+        println!(
+            "    {:.2}–{:.2}  n {:>6}  {}",
+            b.from,
+            b.to,
+            b.total.count,
+            pct(&b.total)
+        );
+    }
+    if let Some(rho) = r.confidence_error_spearman {
+        println!("    Spearman(confidence, error) = {rho:.2}");
+    } else {
+        println!("    (the detections carry no confidence)");
+    }
+    println!("  by viewing angle (0° = camera in front of the person):");
+    for b in &r.by_view_angle_deg {
+        println!(
+            "    {:>3.0}–{:<3.0}°  n {:>6}  {}",
+            b.from,
+            b.to,
+            b.total.count,
+            pct(&b.total)
+        );
+    }
 }
 
 /// Fused frames held back to estimate the frame rate a TRC header states (the whole recording when
