@@ -31,6 +31,27 @@ else
   fi
   rm -f "$out/handover_rula.toml" "$out/handover_rula.svg"
 fi
+# The twin's detector fitted to the real one (docs/detector-error.md): the fit reads the real
+# measurement committed in sim/detectors/ and Pose2Sim's calibration from ../shared.
+calib=../shared/data/pose2sim-demo-videos/calibration/Calib.qca.txt
+if [ -f "$calib" ]; then
+  "$bin" sim fit-detector --real sim/detectors/pose2sim-single-error.json --cameras "$calib" \
+    --out-dir "$out" | grep -v '^wrote ' >"$out/detector_fit.txt"
+  if [ "$out" = docs/sim ]; then
+    mv docs/sim/detector.toml sim/detectors/mediapipe-pose2sim.toml
+  elif ! cmp -s "$out/detector.toml" sim/detectors/mediapipe-pose2sim.toml; then
+    echo "sim/detectors/mediapipe-pose2sim.toml differs from what the fit produces: run docs/sim/make.sh and commit" >&2
+    exit 1
+  else
+    rm -f "$out/detector.toml"
+  fi
+elif [ -n "${CI:-}" ]; then
+  echo "$calib not found: the detector fit cannot be checked" >&2
+  exit 1
+else
+  echo "skipped the detector fit: $calib not found" >&2
+  cp docs/sim/detector_fit.json "$out/" 2>/dev/null || true
+fi
 for experiment in table1 adaptation height rula-agreement; do
   "$bin" sim "$experiment" --seed 1 --out-dir "$out" >/dev/null
   "$bin" sim "$experiment" --seeds 101..120 --out-dir "$out" >"$out/${experiment//-/_}_seeds.txt"

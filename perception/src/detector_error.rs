@@ -22,7 +22,7 @@
 //! by the viewing angle (the camera's bearing from the person's facing direction: 0° in front).
 
 use nalgebra::{Point3, Vector2, Vector3};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::detections::Frame2;
 use crate::rig::CameraRig;
@@ -94,7 +94,7 @@ pub struct Residual {
 }
 
 /// Quantiles of a magnitude relative to the image height (0.02 = 2 % of the person's height).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 pub struct Quantiles {
     pub count: usize,
     pub p50: f64,
@@ -127,7 +127,7 @@ impl Quantiles {
 
 /// The error of one subset of residuals: total, persistent and jitter magnitudes, each relative to
 /// the image height, and the total in pixels.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 pub struct ErrorStats {
     pub total: Quantiles,
     pub persistent: Quantiles,
@@ -138,7 +138,7 @@ pub struct ErrorStats {
 }
 
 /// One row of a binned table (confidence or viewing angle).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BinRow {
     /// Lower and upper edge of the bin.
     pub from: f64,
@@ -147,7 +147,7 @@ pub struct BinRow {
 }
 
 /// Per camera: how often it dropped landmarks or swapped sides.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CameraRow {
     pub camera: String,
     pub error: ErrorStats,
@@ -163,11 +163,27 @@ pub struct CameraRow {
     pub identity_switches: usize,
 }
 
+/// Where the person stood and faced (medians over the frames whose torso was triangulated), so that
+/// a twin can be placed likewise.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct PersonPlace {
+    /// Mid-hip, world coordinates, metres.
+    pub mid_hip_m: [f64; 3],
+    /// The way the chest faces (unit, world).
+    pub facing: [f64; 3],
+    /// Mid-hip to mid-shoulder (unit, world).
+    pub up: [f64; 3],
+}
+
 /// What [`measure`] found.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DetectorErrorReport {
     pub frames: usize,
+    /// Median frame rate of the recording, Hz (`None` for fewer than two frames).
+    pub frame_rate_hz: Option<f64>,
     pub window_s: f64,
+    /// Where the person stood, when their torso was seen.
+    pub person: Option<PersonPlace>,
     pub all: ErrorStats,
     /// Per landmark group, in [`GROUPS`] order: `(name, stats)`.
     pub groups: Vec<(String, ErrorStats)>,
@@ -180,7 +196,14 @@ pub struct DetectorErrorReport {
     /// detection is a better one; near 0: confidence says nothing of the error). `None` when the
     /// detections carry no confidence (all equal).
     pub confidence_error_spearman: Option<f64>,
+    /// Share of the residuals beyond [`GROSS_ERROR_FRACTION`] of the image height: gross errors.
+    pub gross_error_share: f64,
 }
+
+/// A residual beyond this fraction of the person's image height is a gross error (a limb put on
+/// the wrong place), not the detector's ordinary offset: the real single-person videos' face and
+/// hips never reach it (p99 7–10 %), their wrists and feet sometimes do.
+pub const GROSS_ERROR_FRACTION: f64 = 0.15;
 
 /// The residuals, their persistent parts and the per-camera counts, before summarising.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -194,6 +217,9 @@ pub struct Measured {
     landmarks_missing: Vec<usize>,
     swapped_frames: Vec<usize>,
     identity_switches: Vec<usize>,
+    frame_rate_hz: Option<f64>,
+    /// Per frame whose torso was triangulated: mid-hip, facing, up.
+    places: Vec<TorsoPlace>,
 }
 
 /// Measures every view of every frame against the other views (see the module docs).
@@ -289,6 +315,9 @@ pub fn measure(rig: &CameraRig, frames: &[Frame2], config: &MeasureConfig) -> Me
             all_views(Landmark::LeftHip.index()),
             all_views(Landmark::RightHip.index()),
         );
+        if let Some(place) = facing {
+            m.places.push(place);
+        }
         for (c, height) in heights.iter().enumerate() {
             let Some(height_px) = *height else { continue };
             let Some(camera) = rig.camera(c) else {
@@ -341,8 +370,17 @@ pub fn measure(rig: &CameraRig, frames: &[Frame2], config: &MeasureConfig) -> Me
         }
     }
     m.persistent_px = persistent(&m.residuals, config.window_s);
+    let mut periods: Vec<f64> = frames
+        .windows(2)
+        .map(|w| (w[1].stamp_nanos - w[0].stamp_nanos) as f64 * 1e-9)
+        .filter(|dt| *dt > 0.0)
+        .collect();
+    m.frame_rate_hz = crate::metrics::median_in_place(&mut periods).map(|dt| 1.0 / dt);
     m
 }
+
+/// A torso's mid-hip, facing direction and up.
+type TorsoPlace = (Point3<f64>, Vector3<f64>, Vector3<f64>);
 
 /// The torso's centre, facing direction and up, from both shoulders and hips: up from mid-hip to
 /// mid-shoulder, forward = (left − right) × up (the way the chest faces).
@@ -351,7 +389,7 @@ fn facing(
     rs: Option<Point3<f64>>,
     lh: Option<Point3<f64>>,
     rh: Option<Point3<f64>>,
-) -> Option<(Point3<f64>, Vector3<f64>, Vector3<f64>)> {
+) -> Option<TorsoPlace> {
     let (ls, rs, lh, rh) = (ls?, rs?, lh?, rh?);
     let shoulders = nalgebra::center(&ls, &rs);
     let hips = nalgebra::center(&lh, &rh);
@@ -497,15 +535,44 @@ impl Measured {
                 identity_switches: self.identity_switches[c],
             })
             .collect();
+        let median_of = |f: &dyn Fn(&TorsoPlace) -> [f64; 3]| {
+            let values: Vec<[f64; 3]> = self.places.iter().map(f).collect();
+            std::array::from_fn(|k| {
+                crate::metrics::median(&values.iter().map(|v| v[k]).collect::<Vec<_>>())
+                    .unwrap_or(0.0)
+            })
+        };
+        let unit = |v: [f64; 3]| {
+            let v = Vector3::from(v);
+            let n = v.norm();
+            if n > 0.0 {
+                (v / n).into()
+            } else {
+                v.into()
+            }
+        };
+        let person = (!self.places.is_empty()).then(|| PersonPlace {
+            mid_hip_m: median_of(&|p| p.0.coords.into()),
+            facing: unit(median_of(&|p| p.1.into())),
+            up: unit(median_of(&|p| p.2.into())),
+        });
         DetectorErrorReport {
             frames: self.frames,
+            frame_rate_hz: self.frame_rate_hz,
             window_s,
+            person,
             all: self.stats(|_| true),
             groups,
             landmarks,
             cameras,
             by_confidence: self.binned(&CONFIDENCE_EDGES, 1.0, |r| Some(r.confidence)),
             by_view_angle_deg: self.binned(&ANGLE_EDGES_DEG, 180.0, |r| r.view_angle_deg),
+            gross_error_share: self
+                .residuals
+                .iter()
+                .filter(|r| r.residual_px.norm() / r.height_px > GROSS_ERROR_FRACTION)
+                .count() as f64
+                / self.residuals.len().max(1) as f64,
             confidence_error_spearman: spearman(
                 &self
                     .residuals

@@ -19,7 +19,12 @@
 //!    [`DetectorNoise::occluded_confidence`] and [`DetectorNoise::occluded_noise_scale`] times the
 //!    pixel noise.
 //! 5. **Pixel noise**: isotropic Gaussian, σ = [`DetectorNoise::pixel_sigma_px`]; visible landmarks get a
-//!    confidence drawn uniformly from [`DetectorNoise::visible_confidence`].
+//!    confidence drawn uniformly from [`DetectorNoise::visible_confidence`]. With a
+//!    [`RelativeNoise`] (a model fitted to the real detector, [`crate::detector_fit`]) the error is
+//!    instead relative to the person's image height in the view and has two parts, as the real
+//!    detector's has: a **persistent** offset per camera and landmark that wanders slowly (an
+//!    Ornstein–Uhlenbeck process, drawn from its own seeded stream so the default model's draws are
+//!    untouched) and frame-to-frame **jitter**, both per landmark group.
 //! 6. **Gross outliers**: with probability [`DetectorNoise::outlier_probability`] a keypoint jumps by
 //!    a uniform [`DetectorNoise::outlier_offset_px`] in a random direction, keeping a normal
 //!    confidence (the detector does not know it is wrong).
@@ -64,6 +69,159 @@ pub struct DetectorNoise {
     /// up (z), metres (default 0): the offset a cell's `height calibrate` measures.
     #[serde(skip_serializing_if = "is_zero")]
     pub ear_offset_m: f64,
+    /// The error relative to the image height, persistent and jitter (default `None`: the
+    /// independent pixel noise above alone).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub relative: Option<RelativeNoise>,
+}
+
+/// Landmark groups of [`RelativeNoise`], as the real measurement reports them
+/// ([`ergocell_perception::detector_error::GROUPS`]): face, shoulders and arms, hips, legs.
+pub const NOISE_GROUPS: usize = 4;
+
+/// The group index of a landmark (0 face, 1 shoulders and arms, 2 hips, 3 legs).
+pub fn noise_group(landmark: usize) -> usize {
+    match landmark {
+        0..=10 => 0,
+        11..=22 => 1,
+        23..=24 => 2,
+        _ => 3,
+    }
+}
+
+/// A detector error relative to the person's image height in the view (the vertical extent of the
+/// landmarks in the image), per landmark group: what [`crate::detector_fit`] fits to a real
+/// detector measured view against view.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RelativeNoise {
+    /// σ per image coordinate of the persistent offset of a camera's landmark, as a fraction of the
+    /// image height, per group.
+    pub persistent_sigma: [f64; NOISE_GROUPS],
+    /// σ per image coordinate of the frame-to-frame jitter, fraction of the image height, per group.
+    pub jitter_sigma: [f64; NOISE_GROUPS],
+    /// Correlation time of the persistent offset, seconds: it wanders as an Ornstein–Uhlenbeck
+    /// process of this time constant (a pose held, the offset held).
+    pub persistent_tau_s: f64,
+    /// Shape of the persistent offset's size, per group, 0..=1: 1 is a 2-D Gaussian (its length
+    /// Rayleigh-distributed, p90 1.8 × the median), 0 a fixed length (σ·√(π/2), the Gaussian's mean
+    /// length) in a random direction; between, a blend of the two lengths. The real detector's
+    /// offsets vary less in size than a Gaussian's.
+    pub persistent_shape: [f64; NOISE_GROUPS],
+}
+
+impl RelativeNoise {
+    /// Checks every value is finite and non-negative, the time constant positive.
+    pub fn validate(&self) -> Result<(), SimError> {
+        for &v in &self.persistent_shape {
+            if !(0.0..=1.0).contains(&v) {
+                return Err(SimError::BadParameter {
+                    name: "persistent_shape",
+                    value: v,
+                    why: "must be within 0..=1",
+                });
+            }
+        }
+        for &v in self.persistent_sigma.iter().chain(&self.jitter_sigma) {
+            if !(v.is_finite() && (0.0..=0.5).contains(&v)) {
+                return Err(SimError::BadParameter {
+                    name: "relative noise sigma",
+                    value: v,
+                    why: "must be finite, within 0..=0.5 of the image height",
+                });
+            }
+        }
+        if !(self.persistent_tau_s.is_finite() && self.persistent_tau_s > 0.0) {
+            return Err(SimError::BadParameter {
+                name: "persistent_tau_s",
+                value: self.persistent_tau_s,
+                why: "must be finite and > 0",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// The persistent offsets of every camera's landmarks (fractions of the image height), evolving as
+/// [`RelativeNoise`] says, from a stream of draws of their own.
+#[derive(Debug, Clone)]
+pub(crate) struct PersistentOffsets {
+    /// The unit OU state.
+    offsets: Vec<[nalgebra::Vector2<f64>; LANDMARK_COUNT]>,
+    /// The offsets as fractions of the image height (shaped and scaled), at the last step.
+    shaped: Vec<[nalgebra::Vector2<f64>; LANDMARK_COUNT]>,
+    rng: ChaCha8Rng,
+    last_nanos: Option<i64>,
+}
+
+impl PersistentOffsets {
+    /// Offsets for `cameras` cameras drawn from their stationary distribution. The state is a
+    /// standard 2-D Gaussian per camera and landmark; [`PersistentOffsets::at`] shapes and scales it.
+    pub(crate) fn new(cameras: usize, seed: u64) -> Self {
+        use rand::SeedableRng as _;
+        // Its own stream: the default model's draws stay what they were.
+        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5045_5253_4953_5400);
+        let offsets = (0..cameras)
+            .map(|_| {
+                std::array::from_fn(|_| {
+                    nalgebra::Vector2::new(gaussian(&mut rng), gaussian(&mut rng))
+                })
+            })
+            .collect();
+        Self {
+            offsets,
+            shaped: Vec::new(),
+            rng,
+            last_nanos: None,
+        }
+    }
+
+    /// Moves every offset on to `t_nanos` (exact OU step), and returns them.
+    pub(crate) fn at(
+        &mut self,
+        t_nanos: i64,
+        noise: &RelativeNoise,
+    ) -> &[[nalgebra::Vector2<f64>; LANDMARK_COUNT]] {
+        let dt = self
+            .last_nanos
+            .map_or(0.0, |last| (t_nanos - last).max(0) as f64 * 1e-9);
+        self.last_nanos = Some(t_nanos);
+        if dt > 0.0 {
+            let a = (-dt / noise.persistent_tau_s).exp();
+            let b = (1.0 - a * a).sqrt();
+            for camera in &mut self.offsets {
+                for o in camera.iter_mut() {
+                    let z =
+                        nalgebra::Vector2::new(gaussian(&mut self.rng), gaussian(&mut self.rng));
+                    *o = *o * a + z * b;
+                }
+            }
+        }
+        if dt > 0.0 || self.shaped.is_empty() {
+            // the Gaussian's mean length, √(π/2)
+            const MEAN_LENGTH: f64 = 1.253_314_137_315_500_3;
+            self.shaped = self
+                .offsets
+                .iter()
+                .map(|camera| {
+                    std::array::from_fn(|l| {
+                        let g = noise_group(l);
+                        let o = camera[l];
+                        let length = o.norm();
+                        let shape = noise.persistent_shape[g];
+                        let blended = (1.0 - shape) * MEAN_LENGTH + shape * length;
+                        let direction = if length > 0.0 {
+                            o / length
+                        } else {
+                            nalgebra::Vector2::new(1.0, 0.0)
+                        };
+                        direction * (blended * noise.persistent_sigma[g])
+                    })
+                })
+                .collect();
+        }
+        &self.shaped
+    }
 }
 
 #[allow(clippy::trivially_copy_pass_by_ref)] // serde's skip_serializing_if passes a reference
@@ -85,6 +243,7 @@ impl Default for DetectorNoise {
             stamp_jitter_sigma_nanos: 3.0e6,
             min_landmarks_in_frame: 8,
             ear_offset_m: 0.0,
+            relative: None,
         }
     }
 }
@@ -105,6 +264,7 @@ impl DetectorNoise {
             stamp_jitter_sigma_nanos: 0.0,
             min_landmarks_in_frame: 0,
             ear_offset_m: 0.0,
+            relative: None,
         }
     }
 
@@ -142,6 +302,9 @@ impl DetectorNoise {
             if !(lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo <= hi && hi <= max) {
                 return bad(name, lo, "range must be ordered, finite and within bounds");
             }
+        }
+        if let Some(relative) = &self.relative {
+            relative.validate()?;
         }
         if !(self.ear_offset_m.is_finite() && self.ear_offset_m.abs() <= 0.1) {
             return bad(
@@ -217,13 +380,15 @@ fn head_hides(head_centre: &Point3<f64>, p: &Point3<f64>, eye: &Point3<f64>) -> 
     normal.dot(&(eye - p)) < 0.0
 }
 
-/// Renders one camera's view of a posed body. `kin` is the body at the view's capture instant.
+/// Renders one camera's view of a posed body. `kin` is the body at the view's capture instant;
+/// `offsets` the camera's persistent offsets when `noise.relative` is set.
 pub(crate) fn render_view(
     camera: &Camera,
     index: CameraIndex,
     stamp_nanos: i64,
     kin: &Kinematics,
     noise: &DetectorNoise,
+    offsets: Option<&[nalgebra::Vector2<f64>; LANDMARK_COUNT]>,
     rng: &mut ChaCha8Rng,
 ) -> View2 {
     let eye = camera.position_world();
@@ -242,6 +407,14 @@ pub(crate) fn render_view(
             }
         }
     }
+    // The person's image height: the vertical extent of their landmarks in the image.
+    let (top, bottom) = pixels
+        .iter()
+        .flatten()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.y), hi.max(p.y))
+        });
+    let height_px = if bottom > top { bottom - top } else { 0.0 };
     let mut view = View2::empty(index, stamp_nanos);
     // Draw the same number of random values per landmark whatever happens, so one landmark's fate
     // does not shift every later draw (noise settings change only what they control).
@@ -263,19 +436,30 @@ pub(crate) fn render_view(
         let occluded = torso_occludes(&kin.torso, &p, &eye)
             || (lm.index() <= Landmark::MouthRight.index()
                 && head_hides(&kin.head_centre, &p, &eye));
+        // Frame-to-frame noise per coordinate, and the persistent offset (pixels).
+        let (jitter, offset) = match (&noise.relative, offsets) {
+            (Some(r), Some(o)) => {
+                let j = r.jitter_sigma[noise_group(lm.index())] * height_px;
+                (
+                    (noise.pixel_sigma_px.powi(2) + j * j).sqrt(),
+                    o[lm.index()] * height_px,
+                )
+            }
+            _ => (noise.pixel_sigma_px, nalgebra::Vector2::zeros()),
+        };
         let (sigma, conf_range) = if occluded {
             if u_report >= noise.occluded_report_probability {
                 continue;
             }
             (
-                noise.pixel_sigma_px * noise.occluded_noise_scale,
+                jitter * noise.occluded_noise_scale,
                 noise.occluded_confidence,
             )
         } else {
-            (noise.pixel_sigma_px, noise.visible_confidence)
+            (jitter, noise.visible_confidence)
         };
         let confidence = conf_range.0 + (conf_range.1 - conf_range.0) * u_conf;
-        let (mut u, mut v) = (px.x + sigma * z_u, px.y + sigma * z_v);
+        let (mut u, mut v) = (px.x + offset.x + sigma * z_u, px.y + offset.y + sigma * z_v);
         if u_outlier < noise.outlier_probability {
             let jump = noise.outlier_offset_px.0
                 + (noise.outlier_offset_px.1 - noise.outlier_offset_px.0) * u_jump;
@@ -359,7 +543,7 @@ mod tests {
             ..DetectorNoise::none()
         };
         let mut rng = <ChaCha8Rng as rand::SeedableRng>::seed_from_u64(1);
-        let v = render_view(&cam, 0, 0, &kin, &noise, &mut rng);
+        let v = render_view(&cam, 0, 0, &kin, &noise, None, &mut rng);
         assert!(v.get(Landmark::Nose).is_none());
         assert!(v.get(Landmark::LeftShoulder).is_some());
         assert!(v.get(Landmark::LeftHeel).is_some());

@@ -13,7 +13,10 @@
 //!   by the caller).
 //! - [`detector`]: 2D detections like a real pose estimator's — lens distortion via the perception
 //!   camera model, pixel noise, self-occlusion, out-of-frame, outliers, dropped views, timestamp jitter;
-//!   every level a documented parameter ([`DetectorNoise`]).
+//!   every level a documented parameter ([`DetectorNoise`]); or an error relative to the image
+//!   height, persistent and jitter ([`RelativeNoise`]), as the real detector's is.
+//! - [`detector_fit`]: that relative error fitted to a real detector measured view against view
+//!   (`ergocell_perception::detector_error`), at the real cameras, and the model file the twin reads.
 //! - [`experiments`]: the seed paper's Table 1 and Figs. 7–9, height estimation and RULA agreement,
 //!   run through the real perception and ergonomics crates.
 //! - [`faults`]: the demo's faults (silent cameras, a class change request) as a schedule timed
@@ -57,6 +60,7 @@
 pub mod body;
 pub mod cameras;
 pub mod detector;
+pub mod detector_fit;
 pub mod experiments;
 pub mod faults;
 pub mod reach;
@@ -66,7 +70,7 @@ pub mod source;
 
 pub use body::{ArmPosture, LegPosture, Operator, Posture};
 pub use cameras::{ring_rig, RingRigConfig};
-pub use detector::DetectorNoise;
+pub use detector::{DetectorNoise, RelativeNoise};
 pub use reach::{solve_reach, ReachConfig, ReachSolution};
 pub use session::{
     Bystander, CameraBump, FloorPick, GroundTruth, Habits, Phase, PickStage, SessionScript,
@@ -99,4 +103,7 @@ pub enum SimError {
     /// A fault schedule that does not parse or names what the rig does not have.
     #[error("fault schedule {file}: {reason}")]
     Faults { file: String, reason: String },
+    /// A detector model (file or fit) that cannot be used.
+    #[error("detector model: {why}")]
+    BadModel { why: String },
 }

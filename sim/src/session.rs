@@ -23,7 +23,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 
 use crate::body::{LegPosture, Operator, Posture};
-use crate::detector::{gaussian, jitter_nanos, render_view, DetectorNoise};
+use crate::detector::{gaussian, jitter_nanos, render_view, DetectorNoise, PersistentOffsets};
 use crate::reach::{solve_reach, ReachConfig};
 use crate::SimError;
 
@@ -412,6 +412,8 @@ pub struct Simulation {
     /// The floor pick's solved posture, if the script has one.
     pick: Option<Posture>,
     rng: ChaCha8Rng,
+    /// The detector's persistent offsets, when its noise is relative ([`RelativeNoise`]).
+    persistent: Option<PersistentOffsets>,
     next: u64,
     ticks: u64,
 }
@@ -478,6 +480,11 @@ impl Simulation {
         rng.set_stream(2);
         let period_secs = config.frame_period_nanos as f64 * 1e-9;
         let ticks = (script.duration_secs() / period_secs).floor() as u64 + 1;
+        let persistent = config
+            .noise
+            .relative
+            .as_ref()
+            .map(|_| PersistentOffsets::new(rig.len(), config.seed));
         Ok(Self {
             rig,
             operator,
@@ -489,6 +496,7 @@ impl Simulation {
             reach_offsets_m,
             pick,
             rng,
+            persistent,
             next: 0,
             ticks,
         })
@@ -752,12 +760,17 @@ impl Simulation {
                 .bump
                 .filter(|b| b.camera == k && stamp >= b.from_nanos)
                 .map(|b| b.apply(camera));
+            let offsets = match (&self.config.noise.relative, &mut self.persistent) {
+                (Some(r), Some(p)) => p.at(t, r).get(k),
+                _ => None,
+            };
             views.push(render_view(
                 bumped.as_ref().unwrap_or(camera),
                 k,
                 stamp,
                 &kin,
                 &self.config.noise,
+                offsets,
                 &mut self.rng,
             ));
         }

@@ -20,9 +20,11 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use ergocell_ergonomics::height::HandoverRula;
+use ergocell_perception::detector_error::DetectorErrorReport;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySpec};
+use ergocell_sim::detector_fit::{self, DetectorModel, FitSettings};
 use ergocell_sim::experiments::{
     self, Adaptation, Handovers, HeightOptions, HeightResult, RulaAgreement, Setup, Table1,
 };
@@ -58,6 +60,10 @@ pub enum Experiment {
     /// seeds of `--seeds`, default 1..4): writes `handover_rula.toml` into `--out-dir`, the data the
     /// height decision reads from the trajectories folder.
     HandoverRula,
+    /// Fit the twin's pose-estimator model to a real detector measured view against view (`--real`,
+    /// written by `triangulate --detector-error` on the same cameras, `--cameras`): fits on `--seed`,
+    /// reports on `--seeds` (default 101..120), writes `detector.toml` and `detector_fit.json`.
+    FitDetector,
 }
 
 impl Experiment {
@@ -68,6 +74,7 @@ impl Experiment {
             Experiment::Height => "height",
             Experiment::RulaAgreement => "rula_agreement",
             Experiment::HandoverRula => "handover_rula",
+            Experiment::FitDetector => "detector_fit",
         }
     }
 }
@@ -90,6 +97,14 @@ pub struct Common {
     /// Pixel noise σ of the simulated pose estimator, pixels.
     #[arg(long, global = true, default_value_t = 3.0)]
     pub noise_px: f64,
+    /// The simulated pose estimator: a model fitted to a real detector (`sim fit-detector`'s
+    /// `detector.toml`, e.g. `sim/detectors/mediapipe-pose2sim.toml`) in place of `--noise-px`'s
+    /// independent pixel noise.
+    #[arg(long, global = true)]
+    pub detector: Option<PathBuf>,
+    /// fit-detector: the real detector's error (`triangulate --detector-error`'s JSON).
+    #[arg(long, global = true)]
+    pub real: Option<PathBuf>,
     /// Print the numbers as one JSON object on stdout instead of a table.
     #[arg(long, global = true)]
     pub json: bool,
@@ -156,6 +171,153 @@ fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
         }
     }
     Ok(rig)
+}
+
+/// The simulated detector: `--detector`'s fitted model, or `--noise-px`'s independent noise; the
+/// ear offset of `--ear-offset-m` either way.
+fn detector_noise(c: &Common) -> anyhow::Result<DetectorNoise> {
+    let base = DetectorNoise {
+        pixel_sigma_px: c.noise_px,
+        ear_offset_m: c.ear_offset_m,
+        ..DetectorNoise::default()
+    };
+    let Some(path) = &c.detector else {
+        return Ok(base);
+    };
+    let text = ergocell::input::read_text(path, ergocell::input::Kind::Config)?;
+    let model = DetectorModel::from_toml_str(&text)
+        .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+    Ok(model.apply(base))
+}
+
+/// `sim fit-detector`: the twin's detector fitted to `--real` on `--cameras` (see
+/// `ergocell_sim::detector_fit`), reported on other seeds beside the default independent noise.
+fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
+    let Some(real_path) = &c.real else {
+        return Err(UsageError(
+            "fit-detector needs --real <detector-error.json> (from `triangulate --detector-error` on the same cameras)"
+                .to_owned(),
+        )
+        .into());
+    };
+    let real: DetectorErrorReport = serde_json::from_str(&ergocell::input::read_text(
+        real_path,
+        ergocell::input::Kind::Data,
+    )?)
+    .map_err(|e| UsageError(format!("{}: {e}", real_path.display())))?;
+    let rig = load_rig(&c.cameras)?;
+    let settings = FitSettings::default();
+    let report_seeds: Vec<u64> = c
+        .seeds
+        .as_ref()
+        .map_or_else(|| (101..=120).collect(), |s| s.0.clone());
+    let pb = progress_bar("fit-detector");
+    let mut fit =
+        detector_fit::fit(&real, &rig, &settings, c.seed).map_err(|e| UsageError(e.to_string()))?;
+    fit.model.fitted_to = format!(
+        "{}: {} frames at {:.0} Hz on {} ({} cameras); fitted on seed {}, {} frames, {} rounds",
+        real_path.display(),
+        real.frames,
+        real.frame_rate_hz.unwrap_or(0.0),
+        c.cameras,
+        rig.len(),
+        c.seed,
+        settings.frames,
+        settings.iterations
+    );
+    let mut per_seed = Vec::new();
+    for &seed in &report_seeds {
+        let rows = detector_fit::compare(&real, &rig, &fit.model, &settings, seed)?;
+        per_seed.push((seed, rows));
+    }
+    let independent = detector_fit::compare_noise(
+        &real,
+        &rig,
+        &DetectorNoise {
+            pixel_sigma_px: c.noise_px,
+            ..DetectorNoise::default()
+        },
+        &settings,
+        report_seeds[0],
+    )?;
+    pb.finish_and_clear();
+    let measured = |rows: &[detector_fit::FitRow]| {
+        rows.iter()
+            .filter(|r| r.real.total.count > 0)
+            .map(detector_fit::FitRow::worst_gap)
+            .fold(0.0, f64::max)
+    };
+    let within = per_seed.iter().filter(|(_, r)| measured(r) <= 0.2).count();
+    if !c.json {
+        let pct = |q: &ergocell_perception::detector_error::Quantiles| {
+            format!("{:>5.2} {:>5.2}", 100.0 * q.p50, 100.0 * q.p90)
+        };
+        println!(
+            "detector fit to {} (% of the person's image height, median p90), twin on seed {}:",
+            real_path.display(),
+            report_seeds[0]
+        );
+        println!(
+            "  {:<16} {:>11} {:>11}   {:>11} {:>11}   {:>11} {:>11}   {:>11}",
+            "group",
+            "real total",
+            "twin total",
+            "real pers.",
+            "twin pers.",
+            "real jit.",
+            "twin jit.",
+            "independent"
+        );
+        let (_, first) = &per_seed[0];
+        for (row, ind) in first.iter().zip(&independent) {
+            if row.real.total.count == 0 {
+                println!("  {:<16} not measured in the real recording", row.group);
+                continue;
+            }
+            println!(
+                "  {:<16} {} {}   {} {}   {} {}   {}",
+                row.group,
+                pct(&row.real.total),
+                pct(&row.twin.total),
+                pct(&row.real.persistent),
+                pct(&row.twin.persistent),
+                pct(&row.real.jitter),
+                pct(&row.twin.jitter),
+                pct(&ind.twin.total)
+            );
+        }
+        println!(
+            "  every measured group's median and p90 within 20 % of the real on {within} of {} seeds ({}..{}); fitted on seed {}",
+            per_seed.len(),
+            report_seeds[0],
+            report_seeds[report_seeds.len() - 1],
+            c.seed
+        );
+        println!(
+            "  (independent: the default model, {} px per coordinate, measured the same way)",
+            c.noise_px
+        );
+    }
+    std::fs::create_dir_all(&c.out_dir)
+        .with_context(|| format!("creating {}", c.out_dir.display()))?;
+    let model_path = c.out_dir.join("detector.toml");
+    super::output::replace(&model_path, fit.model.to_toml()?.as_bytes())?;
+    let doc = serde_json::json!({
+        "model": fit.model,
+        "fit_seed": c.seed,
+        "fit_rows": fit.rows,
+        "report_seeds": per_seed.iter().map(|(seed, rows)| serde_json::json!({
+            "seed": seed,
+            "worst_gap": measured(rows),
+            "rows": rows,
+        })).collect::<Vec<_>>(),
+        "seeds_within_20_percent": within,
+        "independent_noise_rows": independent,
+    });
+    let setup =
+        serde_json::json!({ "cameras": c.cameras, "real": real_path, "camera_count": rig.len() });
+    println!("wrote {}", model_path.display());
+    write_result(c, "detector_fit", doc, setup, &[])
 }
 
 /// `forward,lateral,height` in metres, three finite numbers.
@@ -322,16 +484,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     if matches!(args.experiment, Experiment::HandoverRula) {
         return run_handover_rula(c);
     }
+    if matches!(args.experiment, Experiment::FitDetector) {
+        return run_fit_detector(c);
+    }
     if let Some(SeedRange(seeds)) = &c.seeds {
         return run_seeds(args, seeds);
     }
     let setup = Setup {
         rig: load_rig(&c.cameras)?,
-        noise: DetectorNoise {
-            pixel_sigma_px: c.noise_px,
-            ear_offset_m: c.ear_offset_m,
-            ..DetectorNoise::default()
-        },
+        noise: detector_noise(c)?,
         seed: c.seed,
     };
     setup
@@ -349,6 +510,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
     let (value, figures) = match args.experiment {
         Experiment::HandoverRula => return run_handover_rula(c),
+        Experiment::FitDetector => return run_fit_detector(c),
         Experiment::Table1 => {
             let r = experiments::table1(
                 &setup,
@@ -559,11 +721,7 @@ fn each<T>(
 fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
     let c = &args.common;
     let rig = load_rig(&c.cameras)?;
-    let noise = DetectorNoise {
-        pixel_sigma_px: c.noise_px,
-        ear_offset_m: c.ear_offset_m,
-        ..DetectorNoise::default()
-    };
+    let noise = detector_noise(c)?;
     noise.validate().map_err(|e| UsageError(e.to_string()))?;
     let handovers = load_handovers(c)?;
     let name = args.experiment.name();
@@ -582,6 +740,7 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
     };
     let (value, figures) = match args.experiment {
         Experiment::HandoverRula => return run_handover_rula(c),
+        Experiment::FitDetector => return run_fit_detector(c),
         Experiment::Table1 => seeds_table1(c, seeds, &setup, &handovers, &pb)?,
         Experiment::Adaptation => seeds_adaptation(c, seeds, &setup, &handovers, &pb)?,
         Experiment::Height => seeds_height(c, seeds, &setup, &handovers, &pb)?,

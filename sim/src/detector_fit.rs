@@ -1,0 +1,543 @@
+//! The twin's detector fitted to a real one.
+//!
+//! The real detector is measured view against view on a real recording
+//! ([`ergocell_perception::detector_error`]): per landmark group, the persistent part and the jitter
+//! of its error, relative to the person's image height. The twin is measured **the same way at the
+//! same cameras**: a simulated person stands where the real one stood (the report's
+//! [`PersonPlace`]), moving gently, seen by the real rig through the twin's detector, and the same
+//! leave-one-view-out measurement runs on those detections. [`fit`] scales each group's persistent
+//! and jitter σ of a [`RelativeNoise`] by the ratio of the real median to the twin's, and repeats:
+//! the measurement's own biases (the other views' error in each residual, the window's share of the
+//! jitter) are then the same on both sides. The fit runs on one seed; [`compare`] reports the result
+//! on others.
+//!
+//! The fitted model is data the twin reads: [`DetectorModel`], a small TOML file
+//! (`sim/detectors/`), applied to the default [`DetectorNoise`] by [`DetectorModel::apply`].
+
+use ergocell_perception::detector_error::{
+    self, DetectorErrorReport, ErrorStats, MeasureConfig, PersonPlace, GROUPS,
+};
+use ergocell_perception::{CameraRig, Frame2};
+use nalgebra::Vector3;
+use rand::SeedableRng as _;
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+
+use crate::body::{Operator, Posture};
+use crate::detector::{
+    jitter_nanos, render_view, DetectorNoise, PersistentOffsets, RelativeNoise, NOISE_GROUPS,
+};
+use crate::SimError;
+
+/// Format tag of a detector model file.
+pub const DETECTOR_FORMAT: &str = "ergocell-detector/1";
+
+/// A fitted detector, as the twin reads it from a file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DetectorModel {
+    pub format: String,
+    /// What it was fitted to and how (for people; nothing reads it).
+    pub fitted_to: String,
+    /// The pixel floor under the relative error (quantisation), pixels.
+    pub pixel_sigma_px: f64,
+    /// How much more an occluded landmark errs, from the real error of low-confidence detections.
+    pub occluded_noise_scale: f64,
+    /// The probability an occluded landmark is reported at all (BlazePose reports all 33: 1).
+    pub occluded_report_probability: f64,
+    /// The probability of a gross error per keypoint (the real share beyond 15 % of the height).
+    pub outlier_probability: f64,
+    /// The probability a camera's view is missing in a frame (the real frames without a person).
+    pub drop_probability: f64,
+    pub relative: RelativeNoise,
+}
+
+impl DetectorModel {
+    /// Parses and checks a model file.
+    pub fn from_toml_str(text: &str) -> Result<Self, SimError> {
+        let model: Self =
+            toml::from_str(text).map_err(|e| SimError::BadModel { why: e.to_string() })?;
+        if model.format != DETECTOR_FORMAT {
+            return Err(SimError::BadModel {
+                why: format!("format `{}`, expected `{DETECTOR_FORMAT}`", model.format),
+            });
+        }
+        model.apply(DetectorNoise::default()).validate()?;
+        Ok(model)
+    }
+
+    /// The model as TOML, with a header saying what it is.
+    pub fn to_toml(&self) -> Result<String, SimError> {
+        let body = toml::to_string(self).map_err(|e| SimError::BadModel { why: e.to_string() })?;
+        Ok(format!(
+            "# The digital twin's pose-estimator model, fitted to a real detector measured view\n\
+             # against view (`ergocell sim fit-detector`; docs/detector-error.md). Groups: face,\n\
+             # shoulders and arms, hips, legs; sigmas per image coordinate, as fractions of the\n\
+             # person's image height.\n{body}"
+        ))
+    }
+
+    /// `noise` with this model's error in place of its independent pixel noise.
+    pub fn apply(&self, noise: DetectorNoise) -> DetectorNoise {
+        DetectorNoise {
+            pixel_sigma_px: self.pixel_sigma_px,
+            occluded_noise_scale: self.occluded_noise_scale,
+            occluded_report_probability: self.occluded_report_probability,
+            outlier_probability: self.outlier_probability,
+            drop_probability: self.drop_probability,
+            relative: Some(self.relative),
+            ..noise
+        }
+    }
+}
+
+/// A person standing where `place` says, moving gently (arms, trunk, knees), seen by `rig` at
+/// `rate_hz` for `frames` frames through `noise`. The world must be z-up (the twin's).
+pub fn simulate_standing(
+    rig: &CameraRig,
+    place: &PersonPlace,
+    noise: &DetectorNoise,
+    rate_hz: f64,
+    frames: usize,
+    seed: u64,
+) -> Result<Vec<Frame2>, SimError> {
+    noise.validate()?;
+    let up = Vector3::from(place.up);
+    if up.z < 0.9 {
+        return Err(SimError::BadParameter {
+            name: "person up (z)",
+            value: up.z,
+            why: "the twin stands in a z-up world; this recording's person is not upright in it",
+        });
+    }
+    if !(rate_hz.is_finite() && rate_hz > 0.0) {
+        return Err(SimError::BadParameter {
+            name: "rate_hz",
+            value: rate_hz,
+            why: "must be positive",
+        });
+    }
+    // A stature whose mid-hip is as high as the real person's.
+    let reference = Operator::new(1.75)?;
+    let hip = |op: &Operator| {
+        let k = op.kinematics(&Posture::default());
+        0.5 * (k.points[23].z + k.points[24].z)
+    };
+    let stature = (1.75 * place.mid_hip_m[2] / hip(&reference)).clamp(1.4, 2.1);
+    let person = Operator::new(stature)?;
+    let heading = place.facing[1].atan2(place.facing[0]);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut persistent = noise
+        .relative
+        .as_ref()
+        .map(|_| PersistentOffsets::new(rig.len(), seed));
+    let period = (1e9 / rate_hz).round() as i64;
+    let d = f64::to_radians;
+    (0..frames)
+        .map(|f| {
+            let t_nanos = f as i64 * period;
+            let t = t_nanos as f64 * 1e-9;
+            let mut posture = Posture {
+                position_m: [place.mid_hip_m[0], place.mid_hip_m[1]],
+                heading_rad: heading,
+                trunk_flexion_rad: d(6.0) * (0.3 * t).sin(),
+                trunk_side_bend_rad: d(3.0) * (0.47 * t).sin(),
+                ..Posture::default()
+            };
+            posture.left_arm.flexion_rad = d(30.0) * (0.4 * t).sin().abs();
+            posture.right_arm.flexion_rad = d(30.0) * (0.4 * t + 1.3).sin().abs();
+            posture.left_arm.abduction_rad = d(20.0) * (0.25 * t).sin().abs();
+            posture.left_leg.knee_flexion_rad = d(10.0) * (0.5 * t).sin().abs();
+            let kin = person.kinematics(&posture);
+            let offsets = match (&noise.relative, &mut persistent) {
+                (Some(r), Some(p)) => Some(p.at(t_nanos, r).to_vec()),
+                _ => None,
+            };
+            let views = rig
+                .cameras()
+                .iter()
+                .enumerate()
+                .map(|(k, camera)| {
+                    let dt = jitter_nanos(noise, &mut rng);
+                    render_view(
+                        camera,
+                        k,
+                        t_nanos + dt,
+                        &kin,
+                        noise,
+                        offsets.as_ref().and_then(|o| o.get(k)),
+                        &mut rng,
+                    )
+                })
+                .collect();
+            Ok(Frame2 {
+                stamp_nanos: t_nanos,
+                views,
+            })
+        })
+        .collect()
+}
+
+/// One group's real and twin error side by side.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FitRow {
+    pub group: String,
+    pub real: ErrorStats,
+    pub twin: ErrorStats,
+}
+
+impl FitRow {
+    /// The largest relative gap between twin and real over the total's median and p90.
+    pub fn worst_gap(&self) -> f64 {
+        [
+            (self.twin.total.p50, self.real.total.p50),
+            (self.twin.total.p90, self.real.total.p90),
+        ]
+        .iter()
+        .map(|(t, r)| if *r > 0.0 { (t - r).abs() / r } else { 0.0 })
+        .fold(0.0, f64::max)
+    }
+}
+
+/// The fitted model and how it compares.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Fit {
+    pub model: DetectorModel,
+    /// Per group measured by the real report, on the fitting seed.
+    pub rows: Vec<FitRow>,
+}
+
+/// How the twin is simulated for a fit or a comparison.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FitSettings {
+    /// Simulated frames per seed (at the real recording's rate).
+    pub frames: usize,
+    /// Scaling rounds.
+    pub iterations: usize,
+    /// Correlation time of the persistent offsets, seconds (a short real clip cannot measure it).
+    pub persistent_tau_s: f64,
+    /// The pixel floor under the relative error, pixels.
+    pub pixel_sigma_px: f64,
+    /// Seeds the fit measures the twin on at once (from its seed on): more people's worth of
+    /// offsets, a steadier fit.
+    pub fit_seeds: u64,
+}
+
+impl Default for FitSettings {
+    fn default() -> Self {
+        Self {
+            frames: 600,
+            iterations: 6,
+            persistent_tau_s: 2.0,
+            pixel_sigma_px: 1.0,
+            fit_seeds: 5,
+        }
+    }
+}
+
+/// The twin measured like `real`, over `seeds` (each seed's session a stretch of its own, 1000 s
+/// apart, so that no persistent window spans two).
+fn twin_report(
+    real: &DetectorErrorReport,
+    rig: &CameraRig,
+    noise: &DetectorNoise,
+    settings: &FitSettings,
+    seeds: &[u64],
+) -> Result<DetectorErrorReport, SimError> {
+    let place = real.person.as_ref().ok_or(SimError::BadModel {
+        why: "the real report has no person place (no torso was triangulated)".to_owned(),
+    })?;
+    let rate = real.frame_rate_hz.unwrap_or(30.0);
+    let mut frames = Vec::new();
+    for (i, &seed) in seeds.iter().enumerate() {
+        let shift = i as i64 * 1_000_000_000_000;
+        frames.extend(
+            simulate_standing(rig, place, noise, rate, settings.frames, seed)?
+                .into_iter()
+                .map(|mut f| {
+                    f.stamp_nanos += shift;
+                    for v in &mut f.views {
+                        v.stamp_nanos += shift;
+                    }
+                    f
+                }),
+        );
+    }
+    let config = MeasureConfig {
+        window_s: real.window_s,
+        ..MeasureConfig::default()
+    };
+    Ok(detector_error::measure(rig, &frames, &config).report(rig, config.window_s))
+}
+
+fn rows(real: &DetectorErrorReport, twin: &DetectorErrorReport) -> Vec<FitRow> {
+    real.groups
+        .iter()
+        .zip(&twin.groups)
+        .map(|((name, r), (_, t))| FitRow {
+            group: name.clone(),
+            real: *r,
+            twin: *t,
+        })
+        .collect()
+}
+
+/// Fits a [`RelativeNoise`] to `real` (measured on `rig`) on seeds `seed..seed + fit_seeds` (see
+/// the module docs). Groups
+/// the real recording did not measure keep their starting σ.
+pub fn fit(
+    real: &DetectorErrorReport,
+    rig: &CameraRig,
+    settings: &FitSettings,
+    seed: u64,
+) -> Result<Fit, SimError> {
+    if real.groups.len() != NOISE_GROUPS || GROUPS.len() != NOISE_GROUPS {
+        return Err(SimError::BadModel {
+            why: format!(
+                "the real report has {} landmark groups, the twin {NOISE_GROUPS}",
+                real.groups.len()
+            ),
+        });
+    }
+    // Occluded (low-confidence) detections err this much more than the rest, when measured.
+    let low = real.by_confidence.first().map(|b| b.total.p50);
+    let occluded_noise_scale = match (low, real.confidence_error_spearman) {
+        (Some(low), Some(_)) if low > 0.0 && real.all.total.p50 > 0.0 => {
+            (low / real.all.total.p50).clamp(1.0, 6.0)
+        }
+        _ => DetectorNoise::default().occluded_noise_scale,
+    };
+    let fit_seeds: Vec<u64> = (0..settings.fit_seeds.max(1))
+        .map(|i| seed.wrapping_add(i))
+        .collect();
+    let mut relative = RelativeNoise {
+        persistent_sigma: [0.02; NOISE_GROUPS],
+        jitter_sigma: [0.01; NOISE_GROUPS],
+        persistent_tau_s: settings.persistent_tau_s,
+        persistent_shape: [0.5; NOISE_GROUPS],
+    };
+    let cameras_seen: usize = real.cameras.iter().map(|c| c.frames_seen).sum();
+    let cameras_missing: usize = real.cameras.iter().map(|c| c.frames_missing).sum();
+    let drop_probability = cameras_missing as f64 / (cameras_seen + cameras_missing).max(1) as f64;
+    let model = |relative: RelativeNoise| DetectorModel {
+        format: DETECTOR_FORMAT.to_owned(),
+        fitted_to: String::new(),
+        pixel_sigma_px: settings.pixel_sigma_px,
+        occluded_noise_scale,
+        occluded_report_probability: 1.0,
+        outlier_probability: real.gross_error_share.clamp(0.0, 0.2),
+        drop_probability: drop_probability.clamp(0.0, 0.5),
+        relative,
+    };
+    for _ in 0..settings.iterations {
+        let noise = model(relative).apply(DetectorNoise::default());
+        let report = twin_report(real, rig, &noise, settings, &fit_seeds)?;
+        for (g, ((_, r), (_, t))) in real.groups.iter().zip(&report.groups).enumerate() {
+            if r.total.count == 0 {
+                continue;
+            }
+            let scale = |real: f64, twin: f64| {
+                if real > 0.0 && twin > 0.0 {
+                    (real / twin).clamp(0.25, 4.0)
+                } else {
+                    1.0
+                }
+            };
+            // The offset's size to the total's median, the jitter to the jitter's, the offset's
+            // shape to the total's spread (p90 over median).
+            relative.persistent_sigma[g] =
+                (relative.persistent_sigma[g] * scale(r.total.p50, t.total.p50)).min(0.5);
+            relative.jitter_sigma[g] =
+                (relative.jitter_sigma[g] * scale(r.jitter.p50, t.jitter.p50)).min(0.5);
+            let spread = |q: &ergocell_perception::detector_error::Quantiles| {
+                if q.p50 > 0.0 {
+                    (q.p90 / q.p50 - 1.0).max(1e-3)
+                } else {
+                    1.0
+                }
+            };
+            relative.persistent_shape[g] = (relative.persistent_shape[g].max(0.02)
+                * (spread(&r.total) / spread(&t.total)).clamp(0.5, 2.0))
+            .clamp(0.0, 1.0);
+        }
+    }
+    let noise = model(relative).apply(DetectorNoise::default());
+    let twin = twin_report(real, rig, &noise, settings, &fit_seeds)?;
+    Ok(Fit {
+        model: model(relative),
+        rows: rows(real, &twin),
+    })
+}
+
+/// The twin with `model`, measured like `real` on `seed`, group by group.
+pub fn compare(
+    real: &DetectorErrorReport,
+    rig: &CameraRig,
+    model: &DetectorModel,
+    settings: &FitSettings,
+    seed: u64,
+) -> Result<Vec<FitRow>, SimError> {
+    let noise = model.apply(DetectorNoise::default());
+    Ok(rows(
+        real,
+        &twin_report(real, rig, &noise, settings, &[seed])?,
+    ))
+}
+
+/// The default (independent pixel noise) twin measured like `real`, for the record.
+pub fn compare_noise(
+    real: &DetectorErrorReport,
+    rig: &CameraRig,
+    noise: &DetectorNoise,
+    settings: &FitSettings,
+    seed: u64,
+) -> Result<Vec<FitRow>, SimError> {
+    Ok(rows(
+        real,
+        &twin_report(real, rig, noise, settings, &[seed])?,
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cameras::{ring_rig, RingRigConfig};
+
+    fn known() -> RelativeNoise {
+        RelativeNoise {
+            persistent_sigma: [0.02, 0.015, 0.025, 0.018],
+            jitter_sigma: [0.004, 0.008, 0.004, 0.008],
+            persistent_tau_s: 2.0,
+            persistent_shape: [0.5; NOISE_GROUPS],
+        }
+    }
+
+    fn small() -> FitSettings {
+        FitSettings {
+            frames: 240,
+            iterations: 5,
+            fit_seeds: 3,
+            ..FitSettings::default()
+        }
+    }
+
+    /// A "real" report made by the twin itself with a known model, on seeds the fit never sees.
+    fn real_from_twin(rig: &CameraRig) -> DetectorErrorReport {
+        let place = PersonPlace {
+            mid_hip_m: [0.0, 0.0, 0.9],
+            facing: [1.0, 0.0, 0.0],
+            up: [0.0, 0.0, 1.0],
+        };
+        let skeleton = DetectorErrorReport {
+            frames: 0,
+            frame_rate_hz: Some(30.0),
+            window_s: 1.0,
+            person: Some(place),
+            all: ErrorStats::default(),
+            groups: Vec::new(),
+            landmarks: Vec::new(),
+            cameras: Vec::new(),
+            by_confidence: Vec::new(),
+            by_view_angle_deg: Vec::new(),
+            confidence_error_spearman: None,
+            gross_error_share: 0.0,
+        };
+        let model = DetectorModel {
+            format: DETECTOR_FORMAT.to_owned(),
+            fitted_to: String::new(),
+            pixel_sigma_px: 1.0,
+            occluded_noise_scale: 1.0,
+            occluded_report_probability: 1.0,
+            outlier_probability: 0.0,
+            drop_probability: 0.0,
+            relative: known(),
+        };
+        let noise = model.apply(DetectorNoise::default());
+        twin_report(&skeleton, rig, &noise, &small(), &[900, 901, 902]).unwrap()
+    }
+
+    #[test]
+    fn a_fit_to_the_twins_own_measurement_recovers_its_error() {
+        let rig = ring_rig(4, &RingRigConfig::default()).unwrap();
+        let real = real_from_twin(&rig);
+        assert!(real.all.total.count > 10_000, "{:?}", real.all);
+        let fit = fit(&real, &rig, &small(), 1).unwrap();
+        // Every group's median and p90 within 20 % of the "real" on the fitting seeds…
+        for row in &fit.rows {
+            assert!(row.worst_gap() < 0.2, "{row:?}");
+        }
+        // …and the persistent σ (what the error mostly is) near the one that made it.
+        for (g, (&got, &want)) in fit
+            .model
+            .relative
+            .persistent_sigma
+            .iter()
+            .zip(&known().persistent_sigma)
+            .enumerate()
+        {
+            assert!(
+                (got / want - 1.0).abs() < 0.3,
+                "group {g}: {got} for {want}"
+            );
+        }
+        // On a seed the fit never saw, too.
+        let rows = compare(&real, &rig, &fit.model, &small(), 77).unwrap();
+        assert!(rows.iter().all(|r| r.worst_gap() < 0.25), "{rows:?}");
+    }
+
+    #[test]
+    fn a_model_file_round_trips_and_bad_ones_are_refused() {
+        let model = DetectorModel {
+            format: DETECTOR_FORMAT.to_owned(),
+            fitted_to: "a test".to_owned(),
+            pixel_sigma_px: 1.0,
+            occluded_noise_scale: 1.8,
+            occluded_report_probability: 1.0,
+            outlier_probability: 0.02,
+            drop_probability: 0.0,
+            relative: known(),
+        };
+        let text = model.to_toml().unwrap();
+        assert_eq!(DetectorModel::from_toml_str(&text).unwrap(), model);
+        let other = text.replace("ergocell-detector/1", "ergocell-detector/9");
+        assert!(DetectorModel::from_toml_str(&other)
+            .unwrap_err()
+            .to_string()
+            .contains("ergocell-detector/9"));
+        let nan = text.replace("persistent_tau_s = 2.0", "persistent_tau_s = nan");
+        assert!(DetectorModel::from_toml_str(&nan).is_err());
+        let shape = text.replace("persistent_shape = [0.5,", "persistent_shape = [1.5,");
+        assert_ne!(shape, text);
+        assert!(DetectorModel::from_toml_str(&shape).is_err());
+        assert!(DetectorModel::from_toml_str("format = ").is_err());
+    }
+
+    #[test]
+    fn a_fixed_length_offset_has_its_length_and_a_gaussian_one_its_spread() {
+        let mut fixed = known();
+        fixed.persistent_shape = [0.0; NOISE_GROUPS];
+        let mut offsets = PersistentOffsets::new(3, 5);
+        for step in 0..50 {
+            for camera in offsets.at(step * 100_000_000, &fixed) {
+                for (l, o) in camera.iter().enumerate() {
+                    let want = fixed.persistent_sigma[crate::detector::noise_group(l)] * 1.2533;
+                    assert!(
+                        (o.norm() - want).abs() < 1e-4 * want.max(1e-9) + 1e-9,
+                        "{o:?}"
+                    );
+                }
+            }
+        }
+        // Shape 1: Gaussian, σ per coordinate over many cameras and landmarks.
+        let mut gaussian = known();
+        gaussian.persistent_shape = [1.0; NOISE_GROUPS];
+        let mut offsets = PersistentOffsets::new(200, 6);
+        let face: Vec<f64> = offsets
+            .at(0, &gaussian)
+            .iter()
+            .flat_map(|c| c[..=10].iter().flat_map(|o| [o.x, o.y]))
+            .collect();
+        let sd = (face.iter().map(|x| x * x).sum::<f64>() / face.len() as f64).sqrt();
+        assert!((sd / 0.02 - 1.0).abs() < 0.08, "{sd}");
+    }
+}
