@@ -921,16 +921,7 @@ fn a_rollback_a_restored_lock_and_a_deleted_withdrawal_are_refused() {
     std::fs::write(&approvals_path, &new_approvals).unwrap();
     let (code, out, _) = verify();
     assert!(code == 0 && out.contains("c2: OK"), "{out}");
-    let (code, out, err) = cell.ergocell(&[
-        "trajectories",
-        "withdraw",
-        "--class",
-        "c2",
-        "--by",
-        BOB,
-        "--key",
-        "keys/bob",
-    ]);
+    let (code, out, err) = cell.withdraw("c2", BOB, "keys/bob");
     assert!(
         code == 0 && out.contains("WITHDRAWN by bob@plant.example"),
         "{out}{err}"
@@ -943,16 +934,7 @@ fn a_rollback_a_restored_lock_and_a_deleted_withdrawal_are_refused() {
     assert!(refused().contains("withdrawn"));
     let withdrawn = std::fs::read(&approvals_path).unwrap();
     // Mallory's key cannot withdraw (nor could it approve).
-    let (code, _, err) = cell.ergocell(&[
-        "trajectories",
-        "withdraw",
-        "--class",
-        "c2",
-        "--by",
-        BOB,
-        "--key",
-        "keys/mallory",
-    ]);
+    let (code, _, err) = cell.withdraw("c2", BOB, "keys/mallory");
     assert!(code == 1 && err.contains("refusing to withdraw"), "{err}");
     // 4. The withdrawal deleted (the file as it was before it): the witness saw it.
     std::fs::write(&approvals_path, &new_approvals).unwrap();
@@ -960,16 +942,7 @@ fn a_rollback_a_restored_lock_and_a_deleted_withdrawal_are_refused() {
     assert!(code == 1 && out.contains("it had 3"), "{out}");
     assert!(refused().contains("it had 3"));
     // Nothing is added on top of the cut-back file either.
-    let (code, out, err) = cell.ergocell(&[
-        "trajectories",
-        "withdraw",
-        "--class",
-        "c2",
-        "--by",
-        BOB,
-        "--key",
-        "keys/bob",
-    ]);
+    let (code, out, err) = cell.withdraw("c2", BOB, "keys/bob");
     assert!(
         code == 1 && err.contains("restored from an older copy"),
         "{out}{err}"

@@ -181,18 +181,8 @@ fn openpose_body25_folders_triangulate_to_the_true_body_and_ignore_the_bystander
 
 #[test]
 fn caliscope_recording_gives_a_summary_and_json() {
-    let data = repo().join("../shared/data/caliscope-4cam");
     let out = tmp("caliscope_out").with_extension("json");
-    let (code, stdout, stderr) = ergocell(&[
-        "triangulate",
-        "--calibration",
-        data.join("config.toml").to_str().unwrap(),
-        "--detections",
-        data.join("xy_pose33.csv").to_str().unwrap(),
-        "--force",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let (code, stdout, stderr) = triangulate_caliscope(&out, &[]);
     assert_eq!(code, 0, "{stdout}\n{stderr}");
     assert!(stdout.contains("frames:                   267"), "{stdout}");
     assert!(stdout.contains("median reprojection err:"), "{stdout}");
@@ -206,6 +196,25 @@ fn caliscope_recording_gives_a_summary_and_json() {
     assert_eq!(frames.len(), 267);
 }
 
+/// `triangulate` on caliscope's real recording into `out` (`--force`), with `extra` arguments.
+fn triangulate_caliscope(out: &Path, extra: &[&str]) -> (i32, String, String) {
+    let data = repo().join("../shared/data/caliscope-4cam");
+    let calibration = data.join("config.toml");
+    let detections = data.join("xy_pose33.csv");
+    let mut args = vec![
+        "triangulate",
+        "--calibration",
+        calibration.to_str().unwrap(),
+        "--detections",
+        detections.to_str().unwrap(),
+        "--force",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    ergocell(&args)
+}
+
 /// `--detector-error` on caliscope's real recording: each view judged by the others, tables on
 /// stdout and the same figures as JSON.
 #[test]
@@ -213,18 +222,8 @@ fn the_detector_error_of_a_real_recording_is_measured_view_against_view() {
     let data = repo().join("../shared/data/caliscope-4cam");
     let out = tmp("caliscope_err_out").with_extension("json");
     let err = tmp("caliscope_err").with_extension("json");
-    let (code, stdout, stderr) = ergocell(&[
-        "triangulate",
-        "--calibration",
-        data.join("config.toml").to_str().unwrap(),
-        "--detections",
-        data.join("xy_pose33.csv").to_str().unwrap(),
-        "--force",
-        "--out",
-        out.to_str().unwrap(),
-        "--detector-error",
-        err.to_str().unwrap(),
-    ]);
+    let (code, stdout, stderr) =
+        triangulate_caliscope(&out, &["--detector-error", err.to_str().unwrap()]);
     assert_eq!(code, 0, "{stdout}\n{stderr}");
     assert!(
         stdout.contains("detector error, each view against the other views (267 frames"),
@@ -263,18 +262,9 @@ fn the_detector_error_of_a_real_recording_is_measured_view_against_view() {
     assert!(parts >= 0.5 * p50, "{all}");
     assert_eq!(report["confidence_error_spearman"], serde_json::Value::Null);
     // The report is an output like --out: never onto an input.
-    let (code, _, stderr) = ergocell(&[
-        "triangulate",
-        "--calibration",
-        data.join("config.toml").to_str().unwrap(),
-        "--detections",
-        data.join("xy_pose33.csv").to_str().unwrap(),
-        "--force",
-        "--out",
-        out.to_str().unwrap(),
-        "--detector-error",
-        data.join("xy_pose33.csv").to_str().unwrap(),
-    ]);
+    let input = data.join("xy_pose33.csv");
+    let (code, _, stderr) =
+        triangulate_caliscope(&out, &["--detector-error", input.to_str().unwrap()]);
     assert_eq!(code, 2, "{stderr}");
 }
 

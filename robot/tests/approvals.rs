@@ -72,6 +72,28 @@ fn approved(f: &Fixture) -> ApprovalsFile {
     file
 }
 
+/// [`approved`], then withdrawn by bob at 12:00.
+fn withdrawn(f: &Fixture) -> ApprovalsFile {
+    let mut file = approved(f);
+    file.withdraw(
+        CLASS,
+        common::BOB,
+        "2026-12-01T12:00:00Z",
+        &f.t.trusted,
+        &f.t.bob,
+    )
+    .unwrap();
+    file
+}
+
+/// `key`'s armored SSH signature over `message` in `namespace`, as `ssh-keygen -Y sign` makes one.
+fn ssh_sign(key: &ssh_key::PrivateKey, namespace: &str, message: &str) -> String {
+    key.sign(namespace, ssh_key::HashAlg::Sha512, message.as_bytes())
+        .unwrap()
+        .to_pem(ssh_key::LineEnding::LF)
+        .unwrap()
+}
+
 /// Re-chains `entries` (each `previous_sha256` the hash of the one before), as a forger with no key
 /// but a text editor and `sha256sum` could.
 fn rechain(mut entries: Vec<Approval>) -> String {
@@ -218,16 +240,7 @@ fn a_revoked_key_and_a_foreign_namespace_are_refused() {
 
     // A genuine SSH signature by alice over the same bytes, but made for git (`-n git`).
     let mut entries = approved(&f).approval;
-    let sig =
-        f.t.alice
-            .sign(
-                "git",
-                ssh_key::HashAlg::Sha512,
-                entries[0].message().as_bytes(),
-            )
-            .unwrap()
-            .to_pem(ssh_key::LineEnding::LF)
-            .unwrap();
+    let sig = ssh_sign(&f.t.alice, "git", &entries[0].message());
     entries[0].signature = sig;
     let err = verify(&f, &rechain(entries), &f.t.trusted).unwrap_err();
     assert!(err.contains("namespace `git`"), "{err}");
@@ -490,15 +503,7 @@ fn a_withdrawn_approval_stops_the_lock_until_it_is_approved_anew() {
 #[test]
 fn a_withdrawal_cannot_be_turned_into_an_approval_nor_forged() {
     let f = fixture();
-    let mut file = approved(&f);
-    file.withdraw(
-        CLASS,
-        common::BOB,
-        "2026-12-01T12:00:00Z",
-        &f.t.trusted,
-        &f.t.bob,
-    )
-    .unwrap();
+    let file = withdrawn(&f);
     // The withdrawal's `action` edited back to an approval (chain recomputed): its signature is
     // over a withdrawal message, so the entry is refused and the lock with it.
     let mut entries = file.approval.clone();
@@ -512,16 +517,7 @@ fn a_withdrawal_cannot_be_turned_into_an_approval_nor_forged() {
     let mut entries = approved(&f).approval;
     let mut forged = entries[0].clone();
     forged.action = signing::Action::Withdraw;
-    forged.signature =
-        f.t.mallory
-            .sign(
-                signing::APPROVAL_NAMESPACE,
-                ssh_key::HashAlg::Sha512,
-                forged.message().as_bytes(),
-            )
-            .unwrap()
-            .to_pem(ssh_key::LineEnding::LF)
-            .unwrap();
+    forged.signature = ssh_sign(&f.t.mallory, signing::APPROVAL_NAMESPACE, &forged.message());
     entries.push(forged);
     let err = verify(&f, &rechain(entries), &f.t.trusted).unwrap_err();
     assert!(
@@ -539,16 +535,7 @@ fn a_withdrawal_signed_outside_ergocell_is_appended_and_an_approval_message_is_n
         .unwrap();
     let (action, fields) = signing::parse_approval_message(&message).unwrap();
     assert_eq!(action, signing::Action::Withdraw);
-    let sig =
-        f.t.alice
-            .sign(
-                signing::APPROVAL_NAMESPACE,
-                ssh_key::HashAlg::Sha512,
-                message.as_bytes(),
-            )
-            .unwrap()
-            .to_pem(ssh_key::LineEnding::LF)
-            .unwrap();
+    let sig = ssh_sign(&f.t.alice, signing::APPROVAL_NAMESPACE, &message);
     // The withdrawal message offered as an approval is refused, saying what it is.
     let err = file
         .clone()
@@ -582,15 +569,7 @@ mod witness {
     #[test]
     fn a_deleted_last_entry_or_an_older_copy_is_refused() {
         let f = fixture();
-        let mut file = approved(&f);
-        file.withdraw(
-            CLASS,
-            common::BOB,
-            "2026-12-01T12:00:00Z",
-            &f.t.trusted,
-            &f.t.bob,
-        )
-        .unwrap();
+        let file = withdrawn(&f);
         let witness = Witness::parse(&seen(&f, &file));
         assert!(witness.unreadable.is_empty(), "{:?}", witness.unreadable);
         witness.check(PATH, CLASS, &file).unwrap();

@@ -190,6 +190,20 @@ fn detector_noise(c: &Common) -> anyhow::Result<DetectorNoise> {
     Ok(model.apply(base))
 }
 
+/// The simulated detector in words, for titles: `3 px` or the model file's name.
+fn detector_label(c: &Common) -> String {
+    match &c.detector {
+        Some(path) => format!(
+            "detector {}",
+            path.file_name().map_or_else(
+                || path.display().to_string(),
+                |n| n.to_string_lossy().into_owned()
+            )
+        ),
+        None => format!("{} px", c.noise_px),
+    }
+}
+
 /// `sim fit-detector`: the twin's detector fitted to `--real` on `--cameras` (see
 /// `ergocell_sim::detector_fit`), reported on other seeds beside the default independent noise.
 fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
@@ -1038,8 +1052,8 @@ fn seeds_rula_agreement(
     let sum = seeds::rula_agreement(seeds, &runs);
     if !c.json {
         println!(
-            "RULA agreement over seeds {seeds:?} at {} px (mean ± s.d., worst seed):",
-            c.noise_px
+            "RULA agreement over seeds {seeds:?} with {} (mean ± s.d., worst seed):",
+            detector_label(c)
         );
         println!(
             "  grand score exact  {}",
@@ -1073,8 +1087,8 @@ fn seeds_rula_agreement(
     line_chart(
         &path,
         &format!(
-            "RULA agreement with ground truth per seed ({} px)",
-            c.noise_px
+            "RULA agreement with ground truth per seed ({})",
+            detector_label(c)
         ),
         "seed",
         "agreement",

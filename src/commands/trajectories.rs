@@ -80,24 +80,8 @@ pub enum Sub {
     Approve {
         #[arg(long, value_parser = parse_class)]
         class: TrajectoryClass,
-        /// The approver's principal, exactly as config/approvers/allowed_signers lists it (with
-        /// `--key` or `--message-out`).
-        #[arg(long, required_unless_present = "signed")]
-        by: Option<String>,
-        /// Sign with this OpenSSH Ed25519 private key (not passphrase-protected; for one that is, or
-        /// an agent or hardware key, use `--message-out` and `ssh-keygen -Y sign`).
-        #[arg(long, conflicts_with_all = ["message_out", "signed"])]
-        key: Option<PathBuf>,
-        /// Write the message to sign to this new file (never overwritten) and stop: sign it with
-        /// `ssh-keygen -Y sign -f <key> -n ergocell-trajectory-approval <file>`, then `--signed <file>`.
-        #[arg(long, conflicts_with = "signed")]
-        message_out: Option<PathBuf>,
-        /// Append the approval of this message file, signed by `ssh-keygen` into `<file>.sig`.
-        #[arg(long, conflicts_with = "by")]
-        signed: Option<PathBuf>,
-        /// The signature file for `--signed` (default `<message>.sig`).
-        #[arg(long, requires = "signed")]
-        signature: Option<PathBuf>,
+        #[command(flatten)]
+        signing: Signing,
     },
     /// Withdraw the standing approval of a class (any trusted approver may): its lock does not run
     /// again until a safety engineer approves it anew. With `--key`, or in two steps with
@@ -105,22 +89,8 @@ pub enum Sub {
     Withdraw {
         #[arg(long, value_parser = parse_class)]
         class: TrajectoryClass,
-        /// The withdrawing approver's principal, exactly as config/approvers/allowed_signers lists it.
-        #[arg(long, required_unless_present = "signed")]
-        by: Option<String>,
-        /// Sign with this OpenSSH Ed25519 private key (not passphrase-protected).
-        #[arg(long, conflicts_with_all = ["message_out", "signed"])]
-        key: Option<PathBuf>,
-        /// Write the withdrawal message to this new file and stop: sign it with
-        /// `ssh-keygen -Y sign -f <key> -n ergocell-trajectory-approval <file>`, then `--signed <file>`.
-        #[arg(long, conflicts_with = "signed")]
-        message_out: Option<PathBuf>,
-        /// Append the withdrawal of this message file, signed by `ssh-keygen` into `<file>.sig`.
-        #[arg(long, conflicts_with = "by")]
-        signed: Option<PathBuf>,
-        /// The signature file for `--signed` (default `<message>.sig`).
-        #[arg(long, requires = "signed")]
-        signature: Option<PathBuf>,
+        #[command(flatten)]
+        signing: Signing,
     },
     /// Print the exact message an approval entry signed (for `ssh-keygen -Y verify`), and with
     /// `--signature-out` write its signature to a new file. Write the message to a file first and
@@ -158,6 +128,30 @@ pub enum Sub {
     ApproversMessage,
 }
 
+/// How `approve` and `withdraw` are signed: here with a key file, or in two steps through
+/// `ssh-keygen`.
+#[derive(Debug, clap::Args)]
+pub struct Signing {
+    /// The signer's principal, exactly as config/approvers/allowed_signers lists it (with `--key`
+    /// or `--message-out`).
+    #[arg(long, required_unless_present = "signed")]
+    by: Option<String>,
+    /// Sign with this OpenSSH Ed25519 private key (not passphrase-protected; for one that is, or an
+    /// agent or hardware key, use `--message-out` and `ssh-keygen -Y sign`).
+    #[arg(long, conflicts_with_all = ["message_out", "signed"])]
+    key: Option<PathBuf>,
+    /// Write the message to sign to this new file (never overwritten) and stop: sign it with
+    /// `ssh-keygen -Y sign -f <key> -n ergocell-trajectory-approval <file>`, then `--signed <file>`.
+    #[arg(long, conflicts_with = "signed")]
+    message_out: Option<PathBuf>,
+    /// Append the entry of this message file, signed by `ssh-keygen` into `<file>.sig`.
+    #[arg(long, conflicts_with = "by")]
+    signed: Option<PathBuf>,
+    /// The signature file for `--signed` (default `<message>.sig`).
+    #[arg(long, requires = "signed")]
+    signature: Option<PathBuf>,
+}
+
 fn parse_class(s: &str) -> Result<TrajectoryClass, String> {
     s.parse()
         .map_err(|e: ergocell_robot::RobotError| e.to_string())
@@ -168,38 +162,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     match &args.command {
         Sub::Validate { class, json } => validate(&ctx, *class, *json),
         Sub::Lock { class } => lock_classes(&ctx, *class),
-        Sub::Approve {
-            class,
-            by,
-            key,
-            message_out,
-            signed,
-            signature,
-        } => {
-            let how = ApproveHow::from_args(
-                key.as_deref(),
-                message_out.as_deref(),
-                signed.as_deref(),
-                signature.as_deref(),
-            )?;
-            approve(&ctx, *class, by.as_deref(), how)
-        }
-        Sub::Withdraw {
-            class,
-            by,
-            key,
-            message_out,
-            signed,
-            signature,
-        } => {
-            let how = ApproveHow::from_args(
-                key.as_deref(),
-                message_out.as_deref(),
-                signed.as_deref(),
-                signature.as_deref(),
-            )?;
-            withdraw(&ctx, *class, by.as_deref(), how)
-        }
+        Sub::Approve { class, signing } => approve(
+            &ctx,
+            *class,
+            signing.by.as_deref(),
+            ApproveHow::from_args(signing)?,
+        ),
+        Sub::Withdraw { class, signing } => withdraw(
+            &ctx,
+            *class,
+            signing.by.as_deref(),
+            ApproveHow::from_args(signing)?,
+        ),
         Sub::ApprovalMessage {
             class,
             entry,
@@ -463,18 +437,16 @@ enum ApproveHow<'a> {
 
 impl<'a> ApproveHow<'a> {
     /// The one way `approve` or `withdraw` was asked to sign.
-    fn from_args(
-        key: Option<&'a Path>,
-        message_out: Option<&'a Path>,
-        signed: Option<&'a Path>,
-        signature: Option<&'a Path>,
-    ) -> Result<Self, UsageError> {
-        match (key, message_out, signed) {
+    fn from_args(signing: &'a Signing) -> Result<Self, UsageError> {
+        match (&signing.key, &signing.message_out, &signing.signed) {
             (Some(key), None, None) => Ok(ApproveHow::Key(key)),
             (None, Some(out), None) => Ok(ApproveHow::MessageOut(out)),
             (None, None, Some(message)) => Ok(ApproveHow::Signed {
                 message,
-                signature: signature.map_or_else(|| with_suffix(message, ".sig"), Path::to_owned),
+                signature: signing
+                    .signature
+                    .clone()
+                    .unwrap_or_else(|| with_suffix(message, ".sig")),
             }),
             _ => Err(UsageError(
                 "needs one of --key <private key>, --message-out <file> or --signed <file>"
@@ -524,6 +496,25 @@ fn witness(
     observe(path, class, file, &ctx.trusted).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
+/// The two-step flow's first step: `message` written to the new file `out`, and what to do next.
+fn message_written(
+    class: TrajectoryClass,
+    out: &Path,
+    message: &str,
+    what: &str,
+    command: &str,
+) -> anyhow::Result<()> {
+    write_new(out, message)?;
+    println!(
+        "{class}: wrote the {what} message to {} — sign it with\n  ssh-keygen -Y sign -f <your key> -n {} {}\nthen: ergocell trajectories {command} --class {class} --signed {}",
+        out.display(),
+        signing::APPROVAL_NAMESPACE,
+        out.display(),
+        out.display()
+    );
+    Ok(())
+}
+
 fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
     let mut s = path.as_os_str().to_owned();
     s.push(suffix);
@@ -568,15 +559,7 @@ fn approve(
         }
         ApproveHow::MessageOut(out) => {
             let message = file.next_message(&lock, by.unwrap_or_default(), &now_rfc3339()?)?;
-            write_new(out, &message)?;
-            println!(
-                "{class}: wrote the approval message to {} — sign it with\n  ssh-keygen -Y sign -f <your key> -n {} {}\nthen: ergocell trajectories approve --class {class} --signed {}",
-                out.display(),
-                signing::APPROVAL_NAMESPACE,
-                out.display(),
-                out.display()
-            );
-            return Ok(());
+            return message_written(class, out, &message, "approval", "approve");
         }
         ApproveHow::Signed { message, signature } => {
             let text = read(message)?;
@@ -633,15 +616,7 @@ fn withdraw(
         ApproveHow::MessageOut(out) => {
             let message =
                 file.next_withdrawal_message(class, by.unwrap_or_default(), &now_rfc3339()?)?;
-            write_new(out, &message)?;
-            println!(
-                "{class}: wrote the withdrawal message to {} — sign it with\n  ssh-keygen -Y sign -f <your key> -n {} {}\nthen: ergocell trajectories withdraw --class {class} --signed {}",
-                out.display(),
-                signing::APPROVAL_NAMESPACE,
-                out.display(),
-                out.display()
-            );
-            return Ok(());
+            return message_written(class, out, &message, "withdrawal", "withdraw");
         }
         ApproveHow::Signed { message, signature } => {
             let text = read(message)?;

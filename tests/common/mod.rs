@@ -319,9 +319,18 @@ impl AnchoredCell {
 
     /// `trajectories approve --class <class> --by <by> --key <key>`.
     pub fn approve(&self, class: &str, by: &str, key: &str) -> (i32, String, String) {
+        self.sign("approve", class, by, key)
+    }
+
+    /// `trajectories withdraw --class <class> --by <by> --key <key>`.
+    pub fn withdraw(&self, class: &str, by: &str, key: &str) -> (i32, String, String) {
+        self.sign("withdraw", class, by, key)
+    }
+
+    fn sign(&self, command: &str, class: &str, by: &str, key: &str) -> (i32, String, String) {
         self.ergocell(&[
             "trajectories",
-            "approve",
+            command,
             "--class",
             class,
             "--by",
