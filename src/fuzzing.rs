@@ -12,8 +12,9 @@
 //! [`caliscope_csv`], [`landmarks_file`] (JSON, CSV, TRC), [`urdf`] (through our loader and `k`),
 //! [`trajectory_toml`], [`cell_toml`] (both crates' readers of `config/cell.toml`), [`lock_toml`],
 //! [`approvals_toml`], [`mcap_recording`] (the review's and `replay`'s readers), [`cdr_messages`]
-//! (every message `bridge` decodes), [`rula_json`] (`rula score` worksheets and tables) and
-//! [`review_request`] (raw HTTP/1 bytes into the review server).
+//! (every message `bridge` decodes), [`rula_json`] (`rula score` worksheets and tables),
+//! [`review_request`] (raw HTTP/1 bytes into the review server) and [`detector_model`] (the twin's
+//! fitted detector and the real measurement it is fitted to).
 #![allow(clippy::missing_panics_doc)]
 
 use std::net::{Ipv4Addr, SocketAddr};
@@ -192,6 +193,27 @@ pub fn lock_toml(data: &[u8]) {
             }
         }
     }
+}
+
+/// The twin's detector model file (`sim --detector`) and the real detector-error JSON that
+/// `sim fit-detector --real` reads: a model that parses round-trips through its own writer and makes
+/// a detector that validates.
+pub fn detector_model(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    if let Ok(model) = ergocell_sim::detector_fit::DetectorModel::from_toml_str(text) {
+        let again = model
+            .to_toml()
+            .map(|t| ergocell_sim::detector_fit::DetectorModel::from_toml_str(&t));
+        assert!(
+            matches!(&again, Ok(Ok(m)) if *m == model),
+            "a parsed model must round-trip: {again:?}"
+        );
+        assert!(model
+            .apply(ergocell_sim::DetectorNoise::default())
+            .validate()
+            .is_ok());
+    }
+    let _ = serde_json::from_str::<ergocell_perception::detector_error::DetectorErrorReport>(text);
 }
 
 /// An approvals file: parsed, and its hash chain checked; the same bytes as the approvers' files,

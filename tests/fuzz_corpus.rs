@@ -35,6 +35,7 @@ targets!(
     cdr_messages,
     rula_json,
     review_request,
+    detector_model,
 );
 
 fn fuzz_dir() -> PathBuf {
