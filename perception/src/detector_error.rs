@@ -132,6 +132,13 @@ pub struct ErrorStats {
     pub total: Quantiles,
     pub persistent: Quantiles,
     pub jitter: Quantiles,
+    /// The persistent part shared by every landmark of the view in that frame (its mean over the
+    /// view's landmarks: the whole body shifted in one camera, which moves the fused skeleton but
+    /// hardly its joint angles).
+    pub persistent_shared: Quantiles,
+    /// The persistent part of the landmark's own (persistent minus the shared part: what bends the
+    /// angles between landmarks).
+    pub persistent_own: Quantiles,
     pub total_px: Quantiles,
     /// Mean image height of the person over these residuals, pixels.
     pub mean_height_px: f64,
@@ -211,6 +218,8 @@ pub struct Measured {
     pub residuals: Vec<Residual>,
     /// Per residual, its persistent part (pixels).
     pub persistent_px: Vec<Vector2<f64>>,
+    /// Per residual, the mean persistent part of its view in its frame (pixels).
+    pub shared_px: Vec<Vector2<f64>>,
     frames: usize,
     frames_seen: Vec<usize>,
     frames_missing: Vec<usize>,
@@ -370,6 +379,7 @@ pub fn measure(rig: &CameraRig, frames: &[Frame2], config: &MeasureConfig) -> Me
         }
     }
     m.persistent_px = persistent(&m.residuals, config.window_s);
+    m.shared_px = shared(&m.residuals, &m.persistent_px);
     let mut periods: Vec<f64> = frames
         .windows(2)
         .map(|w| (w[1].stamp_nanos - w[0].stamp_nanos) as f64 * 1e-9)
@@ -426,6 +436,26 @@ fn swapped(
     pairs >= 3 && mirrored <= 0.5 * as_labelled
 }
 
+/// Per residual, the mean persistent part over the residuals of its view in its frame.
+fn shared(residuals: &[Residual], persistent_px: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
+    let mut sums: std::collections::HashMap<(usize, usize), (Vector2<f64>, usize)> =
+        std::collections::HashMap::new();
+    for (r, p) in residuals.iter().zip(persistent_px) {
+        let e = sums
+            .entry((r.frame, r.camera))
+            .or_insert((Vector2::zeros(), 0));
+        e.0 += p;
+        e.1 += 1;
+    }
+    residuals
+        .iter()
+        .map(|r| {
+            sums.get(&(r.frame, r.camera))
+                .map_or_else(Vector2::zeros, |(sum, n)| sum / (*n).max(1) as f64)
+        })
+        .collect()
+}
+
 /// Per residual, the mean residual of its camera and landmark over the centred window.
 fn persistent(residuals: &[Residual], window_s: f64) -> Vec<Vector2<f64>> {
     let half = (window_s * 0.5e9) as i64;
@@ -458,12 +488,20 @@ impl Measured {
     fn stats(&self, keep: impl Fn(&Residual) -> bool) -> ErrorStats {
         let (mut total, mut persistent, mut jitter, mut px, mut height) =
             (Vec::new(), Vec::new(), Vec::new(), Vec::new(), 0.0);
-        for (r, p) in self.residuals.iter().zip(&self.persistent_px) {
+        let (mut shared, mut own) = (Vec::new(), Vec::new());
+        for ((r, p), c) in self
+            .residuals
+            .iter()
+            .zip(&self.persistent_px)
+            .zip(&self.shared_px)
+        {
             if !keep(r) {
                 continue;
             }
             total.push(r.residual_px.norm() / r.height_px);
             persistent.push(p.norm() / r.height_px);
+            shared.push(c.norm() / r.height_px);
+            own.push((p - c).norm() / r.height_px);
             jitter.push((r.residual_px - p).norm() / r.height_px);
             px.push(r.residual_px.norm());
             height += r.height_px;
@@ -473,6 +511,8 @@ impl Measured {
             total: Quantiles::of(total),
             persistent: Quantiles::of(persistent),
             jitter: Quantiles::of(jitter),
+            persistent_shared: Quantiles::of(shared),
+            persistent_own: Quantiles::of(own),
             total_px: Quantiles::of(px),
             mean_height_px: height / count,
         }

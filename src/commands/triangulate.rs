@@ -411,6 +411,12 @@ fn print_detector_error(r: &detector_error::DetectorErrorReport) {
         );
     };
     row("all", &r.all);
+    println!(
+        "  {:<16} persistent part shared by the view's landmarks {}, each landmark's own {}",
+        "",
+        pct(&r.all.persistent_shared),
+        pct(&r.all.persistent_own)
+    );
     for (name, s) in &r.groups {
         row(name, s);
     }
