@@ -962,3 +962,50 @@ fn a_rollback_a_restored_lock_and_a_deleted_withdrawal_are_refused() {
     let (code, out, _) = verify();
     assert!(code == 1 && out.contains("has 0 entries, but on"), "{out}");
 }
+
+/// An installed cell keeps its witness in its state folder (`ERGOCELL_STATE_DIR`), not beside the
+/// approvals, and a rollback is caught from there too.
+#[test]
+fn the_witness_lives_in_the_state_folder_when_one_is_named() {
+    let Some(cell) = AnchoredCell::new("trajectories_state_dir") else {
+        return;
+    };
+    let state = cell.dir.join("var-lib-ergocell");
+    let with_state = |args: &[&str]| {
+        common::outcome(
+            Command::new(env!("CARGO_BIN_EXE_ergocell"))
+                .current_dir(&cell.dir)
+                .env("ERGOCELL_TRUST_ANCHOR_DIR", &cell.anchor)
+                .env("ERGOCELL_STATE_DIR", &state)
+                .args(args),
+        )
+    };
+    let (code, out, err) = with_state(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let approve = |by: &str, key: &str| {
+        with_state(&[
+            "trajectories",
+            "approve",
+            "--class",
+            "c2",
+            "--by",
+            by,
+            "--key",
+            key,
+        ])
+    };
+    let (code, out, err) = approve(ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    let approvals = cell.dir.join("trajectories/approvals/c2.toml");
+    let first = std::fs::read(&approvals).unwrap();
+    let (code, out, err) = approve(BOB, "keys/bob");
+    assert_eq!(code, 0, "{out}{err}");
+    let witness = std::fs::read_to_string(state.join("witness.jsonl")).unwrap();
+    assert_eq!(witness.lines().count(), 2, "{witness}");
+    assert!(witness.contains("\"entries\":2"), "{witness}");
+    assert!(!cell.dir.join("trajectories/approvals/.witness").exists());
+    // Bob's approval deleted: caught from the state folder.
+    std::fs::write(&approvals, first).unwrap();
+    let (code, out, _) = with_state(&["trajectories", "verify", "--class", "c2"]);
+    assert!(code == 1 && out.contains("it had 2"), "{out}");
+}
