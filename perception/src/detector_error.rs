@@ -84,6 +84,8 @@ pub struct Residual {
     pub stamp_nanos: i64,
     pub camera: usize,
     pub landmark: usize,
+    /// Where the other views put the landmark in this view (their point projected), pixels.
+    pub predicted_px: Vector2<f64>,
     /// Detection minus the other views' point projected, pixels.
     pub residual_px: Vector2<f64>,
     pub confidence: f64,
@@ -205,6 +207,81 @@ pub struct DetectorErrorReport {
     pub confidence_error_spearman: Option<f64>,
     /// Share of the residuals beyond [`GROSS_ERROR_FRACTION`] of the image height: gross errors.
     pub gross_error_share: f64,
+    /// How a view's persistent offsets are structured: the similarity (shift, scale, rotation) that
+    /// best maps the other views' projected points onto them, and what is left.
+    pub view_structure: ViewStructure,
+}
+
+/// The persistent offsets of each view and frame (at least [`MIN_STRUCTURE_POINTS`] landmarks),
+/// fitted by the 2-D similarity transform that best moves the projected points onto
+/// projected + persistent (least squares, Umeyama's closed form): a shift is what the view's
+/// calibration or timing would also cause, a scale a wrong depth, a rotation a tilted camera; none
+/// of them bends the body's angles. The remainder does.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
+pub struct ViewStructure {
+    /// |shift| per view and frame, fraction of the image height.
+    pub shift: Quantiles,
+    /// |scale − 1| per view and frame.
+    pub scale_error: Quantiles,
+    /// |rotation| per view and frame, degrees.
+    pub rotation_deg: Quantiles,
+    /// Per landmark, the persistent offset left after its view's similarity, fraction of the image
+    /// height.
+    pub remainder: Quantiles,
+}
+
+/// The fewest landmarks a view-frame needs for [`ViewStructure`].
+pub const MIN_STRUCTURE_POINTS: usize = 8;
+
+/// [`ViewStructure`] of `residuals` with their persistent parts.
+fn view_structure(residuals: &[Residual], persistent_px: &[Vector2<f64>]) -> ViewStructure {
+    let mut views: std::collections::BTreeMap<(usize, usize), Vec<usize>> =
+        std::collections::BTreeMap::new();
+    for (i, r) in residuals.iter().enumerate() {
+        views.entry((r.frame, r.camera)).or_default().push(i);
+    }
+    let (mut shift, mut scale, mut rotation, mut remainder) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for members in views.values() {
+        if members.len() < MIN_STRUCTURE_POINTS {
+            continue;
+        }
+        let n = members.len() as f64;
+        let a: Vec<Vector2<f64>> = members.iter().map(|&i| residuals[i].predicted_px).collect();
+        let b: Vec<Vector2<f64>> = members
+            .iter()
+            .map(|&i| residuals[i].predicted_px + persistent_px[i])
+            .collect();
+        let ca = a.iter().sum::<Vector2<f64>>() / n;
+        let cb = b.iter().sum::<Vector2<f64>>() / n;
+        // Umeyama in 2-D with complex numbers: s·e^{iθ} = Σ conj(a')·b' / Σ |a'|².
+        let (mut re, mut im, mut aa) = (0.0, 0.0, 0.0);
+        for (p, q) in a.iter().zip(&b) {
+            let (p, q) = (p - ca, q - cb);
+            re += p.x * q.x + p.y * q.y;
+            im += p.x * q.y - p.y * q.x;
+            aa += p.norm_squared();
+        }
+        if aa <= 0.0 {
+            continue;
+        }
+        let (c, d) = (re / aa, im / aa);
+        let height = residuals[members[0]].height_px;
+        shift.push((cb - ca).norm() / height);
+        scale.push(((c * c + d * d).sqrt() - 1.0).abs());
+        rotation.push(d.atan2(c).abs().to_degrees());
+        for (p, q) in a.iter().zip(&b) {
+            let p = p - ca;
+            let mapped = Vector2::new(c * p.x - d * p.y, d * p.x + c * p.y) + cb;
+            remainder.push((q - mapped).norm() / height);
+        }
+    }
+    ViewStructure {
+        shift: Quantiles::of(shift),
+        scale_error: Quantiles::of(scale),
+        rotation_deg: Quantiles::of(rotation),
+        remainder: Quantiles::of(remainder),
+    }
 }
 
 /// A residual beyond this fraction of the person's image height is a gross error (a limb put on
@@ -358,6 +435,7 @@ pub fn measure(rig: &CameraRig, frames: &[Frame2], config: &MeasureConfig) -> Me
                         stamp_nanos: frame.stamp_nanos,
                         camera: c,
                         landmark: l,
+                        predicted_px: *p,
                         residual_px: pixel - p,
                         confidence: view.confidence,
                         height_px,
@@ -607,6 +685,7 @@ impl Measured {
             cameras,
             by_confidence: self.binned(&CONFIDENCE_EDGES, 1.0, |r| Some(r.confidence)),
             by_view_angle_deg: self.binned(&ANGLE_EDGES_DEG, 180.0, |r| r.view_angle_deg),
+            view_structure: view_structure(&self.residuals, &self.persistent_px),
             gross_error_share: self
                 .residuals
                 .iter()
@@ -805,6 +884,51 @@ mod tests {
             .unwrap()
             .view_angle_deg;
         assert!(angle.is_some_and(|a| (a - 90.0).abs() < 15.0), "{angle:?}");
+    }
+
+    #[test]
+    fn a_views_shift_scale_and_rotation_are_told_from_its_landmarks_own_offsets() {
+        // One view-frame: 12 points on a 200 px circle moved by a known similarity, one of them
+        // also by its own 10 px.
+        let (shift, scale, angle) = (Vector2::new(6.0, -8.0), 1.03, 2f64.to_radians());
+        let (c, d) = (scale * angle.cos(), scale * angle.sin());
+        let centre = Vector2::new(640.0, 360.0);
+        let mut residuals = Vec::new();
+        let mut persistent = Vec::new();
+        for k in 0..12 {
+            let t = k as f64 * std::f64::consts::TAU / 12.0;
+            let p = centre + 200.0 * Vector2::new(t.cos(), t.sin());
+            let q = p - centre;
+            let mut moved = Vector2::new(c * q.x - d * q.y, d * q.x + c * q.y) + centre + shift;
+            if k == 3 {
+                moved += Vector2::new(0.0, 10.0);
+            }
+            residuals.push(Residual {
+                frame: 0,
+                stamp_nanos: 0,
+                camera: 0,
+                landmark: k,
+                predicted_px: p,
+                residual_px: moved - p,
+                confidence: 1.0,
+                height_px: 500.0,
+                view_angle_deg: None,
+            });
+            persistent.push(moved - p);
+        }
+        let s = view_structure(&residuals, &persistent);
+        assert_eq!(s.shift.count, 1);
+        // The own 10 px moves the centroid by 10/12 px and leaks a little into the fit.
+        assert!(
+            (s.shift.p50 * 500.0 - (shift + Vector2::new(0.0, 10.0 / 12.0)).norm()).abs() < 0.5,
+            "{s:?}"
+        );
+        assert!((s.scale_error.p50 - 0.03).abs() < 0.006, "{s:?}");
+        assert!((s.rotation_deg.p50 - 2.0).abs() < 0.2, "{s:?}");
+        // Left over: most of the 10 px at the landmark that had it (the fit absorbs a little),
+        // about nothing elsewhere.
+        assert!((s.remainder.p99 * 500.0 - 10.0).abs() < 2.0, "{s:?}");
+        assert!(s.remainder.p50 * 500.0 < 1.5, "{s:?}");
     }
 
     #[test]

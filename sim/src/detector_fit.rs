@@ -441,6 +441,7 @@ mod tests {
             by_view_angle_deg: Vec::new(),
             confidence_error_spearman: None,
             gross_error_share: 0.0,
+            view_structure: detector_error::ViewStructure::default(),
         };
         let model = DetectorModel {
             format: DETECTOR_FORMAT.to_owned(),

@@ -417,6 +417,16 @@ fn print_detector_error(r: &detector_error::DetectorErrorReport) {
         pct(&r.all.persistent_shared),
         pct(&r.all.persistent_own)
     );
+    let v = &r.view_structure;
+    println!(
+        "  {:<16} per view and frame: shift {}, scale error {}, rotation {:.1} {:.1}°; left per landmark {}",
+        "",
+        pct(&v.shift),
+        pct(&v.scale_error),
+        v.rotation_deg.p50,
+        v.rotation_deg.p90,
+        pct(&v.remainder)
+    );
     for (name, s) in &r.groups {
         row(name, s);
     }
