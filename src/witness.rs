@@ -96,6 +96,23 @@ pub fn observe(
     Ok(notes)
 }
 
+/// [`observe`] for an approvals file as read: `None` (no file) is an empty chain, so one the witness
+/// saw entries of is caught as deleted; a text that does not parse or whose chain is broken is not
+/// checked here (`lock::verify` reports it).
+pub fn observe_text(
+    approvals_path: &Path,
+    class: TrajectoryClass,
+    text: Option<&str>,
+    trusted: &TrustedSigners,
+) -> Result<Vec<String>, RobotError> {
+    let file = match text.map(ApprovalsFile::from_toml_str) {
+        None => ApprovalsFile::default(),
+        Some(Ok(file)) if file.check_chain().is_ok() => file,
+        Some(_) => return Ok(Vec::new()),
+    };
+    observe(approvals_path, class, &file, trusted)
+}
+
 /// Appends one line and syncs it. A new local witness folder gets a `.gitignore` first.
 fn append(path: &Path, line: &str) -> std::io::Result<()> {
     if let Some(dir) = path.parent() {

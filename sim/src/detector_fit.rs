@@ -377,14 +377,16 @@ pub fn compare(
     settings: &FitSettings,
     seed: u64,
 ) -> Result<Vec<FitRow>, SimError> {
-    let noise = model.apply(DetectorNoise::default());
-    Ok(rows(
+    compare_noise(
         real,
-        &twin_report(real, rig, &noise, settings, &[seed])?,
-    ))
+        rig,
+        &model.apply(DetectorNoise::default()),
+        settings,
+        seed,
+    )
 }
 
-/// The default (independent pixel noise) twin measured like `real`, for the record.
+/// The twin with `noise` (the default independent pixel noise, say) measured like `real` on `seed`.
 pub fn compare_noise(
     real: &DetectorErrorReport,
     rig: &CameraRig,

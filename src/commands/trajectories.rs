@@ -472,28 +472,24 @@ fn load_approvals(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<Appro
     Ok(file)
 }
 
-/// [`ergocell::witness::observe`] with the trusted approvers, its notes on standard error.
-fn observe(
-    path: &Path,
-    class: TrajectoryClass,
-    file: &ApprovalsFile,
-    trusted: &TrustedSigners,
-) -> Result<(), ergocell_robot::RobotError> {
-    let notes = ergocell::witness::observe(path, class, file, trusted)?;
+/// The witness's notes on standard error.
+fn print_notes(notes: Vec<String>) {
     for note in notes {
         eprintln!("note: {note}");
     }
-    Ok(())
 }
 
-/// [`observe`] for the commands that write the approvals file: a refusal names the file.
+/// [`ergocell::witness::observe`] for the commands that write the approvals file: a refusal names
+/// the file.
 fn witness(
     ctx: &Context,
     path: &Path,
     class: TrajectoryClass,
     file: &ApprovalsFile,
 ) -> anyhow::Result<()> {
-    observe(path, class, file, &ctx.trusted).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+    ergocell::witness::observe(path, class, file, &ctx.trusted)
+        .map(print_notes)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
 /// The two-step flow's first step: `message` written to the new file `out`, and what to do next.
@@ -688,17 +684,13 @@ fn verify(
         };
         let approvals_path = ctx.layout.approvals(class);
         let approvals_text = fs::read_to_string(&approvals_path).ok();
-        // A missing file is an empty chain for the witness; one that does not parse or whose
-        // chain is broken is left to `lock::verify` to report.
-        let chain = approvals_text
-            .as_deref()
-            .map_or(Ok(ApprovalsFile::default()), |t| {
-                ApprovalsFile::from_toml_str(t).and_then(|f| f.check_chain().map(|()| f))
-            });
-        let seen = match chain {
-            Ok(file) => observe(&approvals_path, class, &file, &ctx.trusted),
-            Err(_) => Ok(()),
-        };
+        let seen = ergocell::witness::observe_text(
+            &approvals_path,
+            class,
+            approvals_text.as_deref(),
+            &ctx.trusted,
+        )
+        .map(print_notes);
         let inputs = VerifyInputs {
             class,
             lock_toml: &lock_text,

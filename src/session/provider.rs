@@ -454,21 +454,14 @@ impl TrajectoryProvider for FileTrajectories {
 }
 
 /// Checks an approvals file against the cell's witness and records it there
-/// ([`crate::witness::observe`]); a file that does not parse or whose chain is broken is left to
-/// [`lock::verify`] to report. A missing file (`None`) is an empty chain: one the witness saw
-/// entries of was deleted.
+/// ([`crate::witness::observe_text`]), its notes as warnings.
 fn witness_check(
     path: &Path,
     class: TrajectoryClass,
     text: Option<&str>,
     trusted: &TrustedSigners,
 ) -> Result<(), ProviderError> {
-    let file = match text.map(ApprovalsFile::from_toml_str) {
-        None => ApprovalsFile::default(),
-        Some(Ok(file)) if file.check_chain().is_ok() => file,
-        Some(_) => return Ok(()),
-    };
-    let notes = crate::witness::observe(path, class, &file, trusted)
+    let notes = crate::witness::observe_text(path, class, text, trusted)
         .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
     for note in notes {
         tracing::warn!("{note}");
