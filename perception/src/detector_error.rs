@@ -210,7 +210,30 @@ pub struct DetectorErrorReport {
     /// How a view's persistent offsets are structured: the similarity (shift, scale, rotation) that
     /// best maps the other views' projected points onto them, and what is left.
     pub view_structure: ViewStructure,
+    /// How long a landmark's own error lasts: its correlation with itself a lag later, per lag
+    /// ([`PERSISTENCE_LAGS_S`], lags the recording is long enough for).
+    #[serde(default)]
+    pub persistence: Vec<LagRow>,
 }
+
+/// One lag of [`DetectorErrorReport::persistence`].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct LagRow {
+    /// The lag, seconds.
+    pub lag_s: f64,
+    /// Pairs of residuals this far apart (same camera and landmark).
+    pub pairs: usize,
+    /// Σ a·b / √(Σ|a|² Σ|b|²) over the pairs, of each landmark's residual less its view's mean in
+    /// that frame (the shared shift taken out), relative to the image height, gross errors (beyond
+    /// [`GROSS_ERROR_FRACTION`]) left out: 1 = the error stays, 0 = forgotten.
+    pub correlation: f64,
+}
+
+/// The lags [`DetectorErrorReport::persistence`] measures, seconds.
+pub const PERSISTENCE_LAGS_S: [f64; 9] = [0.05, 0.1, 0.2, 0.35, 0.5, 1.0, 2.0, 4.0, 8.0];
+
+/// A lag is reported with at least this many pairs.
+pub const MIN_LAG_PAIRS: usize = 200;
 
 /// The persistent offsets of each view and frame (at least [`MIN_STRUCTURE_POINTS`] landmarks),
 /// fitted by the 2-D similarity transform that best moves the projected points onto
@@ -534,6 +557,85 @@ fn shared(residuals: &[Residual], persistent_px: &[Vector2<f64>]) -> Vec<Vector2
         .collect()
 }
 
+/// Per lag, the correlation of each landmark's own residual (less its view's mean in that frame)
+/// with itself a lag later: pairs of the same camera and landmark whose stamps are the lag apart
+/// within half the lag's shortest frame interval.
+fn persistence(residuals: &[Residual]) -> Vec<LagRow> {
+    let mut means: std::collections::HashMap<(usize, usize), (Vector2<f64>, usize)> =
+        std::collections::HashMap::new();
+    for r in residuals {
+        let e = means
+            .entry((r.frame, r.camera))
+            .or_insert((Vector2::zeros(), 0));
+        e.0 += r.residual_px;
+        e.1 += 1;
+    }
+    // Relative to the image height, so that a near and a far view weigh alike.
+    let own: Vec<Vector2<f64>> = residuals
+        .iter()
+        .map(|r| {
+            let (sum, n) = means[&(r.frame, r.camera)];
+            (r.residual_px - sum / n.max(1) as f64) / r.height_px.max(1.0)
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..residuals.len()).collect();
+    order.sort_by_key(|&i| {
+        let r = &residuals[i];
+        (r.camera, r.landmark, r.stamp_nanos)
+    });
+    let runs: Vec<&[usize]> = order
+        .chunk_by(|&a, &b| {
+            residuals[a].camera == residuals[b].camera
+                && residuals[a].landmark == residuals[b].landmark
+        })
+        .collect();
+    // Half the median frame interval: how close a stamp must be to the lag.
+    let mut steps: Vec<f64> = runs
+        .iter()
+        .flat_map(|run| {
+            run.windows(2)
+                .map(|w| (residuals[w[1]].stamp_nanos - residuals[w[0]].stamp_nanos) as f64)
+        })
+        .filter(|d| *d > 0.0)
+        .collect();
+    let Some(step) = crate::metrics::median_in_place(&mut steps) else {
+        return Vec::new();
+    };
+    let tolerance = (0.5 * step) as i64;
+    PERSISTENCE_LAGS_S
+        .iter()
+        .filter(|lag| **lag * 1e9 >= 0.75 * step)
+        .filter_map(|&lag_s| {
+            let lag = (lag_s * 1e9) as i64;
+            let (mut ab, mut aa, mut bb, mut pairs) = (0.0, 0.0, 0.0, 0usize);
+            for run in &runs {
+                let stamps: Vec<i64> = run.iter().map(|&i| residuals[i].stamp_nanos).collect();
+                for (k, &i) in run.iter().enumerate() {
+                    let want = stamps[k].saturating_add(lag);
+                    let j = stamps.partition_point(|&s| s < want.saturating_sub(tolerance));
+                    if j < stamps.len() && (stamps[j] - want).abs() <= tolerance {
+                        let (a, b) = (own[i], own[run[j]]);
+                        // Gross errors are rare, short and huge: left in, their squares would
+                        // decide the correlation alone.
+                        if a.norm() > GROSS_ERROR_FRACTION || b.norm() > GROSS_ERROR_FRACTION {
+                            continue;
+                        }
+                        ab += a.dot(&b);
+                        aa += a.norm_squared();
+                        bb += b.norm_squared();
+                        pairs += 1;
+                    }
+                }
+            }
+            (pairs >= MIN_LAG_PAIRS && aa > 0.0 && bb > 0.0).then(|| LagRow {
+                lag_s,
+                pairs,
+                correlation: ab / (aa * bb).sqrt(),
+            })
+        })
+        .collect()
+}
+
 /// Per residual, the mean residual of its camera and landmark over the centred window.
 fn persistent(residuals: &[Residual], window_s: f64) -> Vec<Vector2<f64>> {
     let half = (window_s * 0.5e9) as i64;
@@ -686,6 +788,7 @@ impl Measured {
             by_confidence: self.binned(&CONFIDENCE_EDGES, 1.0, |r| Some(r.confidence)),
             by_view_angle_deg: self.binned(&ANGLE_EDGES_DEG, 180.0, |r| r.view_angle_deg),
             view_structure: view_structure(&self.residuals, &self.persistent_px),
+            persistence: persistence(&self.residuals),
             gross_error_share: self
                 .residuals
                 .iter()

@@ -108,12 +108,37 @@ pub struct RelativeNoise {
     /// length) in a random direction; between, a blend of the two lengths. The real detector's
     /// offsets vary less in size than a Gaussian's.
     pub persistent_shape: [f64; NOISE_GROUPS],
+    /// σ per image coordinate of an offset a camera's landmarks share, fraction of the image height
+    /// (default 0): the whole view displaced, as a small calibration or synchronisation error of that
+    /// camera displaces it. Fixed for the session.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub view_shift_sigma: f64,
+    /// Shape of the shared offset's size, 0..=1, as [`RelativeNoise::persistent_shape`].
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub view_shift_shape: f64,
+    /// How alike the persistent offsets of two cameras are by the angle between them as the person
+    /// sees them, degrees (default 0: independent). Two cameras a few degrees apart see nearly the
+    /// same picture, and a detector errs alike on alike pictures: the offsets are one 3-D offset per
+    /// landmark seen from each camera, correlated between cameras as exp(−c²/2ℓ²) of the chord `c`
+    /// between their unit directions from the person, ℓ the chord of this angle.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub view_correlation_deg: f64,
+    /// A gross outlier's jump as fractions of the image height, `[low, high]` (default `[0, 0]`:
+    /// [`DetectorNoise::outlier_offset_px`] in pixels instead). The real detector's gross errors
+    /// are counted beyond 15 % of the height.
+    #[serde(default, skip_serializing_if = "is_zero_pair")]
+    pub outlier_height_fraction: [f64; 2],
+}
+
+#[allow(clippy::trivially_copy_pass_by_ref)] // serde's skip_serializing_if passes a reference
+fn is_zero_pair(x: &[f64; 2]) -> bool {
+    x[0] == 0.0 && x[1] == 0.0
 }
 
 impl RelativeNoise {
     /// Checks every value is finite and non-negative, the time constant positive.
     pub fn validate(&self) -> Result<(), SimError> {
-        for &v in &self.persistent_shape {
+        for &v in self.persistent_shape.iter().chain([&self.view_shift_shape]) {
             if !(0.0..=1.0).contains(&v) {
                 return Err(SimError::BadParameter {
                     name: "persistent_shape",
@@ -122,7 +147,12 @@ impl RelativeNoise {
                 });
             }
         }
-        for &v in self.persistent_sigma.iter().chain(&self.jitter_sigma) {
+        for &v in self
+            .persistent_sigma
+            .iter()
+            .chain(&self.jitter_sigma)
+            .chain([&self.view_shift_sigma])
+        {
             if !(v.is_finite() && (0.0..=0.5).contains(&v)) {
                 return Err(SimError::BadParameter {
                     name: "relative noise sigma",
@@ -130,6 +160,21 @@ impl RelativeNoise {
                     why: "must be finite, within 0..=0.5 of the image height",
                 });
             }
+        }
+        let [lo, hi] = self.outlier_height_fraction;
+        if !(lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo <= hi && hi <= 2.0) {
+            return Err(SimError::BadParameter {
+                name: "outlier_height_fraction",
+                value: lo,
+                why: "must be ordered, within 0..=2 of the image height",
+            });
+        }
+        if !(0.0..=180.0).contains(&self.view_correlation_deg) {
+            return Err(SimError::BadParameter {
+                name: "view_correlation_deg",
+                value: self.view_correlation_deg,
+                why: "must be within 0..=180 degrees",
+            });
         }
         if !(self.persistent_tau_s.is_finite() && self.persistent_tau_s > 0.0) {
             return Err(SimError::BadParameter {
@@ -144,44 +189,94 @@ impl RelativeNoise {
 
 /// The persistent offsets of every camera's landmarks (fractions of the image height), evolving as
 /// [`RelativeNoise`] says, from a stream of draws of their own.
+///
+/// The state is a standard 3-D Gaussian per camera and landmark (an Ornstein–Uhlenbeck process) and
+/// one per camera for the shared view shift (fixed). Each tick the cameras' states are mixed by the
+/// Cholesky factor of their correlation (by viewing direction, [`RelativeNoise::view_correlation_deg`];
+/// the identity when 0) and each camera sees its mixed 3-D offset along its image axes: a 2-D
+/// standard Gaussian per camera, alike between cameras that look alike. Then shaped and scaled.
 #[derive(Debug, Clone)]
 pub(crate) struct PersistentOffsets {
-    /// The unit OU state.
-    offsets: Vec<[nalgebra::Vector2<f64>; LANDMARK_COUNT]>,
-    /// The offsets as fractions of the image height (shaped and scaled), at the last step.
-    shaped: Vec<[nalgebra::Vector2<f64>; LANDMARK_COUNT]>,
+    offsets: Vec<[Vector3<f64>; LANDMARK_COUNT]>,
+    shifts: Vec<Vector3<f64>>,
     rng: ChaCha8Rng,
     last_nanos: Option<i64>,
 }
 
+/// Scales a standard 2-D Gaussian `o` to an offset of σ `sigma` whose length is blended between
+/// its own (shape 1) and the Gaussian's mean length (shape 0).
+fn shaped(o: nalgebra::Vector2<f64>, shape: f64, sigma: f64) -> nalgebra::Vector2<f64> {
+    // the Gaussian's mean length, √(π/2)
+    const MEAN_LENGTH: f64 = 1.253_314_137_315_500_3;
+    let length = o.norm();
+    let blended = (1.0 - shape) * MEAN_LENGTH + shape * length;
+    let direction = if length > 0.0 {
+        o / length
+    } else {
+        nalgebra::Vector2::new(1.0, 0.0)
+    };
+    direction * (blended * sigma)
+}
+
+/// The lower Cholesky factor of the cameras' offset correlation, seen from `centre`; `None` when
+/// they are independent.
+fn correlation_factor(
+    cameras: &[Camera],
+    centre: &Point3<f64>,
+    angle_deg: f64,
+) -> Option<nalgebra::DMatrix<f64>> {
+    if angle_deg <= 0.0 || cameras.len() < 2 {
+        return None;
+    }
+    let directions: Vec<Vector3<f64>> = cameras
+        .iter()
+        .map(|c| {
+            (c.position_world() - centre)
+                .try_normalize(1e-9)
+                .unwrap_or_else(Vector3::z)
+        })
+        .collect();
+    let chord = 2.0 * (angle_deg.to_radians() / 2.0).sin();
+    let n = cameras.len();
+    let k = nalgebra::DMatrix::from_fn(n, n, |i, j| {
+        let d = (directions[i] - directions[j]).norm_squared();
+        (-d / (2.0 * chord * chord)).exp() + if i == j { 1e-9 } else { 0.0 }
+    });
+    let l = k.cholesky()?.l();
+    // Rows of unit length: each camera's offset keeps its σ.
+    Some(nalgebra::DMatrix::from_fn(n, n, |i, j| {
+        l[(i, j)] / l.row(i).norm().max(1e-12)
+    }))
+}
+
 impl PersistentOffsets {
-    /// Offsets for `cameras` cameras drawn from their stationary distribution. The state is a
-    /// standard 2-D Gaussian per camera and landmark; [`PersistentOffsets::at`] shapes and scales it.
+    /// Offsets for `cameras` cameras drawn from their stationary distribution.
     pub(crate) fn new(cameras: usize, seed: u64) -> Self {
         use rand::SeedableRng as _;
         // Its own stream: the default model's draws stay what they were.
         let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5045_5253_4953_5400);
         let offsets = (0..cameras)
-            .map(|_| {
-                std::array::from_fn(|_| {
-                    nalgebra::Vector2::new(gaussian(&mut rng), gaussian(&mut rng))
-                })
-            })
+            .map(|_| std::array::from_fn(|_| gaussian3(&mut rng)))
             .collect();
+        let shifts = (0..cameras).map(|_| gaussian3(&mut rng)).collect();
         Self {
             offsets,
-            shaped: Vec::new(),
+            shifts,
             rng,
             last_nanos: None,
         }
     }
 
-    /// Moves every offset on to `t_nanos` (exact OU step), and returns them.
+    /// Moves every offset on to `t_nanos` (exact OU step) and returns each camera's, for the person
+    /// at `centre` seen by `cameras` (the same cameras, in order, as [`PersistentOffsets::new`]
+    /// counted).
     pub(crate) fn at(
         &mut self,
         t_nanos: i64,
         noise: &RelativeNoise,
-    ) -> &[[nalgebra::Vector2<f64>; LANDMARK_COUNT]] {
+        cameras: &[Camera],
+        centre: &Point3<f64>,
+    ) -> Vec<[nalgebra::Vector2<f64>; LANDMARK_COUNT]> {
         let dt = self
             .last_nanos
             .map_or(0.0, |last| (t_nanos - last).max(0) as f64 * 1e-9);
@@ -191,37 +286,49 @@ impl PersistentOffsets {
             let b = (1.0 - a * a).sqrt();
             for camera in &mut self.offsets {
                 for o in camera.iter_mut() {
-                    let z =
-                        nalgebra::Vector2::new(gaussian(&mut self.rng), gaussian(&mut self.rng));
-                    *o = *o * a + z * b;
+                    *o = *o * a + gaussian3(&mut self.rng) * b;
                 }
             }
         }
-        if dt > 0.0 || self.shaped.is_empty() {
-            // the Gaussian's mean length, √(π/2)
-            const MEAN_LENGTH: f64 = 1.253_314_137_315_500_3;
-            self.shaped = self
-                .offsets
-                .iter()
-                .map(|camera| {
-                    std::array::from_fn(|l| {
-                        let g = noise_group(l);
-                        let o = camera[l];
-                        let length = o.norm();
-                        let shape = noise.persistent_shape[g];
-                        let blended = (1.0 - shape) * MEAN_LENGTH + shape * length;
-                        let direction = if length > 0.0 {
-                            o / length
-                        } else {
-                            nalgebra::Vector2::new(1.0, 0.0)
-                        };
-                        direction * (blended * noise.persistent_sigma[g])
-                    })
+        let n = self.offsets.len().min(cameras.len());
+        let factor = correlation_factor(&cameras[..n], centre, noise.view_correlation_deg);
+        let mix = |states: &dyn Fn(usize) -> Vector3<f64>, i: usize| -> Vector3<f64> {
+            match &factor {
+                Some(l) => (0..=i).map(|j| states(j) * l[(i, j)]).sum(),
+                None => states(i),
+            }
+        };
+        (0..n)
+            .map(|i| {
+                let rotation = cameras[i].T_camera_world.rotation;
+                let axes = |v: Vector3<f64>| {
+                    let c = rotation * v;
+                    nalgebra::Vector2::new(c.x, c.y)
+                };
+                let shift = if noise.view_shift_sigma > 0.0 {
+                    shaped(
+                        axes(mix(&|j| self.shifts[j], i)),
+                        noise.view_shift_shape,
+                        noise.view_shift_sigma,
+                    )
+                } else {
+                    nalgebra::Vector2::zeros()
+                };
+                std::array::from_fn(|l| {
+                    let g = noise_group(l);
+                    shaped(
+                        axes(mix(&|j| self.offsets[j][l], i)),
+                        noise.persistent_shape[g],
+                        noise.persistent_sigma[g],
+                    ) + shift
                 })
-                .collect();
-        }
-        &self.shaped
+            })
+            .collect()
     }
+}
+
+fn gaussian3(rng: &mut ChaCha8Rng) -> Vector3<f64> {
+    Vector3::new(gaussian(rng), gaussian(rng), gaussian(rng))
 }
 
 #[allow(clippy::trivially_copy_pass_by_ref)] // serde's skip_serializing_if passes a reference
@@ -461,8 +568,14 @@ pub(crate) fn render_view(
         let confidence = conf_range.0 + (conf_range.1 - conf_range.0) * u_conf;
         let (mut u, mut v) = (px.x + offset.x + sigma * z_u, px.y + offset.y + sigma * z_v);
         if u_outlier < noise.outlier_probability {
-            let jump = noise.outlier_offset_px.0
-                + (noise.outlier_offset_px.1 - noise.outlier_offset_px.0) * u_jump;
+            let (lo, hi) = match &noise.relative {
+                Some(r) if !is_zero_pair(&r.outlier_height_fraction) => (
+                    r.outlier_height_fraction[0] * height_px,
+                    r.outlier_height_fraction[1] * height_px,
+                ),
+                _ => noise.outlier_offset_px,
+            };
+            let jump = lo + (hi - lo) * u_jump;
             let angle = std::f64::consts::TAU * u_angle;
             u += jump * angle.cos();
             v += jump * angle.sin();

@@ -150,7 +150,10 @@ pub fn simulate_standing(
             posture.left_leg.knee_flexion_rad = d(10.0) * (0.5 * t).sin().abs();
             let kin = person.kinematics(&posture);
             let offsets = match (&noise.relative, &mut persistent) {
-                (Some(r), Some(p)) => Some(p.at(t_nanos, r).to_vec()),
+                (Some(r), Some(p)) => {
+                    let centre = nalgebra::center(&kin.points[23], &kin.points[24]);
+                    Some(p.at(t_nanos, r, rig.cameras(), &centre))
+                }
                 _ => None,
             };
             let views = rig
@@ -214,13 +217,21 @@ pub struct FitSettings {
     pub frames: usize,
     /// Scaling rounds.
     pub iterations: usize,
-    /// Correlation time of the persistent offsets, seconds (a short real clip cannot measure it).
+    /// Correlation time of the landmarks' own offsets to start from, seconds; fitted to the real
+    /// error's persistence ([`DetectorErrorReport::persistence`]) when it was measured at two
+    /// lags at least.
     pub persistent_tau_s: f64,
     /// The pixel floor under the relative error, pixels.
     pub pixel_sigma_px: f64,
     /// Seeds the fit measures the twin on at once (from its seed on): more people's worth of
     /// offsets, a steadier fit.
     pub fit_seeds: u64,
+    /// Fit an offset shared by each view's landmarks to the real per-view shift
+    /// ([`RelativeNoise::view_shift_sigma`]); else every landmark's offset is its own.
+    pub view_shift: bool,
+    /// How alike near cameras' offsets are ([`RelativeNoise::view_correlation_deg`]); a rig of
+    /// cameras far apart cannot measure it, so it is given.
+    pub view_correlation_deg: f64,
 }
 
 impl Default for FitSettings {
@@ -230,7 +241,9 @@ impl Default for FitSettings {
             iterations: 6,
             persistent_tau_s: 2.0,
             pixel_sigma_px: 1.0,
-            fit_seeds: 5,
+            fit_seeds: 20,
+            view_shift: true,
+            view_correlation_deg: 0.0,
         }
     }
 }
@@ -315,6 +328,18 @@ pub fn fit(
         jitter_sigma: [0.01; NOISE_GROUPS],
         persistent_tau_s: settings.persistent_tau_s,
         persistent_shape: [0.5; NOISE_GROUPS],
+        view_shift_sigma: if settings.view_shift && real.view_structure.shift.count > 0 {
+            0.02
+        } else {
+            0.0
+        },
+        view_shift_shape: 0.5,
+        view_correlation_deg: settings.view_correlation_deg,
+        // Beyond the measurement's gross-error line, as the real share was counted.
+        outlier_height_fraction: [
+            detector_error::GROSS_ERROR_FRACTION,
+            2.0 * detector_error::GROSS_ERROR_FRACTION,
+        ],
     };
     let cameras_seen: usize = real.cameras.iter().map(|c| c.frames_seen).sum();
     let cameras_missing: usize = real.cameras.iter().map(|c| c.frames_missing).sum();
@@ -329,33 +354,48 @@ pub fn fit(
         drop_probability: drop_probability.clamp(0.0, 0.5),
         relative,
     };
+    let scale = |real: f64, twin: f64| {
+        if real > 0.0 && twin > 0.0 {
+            (real / twin).clamp(0.25, 4.0)
+        } else {
+            1.0
+        }
+    };
+    let spread = |q: &ergocell_perception::detector_error::Quantiles| {
+        if q.p50 > 0.0 {
+            (q.p90 / q.p50 - 1.0).max(1e-3)
+        } else {
+            1.0
+        }
+    };
+    // The own offsets' time constant: the real error's decay over short lags, where the
+    // landmark's own error dominates (at long lags what the other views' offsets leave in the
+    // held-out point, a floor, does).
+    if let Some(tau) = decay_time_s(&real.persistence) {
+        relative.persistent_tau_s = tau.clamp(0.02, 60.0);
+    }
     for _ in 0..settings.iterations {
         let noise = model(relative).apply(DetectorNoise::default());
         let report = twin_report(real, rig, &noise, settings, &fit_seeds)?;
+        if relative.view_shift_sigma > 0.0 {
+            // The shared offset to the real per-view shift, its shape to the shift's spread.
+            let (r, t) = (&real.view_structure.shift, &report.view_structure.shift);
+            relative.view_shift_sigma =
+                (relative.view_shift_sigma * scale(r.p50, t.p50)).clamp(1e-4, 0.5);
+            relative.view_shift_shape = (relative.view_shift_shape.max(0.02)
+                * (spread(r) / spread(t)).clamp(0.5, 2.0))
+            .clamp(0.0, 1.0);
+        }
         for (g, ((_, r), (_, t))) in real.groups.iter().zip(&report.groups).enumerate() {
             if r.total.count == 0 {
                 continue;
             }
-            let scale = |real: f64, twin: f64| {
-                if real > 0.0 && twin > 0.0 {
-                    (real / twin).clamp(0.25, 4.0)
-                } else {
-                    1.0
-                }
-            };
             // The offset's size to the total's median, the jitter to the jitter's, the offset's
             // shape to the total's spread (p90 over median).
             relative.persistent_sigma[g] =
                 (relative.persistent_sigma[g] * scale(r.total.p50, t.total.p50)).min(0.5);
             relative.jitter_sigma[g] =
                 (relative.jitter_sigma[g] * scale(r.jitter.p50, t.jitter.p50)).min(0.5);
-            let spread = |q: &ergocell_perception::detector_error::Quantiles| {
-                if q.p50 > 0.0 {
-                    (q.p90 / q.p50 - 1.0).max(1e-3)
-                } else {
-                    1.0
-                }
-            };
             relative.persistent_shape[g] = (relative.persistent_shape[g].max(0.02)
                 * (spread(&r.total) / spread(&t.total)).clamp(0.5, 2.0))
             .clamp(0.0, 1.0);
@@ -369,35 +409,79 @@ pub fn fit(
     })
 }
 
-/// The twin with `model`, measured like `real` on `seed`, group by group.
+/// The twin measured like a real recording: group by group, and the structure of its views'
+/// persistent offsets (which the fit does not target: a check of the model's shape).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Comparison {
+    pub rows: Vec<FitRow>,
+    pub twin_structure: detector_error::ViewStructure,
+    /// How long the twin's own error lasts, measured as the real one's.
+    pub twin_persistence: Vec<detector_error::LagRow>,
+}
+
+/// How fast a landmark's own error is forgotten: −1 / the slope of ln(correlation) against the lag,
+/// least squares over the lags up to 0.5 s whose correlation is within 0.03..0.97 (seconds; `None`
+/// with fewer than two such lags; at most 600 s when it hardly decays).
+pub fn decay_time_s(persistence: &[detector_error::LagRow]) -> Option<f64> {
+    let points: Vec<(f64, f64)> = persistence
+        .iter()
+        .filter(|l| l.lag_s <= 0.5 && (0.03..=0.97).contains(&l.correlation))
+        .map(|l| (l.lag_s, l.correlation.ln()))
+        .collect();
+    if points.len() < 2 {
+        return None;
+    }
+    let n = points.len() as f64;
+    let (mx, my) = points
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
+    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
+        (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
+    });
+    if sxx <= 0.0 {
+        return None;
+    }
+    let slope = sxy / sxx;
+    Some(if slope < -1.0 / 600.0 {
+        -1.0 / slope
+    } else {
+        600.0
+    })
+}
+
+/// The twin with `model`, measured like `real` on `seeds` pooled (one seed: that seed's rig-worth
+/// of offsets; many: the model's spread), group by group.
 pub fn compare(
     real: &DetectorErrorReport,
     rig: &CameraRig,
     model: &DetectorModel,
     settings: &FitSettings,
-    seed: u64,
-) -> Result<Vec<FitRow>, SimError> {
+    seeds: &[u64],
+) -> Result<Comparison, SimError> {
     compare_noise(
         real,
         rig,
         &model.apply(DetectorNoise::default()),
         settings,
-        seed,
+        seeds,
     )
 }
 
-/// The twin with `noise` (the default independent pixel noise, say) measured like `real` on `seed`.
+/// The twin with `noise` (the default independent pixel noise, say) measured like `real` on
+/// `seeds` pooled.
 pub fn compare_noise(
     real: &DetectorErrorReport,
     rig: &CameraRig,
     noise: &DetectorNoise,
     settings: &FitSettings,
-    seed: u64,
-) -> Result<Vec<FitRow>, SimError> {
-    Ok(rows(
-        real,
-        &twin_report(real, rig, noise, settings, &[seed])?,
-    ))
+    seeds: &[u64],
+) -> Result<Comparison, SimError> {
+    let twin = twin_report(real, rig, noise, settings, seeds)?;
+    Ok(Comparison {
+        rows: rows(real, &twin),
+        twin_structure: twin.view_structure,
+        twin_persistence: twin.persistence,
+    })
 }
 
 #[cfg(test)]
@@ -411,7 +495,28 @@ mod tests {
             jitter_sigma: [0.004, 0.008, 0.004, 0.008],
             persistent_tau_s: 2.0,
             persistent_shape: [0.5; NOISE_GROUPS],
+            view_shift_sigma: 0.0,
+            view_shift_shape: 0.0,
+            view_correlation_deg: 0.0,
+            outlier_height_fraction: [0.0, 0.0],
         }
+    }
+
+    /// [`known`] with an offset shared by each view's landmarks.
+    fn known_shifted() -> RelativeNoise {
+        RelativeNoise {
+            view_shift_sigma: 0.02,
+            view_shift_shape: 0.5,
+            ..known()
+        }
+    }
+
+    /// Cameras of `rig` as a slice, for the offsets.
+    fn cameras(n: usize) -> Vec<ergocell_perception::Camera> {
+        ring_rig(n, &RingRigConfig::default())
+            .unwrap()
+            .cameras()
+            .to_vec()
     }
 
     fn small() -> FitSettings {
@@ -424,7 +529,7 @@ mod tests {
     }
 
     /// A "real" report made by the twin itself with a known model, on seeds the fit never sees.
-    fn real_from_twin(rig: &CameraRig) -> DetectorErrorReport {
+    fn real_from_twin(rig: &CameraRig, relative: RelativeNoise) -> DetectorErrorReport {
         let place = PersonPlace {
             mid_hip_m: [0.0, 0.0, 0.9],
             facing: [1.0, 0.0, 0.0],
@@ -444,6 +549,7 @@ mod tests {
             confidence_error_spearman: None,
             gross_error_share: 0.0,
             view_structure: detector_error::ViewStructure::default(),
+            persistence: Vec::new(),
         };
         let model = DetectorModel {
             format: DETECTOR_FORMAT.to_owned(),
@@ -453,7 +559,7 @@ mod tests {
             occluded_report_probability: 1.0,
             outlier_probability: 0.0,
             drop_probability: 0.0,
-            relative: known(),
+            relative,
         };
         let noise = model.apply(DetectorNoise::default());
         twin_report(&skeleton, rig, &noise, &small(), &[900, 901, 902]).unwrap()
@@ -462,9 +568,13 @@ mod tests {
     #[test]
     fn a_fit_to_the_twins_own_measurement_recovers_its_error() {
         let rig = ring_rig(4, &RingRigConfig::default()).unwrap();
-        let real = real_from_twin(&rig);
+        let real = real_from_twin(&rig, known());
         assert!(real.all.total.count > 10_000, "{:?}", real.all);
-        let fit = fit(&real, &rig, &small(), 1).unwrap();
+        let settings = FitSettings {
+            view_shift: false,
+            ..small()
+        };
+        let fit = fit(&real, &rig, &settings, 1).unwrap();
         // Every group's median and p90 within 20 % of the "real" on the fitting seeds…
         for row in &fit.rows {
             assert!(row.worst_gap() < 0.2, "{row:?}");
@@ -484,8 +594,78 @@ mod tests {
             );
         }
         // On a seed the fit never saw, too.
-        let rows = compare(&real, &rig, &fit.model, &small(), 77).unwrap();
+        let rows = compare(&real, &rig, &fit.model, &small(), &[77])
+            .unwrap()
+            .rows;
         assert!(rows.iter().all(|r| r.worst_gap() < 0.25), "{rows:?}");
+    }
+
+    #[test]
+    fn a_fit_recovers_an_offset_shared_by_each_view() {
+        let rig = ring_rig(6, &RingRigConfig::default()).unwrap();
+        let real = real_from_twin(&rig, known_shifted());
+        let quick = FitSettings {
+            frames: 150,
+            iterations: 4,
+            fit_seeds: 2,
+            ..small()
+        };
+        let fit = fit(&real, &rig, &quick, 1).unwrap();
+        let got = fit.model.relative.view_shift_sigma;
+        assert!((got / 0.02 - 1.0).abs() < 0.3, "shared σ {got} for 0.02");
+        // The landmarks' own offsets are what is left: the face's, largest, is near its own σ.
+        let face = fit.model.relative.persistent_sigma[0];
+        assert!(
+            (face / 0.02 - 1.0).abs() < 0.4,
+            "face's own σ {face} for 0.02"
+        );
+        // Fitted without a shared offset, the own offsets take all of it (larger than they are).
+        let flat = super::fit(
+            &real,
+            &rig,
+            &FitSettings {
+                view_shift: false,
+                ..quick
+            },
+            1,
+        )
+        .unwrap();
+        assert_eq!(flat.model.relative.view_shift_sigma, 0.0);
+        assert!(flat.model.relative.persistent_sigma[1] > 1.3 * 0.015);
+    }
+
+    #[test]
+    fn near_cameras_err_alike_and_far_ones_on_their_own() {
+        // Cameras 3 cm and 90° apart around a person at the origin.
+        let rig = ring_rig(4, &RingRigConfig::default()).unwrap();
+        let mut near = rig.cameras()[0].clone();
+        let far = rig.cameras()[2].clone();
+        let shift = near.T_camera_world.rotation * nalgebra::Vector3::new(0.03, 0.0, 0.0);
+        near.T_camera_world.translation.vector -= shift;
+        let cams = vec![rig.cameras()[0].clone(), near, far];
+        let centre = nalgebra::Point3::new(0.0, 0.0, 0.9);
+        let noise = RelativeNoise {
+            view_correlation_deg: 10.0,
+            ..known_shifted()
+        };
+        let (mut near_gap, mut far_gap, mut size) = (0.0, 0.0, 0.0);
+        for seed in 0..20 {
+            let mut offsets = PersistentOffsets::new(3, seed);
+            let o = offsets.at(0, &noise, &cams, &centre);
+            for l in 0..33 {
+                near_gap += (o[0][l] - o[1][l]).norm();
+                far_gap += (o[0][l] - o[2][l]).norm();
+                size += o[0][l].norm();
+            }
+        }
+        assert!(near_gap < 0.1 * size, "near {near_gap} of {size}");
+        assert!(far_gap > 0.8 * size, "far {far_gap} of {size}");
+        // Independent (0°): the near camera's offsets are its own.
+        let mut offsets = PersistentOffsets::new(3, 1);
+        let o = offsets.at(0, &known_shifted(), &cams, &centre);
+        let gap: f64 = (0..33).map(|l| (o[0][l] - o[1][l]).norm()).sum();
+        let own: f64 = (0..33).map(|l| o[0][l].norm()).sum();
+        assert!(gap > 0.8 * own, "{gap} {own}");
     }
 
     #[test]
@@ -520,8 +700,10 @@ mod tests {
         let mut fixed = known();
         fixed.persistent_shape = [0.0; NOISE_GROUPS];
         let mut offsets = PersistentOffsets::new(3, 5);
+        let cams = cameras(3);
+        let centre = nalgebra::Point3::new(0.0, 0.0, 0.9);
         for step in 0..50 {
-            for camera in offsets.at(step * 100_000_000, &fixed) {
+            for camera in offsets.at(step * 100_000_000, &fixed, &cams, &centre) {
                 for (l, o) in camera.iter().enumerate() {
                     let want = fixed.persistent_sigma[crate::detector::noise_group(l)] * 1.2533;
                     assert!(
@@ -534,9 +716,10 @@ mod tests {
         // Shape 1: Gaussian, σ per coordinate over many cameras and landmarks.
         let mut gaussian = known();
         gaussian.persistent_shape = [1.0; NOISE_GROUPS];
-        let mut offsets = PersistentOffsets::new(200, 6);
+        let mut offsets = PersistentOffsets::new(64, 6);
+        let cams = cameras(64);
         let face: Vec<f64> = offsets
-            .at(0, &gaussian)
+            .at(0, &gaussian, &cams, &centre)
             .iter()
             .flat_map(|c| c[..=10].iter().flat_map(|o| [o.x, o.y]))
             .collect();

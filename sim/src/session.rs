@@ -16,7 +16,7 @@
 //! the seed paper). It never reads wall time.
 
 use ergocell_perception::{CameraIndex, CameraRig, Frame2};
-use ergocell_skeleton::Skeleton3;
+use ergocell_skeleton::{Landmark, Skeleton3};
 use nalgebra::Point3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -730,6 +730,17 @@ impl Simulation {
         let truth = self.truth_at(t)?;
         let mut views = Vec::with_capacity(self.rig.len());
         let mut dropped = Vec::new();
+        let persistent = match (&self.config.noise.relative, &mut self.persistent) {
+            (Some(r), Some(p)) => {
+                let hip = |l| truth.skeleton.position(l);
+                let centre = match (hip(Landmark::LeftHip), hip(Landmark::RightHip)) {
+                    (Some(a), Some(b)) => nalgebra::center(&a, &b),
+                    _ => Point3::origin(),
+                };
+                Some(p.at(t, r, self.rig.cameras(), &centre))
+            }
+            _ => None,
+        };
         for (k, camera) in self.rig.cameras().iter().enumerate() {
             let u_drop = self.rng.random::<f64>();
             let dt = jitter_nanos(&self.config.noise, &mut self.rng);
@@ -760,10 +771,7 @@ impl Simulation {
                 .bump
                 .filter(|b| b.camera == k && stamp >= b.from_nanos)
                 .map(|b| b.apply(camera));
-            let offsets = match (&self.config.noise.relative, &mut self.persistent) {
-                (Some(r), Some(p)) => p.at(t, r).get(k),
-                _ => None,
-            };
+            let offsets = persistent.as_ref().and_then(|o| o.get(k));
             views.push(render_view(
                 bumped.as_ref().unwrap_or(camera),
                 k,

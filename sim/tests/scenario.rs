@@ -17,11 +17,11 @@ fn c2_handover() -> Point3<f64> {
     Point3::new(0.41, -0.10, 1.055)
 }
 
-fn run(seed: u64, noise: DetectorNoise, stature_m: f64, cycles: usize) -> Vec<Tick> {
+fn run(seed: u64, noise: &DetectorNoise, stature_m: f64, cycles: usize) -> Vec<Tick> {
     let mut script = SessionScript::new(c2_handover());
     script.cycles = cycles;
     let config = SimConfig {
-        noise,
+        noise: *noise,
         ..SimConfig::new(seed)
     };
     Simulation::new(
@@ -38,7 +38,7 @@ fn run(seed: u64, noise: DetectorNoise, stature_m: f64, cycles: usize) -> Vec<Ti
 #[test]
 fn noiseless_detections_are_the_perception_camera_projections() {
     let rig = reference_rig();
-    let ticks = run(7, DetectorNoise::none(), 1.72, 1);
+    let ticks = run(7, &DetectorNoise::none(), 1.72, 1);
     let mut checked = 0;
     for tick in &ticks {
         for view in &tick.frame.views {
@@ -60,7 +60,7 @@ fn noiseless_detections_are_the_perception_camera_projections() {
 
 #[test]
 fn noiseless_views_triangulate_back_to_the_truth() {
-    let ticks = run(3, DetectorNoise::none(), 1.85, 1);
+    let ticks = run(3, &DetectorNoise::none(), 1.85, 1);
     let mut engine = FusionEngine::new(reference_rig(), FusionMethod::Default).unwrap();
     let idle = ticks.iter().find(|t| t.truth.phase == Phase::Idle).unwrap();
     let fused = engine.fuse(&idle.frame).unwrap();
@@ -73,9 +73,9 @@ fn noiseless_views_triangulate_back_to_the_truth() {
 
 #[test]
 fn same_seed_same_ticks_other_seed_other_noise() {
-    let a = run(11, DetectorNoise::default(), 1.66, 2);
-    let b = run(11, DetectorNoise::default(), 1.66, 2);
-    let c = run(12, DetectorNoise::default(), 1.66, 2);
+    let a = run(11, &DetectorNoise::default(), 1.66, 2);
+    let b = run(11, &DetectorNoise::default(), 1.66, 2);
+    let c = run(12, &DetectorNoise::default(), 1.66, 2);
     assert_eq!(a, b);
     assert_eq!(a.len(), c.len());
     assert_ne!(a, c);
@@ -83,7 +83,7 @@ fn same_seed_same_ticks_other_seed_other_noise() {
 
 #[test]
 fn the_script_walks_in_measures_hands_over_and_walks_out() {
-    let ticks = run(5, DetectorNoise::default(), 1.80, 3);
+    let ticks = run(5, &DetectorNoise::default(), 1.80, 3);
     let phases: Vec<Phase> = ticks.iter().map(|t| t.truth.phase).collect();
     assert_eq!(phases[0], Phase::WalkIn);
     assert!(phases.contains(&Phase::Idle));
@@ -125,7 +125,7 @@ fn pixel_noise_has_the_configured_spread_and_drops_their_rate() {
         ..DetectorNoise::default()
     };
     let rig = reference_rig();
-    let ticks = run(9, noise, 1.75, 2);
+    let ticks = run(9, &noise, 1.75, 2);
     let (mut sum_sq, mut n, mut dropped, mut views) = (0.0, 0usize, 0usize, 0usize);
     for tick in &ticks {
         dropped += tick.dropped.len();
@@ -156,7 +156,7 @@ fn the_camera_behind_the_operator_sees_fewer_landmarks_than_a_front_one() {
         occluded_report_probability: 0.0,
         ..DetectorNoise::none()
     };
-    let ticks = run(1, noise, 1.75, 1);
+    let ticks = run(1, &noise, 1.75, 1);
     let idle = ticks.iter().find(|t| t.truth.phase == Phase::Idle).unwrap();
     let count = |cam: usize| {
         idle.frame
