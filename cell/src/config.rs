@@ -26,6 +26,7 @@ use ergocell_ergonomics::assess::{MuscleUseConfig, Thresholds};
 use ergocell_ergonomics::height::{ClassThresholds, EarOffset, MIN_CALIBRATION_SESSIONS};
 use ergocell_ergonomics::{AssessmentConfig, HeightConfig, TaskConfig, UpVector, WarningConfig};
 use ergocell_perception::temporal::OneEuroParams;
+use ergocell_perception::view_offset::ViewOffsetConfig;
 use ergocell_perception::FusionMethod;
 use ergocell_robot::config::StationConfig;
 use serde::Deserialize;
@@ -138,6 +139,10 @@ impl CellSettings {
                     radius_m: p.operator_gate_radius_m,
                     memory_nanos: nanos(p.operator_gate_memory_s),
                 }),
+                view_offsets: (p.view_offset_time_constant_s > 0.0).then(|| ViewOffsetConfig {
+                    time_constant_nanos: nanos(p.view_offset_time_constant_s),
+                    ..ViewOffsetConfig::default()
+                }),
                 ..ReconstructionConfig::default()
             },
             assessment,
@@ -163,6 +168,10 @@ impl CellSettings {
         seconds("pipeline.assembly_max_wait_s", p.assembly_max_wait_s)?;
         landmarks("pipeline.min_tracked_landmarks", p.min_tracked_landmarks)?;
         non_negative("pipeline.operator_gate_radius_m", p.operator_gate_radius_m)?;
+        non_negative(
+            "pipeline.view_offset_time_constant_s",
+            p.view_offset_time_constant_s,
+        )?;
         seconds("pipeline.operator_gate_memory_s", p.operator_gate_memory_s)?;
         finite(
             "pipeline.operator_gate_torso_height_m",
@@ -503,6 +512,9 @@ struct PipelineFile {
     operator_gate_memory_s: f64,
     /// Height of a standing operator's torso (mid shoulders and hips) above the station floor.
     operator_gate_torso_height_m: f64,
+    /// Time constant over which each camera's persistent image offset is learnt from the fused
+    /// skeleton and taken out of its views (`perception::view_offset`); 0 = off.
+    view_offset_time_constant_s: f64,
 }
 
 impl Default for PipelineFile {
@@ -522,6 +534,9 @@ impl Default for PipelineFile {
             operator_gate_radius_m: OPERATOR_GATE_RADIUS_M,
             operator_gate_memory_s: 1.0,
             operator_gate_torso_height_m: 1.1,
+            view_offset_time_constant_s: p
+                .view_offsets
+                .map_or(0.0, |v| v.time_constant_nanos as f64 * 1e-9),
         }
     }
 }

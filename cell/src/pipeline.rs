@@ -36,6 +36,7 @@ use ergocell_perception::camera_health::{
 };
 use ergocell_perception::operator_gate::{other_person_views, torso_of};
 use ergocell_perception::temporal::{FrameAssembler, OneEuroFilter, OneEuroParams};
+use ergocell_perception::view_offset::{ViewOffsetConfig, ViewOffsets};
 use ergocell_perception::{
     CameraRig, Frame2, FusedFrame, FusionEngine, FusionMethod, PerceptionError, View2,
 };
@@ -61,6 +62,10 @@ pub struct ReconstructionConfig {
     /// Finding cameras knocked out of calibration by their reprojection residuals, which are then
     /// left out of fusion (default on, [`ResidualMonitorConfig::default`]); `None` = never.
     pub residual_monitor: Option<ResidualMonitorConfig>,
+    /// Learning each camera's persistent image offset from the fused skeleton and taking it out of
+    /// its views before fusion (default on, [`ViewOffsetConfig::default`]; default fusion only):
+    /// [`ergocell_perception::view_offset`]. `None` = views fused as delivered.
+    pub view_offsets: Option<ViewOffsetConfig>,
     /// Leaving out the views of someone other than the operator (a single-person detector per
     /// camera, two people in the cell): [`OperatorZone`]. `None` (the default) = every view is
     /// the operator's; the session sets it from the station.
@@ -87,6 +92,7 @@ impl Default for ReconstructionConfig {
             assembly_tolerance_nanos: 15_000_000,
             assembly_max_wait_nanos: 40_000_000,
             residual_monitor: Some(ResidualMonitorConfig::default()),
+            view_offsets: Some(ViewOffsetConfig::default()),
             operator_zone: None,
         }
     }
@@ -164,6 +170,7 @@ pub struct Reconstruction {
     fusion: FusionEngine,
     filter: Option<OneEuroFilter>,
     monitor: Option<CameraResidualMonitor>,
+    offsets: Option<ViewOffsets>,
     /// The frame without the cameras found out of calibration or showing someone else (reused).
     kept: Frame2,
     /// The operator's last tracked torso (stamp, world point), for the [`OperatorZone`].
@@ -182,6 +189,10 @@ impl Reconstruction {
             monitor: config
                 .residual_monitor
                 .map(|c| CameraResidualMonitor::new(rig.len(), c)),
+            offsets: config
+                .view_offsets
+                .filter(|_| config.fusion == FusionMethod::Default)
+                .map(|c| ViewOffsets::new(rig.len(), c)),
             fusion: FusionEngine::new(rig, config.fusion)?,
             filter: config.filter.map(OneEuroFilter::new),
             kept: Frame2 {
@@ -200,6 +211,12 @@ impl Reconstruction {
     /// The rig the fusion runs on.
     pub fn rig(&self) -> &CameraRig {
         self.fusion.rig()
+    }
+
+    /// The image offset (pixels) currently taken out of camera `k`'s views, when the views'
+    /// offsets are learnt ([`ReconstructionConfig::view_offsets`]).
+    pub fn view_offset(&self, k: usize) -> Option<nalgebra::Vector2<f64>> {
+        self.offsets.as_ref().and_then(|o| o.offset(k))
     }
 
     /// Views that arrived by `now_nanos` → the frames they complete (or whose wait expired), in
@@ -233,23 +250,23 @@ impl Reconstruction {
             }
             None => 0,
         };
-        let flagged = self
-            .monitor
-            .as_ref()
-            .is_some_and(|m| m.flagged().next().is_some());
-        let fused = if flagged || other_person_views != 0 {
+        let monitor = self.monitor.as_ref();
+        let flagged = monitor.map_or(0u64, |m| {
+            m.flagged()
+                .filter(|k| *k < 64)
+                .fold(0, |mask, k| mask | (1 << k))
+        });
+        let left_out = flagged | other_person_views;
+        let fused = if left_out != 0 || self.offsets.is_some() {
             self.kept.stamp_nanos = frame.stamp_nanos;
             self.kept.views.clear();
-            let monitor = self.monitor.as_ref();
+            let offsets = self.offsets.as_ref();
             self.kept.views.extend(
                 frame
                     .views
                     .iter()
-                    .filter(|v| {
-                        other_person_views & (1 << v.camera) == 0
-                            && !monitor.is_some_and(|m| m.is_flagged(v.camera))
-                    })
-                    .cloned(),
+                    .filter(|v| v.camera >= 64 || left_out & (1 << v.camera) == 0)
+                    .map(|v| offsets.map_or_else(|| v.clone(), |o| o.correct(v))),
             );
             self.fusion.fuse(&self.kept)?
         } else {
@@ -267,6 +284,15 @@ impl Reconstruction {
                 }
             });
         if tracked.is_some() {
+            if let Some(offsets) = self.offsets.as_mut() {
+                offsets.observe(
+                    self.fusion.rig(),
+                    &self.kept,
+                    &fused.skeleton,
+                    fused.swapped_views,
+                    0,
+                );
+            }
             if let Some(torso) = torso_of(&fused.skeleton) {
                 self.last_torso = Some((frame.stamp_nanos, torso));
             }

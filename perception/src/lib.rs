@@ -38,6 +38,7 @@ mod simd;
 pub mod temporal;
 pub mod triangulation;
 pub mod video_geometry;
+pub mod view_offset;
 
 pub use camera::{Camera, CameraId, Distortion, Intrinsics};
 pub use detections::{Frame2, Keypoint2, KeypointFormat, View2};

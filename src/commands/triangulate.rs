@@ -249,6 +249,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let counts = ViewCounts {
         rejected,
         undistortion_failures,
+        learnt_offsets: (0..rig.len())
+            .map(|k| reconstruction.view_offset(k))
+            .collect(),
     };
     print_report(args, &rig, &stats, &per_camera, counts, elapsed);
     println!("wrote {}", args.out.display());
@@ -315,10 +318,12 @@ fn print_source_warnings(source: &FrameSource<'_>) {
 
 /// Views the fusion left out: rejected (outliers, behind the camera) and keypoints outside the
 /// lens model.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 struct ViewCounts {
     rejected: usize,
     undistortion_failures: usize,
+    /// Per camera, the image offset the fusion learnt and took out of its views at the end.
+    learnt_offsets: Vec<Option<nalgebra::Vector2<f64>>>,
 }
 
 /// What the run found: landmarks triangulated, reprojection per camera, left/right swaps, rejected
@@ -334,6 +339,7 @@ fn print_report(
     let ViewCounts {
         rejected,
         undistortion_failures,
+        learnt_offsets,
     } = counts;
     let frames = stats.frames();
     let triangulated = stats.landmarks();
@@ -356,8 +362,14 @@ fn print_report(
         seen += views;
         swapped += mirrored;
         if let Some((m, n)) = per_camera.median_px(i) {
+            let learnt = learnt_offsets
+                .get(i)
+                .copied()
+                .flatten()
+                .map(|o| format!("; image offset learnt ({:+.1}, {:+.1}) px", o.x, o.y))
+                .unwrap_or_default();
             println!(
-                "  camera {:<12} median reprojection {m:.2} px over {n} keypoints; {mirrored} of {views} views left/right-swapped, corrected",
+                "  camera {:<12} median reprojection {m:.2} px over {n} keypoints as delivered; {mirrored} of {views} views left/right-swapped, corrected{learnt}",
                 c.id.as_str(),
             );
         }
@@ -461,6 +473,15 @@ fn print_detector_error(r: &detector_error::DetectorErrorReport) {
             b.total.count,
             pct(&b.total)
         );
+    }
+    if !r.persistence.is_empty() {
+        println!("  how long a landmark's own error lasts (its correlation with itself a lag later, the view's shift taken out):");
+        let row: Vec<String> = r
+            .persistence
+            .iter()
+            .map(|l| format!("{:.2} s {:.2}", l.lag_s, l.correlation))
+            .collect();
+        println!("    {}", row.join("   "));
     }
 }
 
