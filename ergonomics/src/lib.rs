@@ -47,7 +47,7 @@ pub use angles::{BodyAngles, SideAngles, UpVector};
 pub use assess::{AssessmentConfig, FrameAssessment, RulaAssessor, SideAssessment, TaskConfig};
 pub use height::{HeightClass, HeightConfig, HeightDecision, HeightEstimator, HeightStatus};
 pub use rula::{score_worksheet, RulaInput, RulaScores, WristTwist};
-pub use warnings::{WarningConfig, WarningEvent, WarningTracker};
+pub use warnings::{WarningConfig, WarningEvent, WarningKind, WarningTracker};
 
 /// Which side of the body (the person's own left and right): the skeleton's, so a landmark's side
 /// ([`ergocell_skeleton::Landmark::side`]) and a worksheet's side are one type.

@@ -38,7 +38,7 @@ use ergocell_ergonomics::height::{
 use ergocell_ergonomics::rula::action_level;
 use ergocell_ergonomics::{
     AssessmentConfig, FrameAssessment, HeightClass, HeightConfig, HeightStatus, RulaAssessor,
-    UpVector,
+    UpVector, WarningConfig, WarningKind, WarningTracker,
 };
 use ergocell_perception::{CameraRig, FusionEngine, FusionMethod};
 use ergocell_skeleton::Landmark;
@@ -450,6 +450,32 @@ fn truth_headlines(ticks: &[Tick]) -> Result<Vec<Option<Scored>>, SimError> {
         .iter()
         .map(|t| Ok(scored(&truth.assess(&t.truth.skeleton)?)))
         .collect()
+}
+
+/// Warnings the controller's warning tracker raises on the truth's assessments (unsmoothed, every
+/// tick).
+fn true_warnings_raised(ticks: &[Tick]) -> Result<usize, SimError> {
+    let mut truth = RulaAssessor::new(truth_config(AssessmentConfig::new(up()?)))?;
+    let mut warnings = WarningTracker::new(WarningConfig::default());
+    let mut raised = 0;
+    for t in ticks {
+        let a = truth.assess(&t.truth.skeleton)?;
+        raised += warnings
+            .update(&a)
+            .iter()
+            .filter(|w| w.kind == WarningKind::Raised)
+            .count();
+    }
+    Ok(raised)
+}
+
+/// `n` per minute, NaN over no time.
+fn per_minute(n: usize, minutes: f64) -> f64 {
+    if minutes > 0.0 {
+        round6(n as f64 / minutes)
+    } else {
+        f64::NAN
+    }
 }
 
 /// Result of [`adaptation`].
@@ -1091,6 +1117,11 @@ pub struct RulaAgreement {
     pub uncertain_frames: usize,
     pub grand_exact_uncertain: f64,
     pub grand_exact_certain: f64,
+    /// Posture warnings raised per minute of session (every frame, not only at the station): by the
+    /// pipeline, and by the same warning tracker on the truth's assessments. An operator told of a
+    /// posture more often than the truth would tell them learns to ignore the display.
+    pub warnings_per_min: f64,
+    pub true_warnings_per_min: f64,
     pub statures_m: Vec<f64>,
 }
 
@@ -1144,12 +1175,22 @@ pub fn rula_agreement(
     let mut grand_differs_with_regions_equal = 0;
     // [certain, uncertain]: (frames, grand score equal)
     let mut by_flag = [(0usize, 0usize); 2];
+    let (mut raised, mut true_raised, mut minutes) = (0usize, 0usize, 0.0);
     for (i, &h) in statures_m.iter().enumerate() {
         let mut script = SessionScript::new(handovers.before_m);
         script.cycles = cycles;
         let ticks = simulate(setup, i, h, &script)?;
         let truth = truth_headlines(&ticks)?;
+        true_raised += true_warnings_raised(&ticks)?;
+        if let (Some(first), Some(last)) = (ticks.first(), ticks.last()) {
+            minutes += (last.frame.stamp_nanos - first.frame.stamp_nanos) as f64 / 60e9;
+        }
         run_pipeline(setup, &ticks, |k, tracked| {
+            raised += tracked
+                .warnings
+                .iter()
+                .filter(|w| w.kind == WarningKind::Raised)
+                .count();
             let e = pipeline_headline(tracked)?;
             if !at_station(ticks[k].truth.phase) {
                 return Ok(());
@@ -1214,6 +1255,8 @@ pub fn rula_agreement(
         uncertain_frames: by_flag[1].0,
         grand_exact_uncertain: share(by_flag[1]),
         grand_exact_certain: share(by_flag[0]),
+        warnings_per_min: per_minute(raised, minutes),
+        true_warnings_per_min: per_minute(true_raised, minutes),
         statures_m: statures_m.to_vec(),
     })
 }

@@ -456,8 +456,13 @@ pub struct RulaSeeds {
     /// Per region (upper_arm, lower_arm, wrist, neck, trunk, legs): exact agreement over seeds.
     pub region_names: Vec<String>,
     pub region_exact: Vec<Option<Spread>>,
+    pub warnings_per_min: Option<Spread>,
+    pub true_warnings_per_min: Option<Spread>,
     pub goals: Vec<Goal>,
 }
+
+/// The operator's warnings may come at most this much more often than the truth's (1.2: 20 %).
+pub const WARNING_RATE_GOAL: f64 = 1.2;
 
 /// The grand score's κ goal (above the Kinect anchor, κ 0.84) and exact agreement goal.
 pub const RULA_KAPPA_GOAL: f64 = 0.84;
@@ -488,6 +493,15 @@ pub fn rula_agreement(seeds: &[u64], runs: &[RulaAgreement]) -> RulaSeeds {
             let e = runs[i].grand_score.exact;
             (e.is_nan() || e < RULA_EXACT_GOAL).then(|| format!("exact {e:.3}"))
         }),
+        Goal::judge(
+            "warnings raised per minute at most the truth's + 20 %",
+            seeds,
+            |i| {
+                let (w, t) = (runs[i].warnings_per_min, runs[i].true_warnings_per_min);
+                (w.is_nan() || t.is_nan() || w > WARNING_RATE_GOAL * t)
+                    .then(|| format!("{w:.2} per minute, the truth {t:.2}"))
+            },
+        ),
     ];
     RulaSeeds {
         seeds: seeds.to_vec(),
@@ -497,6 +511,8 @@ pub fn rula_agreement(seeds: &[u64], runs: &[RulaAgreement]) -> RulaSeeds {
         action_level_kappa: spread(seeds, &pick(&|r| r.action_level.kappa), Worse::Lower),
         region_names,
         region_exact,
+        warnings_per_min: spread(seeds, &pick(&|r| r.warnings_per_min), Worse::Higher),
+        true_warnings_per_min: spread(seeds, &pick(&|r| r.true_warnings_per_min), Worse::Higher),
         goals,
     }
 }

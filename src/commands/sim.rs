@@ -366,7 +366,14 @@ fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
         println!(
             "    {} / {}   (decay time {} / {} s)",
             lags(&real.persistence),
-            lags(&pooled.twin_persistence),
+            lags(
+                &pooled
+                    .twin_persistence
+                    .iter()
+                    .filter(|t| real.persistence.iter().any(|r| r.lag_s == t.lag_s))
+                    .copied()
+                    .collect::<Vec<_>>()
+            ),
             detector_fit::decay_time_s(&real.persistence)
                 .map_or_else(|| "-".to_owned(), |t| format!("{t:.2}")),
             detector_fit::decay_time_s(&pooled.twin_persistence)
@@ -1148,6 +1155,11 @@ fn seeds_rula_agreement(
                 spread_text(sum.region_exact[j].as_ref(), 1.0, 3)
             );
         }
+        println!(
+            "  warnings raised per minute {}; on the truth {}",
+            spread_text(sum.warnings_per_min.as_ref(), 1.0, 2),
+            spread_text(sum.true_warnings_per_min.as_ref(), 1.0, 2)
+        );
         print_goals(&sum.goals);
     }
     let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
@@ -1353,6 +1365,10 @@ fn print_agreement(r: &RulaAgreement) {
     println!(
         "marked uncertain by the assessor: {} of {} frames; grand score exact {:.3} there, {:.3} elsewhere",
         r.uncertain_frames, r.frames, r.grand_exact_uncertain, r.grand_exact_certain
+    );
+    println!(
+        "posture warnings raised: {:.2} per minute (on the truth's assessments {:.2})",
+        r.warnings_per_min, r.true_warnings_per_min
     );
 }
 
