@@ -14,8 +14,10 @@
 //! figure of the controller that ships.
 //!
 //! Two named stages, composed once in [`Pipeline`]:
-//! - [`Reconstruction`]: assembly → fusion → tracked gate → filter. `ergocell triangulate` runs it
-//!   alone (an imported calibration may not know the world's vertical);
+//! - [`Reconstruction`]: assembly → fusion → tracked gate → filter, each camera's learnt image
+//!   offset taken out of its views before fusion ([`ergocell_perception::view_offset`]).
+//!   `ergocell triangulate` runs it alone (an imported calibration may not know the world's
+//!   vertical);
 //! - [`Assessment`]: RULA → warnings, and the height. `ergocell rula track` runs it alone on a 3D
 //!   landmarks file.
 //!
