@@ -537,11 +537,12 @@ fn swapped(
     pairs >= 3 && mirrored <= 0.5 * as_labelled
 }
 
-/// Per residual, the mean persistent part over the residuals of its view in its frame.
-fn shared(residuals: &[Residual], persistent_px: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
+/// Per residual, the mean of `values` (one per residual: the persistent parts, the residuals) over
+/// the residuals of its view in its frame.
+fn shared(residuals: &[Residual], values: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
     let mut sums: std::collections::HashMap<(usize, usize), (Vector2<f64>, usize)> =
         std::collections::HashMap::new();
-    for (r, p) in residuals.iter().zip(persistent_px) {
+    for (r, p) in residuals.iter().zip(values) {
         let e = sums
             .entry((r.frame, r.camera))
             .or_insert((Vector2::zeros(), 0));
@@ -561,22 +562,13 @@ fn shared(residuals: &[Residual], persistent_px: &[Vector2<f64>]) -> Vec<Vector2
 /// with itself a lag later: pairs of the same camera and landmark whose stamps are the lag apart
 /// within half the lag's shortest frame interval.
 fn persistence(residuals: &[Residual]) -> Vec<LagRow> {
-    let mut means: std::collections::HashMap<(usize, usize), (Vector2<f64>, usize)> =
-        std::collections::HashMap::new();
-    for r in residuals {
-        let e = means
-            .entry((r.frame, r.camera))
-            .or_insert((Vector2::zeros(), 0));
-        e.0 += r.residual_px;
-        e.1 += 1;
-    }
+    let raw: Vec<Vector2<f64>> = residuals.iter().map(|r| r.residual_px).collect();
+    let means = shared(residuals, &raw);
     // Relative to the image height, so that a near and a far view weigh alike.
     let own: Vec<Vector2<f64>> = residuals
         .iter()
-        .map(|r| {
-            let (sum, n) = means[&(r.frame, r.camera)];
-            (r.residual_px - sum / n.max(1) as f64) / r.height_px.max(1.0)
-        })
+        .zip(&means)
+        .map(|(r, mean)| (r.residual_px - mean) / r.height_px.max(1.0))
         .collect();
     let mut order: Vec<usize> = (0..residuals.len()).collect();
     order.sort_by_key(|&i| {
