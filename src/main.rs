@@ -45,8 +45,9 @@ use clap::{Parser, Subcommand};
 #[derive(Debug, Parser)]
 #[command(name = "ergocell", version, about, long_about = None)]
 struct Cli {
-    /// Log filter (tracing `EnvFilter` syntax), e.g. `info` or `ergocell=debug` (default `warn`;
-    /// `error` for `demo`, which prints every session event itself).
+    /// Log filter (tracing `EnvFilter` syntax), e.g. `info`, `ergocell=debug` or `rustdds=debug`
+    /// (default `warn`, `error` for `demo`, which prints every session event itself; both without
+    /// ros2-client's "ROS_DISTRO is not set" note).
     #[arg(long, global = true)]
     log: Option<String>,
     #[command(subcommand)]
@@ -90,7 +91,12 @@ fn main() -> std::process::ExitCode {
     } else {
         "warn"
     };
-    let filter = tracing_subscriber::EnvFilter::try_new(cli.log.as_deref().unwrap_or(default_log))
+    // A dependency's notes stay out of the default console: ros2-client's "ROS_DISTRO is not set"
+    // (no ROS install is the normal case here). RustDDS keeps its warnings (a QoS mismatch shows
+    // only there); its per-message ones without multicast are debug in the vendored copy, and `run`
+    // says what a missing multicast route means once (`multicast_note`).
+    let default_log = format!("{default_log},ros2_client::distributions=error");
+    let filter = tracing_subscriber::EnvFilter::try_new(cli.log.as_deref().unwrap_or(&default_log))
         .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("warn"));
     // Colour only for a person at a terminal: a redirected stderr (a log file, journald, a pipe) gets
     // plain text.

@@ -416,7 +416,9 @@ async fn serve(
         let at = clock.now() + (limit * 1e9).round() as i64;
         cell = cell.with_deadline(at, "--max-secs reached");
     }
-    print_start(ros, topics.cameras.len(), &network_scope(ros)?);
+    let scope = network_scope(ros)?;
+    print_start(ros, topics.cameras.len(), &scope);
+    say(multicast_note(&scope));
     let inputs = Inputs {
         cameras: topics.cameras,
         driver: topics.driver,
@@ -836,6 +838,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
     )?;
     let participant = node.participant();
     runtime.spawn(node.spinner()?);
+    say(multicast_note(&scope));
     let result = runtime.block_on(async {
         let mut publishers = std::collections::BTreeMap::new();
         for id in &ros.cameras {
@@ -931,6 +934,53 @@ fn security_enclave(
     })
 }
 
+/// DDS discovery's multicast group (SPDP, every domain: RTPS 2.x §9.6.1.4.1).
+const DISCOVERY_GROUP: std::net::Ipv4Addr = std::net::Ipv4Addr::new(239, 255, 0, 1);
+
+/// One line when this machine cannot join DDS discovery's multicast group on any interface the
+/// participant may use (a container or network namespace with loopback only, an interface without
+/// multicast): what it means for discovery, said once instead of RustDDS's per-message warnings.
+/// `None` when a join succeeds, or when the scope does not look beyond this machine.
+fn multicast_note(scope: &ergocell_bridge::scope::NetworkScope) -> Option<String> {
+    use std::net::{IpAddr, Ipv4Addr, UdpSocket};
+    let interfaces: Vec<Ipv4Addr> = match scope.participant_filter().0 {
+        // No list: the kernel picks the interface from its routes, as for any multicast join.
+        None => vec![Ipv4Addr::UNSPECIFIED],
+        Some(list) => list
+            .into_iter()
+            .filter_map(|a| match a {
+                IpAddr::V4(a) if !a.is_loopback() => Some(a),
+                _ => None,
+            })
+            .collect(),
+    };
+    if interfaces.is_empty() {
+        return None; // LOCALHOST or OFF: discovery is not meant to leave this machine
+    }
+    let socket = match UdpSocket::bind((Ipv4Addr::UNSPECIFIED, 0)) {
+        Ok(s) => s,
+        Err(e) => {
+            return Some(format!(
+                "DDS discovery: no UDP socket could be opened ({e})"
+            ))
+        }
+    };
+    let mut last_error = None;
+    for interface in &interfaces {
+        match socket.join_multicast_v4(&DISCOVERY_GROUP, interface) {
+            Ok(()) => return None,
+            Err(e) => last_error = Some(e),
+        }
+    }
+    let why = last_error.map_or_else(String::new, |e| format!(": {e}"));
+    Some(format!(
+        "DDS discovery: no multicast on this machine (joining {DISCOVERY_GROUP}{why}): ROS 2 nodes \
+         on other machines (edge cameras, the robot's driver) cannot discover this cell; nodes on this \
+         machine still can, over loopback. Give the cell-network interface multicast \
+         (docs/integrator.md, troubleshooting)."
+    ))
+}
+
 /// The DDS participant's network scope from `[ros]` and the ROS 2 environment variables
 /// (`ROS_AUTOMATIC_DISCOVERY_RANGE`, `ROS_STATIC_PEERS`, `ROS_LOCALHOST_ONLY`).
 fn network_scope(ros: &RosConfig) -> anyhow::Result<ergocell_bridge::scope::NetworkScope> {
@@ -945,4 +995,39 @@ fn network_scope(ros: &RosConfig) -> anyhow::Result<ergocell_bridge::scope::Netw
         ros.interfaces.as_deref(),
         &env,
     )?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ergocell_bridge::scope::{DiscoveryRange, NetworkScope, ScopeEnv};
+    use std::net::Ipv4Addr;
+
+    fn scope(range: DiscoveryRange, interfaces: Option<&[Ipv4Addr]>) -> NetworkScope {
+        let env = ScopeEnv {
+            automatic_discovery_range: None,
+            static_peers: None,
+            localhost_only: None,
+        };
+        NetworkScope::resolve(Some(range), interfaces, &env).expect("a valid scope")
+    }
+
+    #[test]
+    fn multicast_note_only_where_discovery_should_leave_the_machine() {
+        // An interface this machine does not have (TEST-NET-1, RFC 5737): no join can succeed.
+        let absent = [Ipv4Addr::new(192, 0, 2, 1)];
+        let note = multicast_note(&scope(DiscoveryRange::Subnet, Some(&absent)))
+            .expect("a join on an absent interface fails");
+        assert!(note.starts_with("DDS discovery: no multicast"), "{note}");
+        assert!(
+            note.contains("239.255.0.1") && !note.contains('\n'),
+            "{note}"
+        );
+        // Discovery kept on this machine, or off: nothing to say.
+        assert_eq!(
+            multicast_note(&scope(DiscoveryRange::Localhost, None)),
+            None
+        );
+        assert_eq!(multicast_note(&scope(DiscoveryRange::Off, None)), None);
+    }
 }

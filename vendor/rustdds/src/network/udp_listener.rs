@@ -59,7 +59,9 @@ pub struct UDPListener {
 
 impl Drop for UDPListener {
   fn drop(&mut self) {
-    if let Some(mcg) = self.multicast_group {
+    // ergocell patch: leave only a group that was joined (a machine without multicast logged an
+    // ERROR for every listener at shutdown).
+    if let Some(mcg) = self.multicast_group.filter(|_| self.has_multicast_join) {
       self
         .socket
         .leave_multicast_v4(&mcg, &Ipv4Addr::UNSPECIFIED)
@@ -250,7 +252,8 @@ impl UDPListener {
     }
 
     if !joined_multicast {
-      warn!(
+      // ergocell patch: info, not warn (the binary says it once, in its own words).
+      info!(
         "No multicast joins succeeded for group {multicast_group:?}; multicast locator will not \
          be advertised."
       );

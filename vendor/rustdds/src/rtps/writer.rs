@@ -1890,7 +1890,8 @@ impl Writer {
               (DeliveryMode::Unicast, Some(_), _) => send_legacy!(reader.unicast_locator_list),
               (_, _, Some(_)) => send_legacy!(reader.multicast_locator_list),
               (_, Some(_), _) => send_legacy!(reader.unicast_locator_list),
-              (_, None, None) => warn!("send_message_to_readers: No locators for {reader:?}"),
+              // ergocell patch: debug, not warn: without multicast this fired ~28 times a second.
+              (_, None, None) => debug!("send_message_to_readers: No locators for {reader:?}"),
             }
             continue;
           }
