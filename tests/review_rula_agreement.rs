@@ -239,7 +239,7 @@ fn review_region_shares_are_rula_tracks_summary() {
     );
 }
 
-/// `report --csv/--summary-csv` (#20) of a recording and `rula track --csv/--summary-csv` of the same
+/// `report --csv/--summary-csv` of a recording and `rula track --csv/--summary-csv` of the same
 /// frames: the summary rows are the same row for row (time shares, exposure, REBA, ISO 11226 static
 /// postures, task segments), and every frame row has the same RULA and REBA scores. The operator
 /// walks in, holds the trunk at 45° with the neck at 35° for 6 s (a static hold: the trunk within
@@ -423,4 +423,45 @@ fn report_csv_exports_round_trip_rula_tracks() {
     assert_eq!(&f2[0][phase], "in place", "walking needs 0.2 s of history");
     assert_eq!(&f2[10][phase], "walking");
     assert_eq!(&f2[80][phase], "floor pick");
+}
+
+/// A recorded frame that neither side could be scored on carries level 0 in its message; the frame
+/// CSV must show it as not scored (an empty cell), never as a level (REBA's 0 reads "negligible").
+/// The demo's session has such a frame.
+#[test]
+fn report_csv_leaves_the_levels_of_an_unscored_frame_empty() {
+    let recording = tmp("unscored-demo.mcap");
+    let o = ergocell(&["demo", "--out", recording.to_str().unwrap(), "--force"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let frames = tmp("unscored-frames.csv");
+    let o = ergocell(&[
+        "report",
+        recording.to_str().unwrap(),
+        "--out",
+        tmp("unscored.html").to_str().unwrap(),
+        "--csv",
+        frames.to_str().unwrap(),
+        "--force",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut r = csv::Reader::from_path(&frames).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_owned).collect();
+    let col = |name: &str| header.iter().position(|c| c == name).unwrap();
+    let (ls, rs) = (col("left_scored"), col("right_scored"));
+    let (al, rl) = (col("action_level"), col("reba_action_level"));
+    let (mut scored, mut unscored) = (0, 0);
+    for row in r.records().map(Result::unwrap) {
+        if &row[ls] == "1" || &row[rs] == "1" {
+            scored += 1;
+            assert!(matches!(&row[al], "1" | "2" | "3" | "4"), "{row:?}");
+            assert!(matches!(&row[rl], "0" | "1" | "2" | "3" | "4"), "{row:?}");
+        } else {
+            unscored += 1;
+            assert_eq!((&row[al], &row[rl]), ("", ""), "{row:?}");
+        }
+    }
+    assert!(
+        scored > 0 && unscored > 0,
+        "{scored} scored, {unscored} unscored"
+    );
 }

@@ -184,8 +184,12 @@ pub fn write_frames<W: Write>(
                 .unwrap_or("")
                 .to_owned(),
             leg.to_owned(),
-            e.map_or(String::new(), |e| e.action_level.to_string()),
-            r.map_or(String::new(), |r| r.action_level.to_string()),
+            // A frame neither side of which was scored carries level 0 in its message: an empty
+            // cell ("not scored"), never a number (REBA's level 0 reads "negligible").
+            e.filter(|e| e.left.scored || e.right.scored)
+                .map_or(String::new(), |e| e.action_level.to_string()),
+            r.filter(|r| r.left.scored || r.right.scored)
+                .map_or(String::new(), |r| r.action_level.to_string()),
         ];
         row.extend(side_cells(e.map(|e| &e.left), r.map(|r| &r.left)));
         row.extend(side_cells(e.map(|e| &e.right), r.map(|r| &r.right)));
