@@ -3,9 +3,11 @@
 //! the file-reading trajectory provider beside it), the operator display and review servers, the
 //! shipped reference cell; shared by the commands and by the integration tests. The ROS 2 backend
 //! (message conversions, the MCAP recorder, the robot sink and its monitor) is
-//! `ergocell_ros_backend`, re-exported here as [`messages`], [`recording`] and [`robot_markers`].
+//! `ergocell_ros_backend`; three of its modules are re-exported here as [`messages`], [`recording`]
+//! and [`robot_markers`].
 //!
-//! `anyhow` stays in the command modules of the binary; this half returns typed errors.
+//! This half returns typed errors, except [`shipped::read_or_shipped`] (a file or its shipped copy,
+//! for the commands), which returns `anyhow`'s.
 
 pub mod display;
 pub mod fuzzing;

@@ -1,7 +1,9 @@
 //! `ergocell`: the robot-cell controller's command line.
 //!
-//! The binary is the only place that reads files, the clock and the network; the library crates do the
-//! work. Each subcommand lives in its own module under `commands/`.
+//! The library crates do the work; files, the clock and the network are read here and in the ROS 2
+//! backend (`ergocell_bridge`, `ergocell_ros_backend`: the DDS participant, the session clock, the
+//! recording). Each subcommand lives in a module under `commands/` (`replay` beside `run` in
+//! `run.rs`, `report` beside `review` in `review.rs`).
 
 /// The commands' `println!`: a closed stdout (`ergocell trajectories lock | head -1`) drops the line
 /// and the command finishes its work (every lock written, every file closed); std's macro panics

@@ -11,7 +11,8 @@
 //!   [`controller`]: the task that runs each goal on the controller and reports what it said.
 //!
 //! The only library crate that touches the network; it knows nothing of cameras, ergonomics or the
-//! robot model — the binary converts between these messages and the library types.
+//! robot model — `ergocell_ros_backend::messages` converts between these messages and the library
+//! types.
 
 pub mod action;
 pub mod cdr;

@@ -2,12 +2,13 @@
 //! state machine that owns it, and the cell configuration.
 //!
 //! - [`pipeline`]: camera views → fused skeleton → filtered skeleton → RULA → warnings, and the
-//!   height at session start. Wired once, here; the session, the digital twin's experiments and the
-//!   offline commands all run [`Pipeline`].
+//!   height at session start. Wired once, here; the session and the digital twin's experiments run
+//!   [`Pipeline`], the offline commands its stages.
 //! - [`session`]: the state machine from "waiting for an operator" to "session ended": height class,
 //!   the locked trajectory, holds and resumes, the operator's departure. Backends behind traits
 //!   ([`session::LandmarkSource`], [`session::RobotSink`], [`session::TrajectoryProvider`]) speak this
-//!   crate's types; the binary converts them to ROS messages at its boundary.
+//!   crate's types; the ROS 2 backend (`ergocell_ros_backend::messages`) converts them to ROS
+//!   messages at its boundary.
 //! - [`config`]: `config/cell.toml`, every tunable of the session, pipeline, assessment and task and
 //!   the station, strictly parsed (`deny_unknown_fields`) with errors that name the file, the key and
 //!   the value.

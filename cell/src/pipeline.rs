@@ -7,11 +7,12 @@
 //!                                                                      └─► HeightEstimator (unfiltered, until decided)
 //! ```
 //!
-//! The session state machine owns one [`Pipeline`]; the digital twin's experiments, `ergocell
-//! triangulate`, `ergocell rula track`, `ergocell height`, the demo and `ergocell run` run the same
-//! type with the same defaults ([`PipelineConfig::new`], or the cell file's `[pipeline]`,
-//! `[assessment]`, `[task]`, `[warnings]` and `[height]`), so a figure measured on the twin is a
-//! figure of the controller that ships.
+//! The session state machine owns one [`Pipeline`]; the digital twin's experiments, the demo and
+//! `ergocell run` run the same type with the same defaults ([`PipelineConfig::new`], or the cell
+//! file's `[pipeline]`, `[assessment]`, `[task]`, `[warnings]` and `[height]`), so a figure measured
+//! on the twin is a figure of the controller that ships. The offline commands run its stages:
+//! `ergocell triangulate` the [`Reconstruction`] (without the tracked gate, the filter only when
+//! asked), `ergocell rula track` the [`Assessment`], `ergocell height` the height estimator.
 //!
 //! Two named stages, composed once in [`Pipeline`]:
 //! - [`Reconstruction`]: assembly → fusion → tracked gate → filter, each camera's learnt image

@@ -6,8 +6,9 @@
 //!    `P` (rows `k1 k2 k3`) and pixel `(u, v)` adds the rows `u·k3 − k1` and `v·k3 − k2` to `A`, scaled by
 //!    the view's weight; the homogeneous point is the right singular vector of `A` for its smallest
 //!    singular value. `A` (2n×4) is reduced to a 4×4 triangular factor by Givens rotations as rows arrive
-//!    (QR, backward stable, no allocation) and the SVD is taken of that factor, which has the same
-//!    singular values and right singular vectors as `A`. With `P = K[R|t]`, raw pixels and unit weights
+//!    (QR, backward stable, no allocation), which has the same singular values and right singular
+//!    vectors as `A`; the vector is found by inverse iteration on that factor, with the Jacobi SVD
+//!    when that is not reliable ([`smallest_right_singular_vector_of_triangular`]). With `P = K[R|t]`, raw pixels and unit weights
 //!    this is exactly caliscope's triangulation.
 //! 2. [`RobustTriangulator`]: ergocell's default. A weighted linear estimate in undistorted normalized
 //!    coordinates, refined by Gauss–Newton on the **pixel reprojection error** with Huber weights, then

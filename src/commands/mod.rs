@@ -1,4 +1,5 @@
-//! One module per subcommand. Each exposes `Args` (clap) and `run(&Args) -> anyhow::Result<()>`.
+//! A module per subcommand (`run.rs` also holds `replay`, `review.rs` also `report`). Each exposes
+//! its `Args` (clap) and a function taking them, returning `anyhow::Result<()>`.
 //! Shared by them: `output` (output files: `--force`, never an input) and `signals` (SIGINT and
 //! SIGTERM).
 

@@ -12,7 +12,7 @@
 //! [`Pipeline`](crate::pipeline::Pipeline): every frame is fused, filtered, assessed and measured
 //! there, nowhere else. Backends implement two traits — [`LandmarkSource`] (camera landmarks in) and
 //! [`RobotSink`] (commands out, joint positions in) — with this crate's own types: no ROS message
-//! crosses into the core (the binary converts at its boundary). Trajectories come only through a
+//! crosses into the core (the ROS 2 backend, `ergocell_ros_backend::messages`, converts at its boundary). Trajectories come only through a
 //! [`TrajectoryProvider`], which verifies the lock and its approval on every call.
 //!
 //! The robot is **held** (goal cancelled: on ROS an empty `JointTrajectory`) when fewer than one
@@ -93,8 +93,8 @@ pub struct LegPoint {
     pub time_from_start_s: f64,
 }
 
-/// A leg of the locked trajectory, as the robot must run it (the binary turns it into the
-/// controller's message).
+/// A leg of the locked trajectory, as the robot must run it (`ergocell_ros_backend::messages` turns it
+/// into the controller's message).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct LegTrajectory {
     pub joint_names: Vec<String>,
