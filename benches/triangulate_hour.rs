@@ -10,8 +10,8 @@
 //! run by it too, before this build, for a before → after comparison in one run). The data is
 //! generated once into `target/tmp/triangulate_hour/` (the hour is ≈ 1 GB) and reused; the
 //! synthetic cell is `perception/benches/rig.rs`'s 6-camera ring (moving body, 2 px noise, 5 %
-//! missing, 2 % gross errors, seed 1). Not run by CI (minutes and a gigabyte); figures go into the
-//! README and the closing notes.
+//! missing, 2 % gross errors, seed 1). Not run by CI (minutes and a gigabyte); figures are in
+//! `docs/measurements.md`.
 
 #![allow(
     clippy::unwrap_used,

@@ -16,7 +16,7 @@ fn reference_rig() -> CameraRig {
 }
 
 /// The seeds reported: 6..=11 by default (a debug build runs a twin session in about 2 s), or
-/// `ERGOCELL_BUMP_SEEDS=A..B`; the README's figures are `ERGOCELL_BUMP_SEEDS=6..25 cargo test --release
+/// `ERGOCELL_BUMP_SEEDS=A..B`; `docs/measurements.md`'s figures are `ERGOCELL_BUMP_SEEDS=6..25 cargo test --release
 /// --test bumped_camera`. Seeds 1..=5 were used for tuning and are never reported.
 fn reported_seeds() -> std::ops::RangeInclusive<u64> {
     let Ok(text) = std::env::var("ERGOCELL_BUMP_SEEDS") else {

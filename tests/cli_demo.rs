@@ -267,11 +267,11 @@ fn demo_finds_a_bumped_camera_and_asks_for_its_recalibration() {
     assert!(String::from_utf8_lossy(&bad.stderr).contains("no such camera"));
 }
 
-/// Issue #18's soak, short (this is a debug build): `--soak-report` prints resident memory and step
+/// The soak, short (this is a debug build): `--soak-report` prints resident memory and step
 /// times; over 12 handover cycles at 4 Hz (≈ 4 min of simulated shift; at 2 Hz a frame is as old as the
 /// session's 0.5 s frame-age bound, and a hold that catches the robot mid-leg rightly never resumes) memory stays within 8 MiB
-/// of its first report, and a line is printed per simulated minute. (The 8.5-hour figures are in the
-/// README: `--cycles 1756 --soak-report 60`.)
+/// of its first report, and a line is printed per simulated minute. (The 8.5-hour figures are in
+/// `docs/measurements.md`: `--cycles 1756 --soak-report 60`.)
 #[test]
 fn demo_soak_report_shows_memory_flat_over_a_long_session() {
     let dir = Scratch::new("demo-soak");

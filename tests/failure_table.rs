@@ -1,4 +1,4 @@
-//! The README's table "What ergocell does on each failure", row by row, as deterministic tests of the
+//! The failure table of `docs/safety.md` ("What the cell does on each fault"), row by row, as deterministic tests of the
 //! cell loop with the ROS 2 backend's robot side on a fake transport and an injected clock — no DDS.
 //!
 //! Each test runs a twin session (a 1.75 m operator, class c2) through `ergocell_cell`'s `CellLoop`

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the offline-review figures in docs/review/ (issue 8): a demo session, its review page
+# Regenerates the offline-review figures in docs/review/: a demo session, its review page
 # in headless Chromium (screenshot), its self-contained report, and a before/after-adaptation
 # comparison from the digital twin. Needs chromium and `npm ci --prefix web`.
 set -euo pipefail

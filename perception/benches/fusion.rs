@@ -2,8 +2,8 @@
 //!
 //! Rigs (`rig.rs`): 6, 8 and 16 cameras (3, 4 and 8 stereo pairs), cameras in a ring 3 m around the
 //! operator, 1280×720, mild distortion; detections with ~2 px deterministic noise.
-//! Run: `cargo bench -p ergocell_perception --bench fusion`. Figures are reported in the closing notes
-//! of the work that changed them and in the README (machine: the project's 2-core CI machine).
+//! Run: `cargo bench -p ergocell_perception --bench fusion`. Figures are in `docs/measurements.md`
+//! (machine: the project's 2-core CI machine).
 
 #![allow(clippy::unwrap_used)]
 

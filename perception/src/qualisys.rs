@@ -17,7 +17,7 @@
 //!
 //! The lab frame is QTM's: z up (the rig's `up`), metres. Checked on Pose2Sim's demo
 //! (`../shared/data/pose2sim-demo-videos`): MediaPipe's landmarks of its four real videos triangulate
-//! through this rig with a sub-pixel-to-few-pixel median reprojection error (README).
+//! through this rig with a sub-pixel-to-few-pixel median reprojection error (`docs/measurements.md`).
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 

@@ -116,7 +116,7 @@ fn a_bystander_seen_by_one_stereo_pair_is_not_fused_and_does_not_flip_the_class(
         (1u64 << p.left) | (1u64 << p.right)
     };
     // ERGOCELL_BYSTANDER_ALL=1 also prints the gate off and two pairs of three on the bystander
-    // (what the README reports; two pairs is not asserted: see there)
+    // (what `docs/measurements.md` reports; two pairs is not asserted: see there)
     let all = std::env::var_os("ERGOCELL_BYSTANDER_ALL").is_some();
     let mut cases = vec![
         ("one camera", 1u64 << rig.pairs()[0].left, true),
