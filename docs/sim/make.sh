@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates docs/sim/ (issues 5 and 14): the four experiments of the digital twin at seed 1 with every
+# Regenerates docs/sim/: the four experiments of the digital twin at seed 1 with every
 # default, their JSON and SVG figures, and each experiment over the reporting seeds 101..120
 # (<experiment>_seeds.json and figures: mean, s.d., worst seed, each goal seed by seed). Parameters were
 # tuned on seeds 1..20 (in practice 1–4); 101..120 were never used for tuning. The same seed gives
