@@ -102,45 +102,19 @@ impl Display {
         if events.is_empty() {
             return;
         }
+        self.push(machine, events);
+    }
+
+    /// A new session's machine took over (`run` serves one operator after another): the page shows
+    /// its state at once, not the last session's end until the next operator is tracked.
+    pub fn next_session(&self, machine: &SessionMachine) {
+        self.push(machine, &[]);
+    }
+
+    fn push(&self, machine: &SessionMachine, events: &[SessionEvent]) {
         let mut guard = self.snapshot.lock().unwrap_or_else(PoisonError::into_inner);
         let (snap, active) = &mut *guard;
-        for e in events {
-            match e {
-                SessionEvent::Warning(w) => {
-                    let key = (
-                        w.region.name().to_owned(),
-                        w.side.map(|s| s.name().to_owned()),
-                    );
-                    match w.kind {
-                        WarningKind::Cleared => {
-                            active.remove(&key);
-                        }
-                        WarningKind::Raised | WarningKind::Changed => {
-                            if w.kind == WarningKind::Raised {
-                                snap.latest_raised = Some((snap.seq + 1, w.message.clone()));
-                            }
-                            active.insert(key, shown(w));
-                        }
-                    }
-                }
-                SessionEvent::Frame {
-                    skeleton,
-                    assessment,
-                    ..
-                } => {
-                    snap.skeleton = skeleton
-                        .slots()
-                        .iter()
-                        .map(|s| s.map(|e| [e.position_m.x, e.position_m.y, e.position_m.z]))
-                        .collect();
-                    if let Some(h) = assessment.as_ref().and_then(|a| a.headline()) {
-                        snap.action_level = Some(h.scores.action_level);
-                        snap.grand_score = Some(h.scores.final_score);
-                    }
-                }
-                _ => {}
-            }
-        }
+        fold_events(snap, active, events);
         machine.state().name().clone_into(&mut snap.state);
         snap.held_reason = (machine.state() == SessionState::Held)
             .then(|| machine.hold_reason().map(str::to_owned))
@@ -165,6 +139,58 @@ impl Display {
         let mut snap = guard.0.clone();
         snap.sent_unix_ms = unix_ms();
         serde_json::to_string(&snap).unwrap_or_else(|_| "{}".to_owned())
+    }
+}
+
+/// Folds a step's events into the picture. A session's end clears what was the operator's: their
+/// active warnings and posture (a machine's warnings are not cleared when it ends, and the next
+/// session's operator must not see them).
+fn fold_events(snap: &mut Snapshot, active: &mut ActiveWarnings, events: &[SessionEvent]) {
+    for e in events {
+        match e {
+            SessionEvent::Warning(w) => {
+                let key = (
+                    w.region.name().to_owned(),
+                    w.side.map(|s| s.name().to_owned()),
+                );
+                match w.kind {
+                    WarningKind::Cleared => {
+                        active.remove(&key);
+                    }
+                    WarningKind::Raised | WarningKind::Changed => {
+                        if w.kind == WarningKind::Raised {
+                            snap.latest_raised = Some((snap.seq + 1, w.message.clone()));
+                        }
+                        active.insert(key, shown(w));
+                    }
+                }
+            }
+            SessionEvent::Frame {
+                skeleton,
+                assessment,
+                ..
+            } => {
+                snap.skeleton = skeleton
+                    .slots()
+                    .iter()
+                    .map(|s| s.map(|e| [e.position_m.x, e.position_m.y, e.position_m.z]))
+                    .collect();
+                if let Some(h) = assessment.as_ref().and_then(|a| a.headline()) {
+                    snap.action_level = Some(h.scores.action_level);
+                    snap.grand_score = Some(h.scores.final_score);
+                }
+            }
+            SessionEvent::StateChanged {
+                to: SessionState::SessionEnded,
+                ..
+            } => {
+                active.clear();
+                snap.action_level = None;
+                snap.grand_score = None;
+                snap.skeleton.clear();
+            }
+            _ => {}
+        }
     }
 }
 
@@ -273,4 +299,58 @@ pub async fn serve(
     };
     crate::review_server::serve(listener, router(display, rules), limits, stop).await;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ergocell_ergonomics::assess::BodyRegion;
+    use ergocell_ergonomics::Side;
+
+    fn warning(kind: WarningKind) -> SessionEvent {
+        SessionEvent::Warning(WarningEvent {
+            stamp_nanos: 0,
+            kind,
+            region: BodyRegion::Trunk,
+            side: None::<Side>,
+            region_score: 4,
+            angle_deg: Some(70.0),
+            action_level: 3,
+            uncertain: false,
+            message: "Trunk bent forward 70°".to_owned(),
+        })
+    }
+
+    fn ended(to: SessionState) -> SessionEvent {
+        SessionEvent::StateChanged {
+            stamp_nanos: 1,
+            from: SessionState::Working,
+            to,
+            reason: "operator left".to_owned(),
+        }
+    }
+
+    #[test]
+    fn a_session_end_clears_its_operators_warnings_and_posture() {
+        let mut snap = Snapshot {
+            action_level: Some(3),
+            grand_score: Some(6),
+            skeleton: vec![Some([0.0, 0.0, 1.0])],
+            ..Snapshot::default()
+        };
+        let mut active = ActiveWarnings::new();
+        fold_events(&mut snap, &mut active, &[warning(WarningKind::Raised)]);
+        assert_eq!(active.len(), 1);
+        // held, not ended: the warning stays on screen
+        fold_events(&mut snap, &mut active, &[ended(SessionState::Held)]);
+        assert_eq!(active.len(), 1);
+        assert_eq!(snap.action_level, Some(3));
+        fold_events(&mut snap, &mut active, &[ended(SessionState::SessionEnded)]);
+        assert!(
+            active.is_empty(),
+            "the last operator's warning outlived the session"
+        );
+        assert_eq!((snap.action_level, snap.grand_score), (None, None));
+        assert!(snap.skeleton.is_empty());
+    }
 }

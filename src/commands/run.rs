@@ -534,6 +534,9 @@ async fn drive(
         if ending.cause == EndCause::Session && cell.machine().summary().ended && more {
             print_summary(cell.machine(), inbox.rejected());
             cell.next_session(setup.new_machine()?);
+            if let Some(d) = &cell.outputs().display {
+                d.next_session(cell.machine());
+            }
             println!("next session: waiting for an operator");
             continue;
         }
