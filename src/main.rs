@@ -106,6 +106,10 @@ fn main() -> std::process::ExitCode {
         .with_env_filter(filter)
         .with_writer(std::io::stderr)
         .with_ansi(std::io::IsTerminal::is_terminal(&std::io::stderr()))
+        // A closed stderr (`ergocell run 2>&1 | head`) drops the event: tracing-subscriber would
+        // report the failed write with std's `eprintln!`, which panics on the same closed stream
+        // and took `run` down mid-session (exit 101) instead of holding the robot on Ctrl-C.
+        .log_internal_errors(false)
         .init();
     let result = match cli.command {
         Command::Demo(args) => commands::demo::run(&args),

@@ -33,6 +33,16 @@ fail=0
 [ "$lines" -lt 40 ] || { echo "console too long: $lines lines" >&2; fail=1; }
 [ "$bytes" -lt 8192 ] || { echo "console too long: $bytes bytes" >&2; fail=1; }
 grep -q "session: session_ended" "$tmp/console.txt" || { echo "run did not end its session" >&2; fail=1; }
+# A console that goes away (`ergocell run 2>&1 | head -3`): the cell goes on and Ctrl-C still holds
+# the robot and exits 130, no panic on the closed pipe (exit 101).
+piped=$(unshare -n -- bash -c '
+  ip link set lo up
+  cd "$2"
+  timeout --preserve-status -s INT 5 "$1" run --config "$3/config/cell.toml" 2>&1 | head -3 >/dev/null
+  echo "${PIPESTATUS[0]}"
+' _ "$bin" "$tmp" "$PWD")
+echo "ergocell run 2>&1 | head -3: exit $piped"
+[ "$piped" = 130 ] || { echo "run with its console closed exited $piped, not 130 (Ctrl-C)" >&2; fail=1; }
 if [ "$fail" != 0 ]; then
   cat "$tmp/console.txt" >&2
   exit 1
