@@ -3,11 +3,11 @@
 //! samples per interval; TCP speed, separation and singularity margin at 4 samples per interval).
 //!
 //! Run: `cargo bench -p ergocell_robot --bench plan`.
-//! Figures (2026-11-23, AMD EPYC, 2 vCPUs shared with two other builds (load ~2.3), rustc 1.95, release,
+//! Figures (AMD EPYC, 2 vCPUs shared with two other builds (load ~2.3), rustc 1.95, release,
 //! one thread; criterion median of 20 samples):
 //!   c1 17.4 ms, c2 15.3 ms, c3 16.9 ms per plan + validate; of which the clarabel solve ~12.5 ms
 //!   (8 interior-point iterations, 2100 variables, 1435 equality + 4200 inequality rows).
-//! Target from issue 4: ≤ 20 ms per class on one core. With the variables ordered joint-major instead of
+//! Target: ≤ 20 ms per class on one core. With the variables ordered joint-major instead of
 //! knot-major the same QP took ~17 ms and plan + validate ~23 ms.
 
 // Test and bench helpers panic on purpose: a panic is the failure report.

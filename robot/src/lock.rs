@@ -982,7 +982,7 @@ pub fn verify(inputs: &VerifyInputs<'_>) -> Result<ApprovedTrajectory, VerifyFai
     };
     let Some(text) = inputs.approvals_toml else {
         return Err(not_approved(format!(
-            "no approvals file trajectories/approvals/{class}.toml; a safety engineer runs \
+            "no approvals file approvals/{class}.toml in the trajectories folder; a safety engineer runs \
              `ergocell trajectories approve --class {class} --by <principal> --key <ssh key>` after reviewing the lock"
         )));
     };

@@ -84,8 +84,10 @@ pub struct TrackArgs {
     /// units in the column names), for a spreadsheet.
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
-    /// Also write the session summary as CSV (`quantity,side,region,score,value,unit`: time shares
-    /// per action level, region score and grand score, warnings raised per region).
+    /// Also write the session summary as CSV (`quantity,side,region,score,value,unit,phase`: time
+    /// shares per RULA and REBA action level, region score and grand score, exposure over time,
+    /// static holds, warnings raised per region, per task phase where `phase` is set;
+    /// docs/ergonomist.md names every quantity).
     #[arg(long, value_name = "FILE")]
     pub summary_csv: Option<PathBuf>,
     /// Overwrite an existing --csv / --summary-csv file.
