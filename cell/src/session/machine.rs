@@ -363,7 +363,8 @@ impl SessionMachine {
                         (now_nanos - since) / 1_000_000
                     )
                 };
-                tracing::warn!(camera = %c.name, %why, "camera degraded");
+                // an event: `run` and `demo` print it, the recording keeps it
+                tracing::debug!(camera = %c.name, %why, "camera degraded");
                 events.push(SessionEvent::CameraDegraded {
                     stamp_nanos: now_nanos,
                     camera: c.name.clone(),
@@ -371,7 +372,7 @@ impl SessionMachine {
                 });
             } else if !stale && c.degraded {
                 c.degraded = false;
-                tracing::info!(camera = %c.name, "camera restored");
+                tracing::debug!(camera = %c.name, "camera restored");
                 events.push(SessionEvent::CameraRestored {
                     stamp_nanos: now_nanos,
                     camera: c.name.clone(),
