@@ -224,6 +224,16 @@ impl RosConfig {
         if cfg.cameras.is_empty() {
             return Err(BridgeError::Config("[ros] cameras is empty".to_owned()));
         }
+        if !cfg.camera_topic.contains("{id}") {
+            // Every camera would publish on, and the cell subscribe to, one topic: the views of
+            // different cameras would be told apart only by the message's camera_id, and one
+            // camera's message rate would count for all (the edge node refuses it too).
+            return Err(BridgeError::Config(format!(
+                "[ros] camera_topic = {:?}: must contain {{id}} (each camera's own topic, e.g. \
+                 \"/ergocell/camera/{{id}}/landmarks\")",
+                cfg.camera_topic
+            )));
+        }
         if cfg.domain_id > MAX_DOMAIN_ID {
             return Err(BridgeError::Config(format!(
                 "[ros] domain_id = {}: ROS 2 allows 0..={MAX_DOMAIN_ID} (above, the DDS ports run past \
@@ -599,6 +609,15 @@ mod tests {
         assert!(RosConfig::from_cell_toml("[ros]\ncameras = [\"a\"]\ntypo = 1\n").is_err());
         assert!(RosConfig::from_cell_toml("[robot]\n").is_err());
         assert!(RosConfig::from_cell_toml("[ros]\ncameras = []\n").is_err());
+        let one_topic = RosConfig::from_cell_toml(
+            "[ros]\ncameras = [\"a\", \"b\"]\ncamera_topic = \"/cams/landmarks\"\n",
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            one_topic.contains("camera_topic") && one_topic.contains("{id}"),
+            "{one_topic}"
+        );
         let domain = |id: u32| {
             RosConfig::from_cell_toml(&format!("[ros]\ncameras = [\"a\"]\ndomain_id = {id}\n"))
         };
