@@ -334,6 +334,22 @@ mod tests {
         let sig = sign_approvers(&allowed, "", &key).unwrap();
         let trusted = anchored_signers(&allowed, "", Some(&sig), Ok(&authority)).unwrap();
         assert!(trusted.is_revoked(alice.public_key()));
+        assert_eq!((trusted.keys().len(), trusted.usable_keys()), (1, 0));
+        // Her signature is refused naming the list that revokes her: the site's, not the project's.
+        let claim = crate::signing::ApprovalClaim {
+            action: crate::signing::Action::Approve,
+            class: "c2",
+            lock_sha256: &"0".repeat(64),
+            approved_by: "alice@plant.example",
+            approved_at_utc: "2026-01-02T00:00:00Z",
+            previous_sha256: "",
+        };
+        let refused = trusted.sign(&claim, &alice).unwrap_err().to_string();
+        assert!(
+            refused.contains(crate::signing::SITE_REVOKED_KEYS)
+                && !refused.contains(crate::signing::REVOKED_KEYS),
+            "{refused}"
+        );
     }
 
     #[test]

@@ -56,8 +56,12 @@ pub enum ApprovalError {
     #[error("the signature was made for namespace `{namespace}`, not `{APPROVAL_NAMESPACE}`")]
     WrongNamespace { namespace: String },
     /// The signing key is on the revocation list.
-    #[error("key {fingerprint} is revoked ({REVOKED_KEYS})")]
-    Revoked { fingerprint: String },
+    #[error("key {fingerprint} is revoked ({list})")]
+    Revoked {
+        fingerprint: String,
+        /// The list that revokes it: the project's [`REVOKED_KEYS`] or the site authority's.
+        list: &'static str,
+    },
     /// The signing key is not in the allowed-signers file.
     #[error("key {fingerprint} is not a trusted approver's key (not in {ALLOWED_SIGNERS})")]
     Untrusted { fingerprint: String },
@@ -293,7 +297,12 @@ pub struct TrustedKey {
 pub struct TrustedSigners {
     keys: Vec<TrustedKey>,
     revoked: Vec<PublicKey>,
+    /// Revoked by the site authority's own list (in the trust anchor), not the project's.
+    revoked_by_site: Vec<PublicKey>,
 }
+
+/// How a key revoked by the site authority's list (the trust anchor's `revoked_keys`) is named.
+pub const SITE_REVOKED_KEYS: &str = "the site authority's revoked_keys in the trust anchor";
 
 /// `SHA256:…` fingerprint, as `ssh-keygen -l` prints it.
 pub fn fingerprint(key: &PublicKey) -> String {
@@ -327,22 +336,46 @@ impl TrustedSigners {
             })?;
             revoked.push(key);
         }
-        Ok(Self { keys, revoked })
+        Ok(Self {
+            keys,
+            revoked,
+            revoked_by_site: Vec::new(),
+        })
     }
 
-    /// The trusted keys.
+    /// The listed keys (revoked ones included: see [`Self::usable_keys`]).
     pub fn keys(&self) -> &[TrustedKey] {
         &self.keys
     }
 
-    /// Adds revocations from elsewhere (the site authority's own list) to the project's.
-    pub fn revoke_also(&mut self, keys: &[PublicKey]) {
-        self.revoked.extend(keys.iter().cloned());
+    /// How many listed keys can sign an approval (listed and on no revocation list).
+    pub fn usable_keys(&self) -> usize {
+        self.keys
+            .iter()
+            .filter(|k| !self.is_revoked(&k.key))
+            .count()
     }
 
-    /// Whether `key` is on the revocation list.
+    /// Adds the site authority's own revocations to the project's.
+    pub fn revoke_also(&mut self, keys: &[PublicKey]) {
+        self.revoked_by_site.extend(keys.iter().cloned());
+    }
+
+    /// Whether `key` is on a revocation list.
     pub fn is_revoked(&self, key: &PublicKey) -> bool {
-        self.revoked.iter().any(|r| r.key_data() == key.key_data())
+        self.revoked_by(key).is_some()
+    }
+
+    /// The list that revokes `key`, if one does.
+    fn revoked_by(&self, key: &PublicKey) -> Option<&'static str> {
+        let on = |list: &[PublicKey]| list.iter().any(|r| r.key_data() == key.key_data());
+        if on(&self.revoked) {
+            Some(REVOKED_KEYS)
+        } else if on(&self.revoked_by_site) {
+            Some(SITE_REVOKED_KEYS)
+        } else {
+            None
+        }
     }
 
     /// Signs `claim` with `key`, after checking that the key is trusted for the claim's principal and
@@ -387,8 +420,8 @@ impl TrustedSigners {
     fn check_signer(&self, principal: &str, key: &PublicKey) -> Result<(), ApprovalError> {
         approver_ok(principal)?;
         let fingerprint = fingerprint(key);
-        if self.is_revoked(key) {
-            return Err(ApprovalError::Revoked { fingerprint });
+        if let Some(list) = self.revoked_by(key) {
+            return Err(ApprovalError::Revoked { fingerprint, list });
         }
         let listed = self
             .keys

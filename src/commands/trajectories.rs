@@ -792,30 +792,35 @@ fn sign_approvers(ctx: &Context, key: Option<&Path>, signed: Option<&Path>) -> a
         }
     };
     let anchor = trust_anchor::anchor_dir();
-    let checked = match trust_anchor::load_authority(&anchor) {
+    let (checked, usable) = match trust_anchor::load_authority(&anchor) {
         Ok(authority) => {
-            authority
+            let trusted = authority
                 .verify(allowed, revoked, &signature)
                 .map_err(|e| anyhow::anyhow!("{e}\nrefusing to write the signature"))?;
-            format!(
-                "checked against the site's approvers authority in {} ({})",
-                anchor.display(),
-                authority.fingerprints()
+            (
+                format!(
+                    "checked against the site's approvers authority in {} ({})",
+                    anchor.display(),
+                    authority.fingerprints()
+                ),
+                trusted.usable_keys(),
             )
         }
-        Err(trust_anchor::AnchorError::Missing(path)) => format!(
-            "NOT checked: no approvers authority is installed here ({} does not exist); the cell \
-             trusts these approvers only if its authority holds the signing key",
-            path.display()
+        Err(trust_anchor::AnchorError::Missing(path)) => (
+            format!(
+                "NOT checked: no approvers authority is installed here ({} does not exist); the \
+                 cell trusts these approvers only if its authority holds the signing key",
+                path.display()
+            ),
+            TrustedSigners::parse(allowed, revoked)?.usable_keys(),
         ),
         Err(e) => bail!("{e}\nrefusing to write the signature"),
     };
     let path = ctx.cell_dir.join(authority::APPROVERS_SIGNATURE);
     write(&path, &signature)?;
     println!(
-        "approvers signed: {} ({} key(s) trusted, {})",
+        "approvers signed: {} ({usable} key(s) trusted, revoked ones not counted; {})",
         path.display(),
-        TrustedSigners::parse(allowed, revoked)?.keys().len(),
         checked
     );
     Ok(())
