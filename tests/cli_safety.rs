@@ -389,7 +389,7 @@ fn sigterm_holds_the_robot_closes_the_recording_and_exits_143() {
     let (code, stdout, stderr, bytes) = demo_stopped_by("-TERM", "sigterm");
     assert_eq!(code, Some(143), "{stdout}\n{stderr}");
     for expected in [
-        "robot ← HOLD (goal cancelled, not an e-stop): session interrupted: SIGTERM",
+        "robot ← HOLD (stopped where it is; not an e-stop): session interrupted: SIGTERM",
         "ended:          interrupted: SIGTERM (robot held)",
     ] {
         assert!(

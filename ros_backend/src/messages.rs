@@ -735,7 +735,7 @@ pub fn describe(e: &SessionEvent) -> String {
                     .map_or(0.0, |p| p.time_from_start_s)
             ),
             RobotCommand::Hold { reason } => {
-                format!("robot ← HOLD (goal cancelled, not an e-stop): {reason}")
+                format!("robot ← HOLD (stopped where it is; not an e-stop): {reason}")
             }
         },
         E::Warning(w) => format!("RULA warning: {}", w.message),

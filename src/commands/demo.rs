@@ -537,9 +537,19 @@ fn demo_provider(
     .with_demo_key(&seed)
     // The cell's or the trajectories' files could not be read or used: bad input.
     .map_err(|e| UsageError(format!("demo approvals: {e}")))?;
-    println!("ergocell demo — a simulated session on the reference cell (no ROS needed)");
+    // Whose files: the reference cell's (embedded) unless the user named their own.
+    let cell_name = match (&args.cell, &args.rig) {
+        (None, None) => "the reference cell".to_owned(),
+        (Some(cell), _) => format!("the cell of {}", cell.display()),
+        (None, Some(rig)) => format!("the reference cell with the rig {}", rig.display()),
+    };
+    let (trajectories, lock_kind) = match &args.trajectories {
+        None => ("the shipped trajectories".to_owned(), "shipped"),
+        Some(dir) => (format!("the trajectories in {}", dir.display()), "on-disk"),
+    };
+    println!("ergocell demo — a simulated session on {cell_name} (no ROS needed)");
     println!(
-        "  DEMO APPROVAL: the shipped trajectories are re-locked and approved for this run only, in {},",
+        "  DEMO APPROVAL: {trajectories} are re-locked and approved for this run only, in {},",
         approvals_dir.display()
     );
     println!(
@@ -548,7 +558,7 @@ fn demo_provider(
         ergocell::session::provider::DEMO_PRINCIPAL
     );
     for (class, demo_sha, reviewed_sha) in provider.demo_locks() {
-        println!("  {class}: demo lock {demo_sha} = the shipped lock {reviewed_sha}, same samples, re-locked under the demo key");
+        println!("  {class}: demo lock {demo_sha} = the {lock_kind} lock {reviewed_sha}, same samples, re-locked under the demo key");
     }
     println!("  (a simulator-only sign-off; a real cell trusts its engineers' keys in config/approvers/ and needs `ergocell trajectories approve`)");
     let stamp = ergocell_robot::signing::rfc3339_utc(start.div_euclid(1_000_000_000))
