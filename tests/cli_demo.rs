@@ -306,6 +306,31 @@ fn demo_soak_report_shows_memory_flat_over_a_long_session() {
 }
 
 /// `ergocell --log error demo <args>` run in `dir`.
+/// A bumped camera with the faults on (every camera silent for 1.2 s later): once it is left out of
+/// fusion its stereo partner, alone on its side, sits further from the fused skeleton — that is not
+/// a second bumped camera (seed 42 flagged s3_left too), and views arriving again after the silence
+/// do not "restore" a camera that stays out of fusion.
+#[test]
+fn a_bumped_cameras_partner_is_not_flagged_and_the_bumped_camera_is_not_restored() {
+    let dir = Scratch::new("demo-bump-faults");
+    let run = demo_in(&dir.0, &["--cycles", "1", "--bump-camera", "s3_right"]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(run.status.success(), "{stdout}");
+    assert!(
+        stdout.contains("camera s3_right degraded: no view for more than"),
+        "the silent fault did not happen: {stdout}"
+    );
+    assert!(
+        stdout.contains("recalibrate:    s3_right (out of calibration"),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("camera s3_right restored"), "{stdout}");
+    assert!(
+        !stdout.contains("s3_left degraded: out of calibration"),
+        "{stdout}"
+    );
+}
+
 fn demo_in(dir: &Path, args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(dir)

@@ -10,6 +10,8 @@
 //! absolute floor and has risen well above both its own baseline and the other cameras' window
 //! medians (a camera that is simply noisier than the others keeps its own, higher baseline), or lies
 //! far above the others' alone; with enough frames in its window, one camera per frame (the worst),
+//! the baselines starting again after each flag (the fusion without the flagged camera is another
+//! reference),
 //! and only while at least three cameras would remain (two cannot outvote each other). A flagged camera stays flagged (it needs
 //! recalibration, which is not something a session can do); the caller leaves it out of fusion.
 //!
@@ -238,6 +240,13 @@ impl CameraResidualMonitor {
             && (risen || worst_px > c.ratio_without_baseline * others_px);
         if off {
             self.flagged[worst] = true;
+            // The caller now fuses without it: every other camera's residual is measured against
+            // another skeleton (its stereo partner, now alone on its side, sits further from it),
+            // so the baselines start again; until they are set, only the others' route flags.
+            for (baseline, first) in self.baselines.iter_mut().zip(self.first.iter_mut()) {
+                *baseline = None;
+                first.clear();
+            }
             return Some(OutOfCalibration {
                 camera: worst,
                 residual_px: worst_px,
@@ -339,5 +348,31 @@ mod tests {
         // 10 s later: the old frames are gone, one new frame is not enough.
         m.observe(10_000_000_000, &[Some(1.0); 4]);
         assert_eq!(m.window_median(0), None);
+    }
+
+    #[test]
+    fn after_a_flag_the_partner_left_alone_on_its_side_is_not_flagged_for_its_new_residual() {
+        let mut m = CameraResidualMonitor::new(6, ResidualMonitorConfig::default());
+        let mut t = 0;
+        let mut run = |m: &mut CameraResidualMonitor, frames: i64, px: [f64; 6]| {
+            let mut found = Vec::new();
+            for _ in 0..frames {
+                t += 100_000_000;
+                if let Some(o) = m.observe(t, &px.map(Some)) {
+                    // the caller fuses without it from the next frame on
+                    found.push(o);
+                    break;
+                }
+            }
+            found.into_iter().map(|o| o.camera).collect::<Vec<_>>()
+        };
+        assert!(run(&mut m, 40, [3.0; 6]).is_empty());
+        assert_eq!(run(&mut m, 30, [20.0, 3.0, 3.0, 3.0, 3.0, 3.0]), vec![0]);
+        // Fused without camera 0, camera 1 (its stereo partner) sits 2.3x its old baseline: the
+        // fusion changed, not camera 1.
+        let partner = [20.0, 7.0, 3.0, 3.0, 3.0, 3.0];
+        assert!(run(&mut m, 60, partner).is_empty(), "camera 1 flagged");
+        // A camera really knocked afterwards is still found.
+        assert_eq!(run(&mut m, 30, [20.0, 7.0, 30.0, 3.0, 3.0, 3.0]), vec![2]);
     }
 }

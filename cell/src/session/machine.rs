@@ -372,11 +372,15 @@ impl SessionMachine {
                 });
             } else if !stale && c.degraded {
                 c.degraded = false;
-                tracing::debug!(camera = %c.name, "camera restored");
-                events.push(SessionEvent::CameraRestored {
-                    stamp_nanos: now_nanos,
-                    camera: c.name.clone(),
-                });
+                // Views arrive again; a camera out of calibration stays out of fusion, so it is not
+                // "restored" (its out-of-calibration event said so, and the summary names it).
+                if !self.summary.cameras_out_of_calibration.contains(&c.name) {
+                    tracing::debug!(camera = %c.name, "camera restored");
+                    events.push(SessionEvent::CameraRestored {
+                        stamp_nanos: now_nanos,
+                        camera: c.name.clone(),
+                    });
+                }
             }
         }
     }
