@@ -104,6 +104,21 @@ fn bad_camera_arguments_are_usage_errors() {
             .unwrap();
         assert!(!status.success(), "{cameras}");
     }
+    // the fixed-lag smoother is an option of rula-agreement only, and takes 1..=100 frames
+    for args in [
+        &["height", "--fixed-lag-frames", "5"][..],
+        &["rula-agreement", "--fixed-lag-frames", "0"],
+    ] {
+        let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(&root)
+            .arg("sim")
+            .args(args)
+            .arg("--out-dir")
+            .arg(&out)
+            .status()
+            .unwrap();
+        assert_eq!(status.code(), Some(2), "{args:?}");
+    }
 }
 
 /// `--seeds A..B`: every experiment runs once per seed and reports each quantity's spread and each

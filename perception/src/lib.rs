@@ -14,7 +14,8 @@
 //!   [`body_prior`]: the learned-bone-length prior the default fusion adds.
 //! - [`operator_gate`]: which views show the operator and which someone else (a single-person
 //!   detector per camera, two people in the cell).
-//! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter.
+//! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter;
+//!   [`fixed_lag`]: a centred moving mean (no lag, at the price of latency).
 //! - [`metrics`], [`landmarks_file`]: bone-length consistency and the 3D output formats;
 //!   [`detector_error`]: the real detector's error, each view judged by the others.
 //!
@@ -26,6 +27,7 @@ pub mod camera_health;
 pub mod detections;
 pub mod detector_error;
 pub mod error;
+pub mod fixed_lag;
 pub mod fusion;
 pub mod import;
 pub mod landmarks_file;

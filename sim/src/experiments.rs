@@ -1096,6 +1096,10 @@ pub struct Agreement {
 /// Result of [`rula_agreement`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RulaAgreement {
+    /// The pipeline's scores came from a fixed-lag smoother of this many frames either side
+    /// ([`rula_agreement_with`]); absent: the controller's own pipeline.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fixed_lag_frames: Option<usize>,
     pub grand_score: Agreement,
     pub action_level: Agreement,
     /// Exact agreement of each region's score (upper_arm, lower_arm, wrist, neck, trunk, legs): where
@@ -1166,6 +1170,22 @@ pub fn rula_agreement(
     cycles: usize,
     progress: Progress<'_>,
 ) -> Result<RulaAgreement, SimError> {
+    rula_agreement_with(setup, handovers, statures_m, cycles, None, progress)
+}
+
+/// [`rula_agreement`] with the pipeline's scores taken, when `fixed_lag_frames` is given, from the
+/// fused skeleton without the One-Euro filter, smoothed by a window centred on each frame
+/// ([`ergocell_perception::fixed_lag::centered_mean`], that many frames either side) and assessed
+/// (and warned about) by the controller's assessor and warning tracker: what a fixed-lag smoother
+/// would give, at the price of that latency.
+pub fn rula_agreement_with(
+    setup: &Setup,
+    handovers: &Handovers,
+    statures_m: &[f64],
+    cycles: usize,
+    fixed_lag_frames: Option<usize>,
+    progress: Progress<'_>,
+) -> Result<RulaAgreement, SimError> {
     let mut grand = vec![vec![0usize; 7]; 7];
     let mut level = vec![vec![0usize; 4]; 4];
     let mut frames = 0;
@@ -1185,15 +1205,47 @@ pub fn rula_agreement(
         if let (Some(first), Some(last)) = (ticks.first(), ticks.last()) {
             minutes += (last.frame.stamp_nanos - first.frame.stamp_nanos) as f64 / 60e9;
         }
-        run_pipeline(setup, &ticks, |k, tracked| {
-            raised += tracked
-                .warnings
-                .iter()
-                .filter(|w| w.kind == WarningKind::Raised)
-                .count();
-            let e = pipeline_headline(tracked)?;
+        // (tick index, the pipeline's headline) of every tracked frame
+        let mut scores: Vec<(usize, Option<Scored>)> = Vec::new();
+        match fixed_lag_frames {
+            None => {
+                run_pipeline(setup, &ticks, |k, tracked| {
+                    raised += tracked
+                        .warnings
+                        .iter()
+                        .filter(|w| w.kind == WarningKind::Raised)
+                        .count();
+                    scores.push((k, pipeline_headline(tracked)?));
+                    Ok(())
+                })?;
+            }
+            Some(half_window) => {
+                let mut config = PipelineConfig::new(up()?);
+                config.reconstruction.filter = None;
+                let mut fused = Vec::new();
+                run_pipeline_with(setup, config, &ticks, |k, tracked| {
+                    fused.push((k, tracked.skeleton.clone()));
+                    Ok(())
+                })?;
+                let skeletons: Vec<_> = fused.iter().map(|(_, s)| s.clone()).collect();
+                let smoothed =
+                    ergocell_perception::fixed_lag::centered_mean(&skeletons, half_window);
+                let mut assessor = RulaAssessor::new(AssessmentConfig::new(up()?))?;
+                let mut warnings = WarningTracker::new(WarningConfig::default());
+                for ((k, _), skeleton) in fused.iter().zip(&smoothed) {
+                    let a = assessor.assess(skeleton)?;
+                    raised += warnings
+                        .update(&a)
+                        .iter()
+                        .filter(|w| w.kind == WarningKind::Raised)
+                        .count();
+                    scores.push((*k, scored(&a)));
+                }
+            }
+        }
+        for (k, e) in scores {
             if !at_station(ticks[k].truth.phase) {
-                return Ok(());
+                continue;
             }
             if let (Some(e), Some(t)) = (e, truth[k]) {
                 let (ge, gt) = (
@@ -1222,8 +1274,7 @@ pub fn rula_agreement(
                 flag.1 += usize::from(e.grand == t.grand);
                 frames += 1;
             }
-            Ok(())
-        })?;
+        }
         progress(i + 1, statures_m.len());
     }
     // NaN (null in JSON) when no frame is in the group: no agreement to report.
@@ -1235,6 +1286,7 @@ pub fn rula_agreement(
         }
     };
     Ok(RulaAgreement {
+        fixed_lag_frames,
         grand_score: agreement(grand),
         action_level: agreement(level),
         region_names: BodyRegion::ALL

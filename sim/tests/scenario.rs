@@ -335,3 +335,25 @@ fn retargeting_moves_the_cycles_not_yet_begun_by_the_shift() {
         .retarget_handover(Point3::new(f64::NAN, 0.0, 1.0), 0)
         .is_err());
 }
+
+/// The fixed-lag smoother scores the same tracked frames as the controller's causal path (the filter
+/// changes where landmarks are, not which frames are tracked), says it was used, and on the default
+/// detector agrees with the truth at least as well on this operator (the centred window has no lag).
+#[test]
+fn the_fixed_lag_smoother_scores_the_same_frames_and_says_so() {
+    use ergocell_sim::experiments::{rula_agreement, rula_agreement_with};
+    let mut none = |_: usize, _: usize| {};
+    let live = rula_agreement(&setup(3), &handovers(), &[1.7], 1, &mut none).unwrap();
+    let lagged =
+        rula_agreement_with(&setup(3), &handovers(), &[1.7], 1, Some(5), &mut none).unwrap();
+    assert_eq!(live.fixed_lag_frames, None);
+    assert_eq!(lagged.fixed_lag_frames, Some(5));
+    assert_eq!(lagged.frames, live.frames);
+    assert!(lagged.frames > 50, "{}", lagged.frames);
+    assert!(
+        lagged.grand_score.exact >= live.grand_score.exact,
+        "fixed lag {} < causal {}",
+        lagged.grand_score.exact,
+        live.grand_score.exact
+    );
+}

@@ -113,6 +113,11 @@ pub struct Common {
     /// independent). A rig of cameras far apart cannot measure it.
     #[arg(long, global = true, default_value_t = 0.0)]
     pub view_correlation_deg: f64,
+    /// rula-agreement: score a moving mean of the fused skeleton centred on each frame, this many
+    /// frames either side (instead of the controller's causal One-Euro filter): what a fixed-lag
+    /// smoother gives, at a latency of that many frames.
+    #[arg(long, global = true, value_parser = clap::value_parser!(u16).range(1..=100))]
+    pub fixed_lag_frames: Option<u16>,
     /// Print the numbers as one JSON object on stdout instead of a table.
     #[arg(long, global = true)]
     pub json: bool,
@@ -200,7 +205,7 @@ fn detector_noise(c: &Common) -> anyhow::Result<DetectorNoise> {
 
 /// The simulated detector in words, for titles: `3 px` or the model file's name.
 fn detector_label(c: &Common) -> String {
-    match &c.detector {
+    let detector = match &c.detector {
         Some(path) => format!(
             "detector {}",
             path.file_name().map_or_else(
@@ -209,6 +214,10 @@ fn detector_label(c: &Common) -> String {
             )
         ),
         None => format!("{} px", c.noise_px),
+    };
+    match c.fixed_lag_frames {
+        Some(n) => format!("{detector}, a fixed-lag smoother of ±{n} frames"),
+        None => detector,
     }
 }
 
@@ -573,6 +582,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
         );
     }
+    if c.fixed_lag_frames.is_some() && !matches!(args.experiment, Experiment::RulaAgreement) {
+        return Err(
+            UsageError("--fixed-lag-frames applies to rula-agreement only".to_owned()).into(),
+        );
+    }
     if matches!(args.experiment, Experiment::HandoverRula) {
         return run_handover_rula(c);
     }
@@ -680,7 +694,8 @@ fn one_rula_agreement(
     pb: &ProgressBar,
 ) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
     let operators = statures(c.operators.unwrap_or(6));
-    let r = experiments::rula_agreement(setup, handovers, &operators, c.cycles, tick)?;
+    let lag = c.fixed_lag_frames.map(usize::from);
+    let r = experiments::rula_agreement_with(setup, handovers, &operators, c.cycles, lag, tick)?;
     // The same sessions at other pixel-noise levels: how agreement depends on the detector.
     let mut sweep = Vec::new();
     for noise_px in NOISE_SWEEP_PX {
@@ -691,7 +706,14 @@ fn one_rula_agreement(
             },
             ..setup.clone()
         };
-        let a = experiments::rula_agreement(&s, handovers, &operators, c.cycles, &mut |_, _| {})?;
+        let a = experiments::rula_agreement_with(
+            &s,
+            handovers,
+            &operators,
+            c.cycles,
+            lag,
+            &mut |_, _| {},
+        )?;
         sweep.push((noise_px, a));
     }
     pb.finish_and_clear();
@@ -1123,8 +1145,16 @@ fn seeds_rula_agreement(
     pb: &ProgressBar,
 ) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
     let operators = statures(c.operators.unwrap_or(6));
+    let lag = c.fixed_lag_frames.map(usize::from);
     let runs = each(seeds, pb, |s| {
-        experiments::rula_agreement(&setup(s), handovers, &operators, c.cycles, &mut |_, _| {})
+        experiments::rula_agreement_with(
+            &setup(s),
+            handovers,
+            &operators,
+            c.cycles,
+            lag,
+            &mut |_, _| {},
+        )
     })?;
     pb.finish_and_clear();
     let sum = seeds::rula_agreement(seeds, &runs);
