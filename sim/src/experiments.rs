@@ -1220,19 +1220,21 @@ pub fn rula_agreement_with(
                 })?;
             }
             Some(half_window) => {
+                // The controller's configuration, its One-Euro filter off: the same assessor and
+                // warning tracker settings score the smoothed frames.
                 let mut config = PipelineConfig::new(up()?);
                 config.reconstruction.filter = None;
-                let mut fused = Vec::new();
+                let mut assessor = RulaAssessor::new(config.assessment)?;
+                let mut warnings = WarningTracker::new(config.warnings);
+                let (mut ks, mut skeletons) = (Vec::new(), Vec::new());
                 run_pipeline_with(setup, config, &ticks, |k, tracked| {
-                    fused.push((k, tracked.skeleton.clone()));
+                    ks.push(k);
+                    skeletons.push(tracked.skeleton.clone());
                     Ok(())
                 })?;
-                let skeletons: Vec<_> = fused.iter().map(|(_, s)| s.clone()).collect();
                 let smoothed =
                     ergocell_perception::fixed_lag::centered_mean(&skeletons, half_window);
-                let mut assessor = RulaAssessor::new(AssessmentConfig::new(up()?))?;
-                let mut warnings = WarningTracker::new(WarningConfig::default());
-                for ((k, _), skeleton) in fused.iter().zip(&smoothed) {
+                for (k, skeleton) in ks.iter().zip(&smoothed) {
                     let a = assessor.assess(skeleton)?;
                     raised += warnings
                         .update(&a)
