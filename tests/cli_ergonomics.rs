@@ -535,3 +535,71 @@ fn height_calibrate_measures_the_ear_offset_and_writes_it_into_the_cell_file() {
     assert!(stderr.contains("centimetres"), "{stderr}");
     assert_eq!(std::fs::read_to_string(&cell).unwrap(), before);
 }
+
+/// `rula track --fixed-lag-s`: a neck read alternately 5° and 25° (a jittering detector around a
+/// steady 15°) scores 1 and 3 frame by frame; on the mean over ±0.5 s it scores what the operator
+/// held, 2. The window follows the file's frame rate and is said in the output.
+#[test]
+fn rula_track_fixed_lag_scores_the_held_posture_not_the_jitter() {
+    let skeletons: Vec<_> = (0..40)
+        .map(|k| {
+            PoseSpec {
+                stamp_nanos: k * 100_000_000,
+                neck_flexion_rad: if k % 2 == 0 { 5f64 } else { 25f64 }.to_radians(),
+                ..PoseSpec::default()
+            }
+            .skeleton()
+        })
+        .collect();
+    let path = tmp("neck-jitter.json");
+    std::fs::write(&path, serde_json::to_string(&skeletons).unwrap()).unwrap();
+    let p = path.to_str().unwrap();
+    let neck_scores = |extra: &[&str]| {
+        let mut args = vec!["rula", "track", "--json", "--landmarks", p, "--up", "0,0,1"];
+        args.extend_from_slice(extra);
+        let (code, stdout, stderr) = ergocell(&args);
+        assert_eq!(code, 0, "{stderr}");
+        let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        let scores: Vec<u64> = doc["frames"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["right"]["scores"]["neck_score"].as_u64().unwrap())
+            .collect();
+        (scores, doc["fixed_lag"].clone())
+    };
+    let (raw, lag) = neck_scores(&[]);
+    assert_eq!(lag, serde_json::Value::Null);
+    assert!(raw.iter().all(|s| *s == 1 || *s == 3), "{raw:?}");
+    let (smoothed, lag) = neck_scores(&["--fixed-lag-s", "0.5"]);
+    assert_eq!(lag["half_window_frames"], 5, "{lag}");
+    assert_eq!(smoothed.len(), 40, "every frame scored");
+    assert!(smoothed.iter().all(|s| *s == 2), "{smoothed:?}");
+
+    let (code, stdout, stderr) = ergocell(&[
+        "rula",
+        "track",
+        "--landmarks",
+        p,
+        "--up",
+        "0,0,1",
+        "--fixed-lag-s",
+        "0.5",
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("±0.5 s (±5 frames)"), "{stdout}");
+    for bad in ["0", "nan", "1e9"] {
+        let (code, _, stderr) = ergocell(&[
+            "rula",
+            "track",
+            "--landmarks",
+            p,
+            "--up",
+            "0,0,1",
+            "--fixed-lag-s",
+            bad,
+        ]);
+        assert_eq!(code, 2, "--fixed-lag-s {bad}: {stderr}");
+        assert!(stderr.contains("--fixed-lag-s"), "{stderr}");
+    }
+}
