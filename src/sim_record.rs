@@ -174,23 +174,22 @@ pub fn record(
             rec.write(topics::SESSION_STATE, now, &state)?;
         }
         for output in pipeline.push_views(now, tick.frame.views) {
-            let Some(tracked) = output?.tracked else {
-                continue;
-            };
-            let assessment = tracked.assessment?;
-            rec.write(
-                topics::OPERATOR_POSE,
-                now,
-                &messages::operator_pose_message(&tracked.skeleton, Some(&assessment)),
-            )?;
-            rec.write(
-                topics::ERGONOMICS,
-                now,
-                &messages::ergonomic_message(&assessment),
-            )?;
-            rec.write(topics::REBA, now, &messages::reba_message(&assessment))?;
-            for w in &tracked.warnings {
-                rec.write(topics::WARNINGS, now, &messages::warning_message(w))?;
+            for tracked in output?.tracked {
+                let assessment = tracked.assessment?;
+                rec.write(
+                    topics::OPERATOR_POSE,
+                    now,
+                    &messages::operator_pose_message(&tracked.skeleton, Some(&assessment)),
+                )?;
+                rec.write(
+                    topics::ERGONOMICS,
+                    now,
+                    &messages::ergonomic_message(&assessment),
+                )?;
+                rec.write(topics::REBA, now, &messages::reba_message(&assessment))?;
+                for w in &tracked.warnings {
+                    rec.write(topics::WARNINGS, now, &messages::warning_message(w))?;
+                }
             }
         }
         rec.write(

@@ -104,10 +104,13 @@ fn bad_camera_arguments_are_usage_errors() {
             .unwrap();
         assert!(!status.success(), "{cameras}");
     }
-    // the fixed-lag smoother is an option of rula-agreement only, and takes 1..=100 frames
+    // the fixed-lag smoother is an option of rula-agreement only, and takes a half window in
+    // (0, 60] seconds
     for args in [
-        &["height", "--fixed-lag-frames", "5"][..],
-        &["rula-agreement", "--fixed-lag-frames", "0"],
+        &["height", "--fixed-lag-s", "0.5"][..],
+        &["rula-agreement", "--fixed-lag-s", "0"],
+        &["rula-agreement", "--fixed-lag-s", "nan"],
+        &["rula-agreement", "--fixed-lag-s", "61"],
     ] {
         let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
             .current_dir(&root)

@@ -152,6 +152,7 @@ impl CellSettings {
                 warn_at: self.warnings.warn_at,
             },
             height,
+            fixed_lag_s: (p.fixed_lag_s > 0.0).then_some(p.fixed_lag_s),
         })
     }
 
@@ -173,6 +174,14 @@ impl CellSettings {
             p.view_offset_time_constant_s,
         )?;
         seconds("pipeline.operator_gate_memory_s", p.operator_gate_memory_s)?;
+        non_negative("pipeline.fixed_lag_s", p.fixed_lag_s)?;
+        if p.fixed_lag_s > ergocell_perception::fixed_lag::MAX_HALF_WINDOW_S {
+            return Err(format!(
+                "pipeline.fixed_lag_s = {} is longer than {} s",
+                p.fixed_lag_s,
+                ergocell_perception::fixed_lag::MAX_HALF_WINDOW_S
+            ));
+        }
         finite(
             "pipeline.operator_gate_torso_height_m",
             p.operator_gate_torso_height_m,
@@ -515,6 +524,9 @@ struct PipelineFile {
     /// Time constant over which each camera's persistent image offset is learnt from the fused
     /// skeleton and taken out of its views (`perception::view_offset`); 0 = off.
     view_offset_time_constant_s: f64,
+    /// RULA on each frame's mean over ± this many seconds in place of the causal filter, every
+    /// score and warning that much later (`perception::fixed_lag`); 0 = off (the default).
+    fixed_lag_s: f64,
 }
 
 impl Default for PipelineFile {
@@ -537,6 +549,7 @@ impl Default for PipelineFile {
             view_offset_time_constant_s: p
                 .view_offsets
                 .map_or(0.0, |v| v.time_constant_nanos as f64 * 1e-9),
+            fixed_lag_s: 0.0,
         }
     }
 }
@@ -750,6 +763,16 @@ mod tests {
             ),
             ("[pipeline]\nfusion = \"best\"", "best", "fusion"),
             (
+                "[pipeline]\nfixed_lag_s = -0.5",
+                "-0.5",
+                "pipeline.fixed_lag_s",
+            ),
+            (
+                "[pipeline]\nfixed_lag_s = 90.0",
+                "90",
+                "pipeline.fixed_lag_s",
+            ),
+            (
                 "[session]\ntake_radius_m = 0.3\nrelease_radius_m = 0.2",
                 "0.2",
                 "session.release_radius_m",
@@ -792,6 +815,14 @@ mod tests {
         assert_eq!(p.warnings.dwell_nanos, 1_000_000_000);
         assert_eq!(p.height.thresholds.c1_below_m(), 1.65);
         assert_eq!(p.assessment.smoothing_window_nanos, 0);
+        // no fixed lag unless asked; asked, in seconds
+        assert_eq!(p.fixed_lag_s, None);
+        let lagged = SHIPPED.replace(
+            "\n[station]\n",
+            "\n[pipeline]\nfixed_lag_s = 0.55\n\n[station]\n",
+        );
+        let s = CellSettings::from_toml_str(&lagged, "cell.toml").unwrap();
+        assert_eq!(s.pipeline(UpVector::z()).unwrap().fixed_lag_s, Some(0.55));
     }
 
     #[test]

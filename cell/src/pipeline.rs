@@ -4,6 +4,7 @@
 //! ```text
 //! views ─► FrameAssembler ─► FusionEngine ─► tracked? ─► OneEuroFilter ─► RulaAssessor ─► WarningTracker
 //!          (time-aligns)     (default|paper)  (gate)      (causal)     │
+//!                                                        or fixed lag  │
 //!                                                                      └─► HeightEstimator (unfiltered, until decided)
 //! ```
 //!
@@ -28,6 +29,13 @@
 //! The height is measured on the **unfiltered** fused skeleton (the filter's lag would bias a
 //! stature measured while the operator walks in) and only until the first decision, which is final:
 //! the class is decided once per session. RULA runs on the filtered skeleton of every tracked frame.
+//!
+//! With a fixed lag ([`PipelineConfig::fixed_lag_s`]) the causal filter is off and RULA runs on
+//! each tracked frame's mean over the frames up to the half window before and after it
+//! ([`ergocell_perception::fixed_lag`]): every score, warning and the height decision come out that
+//! much later, each [`TrackedFrame`] with its own (earlier) stamp. The last half window of frames
+//! before the operator is lost from view comes out once time has moved on; a session that ends
+//! sooner leaves them unscored.
 
 use ergocell_ergonomics::{
     AssessmentConfig, ErgonomicsError, FrameAssessment, HeightConfig, HeightDecision,
@@ -37,6 +45,7 @@ use ergocell_ergonomics::{
 use ergocell_perception::camera_health::{
     CameraResidualMonitor, OutOfCalibration, ResidualMonitorConfig,
 };
+use ergocell_perception::fixed_lag::FixedLagSmoother;
 use ergocell_perception::operator_gate::{other_person_views, torso_of};
 use ergocell_perception::temporal::{FrameAssembler, OneEuroFilter, OneEuroParams};
 use ergocell_perception::view_offset::{ViewOffsetConfig, ViewOffsets};
@@ -110,6 +119,10 @@ pub struct PipelineConfig {
     pub warnings: WarningConfig,
     /// The height estimator (its `up` is the world's vertical).
     pub height: HeightConfig,
+    /// Score each tracked frame on the mean over ± this many seconds of it in place of the causal
+    /// filter (a fixed-lag smoother; the reconstruction's filter is then not run), at a latency of
+    /// the half window. `None` (the default): the causal filter, no latency.
+    pub fixed_lag_s: Option<f64>,
 }
 
 impl PipelineConfig {
@@ -120,6 +133,7 @@ impl PipelineConfig {
             assessment: AssessmentConfig::new(up),
             warnings: WarningConfig::default(),
             height: HeightConfig::new(up),
+            fixed_lag_s: None,
         }
     }
 }
@@ -131,8 +145,10 @@ pub struct FrameOutput {
     pub stamp_nanos: i64,
     /// The fused skeleton, unfiltered, with the fusion's counts.
     pub fused: FusedFrame,
-    /// `None` when the operator is not tracked in this frame (too few landmarks).
-    pub tracked: Option<TrackedFrame>,
+    /// The tracked frames this frame completes, in time order: this frame itself when the operator
+    /// is tracked in it (too few landmarks: none); with a fixed lag, the earlier frames whose
+    /// window it closed (zero, one, or after a gap several).
+    pub tracked: Vec<TrackedFrame>,
     /// A camera this frame found out of calibration (left out of fusion from the next frame on).
     pub out_of_calibration: Option<OutOfCalibration>,
 }
@@ -140,13 +156,15 @@ pub struct FrameOutput {
 /// The rest of the pipeline for a frame in which the operator is tracked.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TrackedFrame {
-    /// The filtered skeleton (the fused one when no filter is configured).
+    /// The filtered skeleton (the fused one when no filter is configured; with a fixed lag, the
+    /// smoothed one), at its own stamp.
     pub skeleton: Skeleton3,
     /// RULA of both sides; `Err` when the frame could not be assessed (e.g. time went backwards).
     pub assessment: Result<FrameAssessment, ErgonomicsError>,
     /// Posture warnings raised, changed or cleared by this frame.
     pub warnings: Vec<WarningEvent>,
-    /// The height decision, in the one frame that made it.
+    /// The height decision, in the one frame that made it (with a fixed lag: the first frame
+    /// released after it).
     pub height: Option<HeightDecision>,
 }
 
@@ -347,16 +365,33 @@ impl Assessment {
         filtered: Skeleton3,
         measure_height: bool,
     ) -> TrackedFrame {
+        let height = self.measure_height(raw, measure_height);
+        let mut tracked = self.score(filtered);
+        tracked.height = height;
+        tracked
+    }
+
+    /// The height measured on a tracked frame's unfiltered skeleton, until the first decision (the
+    /// frame counted as away from the station unless `measure_height`).
+    pub fn measure_height(
+        &mut self,
+        raw: &Skeleton3,
+        measure_height: bool,
+    ) -> Option<HeightDecision> {
         if !self.height_decided && !measure_height {
             self.away_from_station += 1;
         }
-        let height = if self.height_decided || !measure_height {
+        if self.height_decided || !measure_height {
             None
         } else {
             let d = self.height.push(raw);
             self.height_decided = d.is_some();
             d
-        };
+        }
+    }
+
+    /// RULA and the warnings of a tracked frame's (filtered or smoothed) skeleton; no height.
+    pub fn score(&mut self, filtered: Skeleton3) -> TrackedFrame {
         let assessment = self.assessor.assess(&filtered);
         let warnings = match &assessment {
             Ok(a) => self.warnings.update(a),
@@ -366,7 +401,7 @@ impl Assessment {
             skeleton: filtered,
             assessment,
             warnings,
-            height,
+            height: None,
         }
     }
 
@@ -401,15 +436,34 @@ pub struct Pipeline {
     config: PipelineConfig,
     reconstruction: Reconstruction,
     assessment: Assessment,
+    /// The fixed-lag smoother, when configured.
+    lag: Option<FixedLagSmoother>,
+    /// A height decision made on a frame not yet released by the fixed lag.
+    pending_height: Option<HeightDecision>,
 }
 
 impl Pipeline {
     /// A pipeline on `rig`.
+    /// With [`PipelineConfig::fixed_lag_s`] the reconstruction runs without its causal filter.
     pub fn new(rig: CameraRig, config: PipelineConfig) -> Result<Self, CellError> {
+        let lag = config
+            .fixed_lag_s
+            .map(FixedLagSmoother::new)
+            .transpose()
+            .map_err(|e| CellError::Config {
+                file: "pipeline".to_owned(),
+                reason: format!("fixed_lag_s: {e}"),
+            })?;
+        let mut reconstruction = config.reconstruction.clone();
+        if lag.is_some() {
+            reconstruction.filter = None;
+        }
         Ok(Self {
-            reconstruction: Reconstruction::new(rig, config.reconstruction.clone())?,
+            reconstruction: Reconstruction::new(rig, reconstruction)?,
             assessment: Assessment::new(&config)?,
             config,
+            lag,
+            pending_height: None,
         })
     }
 
@@ -457,10 +511,38 @@ impl Pipeline {
                 (d - up * d.dot(&up)).norm() <= zone.radius_m
             })
         });
-        let tracked = r.tracked.map(|filtered| {
-            self.assessment
-                .process_measuring(&r.fused.skeleton, filtered, at_station)
-        });
+        let tracked = match self.lag.as_mut() {
+            None => r
+                .tracked
+                .map(|filtered| {
+                    self.assessment
+                        .process_measuring(&r.fused.skeleton, filtered, at_station)
+                })
+                .into_iter()
+                .collect(),
+            Some(lag) => {
+                let released = match r.tracked {
+                    Some(skeleton) => {
+                        if let Some(d) = self
+                            .assessment
+                            .measure_height(&r.fused.skeleton, at_station)
+                        {
+                            self.pending_height = Some(d);
+                        }
+                        lag.push(skeleton)
+                    }
+                    None => lag.advance(r.stamp_nanos),
+                };
+                released
+                    .into_iter()
+                    .map(|smoothed| {
+                        let mut t = self.assessment.score(smoothed);
+                        t.height = self.pending_height.take();
+                        t
+                    })
+                    .collect()
+            }
+        };
         Ok(FrameOutput {
             stamp_nanos: r.stamp_nanos,
             fused: r.fused,
@@ -510,7 +592,7 @@ mod tests {
             "all six cameras reported: the frame is complete"
         );
         let out = out.into_iter().next().unwrap().unwrap();
-        assert!(out.tracked.is_none());
+        assert!(out.tracked.is_empty());
         assert!(matches!(
             p.height_status(),
             HeightStatus::Measuring { frames_seen: 0, .. }

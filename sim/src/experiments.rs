@@ -373,8 +373,8 @@ pub fn run_pipeline_with(
     for tick in ticks {
         for output in p.push_views(tick.frame.stamp_nanos, tick.frame.views.clone()) {
             let output = output?;
-            if let Some(tracked) = &output.tracked {
-                f(nearest_tick(ticks, output.stamp_nanos), tracked)?;
+            for tracked in &output.tracked {
+                f(nearest_tick(ticks, tracked.skeleton.stamp_nanos), tracked)?;
             }
         }
     }
@@ -394,8 +394,8 @@ pub fn run_pipeline(
     for tick in ticks {
         for output in p.push_views(tick.frame.stamp_nanos, tick.frame.views.clone()) {
             let output = output?;
-            if let Some(tracked) = &output.tracked {
-                f(nearest_tick(ticks, output.stamp_nanos), tracked)?;
+            for tracked in &output.tracked {
+                f(nearest_tick(ticks, tracked.skeleton.stamp_nanos), tracked)?;
             }
         }
     }
@@ -1096,10 +1096,11 @@ pub struct Agreement {
 /// Result of [`rula_agreement`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RulaAgreement {
-    /// The pipeline's scores came from a fixed-lag smoother of this many frames either side
-    /// ([`rula_agreement_with`]); absent: the controller's own pipeline.
+    /// The pipeline ran with a fixed-lag smoother of this many seconds either side
+    /// ([`PipelineConfig::fixed_lag_s`], [`rula_agreement_with`]); absent: the causal filter, the
+    /// controller's default.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub fixed_lag_frames: Option<usize>,
+    pub fixed_lag_s: Option<f64>,
     pub grand_score: Agreement,
     pub action_level: Agreement,
     /// Exact agreement of each region's score (upper_arm, lower_arm, wrist, neck, trunk, legs): where
@@ -1173,17 +1174,15 @@ pub fn rula_agreement(
     rula_agreement_with(setup, handovers, statures_m, cycles, None, progress)
 }
 
-/// [`rula_agreement`] with the pipeline's scores taken, when `fixed_lag_frames` is given, from the
-/// fused skeleton without the One-Euro filter, smoothed by a window centred on each frame
-/// ([`ergocell_perception::fixed_lag::centered_mean`], that many frames either side) and assessed
-/// (and warned about) by the controller's assessor and warning tracker: what a fixed-lag smoother
-/// would give, at the price of that latency.
+/// [`rula_agreement`] on the controller's pipeline with a fixed lag of `fixed_lag_s` seconds
+/// ([`PipelineConfig::fixed_lag_s`]: no causal filter; each tracked frame scored and warned about on
+/// its mean over the half window either side, that much later); `None`: the defaults.
 pub fn rula_agreement_with(
     setup: &Setup,
     handovers: &Handovers,
     statures_m: &[f64],
     cycles: usize,
-    fixed_lag_frames: Option<usize>,
+    fixed_lag_s: Option<f64>,
     progress: Progress<'_>,
 ) -> Result<RulaAgreement, SimError> {
     let mut grand = vec![vec![0usize; 7]; 7];
@@ -1207,44 +1206,17 @@ pub fn rula_agreement_with(
         }
         // (tick index, the pipeline's headline) of every tracked frame
         let mut scores: Vec<(usize, Option<Scored>)> = Vec::new();
-        match fixed_lag_frames {
-            None => {
-                run_pipeline(setup, &ticks, |k, tracked| {
-                    raised += tracked
-                        .warnings
-                        .iter()
-                        .filter(|w| w.kind == WarningKind::Raised)
-                        .count();
-                    scores.push((k, pipeline_headline(tracked)?));
-                    Ok(())
-                })?;
-            }
-            Some(half_window) => {
-                // The controller's configuration, its One-Euro filter off: the same assessor and
-                // warning tracker settings score the smoothed frames.
-                let mut config = PipelineConfig::new(up()?);
-                config.reconstruction.filter = None;
-                let mut assessor = RulaAssessor::new(config.assessment)?;
-                let mut warnings = WarningTracker::new(config.warnings);
-                let (mut ks, mut skeletons) = (Vec::new(), Vec::new());
-                run_pipeline_with(setup, config, &ticks, |k, tracked| {
-                    ks.push(k);
-                    skeletons.push(tracked.skeleton.clone());
-                    Ok(())
-                })?;
-                let smoothed =
-                    ergocell_perception::fixed_lag::centered_mean(&skeletons, half_window);
-                for (k, skeleton) in ks.iter().zip(&smoothed) {
-                    let a = assessor.assess(skeleton)?;
-                    raised += warnings
-                        .update(&a)
-                        .iter()
-                        .filter(|w| w.kind == WarningKind::Raised)
-                        .count();
-                    scores.push((*k, scored(&a)));
-                }
-            }
-        }
+        let mut config = PipelineConfig::new(up()?);
+        config.fixed_lag_s = fixed_lag_s;
+        run_pipeline_with(setup, config, &ticks, |k, tracked| {
+            raised += tracked
+                .warnings
+                .iter()
+                .filter(|w| w.kind == WarningKind::Raised)
+                .count();
+            scores.push((k, pipeline_headline(tracked)?));
+            Ok(())
+        })?;
         for (k, e) in scores {
             if !at_station(ticks[k].truth.phase) {
                 continue;
@@ -1288,7 +1260,7 @@ pub fn rula_agreement_with(
         }
     };
     Ok(RulaAgreement {
-        fixed_lag_frames,
+        fixed_lag_s,
         grand_score: agreement(grand),
         action_level: agreement(level),
         region_names: BodyRegion::ALL

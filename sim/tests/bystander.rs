@@ -76,24 +76,23 @@ fn session(seed: u64, cameras: u64, gate: bool) -> Outcome {
     let mut p = pipeline(rig, gate);
     for (i, tick) in ticks.iter().enumerate() {
         for output in p.push_views(tick.frame.stamp_nanos, tick.frame.views.clone()) {
-            let Some(frame) = output.unwrap().tracked else {
-                continue;
-            };
-            // frames are released at most a few ticks late: compare with the nearest truth
-            let j = (0..=i)
-                .rev()
-                .take(5)
-                .min_by_key(|&j| (ticks[j].frame.stamp_nanos - frame_stamp(&frame)).abs())
-                .unwrap_or(i);
-            let (Some(fused), Some(truth)) =
-                (mid_hip(&frame.skeleton), mid_hip(&ticks[j].truth.skeleton))
-            else {
-                continue;
-            };
-            let d = (fused - truth).norm();
-            tracked += 1;
-            near += usize::from(d < 0.10);
-            worst = worst.max(d);
+            for frame in output.unwrap().tracked {
+                // frames are released at most a few ticks late: compare with the nearest truth
+                let j = (0..=i)
+                    .rev()
+                    .take(5)
+                    .min_by_key(|&j| (ticks[j].frame.stamp_nanos - frame_stamp(&frame)).abs())
+                    .unwrap_or(i);
+                let (Some(fused), Some(truth)) =
+                    (mid_hip(&frame.skeleton), mid_hip(&ticks[j].truth.skeleton))
+                else {
+                    continue;
+                };
+                let d = (fused - truth).norm();
+                tracked += 1;
+                near += usize::from(d < 0.10);
+                worst = worst.max(d);
+            }
         }
     }
     let pipeline = p;

@@ -4,7 +4,7 @@
 //! ergocell rula score --input cases.json       JSON array of single-side worksheets → JSON array of breakdowns
 //! ergocell rula track --landmarks frames.json  per-frame scores for both sides, warnings and a summary
 //!                     [--up x,y,z | --rig config/rig.toml] [--floor-height-m 0] [--task task.json] [--json]
-//!                     [--fixed-lag-s 0.5]
+//!                     [--fixed-lag-s 0.55]
 //! ```
 //!
 //! The landmark file is what `ergocell triangulate` writes (`.json` array of skeletons; `.csv` and
@@ -30,7 +30,7 @@ use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_wo
 use ergocell_ergonomics::static_posture::STATIC_MIN_SECS;
 use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
 use ergocell_ergonomics::{AssessmentConfig, RulaScores, Side, TaskConfig, UpVector};
-use ergocell_perception::fixed_lag::{centered_mean_within, FixedLag};
+use ergocell_perception::fixed_lag::centered_mean;
 use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
 use ergocell_skeleton::Skeleton3;
 use nalgebra::Vector3;
@@ -95,9 +95,10 @@ pub struct TrackArgs {
     /// Score each frame on the landmarks' mean over this many seconds either side of it (a
     /// fixed-lag smoother, `perception::fixed_lag`; the legs below the hips are left as they are),
     /// for a file of unfiltered landmarks (`ergocell triangulate` without `--filter`). Offline it
-    /// costs nothing; on the digital twin under the detector fitted to real MediaPipe data, 0.5 s
+    /// costs nothing; on the digital twin under the detector fitted to real MediaPipe data, 0.55 s
     /// raised per-frame RULA agreement from κ 0.77 (the controller's causal filter) to 0.88
-    /// (docs/sim). The window in frames follows the file's median frame interval.
+    /// (docs/sim). The window is in time (the same at any frame rate) and stops at a gap in the
+    /// file.
     #[arg(long, value_name = "SECONDS")]
     pub fixed_lag_s: Option<f64>,
     /// Overwrite an existing --csv / --summary-csv file.
@@ -255,17 +256,9 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         }
     }
     let frames = read_skeletons(&args.landmarks)?;
-    let lag = match args.fixed_lag_s {
-        Some(seconds) => Some(FixedLag::over(&frames, seconds).map_err(|e| {
-            UsageError(format!(
-                "--fixed-lag-s {seconds} on {}: {e}",
-                args.landmarks.display()
-            ))
-        })?),
-        None => None,
-    };
-    let frames = match lag {
-        Some(lag) => centered_mean_within(&frames, lag),
+    let frames = match args.fixed_lag_s {
+        Some(seconds) => centered_mean(&frames, seconds)
+            .map_err(|e| UsageError(format!("--fixed-lag-s: {e}")))?,
         None => frames,
     };
     let task: TaskConfig = match &args.task {
@@ -296,10 +289,9 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     let mut events = Vec::new();
     if !args.json {
         println!("# time_s  left: final AL (regions) REBA score AL | right: ... ; UA upper arm, LA lower arm, WR wrist, TW twist, N neck, T trunk, L legs; REBA (Hignett & McAtamney 2000) from the same angles plus the knees");
-        if let (Some(lag), Some(seconds)) = (lag, args.fixed_lag_s) {
+        if let Some(seconds) = args.fixed_lag_s {
             println!(
-                "# scored on a fixed-lag mean of the landmarks over ±{seconds} s (±{} frames) of each frame, the legs below the hips as recorded",
-                lag.half_window
+                "# scored on a fixed-lag mean of the landmarks over ±{seconds} s of each frame (a gap in the file ends the window), the legs below the hips as recorded"
             );
         }
         println!("# configured (task config): force/load, wrist twist, arm supported, seated; muscle use: from the time series; the rest observed (\"uncertain\": an input held, not observed, scored conservatively or of low confidence; the reasons follow on a \"why\" line when they change; --json lists each input's source)");
@@ -348,9 +340,9 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         super::output::write("--summary-csv", path, args.force, &bytes)?;
     }
     if args.json {
-        let fixed_lag = lag.map(|l| {
-            serde_json::json!({ "half_window_s": args.fixed_lag_s, "half_window_frames": l.half_window })
-        });
+        let fixed_lag = args
+            .fixed_lag_s
+            .map(|s| serde_json::json!({ "half_window_s": s }));
         let doc = serde_json::json!({ "frames": frame_docs, "warnings": events, "summary": s, "fixed_lag": fixed_lag });
         println!("{}", serde_json::to_string_pretty(&doc)?);
         return Ok(());

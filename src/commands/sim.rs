@@ -113,11 +113,11 @@ pub struct Common {
     /// independent). A rig of cameras far apart cannot measure it.
     #[arg(long, global = true, default_value_t = 0.0)]
     pub view_correlation_deg: f64,
-    /// rula-agreement: score a moving mean of the fused skeleton centred on each frame, this many
-    /// frames either side (instead of the controller's causal One-Euro filter): what a fixed-lag
-    /// smoother gives, at a latency of that many frames.
-    #[arg(long, global = true, value_parser = clap::value_parser!(u16).range(1..=100))]
-    pub fixed_lag_frames: Option<u16>,
+    /// rula-agreement: run the controller with a fixed-lag smoother of this many seconds either
+    /// side (`[pipeline] fixed_lag_s`: each frame scored on the fused skeleton's mean over the
+    /// window centred on it, instead of the causal One-Euro filter), at that latency.
+    #[arg(long, global = true, value_name = "SECONDS")]
+    pub fixed_lag_s: Option<f64>,
     /// Print the numbers as one JSON object on stdout instead of a table.
     #[arg(long, global = true)]
     pub json: bool,
@@ -215,8 +215,8 @@ fn detector_label(c: &Common) -> String {
         ),
         None => format!("{} px", c.noise_px),
     };
-    match c.fixed_lag_frames {
-        Some(n) => format!("{detector}, a fixed-lag smoother of ±{n} frames"),
+    match c.fixed_lag_s {
+        Some(w) => format!("{detector}, a fixed-lag smoother of ±{w} s"),
         None => detector,
     }
 }
@@ -582,10 +582,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
         );
     }
-    if c.fixed_lag_frames.is_some() && !matches!(args.experiment, Experiment::RulaAgreement) {
-        return Err(
-            UsageError("--fixed-lag-frames applies to rula-agreement only".to_owned()).into(),
-        );
+    if let Some(w) = c.fixed_lag_s {
+        if !matches!(args.experiment, Experiment::RulaAgreement) {
+            return Err(
+                UsageError("--fixed-lag-s applies to rula-agreement only".to_owned()).into(),
+            );
+        }
+        ergocell_perception::fixed_lag::half_window_nanos(w)
+            .map_err(|e| UsageError(format!("--fixed-lag-s: {e}")))?;
     }
     if matches!(args.experiment, Experiment::HandoverRula) {
         return run_handover_rula(c);
@@ -694,7 +698,7 @@ fn one_rula_agreement(
     pb: &ProgressBar,
 ) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
     let operators = statures(c.operators.unwrap_or(6));
-    let lag = c.fixed_lag_frames.map(usize::from);
+    let lag = c.fixed_lag_s;
     let r = experiments::rula_agreement_with(setup, handovers, &operators, c.cycles, lag, tick)?;
     // The same sessions at other pixel-noise levels: how agreement depends on the detector.
     let mut sweep = Vec::new();
@@ -1145,7 +1149,7 @@ fn seeds_rula_agreement(
     pb: &ProgressBar,
 ) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
     let operators = statures(c.operators.unwrap_or(6));
-    let lag = c.fixed_lag_frames.map(usize::from);
+    let lag = c.fixed_lag_s;
     let runs = each(seeds, pb, |s| {
         experiments::rula_agreement_with(
             &setup(s),

@@ -410,14 +410,13 @@ impl SessionMachine {
                 .map_or(output.stamp_nanos, |s| s.max(output.stamp_nanos)),
         );
         self.summary.frames_fused += 1;
-        let Some(tracked) = output.tracked else {
-            return;
-        };
-        self.summary.frames_tracked += 1;
-        if let Some(hips) = mid_hip(&tracked.skeleton) {
-            self.last_tracked = Some((output.stamp_nanos, hips));
+        for tracked in output.tracked {
+            self.summary.frames_tracked += 1;
+            if let Some(hips) = mid_hip(&tracked.skeleton) {
+                self.last_tracked = Some((tracked.skeleton.stamp_nanos, hips));
+            }
+            self.on_tracked_frame(now_nanos, tracked, events);
         }
-        self.on_tracked_frame(now_nanos, tracked, events);
     }
 
     fn on_tracked_frame(
