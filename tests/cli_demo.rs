@@ -446,3 +446,78 @@ fn demo_plays_a_fault_schedule_from_a_file() {
         "{stderr}"
     );
 }
+
+/// A cell scoring on a fixed lag (`[pipeline] fixed_lag_s`): the session runs as without it — the
+/// same class, every part taken, the operator seen at once — and the report reads every scored
+/// frame of its recording.
+#[test]
+fn a_cell_with_a_fixed_lag_serves_the_operator_as_without_it() {
+    let dir = Scratch::new("demo-fixed-lag");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let shipped = std::fs::read_to_string(root.join("config/cell.toml")).unwrap();
+    std::fs::write(
+        dir.0.join("cell.toml"),
+        shipped.replace(
+            "\n[station]\n",
+            "\n[pipeline]\nfixed_lag_s = 0.55\n\n[station]\n",
+        ),
+    )
+    .unwrap();
+    std::fs::create_dir_all(dir.0.join("robots")).unwrap();
+    std::fs::copy(
+        root.join("config/robots/iiwa14_r820.urdf"),
+        dir.0.join("robots/iiwa14_r820.urdf"),
+    )
+    .unwrap();
+    let trajectories = root.join("trajectories");
+    let run = demo_in(
+        &dir.0,
+        &[
+            "--cell",
+            "cell.toml",
+            "--trajectories",
+            trajectories.to_str().unwrap(),
+            "--cycles",
+            "2",
+            "--no-faults",
+            "--out",
+            "lag.mcap",
+        ],
+    );
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    for e in [
+        "(true 1.690 m) → class c2",
+        "(2 part(s) taken at the handover point)",
+        "session:        session_ended",
+    ] {
+        assert!(stdout.contains(e), "missing `{e}` in:\n{stdout}");
+    }
+    let report = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&dir.0)
+        .args(["report", "lag.mcap", "--out", "lag.html"])
+        .output()
+        .unwrap();
+    assert!(
+        report.status.success(),
+        "{}",
+        String::from_utf8_lossy(&report.stderr)
+    );
+    let said = String::from_utf8_lossy(&report.stdout);
+    // every tracked frame was scored: the operator walked out, so time moved past the last window
+    let tracked: usize = stdout
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("frames:"))
+        .and_then(|l| l.split(", ").nth(1))
+        .and_then(|l| l.split_whitespace().next())
+        .and_then(|n| n.parse().ok())
+        .unwrap();
+    assert!(
+        said.contains(&format!("{tracked} frames over")),
+        "{said}\n{stdout}"
+    );
+}

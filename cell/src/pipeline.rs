@@ -32,8 +32,9 @@
 //!
 //! With a fixed lag ([`PipelineConfig::fixed_lag_s`]) the causal filter is off and RULA runs on
 //! each tracked frame's mean over the frames up to the half window before and after it
-//! ([`ergocell_perception::fixed_lag`]): every score, warning and the height decision come out that
-//! much later, each [`TrackedFrame`] with its own (earlier) stamp. The last half window of frames
+//! ([`ergocell_perception::fixed_lag`]): every score and warning comes out that much later, each [`TrackedFrame`] with its own (earlier) stamp. The operator's presence, hands
+//! and height ([`FrameOutput::operator`], [`FrameOutput::height`]) come at once, so nothing the robot
+//! waits for is delayed. The last half window of frames
 //! before the operator is lost from view comes out once time has moved on; a session that ends
 //! sooner leaves them unscored.
 
@@ -145,15 +146,21 @@ pub struct FrameOutput {
     pub stamp_nanos: i64,
     /// The fused skeleton, unfiltered, with the fusion's counts.
     pub fused: FusedFrame,
-    /// The tracked frames this frame completes, in time order: this frame itself when the operator
-    /// is tracked in it (too few landmarks: none); with a fixed lag, the earlier frames whose
-    /// window it closed (zero, one, or after a gap several).
+    /// The operator in this frame, when tracked (enough landmarks): the filtered skeleton (with a
+    /// fixed lag, the fused one as it is). What the session follows the operator by — present or
+    /// not, where the hands are — at once, whatever the lag.
+    pub operator: Option<Skeleton3>,
+    /// The height decision, in the one frame that made it.
+    pub height: Option<HeightDecision>,
+    /// The tracked frames scored by this frame (RULA, warnings), in time order: this frame itself
+    /// when the operator is tracked in it; with a fixed lag, the earlier frames whose window it
+    /// closed (zero, one, or after a gap several), each at its own stamp.
     pub tracked: Vec<TrackedFrame>,
     /// A camera this frame found out of calibration (left out of fusion from the next frame on).
     pub out_of_calibration: Option<OutOfCalibration>,
 }
 
-/// The rest of the pipeline for a frame in which the operator is tracked.
+/// A tracked frame scored: the skeleton RULA saw, its assessment and the warnings it moved.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TrackedFrame {
     /// The filtered skeleton (the fused one when no filter is configured; with a fixed lag, the
@@ -163,9 +170,6 @@ pub struct TrackedFrame {
     pub assessment: Result<FrameAssessment, ErgonomicsError>,
     /// Posture warnings raised, changed or cleared by this frame.
     pub warnings: Vec<WarningEvent>,
-    /// The height decision, in the one frame that made it (with a fixed lag: the first frame
-    /// released after it).
-    pub height: Option<HeightDecision>,
 }
 
 /// What the reconstruction stage made of one frame.
@@ -351,26 +355,6 @@ impl Assessment {
         })
     }
 
-    /// A tracked frame: the height measured on `raw` (unfiltered) until the first decision, RULA
-    /// and warnings on `filtered`.
-    pub fn process(&mut self, raw: &Skeleton3, filtered: Skeleton3) -> TrackedFrame {
-        self.process_measuring(raw, filtered, true)
-    }
-
-    /// [`Self::process`], with the height measured on this frame only if `measure_height` (the
-    /// pipeline passes whether the tracked person stands at the station, see [`Pipeline`]).
-    pub fn process_measuring(
-        &mut self,
-        raw: &Skeleton3,
-        filtered: Skeleton3,
-        measure_height: bool,
-    ) -> TrackedFrame {
-        let height = self.measure_height(raw, measure_height);
-        let mut tracked = self.score(filtered);
-        tracked.height = height;
-        tracked
-    }
-
     /// The height measured on a tracked frame's unfiltered skeleton, until the first decision (the
     /// frame counted as away from the station unless `measure_height`).
     pub fn measure_height(
@@ -390,7 +374,7 @@ impl Assessment {
         }
     }
 
-    /// RULA and the warnings of a tracked frame's (filtered or smoothed) skeleton; no height.
+    /// RULA and the warnings of a tracked frame's (filtered or smoothed) skeleton.
     pub fn score(&mut self, filtered: Skeleton3) -> TrackedFrame {
         let assessment = self.assessor.assess(&filtered);
         let warnings = match &assessment {
@@ -401,7 +385,6 @@ impl Assessment {
             skeleton: filtered,
             assessment,
             warnings,
-            height: None,
         }
     }
 
@@ -438,8 +421,6 @@ pub struct Pipeline {
     assessment: Assessment,
     /// The fixed-lag smoother, when configured.
     lag: Option<FixedLagSmoother>,
-    /// A height decision made on a frame not yet released by the fixed lag.
-    pending_height: Option<HeightDecision>,
 }
 
 impl Pipeline {
@@ -463,7 +444,6 @@ impl Pipeline {
             assessment: Assessment::new(&config)?,
             config,
             lag,
-            pending_height: None,
         })
     }
 
@@ -511,41 +491,33 @@ impl Pipeline {
                 (d - up * d.dot(&up)).norm() <= zone.radius_m
             })
         });
+        let height = r.tracked.as_ref().and_then(|_| {
+            self.assessment
+                .measure_height(&r.fused.skeleton, at_station)
+        });
+        let operator = r.tracked.clone();
         let tracked = match self.lag.as_mut() {
             None => r
                 .tracked
-                .map(|filtered| {
-                    self.assessment
-                        .process_measuring(&r.fused.skeleton, filtered, at_station)
-                })
+                .map(|filtered| self.assessment.score(filtered))
                 .into_iter()
                 .collect(),
             Some(lag) => {
                 let released = match r.tracked {
-                    Some(skeleton) => {
-                        if let Some(d) = self
-                            .assessment
-                            .measure_height(&r.fused.skeleton, at_station)
-                        {
-                            self.pending_height = Some(d);
-                        }
-                        lag.push(skeleton)
-                    }
+                    Some(skeleton) => lag.push(skeleton),
                     None => lag.advance(r.stamp_nanos),
                 };
                 released
                     .into_iter()
-                    .map(|smoothed| {
-                        let mut t = self.assessment.score(smoothed);
-                        t.height = self.pending_height.take();
-                        t
-                    })
+                    .map(|smoothed| self.assessment.score(smoothed))
                     .collect()
             }
         };
         Ok(FrameOutput {
             stamp_nanos: r.stamp_nanos,
             fused: r.fused,
+            operator,
+            height,
             tracked,
             out_of_calibration: r.out_of_calibration,
         })

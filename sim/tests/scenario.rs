@@ -364,9 +364,9 @@ fn the_fixed_lag_smoother_scores_the_same_frames_and_says_so() {
     );
 }
 
-/// The controller with a fixed lag of 0.5 s: each tracked frame comes out once a frame more than
-/// 0.5 s later has been fused (never sooner, at most a frame or two later), in time order, and the
-/// height is decided on the unsmoothed skeleton as without the lag — the same class, one decision.
+/// The controller with a fixed lag of 0.5 s: each tracked frame is scored once a frame more than
+/// 0.5 s later has been fused (never sooner, at most a frame or two later), in time order, while the
+/// operator and the height come at once: the same decision in the same frame as without the lag.
 #[test]
 fn with_a_fixed_lag_each_frame_comes_out_half_a_window_late_and_the_height_is_the_same() {
     use ergocell_cell::{Pipeline, PipelineConfig};
@@ -381,6 +381,17 @@ fn with_a_fixed_lag_each_frame_comes_out_half_a_window_late_and_the_height_is_th
         for tick in &ticks {
             for output in p.push_views(tick.frame.stamp_nanos, tick.frame.views.clone()) {
                 let output = output.unwrap();
+                // the operator and the height at once, whatever the lag
+                assert_eq!(
+                    output.operator.as_ref().map(|o| o.stamp_nanos),
+                    output.operator.as_ref().map(|_| output.stamp_nanos)
+                );
+                classes.extend(
+                    output
+                        .height
+                        .as_ref()
+                        .map(|d| (output.stamp_nanos, d.class, d.estimate.height_m)),
+                );
                 for t in &output.tracked {
                     let late = output.stamp_nanos - t.skeleton.stamp_nanos;
                     match lag {
@@ -393,7 +404,6 @@ fn with_a_fixed_lag_each_frame_comes_out_half_a_window_late_and_the_height_is_th
                     assert!(t.skeleton.stamp_nanos > last, "out of order");
                     last = t.skeleton.stamp_nanos;
                     assert!(t.assessment.is_ok());
-                    classes.extend(t.height.as_ref().map(|d| d.class));
                     released += 1;
                 }
             }

@@ -303,7 +303,7 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         None => None,
     };
     for (i, skeleton) in frames.iter().enumerate() {
-        let tracked = stage.process(skeleton, skeleton.clone());
+        let tracked = stage.score(skeleton.clone());
         let frame = tracked
             .assessment
             .map_err(|e| UsageError(format!("{}: frame {i}: {e}", args.landmarks.display())))?;

@@ -410,19 +410,25 @@ impl SessionMachine {
                 .map_or(output.stamp_nanos, |s| s.max(output.stamp_nanos)),
         );
         self.summary.frames_fused += 1;
-        for tracked in output.tracked {
+        if let Some(operator) = &output.operator {
             self.summary.frames_tracked += 1;
-            if let Some(hips) = mid_hip(&tracked.skeleton) {
-                self.last_tracked = Some((tracked.skeleton.stamp_nanos, hips));
+            if let Some(hips) = mid_hip(operator) {
+                self.last_tracked = Some((output.stamp_nanos, hips));
             }
-            self.on_tracked_frame(now_nanos, tracked, events);
+            self.on_operator(now_nanos, operator, output.height, events);
+        }
+        // RULA, with a fixed lag of earlier frames (`PipelineConfig::fixed_lag_s`).
+        for scored in output.tracked {
+            self.on_scored_frame(scored, events);
         }
     }
 
-    fn on_tracked_frame(
+    /// The operator tracked in this frame: the session starts, the height decision, the part.
+    fn on_operator(
         &mut self,
         now_nanos: i64,
-        tracked: TrackedFrame,
+        skeleton: &Skeleton3,
+        height: Option<HeightDecision>,
         events: &mut Vec<SessionEvent>,
     ) {
         if self.state == SessionState::WaitingForOperator {
@@ -436,11 +442,14 @@ impl SessionMachine {
         }
         // The pipeline measures the height on the unfiltered skeleton until its first decision,
         // which is final: the class is decided at session start only.
-        if let (SessionState::MeasuringHeight, Some(decision)) = (self.state, tracked.height) {
+        if let (SessionState::MeasuringHeight, Some(decision)) = (self.state, height) {
             self.on_height_decided(now_nanos, decision, events);
         }
-        self.watch_part(&tracked.skeleton);
-        // RULA in every state once an operator is tracked.
+        self.watch_part(skeleton);
+    }
+
+    /// A tracked frame scored: RULA in every state once an operator is tracked.
+    fn on_scored_frame(&mut self, tracked: TrackedFrame, events: &mut Vec<SessionEvent>) {
         for w in tracked.warnings {
             if w.kind == WarningKind::Raised {
                 self.summary.warnings_raised += 1;
