@@ -105,10 +105,10 @@ fn bad_camera_arguments_are_usage_errors() {
         assert!(!status.success(), "{cameras}");
     }
     // the fixed-lag smoother is an option of rula-agreement only, and takes a half window in
-    // (0, 60] seconds
+    // (0, 60] seconds or 0 (off)
     for args in [
         &["height", "--fixed-lag-s", "0.5"][..],
-        &["rula-agreement", "--fixed-lag-s", "0"],
+        &["rula-agreement", "--fixed-lag-s", "-1"],
         &["rula-agreement", "--fixed-lag-s", "nan"],
         &["rula-agreement", "--fixed-lag-s", "61"],
     ] {

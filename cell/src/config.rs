@@ -525,7 +525,7 @@ struct PipelineFile {
     /// skeleton and taken out of its views (`perception::view_offset`); 0 = off.
     view_offset_time_constant_s: f64,
     /// RULA on each frame's mean over ± this many seconds in place of the causal filter, every
-    /// score and warning that much later (`perception::fixed_lag`); 0 = off (the default).
+    /// score and warning that much later (`perception::fixed_lag`); 0 = off: the causal filter.
     fixed_lag_s: f64,
 }
 
@@ -549,7 +549,7 @@ impl Default for PipelineFile {
             view_offset_time_constant_s: p
                 .view_offsets
                 .map_or(0.0, |v| v.time_constant_nanos as f64 * 1e-9),
-            fixed_lag_s: 0.0,
+            fixed_lag_s: crate::pipeline::DEFAULT_FIXED_LAG_S,
         }
     }
 }
@@ -815,14 +815,16 @@ mod tests {
         assert_eq!(p.warnings.dwell_nanos, 1_000_000_000);
         assert_eq!(p.height.thresholds.c1_below_m(), 1.65);
         assert_eq!(p.assessment.smoothing_window_nanos, 0);
-        // no fixed lag unless asked; asked, in seconds
-        assert_eq!(p.fixed_lag_s, None);
-        let lagged = SHIPPED.replace(
-            "\n[station]\n",
-            "\n[pipeline]\nfixed_lag_s = 0.55\n\n[station]\n",
-        );
-        let s = CellSettings::from_toml_str(&lagged, "cell.toml").unwrap();
-        assert_eq!(s.pipeline(UpVector::z()).unwrap().fixed_lag_s, Some(0.55));
+        // the fixed lag by default; 0 turns it off, another value sets it
+        assert_eq!(p.fixed_lag_s, Some(0.55));
+        for (value, lag) in [("0", None), ("0.3", Some(0.3))] {
+            let text = SHIPPED.replace(
+                "\n[station]\n",
+                &format!("\n[pipeline]\nfixed_lag_s = {value}\n\n[station]\n"),
+            );
+            let s = CellSettings::from_toml_str(&text, "cell.toml").unwrap();
+            assert_eq!(s.pipeline(UpVector::z()).unwrap().fixed_lag_s, lag);
+        }
     }
 
     #[test]

@@ -1096,9 +1096,8 @@ pub struct Agreement {
 /// Result of [`rula_agreement`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RulaAgreement {
-    /// The pipeline ran with a fixed-lag smoother of this many seconds either side
-    /// ([`PipelineConfig::fixed_lag_s`], [`rula_agreement_with`]); absent: the causal filter, the
-    /// controller's default.
+    /// The pipeline scored on a fixed-lag smoother of this many seconds either side
+    /// ([`PipelineConfig::fixed_lag_s`], the controller's default); absent: on the causal filter.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fixed_lag_s: Option<f64>,
     pub grand_score: Agreement,
@@ -1174,9 +1173,10 @@ pub fn rula_agreement(
     rula_agreement_with(setup, handovers, statures_m, cycles, None, progress)
 }
 
-/// [`rula_agreement`] on the controller's pipeline with a fixed lag of `fixed_lag_s` seconds
+/// [`rula_agreement`] on the controller's pipeline with its fixed lag set to `fixed_lag_s` seconds
 /// ([`PipelineConfig::fixed_lag_s`]: no causal filter; each tracked frame scored and warned about on
-/// its mean over the half window either side, that much later); `None`: the defaults.
+/// its mean over the half window either side, that much later); `Some(0.0)`: the causal filter
+/// instead; `None`: the controller's default.
 pub fn rula_agreement_with(
     setup: &Setup,
     handovers: &Handovers,
@@ -1185,6 +1185,12 @@ pub fn rula_agreement_with(
     fixed_lag_s: Option<f64>,
     progress: Progress<'_>,
 ) -> Result<RulaAgreement, SimError> {
+    let mut config = PipelineConfig::new(up()?);
+    match fixed_lag_s {
+        Some(0.0) => config.fixed_lag_s = None,
+        Some(w) => config.fixed_lag_s = Some(w),
+        None => {}
+    }
     let mut grand = vec![vec![0usize; 7]; 7];
     let mut level = vec![vec![0usize; 4]; 4];
     let mut frames = 0;
@@ -1206,9 +1212,7 @@ pub fn rula_agreement_with(
         }
         // (tick index, the pipeline's headline) of every tracked frame
         let mut scores: Vec<(usize, Option<Scored>)> = Vec::new();
-        let mut config = PipelineConfig::new(up()?);
-        config.fixed_lag_s = fixed_lag_s;
-        run_pipeline_with(setup, config, &ticks, |k, tracked| {
+        run_pipeline_with(setup, config.clone(), &ticks, |k, tracked| {
             raised += tracked
                 .warnings
                 .iter()
@@ -1260,7 +1264,7 @@ pub fn rula_agreement_with(
         }
     };
     Ok(RulaAgreement {
-        fixed_lag_s,
+        fixed_lag_s: config.fixed_lag_s,
         grand_score: agreement(grand),
         action_level: agreement(level),
         region_names: BodyRegion::ALL

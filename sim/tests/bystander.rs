@@ -14,10 +14,6 @@ use ergocell_sim::{Bystander, Operator, SessionScript, SimConfig, Simulation};
 use ergocell_skeleton::Landmark;
 use nalgebra::Point3;
 
-fn frame_stamp(frame: &ergocell_cell::TrackedFrame) -> i64 {
-    frame.skeleton.stamp_nanos
-}
-
 fn reference_rig() -> CameraRig {
     parse_rig(include_str!("../../config/rig.toml"), "config/rig.toml")
         .unwrap()
@@ -76,15 +72,17 @@ fn session(seed: u64, cameras: u64, gate: bool) -> Outcome {
     let mut p = pipeline(rig, gate);
     for (i, tick) in ticks.iter().enumerate() {
         for output in p.push_views(tick.frame.stamp_nanos, tick.frame.views.clone()) {
-            for frame in output.unwrap().tracked {
+            let output = output.unwrap();
+            // the operator as fused in this frame (RULA's smoothed frames come later)
+            if let Some(operator) = &output.operator {
                 // frames are released at most a few ticks late: compare with the nearest truth
                 let j = (0..=i)
                     .rev()
                     .take(5)
-                    .min_by_key(|&j| (ticks[j].frame.stamp_nanos - frame_stamp(&frame)).abs())
+                    .min_by_key(|&j| (ticks[j].frame.stamp_nanos - operator.stamp_nanos).abs())
                     .unwrap_or(i);
                 let (Some(fused), Some(truth)) =
-                    (mid_hip(&frame.skeleton), mid_hip(&ticks[j].truth.skeleton))
+                    (mid_hip(operator), mid_hip(&ticks[j].truth.skeleton))
                 else {
                     continue;
                 };

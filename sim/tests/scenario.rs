@@ -344,9 +344,13 @@ fn retargeting_moves_the_cycles_not_yet_begun_by_the_shift() {
 fn the_fixed_lag_smoother_scores_the_same_frames_and_says_so() {
     use ergocell_sim::experiments::{rula_agreement, rula_agreement_with};
     let mut none = |_: usize, _: usize| {};
-    let live = rula_agreement(&setup(3), &handovers(), &[1.7], 1, &mut none).unwrap();
+    let live =
+        rula_agreement_with(&setup(3), &handovers(), &[1.7], 1, Some(0.0), &mut none).unwrap();
     let lagged =
         rula_agreement_with(&setup(3), &handovers(), &[1.7], 1, Some(0.5), &mut none).unwrap();
+    // the controller's default is the fixed lag
+    let default = rula_agreement(&setup(3), &handovers(), &[1.7], 1, &mut none).unwrap();
+    assert_eq!(default.fixed_lag_s, Some(0.55));
     assert_eq!(live.fixed_lag_s, None);
     assert_eq!(lagged.fixed_lag_s, Some(0.5));
     assert!(

@@ -113,9 +113,9 @@ pub struct Common {
     /// independent). A rig of cameras far apart cannot measure it.
     #[arg(long, global = true, default_value_t = 0.0)]
     pub view_correlation_deg: f64,
-    /// rula-agreement: run the controller with a fixed-lag smoother of this many seconds either
-    /// side (`[pipeline] fixed_lag_s`: each frame scored on the fused skeleton's mean over the
-    /// window centred on it, instead of the causal One-Euro filter), at that latency.
+    /// rula-agreement: the controller's fixed-lag smoother with this many seconds either side
+    /// (`[pipeline] fixed_lag_s`, default 0.55: each frame scored on the fused skeleton's mean over
+    /// the window centred on it, at that latency); 0: the causal One-Euro filter instead.
     #[arg(long, global = true, value_name = "SECONDS")]
     pub fixed_lag_s: Option<f64>,
     /// Print the numbers as one JSON object on stdout instead of a table.
@@ -216,8 +216,12 @@ fn detector_label(c: &Common) -> String {
         None => format!("{} px", c.noise_px),
     };
     match c.fixed_lag_s {
+        Some(0.0) => format!("{detector}, the causal filter (no fixed lag)"),
         Some(w) => format!("{detector}, a fixed-lag smoother of ±{w} s"),
-        None => detector,
+        None => format!(
+            "{detector}, the controller's fixed lag of ±{} s",
+            ergocell_cell::pipeline::DEFAULT_FIXED_LAG_S
+        ),
     }
 }
 
@@ -588,8 +592,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 UsageError("--fixed-lag-s applies to rula-agreement only".to_owned()).into(),
             );
         }
-        ergocell_perception::fixed_lag::half_window_nanos(w)
-            .map_err(|e| UsageError(format!("--fixed-lag-s: {e}")))?;
+        if w != 0.0 {
+            ergocell_perception::fixed_lag::half_window_nanos(w)
+                .map_err(|e| UsageError(format!("--fixed-lag-s: {e} (0: the causal filter)")))?;
+        }
     }
     if matches!(args.experiment, Experiment::HandoverRula) {
         return run_handover_rula(c);
