@@ -172,24 +172,7 @@ fn demo_refuses_a_missing_explicit_path_and_a_typo_in_the_cell_file() {
     let err = String::from_utf8_lossy(&missing.stderr);
     assert!(err.contains("no-such-rig.toml"), "{err}");
 
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let shipped = std::fs::read_to_string(root.join("config/cell.toml")).unwrap();
-    let cell = dir.0.join("cell.toml");
-    std::fs::write(
-        &cell,
-        shipped.replace(
-            "\n[station]\n",
-            "\n[session]\nexit_radius = 1.5\n\n[station]\n",
-        ),
-    )
-    .unwrap();
-    // The URDF is found beside the cell file.
-    std::fs::create_dir_all(dir.0.join("robots")).unwrap();
-    std::fs::copy(
-        root.join("config/robots/iiwa14_r820.urdf"),
-        dir.0.join("robots/iiwa14_r820.urdf"),
-    )
-    .unwrap();
+    write_cell(&dir.0, "[session]\nexit_radius = 1.5");
     let typo = Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(&dir.0)
         .args(["demo", "--cell", "cell.toml"])
@@ -331,6 +314,24 @@ fn a_bumped_cameras_partner_is_not_flagged_and_the_bumped_camera_is_not_restored
     );
 }
 
+/// `dir/cell.toml`: the shipped cell file with `table` added before `[station]`, and the URDF it
+/// names beside it (it is found relative to the cell file).
+fn write_cell(dir: &Path, table: &str) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let shipped = std::fs::read_to_string(root.join("config/cell.toml")).unwrap();
+    std::fs::write(
+        dir.join("cell.toml"),
+        shipped.replace("\n[station]\n", &format!("\n{table}\n\n[station]\n")),
+    )
+    .unwrap();
+    std::fs::create_dir_all(dir.join("robots")).unwrap();
+    std::fs::copy(
+        root.join("config/robots/iiwa14_r820.urdf"),
+        dir.join("robots/iiwa14_r820.urdf"),
+    )
+    .unwrap();
+}
+
 fn demo_in(dir: &Path, args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(dir)
@@ -453,22 +454,8 @@ fn demo_plays_a_fault_schedule_from_a_file() {
 #[test]
 fn a_cell_with_a_fixed_lag_serves_the_operator_as_without_it() {
     let dir = Scratch::new("demo-fixed-lag");
+    write_cell(&dir.0, "[pipeline]\nfixed_lag_s = 0.55");
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let shipped = std::fs::read_to_string(root.join("config/cell.toml")).unwrap();
-    std::fs::write(
-        dir.0.join("cell.toml"),
-        shipped.replace(
-            "\n[station]\n",
-            "\n[pipeline]\nfixed_lag_s = 0.55\n\n[station]\n",
-        ),
-    )
-    .unwrap();
-    std::fs::create_dir_all(dir.0.join("robots")).unwrap();
-    std::fs::copy(
-        root.join("config/robots/iiwa14_r820.urdf"),
-        dir.0.join("robots/iiwa14_r820.urdf"),
-    )
-    .unwrap();
     let trajectories = root.join("trajectories");
     let run = demo_in(
         &dir.0,

@@ -576,20 +576,8 @@ fn rula_track_fixed_lag_scores_the_held_posture_not_the_jitter() {
     assert_eq!(smoothed.len(), 40, "every frame scored");
     assert!(smoothed.iter().all(|s| *s == 2), "{smoothed:?}");
 
-    let (code, stdout, stderr) = ergocell(&[
-        "rula",
-        "track",
-        "--landmarks",
-        p,
-        "--up",
-        "0,0,1",
-        "--fixed-lag-s",
-        "0.5",
-    ]);
-    assert_eq!(code, 0, "{stderr}");
-    assert!(stdout.contains("over ±0.5 s of each frame"), "{stdout}");
-    for bad in ["0", "nan", "61"] {
-        let (code, _, stderr) = ergocell(&[
+    let with_lag = |seconds: &str| {
+        ergocell(&[
             "rula",
             "track",
             "--landmarks",
@@ -597,8 +585,14 @@ fn rula_track_fixed_lag_scores_the_held_posture_not_the_jitter() {
             "--up",
             "0,0,1",
             "--fixed-lag-s",
-            bad,
-        ]);
+            seconds,
+        ])
+    };
+    let (code, stdout, stderr) = with_lag("0.5");
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("over ±0.5 s of each frame"), "{stdout}");
+    for bad in ["0", "nan", "61"] {
+        let (code, _, stderr) = with_lag(bad);
         assert_eq!(code, 2, "--fixed-lag-s {bad}: {stderr}");
         assert!(stderr.contains("--fixed-lag-s"), "{stderr}");
     }

@@ -77,11 +77,6 @@ impl FixedLagSmoother {
         })
     }
 
-    /// The half window, nanoseconds.
-    pub fn half_window_nanos(&self) -> i64 {
-        self.half_window_nanos
-    }
-
     /// A new frame; returns the frames (smoothed, in time order) whose window it closed: those more
     /// than the half window older than it. A frame older than the last one is not taken (time
     /// went backwards; the next frames close the window as usual).
@@ -136,16 +131,18 @@ impl FixedLagSmoother {
         }
     }
 
-    /// Frame `n` of `frames` on its window.
+    /// Frame `n` of `frames` on its window: the frames (in time order) within the half window of
+    /// its stamp, a contiguous run.
     fn smoothed(&self, n: usize) -> Skeleton3 {
         let mut out = self.frames[n].clone();
         let centre = out.stamp_nanos;
-        let w = self.half_window_nanos.unsigned_abs();
-        let near: Vec<&Skeleton3> = self
+        let w = self.half_window_nanos;
+        let lo = self
             .frames
-            .iter()
-            .filter(|f| f.stamp_nanos.abs_diff(centre) <= w)
-            .collect();
+            .partition_point(|f| f.stamp_nanos < centre.saturating_sub(w));
+        let hi = self
+            .frames
+            .partition_point(|f| f.stamp_nanos <= centre.saturating_add(w));
         for landmark in Landmark::ALL {
             if NOT_AVERAGED.contains(&landmark) {
                 continue;
@@ -153,8 +150,9 @@ impl FixedLagSmoother {
             let Some(mut estimate) = out.get(landmark).copied() else {
                 continue;
             };
-            let (sum, count) = near
-                .iter()
+            let (sum, count) = self
+                .frames
+                .range(lo..hi)
                 .filter_map(|f| f.position(landmark))
                 .fold((Vector3::zeros(), 0u32), |(s, c), p| (s + p.coords, c + 1));
             // count ≥ 1: the centre frame observed it
@@ -166,12 +164,28 @@ impl FixedLagSmoother {
     }
 }
 
+/// Why a sequence could not be smoothed.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum FixedLagError {
+    #[error(transparent)]
+    BadHalfWindow(#[from] BadHalfWindow),
+    /// The live smoother skips a frame from the past; a whole sequence must not have one.
+    #[error("frame {index}: its stamp is earlier than the frame before it (time went backwards)")]
+    OutOfOrder { index: usize },
+}
+
 /// A whole sequence (in time order) smoothed at once: every frame on its window of ±`half_window_s`,
 /// as [`FixedLagSmoother`] releases them live.
 pub fn centered_mean(
     frames: &[Skeleton3],
     half_window_s: f64,
-) -> Result<Vec<Skeleton3>, BadHalfWindow> {
+) -> Result<Vec<Skeleton3>, FixedLagError> {
+    if let Some(index) = frames
+        .windows(2)
+        .position(|w| w[1].stamp_nanos < w[0].stamp_nanos)
+    {
+        return Err(FixedLagError::OutOfOrder { index: index + 1 });
+    }
     let mut smoother = FixedLagSmoother::new(half_window_s)?;
     let mut out = Vec::with_capacity(frames.len());
     for f in frames {
@@ -264,7 +278,9 @@ mod tests {
             assert_eq!(x(f), if i < 10 { 0.0 } else { 1.0 }, "frame {i}");
         }
         for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 61.0] {
-            let e = centered_mean(&gap, bad).unwrap_err();
+            let Err(FixedLagError::BadHalfWindow(e)) = centered_mean(&gap, bad) else {
+                panic!("{bad} accepted");
+            };
             assert!(e.0 == bad || (e.0.is_nan() && bad.is_nan()), "{e}");
         }
     }
@@ -301,6 +317,12 @@ mod tests {
         assert!(live.push(frames[10].clone()).is_empty());
         assert!(live.push(frames[5].clone()).is_empty());
         assert_eq!(live.flush().len(), 1);
+        // offline, a frame from the past is an error, not a frame left out
+        let backwards = [frames[10].clone(), frames[5].clone()];
+        assert_eq!(
+            centered_mean(&backwards, 0.5),
+            Err(FixedLagError::OutOfOrder { index: 1 })
+        );
     }
 
     #[test]
