@@ -141,7 +141,8 @@ for n in ["secure", "open", "foreign", "other", "liar", "plain"]:
     print(f"{n}: peer says {read(n + '.peer').strip()!r}; run counted {rejected(n)} of its messages; "
           f"sniffer {sniff(n)}")
 # A run that did not end by itself (timeout's 124, or 137 after its SIGKILL) is reported with its
-# log's end: seen once in CI (case "other", 2 cores), not reproduced in three local runs.
+# log's end (a RustDDS lock-order inversion hung a run this way in CI, twice; fixed in the vendored
+# copy, vendor/rustdds/ERGOCELL-PATCH.md, seventh fix).
 for n in ["secure", "open", "foreign", "other", "liar", "plain"]:
     m = re.search(r"run exit (\d+)", read(n + ".run"))
     if m and m.group(1) in ("124", "137"):

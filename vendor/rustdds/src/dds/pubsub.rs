@@ -563,9 +563,14 @@ impl InnerPublisher {
     if let Some(sec_handle) = self.security_plugins_handle.as_ref() {
       // Security is enabled.
       // Check are we allowed to create the DataWriter from Access control
+      // ERGOCELL-PATCH: the domain id is read before the plugins' lock is taken. As an argument it
+      // was evaluated with the lock held, and `domain_id()` locks the participant (`dpi`), which
+      // `DomainParticipant::create_topic` holds while it takes the plugins' lock: a lock-order
+      // inversion that deadlocked a secured participant at start-up.
+      let domain_id = dp.domain_id();
       let check_res = sec_handle.get_plugins().check_create_datawriter(
         guid.prefix,
-        dp.domain_id(),
+        domain_id,
         topic.name(),
         &writer_qos,
       );
@@ -1178,9 +1183,12 @@ impl InnerSubscriber {
     if let Some(sec_handle) = self.security_plugins_handle.as_ref() {
       // Security is enabled.
       // Check are we allowed to create the DataReader from Access control
+      // ERGOCELL-PATCH: the domain id is read before the plugins' lock is taken (see
+      // `create_datawriter`).
+      let domain_id = dp.domain_id();
       let check_res = sec_handle.get_plugins().check_create_datareader(
         reader_guid.prefix,
-        dp.domain_id(),
+        domain_id,
         topic.name(),
         &qos,
       );

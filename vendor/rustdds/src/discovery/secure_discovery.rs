@@ -236,11 +236,13 @@ impl SecureDiscovery {
     }
     info!("Completed setting local crypto tokens as remote tokens");
 
+    // ERGOCELL-PATCH: the plugins' lock is released before the discovery DB is written (the event
+    // loop takes them in the opposite order).
+    drop(plugins); // Drop plugins so that they can be moved to self
+
     // Set ourself as authenticated
     discovery_db_write(discovery_db)
       .update_authentication_status(participant_guid_prefix, AuthenticationStatus::Authenticated);
-
-    drop(plugins); // Drop plugins so that they can be moved to self
 
     Ok(Self {
       security_plugins,
@@ -2528,13 +2530,16 @@ impl SecureDiscovery {
     remote_guid_prefix: GuidPrefix,
     discovery_db: &Arc<RwLock<DiscoveryDB>>,
   ) -> SecurityResult<()> {
-    let mut sec_plugins = self.security_plugins.get_plugins();
-
     // Get PermissionsToken
+    // ERGOCELL-PATCH: read from the discovery DB before the plugins' lock is taken. The event loop
+    // holds a DB read guard while it sends (which takes the plugins' lock); holding the plugins
+    // while waiting on the DB is the opposite order.
     let permissions_token = discovery_db_read(discovery_db)
       .find_participant_proxy(remote_guid_prefix)
       .and_then(|data| data.permissions_token.clone())
       .ok_or_else(|| security_error("Could not get PermissionsToken from DiscoveryDB"))?;
+
+    let mut sec_plugins = self.security_plugins.get_plugins();
 
     // Get AuthenticatedPeerCredentialToken
     let auth_credential_token =
