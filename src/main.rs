@@ -80,6 +80,8 @@ enum Command {
     Review(commands::review::Args),
     /// The offline review as one self-contained HTML file (`--compare` for two sessions).
     Report(commands::review::ReportArgs),
+    /// Exposure over many recordings: per operator, day and week, task segment and robot class.
+    Exposure(commands::exposure::Args),
     /// The seed paper's experiments on the digital twin: table1, adaptation, height, rula-agreement.
     Sim(commands::sim::Args),
     /// DDS Security (SROS2): create the cell's keystore and enclaves.
@@ -124,6 +126,7 @@ fn main() -> std::process::ExitCode {
         Command::Sim(args) => commands::sim::run(&args),
         Command::Review(args) => commands::review::run(&args),
         Command::Report(args) => commands::review::report(&args),
+        Command::Exposure(args) => commands::exposure::run(&args),
         Command::Security(args) => commands::security::run(&args),
     };
     match result {

@@ -5,7 +5,8 @@
 //!   text for recordings.
 //! - [`cdr`]: the ROS 2 wire payload (XCDR1, little-endian, 4-byte encapsulation header).
 //! - [`qos`]: the QoS of every topic and why.
-//! - [`topics`]: the topic names (the `[ros]` defaults and every recording's).
+//! - [`topics`]: the topic names (the `[ros]` defaults and every recording's);
+//!   [`session_info`]: the operator's pseudonymous id a recording carries.
 //! - [`transport`]: the `ros2-client` node, the cell's topics and the `[ros]` config table.
 //! - [`action`]: control_msgs' FollowJointTrajectory (goal, result, both Feedback layouts);
 //!   [`controller`]: the task that runs each goal on the controller and reports what it said.
@@ -23,6 +24,7 @@ pub mod qos;
 pub mod scope;
 #[cfg(feature = "transport")]
 pub mod security;
+pub mod session_info;
 pub mod topics;
 #[cfg(feature = "transport")]
 pub mod transport;

@@ -152,6 +152,8 @@ pub struct SessionSummary {
     pub reba_score: Vec<GrandScoreShare>,
     /// Share of REBA-scored time at REBA action level 0..=4 (the side with the higher REBA score).
     pub reba_action_level_share: [f64; 5],
+    /// The REBA-scored time, seconds (the denominator of those shares).
+    pub reba_scored_secs: f64,
     /// That side's REBA action level at least 2 (medium), 3 (high) and 4 (very high): episodes,
     /// longest stretch, total time.
     pub reba_action_level_exposure: Vec<Exposure>,
@@ -182,6 +184,8 @@ pub struct PhaseSummary {
     pub action_level_exposure: Vec<Exposure>,
     /// Share of the phase's REBA-scored time at REBA action level 0..=4 (all zero without REBA).
     pub reba_action_level_share: [f64; 5],
+    /// The phase's REBA-scored time, seconds.
+    pub reba_scored_secs: f64,
     /// The highest grand score (either side) in the phase; `None` when never scored.
     pub peak_grand_score: Option<u8>,
 }
@@ -413,6 +417,7 @@ impl PhaseTally {
             action_level_share: self.level.map(|x| share(x, scored)),
             action_level_exposure: self.runs.exposure(4),
             reba_action_level_share: self.reba_level.map(|x| share(x, self.reba_scored)),
+            reba_scored_secs: self.reba_scored * 1e-9,
             peak_grand_score: self.peak,
         }
     }
@@ -610,6 +615,7 @@ impl SummaryBuilder {
                 })
                 .collect(),
             reba_action_level_share: reba_level.map(|x| share(x, reba_scored)),
+            reba_scored_secs: reba_scored * 1e-9,
             reba_action_level_exposure: if reba_scored > 0.0 {
                 reba_runs.exposure(4)
             } else {

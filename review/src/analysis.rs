@@ -277,7 +277,7 @@ fn scored(s: &RulaSide) -> Option<&RulaSide> {
 }
 
 /// A recorded side as the summary reads it, with its REBA when recorded; `None` when not scored.
-fn scored_side(s: &RulaSide, reba: Option<&RebaSide>) -> Option<ScoredSide> {
+pub(crate) fn scored_side(s: &RulaSide, reba: Option<&RebaSide>) -> Option<ScoredSide> {
     let reba = reba.filter(|r| r.scored).map(|r| RebaBrief {
         reba_score: r.reba_score,
         action_level: r.action_level,
@@ -340,11 +340,11 @@ fn round_to(v: f64, decimals: u8) -> f64 {
 }
 
 /// Seconds of `t` after `t0`.
-fn secs(t: u64, t0: u64) -> f64 {
+pub(crate) fn secs(t: u64, t0: u64) -> f64 {
     t.saturating_sub(t0) as f64 * 1e-9
 }
 
-fn finite(x: f64) -> Option<f64> {
+pub(crate) fn finite(x: f64) -> Option<f64> {
     x.is_finite().then_some(x)
 }
 
@@ -384,25 +384,7 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         let m = &p.message;
         let t = stamp(&m.header);
         let act = skeleton_of(m, t).and_then(|sk| activity.as_mut().and_then(|a| a.update(&sk)));
-        let angle = |name: &str| {
-            m.angle_names
-                .iter()
-                .position(|n| n == name)
-                .and_then(|k| m.angle_rad.get(k).copied())
-                .and_then(finite)
-        };
-        by_stamp.insert(
-            t,
-            FrameFacts {
-                phase: phase_of(act, secs(t, t0), &handovers),
-                trunk_flexion_rad: angle("trunk_flexion"),
-                neck_flexion_rad: angle("neck_flexion"),
-                upper_arm_elevation_rad: [
-                    angle("left_upper_arm_elevation"),
-                    angle("right_upper_arm_elevation"),
-                ],
-            },
-        );
+        by_stamp.insert(t, frame_facts(m, phase_of(act, secs(t, t0), &handovers)));
     }
     let mut frames = Frames::default();
     let mut malformed = 0usize;
@@ -491,23 +473,22 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
 
     // Regions over the scored time of the recording (every ErgonomicState, whether or not its
     // pose was recorded), summarised as `ergocell rula track` does.
-    let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
-    for e in &ergonomics {
-        let e = &e.message;
-        let t = stamp(&e.header);
-        let r = reba_at(t);
-        let facts = by_stamp.get(&t).copied().unwrap_or_default();
-        summary.push(SummaryFrame {
-            stamp_nanos: e.header.stamp.to_nanos(),
-            left: scored_side(&e.left, r.map(|r| &r.left)),
-            right: scored_side(&e.right, r.map(|r| &r.right)),
-            phase: facts.phase,
-            trunk_flexion_rad: facts.trunk_flexion_rad,
-            neck_flexion_rad: facts.neck_flexion_rad,
-            upper_arm_elevation_rad: facts.upper_arm_elevation_rad,
-        });
-    }
-    let summary = summary.finish();
+    let summary = summarise(
+        ergonomics.iter().map(|e| {
+            let e = &e.message;
+            let t = stamp(&e.header);
+            let r = reba_at(t);
+            (
+                t,
+                ScoredFrame {
+                    stamp_nanos: e.header.stamp.to_nanos(),
+                    left: scored_side(&e.left, r.map(|r| &r.left)),
+                    right: scored_side(&e.right, r.map(|r| &r.right)),
+                },
+            )
+        }),
+        |t| by_stamp.get(&t).copied().unwrap_or_default(),
+    );
     let regions = region_rows(&summary);
 
     let angles = angle_samples
@@ -554,13 +535,66 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
     }
 }
 
+/// One recorded frame's scores as the summary reads them (REBA attached to its side).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ScoredFrame {
+    pub(crate) stamp_nanos: i64,
+    pub(crate) left: Option<ScoredSide>,
+    pub(crate) right: Option<ScoredSide>,
+}
+
+/// The session summary of scored frames (by capture stamp, in time order), each with what its pose
+/// says ([`FrameFacts`]): the one computation behind the review's rows and `ergocell exposure`.
+pub(crate) fn summarise(
+    frames: impl Iterator<Item = (u64, ScoredFrame)>,
+    facts_at: impl Fn(u64) -> FrameFacts,
+) -> SessionSummary {
+    let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+    for (t, f) in frames {
+        let facts = facts_at(t);
+        summary.push(SummaryFrame {
+            stamp_nanos: f.stamp_nanos,
+            left: f.left,
+            right: f.right,
+            phase: facts.phase,
+            trunk_flexion_rad: facts.trunk_flexion_rad,
+            neck_flexion_rad: facts.neck_flexion_rad,
+            upper_arm_elevation_rad: facts.upper_arm_elevation_rad,
+        });
+    }
+    summary.finish()
+}
+
+/// A recorded pose's facts: its task segment and the angles ISO 11226 judges.
+pub(crate) fn frame_facts(
+    m: &ergocell_bridge::msg::OperatorPose,
+    phase: Option<&'static str>,
+) -> FrameFacts {
+    let angle = |name: &str| {
+        m.angle_names
+            .iter()
+            .position(|n| n == name)
+            .and_then(|k| m.angle_rad.get(k).copied())
+            .and_then(finite)
+    };
+    FrameFacts {
+        phase,
+        trunk_flexion_rad: angle("trunk_flexion"),
+        neck_flexion_rad: angle("neck_flexion"),
+        upper_arm_elevation_rad: [
+            angle("left_upper_arm_elevation"),
+            angle("right_upper_arm_elevation"),
+        ],
+    }
+}
+
 /// What a frame's pose says beyond its scores: its task segment and the angles ISO 11226 judges.
 #[derive(Debug, Clone, Copy, Default)]
-struct FrameFacts {
-    phase: Option<&'static str>,
-    trunk_flexion_rad: Option<f64>,
-    neck_flexion_rad: Option<f64>,
-    upper_arm_elevation_rad: [Option<f64>; 2],
+pub(crate) struct FrameFacts {
+    pub(crate) phase: Option<&'static str>,
+    pub(crate) trunk_flexion_rad: Option<f64>,
+    pub(crate) neck_flexion_rad: Option<f64>,
+    pub(crate) upper_arm_elevation_rad: [Option<f64>; 2],
 }
 
 /// The task segment names of the review, in precedence order: walking and floor pick from the
@@ -571,7 +605,11 @@ pub const PHASES: [&str; 4] = ["walking", "floor pick", "handover", "in place"];
 /// ([`ergocell_ergonomics::activity`]); otherwise a handover while the robot brings a part or waits
 /// with it (from a `home → handover` leg's start to the next leg's start), otherwise in place.
 /// `None` when the skeleton had no hips.
-fn phase_of(activity: Option<Activity>, t: f64, handovers: &[(f64, f64)]) -> Option<&'static str> {
+pub(crate) fn phase_of(
+    activity: Option<Activity>,
+    t: f64,
+    handovers: &[(f64, f64)],
+) -> Option<&'static str> {
     Some(match activity? {
         Activity::Walking => PHASES[0],
         Activity::FloorPick => PHASES[1],
@@ -583,14 +621,16 @@ fn phase_of(activity: Option<Activity>, t: f64, handovers: &[(f64, f64)]) -> Opt
 /// The times the robot brought a part and waited with it: each `home → handover` leg's start to the
 /// start of the leg after it (or the leg's end when it is the last), seconds.
 fn handover_spans(robot: &Robot) -> Vec<(f64, f64)> {
-    robot
-        .legs
-        .iter()
+    handover_spans_of(&robot.legs)
+}
+
+/// [`handover_spans`] of a leg list.
+pub(crate) fn handover_spans_of(legs: &[RobotLeg]) -> Vec<(f64, f64)> {
+    legs.iter()
         .enumerate()
         .filter(|(_, l)| l.leg_id == ControllerEvent::LEG_TO_HANDOVER)
         .map(|(k, l)| {
-            let end = robot
-                .legs
+            let end = legs
                 .get(k + 1)
                 .map_or(l.t_end, |next| next.t_start)
                 .max(l.t_start);
@@ -600,7 +640,7 @@ fn handover_spans(robot: &Robot) -> Vec<(f64, f64)> {
 }
 
 /// The skeleton of a recorded pose (NaN landmarks left out), or `None` when it is malformed.
-fn skeleton_of(m: &ergocell_bridge::msg::OperatorPose, t: u64) -> Option<Skeleton3> {
+pub(crate) fn skeleton_of(m: &ergocell_bridge::msg::OperatorPose, t: u64) -> Option<Skeleton3> {
     if m.x.len() != LANDMARK_COUNT || m.y.len() != LANDMARK_COUNT || m.z.len() != LANDMARK_COUNT {
         return None;
     }
@@ -841,7 +881,7 @@ fn parts_taken(states: &[Stamped<SessionState>], t0: u64) -> Vec<PartTaken> {
 
 /// A part taken, as the reason of a session state recorded before the states carried it as fields
 /// said it: `part N taken: the operator's <hand> hand came to <d> m of …`.
-fn legacy_part_from_reason(reason: &str) -> Option<(u32, Option<String>, Option<f64>)> {
+pub(crate) fn legacy_part_from_reason(reason: &str) -> Option<(u32, Option<String>, Option<f64>)> {
     let (part, rest) = reason
         .strip_prefix("part ")
         .and_then(|r| r.split_once(' '))
@@ -932,7 +972,7 @@ struct LegDraft {
 /// `failed`, `no_response`) event; else at a hold or the next leg sent before its planned end; else
 /// as planned (`end_known` false: nothing reported it, e.g. `demo`'s in-process robot). Feedback is
 /// folded into its leg (count, largest error), not listed.
-fn robot_legs(
+pub(crate) fn robot_legs(
     commands: &[Stamped<JointTrajectory>],
     events: &[Stamped<ControllerEvent>],
     t0: u64,

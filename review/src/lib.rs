@@ -4,10 +4,12 @@
 //! distribution of every joint angle and the session facts (height, class, locked trajectory,
 //! approvers).
 //!
-//! - [`read`]: an MCAP recording (bytes) → the ergocell messages in it. A file cut short (a crash, a
+//! - [`read`]: an MCAP recording (bytes, or streamed from a reader) → the ergocell messages in it. A file cut short (a crash, a
 //!   partial copy) is read up to its last complete chunk and says so; a foreign MCAP or a file that is
 //!   not MCAP at all is refused with what could be read.
 //! - [`analysis`]: the messages → [`ReviewData`], the JSON the page renders (`version` 1).
+//! - [`exposure`]: many recordings, streamed, → exposure per operator, day and week, task segment
+//!   and robot class (seconds that add up across sessions).
 //! - [`export`]: the session as spreadsheet files — a row per frame, and the summary in `ergocell
 //!   rula track`'s layout.
 //! - [`page`]: the page itself — the HTML shell around the browser bundle built from `web/`
@@ -18,6 +20,7 @@
 
 pub mod analysis;
 pub mod export;
+pub mod exposure;
 pub mod page;
 pub mod read;
 

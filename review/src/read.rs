@@ -13,6 +13,7 @@ use ergocell_bridge::msg::{
     ControllerEvent, ErgonomicState, JointTrajectory, MarkerArray, OperatorPose, PostureWarning,
     RebaState, RosMessage, SessionState,
 };
+use ergocell_bridge::session_info;
 use serde::de::DeserializeOwned;
 
 use crate::ReviewError;
@@ -32,6 +33,52 @@ pub struct Stamped<M> {
 pub struct ChannelInfo {
     pub schema: String,
     pub messages: u64,
+}
+
+/// One decoded message of the session's topics.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Decoded {
+    Pose(Stamped<OperatorPose>),
+    Ergonomics(Stamped<ErgonomicState>),
+    Reba(Stamped<RebaState>),
+    Warning(Stamped<PostureWarning>),
+    State(Stamped<SessionState>),
+    RobotMarkers(Stamped<MarkerArray>),
+    Trajectory(Stamped<JointTrajectory>),
+    ControllerEvent(Stamped<ControllerEvent>),
+}
+
+/// What a reader hands the recording to, message by message ([`read_recording`] collects it all
+/// into a [`Recording`]; [`stream_recording`] hands it on without keeping it).
+pub trait Visit {
+    /// Whether to decode the messages of `topic` (those not wanted are counted, never decoded).
+    fn wants(&self, _topic: &str) -> bool {
+        true
+    }
+    /// An MCAP metadata record (e.g. [`ergocell_bridge::session_info::METADATA_NAME`]).
+    fn metadata(&mut self, _name: &str, _entries: &BTreeMap<String, String>) {}
+    /// A message on one of the session's topics, decoded.
+    fn message(&mut self, message: Decoded);
+}
+
+/// What a reader found, apart from the messages: the file's size, how far it read, its channels.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ReadStats {
+    /// Bytes read.
+    pub bytes: u64,
+    /// Messages read (all topics).
+    pub messages: u64,
+    /// The file ends with its footer and every record before it was read.
+    pub complete: bool,
+    /// What is wrong with the file, for a person (empty for a clean recording).
+    pub problems: Vec<String>,
+    pub first_log_time_nanos: Option<u64>,
+    pub last_log_time_nanos: Option<u64>,
+    /// Every channel by topic.
+    pub channels: BTreeMap<String, ChannelInfo>,
+    /// Messages on the session's topics (operator, RULA, warnings, states, robot markers) that were
+    /// decoded or not asked for.
+    pub session_messages: u64,
 }
 
 /// What could be read of one recording.
@@ -64,6 +111,46 @@ pub struct Recording {
     pub controller_events: Vec<Stamped<ControllerEvent>>,
     /// Every channel by topic.
     pub channels: BTreeMap<String, ChannelInfo>,
+    /// The operator's pseudonymous id, when the recording names one
+    /// ([`ergocell_bridge::session_info`]).
+    pub operator: Option<String>,
+}
+
+impl Visit for Recording {
+    fn metadata(&mut self, name: &str, entries: &BTreeMap<String, String>) {
+        operator_metadata(&mut self.operator, &mut self.problems, name, entries);
+    }
+
+    fn message(&mut self, message: Decoded) {
+        match message {
+            Decoded::Pose(m) => self.poses.push(m),
+            Decoded::Ergonomics(m) => self.ergonomics.push(m),
+            Decoded::Reba(m) => self.reba.push(m),
+            Decoded::Warning(m) => self.warnings.push(m),
+            Decoded::State(m) => self.states.push(m),
+            Decoded::RobotMarkers(m) => self.robot_markers.push(m),
+            Decoded::Trajectory(m) => self.trajectories.push(m),
+            Decoded::ControllerEvent(m) => self.controller_events.push(m),
+        }
+    }
+}
+
+/// Reads the operator's id from a metadata record named [`session_info::METADATA_NAME`]; a
+/// malformed id is a problem, never an id.
+fn operator_metadata(
+    operator: &mut Option<String>,
+    problems: &mut Vec<String>,
+    name: &str,
+    entries: &BTreeMap<String, String>,
+) {
+    if name != session_info::METADATA_NAME {
+        return;
+    }
+    match session_info::operator_of(entries) {
+        Ok(Some(id)) => *operator = Some(id.to_string()),
+        Ok(None) => {}
+        Err(e) => problems.push(format!("the recording's operator is left out: {e}")),
+    }
 }
 
 impl Recording {
@@ -95,6 +182,27 @@ struct Skipped {
 /// [`ReviewError::NotMcap`] when nothing of it reads as MCAP, [`ReviewError::Foreign`] when it is MCAP
 /// but holds none of ergocell's topics (the error lists the channels it does hold).
 pub fn read_recording(bytes: &[u8]) -> Result<Recording, ReviewError> {
+    let mut rec = Recording::default();
+    let stats = read_into(bytes, &mut rec)?;
+    let own_problems = std::mem::take(&mut rec.problems);
+    Ok(Recording {
+        bytes: stats.bytes,
+        messages: stats.messages,
+        complete: stats.complete,
+        problems: stats.problems.into_iter().chain(own_problems).collect(),
+        first_log_time_nanos: stats.first_log_time_nanos,
+        last_log_time_nanos: stats.last_log_time_nanos,
+        channels: stats.channels,
+        ..rec
+    })
+}
+
+/// Reads `bytes` (a whole `.mcap` file) as [`read_recording`] does, handing each message to
+/// `visitor`.
+///
+/// # Errors
+/// As [`read_recording`].
+pub fn read_into<V: Visit>(bytes: &[u8], visitor: &mut V) -> Result<ReadStats, ReviewError> {
     if !bytes.starts_with(mcap::MAGIC) {
         return Err(ReviewError::NotMcap {
             reason: format!(
@@ -111,17 +219,14 @@ pub fn read_recording(bytes: &[u8]) -> Result<Recording, ReviewError> {
             ),
         });
     }
-    let mut reader = Reader {
-        rec: Recording {
-            bytes: bytes.len() as u64,
-            complete: true,
-            ..Recording::default()
-        },
-        skipped: BTreeMap::new(),
-    };
+    let mut reader = Reader::new(visitor);
+    reader.rec.bytes = bytes.len() as u64;
     let summary = mcap::Summary::read(bytes).ok().flatten();
     match summary {
         Some(summary) if !summary.chunk_indexes.is_empty() => {
+            for (name, entries) in metadata_records(bytes, &summary) {
+                reader.visitor.metadata(&name, &entries);
+            }
             reader.read_chunks(bytes, &summary);
         }
         _ => reader.read_linear(bytes),
@@ -129,13 +234,157 @@ pub fn read_recording(bytes: &[u8]) -> Result<Recording, ReviewError> {
     reader.finish()
 }
 
-/// Reading state: what was read and what was skipped.
-struct Reader {
-    rec: Recording,
-    skipped: BTreeMap<String, Skipped>,
+/// The metadata records a summary indexes (unreadable ones left out).
+fn metadata_records(
+    bytes: &[u8],
+    summary: &mcap::Summary,
+) -> Vec<(String, BTreeMap<String, String>)> {
+    summary
+        .metadata_indexes
+        .iter()
+        .filter_map(|index| {
+            let start = usize::try_from(index.offset).ok()?.checked_add(9)?;
+            let end = usize::try_from(index.offset.checked_add(index.length)?).ok()?;
+            match mcap::parse_record(mcap::records::op::METADATA, bytes.get(start..end)?) {
+                Ok(mcap::records::Record::Metadata(m)) => Some((m.name, m.metadata)),
+                _ => None,
+            }
+        })
+        .collect()
 }
 
-impl Reader {
+/// Reads a recording from `source` front to back, never holding more of it than one record, and
+/// hands each message to `visitor`: memory does not grow with the file. Each chunk's CRC is
+/// checked; a file cut short (a crash, a partial copy) is read up to its last complete record and
+/// says so in [`ReadStats::problems`].
+///
+/// # Errors
+/// As [`read_recording`]; an error reading `source` is [`ReviewError::NotMcap`] with its reason.
+pub fn stream_recording<R: std::io::Read, V: Visit>(
+    mut source: R,
+    visitor: &mut V,
+) -> Result<ReadStats, ReviewError> {
+    use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
+    let options = LinearReaderOptions::default()
+        .with_validate_chunk_crcs(true)
+        .with_record_length_limit(MAX_RECORD_BYTES);
+    let mut linear = LinearReader::new_with_options(options);
+    let mut reader = Reader::new(visitor);
+    let mut schemas: BTreeMap<u16, String> = BTreeMap::new();
+    let mut channels: BTreeMap<u16, (String, String)> = BTreeMap::new();
+    let mut past_data_end = false;
+    let mut failure: Option<String> = None;
+    while let Some(event) = linear.next_event() {
+        match event {
+            Err(e) => {
+                failure = Some(e.to_string());
+                break;
+            }
+            Ok(LinearReadEvent::ReadRequest(need)) => {
+                let buf = linear.insert(need);
+                match source.read(buf) {
+                    Ok(n) => {
+                        reader.rec.bytes += n as u64;
+                        linear.notify_read(n);
+                    }
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => linear.notify_read(0),
+                    Err(e) => {
+                        return Err(ReviewError::NotMcap {
+                            reason: format!(
+                                "reading it failed after {} bytes: {e}",
+                                reader.rec.bytes
+                            ),
+                        })
+                    }
+                }
+            }
+            Ok(LinearReadEvent::Record { opcode, data }) => {
+                if past_data_end {
+                    continue;
+                }
+                let record = match mcap::parse_record(opcode, data) {
+                    Ok(r) => r,
+                    Err(e) => {
+                        failure = Some(e.to_string());
+                        break;
+                    }
+                };
+                match record {
+                    mcap::records::Record::Schema { header, .. } => {
+                        schemas.insert(header.id, header.name);
+                    }
+                    mcap::records::Record::Channel(c) => {
+                        let schema = schemas.get(&c.schema_id).cloned().unwrap_or_default();
+                        channels.insert(c.id, (c.topic, schema));
+                    }
+                    mcap::records::Record::Message { header, data } => {
+                        let Some((topic, schema)) = channels.get(&header.channel_id) else {
+                            failure = Some(format!(
+                                "a message on channel {} that no channel record declared",
+                                header.channel_id
+                            ));
+                            break;
+                        };
+                        reader.take_message(topic, schema, header.log_time, &data);
+                    }
+                    mcap::records::Record::Metadata(m) => {
+                        reader.visitor.metadata(&m.name, &m.metadata);
+                    }
+                    mcap::records::Record::DataEnd(_) => past_data_end = true,
+                    _ => {}
+                }
+            }
+        }
+    }
+    if reader.rec.bytes < (mcap::MAGIC.len() * 2) as u64 && reader.rec.messages == 0 {
+        return Err(ReviewError::NotMcap {
+            reason: failure.unwrap_or_else(|| format!("{} bytes", reader.rec.bytes)),
+        });
+    }
+    if let Some(why) = failure {
+        reader.rec.complete = false;
+        let at = reader.rec.last_log_time_nanos.map_or_else(
+            || "before the first message".to_owned(),
+            |t| format!("after {:.1} s of recording", reader.secs_into(t)),
+        );
+        let why = if past_data_end {
+            format!("its summary is unreadable ({why}); every message before it was read")
+        } else if why.contains("compression") {
+            format!("{why}; ergocell writes and reads uncompressed recordings (`mcap convert --compression none` decompresses one)")
+        } else {
+            format!("the rest is unreadable ({why}): the recording was cut short or damaged")
+        };
+        reader.rec.problems.push(format!(
+            "the recording could be read only up to {at} ({} messages): {why}",
+            reader.rec.messages
+        ));
+    }
+    reader.finish()
+}
+
+/// The largest record (other than a chunk, which is read piece by piece) the streaming reader
+/// accepts: a damaged length field is refused, never allocated.
+const MAX_RECORD_BYTES: usize = 256 << 20;
+
+/// Reading state: what was read and what was skipped.
+struct Reader<'v, V: Visit> {
+    rec: ReadStats,
+    skipped: BTreeMap<String, Skipped>,
+    visitor: &'v mut V,
+}
+
+impl<'v, V: Visit> Reader<'v, V> {
+    fn new(visitor: &'v mut V) -> Self {
+        Self {
+            rec: ReadStats {
+                complete: true,
+                ..ReadStats::default()
+            },
+            skipped: BTreeMap::new(),
+            visitor,
+        }
+    }
+
     fn secs_into(&self, t: u64) -> f64 {
         t.saturating_sub(self.rec.first_log_time_nanos.unwrap_or(t)) as f64 * 1e-9
     }
@@ -174,7 +423,7 @@ impl Reader {
             };
             for m in messages {
                 match m {
-                    Ok(m) => self.take_message(&m),
+                    Ok(m) => self.take_mcap_message(&m),
                     Err(e) => {
                         self.rec.complete = false;
                         self.rec.problems.push(format!(
@@ -211,7 +460,7 @@ impl Reader {
         };
         for item in stream {
             match item {
-                Ok(m) => self.take_message(&m),
+                Ok(m) => self.take_mcap_message(&m),
                 Err(e) => {
                     self.rec.complete = false;
                     let at = self.rec.last_log_time_nanos.map_or_else(
@@ -241,54 +490,73 @@ impl Reader {
         }
     }
 
-    fn take_message(&mut self, m: &mcap::Message<'_>) {
+    fn take_mcap_message(&mut self, m: &mcap::Message<'_>) {
+        let schema = m.channel.schema.as_ref().map_or("", |s| s.name.as_str());
+        self.take_message(&m.channel.topic, schema, m.log_time, &m.data);
+    }
+
+    fn take_message(&mut self, topic: &str, schema: &str, t: u64, data: &[u8]) {
         let rec = &mut self.rec;
         rec.messages += 1;
-        rec.first_log_time_nanos = Some(
-            rec.first_log_time_nanos
-                .map_or(m.log_time, |t| t.min(m.log_time)),
+        rec.first_log_time_nanos = Some(rec.first_log_time_nanos.map_or(t, |f| f.min(t)));
+        rec.last_log_time_nanos = Some(rec.last_log_time_nanos.map_or(t, |l| l.max(t)));
+        if let Some(c) = rec.channels.get_mut(topic) {
+            c.messages += 1;
+        } else {
+            rec.channels.insert(
+                topic.to_owned(),
+                ChannelInfo {
+                    schema: schema.to_owned(),
+                    messages: 1,
+                },
+            );
+        }
+        let session_topic = matches!(
+            topic,
+            topics::OPERATOR_POSE
+                | topics::ERGONOMICS
+                | topics::WARNINGS
+                | topics::SESSION_STATE
+                | topics::ROBOT_MARKERS
         );
-        rec.last_log_time_nanos = Some(
-            rec.last_log_time_nanos
-                .map_or(m.log_time, |t| t.max(m.log_time)),
-        );
-        let topic = m.channel.topic.as_str();
-        let schema = m
-            .channel
-            .schema
-            .as_ref()
-            .map_or_else(String::new, |s| s.name.clone());
-        rec.channels
-            .entry(topic.to_owned())
-            .or_insert_with(|| ChannelInfo {
-                schema: schema.clone(),
-                messages: 0,
-            })
-            .messages += 1;
-        let t = m.log_time;
+        let known = session_topic
+            || matches!(
+                topic,
+                topics::REBA | topics::JOINT_TRAJECTORY | topics::CONTROLLER_EVENTS
+            );
+        if !known {
+            return;
+        }
+        if !self.visitor.wants(topic) {
+            rec.session_messages += u64::from(session_topic);
+            return;
+        }
         let outcome = match topic {
-            topics::OPERATOR_POSE => take(&schema, &m.data, t, &mut rec.poses),
-            topics::ERGONOMICS => take(&schema, &m.data, t, &mut rec.ergonomics),
-            topics::REBA => take(&schema, &m.data, t, &mut rec.reba),
-            topics::WARNINGS => take(&schema, &m.data, t, &mut rec.warnings),
-            topics::SESSION_STATE => take_session_state(&schema, &m.data, t, &mut rec.states),
-            topics::ROBOT_MARKERS => take(&schema, &m.data, t, &mut rec.robot_markers),
-            topics::JOINT_TRAJECTORY => take(&schema, &m.data, t, &mut rec.trajectories),
-            topics::CONTROLLER_EVENTS => {
-                take_controller_event(&schema, &m.data, t, &mut rec.controller_events)
-            }
-            _ => Ok(()),
+            topics::OPERATOR_POSE => take(schema, data, t).map(Decoded::Pose),
+            topics::ERGONOMICS => take(schema, data, t).map(Decoded::Ergonomics),
+            topics::REBA => take(schema, data, t).map(Decoded::Reba),
+            topics::WARNINGS => take(schema, data, t).map(Decoded::Warning),
+            topics::SESSION_STATE => take_session_state(schema, data, t).map(Decoded::State),
+            topics::ROBOT_MARKERS => take(schema, data, t).map(Decoded::RobotMarkers),
+            topics::JOINT_TRAJECTORY => take(schema, data, t).map(Decoded::Trajectory),
+            _ => take_controller_event(schema, data, t).map(Decoded::ControllerEvent),
         };
-        if let Err(why) = outcome {
-            let s = self.skipped.entry(topic.to_owned()).or_default();
-            s.count += 1;
-            if s.first.is_empty() {
-                s.first = why;
+        match outcome {
+            Ok(message) => {
+                rec.session_messages += u64::from(session_topic);
+                self.visitor.message(message);
+            }
+            Err(why) => {
+                let s = self.skipped.entry(topic.to_owned()).or_default();
+                s.count += 1;
+                if s.first.is_empty() {
+                    s.first = why;
+                }
             }
         }
     }
 
-    fn finish(mut self) -> Result<Recording, ReviewError> {
+    fn finish(mut self) -> Result<ReadStats, ReviewError> {
         let rec = &mut self.rec;
         for (topic, s) in std::mem::take(&mut self.skipped) {
             rec.problems.push(format!(
@@ -296,7 +564,7 @@ impl Reader {
                 s.count, s.first
             ));
         }
-        if rec.ergocell_messages() == 0 {
+        if rec.session_messages == 0 {
             let ours = rec
                 .channels
                 .keys()
@@ -389,18 +657,16 @@ fn take<M: RosMessage + DeserializeOwned>(
     schema: &str,
     data: &[u8],
     log_time_nanos: u64,
-    into: &mut Vec<Stamped<M>>,
-) -> Result<(), String> {
+) -> Result<Stamped<M>, String> {
     let expected = M::type_name();
     if schema != expected {
         return Err(format!("schema is {schema:?}, expected {expected}"));
     }
     let message = cdr::decode::<M>(data).map_err(|e| e.to_string())?;
-    into.push(Stamped {
+    Ok(Stamped {
         log_time_nanos,
         message,
-    });
-    Ok(())
+    })
 }
 
 /// `SessionState` as recorded before it carried the height decision (basis, probability, expected
@@ -428,16 +694,15 @@ fn take_session_state(
     schema: &str,
     data: &[u8],
     log_time_nanos: u64,
-    into: &mut Vec<Stamped<SessionState>>,
-) -> Result<(), String> {
-    let current = take(schema, data, log_time_nanos, into);
+) -> Result<Stamped<SessionState>, String> {
+    let current = take(schema, data, log_time_nanos);
     if current.is_ok() || schema != SessionState::type_name() {
         return current;
     }
     let Ok(old) = cdr::decode::<SessionStateWithoutDecision>(data) else {
         return current;
     };
-    into.push(Stamped {
+    Ok(Stamped {
         log_time_nanos,
         message: SessionState {
             header: old.header,
@@ -458,8 +723,7 @@ fn take_session_state(
             last_part_hand: String::new(),
             last_part_closest_m: f64::NAN,
         },
-    });
-    Ok(())
+    })
 }
 
 /// `ControllerEvent` as recorded before it carried the leg as a constant (`leg_id`): such recordings
@@ -494,16 +758,15 @@ fn take_controller_event(
     schema: &str,
     data: &[u8],
     log_time_nanos: u64,
-    into: &mut Vec<Stamped<ControllerEvent>>,
-) -> Result<(), String> {
-    let current = take(schema, data, log_time_nanos, into);
+) -> Result<Stamped<ControllerEvent>, String> {
+    let current = take(schema, data, log_time_nanos);
     if current.is_ok() || schema != ControllerEvent::type_name() {
         return current;
     }
     let Ok(old) = cdr::decode::<ControllerEventWithoutLegId>(data) else {
         return current;
     };
-    into.push(Stamped {
+    Ok(Stamped {
         log_time_nanos,
         message: ControllerEvent {
             leg_id: legacy_leg_id(&old.leg),
@@ -517,8 +780,7 @@ fn take_controller_event(
             max_error: old.max_error,
             sample_stamp: old.sample_stamp,
         },
-    });
-    Ok(())
+    })
 }
 
 /// The messages of `v` whose log time `f` accepts.
@@ -635,6 +897,7 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
                 .map(|(e, _)| e.clone())
                 .collect(),
             channels: rec.channels.clone(),
+            operator: rec.operator.clone(),
         });
     }
     parts
@@ -689,7 +952,7 @@ mod tests {
             .iter()
             .enumerate()
         {
-            take_controller_event(&schema, &old(leg), k as u64, &mut into).unwrap();
+            into.push(take_controller_event(&schema, &old(leg), k as u64).unwrap());
         }
         let ids: Vec<u8> = into.iter().map(|e| e.message.leg_id).collect();
         assert_eq!(
@@ -707,10 +970,10 @@ mod tests {
             ..event("finished", "")
         })
         .unwrap();
-        take_controller_event(&schema, &now, 9, &mut into).unwrap();
+        into.push(take_controller_event(&schema, &now, 9).unwrap());
         assert_eq!(into[3].message.leg_id, ControllerEvent::LEG_TO_HOME);
         let cut = old("home → handover");
-        assert!(take_controller_event(&schema, &cut[..cut.len() - 9], 10, &mut into).is_err());
+        assert!(take_controller_event(&schema, &cut[..cut.len() - 9], 10).is_err());
     }
 
     /// A recording made before `SessionState` carried the decision's fields still reads: the
@@ -733,7 +996,7 @@ mod tests {
         .unwrap();
         let schema = SessionState::type_name();
         let mut into = Vec::new();
-        take_session_state(&schema, &old, 5, &mut into).unwrap();
+        into.push(take_session_state(&schema, &old, 5).unwrap());
         let m = &into[0].message;
         assert_eq!((m.height_class.as_str(), m.cameras_fresh), ("c2", 6));
         assert_eq!(m.trajectory_approved_by, ["a"]);
@@ -746,10 +1009,10 @@ mod tests {
             ..state("class_decided")
         })
         .unwrap();
-        take_session_state(&schema, &now, 6, &mut into).unwrap();
+        into.push(take_session_state(&schema, &now, 6).unwrap());
         assert_eq!(into[1].message.height_class_probability, 0.79);
         // Cut short, neither layout reads.
-        assert!(take_session_state(&schema, &old[..old.len() - 9], 7, &mut into).is_err());
+        assert!(take_session_state(&schema, &old[..old.len() - 9], 7).is_err());
         assert_eq!(into.len(), 2);
     }
 
@@ -892,5 +1155,105 @@ mod tests {
         // The commands go by their time.
         assert_eq!(parts[0].recording.trajectories.len(), 1);
         assert_eq!(parts[1].recording.trajectories.len(), 2);
+    }
+
+    /// MCAP bytes of `n` session states, one chunk each, naming operator `op-7`.
+    fn states_recording(n: u64) -> Vec<u8> {
+        let mut w = mcap::WriteOptions::new()
+            .profile("ros2")
+            .compression(None)
+            .chunk_size(Some(64))
+            .create(std::io::Cursor::new(Vec::new()))
+            .unwrap();
+        w.write_metadata(&mcap::records::Metadata {
+            name: session_info::METADATA_NAME.to_owned(),
+            metadata: session_info::metadata(&session_info::OperatorId::new("op-7").unwrap()),
+        })
+        .unwrap();
+        let schema = w
+            .add_schema(&SessionState::type_name(), "ros2msg", b"")
+            .unwrap();
+        let channel = w
+            .add_channel(schema, topics::SESSION_STATE, "cdr", &BTreeMap::new())
+            .unwrap();
+        for k in 0..n {
+            let data = cdr::encode(&state(if k + 1 == n {
+                "session_ended"
+            } else {
+                "working"
+            }))
+            .unwrap();
+            let header = mcap::records::MessageHeader {
+                channel_id: channel,
+                sequence: u32::try_from(k).unwrap(),
+                log_time: k * 1_000_000_000,
+                publish_time: k * 1_000_000_000,
+            };
+            w.write_to_known_channel(&header, &data).unwrap();
+        }
+        w.finish().unwrap();
+        w.into_inner().into_inner()
+    }
+
+    /// A reader handing out one byte at a time: the stream never needs more than it asks for.
+    struct Trickle<'a>(&'a [u8]);
+    impl std::io::Read for Trickle<'_> {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            let Some((&b, rest)) = self.0.split_first() else {
+                return Ok(0);
+            };
+            match buf.first_mut() {
+                Some(slot) => {
+                    *slot = b;
+                    self.0 = rest;
+                    Ok(1)
+                }
+                None => Ok(0),
+            }
+        }
+    }
+
+    #[test]
+    fn the_stream_reads_what_the_whole_file_reader_reads_and_where_a_cut_file_ends() {
+        let bytes = states_recording(40);
+        let whole = read_recording(&bytes).unwrap();
+        assert_eq!(
+            (whole.states.len(), whole.operator.as_deref()),
+            (40, Some("op-7"))
+        );
+        let mut streamed = Recording::default();
+        let stats = stream_recording(Trickle(&bytes), &mut streamed).unwrap();
+        assert_eq!(streamed.states, whole.states);
+        assert_eq!(streamed.operator.as_deref(), Some("op-7"));
+        assert!(stats.complete, "{:?}", stats.problems);
+        assert_eq!(
+            stats.problems, whole.problems,
+            "the same file, the same words"
+        );
+        assert_eq!((stats.messages, stats.bytes), (40, bytes.len() as u64));
+
+        // Cut in the middle: what came before is read, and the problem says where it ends.
+        let mut cut = Recording::default();
+        let stats = stream_recording(&bytes[..bytes.len() / 2], &mut cut).unwrap();
+        assert!(!stats.complete);
+        assert!(
+            cut.states.len() > 5 && cut.states.len() < 40,
+            "{}",
+            cut.states.len()
+        );
+        assert_eq!(cut.states[..], whole.states[..cut.states.len()]);
+        assert!(
+            stats
+                .problems
+                .iter()
+                .any(|p| p.contains("could be read only up to")),
+            "{:?}",
+            stats.problems
+        );
+        // Not MCAP at all.
+        assert!(matches!(
+            stream_recording(&b"not a recording"[..], &mut Recording::default()),
+            Err(ReviewError::NotMcap { .. })
+        ));
     }
 }

@@ -17,6 +17,7 @@ use std::path::Path;
 
 use ergocell_bridge::cdr;
 use ergocell_bridge::msg::RosMessage;
+use ergocell_bridge::session_info::{self, OperatorId};
 
 pub use ergocell_bridge::topics;
 
@@ -91,6 +92,17 @@ impl McapRecorder {
         if self.unflushed && now_nanos - last >= 1_000_000_000 {
             self.flush(now_nanos)?;
         }
+        Ok(())
+    }
+
+    /// Records who the recording serves: the operator's pseudonymous id, as the MCAP metadata record
+    /// [`session_info::METADATA_NAME`] (read back by the review and `ergocell exposure`).
+    pub fn write_operator(&mut self, operator: &OperatorId) -> Result<(), RecordingError> {
+        self.writer.write_metadata(&mcap::records::Metadata {
+            name: session_info::METADATA_NAME.to_owned(),
+            metadata: session_info::metadata(operator),
+        })?;
+        self.writer.flush()?;
         Ok(())
     }
 

@@ -21,6 +21,8 @@
 //! current locks in a **temporary** folder, labelled as a demo approval; `trajectories/approvals/` is
 //! never written.
 
+use super::{parse_operator, parse_start_time};
+use ergocell_bridge::session_info::OperatorId;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
@@ -96,6 +98,14 @@ pub struct Args {
     /// Overwrite an existing recording (--out, or without it `ergocell-demo.mcap`).
     #[arg(long)]
     pub force: bool,
+    /// The operator's pseudonymous id written into the recording (letters, digits, '-', '_', '.';
+    /// never a name). Default: `demo-<seed>`.
+    #[arg(long, value_name = "ID", value_parser = parse_operator)]
+    pub operator: Option<OperatorId>,
+    /// When the session starts, RFC 3339 (e.g. `2026-11-30T06:00:00Z`); default now. The recording's
+    /// times, and the day and week `ergocell exposure` files it under, follow from it.
+    #[arg(long, value_name = "TIME", value_parser = parse_start_time)]
+    pub start_time: Option<i64>,
     /// Camera frame rate, Hz (the seed paper's cameras: 10 Hz).
     #[arg(long, default_value_t = 10.0)]
     pub fps: f64,
@@ -631,7 +641,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let demo_dir =
         TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
     private_dir(&demo_dir.0)?;
-    let start = wall_clock_nanos();
+    let start = args.start_time.unwrap_or_else(wall_clock_nanos);
     let provider = demo_provider(args, &demo_dir.0.join("approvals"), start)?;
     let cell_text = provider
         .cell_text()
@@ -680,7 +690,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     } else {
         (output::create("--out", &out, args.force)?, out, moved)
     };
-    let rec = McapRecorder::from_file(file)?;
+    let mut rec = McapRecorder::from_file(file)?;
+    let operator = match &args.operator {
+        Some(id) => id.clone(),
+        None => OperatorId::new(&format!("demo-{}", args.seed))?,
+    };
+    rec.write_operator(&operator)?;
     if moved {
         println!(
             "  {DEFAULT_OUT} exists (kept): recording into {} (--out names the file, --force overwrites)",

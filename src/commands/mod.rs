@@ -5,6 +5,7 @@
 
 pub mod calibrate;
 pub mod demo;
+pub mod exposure;
 pub mod height;
 pub mod output;
 pub mod reba;
@@ -39,4 +40,18 @@ pub fn exit_code(err: &anyhow::Error) -> u8 {
     } else {
         1
     }
+}
+
+/// `--operator`'s parser: a pseudonymous id ([`ergocell_bridge::session_info::OperatorId`]).
+pub fn parse_operator(s: &str) -> Result<ergocell_bridge::session_info::OperatorId, String> {
+    ergocell_bridge::session_info::OperatorId::new(s).map_err(|e| e.to_string())
+}
+
+/// `--start-time`'s parser: RFC 3339 → nanoseconds since the Unix epoch.
+pub fn parse_start_time(s: &str) -> Result<i64, String> {
+    let t = chrono::DateTime::parse_from_rfc3339(s)
+        .map_err(|e| format!("{s:?} is not an RFC 3339 time such as 2026-11-30T06:00:00Z ({e})"))?;
+    t.timestamp_nanos_opt()
+        .filter(|&n| n > 0)
+        .ok_or_else(|| format!("{s:?} is outside 1970..2262"))
 }

@@ -8,6 +8,8 @@
 //! (systemd, `docker stop`, `timeout`) hold the robot (an empty trajectory, published), close the
 //! recording with its summary and footer, and exit with 130 / 143.
 
+use super::parse_operator;
+use ergocell_bridge::session_info::OperatorId;
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Duration;
@@ -88,6 +90,10 @@ pub struct Args {
     /// Overwrite an existing --record file.
     #[arg(long)]
     pub force: bool,
+    /// The operator's pseudonymous id, written into the --record file (letters, digits, '-', '_',
+    /// '.'; never a name: the plant keeps the mapping). `ergocell exposure` groups by it.
+    #[arg(long, value_name = "ID", value_parser = parse_operator, requires = "record")]
+    pub operator: Option<OperatorId>,
     /// Stop (holding the robot) after this many seconds if the session has not ended (> 0, at most
     /// a year).
     #[arg(long)]
@@ -225,9 +231,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .record
         .as_deref()
         .map(|path| -> anyhow::Result<McapRecorder> {
-            Ok(McapRecorder::from_file(output::create(
-                "--record", path, args.force,
-            )?)?)
+            let mut rec = McapRecorder::from_file(output::create("--record", path, args.force)?)?;
+            if let Some(operator) = &args.operator {
+                rec.write_operator(operator)?;
+            }
+            Ok(rec)
         })
         .transpose()?;
     let mut recording = Some(Recording::new(recorder));
