@@ -217,6 +217,22 @@ fn sessions_add_up_per_operator_and_week_in_seconds() {
         );
     }
 
+    // The page: each operator's weeks and days, no script, nothing fetched.
+    let html = std::fs::read_to_string(out.join("exposure.html")).unwrap();
+    for want in [
+        "Operator op-a",
+        "Operator op-b",
+        "2026-W48",
+        "2026-11-24",
+        "default-src 'none'",
+    ] {
+        assert!(html.contains(want), "{want}");
+    }
+    assert!(!html.contains("<script"));
+    assert!(std::fs::read(out.join("sessions.parquet"))
+        .unwrap()
+        .starts_with(b"PAR1"));
+
     // Run again onto the same folder: refused without --force, the files kept.
     let before = std::fs::read(&groups).unwrap();
     let o = exposure(&[&dir], &out);

@@ -514,6 +514,92 @@ impl ExposureTable {
     }
 }
 
+/// The page of an [`ExposureTable`]: one self-contained HTML file, no script and nothing fetched
+/// (the report's Content-Security-Policy). Per operator, a table of its weeks and days (whole
+/// sessions, all classes) with the RULA action-level shares as a bar, then each week's task segments.
+/// `sources` and `sessions` are how many recordings and sessions were read.
+pub fn page(table: &ExposureTable, sources: usize, sessions: u32) -> String {
+    use crate::page::{escape_html as esc, REPORT_CSP};
+    use std::fmt::Write as _;
+    let pct = |x: Option<f64>| x.map_or_else(|| "–".to_owned(), |x| format!("{:.1} %", 100.0 * x));
+    let bar = |g: &ExposureRow| -> String {
+        let Some(_) = g.rula_share(1) else {
+            return "<span class=\"none\">not scored</span>".to_owned();
+        };
+        let mut out = String::from("<span class=\"bar\">");
+        for level in 1..=4u8 {
+            let share = g.rula_al_s[usize::from(level) - 1] / g.rula_scored_s;
+            let _ = write!(
+                out,
+                "<span class=\"al{level}\" style=\"width:{:.2}%\" title=\"action level {level}: {:.1} %\"></span>",
+                100.0 * share,
+                100.0 * share
+            );
+        }
+        out.push_str("</span>");
+        out
+    };
+    let row = |g: &ExposureRow, first: &str| {
+        format!(
+            "<tr><th>{}</th><td class=\"num\">{}</td><td class=\"num\">{:.2}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{:.0}</td><td class=\"num\">{}</td><td class=\"num\">{} ({})</td><td class=\"num\">{}</td></tr>",
+            esc(first),
+            g.sessions,
+            g.duration_s / 3600.0,
+            bar(g),
+            pct(g.rula_share(3)),
+            pct(g.reba_share(3)),
+            g.rula_al3_longest_s,
+            g.peak_grand_score,
+            g.static_holds,
+            g.static_holds_exceeded,
+            g.parts_taken
+        )
+    };
+    let head = "<tr><th></th><th>sessions</th><th>hours</th><th>RULA action level 1 · 2 · 3 · 4</th><th>RULA AL ≥ 3</th><th>REBA AL ≥ 3</th><th>longest AL ≥ 3, s</th><th>peak grand score</th><th>static holds (exceeded)</th><th>parts</th></tr>";
+    let mut body = String::new();
+    let operators: BTreeSet<&str> = table.groups.keys().map(|k| k.operator.as_str()).collect();
+    for op in operators {
+        let _ = write!(body, "<h2>Operator {}</h2>", esc(op));
+        for period in ["week", "day"] {
+            let _ = write!(body, "<h3>By {period}</h3><table>{head}");
+            for (k, g) in table.groups.iter().filter(|(k, _)| {
+                k.operator == op && k.period == period && k.class == ALL && k.segment == ALL
+            }) {
+                body.push_str(&row(g, &k.period_start));
+            }
+            body.push_str("</table>");
+        }
+        let _ = write!(body, "<h3>By week and task segment</h3><table>{head}");
+        for (k, g) in table.groups.iter().filter(|(k, _)| {
+            k.operator == op && k.period == "week" && k.class == ALL && k.segment != ALL
+        }) {
+            body.push_str(&row(g, &format!("{} · {}", k.period_start, k.segment)));
+        }
+        body.push_str("</table>");
+        let _ = write!(body, "<h3>By week and robot class</h3><table>{head}");
+        for (k, g) in table.groups.iter().filter(|(k, _)| {
+            k.operator == op && k.period == "week" && k.class != ALL && k.segment == ALL
+        }) {
+            body.push_str(&row(g, &format!("{} · class {}", k.period_start, k.class)));
+        }
+        body.push_str("</table>");
+    }
+    format!(
+        "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\">\
+<meta http-equiv=\"Content-Security-Policy\" content=\"{REPORT_CSP}\">\
+<title>Exposure: {sessions} sessions</title><style>\
+body{{font:14px system-ui,sans-serif;margin:2em;color:#222}}table{{border-collapse:collapse;margin:.5em 0 1.5em}}\
+th,td{{padding:.25em .6em;border-bottom:1px solid #ddd;text-align:left}}td.num{{text-align:right}}\
+.bar{{display:inline-flex;width:16em;height:1em;background:#eee}}.bar span{{display:block;height:100%}}\
+.al1{{background:#4caf50}}.al2{{background:#ffc107}}.al3{{background:#ff7043}}.al4{{background:#c62828}}.none{{color:#888}}\
+</style></head><body><h1>Exposure</h1>\
+<p>{sessions} operator session(s) from {sources} recording(s). Shares are of RULA-scored (REBA-scored) time, \
+summed over the sessions: a week's share is its seconds at a level over its scored seconds. Days and weeks \
+(ISO) are those of each session's start, in UTC. Operators are pseudonymous ids; the plant keeps the mapping.</p>\
+{body}</body></html>\n"
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -10,6 +10,7 @@
 //! - [`analysis`]: the messages → [`ReviewData`], the JSON the page renders (`version` 1).
 //! - [`exposure`]: many recordings, streamed, → exposure per operator, day and week, task segment
 //!   and robot class (seconds that add up across sessions).
+//! - [`store`]: those sessions as Parquet, for SQL in DuckDB (or Spark, Trino) — no engine here.
 //! - [`export`]: the session as spreadsheet files — a row per frame, and the summary in `ergocell
 //!   rula track`'s layout.
 //! - [`page`]: the page itself — the HTML shell around the browser bundle built from `web/`
@@ -23,6 +24,7 @@ pub mod export;
 pub mod exposure;
 pub mod page;
 pub mod read;
+pub mod store;
 
 pub use analysis::{analyse, ReviewData, SessionReview};
 pub use read::{read_recording, Recording};

@@ -1,5 +1,6 @@
 //! `ergocell exposure`: many recordings → exposure per operator, day and week, task segment and
-//! robot class ([`ergocell_review::exposure`]). Each recording is streamed from its file, one at a
+//! robot class ([`ergocell_review::exposure`]), and the sessions as Parquet
+//! ([`ergocell_review::store`]). Each recording is streamed from its file, one at a
 //! time, so a month of shifts needs no more memory than one.
 
 use std::path::{Path, PathBuf};
@@ -12,8 +13,9 @@ use super::{output, UsageError};
 #[derive(Debug, clap::Args)]
 #[command(
     after_help = "Writes <out>/exposure.csv (one row per operator, day or week, class and \
-    task segment; shares of scored time) and <out>/sessions.csv (one row per session and segment, \
-    in seconds, for any engine to add up). Operators are the recordings' pseudonymous ids; no \
+    task segment; shares of scored time; the same as a page, <out>/exposure.html) and <out>/sessions.csv (one row per session and segment, \
+    in seconds, for any engine to add up) and the same rows as <out>/sessions.parquet (for SQL in \
+    DuckDB, Spark or Trino). Operators are the recordings' pseudonymous ids; no \
     landmark or angle is written. Exit codes: 0 done (unreadable recordings are named and left out); \
     2 bad input (no recording readable, an existing --out without --force)."
 )]
@@ -179,7 +181,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         _ => {}
     }
-    let outputs = ["exposure.csv", "sessions.csv"].map(|name| args.out.join(name));
+    let outputs = [
+        "exposure.csv",
+        "sessions.csv",
+        "sessions.parquet",
+        "exposure.html",
+    ]
+    .map(|name| args.out.join(name));
     let inputs: Vec<(&str, &Path)> = files.iter().map(|f| ("recording", f.as_path())).collect();
     for out in &outputs {
         output::check("--out", out, true, &inputs)?;
@@ -272,8 +280,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         true,
         &csv_bytes(rows.iter().map(SessionCsv::from))?,
     )?;
+    let mut parquet = Vec::new();
+    ergocell_review::store::write_parquet(&rows, &mut parquet)?;
+    output::write("--out", &outputs[2], true, &parquet)?;
+    let html = ergocell_review::exposure::page(&table, read, sessions);
+    output::write("--out", &outputs[3], true, html.as_bytes())?;
     println!(
-        "exposure: {read} recording(s), {sessions} session(s){}; {} groups → {}, {} session rows → {}",
+        "exposure: {read} recording(s), {sessions} session(s){}; {} groups → {} (and {}), {} session rows → {} and {}",
         if failed > 0 {
             format!(", {failed} left out")
         } else {
@@ -281,8 +294,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         },
         table.groups.len(),
         outputs[0].display(),
+        outputs[3].display(),
         rows.len(),
-        outputs[1].display()
+        outputs[1].display(),
+        outputs[2].display()
     );
     Ok(())
 }
