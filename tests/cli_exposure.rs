@@ -275,44 +275,14 @@ fn bad_input_is_refused_with_a_reason() {
 
 #[test]
 fn two_operators_in_one_recording_are_two_sessions_of_its_operator() {
-    use ergocell::recording::{topics, McapRecorder};
-    use ergocell_bridge::msg::{Header, OperatorPose, SessionState};
     use ergocell_bridge::session_info::OperatorId;
     let scratch = Scratch::new("exposure-two");
     let path = scratch.0.join("two.mcap");
-    let mut rec = McapRecorder::create(&path).unwrap();
+    let mut rec = ergocell::recording::McapRecorder::create(&path).unwrap();
     rec.write_operator(&OperatorId::new("op-7").unwrap())
         .unwrap();
-    let s = 1_000_000_000i64;
-    let epoch = 1_796_018_400 * s; // 2026-11-30T06:00:00Z
-    for (k, class) in ["c1", "c3"].iter().enumerate() {
-        let t0 = epoch + k as i64 * 20 * s;
-        let state = |t: i64, name: &str| SessionState {
-            header: Header::new(t, "world"),
-            state: name.to_owned(),
-            height_class: (*class).to_owned(),
-            ..SessionState::default()
-        };
-        rec.write(topics::SESSION_STATE, t0, &state(t0, "working"))
-            .unwrap();
-        for f in 0..50 {
-            let t = t0 + f * s / 10;
-            let pose = OperatorPose {
-                header: Header::new(t, "world"),
-                x: vec![0.0; 33],
-                y: vec![0.0; 33],
-                z: vec![1.0; 33],
-                ..OperatorPose::default()
-            };
-            rec.write(topics::OPERATOR_POSE, t, &pose).unwrap();
-        }
-        rec.write(
-            topics::SESSION_STATE,
-            t0 + 10 * s,
-            &state(t0 + 10 * s, "session_ended"),
-        )
-        .unwrap();
-    }
+    let epoch = 1_796_018_400 * 1_000_000_000; // 2026-11-30T06:00:00Z
+    common::write_sessions(&mut rec, epoch, &[("c1", 1.60), ("c3", 1.90)], 50, 10);
     rec.finish().unwrap();
     let out = scratch.0.join("out");
     let o = exposure(&[&path], &out);

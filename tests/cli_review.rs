@@ -376,40 +376,9 @@ fn a_damaged_chunk_is_skipped_and_named_and_the_rest_is_read() {
 
 /// A recording of two operator sessions, as `ergocell run --record` writes them one after another.
 fn two_sessions() -> PathBuf {
-    use ergocell::recording::{topics, McapRecorder};
-    use ergocell_bridge::msg::{Header, OperatorPose, SessionState};
     let path = tmp("review-two-sessions.mcap");
-    let mut rec = McapRecorder::create(&path).unwrap();
-    let s = 1_000_000_000i64;
-    for (k, (class, height)) in [("c1", 1.60), ("c3", 1.90)].iter().enumerate() {
-        let t0 = k as i64 * 20 * s;
-        let state = |t: i64, name: &str| SessionState {
-            header: Header::new(t, "world"),
-            state: name.to_owned(),
-            height_m: *height,
-            height_class: (*class).to_owned(),
-            ..SessionState::default()
-        };
-        rec.write(topics::SESSION_STATE, t0, &state(t0, "working"))
-            .unwrap();
-        for f in 0..50 {
-            let t = t0 + f * s / 10;
-            let pose = OperatorPose {
-                header: Header::new(t, "world"),
-                x: vec![0.0; 33],
-                y: vec![0.0; 33],
-                z: vec![1.0; 33],
-                ..OperatorPose::default()
-            };
-            rec.write(topics::OPERATOR_POSE, t, &pose).unwrap();
-        }
-        rec.write(
-            topics::SESSION_STATE,
-            t0 + 10 * s,
-            &state(t0 + 10 * s, "session_ended"),
-        )
-        .unwrap();
-    }
+    let mut rec = ergocell::recording::McapRecorder::create(&path).unwrap();
+    common::write_sessions(&mut rec, 0, &[("c1", 1.60), ("c3", 1.90)], 50, 10);
     rec.finish().unwrap();
     path
 }

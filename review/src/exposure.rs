@@ -35,7 +35,7 @@ pub const ALL: &str = "all";
 
 /// Poses are put back in capture order within this many messages before the activity tracker
 /// reads them (the review sorts a whole recording; a stream sorts a window).
-const REORDER_WINDOW: usize = 64;
+pub const REORDER_WINDOW: usize = 64;
 
 /// One session's exposure in one task segment (or the whole session, [`ALL`]): the facts a store
 /// keeps and any engine can add up.

@@ -231,6 +231,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 for p in &r.stats.problems {
                     eprintln!("    {p}");
                 }
+                if r.late_poses > 0 {
+                    eprintln!(
+                        "    {} operator pose(s) arrived more than {} messages out of capture order and were not read for the task segments",
+                        r.late_poses,
+                        ergocell_review::exposure::REORDER_WINDOW
+                    );
+                }
             }
             Err(e) => {
                 eprintln!("  {label}: left out: {e}");

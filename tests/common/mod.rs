@@ -409,31 +409,48 @@ impl Drop for AnchoredCell {
 
 /// A small but complete recording (one operator session) for `report`.
 pub fn small_recording(path: &Path) {
-    use ergocell::recording::{topics, McapRecorder};
-    use ergocell_bridge::msg::{Header, OperatorPose, SessionState};
-    let mut rec = McapRecorder::create(path).unwrap();
-    let s = 1_000_000_000i64;
-    let state = |t: i64, name: &str| SessionState {
-        header: Header::new(t, "world"),
-        state: name.to_owned(),
-        height_m: 1.75,
-        height_class: "c2".to_owned(),
-        ..SessionState::default()
-    };
-    rec.write(topics::SESSION_STATE, 0, &state(0, "working"))
-        .unwrap();
-    for f in 0..20 {
-        let t = f * s / 10;
-        let pose = OperatorPose {
-            header: Header::new(t, "world"),
-            x: vec![0.0; 33],
-            y: vec![0.0; 33],
-            z: vec![1.0; 33],
-            ..OperatorPose::default()
-        };
-        rec.write(topics::OPERATOR_POSE, t, &pose).unwrap();
-    }
-    rec.write(topics::SESSION_STATE, 2 * s, &state(2 * s, "session_ended"))
-        .unwrap();
+    let mut rec = ergocell::recording::McapRecorder::create(path).unwrap();
+    write_sessions(&mut rec, 0, &[("c2", 1.75)], 20, 2);
     rec.finish().unwrap();
+}
+
+/// Writes one operator session per `(class, height)` into `rec`, 20 s apart from `start_nanos`
+/// (nanoseconds, the recording's clock): a `working` state, `frames` poses at 10 Hz (every landmark
+/// at (0, 0, 1)), then `session_ended` `end_secs` after its start.
+pub fn write_sessions(
+    rec: &mut ergocell::recording::McapRecorder,
+    start_nanos: i64,
+    sessions: &[(&str, f64)],
+    frames: i64,
+    end_secs: i64,
+) {
+    use ergocell::recording::topics;
+    use ergocell_bridge::msg::{Header, OperatorPose, SessionState};
+    let s = 1_000_000_000i64;
+    for (k, (class, height)) in sessions.iter().enumerate() {
+        let t0 = start_nanos + k as i64 * 20 * s;
+        let state = |t: i64, name: &str| SessionState {
+            header: Header::new(t, "world"),
+            state: name.to_owned(),
+            height_m: *height,
+            height_class: (*class).to_owned(),
+            ..SessionState::default()
+        };
+        rec.write(topics::SESSION_STATE, t0, &state(t0, "working"))
+            .unwrap();
+        for f in 0..frames {
+            let t = t0 + f * s / 10;
+            let pose = OperatorPose {
+                header: Header::new(t, "world"),
+                x: vec![0.0; 33],
+                y: vec![0.0; 33],
+                z: vec![1.0; 33],
+                ..OperatorPose::default()
+            };
+            rec.write(topics::OPERATOR_POSE, t, &pose).unwrap();
+        }
+        let end = t0 + end_secs * s;
+        rec.write(topics::SESSION_STATE, end, &state(end, "session_ended"))
+            .unwrap();
+    }
 }
