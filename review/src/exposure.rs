@@ -333,16 +333,7 @@ impl Visit for SessionStream<'_> {
     }
 
     fn message(&mut self, message: Decoded) {
-        let log_time = match &message {
-            Decoded::Pose(m) => m.log_time_nanos,
-            Decoded::Ergonomics(m) => m.log_time_nanos,
-            Decoded::Reba(m) => m.log_time_nanos,
-            Decoded::Warning(m) => m.log_time_nanos,
-            Decoded::State(m) => m.log_time_nanos,
-            Decoded::RobotMarkers(m) => m.log_time_nanos,
-            Decoded::Trajectory(m) => m.log_time_nanos,
-            Decoded::ControllerEvent(m) => m.log_time_nanos,
-        };
+        let log_time = message.log_time_nanos();
         match &message {
             Decoded::Pose(_) | Decoded::Ergonomics(_) => self.next_operator(),
             Decoded::Trajectory(m) if !m.message.points.is_empty() => self.next_operator(),
@@ -480,6 +471,12 @@ impl ExposureRow {
             .then(|| self.rula_al_s[from..].iter().sum::<f64>() / self.rula_scored_s)
     }
 
+    /// Share of RULA-scored time at exactly action level `level` (1..=4); `None` when never scored.
+    pub fn rula_level_share(&self, level: u8) -> Option<f64> {
+        let k = usize::from(level.clamp(1, 4)) - 1;
+        (self.rula_scored_s > 0.0).then(|| self.rula_al_s[k] / self.rula_scored_s)
+    }
+
     /// Share of REBA-scored time at REBA action level `at_least` or more (0..=4).
     pub fn reba_share(&self, at_least: u8) -> Option<f64> {
         let from = usize::from(at_least.min(4));
@@ -523,12 +520,12 @@ pub fn page(table: &ExposureTable, sources: usize, sessions: u32) -> String {
     use std::fmt::Write as _;
     let pct = |x: Option<f64>| x.map_or_else(|| "–".to_owned(), |x| format!("{:.1} %", 100.0 * x));
     let bar = |g: &ExposureRow| -> String {
-        let Some(_) = g.rula_share(1) else {
+        if g.rula_share(1).is_none() {
             return "<span class=\"none\">not scored</span>".to_owned();
-        };
+        }
         let mut out = String::from("<span class=\"bar\">");
         for level in 1..=4u8 {
-            let share = g.rula_al_s[usize::from(level) - 1] / g.rula_scored_s;
+            let share = g.rula_level_share(level).unwrap_or(0.0);
             let _ = write!(
                 out,
                 "<span class=\"al{level}\" style=\"width:{:.2}%\" title=\"action level {level}: {:.1} %\"></span>",

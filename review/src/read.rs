@@ -48,6 +48,22 @@ pub enum Decoded {
     ControllerEvent(Stamped<ControllerEvent>),
 }
 
+impl Decoded {
+    /// The message's log time, nanoseconds (the session clock).
+    pub fn log_time_nanos(&self) -> u64 {
+        match self {
+            Self::Pose(m) => m.log_time_nanos,
+            Self::Ergonomics(m) => m.log_time_nanos,
+            Self::Reba(m) => m.log_time_nanos,
+            Self::Warning(m) => m.log_time_nanos,
+            Self::State(m) => m.log_time_nanos,
+            Self::RobotMarkers(m) => m.log_time_nanos,
+            Self::Trajectory(m) => m.log_time_nanos,
+            Self::ControllerEvent(m) => m.log_time_nanos,
+        }
+    }
+}
+
 /// What a reader hands the recording to, message by message ([`read_recording`] collects it all
 /// into a [`Recording`]; [`stream_recording`] hands it on without keeping it).
 pub trait Visit {

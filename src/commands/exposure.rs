@@ -254,31 +254,27 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
-    let groups = csv_bytes(table.groups.iter().map(|(k, g)| {
-        GroupCsv {
-            operator: &k.operator,
-            period: k.period,
-            period_start: &k.period_start,
-            class: &k.class,
-            segment: &k.segment,
-            sessions: g.sessions,
-            hours: g.duration_s / 3600.0,
-            rula_scored_hours: g.rula_scored_s / 3600.0,
-            rula_al1_share: g
-                .rula_share(1)
-                .map(|all| all - g.rula_share(2).unwrap_or(0.0)),
-            rula_al2_share: g.rula_share(2).map(|x| x - g.rula_share(3).unwrap_or(0.0)),
-            rula_al3_share: g.rula_share(3).map(|x| x - g.rula_share(4).unwrap_or(0.0)),
-            rula_al4_share: g.rula_share(4),
-            rula_al3plus_share: g.rula_share(3),
-            reba_scored_hours: g.reba_scored_s / 3600.0,
-            reba_al3plus_share: g.reba_share(3),
-            rula_al3_longest_s: g.rula_al3_longest_s,
-            peak_grand_score: g.peak_grand_score,
-            static_holds: g.static_holds,
-            static_holds_exceeded: g.static_holds_exceeded,
-            parts_taken: g.parts_taken,
-        }
+    let groups = csv_bytes(table.groups.iter().map(|(k, g)| GroupCsv {
+        operator: &k.operator,
+        period: k.period,
+        period_start: &k.period_start,
+        class: &k.class,
+        segment: &k.segment,
+        sessions: g.sessions,
+        hours: g.duration_s / 3600.0,
+        rula_scored_hours: g.rula_scored_s / 3600.0,
+        rula_al1_share: g.rula_level_share(1),
+        rula_al2_share: g.rula_level_share(2),
+        rula_al3_share: g.rula_level_share(3),
+        rula_al4_share: g.rula_level_share(4),
+        rula_al3plus_share: g.rula_share(3),
+        reba_scored_hours: g.reba_scored_s / 3600.0,
+        reba_al3plus_share: g.reba_share(3),
+        rula_al3_longest_s: g.rula_al3_longest_s,
+        peak_grand_score: g.peak_grand_score,
+        static_holds: g.static_holds,
+        static_holds_exceeded: g.static_holds_exceeded,
+        parts_taken: g.parts_taken,
     }))?;
     output::write("--out", &outputs[0], true, &groups)?;
     output::write(
