@@ -37,8 +37,8 @@ use ergocell_ergonomics::height::{
 };
 use ergocell_ergonomics::rula::action_level;
 use ergocell_ergonomics::{
-    AssessmentConfig, FrameAssessment, HeightClass, HeightConfig, HeightStatus, RulaAssessor,
-    UpVector, WarningConfig, WarningKind, WarningTracker,
+    AssessmentConfig, FrameAssessment, HeightClass, HeightConfig, HeightStatus, RulaAssessor, Side,
+    UpVector, WarningConfig, WarningEvent, WarningKind, WarningTracker,
 };
 use ergocell_perception::{CameraRig, FusionEngine, FusionMethod};
 use ergocell_skeleton::Landmark;
@@ -454,19 +454,58 @@ fn truth_headlines(ticks: &[Tick]) -> Result<Vec<Option<Scored>>, SimError> {
 
 /// Warnings the controller's warning tracker raises on the truth's assessments (unsmoothed, every
 /// tick).
-fn true_warnings_raised(ticks: &[Tick]) -> Result<usize, SimError> {
+fn true_warnings_raised(ticks: &[Tick]) -> Result<Vec<RaisedWarning>, SimError> {
     let mut truth = RulaAssessor::new(truth_config(AssessmentConfig::new(up()?)))?;
     let mut warnings = WarningTracker::new(WarningConfig::default());
-    let mut raised = 0;
+    let mut raised = Vec::new();
     for t in ticks {
         let a = truth.assess(&t.truth.skeleton)?;
-        raised += warnings
-            .update(&a)
-            .iter()
-            .filter(|w| w.kind == WarningKind::Raised)
-            .count();
+        raised.extend(warnings.update(&a).iter().filter_map(RaisedWarning::of));
     }
     Ok(raised)
+}
+
+/// A posture warning raised (not changed or cleared): where and when, for matching the pipeline's
+/// warnings against the truth's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct RaisedWarning {
+    stamp_nanos: i64,
+    region: BodyRegion,
+    side: Option<Side>,
+}
+
+impl RaisedWarning {
+    fn of(w: &WarningEvent) -> Option<Self> {
+        (w.kind == WarningKind::Raised).then_some(Self {
+            stamp_nanos: w.stamp_nanos,
+            region: w.region,
+            side: w.side,
+        })
+    }
+}
+
+/// How many of `a`'s warnings have a warning of `b` for the same region and side within
+/// `window_nanos` of their stamp (each of `b`'s used at most once, nearest first).
+fn warnings_matched(a: &[RaisedWarning], b: &[RaisedWarning], window_nanos: i64) -> usize {
+    let mut used = vec![false; b.len()];
+    let mut matched = 0;
+    for w in a {
+        let nearest = b
+            .iter()
+            .enumerate()
+            .filter(|(j, v)| {
+                !used[*j]
+                    && v.region == w.region
+                    && v.side == w.side
+                    && (v.stamp_nanos - w.stamp_nanos).abs() <= window_nanos
+            })
+            .min_by_key(|(_, v)| (v.stamp_nanos - w.stamp_nanos).abs());
+        if let Some((j, _)) = nearest {
+            used[j] = true;
+            matched += 1;
+        }
+    }
+    matched
 }
 
 /// `n` per minute, NaN over no time.
@@ -1126,6 +1165,16 @@ pub struct RulaAgreement {
     /// posture more often than the truth would tell them learns to ignore the display.
     pub warnings_per_min: f64,
     pub true_warnings_per_min: f64,
+    /// The same as counts: warnings raised by the pipeline and on the truth, over `minutes`.
+    pub warnings_raised: usize,
+    pub true_warnings_raised: usize,
+    pub minutes: f64,
+    /// Of the truth's warnings, those the pipeline also raised (same region and side, within the
+    /// warnings' dwell time of the truth's stamp): an operator must get the warnings that matter,
+    /// not only few of them.
+    pub true_warnings_caught: usize,
+    /// Of the pipeline's warnings, those the truth also raised (the same match).
+    pub warnings_confirmed: usize,
     pub statures_m: Vec<f64>,
 }
 
@@ -1201,26 +1250,29 @@ pub fn rula_agreement_with(
     // [certain, uncertain]: (frames, grand score equal)
     let mut by_flag = [(0usize, 0usize); 2];
     let (mut raised, mut true_raised, mut minutes) = (0usize, 0usize, 0.0);
+    let (mut caught, mut confirmed) = (0usize, 0usize);
+    let match_window = WarningConfig::default().dwell_nanos;
     for (i, &h) in statures_m.iter().enumerate() {
         let mut script = SessionScript::new(handovers.before_m);
         script.cycles = cycles;
         let ticks = simulate(setup, i, h, &script)?;
         let truth = truth_headlines(&ticks)?;
-        true_raised += true_warnings_raised(&ticks)?;
+        let true_warnings = true_warnings_raised(&ticks)?;
+        true_raised += true_warnings.len();
+        let mut warnings: Vec<RaisedWarning> = Vec::new();
         if let (Some(first), Some(last)) = (ticks.first(), ticks.last()) {
             minutes += (last.frame.stamp_nanos - first.frame.stamp_nanos) as f64 / 60e9;
         }
         // (tick index, the pipeline's headline) of every tracked frame
         let mut scores: Vec<(usize, Option<Scored>)> = Vec::new();
         run_pipeline_with(setup, config.clone(), &ticks, |k, tracked| {
-            raised += tracked
-                .warnings
-                .iter()
-                .filter(|w| w.kind == WarningKind::Raised)
-                .count();
+            warnings.extend(tracked.warnings.iter().filter_map(RaisedWarning::of));
             scores.push((k, pipeline_headline(tracked)?));
             Ok(())
         })?;
+        raised += warnings.len();
+        caught += warnings_matched(&true_warnings, &warnings, match_window);
+        confirmed += warnings_matched(&warnings, &true_warnings, match_window);
         for (k, e) in scores {
             if !at_station(ticks[k].truth.phase) {
                 continue;
@@ -1287,6 +1339,11 @@ pub fn rula_agreement_with(
         grand_exact_certain: share(by_flag[0]),
         warnings_per_min: per_minute(raised, minutes),
         true_warnings_per_min: per_minute(true_raised, minutes),
+        warnings_raised: raised,
+        true_warnings_raised: true_raised,
+        minutes: round6(minutes),
+        true_warnings_caught: caught,
+        warnings_confirmed: confirmed,
         statures_m: statures_m.to_vec(),
     })
 }
@@ -1294,6 +1351,37 @@ pub fn rula_agreement_with(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn warnings_match_by_region_side_and_time_each_once() {
+        let w = |secs: f64, region: BodyRegion, side: Option<Side>| RaisedWarning {
+            stamp_nanos: (secs * 1e9) as i64,
+            region,
+            side,
+        };
+        let truth = [
+            w(10.0, BodyRegion::Neck, None),
+            w(10.5, BodyRegion::Neck, None),
+            w(20.0, BodyRegion::Wrist, Some(Side::Left)),
+            w(30.0, BodyRegion::Trunk, None),
+        ];
+        let pipeline = [
+            // one neck warning can stand for one of the truth's two, not both
+            w(11.0, BodyRegion::Neck, None),
+            // the other wrist
+            w(20.0, BodyRegion::Wrist, Some(Side::Right)),
+            // too late
+            w(32.5, BodyRegion::Trunk, None),
+        ];
+        let window = 2_000_000_000;
+        assert_eq!(warnings_matched(&truth, &pipeline, window), 1);
+        assert_eq!(warnings_matched(&pipeline, &truth, window), 1);
+        assert_eq!(warnings_matched(&truth, &truth, window), truth.len());
+        assert_eq!(warnings_matched(&truth, &[], window), 0);
+        // within the window, on either side
+        let early = [w(28.0, BodyRegion::Trunk, None)];
+        assert_eq!(warnings_matched(&truth, &early, window), 1);
+    }
 
     #[test]
     fn kappa_of_perfect_and_chance_agreement() {

@@ -458,7 +458,52 @@ pub struct RulaSeeds {
     pub region_exact: Vec<Option<Spread>>,
     pub warnings_per_min: Option<Spread>,
     pub true_warnings_per_min: Option<Spread>,
+    /// The warnings of every seed together.
+    pub warnings_pooled: PooledWarnings,
     pub goals: Vec<Goal>,
+}
+
+/// Posture warnings of many seeds' sessions together: a seed on which the truth raises none and the
+/// pipeline one fails the per-seed goal, so the rate over all of them is what an operator meets.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PooledWarnings {
+    pub minutes: f64,
+    pub raised: usize,
+    pub true_raised: usize,
+    /// Per minute over all the seeds' sessions (NaN, `null` in JSON, over no time).
+    pub per_min: f64,
+    pub true_per_min: f64,
+    /// Of the truth's warnings, the share the pipeline also raised (same region and side, within
+    /// the dwell time); NaN when the truth raised none.
+    pub caught_share: f64,
+    /// Of the pipeline's warnings, the share the truth also raised; NaN when it raised none.
+    pub confirmed_share: f64,
+}
+
+impl PooledWarnings {
+    fn of(runs: &[RulaAgreement]) -> Self {
+        let sum = |f: &dyn Fn(&RulaAgreement) -> usize| runs.iter().map(f).sum::<usize>();
+        let minutes: f64 = runs.iter().map(|r| r.minutes).sum();
+        let (raised, true_raised) = (
+            sum(&|r| r.warnings_raised),
+            sum(&|r| r.true_warnings_raised),
+        );
+        let ratio = |n: usize, d: f64| if d > 0.0 { n as f64 / d } else { f64::NAN };
+        Self {
+            minutes,
+            raised,
+            true_raised,
+            per_min: ratio(raised, minutes),
+            true_per_min: ratio(true_raised, minutes),
+            caught_share: ratio(sum(&|r| r.true_warnings_caught), true_raised as f64),
+            confirmed_share: ratio(sum(&|r| r.warnings_confirmed), raised as f64),
+        }
+    }
+
+    /// Whether the pooled rate is at most the truth's + 20 % ([`WARNING_RATE_GOAL`]).
+    pub fn rate_goal_holds(&self) -> bool {
+        self.per_min <= WARNING_RATE_GOAL * self.true_per_min
+    }
 }
 
 /// The operator's warnings may come at most this much more often than the truth's (1.2: 20 %).
@@ -513,6 +558,7 @@ pub fn rula_agreement(seeds: &[u64], runs: &[RulaAgreement]) -> RulaSeeds {
         region_exact,
         warnings_per_min: spread(seeds, &pick(&|r| r.warnings_per_min), Worse::Higher),
         true_warnings_per_min: spread(seeds, &pick(&|r| r.true_warnings_per_min), Worse::Higher),
+        warnings_pooled: PooledWarnings::of(runs),
         goals,
     }
 }

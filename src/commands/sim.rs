@@ -1200,6 +1200,24 @@ fn seeds_rula_agreement(
             spread_text(sum.warnings_per_min.as_ref(), 1.0, 2),
             spread_text(sum.true_warnings_per_min.as_ref(), 1.0, 2)
         );
+        let w = &sum.warnings_pooled;
+        println!(
+            "  warnings over all seeds: {} in {:.1} min ({:.2} per minute; the truth {}, {:.2} per minute: {}); \
+             the truth's also raised by the pipeline (same region and side, within the dwell time): {:.0} %; \
+             the pipeline's also raised by the truth: {:.0} %",
+            w.raised,
+            w.minutes,
+            w.per_min,
+            w.true_raised,
+            w.true_per_min,
+            if w.rate_goal_holds() {
+                "at most the truth's + 20 %"
+            } else {
+                "more than the truth's + 20 %"
+            },
+            100.0 * w.caught_share,
+            100.0 * w.confirmed_share
+        );
         print_goals(&sum.goals);
     }
     let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
@@ -1407,8 +1425,13 @@ fn print_agreement(r: &RulaAgreement) {
         r.uncertain_frames, r.frames, r.grand_exact_uncertain, r.grand_exact_certain
     );
     println!(
-        "posture warnings raised: {:.2} per minute (on the truth's assessments {:.2})",
-        r.warnings_per_min, r.true_warnings_per_min
+        "posture warnings raised: {:.2} per minute (on the truth's assessments {:.2}); of the truth's {}, {} also raised by the pipeline (same region and side, within the dwell time); of the pipeline's {}, {} also raised by the truth",
+        r.warnings_per_min,
+        r.true_warnings_per_min,
+        r.true_warnings_raised,
+        r.true_warnings_caught,
+        r.warnings_raised,
+        r.warnings_confirmed
     );
 }
 
