@@ -705,3 +705,167 @@ fn the_review_shows_each_robot_leg_and_the_controllers_events() {
     );
     assert!(s["facts"]["parts_taken"].as_array().unwrap().is_empty());
 }
+
+/// A report of `rec` with `extra` arguments, and its data.
+fn report_with(
+    rec: &Path,
+    name: &str,
+    extra: &[&str],
+) -> (std::process::Output, serde_json::Value) {
+    let out = tmp(name);
+    let _ = std::fs::remove_file(&out);
+    let mut args = vec![
+        "report",
+        rec.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let o = ergocell(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let data = report_data(&std::fs::read_to_string(&out).unwrap());
+    (o, data)
+}
+
+#[test]
+fn an_overview_holds_the_worst_moments_and_the_numbers_of_every_frame() {
+    let rec = demo_recording();
+    let (_, all) = report_with(rec, "overview-all.html", &["--page-frames", "all"]);
+    // A page of a few frames: the overview's choice is what a shift gets, at a small scale.
+    let (o, over) = report_with(
+        rec,
+        "overview-small.html",
+        &[
+            "--page-frames",
+            "overview",
+            "--overview-frames",
+            "20",
+            "--window-frames",
+            "150",
+        ],
+    );
+    let (a, b) = (&all["sessions"][0], &over["sessions"][0]);
+    assert!(
+        a.get("overview").is_none(),
+        "a page of every frame says nothing"
+    );
+    let ov = &b["overview"];
+    let t_all: Vec<f64> = a["frames"]["t"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let t_kept: Vec<f64> = b["frames"]["t"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(
+        ov["frames_recorded"].as_u64().unwrap() as usize,
+        t_all.len()
+    );
+    assert_eq!(ov["frames_kept"].as_u64().unwrap() as usize, t_kept.len());
+    assert!(
+        t_kept.len() < t_all.len() && t_kept.len() <= 20 + 1 + 150,
+        "{} of {}",
+        t_kept.len(),
+        t_all.len()
+    );
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains(&format!("{} frames over", t_all.len())),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains(&format!("the page holds {}", t_kept.len())),
+        "{stdout}"
+    );
+    // The numbers are over every frame: the same summary, rows, angle distributions, warnings,
+    // robot and facts as the page of every frame.
+    for key in ["summary", "regions", "angles", "warnings", "robot", "facts"] {
+        if key == "robot" {
+            // The robot's TCP track is thinned with the frames; its legs and events are whole.
+            for k in ["legs", "holds", "events", "handover_point"] {
+                assert_eq!(a[key][k], b[key][k], "robot.{k}");
+            }
+        } else {
+            assert_eq!(a[key], b[key], "{key}");
+        }
+    }
+    // Each kept frame is the recorded frame at that time, whole.
+    for (j, t) in t_kept.iter().enumerate() {
+        let i = t_all.iter().position(|x| x == t).unwrap();
+        for series in [
+            "positions",
+            "strain",
+            "grand_left",
+            "grand_right",
+            "action_level",
+            "phase",
+            "reba_left",
+        ] {
+            assert_eq!(
+                a["frames"][series][i], b["frames"][series][j],
+                "{series} at {t} s"
+            );
+        }
+    }
+    // The worst moment (the longest stretch at the highest action level, here 3) is kept at the
+    // recorded rate: every frame within its window.
+    let level = |i: usize| a["frames"]["action_level"][i].as_u64().unwrap();
+    let top = (0..t_all.len()).map(level).max().unwrap();
+    assert!(top >= 3, "the demo reaches action level 3");
+    let mut runs: Vec<(usize, usize)> = Vec::new();
+    for i in 0..t_all.len() {
+        if level(i) >= top {
+            match runs.last_mut() {
+                Some(r) if r.1 + 1 == i => r.1 = i,
+                _ => runs.push((i, i)),
+            }
+        }
+    }
+    let longest = runs
+        .iter()
+        .max_by_key(|r| (r.1 - r.0, std::cmp::Reverse(r.0)))
+        .unwrap();
+    let middle = t_all[usize::midpoint(longest.0, longest.1)];
+    let windows = ov["windows"].as_array().unwrap();
+    let window = windows
+        .iter()
+        .map(|w| (w[0].as_f64().unwrap(), w[1].as_f64().unwrap()))
+        .find(|&(lo, hi)| lo <= middle && middle <= hi)
+        .expect("the longest stretch at the highest action level is in a window");
+    let inside = |ts: &[f64]| {
+        ts.iter()
+            .filter(|&&t| window.0 <= t && t <= window.1)
+            .count()
+    };
+    assert_eq!(inside(&t_kept), inside(&t_all));
+    // Outside the windows, at most one frame per bucket.
+    let bucket = ov["bucket_s"].as_f64().unwrap();
+    assert!(bucket >= 1.0);
+    let in_any = |t: f64| {
+        windows
+            .iter()
+            .any(|w| w[0].as_f64().unwrap() <= t && t <= w[1].as_f64().unwrap())
+    };
+    let outside = t_kept.iter().filter(|&&t| !in_any(t)).count();
+    assert!(outside <= 20, "{outside} frames outside the windows");
+    // The frames CSV needs every frame.
+    let csv = tmp("overview.csv");
+    let o = ergocell(&[
+        "report",
+        rec.to_str().unwrap(),
+        "--out",
+        tmp("overview-csv.html").to_str().unwrap(),
+        "--force",
+        "--page-frames",
+        "overview",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--csv writes every frame"));
+}

@@ -125,6 +125,41 @@ fn report_opens_offline_from_file_in_headless_chromium() {
 }
 
 #[test]
+fn an_overview_report_plays_and_says_what_it_holds_in_headless_chromium() {
+    if common::skip_browser_test() {
+        return;
+    }
+    let rec = tmp("browser-overview.mcap");
+    demo(&rec);
+    let html = tmp("browser-overview.html");
+    // A page of a few frames: a shift's overview at a small scale (sparse frames outside the worst
+    // moment, every frame within it).
+    let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(root())
+        .args(["report", rec.to_str().unwrap(), "--page-frames", "overview"])
+        .args([
+            "--overview-frames",
+            "20",
+            "--window-frames",
+            "150",
+            "--force",
+            "--out",
+        ])
+        .arg(&html)
+        .stdout(Stdio::null())
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let shot = tmp("overview.png");
+    let _ = std::fs::remove_file(&shot);
+    node(
+        "web/e2e/report.e2e.mjs",
+        &[html.to_str().unwrap(), shot.to_str().unwrap(), "--overview"],
+    );
+    assert!(std::fs::read(&shot).unwrap().starts_with(b"\x89PNG"));
+}
+
+#[test]
 fn the_page_handles_edge_case_data_and_every_control() {
     // Zero frames, one frame, all-null strain, no robot, compare with problems, no sessions; step
     // buttons, keys, scrubber, speed, the warning tooltip, B's timeline (web/e2e/variants.e2e.mjs).

@@ -68,6 +68,26 @@ pub struct SessionReview {
     /// The session summary the rows come from (`ergocell rula track`'s numbers for the same frames):
     /// action levels, regions, grand and REBA scores, exposure. `report --summary-csv` writes it.
     pub summary: SessionSummary,
+    /// Present when `frames` holds not every recorded frame (a long recording,
+    /// [`crate::overview`]): which ones it holds. The summary, rows and distributions are still
+    /// over every frame.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub overview: Option<Overview>,
+}
+
+/// Which frames a long recording's page holds: every frame within `windows` (the worst moments, at
+/// the recorded rate) and, elsewhere, the worst frame of each `bucket_s` seconds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Overview {
+    /// Frames recorded (operator poses, by capture stamp).
+    pub frames_recorded: usize,
+    /// Of them, on the page.
+    pub frames_kept: usize,
+    /// Outside the windows, one frame (the highest action level, then grand score) per this many
+    /// seconds.
+    pub bucket_s: f64,
+    /// Spans kept at the recorded rate, seconds from the recording's first message, in order.
+    pub windows: Vec<[f64; 2]>,
 }
 
 /// Where the numbers come from.
@@ -334,7 +354,7 @@ const MM: u8 = 3;
 
 /// `v` rounded to `decimals` decimal places (scaled by an exact power of ten, then divided, so the
 /// JSON prints `0.175`, not `0.17500000000000002`).
-fn round_to(v: f64, decimals: u8) -> f64 {
+pub(crate) fn round_to(v: f64, decimals: u8) -> f64 {
     let k = 10f64.powi(i32::from(decimals));
     (v * k).round() / k
 }
@@ -350,6 +370,28 @@ pub(crate) fn finite(x: f64) -> Option<f64> {
 
 /// Analyses one recording; `label` names it on the page (usually the file name).
 pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
+    analyse_with(rec, label, None)
+}
+
+/// What a streamed pass measured over every frame of a recording of which the [`Recording`] given to
+/// [`analyse_with`] holds only some frames ([`crate::overview`]): the summary, each kept frame's
+/// facts (its task segment), the angle distributions and what was malformed.
+pub(crate) struct WholeRecording {
+    pub(crate) summary: SessionSummary,
+    pub(crate) facts: BTreeMap<u64, FrameFacts>,
+    pub(crate) angles: Vec<AngleStats>,
+    /// What was wrong with the poses ([`AngleSamples::problems`]) and their order.
+    pub(crate) problems: Vec<String>,
+    /// `None` when every frame was kept.
+    pub(crate) overview: Option<Overview>,
+}
+
+/// [`analyse`], with the numbers over all frames from `whole` when the recording holds only some.
+pub(crate) fn analyse_with(
+    rec: &Recording,
+    label: &str,
+    whole: Option<WholeRecording>,
+) -> SessionReview {
     let t0 = rec.first_log_time_nanos.unwrap_or(0);
     let mut problems = rec.problems.clone();
 
@@ -377,24 +419,33 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
     poses.dedup_by_key(|p| stamp(&p.message.header));
     let robot = robot(rec, t0);
     // Task segments and the trunk and neck angles, by capture stamp (see `phase_of`).
-    let handovers = handover_spans(&robot);
-    let mut activity = ActivityTracker::new(ActivityConfig::default(), &UpVector::z()).ok();
-    let mut by_stamp: BTreeMap<u64, FrameFacts> = BTreeMap::new();
-    for p in &poses {
-        let m = &p.message;
-        let t = stamp(&m.header);
-        let act = skeleton_of(m, t).and_then(|sk| activity.as_mut().and_then(|a| a.update(&sk)));
-        by_stamp.insert(t, frame_facts(m, phase_of(act, secs(t, t0), &handovers)));
-    }
+    let (by_stamp, whole) = if let Some(w) = whole {
+        let WholeRecording {
+            summary,
+            facts,
+            angles,
+            problems,
+            overview,
+        } = w;
+        (facts, Some((summary, angles, problems, overview)))
+    } else {
+        let handovers = handover_spans(&robot);
+        let mut activity = ActivityTracker::new(ActivityConfig::default(), &UpVector::z()).ok();
+        let mut by_stamp: BTreeMap<u64, FrameFacts> = BTreeMap::new();
+        for p in &poses {
+            let m = &p.message;
+            let t = stamp(&m.header);
+            let act =
+                skeleton_of(m, t).and_then(|sk| activity.as_mut().and_then(|a| a.update(&sk)));
+            by_stamp.insert(t, frame_facts(m, phase_of(act, secs(t, t0), &handovers)));
+        }
+        (by_stamp, None)
+    };
     let mut frames = Frames::default();
-    let mut malformed = 0usize;
-    let mut implausible_angles = 0usize;
-    let mut angle_samples: Vec<(String, Vec<f64>)> = Vec::new();
+    let mut angle_samples = AngleSamples::default();
     for p in poses {
         let m = &p.message;
-        if m.x.len() != LANDMARK_COUNT || m.y.len() != LANDMARK_COUNT || m.z.len() != LANDMARK_COUNT
-        {
-            malformed += 1;
+        if !angle_samples.push(m) {
             continue;
         }
         let t = stamp(&m.header);
@@ -441,61 +492,34 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         let uncertain = |s: Option<&RulaSide>| s.and_then(scored).is_some_and(|s| s.uncertain);
         frames.uncertain_left.push(uncertain(e.map(|e| &e.left)));
         frames.uncertain_right.push(uncertain(e.map(|e| &e.right)));
-        if m.angle_names.len() == m.angle_rad.len() {
-            // Kept in the recorder's order, whether or not an angle was observed in this frame.
-            for (name, &v) in m.angle_names.iter().zip(&m.angle_rad) {
-                let k = if let Some(k) = angle_samples.iter().position(|(n, _)| n == name) {
-                    k
-                } else {
-                    angle_samples.push((name.clone(), Vec::new()));
-                    angle_samples.len() - 1
-                };
-                match finite(v).map(f64::to_degrees) {
-                    Some(deg) if deg.abs() <= MAX_ANGLE_DEG => angle_samples[k].1.push(deg),
-                    Some(_) => implausible_angles += 1,
-                    None => {}
-                }
-            }
+    }
+    let (summary, angles, overview) =
+        if let Some((summary, angles, pose_problems, overview)) = whole {
+            problems.extend(pose_problems);
+            (summary, angles, overview)
         } else {
-            malformed += 1;
-        }
-    }
-    if implausible_angles > 0 {
-        problems.push(format!(
-            "{implausible_angles} joint angle value(s) beyond ±{MAX_ANGLE_DEG}° left out of the distributions (damaged data)"
-        ));
-    }
-    if malformed > 0 {
-        problems.push(format!(
-            "{malformed} operator pose message(s) skipped: not 33 landmarks, or angle names and values of different lengths"
-        ));
-    }
-
-    // Regions over the scored time of the recording (every ErgonomicState, whether or not its
-    // pose was recorded), summarised as `ergocell rula track` does.
-    let summary = summarise(
-        ergonomics.iter().map(|e| {
-            let e = &e.message;
-            let t = stamp(&e.header);
-            let r = reba_at(t);
-            (
-                t,
-                ScoredFrame {
-                    stamp_nanos: e.header.stamp.to_nanos(),
-                    left: scored_side(&e.left, r.map(|r| &r.left)),
-                    right: scored_side(&e.right, r.map(|r| &r.right)),
-                },
-            )
-        }),
-        |t| by_stamp.get(&t).copied().unwrap_or_default(),
-    );
+            // Regions over the scored time of the recording (every ErgonomicState, whether or not
+            // its pose was recorded), summarised as `ergocell rula track` does.
+            let summary = summarise(
+                ergonomics.iter().map(|e| {
+                    let e = &e.message;
+                    let t = stamp(&e.header);
+                    let r = reba_at(t);
+                    (
+                        t,
+                        ScoredFrame {
+                            stamp_nanos: e.header.stamp.to_nanos(),
+                            left: scored_side(&e.left, r.map(|r| &r.left)),
+                            right: scored_side(&e.right, r.map(|r| &r.right)),
+                        },
+                    )
+                }),
+                |t| by_stamp.get(&t).copied().unwrap_or_default(),
+            );
+            problems.extend(angle_samples.problems());
+            (summary, angle_samples.stats(), None)
+        };
     let regions = region_rows(&summary);
-
-    let angles = angle_samples
-        .into_iter()
-        .filter(|(_, samples)| !samples.is_empty())
-        .map(|(name, samples)| angle_stats(&name, &samples))
-        .collect();
 
     SessionReview {
         label: label.to_owned(),
@@ -532,6 +556,72 @@ pub fn analyse(rec: &Recording, label: &str) -> SessionReview {
         regions,
         angles,
         summary,
+        overview,
+    }
+}
+
+/// The joint angles of every pose, for their distributions, and the poses that could not be read.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct AngleSamples {
+    /// Per angle name, in the recorder's order: the values in degrees.
+    samples: Vec<(String, Vec<f64>)>,
+    malformed: usize,
+    implausible: usize,
+}
+
+impl AngleSamples {
+    /// Takes one pose's angles; `false` when the pose is not 33 landmarks (no frame).
+    pub(crate) fn push(&mut self, m: &ergocell_bridge::msg::OperatorPose) -> bool {
+        if m.x.len() != LANDMARK_COUNT || m.y.len() != LANDMARK_COUNT || m.z.len() != LANDMARK_COUNT
+        {
+            self.malformed += 1;
+            return false;
+        }
+        if m.angle_names.len() != m.angle_rad.len() {
+            self.malformed += 1;
+            return true;
+        }
+        // Kept in the recorder's order, whether or not an angle was observed in this frame.
+        for (name, &v) in m.angle_names.iter().zip(&m.angle_rad) {
+            let k = if let Some(k) = self.samples.iter().position(|(n, _)| n == name) {
+                k
+            } else {
+                self.samples.push((name.clone(), Vec::new()));
+                self.samples.len() - 1
+            };
+            match finite(v).map(f64::to_degrees) {
+                Some(deg) if deg.abs() <= MAX_ANGLE_DEG => self.samples[k].1.push(deg),
+                Some(_) => self.implausible += 1,
+                None => {}
+            }
+        }
+        true
+    }
+
+    /// What was wrong with the poses, for a person.
+    pub(crate) fn problems(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if self.implausible > 0 {
+            out.push(format!(
+                "{} joint angle value(s) beyond ±{MAX_ANGLE_DEG}° left out of the distributions (damaged data)",
+                self.implausible
+            ));
+        }
+        if self.malformed > 0 {
+            out.push(format!(
+                "{} operator pose message(s) skipped: not 33 landmarks, or angle names and values of different lengths",
+                self.malformed
+            ));
+        }
+        out
+    }
+
+    pub(crate) fn stats(self) -> Vec<AngleStats> {
+        self.samples
+            .into_iter()
+            .filter(|(_, samples)| !samples.is_empty())
+            .map(|(name, samples)| angle_stats(&name, &samples))
+            .collect()
     }
 }
 

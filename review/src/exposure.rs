@@ -176,9 +176,9 @@ fn rows_of(
 /// One operator session being read: only what its summary needs, each frame reduced to its scores
 /// and its pose's facts as it arrives.
 #[derive(Default)]
-struct SessionAccumulator {
+pub(crate) struct SessionAccumulator {
     operator: Option<String>,
-    first_log: Option<u64>,
+    pub(crate) first_log: Option<u64>,
     /// A `session_ended` state was seen: the next operator's frame or leg starts a new session.
     ended: bool,
     /// Poses not yet read by the activity tracker, by capture stamp.
@@ -186,7 +186,7 @@ struct SessionAccumulator {
     last_pose_stamp: Option<u64>,
     activity: Option<ActivityTracker>,
     /// Per capture stamp: the pose's activity and facts (its phase set at the end).
-    facts: BTreeMap<u64, (Option<Activity>, FrameFacts)>,
+    pub(crate) facts: BTreeMap<u64, (Option<Activity>, FrameFacts)>,
     /// RULA per frame (REBA attached at the end), in arrival order.
     frames: Vec<(u64, ScoredFrame)>,
     reba: BTreeMap<u64, [Option<RebaBrief>; 2]>,
@@ -195,7 +195,7 @@ struct SessionAccumulator {
     class: Option<String>,
     parts: BTreeSet<u32>,
     /// Poses that came later than the reorder window allows (read out of order).
-    late_poses: usize,
+    pub(crate) late_poses: usize,
 }
 
 fn stamp_of(h: &ergocell_bridge::msg::Header) -> u64 {
@@ -203,7 +203,7 @@ fn stamp_of(h: &ergocell_bridge::msg::Header) -> u64 {
 }
 
 impl SessionAccumulator {
-    fn new(operator: Option<String>) -> Self {
+    pub(crate) fn new(operator: Option<String>) -> Self {
         Self {
             operator,
             activity: ActivityTracker::new(ActivityConfig::default(), &UpVector::z()).ok(),
@@ -255,6 +255,13 @@ impl SessionAccumulator {
 
     /// The session's summary (the review's computation).
     fn finish(mut self, number: u32, file: &str) -> (Vec<SegmentRow>, usize) {
+        let summary = self.summarise();
+        (rows_of(&self, number, file, &summary), self.late_poses)
+    }
+
+    /// The summary of what was read (the review's computation); afterwards `facts` holds each
+    /// pose's task segment.
+    pub(crate) fn summarise(&mut self) -> SessionSummary {
         while let Some((_, p)) = self.pending_poses.pop_first() {
             self.read_pose(&p);
         }
@@ -267,7 +274,7 @@ impl SessionAccumulator {
         let mut frames = std::mem::take(&mut self.frames);
         frames.sort_by_key(|(t, _)| *t);
         let reba = &self.reba;
-        let summary = summarise(
+        summarise(
             frames.into_iter().map(|(t, mut f)| {
                 let r = reba.get(&t);
                 for (k, side) in [&mut f.left, &mut f.right].into_iter().enumerate() {
@@ -278,8 +285,7 @@ impl SessionAccumulator {
                 (t, f)
             }),
             |t| self.facts.get(&t).map(|(_, f)| *f).unwrap_or_default(),
-        );
-        (rows_of(&self, number, file, &summary), self.late_poses)
+        )
     }
 }
 
@@ -341,7 +347,14 @@ impl Visit for SessionStream<'_> {
             Decoded::State(m) if m.message.state != "session_ended" => self.next_operator(),
             _ => {}
         }
-        let s = &mut self.current;
+        self.current.take(message, log_time);
+    }
+}
+
+impl SessionAccumulator {
+    /// Reads one message of the session, logged at `log_time`.
+    pub(crate) fn take(&mut self, message: Decoded, log_time: u64) {
+        let s = self;
         s.first_log = Some(s.first_log.map_or(log_time, |f| f.min(log_time)));
         match message {
             Decoded::Pose(m) => s.pose(m.message),

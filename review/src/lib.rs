@@ -8,6 +8,8 @@
 //!   partial copy) is read up to its last complete chunk and says so; a foreign MCAP or a file that is
 //!   not MCAP at all is refused with what could be read.
 //! - [`analysis`]: the messages → [`ReviewData`], the JSON the page renders (`version` 1).
+//! - [`overview`]: a long recording (a shift) in bounded memory: read twice, streamed; its numbers
+//!   over every frame, its page the overview and the worst moments.
 //! - [`exposure`]: many recordings, streamed, → exposure per operator, day and week, task segment
 //!   and robot class (seconds that add up across sessions).
 //! - [`store`]: those sessions as Parquet, for SQL in DuckDB (or Spark, Trino) — no engine here.
@@ -22,6 +24,7 @@
 pub mod analysis;
 pub mod export;
 pub mod exposure;
+pub mod overview;
 pub mod page;
 pub mod read;
 pub mod store;

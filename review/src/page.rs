@@ -122,6 +122,7 @@ mod tests {
             regions: vec![],
             angles: vec![],
             summary: ergocell_ergonomics::summary::SummaryBuilder::new(1).finish(),
+            overview: None,
         }
     }
 

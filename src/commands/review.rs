@@ -45,7 +45,39 @@ pub struct Input {
     /// Which operator session of the `--compare` recording (1-based).
     #[arg(long, default_value_t = 1)]
     pub compare_session: usize,
+    /// Which frames the page holds: `all`, or `overview` (every frame of the worst moments, the
+    /// worst frame of each few seconds elsewhere; the summary, rows and distributions still over
+    /// every frame, in bounded memory). `auto`: the overview for a recording of 256 MiB or more
+    /// (about 50 minutes of a session) that holds one operator session.
+    #[arg(long, value_enum, default_value_t = PageFrames::Auto)]
+    pub page_frames: PageFrames,
+    /// The overview's frames outside the worst moments; hidden, for the tests.
+    #[arg(long, hide = true, default_value_t = ergocell_review::overview::OVERVIEW_FRAMES)]
+    pub overview_frames: usize,
+    /// The overview's frames within the worst moments; hidden, for the tests.
+    #[arg(long, hide = true, default_value_t = ergocell_review::overview::WINDOW_FRAMES)]
+    pub window_frames: usize,
 }
+
+impl Input {
+    fn budget(&self) -> ergocell_review::overview::Budget {
+        ergocell_review::overview::Budget {
+            overview_frames: self.overview_frames,
+            window_frames: self.window_frames,
+        }
+    }
+}
+
+/// See [`Input::page_frames`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum PageFrames {
+    Auto,
+    All,
+    Overview,
+}
+
+/// `--page-frames auto` shows the overview from this size of recording on.
+pub const OVERVIEW_FROM_BYTES: u64 = 256 << 20;
 
 #[derive(Debug, clap::Args)]
 #[command(
@@ -109,11 +141,17 @@ pub struct ReportArgs {
 }
 
 /// Reads one recording and analyses its operator session `session` (1-based); what is wrong with it
-/// goes to stderr and onto the page.
+/// goes to stderr and onto the page. The recording comes back when it was read whole (not for an
+/// overview).
 fn load(
     path: &Path,
     session: usize,
-) -> anyhow::Result<(SessionReview, ergocell_review::Recording)> {
+    frames: PageFrames,
+    budget: ergocell_review::overview::Budget,
+) -> anyhow::Result<(SessionReview, Option<ergocell_review::Recording>)> {
+    if let Some(review) = load_overview(path, session, frames, budget)? {
+        return Ok((review, None));
+    }
     let bytes = input::read(path, Kind::Recording)?;
     let recording =
         read_recording(&bytes).map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
@@ -126,10 +164,7 @@ fn load(
         ))
         .into());
     }
-    let name = path.file_name().map_or_else(
-        || path.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    );
+    let name = file_name(path);
     let (label, mut recording) = if count > 1 {
         let listing = parts
             .iter()
@@ -146,10 +181,85 @@ fn load(
     };
     recording.problems.dedup();
     let review = analyse(&recording, &label);
+    warn_problems(path, &review);
+    Ok((review, Some(recording)))
+}
+
+fn warn_problems(path: &Path, review: &SessionReview) {
     for p in &review.source.problems {
         let _ = writeln!(std::io::stderr(), "warning: {}: {p}", path.display());
     }
-    Ok((review, recording))
+}
+
+fn file_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
+}
+
+/// The overview of a long recording ([`ergocell_review::overview`]: read twice, streamed), when
+/// `frames` asks for it; `None` when the recording is to be read whole: `all`, a short recording or
+/// one that is not a regular file (a pipe cannot be read twice) under `auto`, or a recording of
+/// several operator sessions (said on stderr).
+fn load_overview(
+    path: &Path,
+    session: usize,
+    frames: PageFrames,
+    budget: ergocell_review::overview::Budget,
+) -> anyhow::Result<Option<SessionReview>> {
+    let meta = std::fs::metadata(path)
+        .ok()
+        .filter(std::fs::Metadata::is_file);
+    let wanted = match frames {
+        PageFrames::All => false,
+        PageFrames::Overview => true,
+        PageFrames::Auto => meta
+            .as_ref()
+            .is_some_and(|m| m.len() >= OVERVIEW_FROM_BYTES),
+    };
+    if !wanted {
+        return Ok(None);
+    }
+    let Some(meta) = meta else {
+        return Err(UsageError(format!(
+            "{}: --page-frames overview reads the recording twice: it must be a regular file",
+            path.display()
+        ))
+        .into());
+    };
+    if meta.len() > Kind::Recording.limit_bytes() {
+        // Said by the whole-file reader, with its limit.
+        return Ok(None);
+    }
+    let open = || -> anyhow::Result<std::io::BufReader<std::fs::File>> {
+        let file = std::fs::File::open(path)
+            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+        Ok(std::io::BufReader::with_capacity(1 << 20, file))
+    };
+    let plan = ergocell_review::overview::plan(open()?, budget)
+        .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+    if plan.sessions() > 1 || session != 1 {
+        let _ = writeln!(
+            std::io::stderr(),
+            "note: {}: {} operator sessions: reading the whole recording to show session {session}",
+            path.display(),
+            plan.sessions()
+        );
+        return Ok(None);
+    }
+    let (recorded, kept) = (plan.frames_recorded(), plan.frames_kept());
+    let review = ergocell_review::overview::analyse_planned(open()?, plan, &file_name(path))
+        .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+    if review.overview.is_some() {
+        let _ = writeln!(
+            std::io::stderr(),
+            "note: {}: the page holds {kept} of {recorded} frames (the worst moments at the recorded rate, the worst frame of each few seconds elsewhere); the numbers are over every frame",
+            path.display()
+        );
+    }
+    warn_problems(path, &review);
+    Ok(Some(review))
 }
 
 /// One line on an operator session: frames, class and height, duration.
@@ -170,12 +280,16 @@ fn describe_part(r: &ergocell_review::Recording) -> String {
     format!("{} frames, {class}, {secs:.0} s", r.poses.len())
 }
 
-/// The page's data, and the first session's recording (for the CSV exports).
-fn load_all(input: &Input) -> anyhow::Result<(ReviewData, ergocell_review::Recording)> {
-    let (first, recording) = load(&input.recording, input.session)?;
+/// The page's data, and the first session's recording when it was read whole (for the frames CSV).
+fn load_all(
+    input: &Input,
+    first_frames: PageFrames,
+) -> anyhow::Result<(ReviewData, Option<ergocell_review::Recording>)> {
+    let budget = input.budget();
+    let (first, recording) = load(&input.recording, input.session, first_frames, budget)?;
     let mut sessions = vec![first];
     if let Some(other) = &input.compare {
-        sessions.push(load(other, input.compare_session)?.0);
+        sessions.push(load(other, input.compare_session, input.page_frames, budget)?.0);
     }
     Ok((ReviewData::new(sessions), recording))
 }
@@ -185,10 +299,16 @@ fn summary(data: &ReviewData) -> String {
         .iter()
         .map(|s| {
             format!(
-                "{}: {} frames over {:.1} s, {} warnings, height {}, class {}{}{}",
+                "{}: {} frames over {:.1} s{}, {} warnings, height {}, class {}{}{}",
                 s.label,
-                s.frames.t.len(),
+                s.overview
+                    .as_ref()
+                    .map_or(s.frames.t.len(), |o| o.frames_recorded),
                 s.frames.t.last().copied().unwrap_or(0.0),
+                s.overview.as_ref().map_or(String::new(), |o| format!(
+                    " (the page holds {}: the overview)",
+                    o.frames_kept
+                )),
                 s.warnings.iter().filter(|w| w.kind == "raised").count(),
                 s.facts
                     .height_m
@@ -236,16 +356,27 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
             inputs.push((flag, path.as_path()));
         }
     }
-    let (data, recording) = load_all(&args.input)?;
+    // The frames CSV has a row per recorded frame: the first recording is then read whole.
+    let first_frames = match (args.csv.is_some(), args.input.page_frames) {
+        (false, frames) => frames,
+        (true, PageFrames::Overview) => {
+            return Err(UsageError(
+                "--csv writes every frame: it needs --page-frames all (or auto)".to_owned(),
+            )
+            .into())
+        }
+        (true, _) => PageFrames::All,
+    };
+    let (data, recording) = load_all(&args.input, first_frames)?;
     let html = page::report_page(&data).context("serialising the review")?;
     let first = &data.sessions[0];
-    let frames_csv = match &args.csv {
-        Some(_) => Some(ergocell_review::export::write_frames(
+    let frames_csv = match (&args.csv, &recording) {
+        (Some(_), Some(recording)) => Some(ergocell_review::export::write_frames(
             Vec::new(),
-            &recording,
+            recording,
             first,
         )?),
-        None => None,
+        _ => None,
     };
     let summary_csv = match &args.summary_csv {
         Some(_) => Some(ergocell_review::export::write_summary(Vec::new(), first)?),
@@ -275,7 +406,7 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
 
 /// What the server holds: everything it can ever answer with.
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let (data, _) = load_all(&args.input)?;
+    let (data, _) = load_all(&args.input, args.input.page_frames)?;
     let json = serde_json::to_string(&data).context("serialising the review")?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)

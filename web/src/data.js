@@ -207,7 +207,20 @@ export function normalizeSession(s, index) {
     angles: arr(s.angles)
       .filter((a) => a && typeof a === 'object')
       .map((a) => ({ ...a, score_edges_deg: scoreEdges(a.score_edges_deg) })),
+    overview: overview(s.overview),
   };
+}
+
+/** A long recording's page holds only some frames (absent: every frame). */
+function overview(o) {
+  if (!o || typeof o !== 'object') return null;
+  const recorded = num(o.frames_recorded);
+  const kept = num(o.frames_kept);
+  if (recorded === null || kept === null) return null;
+  const windows = arr(o.windows)
+    .filter((w) => Array.isArray(w) && w.length === 2 && num(w[0]) !== null && num(w[1]) !== null)
+    .map((w) => [num(w[0]), num(w[1])]);
+  return { recorded, kept, bucketS: num(o.bucket_s) ?? 0, windows };
 }
 
 /** Index of the frame nearest to time `time` (t sorted ascending). */

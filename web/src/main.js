@@ -52,6 +52,14 @@ function layout(sessions) {
   <div class="title" title="${esc(sessions.map((s) => s.label).join(' vs '))}">${title}</div>
   ${selector}
 </header>
+${sessions
+  .filter((s) => s.overview)
+  .map((s) => {
+    const o = s.overview;
+    const win = o.windows.reduce((sum, [a, b]) => sum + (b - a), 0);
+    return `<div class="banner note" id="overview-note"><b>${cmp ? `${esc(s.label)}: ` : ''}Overview of a long recording.</b> This page holds ${o.kept.toLocaleString('en')} of its ${o.recorded.toLocaleString('en')} frames: every frame of the worst moments (${o.windows.length} stretch${o.windows.length === 1 ? '' : 'es'}, ${Math.round(win / 60)} min: action level 3 or more, and warnings, with 30 s either side), elsewhere the worst frame of each ${o.bucketS.toFixed(1)} s. The body-region rows, shares, exposure and angle distributions are over every frame.</div>`;
+  })
+  .join('')}
 ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1 ? 'Problem with the recording' : `${problems.length} problems with the recordings`}</b> — only what could be read is shown.<ul>${problems.map((p) => `<li>${esc(p)}</li>`).join('')}</ul></div>` : ''}
 <main class="layout${cmp ? ' compare' : ''}">
   <section class="card viewer">

@@ -55,7 +55,7 @@ function approvalText(f) {
 
 function sourceText(s) {
   const src = s.source;
-  const parts = [fmtBytes(src.bytes), src.messages != null ? `${src.messages} messages` : null, `${s.n} frames`];
+  const parts = [fmtBytes(src.bytes), src.messages != null ? `${src.messages} messages` : null, s.overview ? `${s.overview.recorded} frames (${s.n} on this page)` : `${s.n} frames`];
   const dur = s.n > 1 ? ` · ${(s.t[s.n - 1] - s.t[0]).toFixed(1)} s` : '';
   const complete = src.complete ? '<span class="badge ok">complete</span>' : '<span class="badge danger">incomplete</span>';
   return `${parts.filter(Boolean).join(' · ')}${dur} ${complete}`;

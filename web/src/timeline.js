@@ -332,7 +332,9 @@ export function createTimeline(container, session, { onSeek, cursorTime, height 
   dts.sort((a, b) => a - b);
   const dtMed = dts.length ? dts[dts.length >> 1] : 0;
   const gaps = [];
-  if (dtMed > 0) for (let i = 1; i < t.length; i++) if (t[i] - t[i - 1] > Math.max(0.5, 3 * dtMed)) gaps.push([t[i - 1] + dtMed, t[i]]);
+  // An overview's frames stand a bucket apart outside its windows: that is no gap.
+  const gapS = Math.max(0.5, 3 * dtMed, session.overview ? 1.5 * session.overview.bucketS : 0);
+  if (dtMed > 0) for (let i = 1; i < t.length; i++) if (t[i] - t[i - 1] > gapS) gaps.push([t[i - 1] + dtMed, t[i]]);
   const data = [t, s.grandLeft, s.grandRight, s.actionLevel];
   if (gaps.length) {
     const cols = [[], [], [], []];

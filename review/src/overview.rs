@@ -1,0 +1,537 @@
+//! A long recording (a shift) reviewed in bounded memory: its numbers over every frame, its page
+//! holding the overview and the worst moments.
+//!
+//! An 8-hour shift records about 860,000 frames. Holding them all, decoded, takes gigabytes, and a
+//! page of every frame hundreds of megabytes that a browser parses before it shows anything. So the
+//! recording is read twice, front to back, never whole:
+//!
+//! 1. [`plan`]: every message is reduced as it arrives to what the summary needs — the same
+//!    computation as `ergocell exposure` (each pose's task segment and ISO 11226 angles, each frame's
+//!    RULA and REBA) — plus every joint angle for the distributions and each frame's action level.
+//!    From those it chooses the frames the page holds ([`Plan`]): every frame within the **worst
+//!    moments** — each stretch at RULA action level 3 or more and each warning raised, ±
+//!    [`WINDOW_MARGIN_S`] — worst first (the highest action level, then the longest) until
+//!    [`WINDOW_FRAMES`] (the worst one always, centred, cut to the budget if it is longer); elsewhere the worst frame (highest action level, then grand score) of each
+//!    bucket of time, [`OVERVIEW_FRAMES`] buckets over the recording (a [`Budget`] sets both).
+//! 2. [`analyse_planned`]: the chosen frames (and the robot's markers at the same density) are kept,
+//!    everything else read and dropped, and the review is computed as for a short recording
+//!    ([`crate::analysis`]), with the summary, the rows and the angle distributions of pass 1, i.e.
+//!    over every frame. [`crate::analysis::Overview`] tells the page which frames it has.
+//!
+//! A recording with no more frames than the two budgets together keeps every frame.
+
+use std::collections::{BTreeMap, HashSet};
+use std::io::Read;
+
+use ergocell_ergonomics::summary::{SessionSummary, DEFAULT_MAX_FRAME_NANOS};
+
+use crate::analysis::{
+    analyse_with, round_to, secs, AngleSamples, FrameFacts, Overview, WholeRecording,
+};
+use crate::exposure::SessionAccumulator;
+use crate::read::{stream_recording, Decoded, ReadStats, Recording, Visit};
+use crate::{ReviewError, SessionReview};
+
+/// Frames outside the worst moments: one per bucket, this many buckets over the recording (at most
+/// one per second).
+pub const OVERVIEW_FRAMES: usize = 4_000;
+/// Frames within the worst moments, at the recorded rate (about 27 minutes at 10 Hz). With
+/// [`OVERVIEW_FRAMES`], about 20 MB of page (1 kB a frame).
+pub const WINDOW_FRAMES: usize = 16_000;
+
+/// How many frames a page holds ([`OVERVIEW_FRAMES`], [`WINDOW_FRAMES`] by default).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Budget {
+    pub overview_frames: usize,
+    pub window_frames: usize,
+}
+
+impl Default for Budget {
+    fn default() -> Self {
+        Self {
+            overview_frames: OVERVIEW_FRAMES,
+            window_frames: WINDOW_FRAMES,
+        }
+    }
+}
+/// Each worst moment is kept from this long before it to this long after it, seconds.
+pub const WINDOW_MARGIN_S: f64 = 30.0;
+
+fn stamp_of(h: &ergocell_bridge::msg::Header) -> u64 {
+    u64::try_from(h.stamp.to_nanos()).unwrap_or(0)
+}
+
+/// What the first pass found, and the frames the page will hold.
+pub struct Plan {
+    stats: ReadStats,
+    sessions: u32,
+    summary: SessionSummary,
+    /// Each kept frame's facts, by capture stamp.
+    facts: BTreeMap<u64, FrameFacts>,
+    angles: Vec<crate::analysis::AngleStats>,
+    problems: Vec<String>,
+    frames_recorded: usize,
+    /// Kept frames' capture stamps.
+    kept: HashSet<u64>,
+    /// Kept at the recorded rate: capture-stamp spans, in order, disjoint.
+    windows: Vec<(u64, u64)>,
+    bucket_nanos: u64,
+}
+
+impl Plan {
+    /// Operator sessions in the recording (a `session_ended` state followed by another operator's
+    /// messages starts the next).
+    pub fn sessions(&self) -> u32 {
+        self.sessions
+    }
+    /// Frames (operator poses) recorded.
+    pub fn frames_recorded(&self) -> usize {
+        self.frames_recorded
+    }
+    /// Frames the page will hold.
+    pub fn frames_kept(&self) -> usize {
+        self.kept.len()
+    }
+    /// What reading the file found (its size, whether it is complete, its problems).
+    pub fn stats(&self) -> &ReadStats {
+        &self.stats
+    }
+}
+
+/// Pass 1's reader: the summary's accumulator, the angles, each frame's action level.
+struct FirstPass {
+    acc: SessionAccumulator,
+    angles: AngleSamples,
+    pose_stamps: Vec<u64>,
+    /// Per capture stamp of an `ErgonomicState`: (action level, the higher grand score).
+    levels: BTreeMap<u64, (u8, u8)>,
+    /// Each warning raised: its frame's capture stamp (or log time) and action level.
+    raised: Vec<(u64, u8)>,
+    sessions: u32,
+    ended: bool,
+    seen_operator: bool,
+}
+
+impl FirstPass {
+    /// A message of an operator session after a `session_ended` starts the next session.
+    fn operator_message(&mut self) {
+        if self.ended || !self.seen_operator {
+            self.sessions += 1;
+            self.ended = false;
+        }
+        self.seen_operator = true;
+    }
+}
+
+impl Visit for FirstPass {
+    fn message(&mut self, message: Decoded) {
+        let log_time = message.log_time_nanos();
+        match &message {
+            Decoded::Pose(m) => {
+                self.operator_message();
+                if self.angles.push(&m.message) {
+                    self.pose_stamps.push(stamp_of(&m.message.header));
+                }
+            }
+            Decoded::Ergonomics(m) => {
+                self.operator_message();
+                let e = &m.message;
+                let grand = |s: &ergocell_bridge::msg::RulaSide| {
+                    if s.scored {
+                        s.final_score
+                    } else {
+                        0
+                    }
+                };
+                self.levels.insert(
+                    stamp_of(&e.header),
+                    (e.action_level, grand(&e.left).max(grand(&e.right))),
+                );
+            }
+            Decoded::Warning(m) if m.message.kind == "raised" => {
+                let t = u64::try_from(m.message.header.stamp.to_nanos())
+                    .ok()
+                    .filter(|&t| t > 0)
+                    .unwrap_or(log_time);
+                self.raised.push((t, m.message.action_level));
+            }
+            Decoded::Trajectory(m) if !m.message.points.is_empty() && self.ended => {
+                self.operator_message();
+            }
+            Decoded::ControllerEvent(m) if m.message.kind == "goal_sent" && self.ended => {
+                self.operator_message();
+            }
+            Decoded::State(m) if m.message.state == "session_ended" => self.ended = true,
+            _ => {}
+        }
+        match message {
+            Decoded::Warning(_) | Decoded::RobotMarkers(_) => {}
+            m => self.acc.take(m, log_time),
+        }
+    }
+}
+
+/// Pass 1 (see the module docs): reads `source` through and plans a page of at most `budget`'s
+/// frames.
+///
+/// # Errors
+/// As [`stream_recording`].
+pub fn plan<R: Read>(source: R, budget: Budget) -> Result<Plan, ReviewError> {
+    let mut first = FirstPass {
+        acc: SessionAccumulator::new(None),
+        angles: AngleSamples::default(),
+        pose_stamps: Vec::new(),
+        levels: BTreeMap::new(),
+        raised: Vec::new(),
+        sessions: 0,
+        ended: false,
+        seen_operator: false,
+    };
+    let stats = stream_recording(source, &mut first)?;
+    let FirstPass {
+        mut acc,
+        angles,
+        mut pose_stamps,
+        levels,
+        raised,
+        sessions,
+        ..
+    } = first;
+    // The review's clock: seconds from the recording's first message.
+    acc.first_log = stats.first_log_time_nanos.or(acc.first_log);
+    let summary = acc.summarise();
+    let mut problems = angles.problems();
+    if acc.late_poses > 0 {
+        problems.push(format!(
+            "{} operator pose(s) arrived more than {} messages out of capture order and were left out of the task segments",
+            acc.late_poses,
+            crate::exposure::REORDER_WINDOW
+        ));
+    }
+    let angles = angles.stats();
+    pose_stamps.sort_unstable();
+    pose_stamps.dedup();
+    let (kept, windows, bucket_nanos) = choose(&pose_stamps, &levels, &raised, budget);
+    let facts = std::mem::take(&mut acc.facts)
+        .into_iter()
+        .filter(|(t, _)| kept.contains(t))
+        .map(|(t, (_, f))| (t, f))
+        .collect();
+    Ok(Plan {
+        stats,
+        sessions,
+        summary,
+        facts,
+        angles,
+        problems,
+        frames_recorded: pose_stamps.len(),
+        kept,
+        windows,
+        bucket_nanos,
+    })
+}
+
+/// The frames to keep (capture stamps), the windows kept at the recorded rate, the bucket length.
+fn choose(
+    stamps: &[u64],
+    levels: &BTreeMap<u64, (u8, u8)>,
+    raised: &[(u64, u8)],
+    budget: Budget,
+) -> (HashSet<u64>, Vec<(u64, u64)>, u64) {
+    let (Some(&first), Some(&last)) = (stamps.first(), stamps.last()) else {
+        return (HashSet::new(), Vec::new(), 0);
+    };
+    if stamps.len() <= budget.overview_frames.saturating_add(budget.window_frames) {
+        return (stamps.iter().copied().collect(), vec![(first, last)], 0);
+    }
+    // The worst moments: stretches at action level >= 3 (a gap the summary does not bridge ends
+    // one), and warnings; (peak level, length, start, end).
+    let mut moments: Vec<(u8, u64, u64, u64)> = Vec::new();
+    let mut run: Option<(u64, u64, u8)> = None;
+    for (&t, &(level, _)) in levels {
+        run = match run {
+            Some((a, b, peak))
+                if level >= 3 && t.saturating_sub(b) <= DEFAULT_MAX_FRAME_NANOS as u64 =>
+            {
+                Some((a, t, peak.max(level)))
+            }
+            previous => {
+                if let Some((a, b, peak)) = previous {
+                    moments.push((peak, b - a, a, b));
+                }
+                (level >= 3).then_some((t, t, level))
+            }
+        };
+    }
+    if let Some((a, b, peak)) = run {
+        moments.push((peak, b - a, a, b));
+    }
+    moments.extend(raised.iter().map(|&(t, level)| (level, 0, t, t)));
+    moments.sort_by(|x, y| y.0.cmp(&x.0).then(y.1.cmp(&x.1)).then(x.2.cmp(&y.2)));
+    let margin = (WINDOW_MARGIN_S * 1e9) as u64;
+    let frames_in = |spans: &[(u64, u64)]| -> usize {
+        spans
+            .iter()
+            .map(|&(a, b)| stamps.partition_point(|&t| t <= b) - stamps.partition_point(|&t| t < a))
+            .sum()
+    };
+    let mut windows: Vec<(u64, u64)> = Vec::new();
+    for (_, _, a, b) in moments {
+        let span = (a.saturating_sub(margin), b.saturating_add(margin));
+        let merged = merge(&windows, span);
+        if frames_in(&merged) <= budget.window_frames {
+            windows = merged;
+        } else if windows.is_empty() {
+            // The worst moment is always on the page: as much of it, centred, as the budget holds.
+            let mid = u64::midpoint(a, b);
+            let (mut lo, mut hi) = (0u64, (b - a) / 2 + margin);
+            while hi - lo > 1_000_000 {
+                let h = lo + (hi - lo) / 2;
+                if frames_in(&[(mid.saturating_sub(h), mid.saturating_add(h))])
+                    <= budget.window_frames
+                {
+                    lo = h;
+                } else {
+                    hi = h;
+                }
+            }
+            windows = vec![(mid.saturating_sub(lo), mid.saturating_add(lo))];
+        }
+    }
+    let mut kept: HashSet<u64> = HashSet::new();
+    for &(a, b) in &windows {
+        let (i, j) = (
+            stamps.partition_point(|&t| t < a),
+            stamps.partition_point(|&t| t <= b),
+        );
+        kept.extend(&stamps[i..j]);
+    }
+    // Elsewhere the worst frame of each bucket.
+    // At most `overview_frames` buckets from the first frame to the last, none under a second.
+    let bucket = (last - first + 1)
+        .div_ceil(budget.overview_frames.max(1) as u64)
+        .max(1_000_000_000);
+    let mut best: BTreeMap<u64, (u8, u8, std::cmp::Reverse<u64>)> = BTreeMap::new();
+    for &t in stamps {
+        let (level, grand) = levels.get(&t).copied().unwrap_or((0, 0));
+        let key = (level, grand, std::cmp::Reverse(t));
+        let slot = best.entry((t - first) / bucket).or_insert(key);
+        if key > *slot {
+            *slot = key;
+        }
+    }
+    kept.extend(best.values().map(|&(_, _, std::cmp::Reverse(t))| t));
+    (kept, windows, bucket)
+}
+
+/// `spans` (disjoint, in order) with `span` added, overlapping spans joined.
+fn merge(spans: &[(u64, u64)], span: (u64, u64)) -> Vec<(u64, u64)> {
+    let mut all: Vec<(u64, u64)> = spans.to_vec();
+    all.push(span);
+    all.sort_unstable();
+    let mut out: Vec<(u64, u64)> = Vec::with_capacity(all.len());
+    for (a, b) in all {
+        match out.last_mut() {
+            Some(last) if a <= last.1 => last.1 = last.1.max(b),
+            _ => out.push((a, b)),
+        }
+    }
+    out
+}
+
+/// Pass 2's reader: the planned frames and the robot's markers at their density, all else whole.
+struct SecondPass<'a> {
+    plan: &'a Plan,
+    rec: Recording,
+    last_marker: Option<u64>,
+}
+
+impl Visit for SecondPass<'_> {
+    fn metadata(&mut self, name: &str, entries: &BTreeMap<String, String>) {
+        self.rec.metadata(name, entries);
+    }
+
+    fn message(&mut self, message: Decoded) {
+        let keep = match &message {
+            Decoded::Pose(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
+            Decoded::Ergonomics(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
+            Decoded::Reba(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
+            Decoded::RobotMarkers(m) => {
+                let t = m.log_time_nanos;
+                let in_window = self.plan.windows.iter().any(|&(a, b)| a <= t && t <= b);
+                let due = self
+                    .last_marker
+                    .is_none_or(|last| t >= last.saturating_add(self.plan.bucket_nanos));
+                let keep = in_window || due;
+                if keep {
+                    self.last_marker = Some(t);
+                }
+                keep
+            }
+            _ => true,
+        };
+        if keep {
+            self.rec.message(message);
+        }
+    }
+}
+
+/// Pass 2 (see the module docs): reads `source` (the same recording as [`plan`]'s) again and
+/// analyses it; `label` names it on the page.
+///
+/// # Errors
+/// As [`stream_recording`].
+pub fn analyse_planned<R: Read>(
+    source: R,
+    plan: Plan,
+    label: &str,
+) -> Result<SessionReview, ReviewError> {
+    let mut second = SecondPass {
+        plan: &plan,
+        rec: Recording::default(),
+        last_marker: None,
+    };
+    let stats = stream_recording(source, &mut second)?;
+    let mut rec = second.rec;
+    rec.bytes = stats.bytes;
+    rec.messages = stats.messages;
+    rec.complete = stats.complete;
+    let own_problems = std::mem::take(&mut rec.problems);
+    rec.problems = stats.problems.into_iter().chain(own_problems).collect();
+    rec.first_log_time_nanos = stats.first_log_time_nanos;
+    rec.last_log_time_nanos = stats.last_log_time_nanos;
+    rec.channels = stats.channels;
+    let t0 = rec.first_log_time_nanos.unwrap_or(0);
+    let Plan {
+        summary,
+        facts,
+        angles,
+        problems,
+        frames_recorded,
+        kept,
+        windows,
+        bucket_nanos,
+        ..
+    } = plan;
+    let whole = WholeRecording {
+        summary,
+        facts,
+        angles,
+        problems,
+        // Every frame kept: the page is the whole recording's, as for a short one.
+        overview: (kept.len() < frames_recorded).then(|| Overview {
+            frames_recorded,
+            frames_kept: kept.len(),
+            bucket_s: bucket_nanos as f64 * 1e-9,
+            windows: windows
+                .iter()
+                .map(|&(a, b)| [round_to(secs(a, t0), 6), round_to(secs(b, t0), 6)])
+                .collect(),
+        }),
+    };
+    Ok(analyse_with(&rec, label, Some(whole)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const S: u64 = 1_000_000_000;
+
+    /// 10 Hz frames over `secs` seconds, at action level 1 (grand score 2).
+    fn frames(secs: u64) -> (Vec<u64>, BTreeMap<u64, (u8, u8)>) {
+        let stamps: Vec<u64> = (0..secs * 10).map(|k| 1_000 * S + k * S / 10).collect();
+        let levels = stamps.iter().map(|&t| (t, (1, 2))).collect();
+        (stamps, levels)
+    }
+
+    #[test]
+    fn a_short_recording_keeps_every_frame() {
+        let (stamps, levels) = frames(60);
+        let (kept, windows, _) = choose(&stamps, &levels, &[], Budget::default());
+        assert_eq!(kept.len(), stamps.len());
+        assert_eq!(windows, vec![(stamps[0], stamps[599])]);
+    }
+
+    #[test]
+    fn the_worst_moments_at_the_recorded_rate_and_the_worst_of_each_bucket_elsewhere() {
+        let (stamps, mut levels) = frames(3_600);
+        let at = |secs: u64| 1_000 * S + secs * S;
+        // A stretch at action level 4 (10 s), one at 3 (5 s) and a warning at level 3.
+        for t in stamps.iter().filter(|&&t| t >= at(600) && t < at(610)) {
+            levels.insert(*t, (4, 7));
+        }
+        for t in stamps.iter().filter(|&&t| t >= at(2_000) && t < at(2_005)) {
+            levels.insert(*t, (3, 5));
+        }
+        // One frame at level 2 in the middle of an hour otherwise at 1: its bucket's pick.
+        levels.insert(at(3_000) + 3 * S / 10, (2, 3));
+        let raised = [(at(1_200), 3)];
+        let budget = Budget {
+            overview_frames: 100,
+            window_frames: 1_500,
+        };
+        let (kept, windows, bucket) = choose(&stamps, &levels, &raised, budget);
+        assert_eq!(
+            (stamps[35_999] - stamps[0]) / bucket,
+            99,
+            "an hour in 100 buckets"
+        );
+        // Level 4 first (70 s = 701 frames), then the longer level-3 stretch (65 s, 651), and the
+        // warning's 60 s would pass the budget: left out.
+        assert_eq!(
+            windows,
+            vec![
+                (at(570), at(639) + 9 * S / 10),
+                (at(1_970), at(2_034) + 9 * S / 10)
+            ]
+        );
+        for &(a, b) in &windows {
+            assert!(stamps
+                .iter()
+                .filter(|&&t| a <= t && t <= b)
+                .all(|t| kept.contains(t)));
+        }
+        let in_windows = |t: u64| windows.iter().any(|&(a, b)| a <= t && t <= b);
+        assert!(!in_windows(at(1_200)), "over the budget");
+        // Elsewhere one frame per bucket, the worst.
+        let outside: Vec<u64> = kept.iter().copied().filter(|&t| !in_windows(t)).collect();
+        let mut buckets: Vec<u64> = outside.iter().map(|t| (t - stamps[0]) / bucket).collect();
+        buckets.sort_unstable();
+        let n = buckets.len();
+        buckets.dedup();
+        assert_eq!(buckets.len(), n, "one frame per bucket outside the windows");
+        assert!(
+            kept.contains(&(at(3_000) + 3 * S / 10)),
+            "the bucket's worst frame"
+        );
+        assert!(kept.len() <= 100 + 1 + 1_500);
+    }
+
+    #[test]
+    fn the_worst_moment_is_kept_even_when_longer_than_the_budget() {
+        let (stamps, mut levels) = frames(600);
+        let at = |secs: u64| 1_000 * S + secs * S;
+        for t in stamps.iter().filter(|&&t| t >= at(100) && t < at(300)) {
+            levels.insert(*t, (3, 6));
+        }
+        let budget = Budget {
+            overview_frames: 10,
+            window_frames: 500,
+        };
+        let (kept, windows, _) = choose(&stamps, &levels, &[], budget);
+        assert_eq!(windows.len(), 1);
+        let (a, b) = windows[0];
+        let inside = stamps.iter().filter(|&&t| a <= t && t <= b).count();
+        assert!((490..=500).contains(&inside), "{inside} frames");
+        assert!(a >= at(100) && b < at(300), "within the stretch, centred");
+        assert!(kept.len() <= 500 + 10);
+    }
+
+    #[test]
+    fn spans_merge_where_they_overlap() {
+        assert_eq!(merge(&[(0, 10), (20, 30)], (5, 22)), vec![(0, 30)]);
+        assert_eq!(merge(&[(0, 10)], (11, 12)), vec![(0, 10), (11, 12)]);
+        assert_eq!(merge(&[], (3, 4)), vec![(3, 4)]);
+    }
+}
