@@ -853,6 +853,51 @@ fn an_overview_holds_the_worst_moments_and_the_numbers_of_every_frame() {
     };
     let outside = t_kept.iter().filter(|&&t| !in_any(t)).count();
     assert!(outside <= 20, "{outside} frames outside the windows");
+    // A span asked for is kept whole, besides the budget.
+    let (_, asked) = report_with(
+        rec,
+        "overview-window.html",
+        &[
+            "--overview-frames",
+            "20",
+            "--window-frames",
+            "150",
+            "--window",
+            "2..5.5",
+        ],
+    );
+    let c = &asked["sessions"][0];
+    let t_asked: Vec<f64> = c["frames"]["t"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let span = |ts: &[f64]| ts.iter().filter(|&&t| (2.0..=5.5).contains(&t)).count();
+    assert!(span(&t_all) > 20);
+    assert_eq!(span(&t_asked), span(&t_all));
+    assert!(c["overview"]["windows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w[0].as_f64().unwrap() <= 2.0 && w[1].as_f64().unwrap() >= 5.5));
+    let bad_out = tmp("overview-bad.html");
+    for bad in [
+        &["--window", "5..2"][..],
+        &["--window", "x..2"][..],
+        &["--window", "1..2", "--page-frames", "all"][..],
+    ] {
+        let mut args = vec![
+            "report",
+            rec.to_str().unwrap(),
+            "--force",
+            "--out",
+            bad_out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(bad);
+        let o = ergocell(&args);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}");
+    }
     // The frames CSV needs every frame.
     let csv = tmp("overview.csv");
     let o = ergocell(&[

@@ -11,8 +11,10 @@
 //!    From those it chooses the frames the page holds ([`Plan`]): every frame within the **worst
 //!    moments** — each stretch at RULA action level 3 or more and each warning raised, ±
 //!    [`WINDOW_MARGIN_S`] — worst first (the highest action level, then the longest) until
-//!    [`WINDOW_FRAMES`] (the worst one always, centred, cut to the budget if it is longer); elsewhere the worst frame (highest action level, then grand score) of each
-//!    bucket of time, [`OVERVIEW_FRAMES`] buckets over the recording (a [`Budget`] sets both).
+//!    [`WINDOW_FRAMES`] (the worst one always, centred, cut to the budget if it is longer);
+//!    elsewhere the worst frame (highest action level, then grand score) of each bucket of time,
+//!    [`OVERVIEW_FRAMES`] buckets over the recording (a [`Budget`] sets both). Spans the reader
+//!    asks for are kept whole besides, outside the budget.
 //! 2. [`analyse_planned`]: the chosen frames (and the robot's markers at the same density) are kept,
 //!    everything else read and dropped, and the review is computed as for a short recording
 //!    ([`crate::analysis`]), with the summary, the rows and the angle distributions of pass 1, i.e.
@@ -172,11 +174,12 @@ impl Visit for FirstPass {
 }
 
 /// Pass 1 (see the module docs): reads `source` through and plans a page of at most `budget`'s
-/// frames.
+/// frames, and besides them every frame within `keep_s` (spans in seconds from the recording's
+/// first message, the page's clock).
 ///
 /// # Errors
 /// As [`stream_recording`].
-pub fn plan<R: Read>(source: R, budget: Budget) -> Result<Plan, ReviewError> {
+pub fn plan<R: Read>(source: R, budget: Budget, keep_s: &[[f64; 2]]) -> Result<Plan, ReviewError> {
     let mut first = FirstPass {
         acc: SessionAccumulator::new(None),
         angles: AngleSamples::default(),
@@ -211,7 +214,13 @@ pub fn plan<R: Read>(source: R, budget: Budget) -> Result<Plan, ReviewError> {
     let angles = angles.stats();
     pose_stamps.sort_unstable();
     pose_stamps.dedup();
-    let (kept, windows, bucket_nanos) = choose(&pose_stamps, &levels, &raised, budget);
+    let t0 = stats.first_log_time_nanos.unwrap_or(0);
+    let at = |s: f64| t0.saturating_add((s.max(0.0) * 1e9) as u64);
+    let forced: Vec<(u64, u64)> = keep_s
+        .iter()
+        .filter(|[a, b]| a.is_finite() && b.is_finite() && a <= b)
+        .fold(Vec::new(), |spans, &[a, b]| merge(&spans, (at(a), at(b))));
+    let (kept, windows, bucket_nanos) = choose(&pose_stamps, &levels, &raised, budget, &forced);
     let facts = std::mem::take(&mut acc.facts)
         .into_iter()
         .filter(|(t, _)| kept.contains(t))
@@ -237,6 +246,7 @@ fn choose(
     levels: &BTreeMap<u64, (u8, u8)>,
     raised: &[(u64, u8)],
     budget: Budget,
+    forced: &[(u64, u64)],
 ) -> (HashSet<u64>, Vec<(u64, u64)>, u64) {
     let (Some(&first), Some(&last)) = (stamps.first(), stamps.last()) else {
         return (HashSet::new(), Vec::new(), 0);
@@ -275,13 +285,18 @@ fn choose(
             .map(|&(a, b)| stamps.partition_point(|&t| t <= b) - stamps.partition_point(|&t| t < a))
             .sum()
     };
-    let mut windows: Vec<(u64, u64)> = Vec::new();
+    // The spans asked for first, outside the budget.
+    let asked = frames_in(forced);
+    let mut windows: Vec<(u64, u64)> = forced.to_vec();
+    let mut any_moment = false;
     for (_, _, a, b) in moments {
         let span = (a.saturating_sub(margin), b.saturating_add(margin));
         let merged = merge(&windows, span);
-        if frames_in(&merged) <= budget.window_frames {
+        if frames_in(&merged) <= budget.window_frames.saturating_add(asked) {
             windows = merged;
-        } else if windows.is_empty() {
+            any_moment = true;
+        } else if !any_moment {
+            any_moment = true;
             // The worst moment is always on the page: as much of it, centred, as the budget holds.
             let mid = u64::midpoint(a, b);
             let (mut lo, mut hi) = (0u64, (b - a) / 2 + margin);
@@ -295,7 +310,7 @@ fn choose(
                     hi = h;
                 }
             }
-            windows = vec![(mid.saturating_sub(lo), mid.saturating_add(lo))];
+            windows = merge(&windows, (mid.saturating_sub(lo), mid.saturating_add(lo)));
         }
     }
     let mut kept: HashSet<u64> = HashSet::new();
@@ -448,7 +463,7 @@ mod tests {
     #[test]
     fn a_short_recording_keeps_every_frame() {
         let (stamps, levels) = frames(60);
-        let (kept, windows, _) = choose(&stamps, &levels, &[], Budget::default());
+        let (kept, windows, _) = choose(&stamps, &levels, &[], Budget::default(), &[]);
         assert_eq!(kept.len(), stamps.len());
         assert_eq!(windows, vec![(stamps[0], stamps[599])]);
     }
@@ -471,7 +486,7 @@ mod tests {
             overview_frames: 100,
             window_frames: 1_500,
         };
-        let (kept, windows, bucket) = choose(&stamps, &levels, &raised, budget);
+        let (kept, windows, bucket) = choose(&stamps, &levels, &raised, budget, &[]);
         assert_eq!(
             (stamps[35_999] - stamps[0]) / bucket,
             99,
@@ -519,7 +534,7 @@ mod tests {
             overview_frames: 10,
             window_frames: 500,
         };
-        let (kept, windows, _) = choose(&stamps, &levels, &[], budget);
+        let (kept, windows, _) = choose(&stamps, &levels, &[], budget, &[]);
         assert_eq!(windows.len(), 1);
         let (a, b) = windows[0];
         let inside = stamps.iter().filter(|&&t| a <= t && t <= b).count();

@@ -48,15 +48,40 @@ pub struct Input {
     /// Which frames the page holds: `all`, or `overview` (every frame of the worst moments, the
     /// worst frame of each few seconds elsewhere; the summary, rows and distributions still over
     /// every frame, in bounded memory). `auto`: the overview for a recording of 256 MiB or more
-    /// (about 50 minutes of a session) that holds one operator session.
+    /// (about 50 minutes of a session) that holds one operator session, or when `--window` is
+    /// given.
     #[arg(long, value_enum, default_value_t = PageFrames::Auto)]
     pub page_frames: PageFrames,
+    /// Also every frame from FROM to TO, seconds on the page's clock (from the recording's first
+    /// message), e.g. `--window 12300..12420` to see two minutes of a shift's overview at the
+    /// recorded rate (repeatable; implies the overview).
+    #[arg(long = "window", value_name = "FROM..TO", value_parser = parse_window)]
+    pub windows: Vec<[f64; 2]>,
     /// The overview's frames outside the worst moments; hidden, for the tests.
     #[arg(long, hide = true, default_value_t = ergocell_review::overview::OVERVIEW_FRAMES)]
     pub overview_frames: usize,
     /// The overview's frames within the worst moments; hidden, for the tests.
     #[arg(long, hide = true, default_value_t = ergocell_review::overview::WINDOW_FRAMES)]
     pub window_frames: usize,
+}
+
+/// `FROM..TO` in seconds, FROM ≤ TO.
+fn parse_window(text: &str) -> Result<[f64; 2], String> {
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| format!("{text:?}: expected FROM..TO in seconds, e.g. 120..180"))?;
+    let secs = |s: &str| -> Result<f64, String> {
+        s.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite() && *v >= 0.0)
+            .ok_or_else(|| format!("{s:?}: not a time in seconds (0 or more)"))
+    };
+    let (a, b) = (secs(a)?, secs(b)?);
+    if a > b {
+        return Err(format!("{text:?}: FROM is after TO"));
+    }
+    Ok([a, b])
 }
 
 impl Input {
@@ -148,8 +173,9 @@ fn load(
     session: usize,
     frames: PageFrames,
     budget: ergocell_review::overview::Budget,
+    windows: &[[f64; 2]],
 ) -> anyhow::Result<(SessionReview, Option<ergocell_review::Recording>)> {
-    if let Some(review) = load_overview(path, session, frames, budget)? {
+    if let Some(review) = load_overview(path, session, frames, budget, windows)? {
         return Ok((review, None));
     }
     let bytes = input::read(path, Kind::Recording)?;
@@ -207,16 +233,27 @@ fn load_overview(
     session: usize,
     frames: PageFrames,
     budget: ergocell_review::overview::Budget,
+    windows: &[[f64; 2]],
 ) -> anyhow::Result<Option<SessionReview>> {
     let meta = std::fs::metadata(path)
         .ok()
         .filter(std::fs::Metadata::is_file);
     let wanted = match frames {
+        PageFrames::All if !windows.is_empty() => {
+            return Err(UsageError(
+                "--window keeps a span of an overview whole: not with --page-frames all (which keeps every frame)"
+                    .to_owned(),
+            )
+            .into())
+        }
         PageFrames::All => false,
         PageFrames::Overview => true,
-        PageFrames::Auto => meta
-            .as_ref()
-            .is_some_and(|m| m.len() >= OVERVIEW_FROM_BYTES),
+        PageFrames::Auto => {
+            !windows.is_empty()
+                || meta
+                    .as_ref()
+                    .is_some_and(|m| m.len() >= OVERVIEW_FROM_BYTES)
+        }
     };
     if !wanted {
         return Ok(None);
@@ -237,7 +274,7 @@ fn load_overview(
             .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
         Ok(std::io::BufReader::with_capacity(1 << 20, file))
     };
-    let plan = ergocell_review::overview::plan(open()?, budget)
+    let plan = ergocell_review::overview::plan(open()?, budget, windows)
         .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
     if plan.sessions() > 1 || session != 1 {
         let _ = writeln!(
@@ -286,10 +323,25 @@ fn load_all(
     first_frames: PageFrames,
 ) -> anyhow::Result<(ReviewData, Option<ergocell_review::Recording>)> {
     let budget = input.budget();
-    let (first, recording) = load(&input.recording, input.session, first_frames, budget)?;
+    let (first, recording) = load(
+        &input.recording,
+        input.session,
+        first_frames,
+        budget,
+        &input.windows,
+    )?;
     let mut sessions = vec![first];
     if let Some(other) = &input.compare {
-        sessions.push(load(other, input.compare_session, input.page_frames, budget)?.0);
+        sessions.push(
+            load(
+                other,
+                input.compare_session,
+                input.page_frames,
+                budget,
+                &input.windows,
+            )?
+            .0,
+        );
     }
     Ok((ReviewData::new(sessions), recording))
 }
