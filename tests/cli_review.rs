@@ -423,6 +423,77 @@ fn a_recording_of_two_operators_is_reviewed_one_session_at_a_time() {
 }
 
 #[test]
+fn an_overview_reads_each_session_as_the_whole_file_reader_does() {
+    // With every frame kept (a short recording), the streamed page is the whole-file reader's:
+    // the same sessions and their bounds, late answers, clock, label, problems and numbers.
+    let recordings = [
+        (two_sessions(), 2),
+        (robot_cycle(), 2),
+        (demo_recording().to_path_buf(), 1),
+    ];
+    for (rec, sessions) in &recordings {
+        for session in 1..=*sessions {
+            let n = session.to_string();
+            let (_, all) = report_with(
+                rec,
+                "sessions-all.html",
+                &["--session", &n, "--page-frames", "all"],
+            );
+            let (_, over) = report_with(
+                rec,
+                "sessions-overview.html",
+                &["--session", &n, "--page-frames", "overview"],
+            );
+            assert_eq!(all, over, "{} session {session}", rec.display());
+        }
+        let o = ergocell(&[
+            "report",
+            rec.to_str().unwrap(),
+            "--session",
+            &(sessions + 1).to_string(),
+            "--page-frames",
+            "overview",
+            "--force",
+            "--out",
+            tmp("sessions-none.html").to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(
+            String::from_utf8_lossy(&o.stderr).contains(&format!("{sessions} operator session"))
+        );
+    }
+    // Thinned, session 2 of two is still session 2: its class, its clock, its summary.
+    let rec = two_sessions();
+    let (_, all) = report_with(
+        &rec,
+        "sessions-all2.html",
+        &["--session", "2", "--page-frames", "all"],
+    );
+    let (_, over) = report_with(
+        &rec,
+        "sessions-over2.html",
+        &[
+            "--session",
+            "2",
+            "--page-frames",
+            "overview",
+            "--overview-frames",
+            "5",
+            "--window-frames",
+            "10",
+        ],
+    );
+    let (a, b) = (&all["sessions"][0], &over["sessions"][0]);
+    assert!(
+        b["frames"]["t"].as_array().unwrap().len() < a["frames"]["t"].as_array().unwrap().len()
+    );
+    for key in ["label", "facts", "summary", "regions", "angles", "warnings"] {
+        assert_eq!(a[key], b[key], "{key}");
+    }
+    assert_eq!(a["source"]["problems"], b["source"]["problems"]);
+}
+
+#[test]
 fn the_allowed_host_is_the_bound_address_and_two_hosts_are_refused() {
     let server = ReviewServer::start(&root(), demo_recording(), &["--bind", "127.0.0.2"]);
     let (authority, port) = (server.authority.clone(), server.port);

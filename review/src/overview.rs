@@ -20,7 +20,10 @@
 //!    ([`crate::analysis`]), with the summary, the rows and the angle distributions of pass 1, i.e.
 //!    over every frame. [`crate::analysis::Overview`] tells the page which frames it has.
 //!
-//! A recording with no more frames than the two budgets together keeps every frame.
+//! A recording with no more frames than the two budgets together keeps every frame. A recording of
+//! several operator sessions (`ergocell run --record`) is reviewed one session at a time, numbered
+//! and bounded as [`crate::read::split_sessions`] does for a recording read whole ([`plan`]'s
+//! `session`).
 
 use std::collections::{BTreeMap, HashSet};
 use std::io::Read;
@@ -31,7 +34,7 @@ use crate::analysis::{
     analyse_with, round_to, secs, AngleSamples, FrameFacts, Overview, WholeRecording,
 };
 use crate::exposure::SessionAccumulator;
-use crate::read::{stream_recording, Decoded, ReadStats, Recording, Visit};
+use crate::read::{stream_recording, Decoded, ReadStats, Recording, Visit, LATE_EVENT_NANOS};
 use crate::{ReviewError, SessionReview};
 
 /// Frames outside the worst moments: one per bucket, this many buckets over the recording (at most
@@ -66,7 +69,15 @@ fn stamp_of(h: &ergocell_bridge::msg::Header) -> u64 {
 /// What the first pass found, and the frames the page will hold.
 pub struct Plan {
     stats: ReadStats,
-    sessions: u32,
+    /// Each operator session of the recording.
+    briefs: Vec<SessionBrief>,
+    /// The wanted session's range of log time ([`Ranges`]); `None` when it has none (no such
+    /// session).
+    wanted_range: Option<usize>,
+    /// The recording is one session: every message is the session's.
+    whole_file: bool,
+    /// The session's first and last log time (its page's clock starts at the first).
+    session_log: (Option<u64>, Option<u64>),
     summary: SessionSummary,
     /// Each kept frame's facts, by capture stamp.
     facts: BTreeMap<u64, FrameFacts>,
@@ -81,10 +92,13 @@ pub struct Plan {
 }
 
 impl Plan {
-    /// Operator sessions in the recording (a `session_ended` state followed by another operator's
-    /// messages starts the next).
-    pub fn sessions(&self) -> u32 {
-        self.sessions
+    /// Operator sessions in the recording, as [`crate::read::split_sessions`] counts them.
+    pub fn sessions(&self) -> usize {
+        self.briefs.len()
+    }
+    /// Each operator session: its frames, class and length.
+    pub fn briefs(&self) -> &[SessionBrief] {
+        &self.briefs
     }
     /// Frames (operator poses) recorded.
     pub fn frames_recorded(&self) -> usize {
@@ -100,7 +114,74 @@ impl Plan {
     }
 }
 
-/// Pass 1's reader: the summary's accumulator, the angles, each frame's action level.
+/// Which operator session each message of a stream belongs to, as
+/// [`crate::read::split_sessions`] divides a recording read whole: ranges of log time, each ending
+/// with a `session_ended` (inclusive); a controller event about a leg within [`LATE_EVENT_NANOS`]
+/// after an end, before the next leg is sent, is the ended range's (a late answer).
+#[derive(Debug, Default)]
+struct Ranges {
+    /// The current range: the `session_ended` states before this message.
+    index: usize,
+    /// Each ended range's end (its `session_ended`'s log time).
+    ends: Vec<u64>,
+    leg_sent_since_end: bool,
+}
+
+impl Ranges {
+    /// The range of `message`, logged at `t`.
+    fn of(&mut self, message: &Decoded, t: u64) -> usize {
+        match message {
+            Decoded::Trajectory(m) if !m.message.points.is_empty() => {
+                self.leg_sent_since_end = true;
+            }
+            Decoded::ControllerEvent(m) if m.message.kind == "goal_sent" => {
+                self.leg_sent_since_end = true;
+            }
+            Decoded::ControllerEvent(m) => {
+                let late = !m.message.leg.is_empty()
+                    && !self.leg_sent_since_end
+                    && self
+                        .ends
+                        .last()
+                        .is_some_and(|&end| t <= end.saturating_add(LATE_EVENT_NANOS));
+                if late {
+                    return self.index - 1;
+                }
+            }
+            _ => {}
+        }
+        self.index
+    }
+
+    /// After a message of the current range: a `session_ended` ends it.
+    fn after(&mut self, ended_at: Option<u64>) {
+        if let Some(t) = ended_at {
+            self.ends.push(t);
+            self.index += 1;
+            self.leg_sent_since_end = false;
+        }
+    }
+}
+
+fn session_ended_at(message: &Decoded, t: u64) -> Option<u64> {
+    match message {
+        Decoded::State(m) if m.message.state == "session_ended" => Some(t),
+        _ => None,
+    }
+}
+
+/// One operator session of a recording, as the page lists them.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SessionBrief {
+    /// Operator poses recorded in it.
+    pub frames: usize,
+    /// The class last decided in it, and the height it was decided at, metres.
+    pub class: Option<(String, f64)>,
+    /// From its first message (after the previous session's end) to its last, seconds.
+    pub secs: f64,
+}
+
+/// Pass 1's reader: the wanted session's summary accumulator, angles and each frame's action level.
 struct FirstPass {
     acc: SessionAccumulator,
     angles: AngleSamples,
@@ -109,34 +190,33 @@ struct FirstPass {
     levels: BTreeMap<u64, (u8, u8)>,
     /// Each warning raised: its frame's capture stamp (or log time) and action level.
     raised: Vec<(u64, u8)>,
-    sessions: u32,
-    ended: bool,
-    seen_operator: bool,
+    ranges: Ranges,
+    /// The session wanted, 1-based.
+    want: usize,
+    /// The range of each operator session, in order.
+    operator_ranges: Vec<usize>,
+    briefs: Vec<SessionBrief>,
+    /// Messages of the current range before its first operator message: the wanted session's if
+    /// an operator comes, or the one session's tail if none does after its end.
+    pending: Vec<(Decoded, u64)>,
 }
 
 impl FirstPass {
-    /// A message of an operator session after a `session_ended` starts the next session.
-    fn operator_message(&mut self) {
-        if self.ended || !self.seen_operator {
-            self.sessions += 1;
-            self.ended = false;
-        }
-        self.seen_operator = true;
+    fn wanted_range(&self) -> Option<usize> {
+        self.operator_ranges.get(self.want.checked_sub(1)?).copied()
     }
-}
 
-impl Visit for FirstPass {
-    fn message(&mut self, message: Decoded) {
-        let log_time = message.log_time_nanos();
+    /// Reads one message of the wanted session.
+    fn take(&mut self, message: Decoded, log_time: u64) {
         match &message {
             Decoded::Pose(m) => {
-                self.operator_message();
-                if self.angles.push(&m.message) {
+                // A pose of 33 landmarks is a frame; its angles are counted either way.
+                let frame = self.angles.push(&m.message);
+                if frame {
                     self.pose_stamps.push(stamp_of(&m.message.header));
                 }
             }
             Decoded::Ergonomics(m) => {
-                self.operator_message();
                 let e = &m.message;
                 let grand = |s: &ergocell_bridge::msg::RulaSide| {
                     if s.scored {
@@ -157,13 +237,6 @@ impl Visit for FirstPass {
                     .unwrap_or(log_time);
                 self.raised.push((t, m.message.action_level));
             }
-            Decoded::Trajectory(m) if !m.message.points.is_empty() && self.ended => {
-                self.operator_message();
-            }
-            Decoded::ControllerEvent(m) if m.message.kind == "goal_sent" && self.ended => {
-                self.operator_message();
-            }
-            Decoded::State(m) if m.message.state == "session_ended" => self.ended = true,
             _ => {}
         }
         match message {
@@ -173,35 +246,120 @@ impl Visit for FirstPass {
     }
 }
 
-/// Pass 1 (see the module docs): reads `source` through and plans a page of at most `budget`'s
-/// frames, and besides them every frame within `keep_s` (spans in seconds from the recording's
-/// first message, the page's clock).
+impl Visit for FirstPass {
+    fn message(&mut self, message: Decoded) {
+        let t = message.log_time_nanos();
+        let r = self.ranges.of(&message, t);
+        let ended_at = session_ended_at(&message, t);
+        let current = r == self.ranges.index;
+        if matches!(message, Decoded::Pose(_) | Decoded::Ergonomics(_))
+            && current
+            && self.operator_ranges.last() != Some(&r)
+        {
+            // The first operator message of this range: a session.
+            self.operator_ranges.push(r);
+            self.briefs.push(SessionBrief::default());
+            if self.wanted_range() == Some(r) {
+                for (m, t) in std::mem::take(&mut self.pending) {
+                    self.take(m, t);
+                }
+            }
+            self.pending.clear();
+        }
+        if let Some(k) = self.operator_ranges.iter().rposition(|&x| x == r) {
+            let brief = &mut self.briefs[k];
+            match &message {
+                Decoded::Pose(_) => brief.frames += 1,
+                Decoded::State(m) if !m.message.height_class.is_empty() => {
+                    brief.class = Some((m.message.height_class.clone(), m.message.height_m));
+                }
+                _ => {}
+            }
+        }
+        if self.wanted_range() == Some(r) {
+            self.take(message, t);
+        } else if current && self.operator_ranges.last() != Some(&r) {
+            // No operator in this range yet. Robot markers are not read in pass 1.
+            if !matches!(message, Decoded::RobotMarkers(_)) {
+                self.pending.push((message, t));
+            }
+        }
+        if ended_at.is_some() {
+            self.pending.clear();
+        }
+        self.ranges.after(ended_at);
+    }
+}
+
+/// Pass 1 (see the module docs): reads `source` through and plans a page of operator session
+/// `session` (1-based, as [`crate::read::split_sessions`] numbers them; the whole recording when it
+/// holds one) of at most `budget`'s frames, and besides them every frame within `keep_s` (spans in
+/// seconds from the session's first message, the page's clock).
 ///
 /// # Errors
 /// As [`stream_recording`].
-pub fn plan<R: Read>(source: R, budget: Budget, keep_s: &[[f64; 2]]) -> Result<Plan, ReviewError> {
+pub fn plan<R: Read>(
+    source: R,
+    session: usize,
+    budget: Budget,
+    keep_s: &[[f64; 2]],
+) -> Result<Plan, ReviewError> {
     let mut first = FirstPass {
         acc: SessionAccumulator::new(None),
         angles: AngleSamples::default(),
         pose_stamps: Vec::new(),
         levels: BTreeMap::new(),
         raised: Vec::new(),
-        sessions: 0,
-        ended: false,
-        seen_operator: false,
+        ranges: Ranges::default(),
+        want: session,
+        operator_ranges: Vec::new(),
+        briefs: Vec::new(),
+        pending: Vec::new(),
     };
     let stats = stream_recording(source, &mut first)?;
+    let wanted_range = first.wanted_range();
+    // One session, then nothing but the robot and the states after its end: the whole recording
+    // is the session (as split_sessions reads it).
+    let whole_file = first.operator_ranges.is_empty()
+        || first.ranges.ends.is_empty()
+        || (first.ranges.ends.len() == 1 && first.operator_ranges == [0]);
+    if whole_file && wanted_range.is_some() {
+        for (m, t) in std::mem::take(&mut first.pending) {
+            first.take(m, t);
+        }
+    }
+    let ends = std::mem::take(&mut first.ranges.ends);
+    let range_log = |r: usize| {
+        (
+            r.checked_sub(1)
+                .and_then(|k| ends.get(k))
+                .map_or(stats.first_log_time_nanos, |&end| Some(end + 1)),
+            ends.get(r).copied().or(stats.last_log_time_nanos),
+        )
+    };
+    let mut briefs = std::mem::take(&mut first.briefs);
+    for (brief, &r) in briefs.iter_mut().zip(&first.operator_ranges) {
+        let (a, b) = if whole_file {
+            (stats.first_log_time_nanos, stats.last_log_time_nanos)
+        } else {
+            range_log(r)
+        };
+        brief.secs = secs(b.unwrap_or(0), a.unwrap_or(0));
+    }
+    let (session_first_log, session_last_log) = match wanted_range {
+        Some(r) if !whole_file => range_log(r),
+        _ => (stats.first_log_time_nanos, stats.last_log_time_nanos),
+    };
     let FirstPass {
         mut acc,
         angles,
         mut pose_stamps,
         levels,
         raised,
-        sessions,
         ..
     } = first;
-    // The review's clock: seconds from the recording's first message.
-    acc.first_log = stats.first_log_time_nanos.or(acc.first_log);
+    // The review's clock: seconds from the session's first message.
+    acc.first_log = session_first_log.or(acc.first_log);
     let summary = acc.summarise();
     let mut problems = angles.problems();
     if acc.late_poses > 0 {
@@ -214,7 +372,7 @@ pub fn plan<R: Read>(source: R, budget: Budget, keep_s: &[[f64; 2]]) -> Result<P
     let angles = angles.stats();
     pose_stamps.sort_unstable();
     pose_stamps.dedup();
-    let t0 = stats.first_log_time_nanos.unwrap_or(0);
+    let t0 = session_first_log.unwrap_or(0);
     let at = |s: f64| t0.saturating_add((s.max(0.0) * 1e9) as u64);
     let forced: Vec<(u64, u64)> = keep_s
         .iter()
@@ -228,7 +386,10 @@ pub fn plan<R: Read>(source: R, budget: Budget, keep_s: &[[f64; 2]]) -> Result<P
         .collect();
     Ok(Plan {
         stats,
-        sessions,
+        briefs,
+        wanted_range,
+        whole_file,
+        session_log: (session_first_log, session_last_log),
         summary,
         facts,
         angles,
@@ -354,11 +515,13 @@ fn merge(spans: &[(u64, u64)], span: (u64, u64)) -> Vec<(u64, u64)> {
     out
 }
 
-/// Pass 2's reader: the planned frames and the robot's markers at their density, all else whole.
+/// Pass 2's reader: of the planned session, the planned frames and the robot's markers at their
+/// density, all else whole.
 struct SecondPass<'a> {
     plan: &'a Plan,
     rec: Recording,
     last_marker: Option<u64>,
+    ranges: Ranges,
 }
 
 impl Visit for SecondPass<'_> {
@@ -367,6 +530,12 @@ impl Visit for SecondPass<'_> {
     }
 
     fn message(&mut self, message: Decoded) {
+        let t = message.log_time_nanos();
+        let r = self.ranges.of(&message, t);
+        self.ranges.after(session_ended_at(&message, t));
+        if !self.plan.whole_file && self.plan.wanted_range != Some(r) {
+            return;
+        }
         let keep = match &message {
             Decoded::Pose(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
             Decoded::Ergonomics(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
@@ -400,11 +569,13 @@ pub fn analyse_planned<R: Read>(
     source: R,
     plan: Plan,
     label: &str,
+    note: Option<String>,
 ) -> Result<SessionReview, ReviewError> {
     let mut second = SecondPass {
         plan: &plan,
         rec: Recording::default(),
         last_marker: None,
+        ranges: Ranges::default(),
     };
     let stats = stream_recording(source, &mut second)?;
     let mut rec = second.rec;
@@ -412,9 +583,13 @@ pub fn analyse_planned<R: Read>(
     rec.messages = stats.messages;
     rec.complete = stats.complete;
     let own_problems = std::mem::take(&mut rec.problems);
-    rec.problems = stats.problems.into_iter().chain(own_problems).collect();
-    rec.first_log_time_nanos = stats.first_log_time_nanos;
-    rec.last_log_time_nanos = stats.last_log_time_nanos;
+    rec.problems = stats
+        .problems
+        .into_iter()
+        .chain(own_problems)
+        .chain(note)
+        .collect();
+    (rec.first_log_time_nanos, rec.last_log_time_nanos) = plan.session_log;
     rec.channels = stats.channels;
     let t0 = rec.first_log_time_nanos.unwrap_or(0);
     let Plan {

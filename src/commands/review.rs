@@ -48,8 +48,7 @@ pub struct Input {
     /// Which frames the page holds: `all`, or `overview` (every frame of the worst moments, the
     /// worst frame of each few seconds elsewhere; the summary, rows and distributions still over
     /// every frame, in bounded memory). `auto`: the overview for a recording of 256 MiB or more
-    /// (about 50 minutes of a session) that holds one operator session, or when `--window` is
-    /// given.
+    /// (about 50 minutes of a session), or when `--window` is given.
     #[arg(long, value_enum, default_value_t = PageFrames::Auto)]
     pub page_frames: PageFrames,
     /// Also every frame from FROM to TO, seconds on the page's clock (from the recording's first
@@ -198,9 +197,9 @@ fn load(
             .collect::<Vec<_>>()
             .join("; ");
         let mut chosen = parts.swap_remove(session - 1).recording;
-        chosen.problems.push(format!(
-            "this recording holds {count} operator sessions ({listing}); this page shows session {session} (--session N picks another)"
-        ));
+        chosen
+            .problems
+            .push(sessions_note(count, &listing, session));
         (format!("{name} · session {session}/{count}"), chosen)
     } else {
         (name, parts.pop().map_or(recording, |p| p.recording))
@@ -224,10 +223,10 @@ fn file_name(path: &Path) -> String {
     )
 }
 
-/// The overview of a long recording ([`ergocell_review::overview`]: read twice, streamed), when
-/// `frames` asks for it; `None` when the recording is to be read whole: `all`, a short recording or
-/// one that is not a regular file (a pipe cannot be read twice) under `auto`, or a recording of
-/// several operator sessions (said on stderr).
+/// The overview of a long recording's session `session` ([`ergocell_review::overview`]: read
+/// twice, streamed), when `frames` asks for it; `None` when the recording is to be read whole:
+/// `all`, a short recording or one that is not a regular file (a pipe cannot be read twice) under
+/// `auto`, or a recording in which nobody was seen.
 fn load_overview(
     path: &Path,
     session: usize,
@@ -274,19 +273,41 @@ fn load_overview(
             .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
         Ok(std::io::BufReader::with_capacity(1 << 20, file))
     };
-    let plan = ergocell_review::overview::plan(open()?, budget, windows)
+    let plan = ergocell_review::overview::plan(open()?, session, budget, windows)
         .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
-    if plan.sessions() > 1 || session != 1 {
-        let _ = writeln!(
-            std::io::stderr(),
-            "note: {}: {} operator sessions: reading the whole recording to show session {session}",
-            path.display(),
-            plan.sessions()
-        );
+    let count = plan.sessions();
+    if count == 0 {
+        // Nobody was seen: nothing to thin, and the whole-file reader says what the file holds.
         return Ok(None);
     }
+    if session == 0 || session > count {
+        return Err(UsageError(format!(
+            "{}: --session {session}: the recording holds {count} operator session(s)",
+            path.display()
+        ))
+        .into());
+    }
+    let name = file_name(path);
+    let (label, note) = if count > 1 {
+        let listing = plan
+            .briefs()
+            .iter()
+            .enumerate()
+            .map(|(k, b)| {
+                let class = b.class.as_ref().map(|(c, h)| (c.as_str(), *h));
+                format!("{}: {}", k + 1, describe(b.frames, class, b.secs))
+            })
+            .collect::<Vec<_>>()
+            .join("; ");
+        (
+            format!("{name} · session {session}/{count}"),
+            Some(sessions_note(count, &listing, session)),
+        )
+    } else {
+        (name, None)
+    };
     let (recorded, kept) = (plan.frames_recorded(), plan.frames_kept());
-    let review = ergocell_review::overview::analyse_planned(open()?, plan, &file_name(path))
+    let review = ergocell_review::overview::analyse_planned(open()?, plan, &label, note)
         .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
     if review.overview.is_some() {
         let _ = writeln!(
@@ -299,7 +320,23 @@ fn load_overview(
     Ok(Some(review))
 }
 
+/// What a page of one of several sessions says about the others.
+fn sessions_note(count: usize, listing: &str, session: usize) -> String {
+    format!(
+        "this recording holds {count} operator sessions ({listing}); this page shows session {session} (--session N picks another)"
+    )
+}
+
 /// One line on an operator session: frames, class and height, duration.
+fn describe(frames: usize, class: Option<(&str, f64)>, secs: f64) -> String {
+    let class = class.map_or_else(
+        || "no class decided".to_owned(),
+        |(c, h)| format!("{c} at {h:.3} m"),
+    );
+    format!("{frames} frames, {class}, {secs:.0} s")
+}
+
+/// [`describe`] of a session read whole.
 fn describe_part(r: &ergocell_review::Recording) -> String {
     let t0 = r.first_log_time_nanos.unwrap_or(0);
     let secs = r
@@ -309,12 +346,9 @@ fn describe_part(r: &ergocell_review::Recording) -> String {
         .states
         .iter()
         .rev()
-        .find(|s| !s.message.height_class.is_empty());
-    let class = decided.map_or_else(
-        || "no class decided".to_owned(),
-        |s| format!("{} at {:.3} m", s.message.height_class, s.message.height_m),
-    );
-    format!("{} frames, {class}, {secs:.0} s", r.poses.len())
+        .find(|s| !s.message.height_class.is_empty())
+        .map(|s| (s.message.height_class.as_str(), s.message.height_m));
+    describe(r.poses.len(), decided, secs)
 }
 
 /// The page's data, and the first session's recording when it was read whole (for the frames CSV).
