@@ -15,10 +15,10 @@
 //!    elsewhere the worst frame (highest action level, then grand score) of each bucket of time,
 //!    [`OVERVIEW_FRAMES`] buckets over the recording (a [`Budget`] sets both). Spans the reader
 //!    asks for are kept whole besides, outside the budget.
-//! 2. [`analyse_planned`]: the chosen frames (and the robot's markers at the same density) are kept,
-//!    everything else read and dropped, and the review is computed as for a short recording
-//!    ([`crate::analysis`]), with the summary, the rows and the angle distributions of pass 1, i.e.
-//!    over every frame. [`crate::analysis::Overview`] tells the page which frames it has.
+//! 2. [`analyse_planned`]: the chosen frames (and the robot's markers at the same density) are
+//!    decoded and kept, the other frames' messages left undecoded, and the review is computed as
+//!    for a short recording ([`crate::analysis`]), with the summary, the rows and the angle
+//!    distributions of pass 1, i.e. over every frame. [`crate::analysis::Overview`] tells the page which frames it has.
 //!
 //! A recording with no more frames than the two budgets together keeps every frame. A recording of
 //! several operator sessions (`ergocell run --record`) is reviewed one session at a time, numbered
@@ -86,6 +86,8 @@ pub struct Plan {
     frames_recorded: usize,
     /// Kept frames' capture stamps.
     kept: HashSet<u64>,
+    /// Their messages, by topic and log time: pass 2 decodes no other frame message.
+    kept_messages: HashSet<(FrameTopic, u64)>,
     /// Kept at the recorded rate: capture-stamp spans, in order, disjoint.
     windows: Vec<(u64, u64)>,
     bucket_nanos: u64,
@@ -170,6 +172,25 @@ fn session_ended_at(message: &Decoded, t: u64) -> Option<u64> {
     }
 }
 
+/// The topics of a frame's messages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+enum FrameTopic {
+    Pose,
+    Ergonomics,
+    Reba,
+}
+
+impl FrameTopic {
+    fn of(topic: &str) -> Option<Self> {
+        match topic {
+            crate::read::topics::OPERATOR_POSE => Some(Self::Pose),
+            crate::read::topics::ERGONOMICS => Some(Self::Ergonomics),
+            crate::read::topics::REBA => Some(Self::Reba),
+            _ => None,
+        }
+    }
+}
+
 /// One operator session of a recording, as the page lists them.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct SessionBrief {
@@ -190,6 +211,8 @@ struct FirstPass {
     levels: BTreeMap<u64, (u8, u8)>,
     /// Each warning raised: its frame's capture stamp (or log time) and action level.
     raised: Vec<(u64, u8)>,
+    /// Each frame message's (topic, capture stamp, log time): pass 2 decodes only the kept ones.
+    frame_messages: Vec<(FrameTopic, u64, u64)>,
     ranges: Ranges,
     /// The session wanted, 1-based.
     want: usize,
@@ -208,6 +231,16 @@ impl FirstPass {
 
     /// Reads one message of the wanted session.
     fn take(&mut self, message: Decoded, log_time: u64) {
+        let frame = match &message {
+            Decoded::Pose(m) => Some((FrameTopic::Pose, &m.message.header)),
+            Decoded::Ergonomics(m) => Some((FrameTopic::Ergonomics, &m.message.header)),
+            Decoded::Reba(m) => Some((FrameTopic::Reba, &m.message.header)),
+            _ => None,
+        };
+        if let Some((topic, header)) = frame {
+            self.frame_messages
+                .push((topic, stamp_of(header), log_time));
+        }
         match &message {
             Decoded::Pose(m) => {
                 // A pose of 33 landmarks is a frame; its angles are counted either way.
@@ -310,6 +343,7 @@ pub fn plan<R: Read>(
         pose_stamps: Vec::new(),
         levels: BTreeMap::new(),
         raised: Vec::new(),
+        frame_messages: Vec::new(),
         ranges: Ranges::default(),
         want: session,
         operator_ranges: Vec::new(),
@@ -356,6 +390,7 @@ pub fn plan<R: Read>(
         mut pose_stamps,
         levels,
         raised,
+        frame_messages,
         ..
     } = first;
     // The review's clock: seconds from the session's first message.
@@ -384,7 +419,13 @@ pub fn plan<R: Read>(
         .filter(|(t, _)| kept.contains(t))
         .map(|(t, (_, f))| (t, f))
         .collect();
+    let kept_messages = frame_messages
+        .into_iter()
+        .filter(|(_, stamp, _)| kept.contains(stamp))
+        .map(|(topic, _, log)| (topic, log))
+        .collect();
     Ok(Plan {
+        kept_messages,
         stats,
         briefs,
         wanted_range,
@@ -525,6 +566,25 @@ struct SecondPass<'a> {
 }
 
 impl Visit for SecondPass<'_> {
+    fn wants_at(&mut self, topic: &str, log_time_nanos: u64) -> bool {
+        if let Some(frame) = FrameTopic::of(topic) {
+            return self.plan.kept_messages.contains(&(frame, log_time_nanos));
+        }
+        if topic == crate::read::topics::ROBOT_MARKERS {
+            let t = log_time_nanos;
+            let in_window = self.plan.windows.iter().any(|&(a, b)| a <= t && t <= b);
+            let due = self
+                .last_marker
+                .is_none_or(|last| t >= last.saturating_add(self.plan.bucket_nanos));
+            if in_window || due {
+                self.last_marker = Some(t);
+                return true;
+            }
+            return false;
+        }
+        true
+    }
+
     fn metadata(&mut self, name: &str, entries: &BTreeMap<String, String>) {
         self.rec.metadata(name, entries);
     }
@@ -540,18 +600,6 @@ impl Visit for SecondPass<'_> {
             Decoded::Pose(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
             Decoded::Ergonomics(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
             Decoded::Reba(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
-            Decoded::RobotMarkers(m) => {
-                let t = m.log_time_nanos;
-                let in_window = self.plan.windows.iter().any(|&(a, b)| a <= t && t <= b);
-                let due = self
-                    .last_marker
-                    .is_none_or(|last| t >= last.saturating_add(self.plan.bucket_nanos));
-                let keep = in_window || due;
-                if keep {
-                    self.last_marker = Some(t);
-                }
-                keep
-            }
             _ => true,
         };
         if keep {
@@ -577,20 +625,24 @@ pub fn analyse_planned<R: Read>(
         last_marker: None,
         ranges: Ranges::default(),
     };
-    let stats = stream_recording(source, &mut second)?;
+    stream_recording(source, &mut second)?;
     let mut rec = second.rec;
+    // What the file holds and what is wrong with it as pass 1 read it, decoding every message
+    // (pass 2 leaves the frames it does not keep undecoded).
+    let stats = &plan.stats;
     rec.bytes = stats.bytes;
     rec.messages = stats.messages;
     rec.complete = stats.complete;
     let own_problems = std::mem::take(&mut rec.problems);
     rec.problems = stats
         .problems
-        .into_iter()
+        .iter()
+        .cloned()
         .chain(own_problems)
         .chain(note)
         .collect();
     (rec.first_log_time_nanos, rec.last_log_time_nanos) = plan.session_log;
-    rec.channels = stats.channels;
+    rec.channels = stats.channels.clone();
     let t0 = rec.first_log_time_nanos.unwrap_or(0);
     let Plan {
         summary,

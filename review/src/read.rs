@@ -71,6 +71,12 @@ pub trait Visit {
     fn wants(&self, _topic: &str) -> bool {
         true
     }
+    /// Whether to decode this one message of `topic`, logged at `log_time_nanos` (by default, as
+    /// [`Visit::wants`] says for its topic). A message not wanted is counted, never decoded, so what
+    /// is wrong with it is not found either.
+    fn wants_at(&mut self, topic: &str, _log_time_nanos: u64) -> bool {
+        self.wants(topic)
+    }
     /// An MCAP metadata record (e.g. [`ergocell_bridge::session_info::METADATA_NAME`]).
     fn metadata(&mut self, _name: &str, _entries: &BTreeMap<String, String>) {}
     /// A message on one of the session's topics, decoded.
@@ -543,7 +549,7 @@ impl<'v, V: Visit> Reader<'v, V> {
         if !known {
             return;
         }
-        if !self.visitor.wants(topic) {
+        if !self.visitor.wants_at(topic, t) {
             rec.session_messages += u64::from(session_topic);
             return;
         }
