@@ -419,15 +419,8 @@ pub(crate) fn analyse_with(
     poses.dedup_by_key(|p| stamp(&p.message.header));
     let robot = robot(rec, t0);
     // Task segments and the trunk and neck angles, by capture stamp (see `phase_of`).
-    let (by_stamp, whole) = if let Some(w) = whole {
-        let WholeRecording {
-            summary,
-            facts,
-            angles,
-            problems,
-            overview,
-        } = w;
-        (facts, Some((summary, angles, problems, overview)))
+    let (by_stamp, whole) = if let Some(mut w) = whole {
+        (std::mem::take(&mut w.facts), Some(w))
     } else {
         let handovers = handover_spans(&robot);
         let mut activity = ActivityTracker::new(ActivityConfig::default(), &UpVector::z()).ok();
@@ -493,32 +486,31 @@ pub(crate) fn analyse_with(
         frames.uncertain_left.push(uncertain(e.map(|e| &e.left)));
         frames.uncertain_right.push(uncertain(e.map(|e| &e.right)));
     }
-    let (summary, angles, overview) =
-        if let Some((summary, angles, pose_problems, overview)) = whole {
-            problems.extend(pose_problems);
-            (summary, angles, overview)
-        } else {
-            // Regions over the scored time of the recording (every ErgonomicState, whether or not
-            // its pose was recorded), summarised as `ergocell rula track` does.
-            let summary = summarise(
-                ergonomics.iter().map(|e| {
-                    let e = &e.message;
-                    let t = stamp(&e.header);
-                    let r = reba_at(t);
-                    (
-                        t,
-                        ScoredFrame {
-                            stamp_nanos: e.header.stamp.to_nanos(),
-                            left: scored_side(&e.left, r.map(|r| &r.left)),
-                            right: scored_side(&e.right, r.map(|r| &r.right)),
-                        },
-                    )
-                }),
-                |t| by_stamp.get(&t).copied().unwrap_or_default(),
-            );
-            problems.extend(angle_samples.problems());
-            (summary, angle_samples.stats(), None)
-        };
+    let (summary, angles, overview) = if let Some(w) = whole {
+        problems.extend(w.problems);
+        (w.summary, w.angles, w.overview)
+    } else {
+        // Regions over the scored time of the recording (every ErgonomicState, whether or not
+        // its pose was recorded), summarised as `ergocell rula track` does.
+        let summary = summarise(
+            ergonomics.iter().map(|e| {
+                let e = &e.message;
+                let t = stamp(&e.header);
+                let r = reba_at(t);
+                (
+                    t,
+                    ScoredFrame {
+                        stamp_nanos: e.header.stamp.to_nanos(),
+                        left: scored_side(&e.left, r.map(|r| &r.left)),
+                        right: scored_side(&e.right, r.map(|r| &r.right)),
+                    },
+                )
+            }),
+            |t| by_stamp.get(&t).copied().unwrap_or_default(),
+        );
+        problems.extend(angle_samples.problems());
+        (summary, angle_samples.stats(), None)
+    };
     let regions = region_rows(&summary);
 
     SessionReview {

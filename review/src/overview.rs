@@ -110,10 +110,6 @@ impl Plan {
     pub fn frames_kept(&self) -> usize {
         self.kept.len()
     }
-    /// What reading the file found (its size, whether it is complete, its problems).
-    pub fn stats(&self) -> &ReadStats {
-        &self.stats
-    }
 }
 
 /// Which operator session each message of a stream belongs to, as
@@ -596,6 +592,8 @@ impl Visit for SecondPass<'_> {
         if !self.plan.whole_file && self.plan.wanted_range != Some(r) {
             return;
         }
+        // `wants_at` chose by log time; one session step can log two fused frames at the same
+        // time, so a frame is kept by its capture stamp.
         let keep = match &message {
             Decoded::Pose(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
             Decoded::Ergonomics(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
