@@ -148,6 +148,7 @@ impl CellSettings {
             assessment,
             warnings: WarningConfig {
                 hysteresis_rad: self.warnings.hysteresis_rad,
+                rise_margin_rad: self.warnings.rise_margin_rad,
                 dwell_nanos: nanos(self.warnings.dwell_s),
                 warn_at: self.warnings.warn_at,
             },
@@ -233,6 +234,7 @@ impl CellSettings {
         }
         let w = &self.warnings;
         angle("warnings.hysteresis_rad", w.hysteresis_rad)?;
+        angle("warnings.rise_margin_rad", w.rise_margin_rad)?;
         seconds("warnings.dwell_s", w.dwell_s)?;
         for (i, &s) in w.warn_at.iter().enumerate() {
             if !(1..=6).contains(&s) {
@@ -608,6 +610,7 @@ impl Default for MuscleFile {
 #[serde(deny_unknown_fields, default)]
 struct WarningsFile {
     hysteresis_rad: f64,
+    rise_margin_rad: f64,
     dwell_s: f64,
     warn_at: [u8; 6],
 }
@@ -617,6 +620,7 @@ impl Default for WarningsFile {
         let w = WarningConfig::default();
         Self {
             hysteresis_rad: w.hysteresis_rad,
+            rise_margin_rad: w.rise_margin_rad,
             dwell_s: w.dwell_nanos as f64 * 1e-9,
             warn_at: w.warn_at,
         }

@@ -56,6 +56,10 @@ for experiment in table1 adaptation height rula-agreement; do
   "$bin" sim "$experiment" --seed 1 --out-dir "$out" >/dev/null
   "$bin" sim "$experiment" --seeds 101..120 --out-dir "$out" >"$out/${experiment//-/_}_seeds.txt"
 done
+# The operator's warnings on the station's tasks (the shipped task mix), under the detector fitted to
+# the real one, on the reporting seeds 301..340 (the rise margin was chosen on seeds 1..20).
+"$bin" sim warnings --detector sim/detectors/mediapipe-pose2sim.toml --seeds 301..340 \
+  --out-dir "$out" >"$out/warnings_seeds.txt"
 if [ "$out" != docs/sim ]; then
   status=0
   if ! diff <(cd "$out" && ls -- *.json) <(cd docs/sim && ls -- *.json) >/dev/null; then

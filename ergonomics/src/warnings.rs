@@ -10,10 +10,17 @@
 //!   `a_L` by the hysteresis margin (default 5°, never past `a_L`). So a posture has to be the margin
 //!   inside a lower band before the level may fall: a neck warning raised at 35° clears only below
 //!   15°, an extension warning only from +5°. Regions without an angle (legs) have `lo = hi`.
-//! - `L` rises only after `hi > L` has held continuously for the dwell time (default 2 s), to the
-//!   smallest `hi` seen meanwhile; it falls only after `lo < L` has held for the dwell time, to the
-//!   largest `lo` seen meanwhile. A value that dithers around an edge moves neither way: each
-//!   excursion restarts the dwell clock.
+//! - A warning rises to a band only when the posture is past its edge by the rise margin (default
+//!   3°, [`WarningConfig::rise_margin_rad`]): `hi` is then the lowest score within the margin of
+//!   `x` either way. A measured angle jitters by a few degrees; a posture 1° past an edge is as
+//!   likely measured 1° short of it, and a warning the operator cannot reproduce teaches them to
+//!   ignore the display.
+//! - `L` rises to the highest level `v > L` for which `hi ≥ v` has held continuously for the dwell
+//!   time (default 2 s); it falls to the lowest level `v < L` for which `lo ≤ v` has held for the
+//!   dwell time. Each level keeps its own clock, so a posture that passes through a band on its way
+//!   to a worse one (an arm raised through 20–45° to 100°) warns one dwell after it crossed the
+//!   warning's edge, not one dwell per band it passed. A value that dithers around an edge moves
+//!   neither way: each excursion restarts that edge's clock.
 //! - A region warns while `L` reaches its threshold ([`WarningConfig::warn_at`]). Events are emitted
 //!   when a warning is raised, changes level or clears, in plain words with the angle, the advice and
 //!   the frame's RULA action level. Wrist warnings say that wrist scores are the least reliable part
@@ -43,6 +50,10 @@ use crate::Side;
 pub struct WarningConfig {
     /// How far inside a lower band a posture must be before a warning falls (default 5°).
     pub hysteresis_rad: f64,
+    /// How far past a band's edge a posture must be before a warning rises to that band (default
+    /// 3°, chosen on the twin's task sessions, seeds 1–20: false warnings 5.6 → 1.2 per hour with
+    /// every clear posture still warned). The score is never changed; only when the warning comes.
+    pub rise_margin_rad: f64,
     /// How long a change must hold before it is reported (default 2 s).
     pub dwell_nanos: i64,
     /// Region score at which each region warns, in [`BodyRegion::ALL`] order
@@ -54,6 +65,7 @@ impl Default for WarningConfig {
     fn default() -> Self {
         Self {
             hysteresis_rad: 5f64.to_radians(),
+            rise_margin_rad: 3f64.to_radians(),
             dwell_nanos: 2_000_000_000,
             warn_at: [3, 3, 3, 3, 3, 2],
         }
@@ -87,13 +99,18 @@ pub struct WarningEvent {
     pub message: String,
 }
 
+/// The highest region score (the upper arm's 6, with both adjustments).
+const MAX_LEVEL: usize = 7;
+
 #[derive(Debug, Clone, Copy, Default)]
 struct RegionState {
     level: u8,
     /// The angle at which `level` was last set.
     level_angle: Option<f64>,
-    up: Option<(i64, u8)>,
-    down: Option<(i64, u8)>,
+    /// `up[v]`: since when `hi ≥ v` has held (levels above `level`).
+    up: [Option<i64>; MAX_LEVEL + 1],
+    /// `down[v]`: since when `lo ≤ v` has held (levels below `level`).
+    down: [Option<i64>; MAX_LEVEL + 1],
 }
 
 /// Turns the per-frame assessments into warning events.
@@ -113,7 +130,7 @@ fn toward(x: f64, anchor: f64, margin: f64) -> f64 {
 }
 
 /// The region's angle in a worksheet (none for the legs).
-fn region_angle(region: BodyRegion, i: &RulaInput) -> Option<f64> {
+pub fn region_angle(region: BodyRegion, i: &RulaInput) -> Option<f64> {
     match region {
         BodyRegion::UpperArm => Some(i.upper_arm_flexion_deg),
         BodyRegion::LowerArm => Some(i.lower_arm_flexion_deg),
@@ -125,7 +142,7 @@ fn region_angle(region: BodyRegion, i: &RulaInput) -> Option<f64> {
 }
 
 /// The region's RULA score (with the worksheet's adjustments) with its angle replaced by `angle`.
-fn region_score_at(region: BodyRegion, i: &RulaInput, angle: Option<f64>) -> u8 {
+pub fn region_score_at(region: BodyRegion, i: &RulaInput, angle: Option<f64>) -> u8 {
     let a = angle.or_else(|| region_angle(region, i)).unwrap_or(0.0);
     match region {
         BodyRegion::UpperArm => upper_arm_score(
@@ -144,6 +161,20 @@ fn region_score_at(region: BodyRegion, i: &RulaInput, angle: Option<f64>) -> u8 
             i.trunk_side_bending,
         ),
         BodyRegion::Legs => legs_score(i.legs_supported_and_balanced),
+    }
+}
+
+/// The score a warning may rise to at `angle`: the region's lowest score within `margin_deg` of it
+/// either way (the score itself when the region has no angle or the margin is 0), so a warning
+/// rises to a band only once the posture is that far past the band's edge.
+fn rise_score(region: BodyRegion, i: &RulaInput, angle: Option<f64>, margin_deg: f64) -> u8 {
+    let at = region_score_at(region, i, angle);
+    match angle {
+        Some(x) if margin_deg > 0.0 => [x - margin_deg, x + margin_deg]
+            .iter()
+            .map(|v| region_score_at(region, i, Some(*v)))
+            .fold(at, u8::min),
+        _ => at,
     }
 }
 
@@ -269,6 +300,7 @@ impl WarningTracker {
         };
         let action_level = head.scores.action_level;
         let margin_deg = self.config.hysteresis_rad.to_degrees();
+        let rise_deg = self.config.rise_margin_rad.to_degrees();
         for (ri, region) in BodyRegion::ALL.iter().enumerate() {
             let sides: Vec<(Option<Side>, &crate::assess::SideAssessment)> = if region.is_sided() {
                 Side::BOTH
@@ -288,7 +320,7 @@ impl WarningTracker {
                 let angle = region_angle(*region, input);
                 let warn_at = self.config.warn_at[ri];
                 let state = self.states.entry((*region, side)).or_default();
-                let hi = region_score_at(*region, input, angle);
+                let hi = rise_score(*region, input, angle, rise_deg);
                 let lo = match (angle, state.level_angle) {
                     (Some(x), Some(anchor)) => {
                         region_score_at(*region, input, Some(toward(x, anchor, margin_deg)))
@@ -362,31 +394,40 @@ impl WarningTracker {
 
 /// One step of the hysteresis/dwell state machine (see the module docs).
 fn step(state: &mut RegionState, stamp: i64, hi: u8, lo: u8, angle: Option<f64>, dwell_nanos: i64) {
-    let level = state.level.max(1);
-    if hi > level {
-        let (since, min_seen) = state.up.map_or((stamp, hi), |(s, m)| (s, m.min(hi)));
-        if stamp.saturating_sub(since) >= dwell_nanos {
-            state.level = min_seen;
-            state.level_angle = angle;
-            state.up = None;
-            state.down = None;
-            return;
-        }
-        state.up = Some((since, min_seen));
-    } else {
-        state.up = None;
+    let level = usize::from(state.level.max(1));
+    let (hi, lo) = (usize::from(hi), usize::from(lo));
+    let held = |since: Option<i64>| since.is_some_and(|s| stamp.saturating_sub(s) >= dwell_nanos);
+    for v in 1..=MAX_LEVEL {
+        state.up[v] = if v > level && hi >= v {
+            Some(state.up[v].unwrap_or(stamp))
+        } else {
+            None
+        };
     }
-    if lo < level {
-        let (since, max_seen) = state.down.map_or((stamp, lo), |(s, m)| (s, m.max(lo)));
-        if stamp.saturating_sub(since) >= dwell_nanos {
-            state.level = max_seen;
-            state.level_angle = angle;
-            state.up = None;
-            state.down = None;
-            return;
+    if let Some(v) = (level + 1..=MAX_LEVEL).rev().find(|v| held(state.up[*v])) {
+        state.level = u8::try_from(v).unwrap_or(u8::MAX);
+        state.level_angle = angle;
+        // Levels above keep their clocks: a worse band entered meanwhile follows one dwell after
+        // it was entered.
+        for u in &mut state.up[..=v] {
+            *u = None;
         }
-        state.down = Some((since, max_seen));
-    } else {
-        state.down = None;
+        state.down = [None; MAX_LEVEL + 1];
+        return;
+    }
+    for v in 1..=MAX_LEVEL {
+        state.down[v] = if v < level && lo <= v {
+            Some(state.down[v].unwrap_or(stamp))
+        } else {
+            None
+        };
+    }
+    if let Some(v) = (1..level).find(|v| held(state.down[*v])) {
+        state.level = u8::try_from(v).unwrap_or(u8::MAX);
+        state.level_angle = angle;
+        for d in &mut state.down[v..] {
+            *d = None;
+        }
+        state.up = [None; MAX_LEVEL + 1];
     }
 }

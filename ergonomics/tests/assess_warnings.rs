@@ -367,6 +367,63 @@ fn a_warning_clears_only_inside_the_margin_and_after_the_dwell() {
 }
 
 #[test]
+fn a_posture_passing_through_a_band_warns_one_dwell_after_the_warning_edge() {
+    // 1 s at 15° (score 2), then 30° (score 3): the warning comes 2 s after the 20° edge was
+    // crossed, not 2 s for band 2 and 2 s more for band 3.
+    let mut frames: Vec<(i64, f64)> = (0..10).map(|k| (k * FRAME, 15.0)).collect();
+    frames.extend((10..60).map(|k| (k * FRAME, 30.0)));
+    let events = run_warnings(&frames);
+    let neck: Vec<_> = events
+        .iter()
+        .filter(|e| e.region == BodyRegion::Neck)
+        .collect();
+    assert_eq!(neck.len(), 1, "{neck:?}");
+    assert_eq!(neck[0].kind, WarningKind::Raised);
+    assert_eq!(neck[0].region_score, 3);
+    assert_eq!(neck[0].stamp_nanos, 10 * FRAME + 2 * SEC);
+
+    // And back: 30° → 2° passes band 2 on its way: cleared one dwell after reaching 2°.
+    let mut frames: Vec<(i64, f64)> = (0..40).map(|k| (k * FRAME, 30.0)).collect();
+    frames.extend((40..45).map(|k| (k * FRAME, 14.0)));
+    frames.extend((45..100).map(|k| (k * FRAME, 2.0)));
+    let events = run_warnings(&frames);
+    let neck: Vec<_> = events
+        .iter()
+        .filter(|e| e.region == BodyRegion::Neck)
+        .collect();
+    assert_eq!(
+        neck.iter().map(|e| e.kind).collect::<Vec<_>>(),
+        [WarningKind::Raised, WarningKind::Cleared]
+    );
+    // 14° is 6° inside the 20° edge (past the 5° margin): the clock for "at most 2" starts at 40.
+    assert_eq!(neck[1].stamp_nanos, 40 * FRAME + 2 * SEC);
+    assert_eq!(
+        neck[1].region_score, 2,
+        "below the warning, on its way down"
+    );
+}
+
+#[test]
+fn a_warning_rises_only_past_the_edge_by_the_rise_margin() {
+    let neck_events = |deg: f64| {
+        let frames: Vec<(i64, f64)> = (0..60).map(|k| (k * FRAME, deg)).collect();
+        run_warnings(&frames)
+            .into_iter()
+            .filter(|e| e.region == BodyRegion::Neck)
+            .map(|e| (e.kind, e.region_score))
+            .collect::<Vec<_>>()
+    };
+    let margin = WarningConfig::default().rise_margin_rad.to_degrees();
+    assert!((margin - 3.0).abs() < 1e-12);
+    // 21°: scored 3, but 1° past the 20° edge: no warning, however long it is held.
+    assert_eq!(neck_events(21.0), []);
+    assert_eq!(neck_events(24.0), [(WarningKind::Raised, 3)]);
+    // The extension band (scored 4 below 0°) alike: 1° back is not warned, 5° back is.
+    assert_eq!(neck_events(-1.0), []);
+    assert_eq!(neck_events(-5.0), [(WarningKind::Raised, 4)]);
+}
+
+#[test]
 fn session_summary_shares_add_up() {
     let spec = PoseSpec::reaching();
     let mut assessor = assessor_for(&spec);

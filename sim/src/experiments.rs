@@ -136,11 +136,11 @@ impl Handovers {
 /// Progress callback: `(sessions done, sessions in total)`.
 pub type Progress<'a> = &'a mut dyn FnMut(usize, usize);
 
-fn up() -> Result<UpVector, SimError> {
+pub(crate) fn up() -> Result<UpVector, SimError> {
     Ok(UpVector::new(Vector3::z())?)
 }
 
-fn session_seed(seed: u64, session: usize) -> u64 {
+pub(crate) fn session_seed(seed: u64, session: usize) -> u64 {
     seed.wrapping_mul(1000).wrapping_add(session as u64)
 }
 
@@ -165,18 +165,18 @@ fn simulate(
 
 /// The assessor for the ground truth: the true angles of each instant, unsmoothed (the pipeline's
 /// assessor keeps the cell controller's defaults, smoothing included, and its lag counts against it).
-fn truth_config(cfg: AssessmentConfig) -> AssessmentConfig {
+pub(crate) fn truth_config(cfg: AssessmentConfig) -> AssessmentConfig {
     AssessmentConfig {
         smoothing_window_nanos: 0,
         ..cfg
     }
 }
 
-fn at_station(phase: Phase) -> bool {
+pub(crate) fn at_station(phase: Phase) -> bool {
     !matches!(phase, Phase::WalkIn | Phase::WalkOut | Phase::Gone)
 }
 
-fn round6(x: f64) -> f64 {
+pub(crate) fn round6(x: f64) -> f64 {
     (x * 1e6).round() / 1e6
 }
 
@@ -403,7 +403,7 @@ pub fn run_pipeline(
 }
 
 /// Index of the tick whose time is nearest `stamp_nanos` (ticks in time order).
-fn nearest_tick(ticks: &[Tick], stamp_nanos: i64) -> usize {
+pub(crate) fn nearest_tick(ticks: &[Tick], stamp_nanos: i64) -> usize {
     let i = ticks.partition_point(|t| t.frame.stamp_nanos < stamp_nanos);
     match (i.checked_sub(1), ticks.get(i)) {
         (Some(j), Some(next))
@@ -419,15 +419,15 @@ fn nearest_tick(ticks: &[Tick], stamp_nanos: i64) -> usize {
 
 /// Per-region scores and angles of one scored frame (worse side).
 #[derive(Debug, Clone, Copy, Default)]
-struct Scored {
-    grand: u8,
-    regions: [u8; 6],
+pub(crate) struct Scored {
+    pub(crate) grand: u8,
+    pub(crate) regions: [u8; 6],
     /// The assessor marked the score uncertain (a landmark it used is below its confidence floor, or
     /// an input was held or never observed).
     uncertain: bool,
 }
 
-fn scored(a: &FrameAssessment) -> Option<Scored> {
+pub(crate) fn scored(a: &FrameAssessment) -> Option<Scored> {
     a.headline().map(|h| Scored {
         grand: h.scores.final_score,
         regions: BodyRegion::ALL.map(|r| r.score(&h.scores)),
@@ -436,7 +436,7 @@ fn scored(a: &FrameAssessment) -> Option<Scored> {
 }
 
 /// The pipeline's headline of a tracked frame.
-fn pipeline_headline(tracked: &TrackedFrame) -> Result<Option<Scored>, SimError> {
+pub(crate) fn pipeline_headline(tracked: &TrackedFrame) -> Result<Option<Scored>, SimError> {
     match &tracked.assessment {
         Ok(a) => Ok(scored(a)),
         Err(e) => Err(e.clone().into()),

@@ -67,6 +67,8 @@ pub mod reach;
 pub mod seeds;
 pub mod session;
 pub mod source;
+pub mod tasks;
+pub mod warning_trust;
 
 pub use body::{ArmPosture, LegPosture, Operator, Posture};
 pub use cameras::{ring_rig, RingRigConfig};
@@ -74,7 +76,7 @@ pub use detector::{DetectorNoise, RelativeNoise};
 pub use reach::{solve_reach, ReachConfig, ReachSolution};
 pub use session::{
     Bystander, CameraBump, FloorPick, GroundTruth, Habits, Phase, PickStage, SessionScript,
-    SimConfig, Simulation, Tick,
+    SimConfig, Simulation, TaskStage, Tick,
 };
 
 /// Everything that can go wrong in the simulator.

@@ -91,7 +91,11 @@ pub struct Goal {
 
 impl Goal {
     /// `check(seed index)` returns `None` when the goal holds on that seed, else why not.
-    fn judge(goal: &str, seeds: &[u64], mut check: impl FnMut(usize) -> Option<String>) -> Self {
+    pub(crate) fn judge(
+        goal: &str,
+        seeds: &[u64],
+        mut check: impl FnMut(usize) -> Option<String>,
+    ) -> Self {
         let fails: Vec<(u64, String)> = seeds
             .iter()
             .enumerate()

@@ -25,6 +25,7 @@ use serde::Serialize;
 use crate::body::{LegPosture, Operator, Posture};
 use crate::detector::{gaussian, jitter_nanos, render_view, DetectorNoise, PersistentOffsets};
 use crate::reach::{solve_reach, ReachConfig};
+use crate::tasks::{TaskKind, TaskOccurrence};
 use crate::SimError;
 
 /// What the operator is doing.
@@ -54,6 +55,12 @@ pub enum Phase {
     FloorPick {
         stage: PickStage,
     },
+    /// One of the station's other tasks ([`crate::tasks`]): occurrence `index` of the session.
+    Task {
+        index: usize,
+        kind: TaskKind,
+        stage: TaskStage,
+    },
     WalkOut,
     /// After the script: nobody in the cell.
     Gone,
@@ -69,6 +76,28 @@ pub enum PickStage {
     Hold,
     /// Standing back up.
     Return,
+}
+
+/// The stages of a [`Phase::Task`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TaskStage {
+    /// Moving into the task's posture.
+    Reach,
+    /// Holding it.
+    Hold,
+    /// Moving back to the resting posture.
+    Return,
+    /// Standing before what comes next.
+    Rest,
+}
+
+/// What a stretch of the session's timeline is, once tasks are in it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Segment {
+    Handover(usize),
+    FloorPick,
+    Task(usize),
 }
 
 /// A floor pick: after `after_cycle` handover cycles the operator bends down to pick up a dropped
@@ -411,6 +440,13 @@ pub struct Simulation {
     reach_offsets_m: Vec<nalgebra::Vector3<f64>>,
     /// The floor pick's solved posture, if the script has one.
     pick: Option<Posture>,
+    /// The station's other tasks, each with the posture it holds ([`crate::tasks`]).
+    tasks: Vec<(TaskOccurrence, Posture)>,
+    /// With tasks: every stretch after the idle phase, `(start, kind)`, start in seconds from the
+    /// end of the idle phase, in time order, then the end of the last one. Empty without tasks (the
+    /// handover cycles and the floor pick are then placed by arithmetic, as they always were).
+    timeline: Vec<(f64, Segment)>,
+    timeline_end_secs: f64,
     rng: ChaCha8Rng,
     /// The detector's persistent offsets, when its noise is relative ([`RelativeNoise`]).
     persistent: Option<PersistentOffsets>,
@@ -431,7 +467,38 @@ impl Simulation {
         script: SessionScript,
         config: SimConfig,
     ) -> Result<Self, SimError> {
+        Self::with_tasks(rig, operator, script, config, Vec::new())
+    }
+
+    /// [`Simulation::new`] with the station's other tasks between the handover cycles (drawn by
+    /// [`crate::tasks::TaskMix::draw`]; each placed after its `after_cycle` cycles, at most
+    /// [`SessionScript::cycles`]).
+    pub fn with_tasks(
+        rig: CameraRig,
+        operator: Operator,
+        script: SessionScript,
+        config: SimConfig,
+        tasks: Vec<TaskOccurrence>,
+    ) -> Result<Self, SimError> {
         script.validate()?;
+        for t in &tasks {
+            if t.after_cycle > script.cycles {
+                return Err(SimError::BadParameter {
+                    name: "task.after_cycle",
+                    value: t.after_cycle as f64,
+                    why: "must be at most the number of cycles",
+                });
+            }
+            for v in [t.reach_secs, t.hold_secs, t.return_secs, t.rest_secs] {
+                if !(v.is_finite() && v >= 0.0) {
+                    return Err(SimError::BadParameter {
+                        name: "task duration",
+                        value: v,
+                        why: "must be finite and >= 0",
+                    });
+                }
+            }
+        }
         config.noise.validate()?;
         if config.frame_period_nanos <= 0 {
             return Err(SimError::BadParameter {
@@ -476,10 +543,20 @@ impl Simulation {
             Some(p) => Some(solve_reach(&operator, &rest, &p.target_m, &config.reach)?.posture),
             None => None,
         };
+        let tasks: Vec<(TaskOccurrence, Posture)> = tasks
+            .into_iter()
+            .map(|t| {
+                let q = t.posture(&rest, operator.right_handed);
+                (t, q)
+            })
+            .collect();
+        let (timeline, timeline_end_secs) = timeline(&script, &tasks);
         let mut rng = ChaCha8Rng::seed_from_u64(config.seed);
         rng.set_stream(2);
         let period_secs = config.frame_period_nanos as f64 * 1e-9;
-        let ticks = (script.duration_secs() / period_secs).floor() as u64 + 1;
+        let duration =
+            script.duration_secs() + tasks.iter().map(|(t, _)| t.duration_secs()).sum::<f64>();
+        let ticks = (duration / period_secs).floor() as u64 + 1;
         let persistent = config
             .noise
             .relative
@@ -495,6 +572,9 @@ impl Simulation {
             reach,
             reach_offsets_m,
             pick,
+            tasks,
+            timeline,
+            timeline_end_secs,
             rng,
             persistent,
             next: 0,
@@ -532,9 +612,22 @@ impl Simulation {
         self.pick.as_ref()
     }
 
+    /// The station's other tasks of this session, each with the posture it holds.
+    pub fn tasks(&self) -> &[(TaskOccurrence, Posture)] {
+        &self.tasks
+    }
+
     /// When cycle `cycle`'s reach begins, nanoseconds (the script's clock).
     fn cycle_start_nanos(&self, cycle: usize) -> i64 {
         let sc = &self.script;
+        if let Some((start, _)) = self
+            .timeline
+            .iter()
+            .find(|(_, s)| *s == Segment::Handover(cycle))
+        {
+            let t = sc.walk_in_secs + sc.idle_secs + start;
+            return self.config.start_nanos + (t * 1e9).round() as i64;
+        }
         let mut t = sc.walk_in_secs + sc.idle_secs + cycle as f64 * sc.cycle_secs();
         if let Some(p) = &sc.floor_pick {
             if p.after_cycle <= cycle {
@@ -594,6 +687,9 @@ impl Simulation {
             return (Phase::Idle, self.idle, None);
         }
         t -= sc.idle_secs;
+        if !self.timeline.is_empty() {
+            return self.timeline_at(t);
+        }
         let cycle_secs = sc.cycle_secs();
         if let (Some(p), Some(pick)) = (&sc.floor_pick, &self.pick) {
             let from = p.after_cycle as f64 * cycle_secs;
@@ -617,36 +713,106 @@ impl Simulation {
         }
         if sc.cycles > 0 && t < cycle_secs * sc.cycles as f64 {
             let cycle = ((t / cycle_secs).floor() as usize).min(sc.cycles - 1);
-            let mut u = t - cycle as f64 * cycle_secs;
-            let (target, reach) = self.reach[cycle];
-            if u < sc.reach_secs {
-                let s = smoothstep(u / sc.reach_secs.max(1e-9));
-                return (
-                    Phase::Reach { cycle },
-                    self.rest.lerp(&reach, s),
-                    Some(target),
-                );
-            }
-            u -= sc.reach_secs;
-            if u < sc.hold_secs {
-                return (Phase::Hold { cycle }, reach, Some(target));
-            }
-            u -= sc.hold_secs;
-            if u < sc.return_secs {
-                let s = smoothstep(u / sc.return_secs.max(1e-9));
-                return (
-                    Phase::Return { cycle },
-                    reach.lerp(&self.rest, s),
-                    Some(target),
-                );
-            }
-            return (Phase::Rest { cycle }, self.rest, Some(target));
+            let u = t - cycle as f64 * cycle_secs;
+            return self.handover_at(cycle, u);
         }
         t -= cycle_secs * sc.cycles as f64;
+        self.walk_out_at(t)
+    }
+
+    fn walk_out_at(&self, t: f64) -> (Phase, Posture, Option<Point3<f64>>) {
+        let sc = &self.script;
         if t < sc.walk_out_secs {
             return (Phase::WalkOut, self.walk(t, false), None);
         }
         (Phase::Gone, self.walk(sc.walk_out_secs, false), None)
+    }
+
+    /// Handover cycle `cycle`, `u` seconds after its reach began.
+    fn handover_at(&self, cycle: usize, mut u: f64) -> (Phase, Posture, Option<Point3<f64>>) {
+        let sc = &self.script;
+        let (target, reach) = self.reach[cycle];
+        if u < sc.reach_secs {
+            let s = smoothstep(u / sc.reach_secs.max(1e-9));
+            return (
+                Phase::Reach { cycle },
+                self.rest.lerp(&reach, s),
+                Some(target),
+            );
+        }
+        u -= sc.reach_secs;
+        if u < sc.hold_secs {
+            return (Phase::Hold { cycle }, reach, Some(target));
+        }
+        u -= sc.hold_secs;
+        if u < sc.return_secs {
+            let s = smoothstep(u / sc.return_secs.max(1e-9));
+            return (
+                Phase::Return { cycle },
+                reach.lerp(&self.rest, s),
+                Some(target),
+            );
+        }
+        (Phase::Rest { cycle }, self.rest, Some(target))
+    }
+
+    /// With tasks: the posture `t` seconds after the idle phase, from the timeline.
+    fn timeline_at(&self, t: f64) -> (Phase, Posture, Option<Point3<f64>>) {
+        if t >= self.timeline_end_secs {
+            return self.walk_out_at(t - self.timeline_end_secs);
+        }
+        let i = self
+            .timeline
+            .partition_point(|(start, _)| *start <= t)
+            .saturating_sub(1);
+        let Some(&(start, segment)) = self.timeline.get(i) else {
+            return self.walk_out_at(t - self.timeline_end_secs);
+        };
+        let u = t - start;
+        match segment {
+            Segment::Handover(cycle) => self.handover_at(cycle, u),
+            Segment::FloorPick => match (&self.script.floor_pick, &self.pick) {
+                (Some(p), Some(pick)) => {
+                    let target = Some(p.target_m);
+                    let stage = |stage| Phase::FloorPick { stage };
+                    if u < p.reach_secs {
+                        let s = smoothstep(u / p.reach_secs.max(1e-9));
+                        (stage(PickStage::Reach), self.rest.lerp(pick, s), target)
+                    } else if u < p.reach_secs + p.hold_secs {
+                        (stage(PickStage::Hold), *pick, target)
+                    } else {
+                        let s =
+                            smoothstep((u - p.reach_secs - p.hold_secs) / p.return_secs.max(1e-9));
+                        (stage(PickStage::Return), pick.lerp(&self.rest, s), target)
+                    }
+                }
+                _ => (Phase::Idle, self.rest, None),
+            },
+            Segment::Task(index) => {
+                let Some((task, held)) = self.tasks.get(index) else {
+                    return (Phase::Idle, self.rest, None);
+                };
+                let phase = |stage| Phase::Task {
+                    index,
+                    kind: task.kind,
+                    stage,
+                };
+                if u < task.reach_secs {
+                    let s = smoothstep(u / task.reach_secs.max(1e-9));
+                    return (phase(TaskStage::Reach), self.rest.lerp(held, s), None);
+                }
+                let u = u - task.reach_secs;
+                if u < task.hold_secs {
+                    return (phase(TaskStage::Hold), *held, None);
+                }
+                let u = u - task.hold_secs;
+                if u < task.return_secs {
+                    let s = smoothstep(u / task.return_secs.max(1e-9));
+                    return (phase(TaskStage::Return), held.lerp(&self.rest, s), None);
+                }
+                (phase(TaskStage::Rest), self.rest, None)
+            }
+        }
     }
 
     /// Walking between the entry and the station; `t` from the start of the walk.
@@ -792,6 +958,36 @@ impl Simulation {
             dropped,
         }))
     }
+}
+
+/// The timeline of a session with tasks: for each slot `k` (after `k` handover cycles) the floor
+/// pick if it is there, then the tasks placed there, then handover cycle `k`. Empty without tasks.
+fn timeline(
+    script: &SessionScript,
+    tasks: &[(TaskOccurrence, Posture)],
+) -> (Vec<(f64, Segment)>, f64) {
+    if tasks.is_empty() {
+        return (Vec::new(), 0.0);
+    }
+    let mut out = Vec::new();
+    let mut t = 0.0;
+    for slot in 0..=script.cycles {
+        if let Some(p) = script.floor_pick.filter(|p| p.after_cycle == slot) {
+            out.push((t, Segment::FloorPick));
+            t += p.duration_secs();
+        }
+        for (i, (task, _)) in tasks.iter().enumerate() {
+            if task.after_cycle == slot {
+                out.push((t, Segment::Task(i)));
+                t += task.duration_secs();
+            }
+        }
+        if slot < script.cycles {
+            out.push((t, Segment::Handover(slot)));
+            t += script.cycle_secs();
+        }
+    }
+    (out, t)
 }
 
 impl Iterator for Simulation {

@@ -15,6 +15,7 @@ pub mod run;
 pub mod security;
 pub mod signals;
 pub mod sim;
+pub mod sim_warnings;
 pub mod trajectories;
 pub mod triangulate;
 

@@ -56,6 +56,10 @@ pub enum Experiment {
     Height,
     /// Per-frame RULA agreement (exact and Cohen's κ), noisy pipeline vs ground truth.
     RulaAgreement,
+    /// The operator's warnings on sessions of the station's tasks (`--tasks`): recall of the
+    /// postures that clearly deserve a warning, precision, false warnings per hour and the latency
+    /// from the posture to the warning, per body region, the controller's pipeline vs the truth.
+    Warnings,
     /// Each class's RULA-versus-stature curve at its handover point (the truth, averaged over the
     /// seeds of `--seeds`, default 1..4): writes `handover_rula.toml` into `--out-dir`, the data the
     /// height decision reads from the trajectories folder.
@@ -73,6 +77,7 @@ impl Experiment {
             Experiment::Adaptation => "adaptation",
             Experiment::Height => "height",
             Experiment::RulaAgreement => "rula_agreement",
+            Experiment::Warnings => "warnings",
             Experiment::HandoverRula => "handover_rula",
             Experiment::FitDetector => "detector_fit",
         }
@@ -118,6 +123,10 @@ pub struct Common {
     /// the window centred on it, at that latency); 0: the causal One-Euro filter instead.
     #[arg(long, global = true, value_name = "SECONDS")]
     pub fixed_lag_s: Option<f64>,
+    /// warnings: the task mix, a TOML file (`sim/tasks/default.toml` documents the format) or
+    /// `default` for the shipped one.
+    #[arg(long, global = true, default_value = ergocell_sim::tasks::DEFAULT_MIX_NAME)]
+    pub tasks: String,
     /// Print the numbers as one JSON object on stdout instead of a table.
     #[arg(long, global = true)]
     pub json: bool,
@@ -167,7 +176,7 @@ fn parse_seed_range(text: &str) -> Result<SeedRange, ergocell_sim::seeds::BadSee
     ergocell_sim::seeds::parse_seeds(text).map(SeedRange)
 }
 
-fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
+pub(super) fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
     if let Ok(count) = spec.parse::<usize>() {
         return ring_rig(count, &RingRigConfig::default())
             .map_err(|e| UsageError(e.to_string()).into());
@@ -188,7 +197,7 @@ fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
 
 /// The simulated detector: `--detector`'s fitted model, or `--noise-px`'s independent noise; the
 /// ear offset of `--ear-offset-m` either way.
-fn detector_noise(c: &Common) -> anyhow::Result<DetectorNoise> {
+pub(super) fn detector_noise(c: &Common) -> anyhow::Result<DetectorNoise> {
     let base = DetectorNoise {
         pixel_sigma_px: c.noise_px,
         ear_offset_m: c.ear_offset_m,
@@ -204,7 +213,7 @@ fn detector_noise(c: &Common) -> anyhow::Result<DetectorNoise> {
 }
 
 /// The simulated detector in words, for titles: `3 px` or the model file's name.
-fn detector_label(c: &Common) -> String {
+pub(super) fn detector_label(c: &Common) -> String {
     let detector = match &c.detector {
         Some(path) => format!(
             "detector {}",
@@ -439,7 +448,7 @@ fn parse_point(text: &str) -> Result<[f64; 3], String> {
     }
 }
 
-fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
+pub(super) fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     let (cell_text, cell_label) = ergocell::shipped::read_or_shipped(&common.cell)?;
     let cell = CellConfig::from_toml_str(&cell_text)
         .map_err(|e| UsageError(format!("{cell_label}: {e}")))?;
@@ -568,7 +577,7 @@ fn run_handover_rula(c: &Common) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn progress_bar(what: &str) -> ProgressBar {
+pub(super) fn progress_bar(what: &str) -> ProgressBar {
     let pb = ProgressBar::new(0);
     if let Ok(style) =
         ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} sessions {elapsed}")
@@ -587,10 +596,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         );
     }
     if let Some(w) = c.fixed_lag_s {
-        if !matches!(args.experiment, Experiment::RulaAgreement) {
-            return Err(
-                UsageError("--fixed-lag-s applies to rula-agreement only".to_owned()).into(),
-            );
+        if !matches!(
+            args.experiment,
+            Experiment::RulaAgreement | Experiment::Warnings
+        ) {
+            return Err(UsageError(
+                "--fixed-lag-s applies to rula-agreement and warnings only".to_owned(),
+            )
+            .into());
         }
         if w != 0.0 {
             ergocell_perception::fixed_lag::half_window_nanos(w)
@@ -602,6 +615,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     if matches!(args.experiment, Experiment::FitDetector) {
         return run_fit_detector(c);
+    }
+    if matches!(args.experiment, Experiment::Warnings) {
+        return super::sim_warnings::run(c);
     }
     if let Some(SeedRange(seeds)) = &c.seeds {
         return run_seeds(args, seeds);
@@ -682,6 +698,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             (serde_json::to_value(&r)?, plot_height(&r, &c.out_dir)?)
         }
         Experiment::RulaAgreement => one_rula_agreement(c, &setup, &handovers, &mut tick, &pb)?,
+        Experiment::Warnings => return super::sim_warnings::run(c),
     };
     let setup_json = serde_json::json!({
         "seed": c.seed,
@@ -761,7 +778,7 @@ fn one_rula_agreement(
 
 /// Adds `setup` to `doc`, writes `<file_stem>.json` into `--out-dir` and prints the JSON (`--json`)
 /// or the files written.
-fn write_result(
+pub(super) fn write_result(
     c: &Common,
     file_stem: &str,
     mut doc: serde_json::Value,
@@ -793,7 +810,7 @@ fn write_result(
 }
 
 /// `n` operators' statures, evenly from 1.55 to 1.95 m (table1 and rula-agreement).
-fn statures(n: usize) -> Vec<f64> {
+pub(super) fn statures(n: usize) -> Vec<f64> {
     (0..n)
         .map(|i| ((1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64) * 1e6).round() / 1e6)
         .collect()
@@ -815,7 +832,7 @@ fn spread_text(s: Option<&Spread>, scale: f64, digits: usize) -> String {
     )
 }
 
-fn print_goals(goals: &[Goal]) {
+pub(super) fn print_goals(goals: &[Goal]) {
     for g in goals {
         println!(
             "goal: {} — holds on {} of {} seeds",
@@ -869,6 +886,7 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
         Experiment::Adaptation => seeds_adaptation(c, seeds, &setup, &handovers, &pb)?,
         Experiment::Height => seeds_height(c, seeds, &setup, &handovers, &pb)?,
         Experiment::RulaAgreement => seeds_rula_agreement(c, seeds, &setup, &handovers, &pb)?,
+        Experiment::Warnings => return super::sim_warnings::run(c),
     };
     let setup_json = serde_json::json!({
         "seeds": seeds,
@@ -1438,7 +1456,7 @@ fn print_agreement(r: &RulaAgreement) {
 // --------------------------------------------------------------------------------------------
 // Figures (SVG, plotters without system fonts)
 
-const COLORS: [RGBColor; 6] = [
+pub(super) const COLORS: [RGBColor; 6] = [
     RGBColor(120, 144, 156),
     RGBColor(158, 158, 158),
     RGBColor(189, 189, 189),
@@ -1539,7 +1557,7 @@ fn plot_table1(r: &Table1, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn line_chart(
+pub(super) fn line_chart(
     path: &Path,
     title: &str,
     x_desc: &str,

@@ -1,0 +1,187 @@
+//! `ergocell sim warnings`: the operator's warnings on sessions of the station's tasks, measured by
+//! `ergocell_sim::warning_trust` (the numbers and the goals are computed there; this reads the task
+//! mix, prints the table and writes `warnings[_seeds].json` and the latency figure).
+
+use std::path::PathBuf;
+
+use anyhow::Context;
+use ergocell_cell::PipelineConfig;
+use ergocell_ergonomics::UpVector;
+use ergocell_sim::experiments::Setup;
+use ergocell_sim::tasks::{TaskMix, DEFAULT_MIX_NAME};
+use ergocell_sim::warning_trust::{self, RegionWarnings, WarningTrustSeeds};
+use indicatif::{ProgressBar, ProgressStyle};
+use nalgebra::Vector3;
+use plotters::style::RED;
+
+use super::sim::{
+    detector_label, detector_noise, line_chart, load_handovers, load_rig, print_goals, statures,
+    write_result, Common, SeedRange, COLORS,
+};
+use super::UsageError;
+
+/// The task mix of `--tasks`: the shipped one by name, or a file.
+pub fn load_mix(spec: &str) -> anyhow::Result<TaskMix> {
+    if spec == DEFAULT_MIX_NAME {
+        return Ok(TaskMix::default_mix()?);
+    }
+    let path = PathBuf::from(spec);
+    let text = ergocell::input::read_text(&path, ergocell::input::Kind::Config)?;
+    TaskMix::from_toml_str(&text).map_err(|e| UsageError(format!("{}: {e}", path.display())).into())
+}
+
+fn pct(x: f64) -> String {
+    if x.is_nan() {
+        "    —".to_owned()
+    } else {
+        format!("{:5.1}", 100.0 * x)
+    }
+}
+
+fn print_row(r: &RegionWarnings) {
+    println!(
+        "  {:<10} {:>6} {:>6} {:>6} {} {:>6} {:>6} {}",
+        r.region,
+        r.truth_raised,
+        r.clear,
+        r.clear_caught,
+        pct(r.recall),
+        r.raised,
+        r.confirmed,
+        pct(r.precision)
+    );
+}
+
+pub fn run(c: &Common) -> anyhow::Result<()> {
+    let mix = load_mix(&c.tasks)?;
+    let rig = load_rig(&c.cameras)?;
+    let noise = detector_noise(c)?;
+    noise.validate().map_err(|e| UsageError(e.to_string()))?;
+    let handovers = load_handovers(c)?;
+    let mut config = PipelineConfig::new(UpVector::new(Vector3::z())?);
+    match c.fixed_lag_s {
+        Some(0.0) => config.fixed_lag_s = None,
+        Some(w) => config.fixed_lag_s = Some(w),
+        None => {}
+    }
+    let (seeds, file_stem) = match &c.seeds {
+        Some(SeedRange(s)) => (s.clone(), "warnings_seeds"),
+        None => (vec![c.seed], "warnings"),
+    };
+    let operators = statures(c.operators.unwrap_or(20));
+    std::fs::create_dir_all(&c.out_dir)
+        .with_context(|| format!("creating {}", c.out_dir.display()))?;
+    let pb = ProgressBar::new(seeds.len() as u64);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} seeds {elapsed}")
+    {
+        pb.set_style(style);
+    }
+    pb.set_message("warnings");
+    let mut runs = Vec::with_capacity(seeds.len());
+    for &seed in &seeds {
+        let setup = Setup {
+            rig: rig.clone(),
+            noise,
+            seed,
+        };
+        runs.push(warning_trust::warning_trust(
+            &setup,
+            &handovers,
+            &operators,
+            &mix,
+            &config,
+            &mut |_, _| {},
+        )?);
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
+    let sum = warning_trust::over_seeds(&seeds, runs);
+    if !c.json {
+        print_summary(c, &sum, &mix);
+    }
+    let figure = plot_latency(c, &sum, &c.out_dir.join(format!("{file_stem}_latency.svg")))?;
+    let setup_json = serde_json::json!({
+        "seeds": seeds,
+        "cameras": c.cameras,
+        "camera_count": rig.len(),
+        "noise": noise,
+        "tasks": c.tasks,
+        "mix": mix,
+        "handovers_m": handovers,
+        "operators_m": operators,
+    });
+    write_result(
+        c,
+        file_stem,
+        serde_json::to_value(&sum)?,
+        setup_json,
+        &[figure],
+    )
+}
+
+fn print_summary(c: &Common, sum: &WarningTrustSeeds, mix: &TaskMix) {
+    println!(
+        "Warnings over seeds {:?} with {}; tasks {} ({} handovers, {} tasks a session); {:.2} h of sessions",
+        sum.seeds,
+        detector_label(c),
+        warning_trust::task_names(mix).join(", "),
+        mix.handovers,
+        mix.occurrences(),
+        sum.hours
+    );
+    println!(
+        "  {:<10} {:>6} {:>6} {:>6} {:>5} {:>6} {:>6} {:>5}",
+        "region", "truth", "clear", "caught", "rec.%", "raised", "conf.", "prec.%"
+    );
+    for r in &sum.regions {
+        print_row(r);
+    }
+    print_row(&sum.all);
+    println!(
+        "  false warnings: {} ({:.2} per hour); latency from the posture to the warning: p50 {:.2} s, p95 {:.2} s, max {:.2} s (goal p95 ≤ {:.2} s)",
+        sum.false_warnings,
+        sum.false_per_hour,
+        sum.latency_p50_s,
+        sum.latency_p95_s,
+        sum.latency_max_s,
+        sum.latency_bound_s
+    );
+    print_goals(&sum.goals);
+}
+
+/// The latency's cumulative distribution, pooled over the seeds, against the goal.
+fn plot_latency(
+    c: &Common,
+    sum: &WarningTrustSeeds,
+    path: &std::path::Path,
+) -> anyhow::Result<PathBuf> {
+    let mut sorted = sum.all.latencies_s.clone();
+    sorted.sort_by(f64::total_cmp);
+    let x: Vec<f64> = (0..=60).map(|k| f64::from(k) * 0.1).collect();
+    let n = sorted.len().max(1) as f64;
+    let share: Vec<f64> = x
+        .iter()
+        .map(|t| sorted.partition_point(|v| v <= t) as f64 / n)
+        .collect();
+    let bound: Vec<f64> = x
+        .iter()
+        .map(|t| if *t >= sum.latency_bound_s { 1.0 } else { 0.0 })
+        .collect();
+    line_chart(
+        path,
+        &format!(
+            "Posture to warning, share of clear postures warned by then ({})",
+            detector_label(c)
+        ),
+        "seconds after the posture crossed the band edge",
+        "share warned",
+        &x,
+        &[
+            ("warned", &share, COLORS[4], false),
+            ("95 %", &vec![0.95; x.len()], COLORS[0], true),
+            ("dwell + lag + 0.5 s", &bound, RED, true),
+        ],
+        (0.0, 1.0),
+    )?;
+    Ok(path.to_path_buf())
+}
