@@ -6,6 +6,12 @@
 //! name, and reads at most one byte past the limit, so a wrong path costs an error, never the
 //! machine's memory. Text must be UTF-8. A missing or unreadable file is bad input (exit code 2 in
 //! the binary), as a malformed one is.
+//!
+//! Every input is opened by [`open`], never by `File::open`: a named pipe (FIFO) blocks in `open`
+//! until a writer appears, so a command given one would hang there, deaf to Ctrl-C and SIGTERM. It
+//! is opened non-blocking, its kind checked on the open file (`fstat`, so a path swapped between the
+//! look and the open is caught), and then read as usual: a pipe that somebody writes into is read,
+//! one that nobody writes into reads as empty at once.
 
 use std::fs;
 use std::io::Read as _;
@@ -78,16 +84,10 @@ impl InputError {
     }
 }
 
-/// Reads `path` whole as `kind` (see the module docs).
-pub fn read(path: &Path, kind: Kind) -> Result<Vec<u8>, InputError> {
+/// What a file of this type is, if it is not a file ergocell reads.
+fn not_a_file(file_type: fs::FileType) -> Option<&'static str> {
     use std::os::unix::fs::FileTypeExt as _;
-    let io = |error| InputError::Io {
-        path: path.to_owned(),
-        error,
-    };
-    let meta = fs::metadata(path).map_err(io)?;
-    let file_type = meta.file_type();
-    let what = if file_type.is_dir() {
+    if file_type.is_dir() {
         Some("a folder")
     } else if file_type.is_char_device() || file_type.is_block_device() {
         Some("a device")
@@ -95,13 +95,48 @@ pub fn read(path: &Path, kind: Kind) -> Result<Vec<u8>, InputError> {
         Some("a socket")
     } else {
         None
-    };
-    if let Some(what) = what {
-        return Err(InputError::NotAFile {
-            path: path.to_owned(),
-            what,
-        });
     }
+}
+
+/// Opens `path` for reading without ever blocking in `open` (see the module docs): folders,
+/// devices and sockets refused by name, before the open (a device is never opened) and again on the
+/// open file. Returns the file, in blocking mode, and its metadata.
+pub fn open(path: &Path) -> Result<(fs::File, fs::Metadata), InputError> {
+    use std::os::unix::fs::OpenOptionsExt as _;
+    let io = |error| InputError::Io {
+        path: path.to_owned(),
+        error,
+    };
+    let refuse = |what| InputError::NotAFile {
+        path: path.to_owned(),
+        what,
+    };
+    if let Some(what) = not_a_file(fs::metadata(path).map_err(io)?.file_type()) {
+        return Err(refuse(what));
+    }
+    let nonblock = rustix::fs::OFlags::NONBLOCK;
+    let file = fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(i32::try_from(nonblock.bits()).unwrap_or(0))
+        .open(path)
+        .map_err(io)?;
+    let meta = file.metadata().map_err(io)?;
+    if let Some(what) = not_a_file(meta.file_type()) {
+        return Err(refuse(what));
+    }
+    // Blocking again: a pipe with a writer is read as it comes; with none, read() says end of file.
+    let flags = rustix::fs::fcntl_getfl(&file).map_err(|e| io(e.into()))?;
+    rustix::fs::fcntl_setfl(&file, flags.difference(nonblock)).map_err(|e| io(e.into()))?;
+    Ok((file, meta))
+}
+
+/// Reads `path` whole as `kind` (see the module docs).
+pub fn read(path: &Path, kind: Kind) -> Result<Vec<u8>, InputError> {
+    let io = |error| InputError::Io {
+        path: path.to_owned(),
+        error,
+    };
+    let (file, meta) = open(path)?;
     let limit = kind.limit_bytes();
     let too_large = || InputError::TooLarge {
         path: path.to_owned(),
@@ -111,7 +146,6 @@ pub fn read(path: &Path, kind: Kind) -> Result<Vec<u8>, InputError> {
     if meta.len() > limit {
         return Err(too_large());
     }
-    let file = fs::File::open(path).map_err(io)?;
     let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
     // A pipe has no length: the limit holds while reading.
     file.take(limit + 1).read_to_end(&mut bytes).map_err(io)?;
@@ -162,11 +196,10 @@ mod tests {
     }
 
     #[test]
-    fn a_pipe_that_never_ends_stops_at_the_limit() {
-        // /dev/zero through a FIFO: no length to check up front.
-        let dir = std::env::temp_dir().join(format!("ergocell-input-fifo-{}", std::process::id()));
+    fn a_pipe_nobody_writes_into_reads_as_empty_at_once() {
+        let dir = std::env::temp_dir().join(format!("ergocell-input-fifo0-{}", std::process::id()));
         fs::create_dir_all(&dir).unwrap();
-        let fifo = dir.join("zero");
+        let fifo = dir.join("silent");
         let made = std::process::Command::new("mkfifo")
             .arg(&fifo)
             .status()
@@ -175,20 +208,35 @@ mod tests {
             eprintln!("skipped: mkfifo is not available");
             return;
         }
-        let writer = std::thread::spawn({
-            let fifo = fifo.clone();
-            move || {
-                use std::io::Write as _;
-                let Ok(mut f) = fs::OpenOptions::new().write(true).open(&fifo) else {
-                    return;
-                };
-                let block = vec![0_u8; 1 << 20];
-                while f.write_all(&block).is_ok() {}
-            }
+        // Before, open() blocked here until a writer came: forever.
+        let (done, got) = std::sync::mpsc::channel();
+        let path = fifo.clone();
+        std::thread::spawn(move || {
+            let _ = done.send(read_text(&path, Kind::Config).map_err(|e| e.to_string()));
         });
-        let e = read(&fifo, Kind::Config).unwrap_err();
-        assert!(e.to_string().contains("larger than 64 MiB"), "{e}");
-        writer.join().unwrap();
+        let text = got
+            .recv_timeout(std::time::Duration::from_secs(20))
+            .expect("reading a FIFO with no writer must not block");
+        assert_eq!(text, Ok(String::new()));
         fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_pipe_that_never_ends_stops_at_the_limit() {
+        // /dev/zero through a pipe, named as a shell's process substitution names one
+        // (`<(cat /dev/zero)`: /dev/fd/N, a pipe whose writer is already there): no length to
+        // check up front.
+        use std::os::fd::AsRawFd as _;
+        let (reader, mut writer) = std::io::pipe().unwrap();
+        let path = PathBuf::from(format!("/proc/self/fd/{}", reader.as_raw_fd()));
+        let writing = std::thread::spawn(move || {
+            use std::io::Write as _;
+            let block = vec![0_u8; 1 << 20];
+            while writer.write_all(&block).is_ok() {}
+        });
+        let e = read(&path, Kind::Config).unwrap_err();
+        assert!(e.to_string().contains("larger than 64 MiB"), "{e}");
+        drop(reader);
+        writing.join().unwrap();
     }
 }

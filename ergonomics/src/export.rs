@@ -62,6 +62,39 @@ pub fn frame_header() -> Vec<String> {
     h
 }
 
+/// A text cell as a spreadsheet reads it safely (OWASP, "CSV Injection"): a cell that begins with
+/// `=`, `+`, `-`, `@`, a tab or a carriage return is a formula to Excel, LibreOffice and Google
+/// Sheets, so it is prefixed with `'`, unless it is a number (`-3.5` stays a number). Every text
+/// cell ergocell writes into a CSV goes through it: names and kinds read from a recording are
+/// whatever the recording says.
+pub fn csv_text(s: &str) -> std::borrow::Cow<'_, str> {
+    let risky = s
+        .chars()
+        .next()
+        .is_some_and(|c| matches!(c, '=' | '+' | '-' | '@' | '\t' | '\r'));
+    // A lone "-" (ergocell's "not known") is no formula.
+    if risky && s != "-" && s.parse::<f64>().is_err() {
+        std::borrow::Cow::Owned(format!("'{s}"))
+    } else {
+        std::borrow::Cow::Borrowed(s)
+    }
+}
+
+/// A CSV cell through [`csv_text`], as the `csv` writer takes it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CsvCell<'a>(pub std::borrow::Cow<'a, str>);
+
+impl AsRef<[u8]> for CsvCell<'_> {
+    fn as_ref(&self) -> &[u8] {
+        self.0.as_bytes()
+    }
+}
+
+/// [`csv_text`] as a cell for `csv::Writer::write_record`.
+pub fn csv_cell<S: AsRef<str> + ?Sized>(s: &S) -> CsvCell<'_> {
+    CsvCell(csv_text(s.as_ref()))
+}
+
 fn csv_error(e: &csv::Error) -> ErgonomicsError {
     ErgonomicsError::Export {
         reason: e.to_string(),
@@ -79,7 +112,7 @@ impl<W: Write> FrameCsv<W> {
     pub fn new(out: W) -> Result<Self, ErgonomicsError> {
         let mut writer = csv::Writer::from_writer(out);
         writer
-            .write_record(frame_header())
+            .write_record(frame_header().iter().map(csv_cell))
             .map_err(|e| csv_error(&e))?;
         Ok(Self {
             writer,
@@ -115,7 +148,9 @@ impl<W: Write> FrameCsv<W> {
                 .collect::<Vec<_>>()
                 .join("; "),
         );
-        self.writer.write_record(&row).map_err(|e| csv_error(&e))
+        self.writer
+            .write_record(row.iter().map(csv_cell))
+            .map_err(|e| csv_error(&e))
     }
 
     /// Flushes and hands the output back.
@@ -221,7 +256,7 @@ impl<W: Write> SummaryRows<W> {
         unit: &str,
     ) -> Result<(), ErgonomicsError> {
         self.w
-            .write_record([quantity, side, region, score, value, unit, &self.phase])
+            .write_record([quantity, side, region, score, value, unit, &self.phase].map(csv_cell))
             .map_err(|e| csv_error(&e))
     }
 
@@ -470,4 +505,23 @@ pub fn write_summary<W: Write>(
     r.w.into_inner().map_err(|e| ErgonomicsError::Export {
         reason: e.to_string(),
     })
+}
+
+#[cfg(test)]
+mod csv_text_tests {
+    use super::*;
+
+    #[test]
+    fn formula_cells_are_neutralised_and_numbers_kept() {
+        assert_eq!(csv_text("=cmd|' /C calc'!A0"), "'=cmd|' /C calc'!A0");
+        assert_eq!(csv_text("@SUM(A1)"), "'@SUM(A1)");
+        assert_eq!(csv_text("+1+2"), "'+1+2");
+        assert_eq!(csv_text("-A1"), "'-A1");
+        assert_eq!(csv_text("\t=1"), "'\t=1");
+        assert_eq!(csv_text("-3.25"), "-3.25");
+        assert_eq!(csv_text("-"), "-");
+        assert_eq!(csv_text("neck"), "neck");
+        assert_eq!(csv_text(""), "");
+        assert_eq!(csv_cell("=1").as_ref(), b"'=1");
+    }
 }

@@ -19,6 +19,7 @@ use std::io::Write;
 
 use ergocell_bridge::msg::{RebaSide, RulaSide};
 use ergocell_ergonomics::assess::BodyRegion;
+use ergocell_ergonomics::export::csv_cell;
 
 use crate::analysis::SessionReview;
 use crate::read::Recording;
@@ -133,7 +134,8 @@ pub fn write_frames<W: Write>(
     }
     header.extend(angle_names.iter().map(|n| format!("{n}_deg")));
     header.push("warnings".to_owned());
-    w.write_record(&header).map_err(|e| csv_error(&e))?;
+    w.write_record(header.iter().map(csv_cell))
+        .map_err(|e| csv_error(&e))?;
 
     // The warning events by the frame they were raised on.
     let mut events: BTreeMap<u64, Vec<String>> = BTreeMap::new();
@@ -206,7 +208,8 @@ pub fn write_frames<W: Write>(
             }));
         }
         row.push(events.get(&t).map_or(String::new(), |e| e.join("; ")));
-        w.write_record(&row).map_err(|e| csv_error(&e))?;
+        w.write_record(row.iter().map(csv_cell))
+            .map_err(|e| csv_error(&e))?;
     }
     w.into_inner().map_err(|e| ReviewError::Export {
         reason: e.to_string(),

@@ -3,9 +3,11 @@
 //! ([`ergocell_review::store`]). Each recording is streamed from its file, one at a
 //! time, so a month of shifts needs no more memory than one.
 
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
+use ergocell_ergonomics::export::csv_text;
 use ergocell_review::exposure::{stream_sessions, ExposureTable, SegmentRow};
 
 use super::{output, UsageError};
@@ -78,11 +80,11 @@ fn csv_bytes<T: serde::Serialize>(rows: impl IntoIterator<Item = T>) -> anyhow::
 /// One `exposure.csv` row (shares of scored time, hours).
 #[derive(serde::Serialize)]
 struct GroupCsv<'a> {
-    operator: &'a str,
-    period: &'a str,
-    period_start: &'a str,
-    class: &'a str,
-    segment: &'a str,
+    operator: Cow<'a, str>,
+    period: Cow<'a, str>,
+    period_start: Cow<'a, str>,
+    class: Cow<'a, str>,
+    segment: Cow<'a, str>,
     sessions: u32,
     hours: f64,
     rula_scored_hours: f64,
@@ -103,14 +105,14 @@ struct GroupCsv<'a> {
 /// One `sessions.csv` row (seconds).
 #[derive(serde::Serialize)]
 struct SessionCsv<'a> {
-    operator: &'a str,
-    file: &'a str,
+    operator: Cow<'a, str>,
+    file: Cow<'a, str>,
     session: u32,
     start_unix_s: f64,
-    day: &'a str,
-    week: &'a str,
-    class: &'a str,
-    segment: &'a str,
+    day: Cow<'a, str>,
+    week: Cow<'a, str>,
+    class: Cow<'a, str>,
+    segment: Cow<'a, str>,
     duration_s: f64,
     rula_scored_s: f64,
     rula_al1_s: f64,
@@ -133,14 +135,14 @@ struct SessionCsv<'a> {
 impl<'a> From<&'a SegmentRow> for SessionCsv<'a> {
     fn from(r: &'a SegmentRow) -> Self {
         Self {
-            operator: r.operator.as_deref().unwrap_or("-"),
-            file: &r.file,
+            operator: csv_text(r.operator.as_deref().unwrap_or("-")),
+            file: csv_text(&r.file),
             session: r.session,
             start_unix_s: r.start_unix_nanos as f64 * 1e-9,
-            day: &r.day,
-            week: &r.week,
-            class: r.class.as_deref().unwrap_or("-"),
-            segment: &r.segment,
+            day: csv_text(&r.day),
+            week: csv_text(&r.week),
+            class: csv_text(r.class.as_deref().unwrap_or("-")),
+            segment: csv_text(&r.segment),
             duration_s: r.duration_s,
             rula_scored_s: r.rula_scored_s,
             rula_al1_s: r.rula_al_s[0],
@@ -198,8 +200,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let (mut read, mut sessions, mut failed) = (0usize, 0u32, 0usize);
     for path in &files {
         let label = path.display().to_string();
-        let file = match std::fs::File::open(path) {
-            Ok(f) => f,
+        let file = match ergocell::input::open(path) {
+            Ok((f, _)) => f,
             Err(e) => {
                 eprintln!("  {label}: left out: {e}");
                 failed += 1;
@@ -255,11 +257,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
     let groups = csv_bytes(table.groups.iter().map(|(k, g)| GroupCsv {
-        operator: &k.operator,
-        period: k.period,
-        period_start: &k.period_start,
-        class: &k.class,
-        segment: &k.segment,
+        operator: csv_text(&k.operator),
+        period: csv_text(k.period),
+        period_start: csv_text(&k.period_start),
+        class: csv_text(&k.class),
+        segment: csv_text(&k.segment),
         sessions: g.sessions,
         hours: g.duration_s / 3600.0,
         rula_scored_hours: g.rula_scored_s / 3600.0,

@@ -110,13 +110,14 @@ fn parse_session(s: &str) -> Result<(PathBuf, f64), String> {
 fn calibrate(args: &CalibrateArgs) -> anyhow::Result<()> {
     use anyhow::Context as _;
     use ergocell_ergonomics::height::{calibrate_ear_offset, CalibrationSample, EarOffset};
-    let text = std::fs::read_to_string(&args.config).with_context(|| {
-        format!(
+    let text = ergocell::input::read_text(&args.config, ergocell::input::Kind::Config)
+        .with_context(|| {
+            format!(
             "cannot read {} (the calibration is written into the cell's own configuration: pass \
              --config with an existing file)",
             args.config.display()
         )
-    })?;
+        })?;
     let label = args.config.display().to_string();
     let settings = ergocell_cell::CellSettings::from_toml_str(&text, &label)
         .map_err(|e| UsageError(e.to_string()))?;

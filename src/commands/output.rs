@@ -2,6 +2,10 @@
 //! unless asked (`--force`), and an output that is one of the command's inputs is refused, `--force`
 //! or not. Both checks run before the command does any work; the file itself is then created with
 //! [`create`], which without `--force` refuses a file that appeared in the meantime.
+//!
+//! Only a regular file or a path that does not exist yet is an output: a device (`/dev/full`,
+//! `/dev/sda`), a named pipe or a socket is refused, `--force` or not. A forced write replaces the
+//! path by a new file, so as root it would have replaced the device node itself.
 
 use std::fs::File;
 use std::io::Write as _;
@@ -24,6 +28,7 @@ pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> a
             .into());
         }
     }
+    not_a_regular_file(flag, out)?;
     match std::fs::metadata(out) {
         Ok(m) if m.is_dir() => Err(UsageError(format!(
             "{flag} {} is a folder, not a file",
@@ -37,6 +42,30 @@ pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> a
         .into()),
         _ => Ok(()),
     }
+}
+
+/// Refuses an existing output that is not a regular file (or a folder, which [`check`] names):
+/// a device, a named pipe, a socket — through a symlink too.
+fn not_a_regular_file(flag: &str, out: &Path) -> anyhow::Result<()> {
+    use std::os::unix::fs::FileTypeExt as _;
+    let Ok(meta) = std::fs::metadata(out) else {
+        return Ok(());
+    };
+    let t = meta.file_type();
+    let what = if t.is_char_device() || t.is_block_device() {
+        "a device"
+    } else if t.is_fifo() {
+        "a named pipe"
+    } else if t.is_socket() {
+        "a socket"
+    } else {
+        return Ok(());
+    };
+    Err(UsageError(format!(
+        "{flag} {} is {what}, not a file: only a regular file or a new path is an output, --force or not",
+        out.display()
+    ))
+    .into())
 }
 
 /// True if `a` and `b` name the same file, existing or not: the same existing file
@@ -81,14 +110,19 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 /// Creates the output file: truncates an existing one only with `force`, and otherwise refuses a
 /// file that exists now (created since [`check`]).
 pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
+    use std::os::unix::fs::OpenOptionsExt as _;
+    not_a_regular_file(flag, out)?;
     let mut options = std::fs::OpenOptions::new();
-    options.write(true);
+    // Non-blocking: a named pipe put there since the check is not waited on (and refused below).
+    options
+        .write(true)
+        .custom_flags(i32::try_from(rustix::fs::OFlags::NONBLOCK.bits()).unwrap_or(0));
     if force {
         options.create(true).truncate(true);
     } else {
         options.create_new(true);
     }
-    options.open(out).map_err(|e| {
+    let file = options.open(out).map_err(|e| {
         if e.kind() == std::io::ErrorKind::AlreadyExists {
             UsageError(format!(
                 "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
@@ -98,7 +132,24 @@ pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
         } else {
             anyhow::Error::new(e).context(format!("cannot create {}", out.display()))
         }
-    })
+    })?;
+    let meta = file
+        .metadata()
+        .with_context(|| format!("cannot create {}", out.display()))?;
+    if !meta.is_file() {
+        return Err(UsageError(format!(
+            "{flag} {} is not a regular file: only a regular file or a new path is an output",
+            out.display()
+        ))
+        .into());
+    }
+    let flags = rustix::fs::fcntl_getfl(&file)
+        .map_err(std::io::Error::from)
+        .with_context(|| format!("cannot create {}", out.display()))?;
+    rustix::fs::fcntl_setfl(&file, flags.difference(rustix::fs::OFlags::NONBLOCK))
+        .map_err(std::io::Error::from)
+        .with_context(|| format!("cannot create {}", out.display()))?;
+    Ok(file)
 }
 
 /// An output written piece by piece into a temporary file beside it (`.<name>.partial-<pid>`),
@@ -118,6 +169,7 @@ impl Partial {
     /// Creates the temporary file (and checks, as [`create`] does, that without `force` the output
     /// does not exist yet).
     pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<Self> {
+        not_a_regular_file(flag, out)?;
         if !force && std::fs::symlink_metadata(out).is_ok() {
             return Err(UsageError(format!(
                 "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
@@ -165,6 +217,11 @@ impl Partial {
             .with_context(|| format!("cannot write {}", self.temp.display()))?;
         drop(file);
         if self.force {
+            // A device or pipe put at the output meantime is not replaced by the rename.
+            if let Err(e) = not_a_regular_file(&self.flag, &self.out) {
+                let _ = std::fs::remove_file(&self.temp);
+                return Err(e);
+            }
             std::fs::rename(&self.temp, &self.out)
                 .with_context(|| format!("cannot move the output to {}", self.out.display()))?;
         } else {
@@ -295,6 +352,39 @@ pub fn next_free(default_name: &Path) -> anyhow::Result<std::path::PathBuf> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A device or a named pipe is never an output, `--force` or not, and is left as it was.
+    #[test]
+    fn a_device_or_a_pipe_is_not_an_output() {
+        for force in [false, true] {
+            assert!(check("--out", Path::new("/dev/null"), force, &[]).is_err());
+            assert!(Partial::create("--out", Path::new("/dev/null"), force).is_err());
+            assert!(create("--out", Path::new("/dev/null"), force).is_err());
+            assert!(write("--out", Path::new("/dev/full"), force, b"x").is_err());
+        }
+        assert!(std::fs::metadata("/dev/null").is_ok_and(|m| !m.is_file()));
+        let dir = std::env::temp_dir().join(format!("ergocell-out-fifo-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let fifo = dir.join("pipe");
+        if std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .is_ok_and(|s| s.success())
+        {
+            // create() used to block here waiting for a reader; write() used to replace the pipe.
+            assert!(create("--out", &fifo, true).is_err());
+            assert!(write("--out", &fifo, true, b"x").is_err());
+            let kind = std::fs::metadata(&fifo).unwrap().file_type();
+            assert!(std::os::unix::fs::FileTypeExt::is_fifo(&kind));
+        }
+        // A regular file and a new path still are.
+        let file = dir.join("r.html");
+        write("--out", &file, false, b"a").unwrap();
+        write("--out", &file, true, b"b").unwrap();
+        assert_eq!(std::fs::read(&file).unwrap(), b"b");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 
     /// Two commands that both looked and found the default free still get two files: the second
     /// creation moves on to the next name.

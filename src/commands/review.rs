@@ -269,8 +269,7 @@ fn load_overview(
         return Ok(None);
     }
     let open = || -> anyhow::Result<std::io::BufReader<std::fs::File>> {
-        let file = std::fs::File::open(path)
-            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
+        let (file, _) = ergocell::input::open(path).map_err(|e| UsageError(e.to_string()))?;
         Ok(std::io::BufReader::with_capacity(1 << 20, file))
     };
     let plan = ergocell_review::overview::plan(open()?, session, budget, windows)

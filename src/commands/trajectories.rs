@@ -674,7 +674,8 @@ fn verify(
     for class in classes(class) {
         let (spec, current) = ctx.spec(class)?;
         let lock_path = ctx.layout.lock(class);
-        let Ok(lock_text) = fs::read_to_string(&lock_path) else {
+        let Ok(lock_text) = ergocell::input::read_text(&lock_path, ergocell::input::Kind::Config)
+        else {
             println!(
                 "{class}: FAIL\n  - no lock file {} (run `ergocell trajectories lock --class {class}`)",
                 lock_path.display()
@@ -683,7 +684,8 @@ fn verify(
             continue;
         };
         let approvals_path = ctx.layout.approvals(class);
-        let approvals_text = fs::read_to_string(&approvals_path).ok();
+        let approvals_text =
+            ergocell::input::read_text(&approvals_path, ergocell::input::Kind::Config).ok();
         let seen = ergocell::witness::observe_text(
             &approvals_path,
             class,

@@ -530,8 +530,8 @@ impl<'r> FrameSource<'r> {
     fn caliscope(path: &Path, rig: &'r CameraRig) -> anyhow::Result<Self> {
         let name = path.display().to_string();
         let open = || {
-            std::fs::File::open(path)
-                .map(std::io::BufReader::new)
+            ergocell::input::open(path)
+                .map(|(f, _)| std::io::BufReader::new(f))
                 .with_context(|| format!("reading {name}"))
         };
         let scan = scan_caliscope_xy(open()?, &name).map_err(|e| UsageError(e.to_string()))?;

@@ -95,8 +95,8 @@ impl FileTrajectories {
                     ))
                 });
         }
-        std::fs::read_to_string(path)
-            .map_err(|e| ProviderError(format!("cannot read {}: {e}", path.display())))
+        crate::input::read_text(path, crate::input::Kind::Config)
+            .map_err(|e| ProviderError(e.to_string()))
     }
 
     /// A file of the cell (the cell file or its URDF).
@@ -427,7 +427,7 @@ impl TrajectoryProvider for FileTrajectories {
         } = self.current(class)?;
         let lock_text = self.lock_text(class)?;
         let approvals_path = self.layout.approvals(class);
-        let approvals = std::fs::read_to_string(&approvals_path).ok();
+        let approvals = crate::input::read_text(&approvals_path, crate::input::Kind::Config).ok();
         // The demo's approvals are its own, written afresh each run: no witness of them.
         let seen = match self.demo {
             None => witness_check(&approvals_path, class, approvals.as_deref(), &trusted),
