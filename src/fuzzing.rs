@@ -243,7 +243,9 @@ pub fn approvals_toml(data: &[u8]) {
                 .iter()
                 .chain(standing.withdrawn.iter())
                 .all(|&i| i < file.approval.len()));
-            let witness = ergocell_robot::witness::Witness::parse(text);
+            let Ok(witness) = ergocell_robot::witness::Witness::parse(text.as_bytes()) else {
+                continue;
+            };
             if witness.check("a", class, &file).is_ok() {
                 let _ = witness.sighting_line("a", class, &file, &nobody, "2026-12-05T00:00:00Z");
             }

@@ -78,35 +78,49 @@ pub enum AnchorError {
     Bad { path: PathBuf, why: String },
 }
 
-/// Checks that `path` (a file) and every folder above it are root's alone (see the module docs).
-pub fn check_root_owned(path: &Path) -> Result<(), AnchorError> {
+/// Reads `path` (a file) after checking that it and every folder above it are root's alone (see
+/// the module docs), **on the file it reads**: the file is opened once, its owner and mode taken
+/// from the open descriptor (`fstat`), the folders above it from the path the descriptor was opened
+/// at (`/proc/self/fd`), and the text read from the same descriptor. Checking one path and reading
+/// it again let a symlink flipping between root's key and another account's pass the check with
+/// root's and be read as the other (an unprivileged account's self-made authority was accepted on
+/// the second try).
+pub fn read_root_owned(path: &Path) -> Result<String, AnchorError> {
+    use std::os::fd::AsRawFd as _;
     use std::os::unix::fs::MetadataExt as _;
-    let real = fs::canonicalize(path).map_err(|source| {
-        if source.kind() == std::io::ErrorKind::NotFound {
-            AnchorError::Missing(path.to_owned())
-        } else {
-            AnchorError::Read {
-                path: path.to_owned(),
-                source,
-            }
-        }
-    })?;
+    let read_err = |p: &Path, source: std::io::Error| AnchorError::Read {
+        path: p.to_owned(),
+        source,
+    };
     let unsafe_ = |p: &Path, why: String| AnchorError::Unsafe {
         path: p.to_owned(),
         why,
     };
-    let meta = |p: &Path| {
-        fs::metadata(p).map_err(|source| AnchorError::Read {
-            path: p.to_owned(),
-            source,
-        })
-    };
-    let file = meta(&real)?;
-    if !file.is_file() {
+    let (file, file_meta) = crate::input::open(path).map_err(|e| match e {
+        crate::input::InputError::Io { error, .. }
+            if error.kind() == std::io::ErrorKind::NotFound =>
+        {
+            AnchorError::Missing(path.to_owned())
+        }
+        crate::input::InputError::NotAFile { what, .. } => {
+            unsafe_(path, format!("is {what}, not a regular file"))
+        }
+        other => AnchorError::Bad {
+            path: path.to_owned(),
+            why: other.to_string(),
+        },
+    })?;
+    let real = fs::read_link(format!("/proc/self/fd/{}", file.as_raw_fd()))
+        .map_err(|source| read_err(path, source))?;
+    if !file_meta.is_file() {
         return Err(unsafe_(&real, "is not a regular file".to_owned()));
     }
     for (i, p) in real.ancestors().enumerate() {
-        let m = if i == 0 { file.clone() } else { meta(p)? };
+        let m = if i == 0 {
+            file_meta.clone()
+        } else {
+            fs::metadata(p).map_err(|source| read_err(p, source))?
+        };
         if m.uid() != 0 {
             return Err(unsafe_(p, format!("is owned by uid {}, not root", m.uid())));
         }
@@ -122,19 +136,15 @@ pub fn check_root_owned(path: &Path) -> Result<(), AnchorError> {
             ));
         }
     }
-    Ok(())
+    read_all(path, file)
 }
 
-/// Reads a small text file whole, refusing anything over [`MAX_BYTES`] or not UTF-8.
-fn read_small(path: &Path) -> Result<String, AnchorError> {
+/// Reads an open file whole, refusing anything over [`MAX_BYTES`] or not UTF-8.
+fn read_all(path: &Path, file: fs::File) -> Result<String, AnchorError> {
     let bad = |why: String| AnchorError::Bad {
         path: path.to_owned(),
         why,
     };
-    let file = fs::File::open(path).map_err(|source| AnchorError::Read {
-        path: path.to_owned(),
-        source,
-    })?;
     let mut bytes = Vec::new();
     file.take(MAX_BYTES + 1)
         .read_to_end(&mut bytes)
@@ -148,15 +158,23 @@ fn read_small(path: &Path) -> Result<String, AnchorError> {
     String::from_utf8(bytes).map_err(|_| bad("is not UTF-8 text".to_owned()))
 }
 
-/// Loads the site's approvers authority from the anchor folder `dir`, after checking that the key
-/// file (and the revocation list, when there is one) are root's alone.
+/// Reads a small text file whole (not an anchor file: no ownership rule).
+fn read_small(path: &Path) -> Result<String, AnchorError> {
+    let (file, _) = crate::input::open(path).map_err(|e| AnchorError::Bad {
+        path: path.to_owned(),
+        why: e.to_string(),
+    })?;
+    read_all(path, file)
+}
+
+/// Loads the site's approvers authority from the anchor folder `dir`: the key file (and the
+/// revocation list, when there is one) read by [`read_root_owned`].
 pub fn load_authority(dir: &Path) -> Result<Authority, AnchorError> {
     let key_path = dir.join(AUTHORITY_FILE);
-    check_root_owned(&key_path)?;
-    let keys = read_small(&key_path)?;
+    let keys = read_root_owned(&key_path)?;
     let revoked_path = dir.join(ANCHOR_REVOKED);
-    let revoked = match check_root_owned(&revoked_path) {
-        Ok(()) => read_small(&revoked_path)?,
+    let revoked = match read_root_owned(&revoked_path) {
+        Ok(text) => text,
         Err(AnchorError::Missing(_)) => String::new(),
         Err(e) => return Err(e),
     };
@@ -273,5 +291,79 @@ mod tests {
         assert!(e.contains("owned by uid 1000"), "{e}");
         fs::remove_dir_all(&dir).unwrap();
         fs::remove_dir_all(&elsewhere).unwrap();
+    }
+
+    /// The anchor named through a symlink that flips between root's key and another account's,
+    /// as fast as a thread can: every load is root's authority or an error, never the other's. The
+    /// check and the read were two opens of the path; they are now one open file.
+    #[test]
+    fn a_symlink_flipping_between_roots_key_and_anothers_never_loads_the_other() {
+        if !is_root() {
+            eprintln!("skipped: only root can make a root-owned anchor (CI runs as root)");
+            return;
+        }
+        let roots = folder("race-root");
+        let root_key = roots.join("root.pub");
+        let site = ergocell_robot::signing::key_from_seed(&[90; 32], "site");
+        let evil = ergocell_robot::signing::key_from_seed(&[66; 32], "evil");
+        fs::write(
+            &root_key,
+            ergocell_robot::signing::public_key_openssh(&site).unwrap(),
+        )
+        .unwrap();
+        fs::set_permissions(&root_key, fs::Permissions::from_mode(0o644)).unwrap();
+        let theirs = folder("race-theirs");
+        let evil_key = theirs.join("evil.pub");
+        fs::write(
+            &evil_key,
+            ergocell_robot::signing::public_key_openssh(&evil).unwrap(),
+        )
+        .unwrap();
+        fs::set_permissions(&evil_key, fs::Permissions::from_mode(0o644)).unwrap();
+        std::os::unix::fs::chown(&evil_key, Some(65534), None).unwrap();
+        let link = theirs.join(AUTHORITY_FILE);
+        std::os::unix::fs::symlink(&root_key, &link).unwrap();
+        let roots_fingerprints = load_authority(&theirs).unwrap().fingerprints();
+        let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let flipper = {
+            let (stop, link, root_key, evil_key, theirs) = (
+                stop.clone(),
+                link.clone(),
+                root_key.clone(),
+                evil_key.clone(),
+                theirs.clone(),
+            );
+            std::thread::spawn(move || {
+                let tmp = theirs.join("flip.tmp");
+                let mut k = 0u64;
+                while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    let target = if k.is_multiple_of(2) {
+                        &evil_key
+                    } else {
+                        &root_key
+                    };
+                    let _ = fs::remove_file(&tmp);
+                    if std::os::unix::fs::symlink(target, &tmp).is_ok() {
+                        let _ = fs::rename(&tmp, &link);
+                    }
+                    k += 1;
+                }
+            })
+        };
+        let (mut roots_loaded, mut refused) = (0, 0);
+        for _ in 0..3000 {
+            match load_authority(&theirs) {
+                Ok(a) => {
+                    assert_eq!(a.fingerprints(), roots_fingerprints, "the other key loaded");
+                    roots_loaded += 1;
+                }
+                Err(_) => refused += 1,
+            }
+        }
+        stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        flipper.join().unwrap();
+        assert!(roots_loaded + refused == 3000);
+        fs::remove_dir_all(&roots).unwrap();
+        fs::remove_dir_all(&theirs).unwrap();
     }
 }

@@ -37,23 +37,27 @@ pub fn witness_path(approvals_dir: &Path) -> PathBuf {
         .join(WITNESS_FILE)
 }
 
-/// The approvals file's name in the witness: its absolute path, the folder's links resolved.
+/// The approvals file's name in the witness: its absolute path as the cell names it, symlinks
+/// **not** resolved. Keyed by the resolved path, a folder swapped for a symlink to another folder
+/// holding an older copy was a file the witness had never seen (a withdrawal revived).
 fn key(approvals_path: &Path) -> String {
-    let absolute = match (approvals_path.parent(), approvals_path.file_name()) {
-        (Some(dir), Some(name)) => fs::canonicalize(if dir.as_os_str().is_empty() {
-            Path::new(".")
-        } else {
-            dir
-        })
-        .map(|d| d.join(name))
-        .ok(),
-        _ => None,
-    };
-    absolute
-        .or_else(|| std::path::absolute(approvals_path).ok())
-        .unwrap_or_else(|| approvals_path.to_owned())
+    std::path::absolute(approvals_path)
+        .unwrap_or_else(|_| approvals_path.to_owned())
         .to_string_lossy()
         .into_owned()
+}
+
+/// The key the witness used before, the folder's links resolved: its sightings still bind.
+fn resolved_key(approvals_path: &Path) -> Option<String> {
+    let (dir, name) = (approvals_path.parent()?, approvals_path.file_name()?);
+    let dir = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
+    fs::canonicalize(dir)
+        .ok()
+        .map(|d| d.join(name).to_string_lossy().into_owned())
 }
 
 /// Checks the approvals file at `approvals_path` (parsed, its chain intact) against the witness,
@@ -69,20 +73,26 @@ pub fn observe(
 ) -> Result<Vec<String>, RobotError> {
     let path = witness_path(approvals_path.parent().unwrap_or_else(|| Path::new(".")));
     let mut notes = Vec::new();
-    let text = match crate::input::read_text(&path, crate::input::Kind::Config) {
-        Ok(text) => text,
-        Err(e) if e.is_not_found() => String::new(),
+    // A witness that cannot be read refuses: it would otherwise be switched off by one bad byte.
+    let bytes = match crate::input::read(&path, crate::input::Kind::Config) {
+        Ok(bytes) => bytes,
+        Err(e) if e.is_not_found() => Vec::new(),
         Err(e) => {
-            notes.push(format!("witness not read, a rollback is not checked: {e}"));
-            String::new()
+            return Err(RobotError::WitnessUnreadable {
+                line: 0,
+                why: e.to_string(),
+            })
         }
     };
-    let witness = Witness::parse(&text);
+    let witness = Witness::parse(&bytes)?;
     for line in &witness.unreadable {
         notes.push(format!("witness {}: {line} (passed over)", path.display()));
     }
     let key = key(approvals_path);
     witness.check(&key, class, file)?;
+    if let Some(resolved) = resolved_key(approvals_path).filter(|r| *r != key) {
+        witness.check(&resolved, class, file)?;
+    }
     let now = ergocell_robot::signing::rfc3339_utc(crate::trust_anchor::now_unix())
         .unwrap_or_else(|_| "unknown".to_owned());
     if let Some(line) = witness.sighting_line(&key, class, file, trusted, &now) {

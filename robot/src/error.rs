@@ -87,6 +87,15 @@ pub enum RobotError {
         what: String,
         witness_line: usize,
     },
+    /// The witness cannot be read whole (a line ergocell did not write, or the file cannot be
+    /// opened): a rollback cannot be ruled out, so the approvals it guards are refused
+    /// ([`crate::witness`]). Line 0: the file as a whole.
+    #[error(
+        "the witness of the approvals cannot be read (line {line}: {why}): a rollback cannot be \
+         ruled out, so no approval counts. ergocell only ever appends whole lines to it; another \
+         line means it was written by someone else. Have the site's administrator inspect it"
+    )]
+    WitnessUnreadable { line: usize, why: String },
     /// An approval of the lock is there but cannot be trusted (bad signature, untrusted or revoked
     /// key, malformed time, …): the lock is refused.
     #[error("{class}: approval entry {entry} (approved by {approved_by}) refused: {reason}")]

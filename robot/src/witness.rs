@@ -43,53 +43,86 @@ pub struct Sighting {
     pub seen_at_utc: String,
 }
 
-/// A parsed witness log: its sightings, and the lines that could not be read.
+/// A parsed witness log: its sightings, and what was passed over.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct Witness {
     /// `(line number from 1, sighting)`.
     sightings: Vec<(usize, Sighting)>,
-    /// Lines passed over, with why: a damaged line is named, never fatal (the log only ever adds
-    /// what the chain must extend; losing a line can only make the check weaker, never refuse).
+    /// What was passed over, with why: only an append a crash cut short (the last line without its
+    /// newline, or such a fragment before the next whole line). Any other line that is not a
+    /// sighting makes the whole witness unreadable ([`RobotError::WitnessUnreadable`]): a witness
+    /// its attacker can switch off by appending one bad byte witnesses nothing.
     pub unreadable: Vec<String>,
 }
 
+/// The start of every line ergocell writes (`Sighting`'s first field).
+const LINE_START: &[u8] = b"{\"format\":";
+
+/// One line as a sighting, or why it is not one.
+fn sighting(line: &[u8]) -> Result<Sighting, String> {
+    let text = std::str::from_utf8(line)
+        .map_err(|e| format!("not UTF-8 text (byte {})", e.valid_up_to()))?;
+    let s: Sighting = serde_json::from_str(text).map_err(|e| signing::printable(&e.to_string()))?;
+    if s.format != WITNESS_FORMAT {
+        return Err(format!(
+            "format `{}`, not `{WITNESS_FORMAT}`",
+            signing::printable(&s.format)
+        ));
+    }
+    if !signing::is_sha256_hex(&s.head_sha256) {
+        return Err("head_sha256 is not a SHA-256".to_owned());
+    }
+    Ok(s)
+}
+
 impl Witness {
-    /// Parses a witness log. A last line without its newline is an append cut short (a crash while
-    /// writing) and is passed over like any line that does not parse; both are listed in
-    /// [`Witness::unreadable`].
-    pub fn parse(text: &str) -> Self {
+    /// Parses a witness log, bytes as read. Every whole line must be a sighting; the one thing
+    /// passed over (and listed in [`Witness::unreadable`]) is an append a crash cut short: the last
+    /// line without its newline, or the fragment such an append left before the next whole line on
+    /// the same line. Anything else refuses the whole witness.
+    pub fn parse(bytes: &[u8]) -> Result<Self, RobotError> {
         let mut witness = Self::default();
-        let complete = text.ends_with('\n');
-        let lines: Vec<&str> = text.lines().collect();
-        for (i, line) in lines.iter().enumerate() {
+        let complete = bytes.is_empty() || bytes.ends_with(b"\n");
+        let mut lines: Vec<&[u8]> = bytes.split(|b| *b == b'\n').collect();
+        if complete {
+            lines.pop();
+        }
+        let count = lines.len();
+        for (i, line) in lines.into_iter().enumerate() {
             let number = i + 1;
-            if line.trim().is_empty() {
+            if line.iter().all(u8::is_ascii_whitespace) {
                 continue;
             }
-            if i + 1 == lines.len() && !complete {
-                witness
-                    .unreadable
-                    .push(format!("line {number}: cut short (no newline)"));
+            if i + 1 == count && !complete {
+                witness.unreadable.push(format!(
+                    "line {number}: an append cut short (no newline; a crash while writing), passed over"
+                ));
                 continue;
             }
-            match serde_json::from_str::<Sighting>(line) {
-                Ok(s) if s.format == WITNESS_FORMAT && signing::is_sha256_hex(&s.head_sha256) => {
-                    witness.sightings.push((number, s));
+            match sighting(line) {
+                Ok(s) => witness.sightings.push((number, s)),
+                Err(why) => {
+                    // A torn append, and the next append written after it on the same line.
+                    let after_torn = line
+                        .windows(LINE_START.len())
+                        .rposition(|w| w == LINE_START)
+                        .filter(|&at| at > 0)
+                        .and_then(|at| sighting(&line[at..]).ok());
+                    match after_torn {
+                        Some(s) => {
+                            witness.sightings.push((number, s));
+                            witness.unreadable.push(format!(
+                                "line {number}: begins with an append cut short (a crash while writing), passed over"
+                            ));
+                        }
+                        None => {
+                            return Err(RobotError::WitnessUnreadable { line: number, why });
+                        }
+                    }
                 }
-                Ok(s) if s.format != WITNESS_FORMAT => witness.unreadable.push(format!(
-                    "line {number}: format `{}`, not `{WITNESS_FORMAT}`",
-                    signing::printable(&s.format)
-                )),
-                Ok(_) => witness
-                    .unreadable
-                    .push(format!("line {number}: head_sha256 is not a SHA-256")),
-                Err(e) => witness.unreadable.push(format!(
-                    "line {number}: {}",
-                    signing::printable(&e.to_string())
-                )),
             }
         }
-        witness
+        Ok(witness)
     }
 
     /// The sightings of one approvals file and class.

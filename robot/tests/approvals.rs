@@ -570,7 +570,7 @@ mod witness {
     fn a_deleted_last_entry_or_an_older_copy_is_refused() {
         let f = fixture();
         let file = withdrawn(&f);
-        let witness = Witness::parse(&seen(&f, &file));
+        let witness = Witness::parse(seen(&f, &file).as_bytes()).unwrap();
         assert!(witness.unreadable.is_empty(), "{:?}", witness.unreadable);
         witness.check(PATH, CLASS, &file).unwrap();
         // The withdrawal deleted: the chain alone is intact and the lock would verify again...
@@ -627,18 +627,48 @@ mod witness {
     }
 
     #[test]
-    fn a_damaged_witness_line_is_named_and_passed_over() {
+    fn a_torn_append_is_passed_over_and_said_and_the_good_lines_still_bind() {
         let f = fixture();
         let file = approved(&f);
         let line = seen(&f, &file);
-        // A torn append (no newline) and a garbage line are named; the good line still binds.
-        let text = format!("not json\n{line}{}", &line[..line.len() / 2]);
-        let witness = Witness::parse(&text);
-        assert_eq!(witness.unreadable.len(), 2, "{:?}", witness.unreadable);
-        assert!(witness.unreadable[0].starts_with("line 1:"));
-        assert!(witness.unreadable[1].contains("line 3: cut short"));
+        let torn = &line[..line.len() / 2];
+        // A crash cut the last append short (no newline): passed over, said.
+        let witness = Witness::parse(format!("{line}{torn}").as_bytes()).unwrap();
+        assert_eq!(witness.unreadable.len(), 1, "{:?}", witness.unreadable);
+        assert!(witness.unreadable[0].starts_with("line 2: an append cut short"));
         assert!(witness
             .check(PATH, CLASS, &ApprovalsFile::default())
             .is_err());
+        // The next append went on after the fragment: that line's sighting still binds.
+        let witness = Witness::parse(format!("{torn}{line}").as_bytes()).unwrap();
+        assert!(witness.unreadable[0].starts_with("line 1: begins with an append cut short"));
+        assert!(witness
+            .check(PATH, CLASS, &ApprovalsFile::default())
+            .is_err());
+    }
+
+    /// One appended byte (`printf '\\377\\n' >> witness.jsonl`) made the whole witness unreadable,
+    /// which switched it off: every such line now refuses the witness, naming the line.
+    #[test]
+    fn a_line_ergocell_did_not_write_refuses_the_witness() {
+        let f = fixture();
+        let file = approved(&f);
+        let line = seen(&f, &file);
+        for bad in [
+            b"\xff\n".to_vec(),
+            b"not json\n".to_vec(),
+            b"{\"format\":\"other/1\"}\n".to_vec(),
+        ] {
+            let mut bytes = line.clone().into_bytes();
+            bytes.extend(&bad);
+            let err = Witness::parse(&bytes).unwrap_err();
+            assert!(
+                matches!(
+                    err,
+                    ergocell_robot::RobotError::WitnessUnreadable { line: 2, .. }
+                ),
+                "{err}"
+            );
+        }
     }
 }

@@ -456,6 +456,80 @@ impl<'a> ApproveHow<'a> {
     }
 }
 
+/// The approvals folder's lock: held by `approve` and `withdraw` from reading the approvals file to
+/// recording in the witness, so two engineers approving at once both land, one after the other
+/// (each reads what the other wrote). A second command waits, and says it waits.
+struct ApprovalsLock {
+    _file: fs::File,
+}
+
+/// The lock file's name in the approvals folder.
+const APPROVALS_LOCK: &str = ".approvals.lock";
+
+impl ApprovalsLock {
+    fn take(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<Self> {
+        let path = ctx.layout.approvals(class);
+        let dir = path.parent().unwrap_or_else(|| Path::new("."));
+        fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        let lock_path = dir.join(APPROVALS_LOCK);
+        let file = fs::OpenOptions::new()
+            .create(true)
+            .truncate(false)
+            .write(true)
+            .open(&lock_path)
+            .with_context(|| format!("cannot open the lock {}", lock_path.display()))?;
+        match file.try_lock() {
+            Ok(()) => {}
+            Err(fs::TryLockError::WouldBlock) => {
+                eprintln!(
+                    "waiting: another approve or withdraw holds {} (it is writing the approvals)",
+                    lock_path.display()
+                );
+                file.lock()
+                    .with_context(|| format!("cannot lock {}", lock_path.display()))?;
+            }
+            Err(fs::TryLockError::Error(e)) => {
+                return Err(e).with_context(|| format!("cannot lock {}", lock_path.display()))
+            }
+        }
+        // Holding the lock, no other command is writing: a temporary file left beside the approvals
+        // is one a killed command left behind.
+        remove_stale_partials(dir);
+        Ok(Self { _file: file })
+    }
+}
+
+/// Removes the temporary files of approvals writes that never finished (`.<name>.partial-<pid>`,
+/// left by a command killed mid-write), saying each.
+fn remove_stale_partials(dir: &Path) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let name = name.to_string_lossy();
+        if name.starts_with('.') && name.contains(".partial-") {
+            match fs::remove_file(entry.path()) {
+                Ok(()) => eprintln!(
+                    "note: removed {}, left by an approve or withdraw that was stopped mid-write",
+                    entry.path().display()
+                ),
+                Err(e) => eprintln!(
+                    "note: {} is left by a write that was stopped; cannot remove it: {e}",
+                    entry.path().display()
+                ),
+            }
+        }
+    }
+}
+
+/// Refuses an entry whose time `verify` would refuse, before it is written (it would otherwise be
+/// announced as recorded and then block the class until withdrawn).
+fn check_entry_time(at_utc: &str, what: &str) -> anyhow::Result<()> {
+    signing::check_approval_time(at_utc, trust_anchor::now_unix())
+        .map_err(|e| anyhow::anyhow!("{e}\nrefusing to {what}: nothing was written"))
+}
+
 /// The class's approvals file (empty if there is none yet), its chain checked and checked against
 /// the cell's witness ([`ergocell::witness`]): a file cut back is refused before anything is added.
 fn load_approvals(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<ApprovalsFile> {
@@ -543,6 +617,10 @@ fn approve(
     matches_validation(ctx, &spec, &current, &lock)
         .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?;
     let approvals_path = ctx.layout.approvals(class);
+    let _lock = match how {
+        ApproveHow::MessageOut(_) => None,
+        _ => Some(ApprovalsLock::take(ctx, class)?),
+    };
     let mut file = load_approvals(ctx, class)?;
     let approval = match how {
         ApproveHow::Key(key_path) => {
@@ -565,6 +643,7 @@ fn approve(
                 .clone()
         }
     };
+    check_entry_time(&approval.approved_at_utc, "approve")?;
     write(&approvals_path, &file.to_toml()?)?;
     witness(ctx, &approvals_path, class, &file)?;
     println!(
@@ -594,6 +673,10 @@ fn withdraw(
         ))
         .into());
     }
+    let _lock = match how {
+        ApproveHow::MessageOut(_) => None,
+        _ => Some(ApprovalsLock::take(ctx, class)?),
+    };
     let mut file = load_approvals(ctx, class)?;
     let entry = match how {
         ApproveHow::Key(key_path) => {
@@ -622,6 +705,7 @@ fn withdraw(
                 .clone()
         }
     };
+    check_entry_time(&entry.approved_at_utc, "withdraw")?;
     write(&approvals_path, &file.to_toml()?)?;
     witness(ctx, &approvals_path, class, &file)?;
     println!(

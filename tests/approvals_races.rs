@@ -1,0 +1,225 @@
+//! Two engineers at once, with real parallel processes: `approve ∥ approve` and `approve ∥
+//! withdraw` on one class, round after round. Every command that announced an entry as recorded
+//! has it in the approvals file, the chain and the witness stay valid, and a killed write's
+//! temporary file is cleaned up. (Before the approvals were locked, 15 rounds of two parallel
+//! approves announced 30 entries and the file held 17.)
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::process::{Command, Stdio};
+
+mod common;
+use common::{AnchoredCell, ALICE, BOB};
+
+/// The number of entries in the class's approvals file.
+fn entries(cell: &AnchoredCell) -> usize {
+    let path = cell.dir.join("trajectories/approvals/c2.toml");
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    ergocell_robot::lock::ApprovalsFile::from_toml_str(&text)
+        .unwrap()
+        .approval
+        .len()
+}
+
+/// Starts `trajectories <command> --class c2 --by <by> --key <key>` without waiting.
+fn start(cell: &AnchoredCell, command: &str, by: &str, key: &str) -> std::process::Child {
+    Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(&cell.dir)
+        .env("ERGOCELL_TRUST_ANCHOR_DIR", &cell.anchor)
+        .args([
+            "trajectories",
+            command,
+            "--class",
+            "c2",
+            "--by",
+            by,
+            "--key",
+            key,
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
+#[test]
+fn parallel_approvals_and_withdrawals_never_lose_an_announced_entry() {
+    let Some(cell) = AnchoredCell::new("approvals_races") else {
+        return;
+    };
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let mut announced = 0;
+    for round in 0..12_u32 {
+        // Even rounds: both approve. Odd rounds: alice approves while bob withdraws his approval.
+        let second = if round.is_multiple_of(2) {
+            "approve"
+        } else {
+            "withdraw"
+        };
+        let a = start(&cell, "approve", ALICE, "keys/alice");
+        let b = start(&cell, second, BOB, "keys/bob");
+        for (who, child) in [("approve", a), (second, b)] {
+            let out = child.wait_with_output().unwrap();
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            if out.status.success() {
+                assert!(stdout.contains("recorded in"), "{who}: {stdout}");
+                announced += 1;
+            }
+        }
+        assert_eq!(
+            entries(&cell),
+            announced,
+            "round {round}: an announced entry is lost"
+        );
+    }
+    assert!(announced >= 12, "{announced}");
+    // The chain and the witness agree with the file: verify reads it without a rollback.
+    let (_, out, err) = cell.ergocell(&["trajectories", "verify", "--class", "c2"]);
+    assert!(
+        !out.contains("rolled back") && !err.contains("restored from an older copy"),
+        "{out}{err}"
+    );
+    assert!(out.contains("c2: OK"), "{out}{err}");
+
+    // A write killed mid-way leaves `.c2.toml.partial-<pid>`: the next approve removes it, saying so.
+    let stale = cell
+        .dir
+        .join("trajectories/approvals/.c2.toml.partial-99999");
+    std::fs::write(&stale, "half an approvals file").unwrap();
+    let (code, out, err) = cell.approve("c2", ALICE, "keys/alice");
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(!stale.exists());
+    assert!(err.contains("stopped mid-write"), "{err}");
+}
+
+/// `approve --signed` with a time `verify` refuses (two days ahead, 9999, before 2026) used to be
+/// announced as recorded and then blocked the class; now nothing is written.
+#[test]
+fn a_signed_approval_with_a_time_verify_refuses_is_not_written() {
+    let Some(cell) = AnchoredCell::new("approvals_signed_time") else {
+        return;
+    };
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let lock_text =
+        std::fs::read_to_string(cell.dir.join("trajectories/locks/c2.lock.toml")).unwrap();
+    let lock =
+        ergocell_robot::LockFile::from_toml_str(ergocell_robot::TrajectoryClass::C2, &lock_text)
+            .unwrap();
+    let key_text = std::fs::read_to_string(cell.dir.join("keys/alice")).unwrap();
+    let key = ergocell_robot::signing::private_key_from_openssh(&key_text).unwrap();
+    // The clock verify reads (the binary's wall clock).
+    let now = ergocell::trust_anchor::now_unix();
+    let two_days_ahead = ergocell_robot::signing::rfc3339_utc(now + 2 * 86_400).unwrap();
+    for at in [
+        two_days_ahead.as_str(),
+        "9999-12-31T00:00:00Z",
+        "2020-01-01T00:00:00Z",
+    ] {
+        let file = ergocell_robot::lock::ApprovalsFile::default();
+        let message = file.next_message(&lock, ALICE, at).unwrap();
+        let signature = key
+            .sign(
+                ergocell_robot::signing::APPROVAL_NAMESPACE,
+                ssh_key::HashAlg::Sha512,
+                message.as_bytes(),
+            )
+            .unwrap()
+            .to_pem(ssh_key::LineEnding::LF)
+            .unwrap();
+        let msg_path = cell.dir.join("approval.txt");
+        std::fs::write(&msg_path, &message).unwrap();
+        std::fs::write(cell.dir.join("approval.txt.sig"), signature).unwrap();
+        let (code, out, err) = cell.ergocell(&[
+            "trajectories",
+            "approve",
+            "--class",
+            "c2",
+            "--signed",
+            "approval.txt",
+        ]);
+        assert_ne!(code, 0, "{at}: {out}{err}");
+        assert!(!out.contains("recorded in"), "{at}: {out}");
+        assert!(err.contains("nothing was written"), "{at}: {err}");
+        assert_eq!(entries(&cell), 0, "{at}");
+    }
+}
+
+/// Runs ergocell in the cell with the anchor and the state folder `state`: (exit code, stdout,
+/// stderr).
+fn with_state(
+    cell: &AnchoredCell,
+    state: &std::path::Path,
+    args: &[&str],
+) -> (i32, String, String) {
+    common::outcome(
+        Command::new(env!("CARGO_BIN_EXE_ergocell"))
+            .current_dir(&cell.dir)
+            .env("ERGOCELL_TRUST_ANCHOR_DIR", &cell.anchor)
+            .env("ERGOCELL_STATE_DIR", state)
+            .args(args),
+    )
+}
+
+/// The approvals folder swapped for a symlink to a folder holding the older copy (before the
+/// withdrawal): the witness keyed its records by the resolved path, so it had never seen that
+/// file and `verify` said "c2: OK". One appended byte in the witness switched it off the same way.
+#[test]
+fn a_symlinked_approvals_folder_or_a_poisoned_witness_does_not_revive_a_withdrawal() {
+    let Some(cell) = AnchoredCell::new("approvals_symlink") else {
+        return;
+    };
+    let state = cell.dir.join("state");
+    std::fs::create_dir_all(&state).unwrap();
+    let run = |args: &[&str]| with_state(&cell, &state, args);
+    let (code, out, err) = run(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let sign = |command: &str| {
+        run(&[
+            "trajectories",
+            command,
+            "--class",
+            "c2",
+            "--by",
+            ALICE,
+            "--key",
+            "keys/alice",
+        ])
+    };
+    assert_eq!(sign("approve").0, 0);
+    let approvals = cell.dir.join("trajectories/approvals");
+    let older = std::fs::read(approvals.join("c2.toml")).unwrap();
+    assert_eq!(sign("withdraw").0, 0);
+    let (code, out, _) = run(&["trajectories", "verify", "--class", "c2"]);
+    assert_ne!(code, 0, "withdrawn: {out}");
+
+    // The symlinked folder.
+    std::fs::rename(&approvals, cell.dir.join("trajectories/approvals-real")).unwrap();
+    let old_dir = cell.dir.join("trajectories/approvals-old");
+    std::fs::create_dir_all(&old_dir).unwrap();
+    std::fs::write(old_dir.join("c2.toml"), &older).unwrap();
+    std::os::unix::fs::symlink("approvals-old", &approvals).unwrap();
+    let (code, out, err) = run(&["trajectories", "verify", "--class", "c2"]);
+    assert_ne!(code, 0, "{out}{err}");
+    assert!(!out.contains("c2: OK"), "{out}");
+    assert!(
+        format!("{out}{err}").contains("restored from an older copy"),
+        "{out}{err}"
+    );
+
+    // The witness poisoned with one appended byte: refused, never noted and passed.
+    std::fs::remove_file(&approvals).unwrap();
+    std::fs::rename(cell.dir.join("trajectories/approvals-real"), &approvals).unwrap();
+    std::fs::write(approvals.join("c2.toml"), &older).unwrap();
+    let witness = state.join("witness.jsonl");
+    let mut bytes = std::fs::read(&witness).unwrap();
+    bytes.extend(b"\xff\n");
+    std::fs::write(&witness, bytes).unwrap();
+    let (code, out, err) = run(&["trajectories", "verify", "--class", "c2"]);
+    assert_ne!(code, 0, "{out}{err}");
+    assert!(!out.contains("c2: OK"), "{out}");
+    assert!(
+        format!("{out}{err}").contains("the witness of the approvals cannot be read"),
+        "{out}{err}"
+    );
+}
