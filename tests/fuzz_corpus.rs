@@ -117,3 +117,57 @@ fn seeds_parse_and_broken_inputs_are_refused_without_panicking() {
     ergocell::fuzzing::cdr_messages(&[0, 0, 1, 0, 0, 255, 255, 255, 255]);
     ergocell::fuzzing::lock_toml(b"format = 3\n[[[");
 }
+
+/// Deep nesting in every syntax ergocell reads — XML (a URDF, a Qualisys calibration), TOML arrays
+/// and inline tables, JSON — through every fuzz entry point, on a thread with the main thread's
+/// stack (8 MiB): each is refused or read, never a stack overflow (which aborts the process and so
+/// fails this test). A 50,000-deep URDF of unknown elements used to abort with exit 134.
+#[test]
+fn deep_nesting_is_refused_by_every_reader_without_overflowing_the_stack() {
+    const ENTRIES: &[(&str, Entry)] = &[
+        ("rig", ergocell::fuzzing::rig),
+        ("openpose_json", ergocell::fuzzing::openpose_json),
+        ("caliscope_csv", ergocell::fuzzing::caliscope_csv),
+        ("landmarks_file", ergocell::fuzzing::landmarks_file),
+        ("urdf", ergocell::fuzzing::urdf),
+        ("trajectory_toml", ergocell::fuzzing::trajectory_toml),
+        ("cell_toml", ergocell::fuzzing::cell_toml),
+        ("lock_toml", ergocell::fuzzing::lock_toml),
+        ("approvals_toml", ergocell::fuzzing::approvals_toml),
+        ("rula_json", ergocell::fuzzing::rula_json),
+        ("detector_model", ergocell::fuzzing::detector_model),
+    ];
+    let n = 50_000;
+    let open_close = |open: &str, close: &str| format!("{}{}", open.repeat(n), close.repeat(n));
+    let payloads = [
+        format!(
+            "<robot name=\"deep\"><link name=\"link_0\"/>{}</robot>",
+            open_close("<x>", "</x>")
+        ),
+        format!(
+            "<calibration><cameras>{}</cameras></calibration>",
+            open_close("<camera>", "</camera>")
+        ),
+        format!("a = {}", open_close("[", "]")),
+        format!("a = {}1{}", "{ b = ".repeat(n), "}".repeat(n)),
+        open_close("[", "]"),
+        format!("{}1{}", "{\"a\":".repeat(n), "}".repeat(n)),
+    ];
+    assert_eq!(
+        ENTRIES.len() + 3,
+        TARGETS.len(),
+        "every text reader is here"
+    );
+    for (name, entry) in ENTRIES {
+        for (k, payload) in payloads.iter().enumerate() {
+            let bytes = payload.clone().into_bytes();
+            let entry = *entry;
+            let done = std::thread::Builder::new()
+                .stack_size(8 << 20)
+                .spawn(move || entry(&bytes))
+                .unwrap()
+                .join();
+            assert!(done.is_ok(), "{name}: payload {k} panicked");
+        }
+    }
+}

@@ -56,6 +56,12 @@ impl RobotModel {
         base_link: &str,
         flange_link: &str,
     ) -> Result<Self, RobotError> {
+        // urdf-rs skips unknown elements recursively: bound the nesting before it reads.
+        ergocell_nesting::check(urdf, ergocell_nesting::MAX_XML_DEPTH).map_err(|e| {
+            RobotError::UnsupportedUrdf {
+                reason: e.to_string(),
+            }
+        })?;
         let robot = urdf_rs::read_from_string(urdf).map_err(|e| RobotError::Urdf {
             reason: e.to_string(),
         })?;

@@ -196,3 +196,20 @@ fn a_urdf_chain_fifty_thousand_links_deep_is_refused_not_a_stack_overflow() {
         assert!(!e.to_string().contains("at most 1000"), "{e}");
     }
 }
+
+/// 50,000 nested unknown elements (350 KB) used to overflow the stack inside urdf-rs's recursive
+/// reader (exit 134) before any check ran: the nesting is now bounded before it reads.
+#[test]
+fn a_urdf_nested_fifty_thousand_elements_deep_is_refused_not_a_stack_overflow() {
+    let n = 50_000;
+    let urdf = format!(
+        "<robot name=\"deep\"><link name=\"l0\"/>{}{}</robot>",
+        "<unknown>".repeat(n),
+        "</unknown>".repeat(n)
+    );
+    let err = RobotModel::from_urdf_str(&urdf, "l0", "l0").unwrap_err();
+    assert!(matches!(err, RobotError::UnsupportedUrdf { .. }), "{err}");
+    // The shipped arm nests well within the bound.
+    let shipped = include_str!("../../config/robots/iiwa14_r820.urdf");
+    assert!(ergocell_nesting::check(shipped, ergocell_nesting::MAX_XML_DEPTH).is_ok());
+}
