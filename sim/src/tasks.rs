@@ -420,6 +420,12 @@ impl TaskMix {
     /// occurrence is placed after a seeded number of the `handovers` cycles (0: before the first);
     /// occurrences are in the order they happen.
     pub fn draw(&self, seed: u64) -> Vec<TaskOccurrence> {
+        self.draw_between(seed, self.handovers)
+    }
+
+    /// [`TaskMix::draw`] placed among `handovers` cycles instead of the mix's own count (the demo's
+    /// `--cycles`).
+    pub fn draw_between(&self, seed: u64, handovers: usize) -> Vec<TaskOccurrence> {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         rng.set_stream(3);
         let mut out = Vec::with_capacity(self.occurrences());
@@ -454,10 +460,10 @@ impl TaskMix {
         let n = out.len();
         for (i, t) in out.iter_mut().enumerate() {
             // Spread evenly over the slots 0..=handovers, in shuffled order.
-            t.after_cycle = (i * (self.handovers + 1))
+            t.after_cycle = (i * (handovers + 1))
                 .checked_div(n)
                 .unwrap_or(0)
-                .min(self.handovers);
+                .min(handovers);
         }
         out
     }

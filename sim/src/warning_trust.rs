@@ -93,6 +93,24 @@ pub struct RegionWarnings {
     pub latencies_s: Vec<f64>,
 }
 
+impl RegionWarnings {
+    /// Adds `other`'s counts and latencies to these.
+    fn add(&mut self, other: &RegionWarnings) {
+        self.truth_raised += other.truth_raised;
+        self.clear += other.clear;
+        self.clear_caught += other.clear_caught;
+        self.raised += other.raised;
+        self.confirmed += other.confirmed;
+        self.latencies_s.extend(&other.latencies_s);
+    }
+
+    /// Recall and precision from the counts.
+    fn finish(&mut self) {
+        self.recall = ratio(self.clear_caught, self.clear);
+        self.precision = ratio(self.confirmed, self.raised);
+    }
+}
+
 /// The warnings of one seed's sessions.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct WarningTrust {
@@ -471,18 +489,11 @@ pub fn warning_trust(
     let mut regions = Vec::with_capacity(6);
     for (r, mut w) in BodyRegion::ALL.iter().zip(counts.regions) {
         r.name().clone_into(&mut w.region);
-        w.recall = ratio(w.clear_caught, w.clear);
-        w.precision = ratio(w.confirmed, w.raised);
-        all.truth_raised += w.truth_raised;
-        all.clear += w.clear;
-        all.clear_caught += w.clear_caught;
-        all.raised += w.raised;
-        all.confirmed += w.confirmed;
-        all.latencies_s.extend(&w.latencies_s);
+        w.finish();
+        all.add(&w);
         regions.push(w);
     }
-    all.recall = ratio(all.clear_caught, all.clear);
-    all.precision = ratio(all.confirmed, all.raised);
+    all.finish();
     let mut sorted = all.latencies_s.clone();
     sorted.sort_by(f64::total_cmp);
     let lag_s = config.fixed_lag_s.unwrap_or(0.0);
@@ -550,19 +561,13 @@ pub fn over_seeds(seeds: &[u64], runs: Vec<WarningTrust>) -> WarningTrustSeeds {
             .chain([&mut all])
             .zip(run.regions.iter().chain([&run.all]))
         {
-            p.truth_raised += r.truth_raised;
-            p.clear += r.clear;
-            p.clear_caught += r.clear_caught;
-            p.raised += r.raised;
-            p.confirmed += r.confirmed;
-            p.latencies_s.extend(&r.latencies_s);
+            p.add(r);
         }
         false_warnings += run.false_warnings;
         hours += run.hours;
     }
     for p in regions.iter_mut().chain([&mut all]) {
-        p.recall = ratio(p.clear_caught, p.clear);
-        p.precision = ratio(p.confirmed, p.raised);
+        p.finish();
     }
     let mut sorted = all.latencies_s.clone();
     sorted.sort_by(f64::total_cmp);

@@ -122,6 +122,12 @@ pub struct Args {
     /// part, 0.40 m above the floor: a bad posture that raises a RULA warning).
     #[arg(long)]
     pub no_floor_pick: bool,
+    /// The station's other tasks between the handovers: a task mix (TOML, the format of
+    /// `sim/tasks/default.toml`) or `default` for the shipped one (low bin, high shelf, reading a
+    /// label, side table, long reach, fastening, kneeling: postures that deserve a warning). Its
+    /// tasks are placed among `--cycles` handovers; its own handover count is not used.
+    #[arg(long, value_name = "MIX")]
+    pub tasks: Option<String>,
     /// Bump this camera (its id, e.g. `s2_left`) out of its calibration mid-session: from
     /// `--bump-at-s` on it sees the scene panned by `--bump-deg` while the rig stays as calibrated.
     /// The session must find it by its reprojection residuals, leave it out and ask for a
@@ -660,14 +666,24 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .find(|h| h.class == true_class)
         .context("no handover for the operator's class")?;
     let script = script(args, own, &settings);
-    // The session's time limit: the script, then the robot's way home.
-    let limit_secs = script.duration_secs() + MARGIN_SECS;
+    let tasks = match &args.tasks {
+        Some(spec) => super::sim_warnings::load_mix(spec)?.draw_between(args.seed, args.cycles),
+        None => Vec::new(),
+    };
+    let task_secs: f64 = tasks
+        .iter()
+        .map(ergocell_sim::tasks::TaskOccurrence::duration_secs)
+        .sum();
+    // The session's time limit: the script and its tasks, then the robot's way home.
+    let limit_secs = script.duration_secs() + task_secs + MARGIN_SECS;
     let floor_pick = script.floor_pick;
-    let sim = Simulation::new(
+    let task_names: Vec<&str> = tasks.iter().map(|t| t.kind.name()).collect();
+    let sim = Simulation::with_tasks(
         rig.clone(),
         Operator::new(args.stature_m)?,
         script,
         sim_config(args, &rig, start)?,
+        tasks,
     )?;
     let joints = own.lock.trajectory.joint_names.clone();
     let home = own
@@ -715,6 +731,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     } else {
         let list: Vec<String> = schedule.faults.iter().map(ToString::to_string).collect();
         println!("  faults: {}", list.join("; "));
+    }
+    if !task_names.is_empty() {
+        println!(
+            "  tasks between the handovers ({:.0} s): {}",
+            task_secs,
+            task_names.join(", ")
+        );
     }
     if let Some(p) = &floor_pick {
         println!(
