@@ -124,6 +124,9 @@ fn calibrated_twin_cameras_are_never_flagged() {
 /// is flagged, through the same reconstruction stage.
 #[test]
 fn no_camera_of_a_real_calibrated_recording_is_flagged() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let dir =
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/caliscope-4cam");
     let text = std::fs::read_to_string(dir.join("config.toml")).unwrap();

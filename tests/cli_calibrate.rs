@@ -38,6 +38,9 @@ fn ergocell(args: &[&str]) -> (i32, String, String) {
 
 #[test]
 fn stereo_writes_a_rig_with_the_sample_baseline() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     for format in ["ergocell", "anipose"] {
         let out = tmp(&format!("rig_{format}.toml"));
         let (code, stdout, stderr) = ergocell(&[
@@ -90,6 +93,9 @@ fn stereo_writes_a_rig_with_the_sample_baseline() {
 
 #[test]
 fn intrinsics_table_and_rig_file() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     let out = tmp("left.toml");
     let (code, stdout, stderr) = ergocell(&[
         "calibrate",
@@ -118,6 +124,9 @@ fn intrinsics_table_and_rig_file() {
 
 #[test]
 fn too_few_views_is_a_usage_error() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     let out = tmp("never.toml");
     let (code, stdout, stderr) = ergocell(&[
         "calibrate",
@@ -143,6 +152,9 @@ fn too_few_views_is_a_usage_error() {
 
 #[test]
 fn mismatched_stereo_lists_and_bad_boards_are_usage_errors() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     let out = tmp("never2.toml");
     let out = out.to_str().unwrap();
     let (code, _, stderr) = ergocell(&[

@@ -181,6 +181,9 @@ fn openpose_body25_folders_triangulate_to_the_true_body_and_ignore_the_bystander
 
 #[test]
 fn caliscope_recording_gives_a_summary_and_json() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let out = tmp("caliscope_out").with_extension("json");
     let (code, stdout, stderr) = triangulate_caliscope(&out, &[]);
     assert_eq!(code, 0, "{stdout}\n{stderr}");
@@ -219,6 +222,9 @@ fn triangulate_caliscope(out: &Path, extra: &[&str]) -> (i32, String, String) {
 /// stdout and the same figures as JSON.
 #[test]
 fn the_detector_error_of_a_real_recording_is_measured_view_against_view() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let data = repo().join("../shared/data/caliscope-4cam");
     let out = tmp("caliscope_err_out").with_extension("json");
     let err = tmp("caliscope_err").with_extension("json");
@@ -327,6 +333,9 @@ fn openpose_frames_paired_by_file_order_a_missing_file_no_longer_shifts_later_fr
 
 #[test]
 fn triangulate_streams_into_a_temporary_file_and_reads_an_unsorted_csv_whole() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     // The output appears only when complete (written beside it as `.<name>.partial-<pid>`, then
     // moved): no temporary file is left, an existing output is refused before any work, and a CSV
     // whose rows are out of sync_index order is read whole with a note and the same result.

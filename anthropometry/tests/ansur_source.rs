@@ -2,22 +2,14 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::path::PathBuf;
-
 use ergocell_anthropometry::ansur::{read_public, write_extract, Sex, EXTRACT_CSV};
 
 #[test]
 fn the_extract_is_regenerated_from_the_public_release() {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/ansur2");
-    if !dir.is_dir() {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "{}: missing in CI (the shared data must sit beside the repo)",
-            dir.display()
-        );
-        eprintln!("SKIPPED: {} is missing", dir.display());
+    if ergocell_testdata::skip_without("data/ansur2") {
         return;
     }
+    let dir = ergocell_testdata::shared("data/ansur2");
     let mut records = Vec::new();
     for (file, sex) in [
         ("ANSUR_II_MALE_Public.csv", Sex::Male),

@@ -190,6 +190,9 @@ fn solver_on_opencv_corners_matches_opencv() {
 /// Our detector's corners against OpenCV's on the same images (nearest corner).
 #[test]
 fn detector_corners_close_to_opencv() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     let board = BoardSpec::new(9, 6, 0.025).unwrap();
     let mut worst = 0.0f64;
     let mut sum2 = 0.0;

@@ -182,12 +182,13 @@ mod tests {
 
     #[test]
     fn the_embedded_copy_is_the_shared_reference_verbatim() {
-        let shared = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../shared/reference/rula_tables.json");
         // The shared reference sits beside the repository on developer machines and in CI.
-        if let Ok(text) = std::fs::read_to_string(&shared) {
-            assert_eq!(parse_tables(&text).unwrap(), *rula_tables().unwrap());
+        if ergocell_testdata::skip_without("reference/rula_tables.json") {
+            return;
         }
+        let text = std::fs::read_to_string(ergocell_testdata::shared("reference/rula_tables.json"))
+            .unwrap();
+        assert_eq!(parse_tables(&text).unwrap(), *rula_tables().unwrap());
     }
 
     #[test]

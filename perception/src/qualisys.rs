@@ -40,6 +40,9 @@ pub fn looks_like_qca(text: &str) -> bool {
 /// Parses a QTM `.qca.txt` calibration export into a rig (no stereo pairs unless the count is even,
 /// then consecutive cameras as [`CameraRig::new`] pairs them; `up` = +z).
 pub fn parse_qualisys(text: &str, source_name: &str) -> Result<CameraRig> {
+    // roxmltree builds its tree recursively: bound the nesting before it reads.
+    ergocell_nesting::check(text, ergocell_nesting::MAX_XML_DEPTH)
+        .map_err(|e| parse_err(source_name, "(file)", e.to_string()))?;
     let doc = roxmltree::Document::parse(text)
         .map_err(|e| parse_err(source_name, "(file)", format!("not valid XML: {e}")))?;
     let root = doc.root_element();
@@ -305,14 +308,11 @@ mod tests {
 
     #[test]
     fn the_demo_file_parses_four_cameras_that_look_at_the_capture_volume() {
-        let path = concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../shared/data/pose2sim-demo-videos/calibration/Calib.qca.txt"
-        );
-        let Ok(text) = std::fs::read_to_string(path) else {
-            eprintln!("skipped: {path} not found");
+        let relative = "data/pose2sim-demo-videos/calibration/Calib.qca.txt";
+        if ergocell_testdata::skip_without(relative) {
             return;
-        };
+        }
+        let text = std::fs::read_to_string(ergocell_testdata::shared(relative)).unwrap();
         let rig = parse_qualisys(&text, "Calib.qca.txt").unwrap();
         let ids: Vec<_> = rig.cameras().iter().map(|c| c.id.as_str()).collect();
         assert_eq!(ids, ["cam01", "cam02", "cam03", "cam04"]);

@@ -40,6 +40,9 @@ fn load() -> (CameraRig, Vec<Frame2>) {
 
 #[test]
 fn unweighted_nview_dlt_reproduces_caliscopes_own_3d_output() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let (rig, frames) = load();
     let engine = FusionEngine::new(rig, FusionMethod::Default).unwrap();
     // xyz_pose33.csv: index, sync_index, point_id, x, y, z
@@ -152,6 +155,9 @@ fn default_fusion_has_less_bone_length_variation_than_the_papers_and_plain_dlt()
 
 #[test]
 fn the_streaming_reader_gives_the_frames_of_the_whole_file_parse() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let (rig, frames) = load();
     let text = read("xy_pose33.csv");
     let scan =

@@ -126,6 +126,9 @@ fn keypoints(frames: &[Frame2]) -> Vec<FramePixels> {
 
 #[test]
 fn openpose_frames_paired_by_frame_number_a_deleted_file_is_one_missing_view() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let cameras = openpose_files();
     let (full, stats, warnings) = assemble(&cameras);
     assert!(warnings.is_empty(), "{warnings:?}");
@@ -229,6 +232,9 @@ fn with_cell(text: &str, row: usize, column: &str, cell: &str) -> String {
 
 #[test]
 fn one_non_numeric_csv_cell_is_skipped_and_counted_not_fatal() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let text = read("xy_pose33.csv");
     let (full, stats) = caliscope(&text);
     assert_eq!(stats, ImportStats::default(), "the recording is clean");
@@ -288,6 +294,9 @@ fn one_non_numeric_csv_cell_is_skipped_and_counted_not_fatal() {
 
 #[test]
 fn caliscope_cells_padded_with_blanks_read_as_the_bare_ones_and_unknown_ports_are_skipped() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     // the reader does not trim: every header name and cell is trimmed where it is read
     let text = read("xy_pose33.csv");
     let (bare, bare_stats) = caliscope(&text);
@@ -326,6 +335,9 @@ fn caliscope_cells_padded_with_blanks_read_as_the_bare_ones_and_unknown_ports_ar
 
 #[test]
 fn caliscope_csv_without_img_loc_y_is_an_error_naming_the_column() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let text = read("xy_pose33.csv");
     let c = text
         .lines()
@@ -472,6 +484,9 @@ fn a_one_camera_rig_or_coincident_cameras_are_errors_not_all_null_output() {
 /// from two detections would be) is left out and counted, never merged silently.
 #[test]
 fn a_keypoint_given_twice_for_one_frame_is_left_out_and_named() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let text = read("xy_pose33.csv");
     let mut lines = text.lines();
     let header = lines.next().unwrap();
@@ -497,6 +512,9 @@ fn a_keypoint_given_twice_for_one_frame_is_left_out_and_named() {
 /// named, not read as "0 frames" with a guess about the file changing.
 #[test]
 fn rows_for_an_unknown_port_are_named() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let text = read("xy_pose33.csv");
     let mut lines = text.lines();
     let header = lines.next().unwrap();

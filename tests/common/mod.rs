@@ -4,6 +4,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, dead_code)]
 
+use std::io::Write as _;
 use std::io::{BufRead, BufReader, Lines};
 use std::path::{Path, PathBuf};
 use std::process::{Child, ChildStdout, Command, Stdio};
@@ -144,7 +145,8 @@ pub fn skip_browser_test() -> bool {
             std::env::var_os("ERGOCELL_REQUIRE_BROWSER").is_none(),
             "ERGOCELL_REQUIRE_BROWSER is set but the browser test cannot run: {why}"
         );
-        eprintln!("SKIPPED: the browser test needs {why}");
+        // Straight to the stream: cargo test shows it without --nocapture.
+        let _ = writeln!(std::io::stderr(), "SKIPPED: the browser test needs {why}");
         return true;
     }
     false
@@ -270,7 +272,10 @@ impl AnchoredCell {
                 std::env::var_os("ERGOCELL_REQUIRE_ANCHOR").is_none(),
                 "ERGOCELL_REQUIRE_ANCHOR is set but the tests do not run as root"
             );
-            eprintln!("skipped: a root-owned trust anchor needs root (CI runs as root)");
+            let _ = writeln!(
+                std::io::stderr(),
+                "SKIPPED: a root-owned trust anchor needs root (CI runs as root)"
+            );
             return None;
         }
         let dir = fresh_cell(name);
