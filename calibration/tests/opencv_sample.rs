@@ -82,6 +82,9 @@ fn sample() -> &'static Sample {
 
 #[test]
 fn opencv_sample_matches_opencv() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     let Sample { left, calib, right } = sample();
     // every view of this sample is a good one: all 26 images are used
     assert_eq!(left.frames.iter().flatten().count(), 13);
@@ -224,6 +227,9 @@ fn detector_corners_close_to_opencv() {
 /// (DLT of undistorted pixels, `perception::triangulation::dlt`, the runtime's own triangulation).
 #[test]
 fn triangulated_squares_measure_25_mm() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     let Sample { left, calib, right } = sample();
     let cams = calib.rig.cameras();
     let (pl, pr) = (cams[0].projection_matrix(), cams[1].projection_matrix());
@@ -268,6 +274,9 @@ fn triangulated_squares_measure_25_mm() {
 /// to the same cameras.
 #[test]
 fn calibrated_rig_round_trips_through_both_file_formats() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     use ergocell_perception::rig_file::{parse_rig, to_anipose_toml, to_ergocell_toml};
     let rig = &sample().calib.rig;
     for text in [to_ergocell_toml(rig), to_anipose_toml(rig)] {
@@ -284,6 +293,9 @@ fn calibrated_rig_round_trips_through_both_file_formats() {
 /// `CALIB_FIX_INTRINSIC`) can only lower the joint error, and keeps the baseline.
 #[test]
 fn refining_intrinsics_in_the_stereo_solve_keeps_the_baseline() {
+    if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
+        return;
+    }
     let Sample { left, calib, right } = sample();
     let board = BoardSpec::new(9, 6, 0.025).unwrap();
     let options = RigOptions {
