@@ -90,6 +90,9 @@ fn skeletons(points: &[[Option<nalgebra::Point3<f64>>; 33]]) -> Vec<Skeleton3> {
 
 #[test]
 fn default_fusion_has_less_bone_length_variation_than_the_papers_and_plain_dlt() {
+    if ergocell_testdata::skip_without("data/caliscope-4cam") {
+        return;
+    }
     let (rig, frames) = load();
     let mut paper = FusionEngine::new(rig.clone(), FusionMethod::Paper).unwrap();
     let mut default = FusionEngine::new(rig, FusionMethod::Default).unwrap();
