@@ -274,10 +274,10 @@ fn triangulated_squares_measure_25_mm() {
 /// to the same cameras.
 #[test]
 fn calibrated_rig_round_trips_through_both_file_formats() {
+    use ergocell_perception::rig_file::{parse_rig, to_anipose_toml, to_ergocell_toml};
     if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
         return;
     }
-    use ergocell_perception::rig_file::{parse_rig, to_anipose_toml, to_ergocell_toml};
     let rig = &sample().calib.rig;
     for text in [to_ergocell_toml(rig), to_anipose_toml(rig)] {
         let (back, _) = parse_rig(&text, "calibrated").unwrap();
