@@ -114,10 +114,9 @@ pub fn open(path: &Path) -> Result<(fs::File, fs::Metadata), InputError> {
     if let Some(what) = not_a_file(fs::metadata(path).map_err(io)?.file_type()) {
         return Err(refuse(what));
     }
-    let nonblock = rustix::fs::OFlags::NONBLOCK;
     let file = fs::OpenOptions::new()
         .read(true)
-        .custom_flags(i32::try_from(nonblock.bits()).unwrap_or(0))
+        .custom_flags(nonblocking_flag())
         .open(path)
         .map_err(io)?;
     let meta = file.metadata().map_err(io)?;
@@ -125,9 +124,21 @@ pub fn open(path: &Path) -> Result<(fs::File, fs::Metadata), InputError> {
         return Err(refuse(what));
     }
     // Blocking again: a pipe with a writer is read as it comes; with none, read() says end of file.
-    let flags = rustix::fs::fcntl_getfl(&file).map_err(|e| io(e.into()))?;
-    rustix::fs::fcntl_setfl(&file, flags.difference(nonblock)).map_err(|e| io(e.into()))?;
+    set_blocking(&file).map_err(io)?;
     Ok((file, meta))
+}
+
+/// `O_NONBLOCK` as `OpenOptionsExt::custom_flags` takes it: how inputs and outputs are opened, so
+/// that a named pipe never blocks the open.
+pub fn nonblocking_flag() -> i32 {
+    i32::try_from(rustix::fs::OFlags::NONBLOCK.bits()).unwrap_or(0)
+}
+
+/// Clears `O_NONBLOCK` on a file opened with [`nonblocking_flag`], once its kind is checked.
+pub fn set_blocking(file: &fs::File) -> std::io::Result<()> {
+    let flags = rustix::fs::fcntl_getfl(file)?;
+    rustix::fs::fcntl_setfl(file, flags.difference(rustix::fs::OFlags::NONBLOCK))?;
+    Ok(())
 }
 
 /// Reads `path` whole as `kind` (see the module docs).

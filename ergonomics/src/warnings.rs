@@ -129,6 +129,30 @@ fn toward(x: f64, anchor: f64, margin: f64) -> f64 {
     }
 }
 
+/// The worksheets a frame's warning for `region` is judged on, with their side: each scored side for
+/// a sided region, the headline side's for the neck, trunk and legs; a wrist never observed (scored
+/// conservatively) is not judged. The one rule for the tracker and for whoever measures it.
+pub fn judged(
+    frame: &FrameAssessment,
+    region: BodyRegion,
+) -> Vec<(Option<Side>, &crate::assess::SideAssessment)> {
+    let sides: Vec<(Option<Side>, &crate::assess::SideAssessment)> = if region.is_sided() {
+        Side::BOTH
+            .iter()
+            .filter_map(|s| frame.side(*s).map(|a| (Some(*s), a)))
+            .collect()
+    } else {
+        frame.headline().map(|h| (None, h)).into_iter().collect()
+    };
+    sides
+        .into_iter()
+        .filter(|(_, a)| {
+            !(region == BodyRegion::Wrist
+                && a.source("wrist_flexion_deg") == Some(InputSource::Conservative))
+        })
+        .collect()
+}
+
 /// The region's angle in a worksheet (none for the legs).
 pub fn region_angle(region: BodyRegion, i: &RulaInput) -> Option<f64> {
     match region {
@@ -302,20 +326,7 @@ impl WarningTracker {
         let margin_deg = self.config.hysteresis_rad.to_degrees();
         let rise_deg = self.config.rise_margin_rad.to_degrees();
         for (ri, region) in BodyRegion::ALL.iter().enumerate() {
-            let sides: Vec<(Option<Side>, &crate::assess::SideAssessment)> = if region.is_sided() {
-                Side::BOTH
-                    .iter()
-                    .filter_map(|s| frame.side(*s).map(|a| (Some(*s), a)))
-                    .collect()
-            } else {
-                vec![(None, head)]
-            };
-            for (side, assessment) in sides {
-                if *region == BodyRegion::Wrist
-                    && assessment.source("wrist_flexion_deg") == Some(InputSource::Conservative)
-                {
-                    continue;
-                }
+            for (side, assessment) in judged(frame, *region) {
                 let input = &assessment.input;
                 let angle = region_angle(*region, input);
                 let warn_at = self.config.warn_at[ri];

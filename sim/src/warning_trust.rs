@@ -31,10 +31,10 @@
 use std::collections::BTreeMap;
 
 use ergocell_cell::{Pipeline, PipelineConfig};
-use ergocell_ergonomics::assess::{BodyRegion, InputSource};
+use ergocell_ergonomics::assess::BodyRegion;
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::rula::action_level;
-use ergocell_ergonomics::warnings::{region_angle, region_score_at};
+use ergocell_ergonomics::warnings::{judged, region_angle, region_score_at};
 use ergocell_ergonomics::HeightClass;
 use ergocell_ergonomics::{
     AssessmentConfig, FrameAssessment, RulaAssessor, Side, WarningConfig, WarningKind,
@@ -210,27 +210,12 @@ impl Intervals {
 
 /// Per key and tick: whether the truth's region scores the warning level, and whether clearly.
 fn truth_levels(a: &FrameAssessment, config: &WarningConfig) -> Vec<(Key, bool, bool)> {
-    let head = a.headline();
     BodyRegion::ALL
         .iter()
         .enumerate()
         .flat_map(move |(ri, region)| {
-            let sides: Vec<(Option<Side>, &ergocell_ergonomics::assess::SideAssessment)> =
-                if region.is_sided() {
-                    Side::BOTH
-                        .iter()
-                        .filter_map(|s| a.side(*s).map(|x| (Some(*s), x)))
-                        .collect()
-                } else {
-                    head.map(|h| (None, h)).into_iter().collect()
-                };
             let warn_at = config.warn_at[ri];
-            sides.into_iter().filter_map(move |(side, s)| {
-                if *region == BodyRegion::Wrist
-                    && s.source("wrist_flexion_deg") == Some(InputSource::Conservative)
-                {
-                    return None;
-                }
+            judged(a, *region).into_iter().map(move |(side, s)| {
                 let input = &s.input;
                 let angle = region_angle(*region, input);
                 let level = region_score_at(*region, input, angle) >= warn_at;
@@ -240,7 +225,7 @@ fn truth_levels(a: &FrameAssessment, config: &WarningConfig) -> Vec<(Key, bool, 
                         .all(|v| region_score_at(*region, input, Some(*v)) >= warn_at),
                     None => level,
                 };
-                Some(((*region, side), level, clear && level))
+                ((*region, side), level, clear && level)
             })
         })
         .collect()

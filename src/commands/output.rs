@@ -116,7 +116,7 @@ pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
     // Non-blocking: a named pipe put there since the check is not waited on (and refused below).
     options
         .write(true)
-        .custom_flags(i32::try_from(rustix::fs::OFlags::NONBLOCK.bits()).unwrap_or(0));
+        .custom_flags(ergocell::input::nonblocking_flag());
     if force {
         options.create(true).truncate(true);
     } else {
@@ -143,11 +143,7 @@ pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
         ))
         .into());
     }
-    let flags = rustix::fs::fcntl_getfl(&file)
-        .map_err(std::io::Error::from)
-        .with_context(|| format!("cannot create {}", out.display()))?;
-    rustix::fs::fcntl_setfl(&file, flags.difference(rustix::fs::OFlags::NONBLOCK))
-        .map_err(std::io::Error::from)
+    ergocell::input::set_blocking(&file)
         .with_context(|| format!("cannot create {}", out.display()))?;
     Ok(file)
 }

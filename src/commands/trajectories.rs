@@ -467,6 +467,19 @@ struct ApprovalsLock {
 const APPROVALS_LOCK: &str = ".approvals.lock";
 
 impl ApprovalsLock {
+    /// The lock for a command that writes the approvals file; none for `--message-out`, which
+    /// only writes the message to sign.
+    fn for_writing(
+        ctx: &Context,
+        class: TrajectoryClass,
+        how: &ApproveHow<'_>,
+    ) -> anyhow::Result<Option<Self>> {
+        match how {
+            ApproveHow::MessageOut(_) => Ok(None),
+            _ => Self::take(ctx, class).map(Some),
+        }
+    }
+
     fn take(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<Self> {
         let path = ctx.layout.approvals(class);
         let dir = path.parent().unwrap_or_else(|| Path::new("."));
@@ -617,10 +630,7 @@ fn approve(
     matches_validation(ctx, &spec, &current, &lock)
         .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?;
     let approvals_path = ctx.layout.approvals(class);
-    let _lock = match how {
-        ApproveHow::MessageOut(_) => None,
-        _ => Some(ApprovalsLock::take(ctx, class)?),
-    };
+    let _lock = ApprovalsLock::for_writing(ctx, class, &how)?;
     let mut file = load_approvals(ctx, class)?;
     let approval = match how {
         ApproveHow::Key(key_path) => {
@@ -673,10 +683,7 @@ fn withdraw(
         ))
         .into());
     }
-    let _lock = match how {
-        ApproveHow::MessageOut(_) => None,
-        _ => Some(ApprovalsLock::take(ctx, class)?),
-    };
+    let _lock = ApprovalsLock::for_writing(ctx, class, &how)?;
     let mut file = load_approvals(ctx, class)?;
     let entry = match how {
         ApproveHow::Key(key_path) => {
