@@ -33,6 +33,10 @@ use crate::review_server::{with_host_rules, HostRules};
 /// One region's active warning, as the page shows it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ShownWarning {
+    /// The stamp of the frame that raised it (or last changed it), milliseconds on the session
+    /// clock: on `run`, the cameras' capture stamps (Unix time), so a page on the same machine can
+    /// measure capture-to-screen latency.
+    pub stamp_ms: f64,
     pub region: String,
     pub side: Option<String>,
     pub region_score: u8,
@@ -40,6 +44,10 @@ pub struct ShownWarning {
     pub angle_deg: Option<f64>,
     /// The warning's plain words with its advice.
     pub message: String,
+    /// The probability that the warning's band is right (`None`: not known).
+    pub band_probability: Option<f64>,
+    /// The band is less than 90 % sure: the page says "near the limit".
+    pub near_limit: bool,
 }
 
 /// Everything the page shows, as of one update.
@@ -196,12 +204,15 @@ fn fold_events(snap: &mut Snapshot, active: &mut ActiveWarnings, events: &[Sessi
 
 fn shown(w: &WarningEvent) -> ShownWarning {
     ShownWarning {
+        stamp_ms: w.stamp_nanos as f64 / 1e6,
         region: w.region.name().to_owned(),
         side: w.side.map(|s| s.name().to_owned()),
         region_score: w.region_score,
         action_level: w.action_level,
         angle_deg: w.angle_deg,
         message: w.message.clone(),
+        band_probability: w.band_probability,
+        near_limit: w.near_limit,
     }
 }
 
@@ -317,6 +328,8 @@ mod tests {
             angle_deg: Some(70.0),
             action_level: 3,
             uncertain: false,
+            band_probability: Some(0.99),
+            near_limit: false,
             message: "Trunk bent forward 70°".to_owned(),
         })
     }

@@ -354,6 +354,13 @@ pub struct ErgonomicState {
     pub left: RulaSide,
     pub right: RulaSide,
     pub action_level: u8,
+    /// Per region (upper arm, lower arm, wrist, neck, trunk), the probability that its band is
+    /// right; NaN where not known, empty when the side is not scored.
+    pub left_band_probability: Vec<f64>,
+    pub right_band_probability: Vec<f64>,
+    /// The stated standard deviation of those angles, degrees (NaN: not known).
+    pub left_angle_sd_deg: Vec<f64>,
+    pub right_angle_sd_deg: Vec<f64>,
 }
 
 impl RosMessage for ErgonomicState {
@@ -371,6 +378,10 @@ impl RosMessage for ErgonomicState {
         ("RulaSide", "left"),
         ("RulaSide", "right"),
         ("uint8", "action_level"),
+        ("float64[]", "left_band_probability"),
+        ("float64[]", "right_band_probability"),
+        ("float64[]", "left_angle_sd_deg"),
+        ("float64[]", "right_angle_sd_deg"),
     ];
 }
 
@@ -456,6 +467,8 @@ pub struct PostureWarning {
     pub action_level: u8,
     pub uncertain: bool,
     pub message: String,
+    pub band_probability: f64,
+    pub near_limit: bool,
 }
 
 impl RosMessage for PostureWarning {
@@ -474,6 +487,8 @@ impl RosMessage for PostureWarning {
         ("uint8", "action_level"),
         ("bool", "uncertain"),
         ("string", "message"),
+        ("float64", "band_probability"),
+        ("bool", "near_limit"),
     ];
 }
 

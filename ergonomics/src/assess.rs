@@ -28,6 +28,7 @@
 //! - Low tracking confidence (any landmark used below [`AssessmentConfig::min_confidence`]) marks the
 //!   score **uncertain**; it never changes (and so never lowers) the score.
 
+use crate::confidence::{region_confidences, ConfidenceModel, RegionConfidences};
 use std::collections::VecDeque;
 
 use ergocell_skeleton::{Landmark, Skeleton3};
@@ -178,6 +179,9 @@ pub struct AssessmentConfig {
     /// Each angle is scored as the median of its observations over this trailing window (default
     /// 0.5 s; 0 = this frame only). See [`AngleSmoother`].
     pub smoothing_window_nanos: i64,
+    /// How the stated spread of each region's angle follows from the fused skeleton's
+    /// ([`crate::confidence`]).
+    pub confidence: ConfidenceModel,
 }
 
 impl AssessmentConfig {
@@ -191,6 +195,7 @@ impl AssessmentConfig {
             task: TaskConfig::default(),
             muscle: MuscleUseConfig::default(),
             smoothing_window_nanos: DEFAULT_SMOOTHING_WINDOW_NANOS,
+            confidence: ConfidenceModel::default(),
         }
     }
 }
@@ -439,6 +444,9 @@ pub struct SideAssessment {
     /// REBA for the same side and frame, from the same angles (held, smoothed and sourced alike) plus
     /// the knees. See [`RebaAssessment`].
     pub reba: RebaAssessment,
+    /// How sure each region's score is: its angle's stated spread and the probability that the
+    /// band is right ([`crate::confidence`]).
+    pub confidence: RegionConfidences,
 }
 
 /// One side's REBA (Hignett & McAtamney 2000, [`crate::reba`]) beside its RULA, from the same
@@ -634,6 +642,7 @@ fn merge(held: Option<f64>, now: Option<f64>) -> (Option<f64>, InputSource) {
 
 impl RulaAssessor {
     pub fn new(config: AssessmentConfig) -> Result<Self, ErgonomicsError> {
+        config.confidence.validate()?;
         for (field, v) in [
             (
                 "task.force_load_score_arm_wrist",
@@ -970,7 +979,7 @@ impl RulaAssessor {
                 uncertain: !reba_reasons.is_empty(),
                 uncertain_reasons: reba_reasons,
             };
-            let assessment = SideAssessment {
+            let mut assessment = SideAssessment {
                 side,
                 input,
                 scores: result.scores,
@@ -981,7 +990,10 @@ impl RulaAssessor {
                 uncertain: !reasons.is_empty(),
                 uncertain_reasons: reasons,
                 reba,
+                confidence: RegionConfidences::default(),
             };
+            assessment.confidence =
+                region_confidences(skeleton, &assessment, &self.config.confidence);
             match side {
                 Side::Left => out.left = Some(assessment),
                 Side::Right => out.right = Some(assessment),

@@ -33,6 +33,7 @@
 pub mod activity;
 pub mod angles;
 pub mod assess;
+pub mod confidence;
 pub mod export;
 pub mod height;
 pub mod pose;
@@ -91,6 +92,13 @@ pub enum ErgonomicsError {
     /// The configured up vector has no direction.
     #[error("up vector ({x}, {y}, {z}) has zero or non-finite length")]
     DegenerateUp { x: f64, y: f64, z: f64 },
+    /// A parameter of the confidence model is negative or not finite.
+    #[error("confidence model: the {region}'s {parameter} is {value}: must be finite and >= 0")]
+    BadConfidenceModel {
+        region: &'static str,
+        parameter: &'static str,
+        value: f64,
+    },
     /// Frames must come in time order.
     #[error("frame at {got} ns arrived after a frame at {previous} ns: time went backwards")]
     TimeWentBackwards { previous: i64, got: i64 },

@@ -38,6 +38,7 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 
 use crate::assess::{BodyRegion, FrameAssessment, InputSource};
+use crate::confidence::SURE_PROBABILITY;
 use crate::rula::{
     action_level_meaning, legs_score, lower_arm_score, neck_score, trunk_score, upper_arm_score,
     wrist_score, RulaInput,
@@ -96,6 +97,13 @@ pub struct WarningEvent {
     pub action_level: u8,
     /// Whether the frame's score was uncertain (low confidence or held inputs).
     pub uncertain: bool,
+    /// The probability that the region's band at the event is right (its angle's, from the fused
+    /// skeleton's spread, [`crate::confidence`]); `None` for the legs and an angle not measured.
+    pub band_probability: Option<f64>,
+    /// A warning raised or changed while its band is less than
+    /// [`crate::confidence::SURE_PROBABILITY`] sure: the posture is near the band's limit, and the
+    /// operator is told so.
+    pub near_limit: bool,
     pub message: String,
 }
 
@@ -385,6 +393,8 @@ impl WarningTracker {
                             action_level_meaning(action_level)
                         ),
                     };
+                    let band_probability =
+                        assessment.confidence.get(*region).map(|c| c.probability);
                     events.push(WarningEvent {
                         stamp_nanos: frame.stamp_nanos,
                         kind,
@@ -394,6 +404,9 @@ impl WarningTracker {
                         angle_deg: angle,
                         action_level,
                         uncertain: assessment.uncertain,
+                        band_probability,
+                        near_limit: kind != WarningKind::Cleared
+                            && band_probability.is_some_and(|p| p < SURE_PROBABILITY),
                         message,
                     });
                 }

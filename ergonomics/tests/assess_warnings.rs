@@ -537,6 +537,7 @@ mod arbitrary_skeletons {
                         confidence: c,
                         reprojection_error_px: None,
                         views: 2,
+                        position_sd_m: None,
                     })
                 })
                 .collect();

@@ -211,6 +211,7 @@ mod tests {
                     confidence: 0.9,
                     reprojection_error_px: None,
                     views: 2,
+                    position_sd_m: None,
                 })
             })
             .collect();

@@ -330,6 +330,7 @@ impl FusionEngine {
                     let used = Used {
                         obs: &obs[lm.index()],
                         mask: masks[lm.index()],
+                        covariance: covariance[lm.index()],
                     };
                     self.set(&mut skeleton, lm, p, &used)?;
                 }
@@ -350,7 +351,11 @@ impl FusionEngine {
                             } else {
                                 (1u64 << o.len()) - 1
                             };
-                            let used = Used { obs: o, mask };
+                            let used = Used {
+                                obs: o,
+                                mask,
+                                covariance: None,
+                            };
                             self.set(&mut skeleton, lm, p, &used)?;
                         }
                     }
@@ -809,6 +814,12 @@ impl FusionEngine {
             confidence: if conf > 0.0 { conf2 / conf } else { 0.0 }.clamp(0.0, 1.0),
             reprojection_error_px: Some((sq / f64::from(n)).sqrt()),
             views: n,
+            // per axis: the covariance's mean variance (a finite covariance's trace is ≥ 0 up to
+            // rounding; the clamp keeps a rounding-negative trace from becoming NaN)
+            position_sd_m: used
+                .covariance
+                .map(|c| (c.trace() / 3.0).max(0.0).sqrt())
+                .filter(|v| v.is_finite()),
         };
         skeleton
             .set(lm, Some(estimate))
@@ -856,6 +867,8 @@ struct Used<'a> {
     obs: &'a [Obs],
     /// Bit `i`: `obs[i]` was used.
     mask: u64,
+    /// The triangulation's covariance of the point, m² (none for the paper's fusion).
+    covariance: Option<Matrix3<f64>>,
 }
 
 /// `(L̃ᵀL̃)⁻¹L̃ᵀ` for one topology: rows are the `n` observed landmarks then the `m` cameras.

@@ -238,6 +238,7 @@ fn read_csv(text: &str, source_name: &str) -> Result<Vec<Skeleton3>> {
             confidence: row.confidence,
             reprojection_error_px: row.reprojection_error_px,
             views: row.views,
+            position_sd_m: None,
         };
         skeleton
             .set(lm, Some(e))
@@ -327,6 +328,7 @@ fn read_trc(text: &str, source_name: &str) -> Result<Vec<Skeleton3>> {
                 confidence: 1.0,
                 reprojection_error_px: None,
                 views: 0,
+                position_sd_m: None,
             };
             s.set(*lm, Some(e))
                 .map_err(|err| parse_err(source_name, format!("line {}", line_no + 6), err))?;
@@ -354,6 +356,7 @@ mod tests {
                         confidence: 0.75,
                         reprojection_error_px: Some(1.5),
                         views: 3,
+                        position_sd_m: None,
                     };
                     s.set(*lm, Some(e)).unwrap();
                 }
@@ -409,6 +412,7 @@ mod tests {
             confidence: 0.75,
             reprojection_error_px: None,
             views: 2,
+            position_sd_m: None,
         };
         rec[1].set(Landmark::LeftWrist, Some(far)).unwrap();
         for format in [

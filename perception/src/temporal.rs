@@ -277,6 +277,7 @@ mod tests {
                 confidence: 1.0,
                 reprojection_error_px: None,
                 views: 2,
+                position_sd_m: None,
             }),
         )
         .unwrap();

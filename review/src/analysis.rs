@@ -168,6 +168,11 @@ pub struct Frames {
     /// Each side's REBA score (1..=15) of the frame; `None` when not scored or not recorded.
     pub reba_left: Vec<Option<u8>>,
     pub reba_right: Vec<Option<u8>>,
+    /// How sure each region's band is, per side and frame: the probability that the angle's band
+    /// is right (two decimals), in the order upper arm, lower arm, wrist, neck, trunk; `None` where
+    /// not known. An empty row when the side was not scored or the recording predates it.
+    pub band_left: Vec<Vec<Option<f64>>>,
+    pub band_right: Vec<Vec<Option<f64>>>,
 }
 
 /// The robot as recorded: its TCP and the handover point (`/ergocell/robot_markers`), the legs it was
@@ -245,6 +250,11 @@ pub struct Warning {
     pub score: u8,
     pub action_level: u8,
     pub message: String,
+    /// The probability that the warning's band was right when it was raised, changed or cleared;
+    /// `None` when not known (the legs, a recording made before it).
+    pub band_probability: Option<f64>,
+    /// Raised or changed while the band was less than 90 % sure.
+    pub near_limit: bool,
 }
 
 /// One body region's scores (or one side's grand score) over the time it was scored, from
@@ -485,6 +495,19 @@ pub(crate) fn analyse_with(
         let uncertain = |s: Option<&RulaSide>| s.and_then(scored).is_some_and(|s| s.uncertain);
         frames.uncertain_left.push(uncertain(e.map(|e| &e.left)));
         frames.uncertain_right.push(uncertain(e.map(|e| &e.right)));
+        let bands = |p: Option<&Vec<f64>>| -> Vec<Option<f64>> {
+            p.map_or_else(Vec::new, |p| {
+                p.iter()
+                    .map(|v| (v.is_finite() && (0.0..=1.0).contains(v)).then(|| round_to(*v, 2)))
+                    .collect()
+            })
+        };
+        frames
+            .band_left
+            .push(bands(e.map(|e| &e.left_band_probability)));
+        frames
+            .band_right
+            .push(bands(e.map(|e| &e.right_band_probability)));
     }
     let (summary, angles, overview) = if let Some(w) = whole {
         problems.extend(w.problems);
@@ -543,6 +566,10 @@ pub(crate) fn analyse_with(
                 score: w.message.region_score,
                 action_level: w.message.action_level,
                 message: w.message.message.clone(),
+                band_probability: Some(w.message.band_probability)
+                    .filter(|p| p.is_finite() && (0.0..=1.0).contains(p))
+                    .map(|p| round_to(p, 3)),
+                near_limit: w.message.near_limit,
             })
             .collect(),
         regions,

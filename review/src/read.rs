@@ -555,9 +555,9 @@ impl<'v, V: Visit> Reader<'v, V> {
         }
         let outcome = match topic {
             topics::OPERATOR_POSE => take(schema, data, t).map(Decoded::Pose),
-            topics::ERGONOMICS => take(schema, data, t).map(Decoded::Ergonomics),
+            topics::ERGONOMICS => take_ergonomic_state(schema, data, t).map(Decoded::Ergonomics),
             topics::REBA => take(schema, data, t).map(Decoded::Reba),
-            topics::WARNINGS => take(schema, data, t).map(Decoded::Warning),
+            topics::WARNINGS => take_posture_warning(schema, data, t).map(Decoded::Warning),
             topics::SESSION_STATE => take_session_state(schema, data, t).map(Decoded::State),
             topics::ROBOT_MARKERS => take(schema, data, t).map(Decoded::RobotMarkers),
             topics::JOINT_TRAJECTORY => take(schema, data, t).map(Decoded::Trajectory),
@@ -744,6 +744,89 @@ fn take_session_state(
             parts_taken: 0,
             last_part_hand: String::new(),
             last_part_closest_m: f64::NAN,
+        },
+    })
+}
+
+/// `ErgonomicState` as recorded before it carried how sure each region's band is: such recordings
+/// stay reviewable, their confidences unknown (empty).
+#[derive(serde::Deserialize)]
+#[cfg_attr(test, derive(serde::Serialize))]
+struct ErgonomicStateWithoutConfidence {
+    header: ergocell_bridge::msg::Header,
+    left: ergocell_bridge::msg::RulaSide,
+    right: ergocell_bridge::msg::RulaSide,
+    action_level: u8,
+}
+
+/// Decodes an `ErgonomicState`, or one of the layout before the band probabilities.
+fn take_ergonomic_state(
+    schema: &str,
+    data: &[u8],
+    log_time_nanos: u64,
+) -> Result<Stamped<ErgonomicState>, String> {
+    let current = take(schema, data, log_time_nanos);
+    if current.is_ok() || schema != ErgonomicState::type_name() {
+        return current;
+    }
+    let Ok(old) = cdr::decode::<ErgonomicStateWithoutConfidence>(data) else {
+        return current;
+    };
+    Ok(Stamped {
+        log_time_nanos,
+        message: ErgonomicState {
+            header: old.header,
+            left: old.left,
+            right: old.right,
+            action_level: old.action_level,
+            ..ErgonomicState::default()
+        },
+    })
+}
+
+/// `PostureWarning` as recorded before it carried its band's probability: such recordings stay
+/// reviewable, the probability unknown (NaN) and never "near the limit".
+#[derive(serde::Deserialize)]
+#[cfg_attr(test, derive(serde::Serialize))]
+struct PostureWarningWithoutConfidence {
+    header: ergocell_bridge::msg::Header,
+    kind: String,
+    region: String,
+    side: String,
+    region_score: u8,
+    angle_deg: f64,
+    action_level: u8,
+    uncertain: bool,
+    message: String,
+}
+
+/// Decodes a `PostureWarning`, or one of the layout before the band's probability.
+fn take_posture_warning(
+    schema: &str,
+    data: &[u8],
+    log_time_nanos: u64,
+) -> Result<Stamped<PostureWarning>, String> {
+    let current = take(schema, data, log_time_nanos);
+    if current.is_ok() || schema != PostureWarning::type_name() {
+        return current;
+    }
+    let Ok(old) = cdr::decode::<PostureWarningWithoutConfidence>(data) else {
+        return current;
+    };
+    Ok(Stamped {
+        log_time_nanos,
+        message: PostureWarning {
+            header: old.header,
+            kind: old.kind,
+            region: old.region,
+            side: old.side,
+            region_score: old.region_score,
+            angle_deg: old.angle_deg,
+            action_level: old.action_level,
+            uncertain: old.uncertain,
+            message: old.message,
+            band_probability: f64::NAN,
+            near_limit: false,
         },
     })
 }
@@ -948,6 +1031,69 @@ mod tests {
             state: name.to_owned(),
             ..SessionState::default()
         }
+    }
+
+    /// Recordings made before the ergonomic state and the warnings carried their confidence still
+    /// read (confidence unknown); the current layout reads its own; a cut payload is refused.
+    #[test]
+    fn ergonomics_and_warnings_without_confidence_still_read() {
+        let side = ergocell_bridge::msg::RulaSide {
+            scored: true,
+            final_score: 5,
+            action_level: 3,
+            ..Default::default()
+        };
+        let old = cdr::encode(&ErgonomicStateWithoutConfidence {
+            header: ergocell_bridge::msg::Header::default(),
+            left: side,
+            right: ergocell_bridge::msg::RulaSide::default(),
+            action_level: 3,
+        })
+        .unwrap();
+        let schema = ErgonomicState::type_name();
+        let read = take_ergonomic_state(&schema, &old, 1).unwrap().message;
+        assert_eq!((read.left, read.action_level), (side, 3));
+        assert!(read.left_band_probability.is_empty() && read.left_angle_sd_deg.is_empty());
+        let now = ErgonomicState {
+            left: side,
+            left_band_probability: vec![0.25, 0.5, f64::NAN, 0.75, 1.0],
+            left_angle_sd_deg: vec![4.0; 5],
+            ..ErgonomicState::default()
+        };
+        let read = take_ergonomic_state(&schema, &cdr::encode(&now).unwrap(), 2)
+            .unwrap()
+            .message;
+        assert_eq!(read.left_band_probability[3], 0.75);
+        assert!(read.left_band_probability[2].is_nan());
+        assert!(take_ergonomic_state(&schema, &old[..old.len() - 3], 3).is_err());
+
+        let old = cdr::encode(&PostureWarningWithoutConfidence {
+            header: ergocell_bridge::msg::Header::default(),
+            kind: "raised".into(),
+            region: "neck".into(),
+            side: String::new(),
+            region_score: 3,
+            angle_deg: 24.0,
+            action_level: 3,
+            uncertain: false,
+            message: "m".into(),
+        })
+        .unwrap();
+        let schema = PostureWarning::type_name();
+        let read = take_posture_warning(&schema, &old, 4).unwrap().message;
+        assert_eq!((read.region.as_str(), read.region_score), ("neck", 3));
+        assert!(read.band_probability.is_nan() && !read.near_limit);
+        let now = PostureWarning {
+            region: "trunk".into(),
+            band_probability: 0.62,
+            near_limit: true,
+            ..PostureWarning::default()
+        };
+        let read = take_posture_warning(&schema, &cdr::encode(&now).unwrap(), 5)
+            .unwrap()
+            .message;
+        assert_eq!((read.band_probability, read.near_limit), (0.62, true));
+        assert!(take_posture_warning(&schema, &old[..old.len() - 3], 6).is_err());
     }
 
     /// A recording made before `ControllerEvent` carried `leg_id` still reads: the leg's constant

@@ -476,11 +476,26 @@ pub fn robot_markers_message(
 
 /// The per-frame RULA state.
 pub fn ergonomic_message(a: &FrameAssessment) -> ErgonomicState {
+    use ergocell_ergonomics::confidence::{BandConfidence, ANGLED_REGIONS};
+    // per angled region, one field of its confidence; NaN where not known, empty when not scored
+    let per_region = |s: Option<&SideAssessment>, f: fn(&BandConfidence) -> f64| -> Vec<f64> {
+        s.map_or_else(Vec::new, |s| {
+            ANGLED_REGIONS
+                .iter()
+                .map(|r| s.confidence.get(*r).map_or(f64::NAN, |c| f(&c)))
+                .collect()
+        })
+    };
+    let (l, r) = (a.left.as_ref(), a.right.as_ref());
     ErgonomicState {
         header: Header::new(a.stamp_nanos, "world"),
-        left: side_message(a.left.as_ref()),
-        right: side_message(a.right.as_ref()),
+        left: side_message(l),
+        right: side_message(r),
         action_level: a.headline().map_or(0, |h| h.scores.action_level),
+        left_band_probability: per_region(l, |c| c.probability),
+        right_band_probability: per_region(r, |c| c.probability),
+        left_angle_sd_deg: per_region(l, |c| c.sd_deg),
+        right_angle_sd_deg: per_region(r, |c| c.sd_deg),
     }
 }
 
@@ -537,6 +552,8 @@ pub fn warning_message(w: &WarningEvent) -> PostureWarning {
         action_level: w.action_level,
         uncertain: w.uncertain,
         message: w.message.clone(),
+        band_probability: w.band_probability.unwrap_or(f64::NAN),
+        near_limit: w.near_limit,
     }
 }
 

@@ -165,10 +165,10 @@ fn simulate(
 
 /// The assessor for the ground truth: the true angles of each instant, unsmoothed (the pipeline's
 /// assessor keeps the cell controller's defaults, smoothing included, and its lag counts against it).
-pub(crate) fn truth_config(cfg: AssessmentConfig) -> AssessmentConfig {
+pub(crate) fn truth_config(cfg: &AssessmentConfig) -> AssessmentConfig {
     AssessmentConfig {
         smoothing_window_nanos: 0,
-        ..cfg
+        ..*cfg
     }
 }
 
@@ -445,7 +445,7 @@ pub(crate) fn pipeline_headline(tracked: &TrackedFrame) -> Result<Option<Scored>
 
 /// The ground truth's headline of every tick (assessed in tick order, unsmoothed).
 fn truth_headlines(ticks: &[Tick]) -> Result<Vec<Option<Scored>>, SimError> {
-    let mut truth = RulaAssessor::new(truth_config(AssessmentConfig::new(up()?)))?;
+    let mut truth = RulaAssessor::new(truth_config(&AssessmentConfig::new(up()?)))?;
     ticks
         .iter()
         .map(|t| Ok(scored(&truth.assess(&t.truth.skeleton)?)))
@@ -455,7 +455,7 @@ fn truth_headlines(ticks: &[Tick]) -> Result<Vec<Option<Scored>>, SimError> {
 /// Warnings the controller's warning tracker raises on the truth's assessments (unsmoothed, every
 /// tick).
 fn true_warnings_raised(ticks: &[Tick]) -> Result<Vec<RaisedWarning>, SimError> {
-    let mut truth = RulaAssessor::new(truth_config(AssessmentConfig::new(up()?)))?;
+    let mut truth = RulaAssessor::new(truth_config(&AssessmentConfig::new(up()?)))?;
     let mut warnings = WarningTracker::new(WarningConfig::default());
     let mut raised = Vec::new();
     for t in ticks {

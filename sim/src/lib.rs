@@ -57,6 +57,7 @@
 //! # Ok::<(), ergocell_sim::SimError>(())
 //! ```
 
+pub mod band_reliability;
 pub mod body;
 pub mod cameras;
 pub mod detector;

@@ -28,6 +28,8 @@
 //! and Cohen's κ over the frames at the station), as [`crate::experiments::rula_agreement`] counts it.
 //! Pure: values in, values out.
 
+use crate::band_reliability::{frame_samples, BandSample, Reliability, FIT_STRIDE};
+use ergocell_ergonomics::confidence::SURE_PROBABILITY;
 use std::collections::BTreeMap;
 
 use ergocell_cell::{Pipeline, PipelineConfig};
@@ -139,6 +141,11 @@ pub struct WarningTrust {
     /// The fixed lag the controller ran with (seconds either side; absent: the causal filter).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fixed_lag_s: Option<f64>,
+    /// Whether the controller's stated band probabilities were right, at the station.
+    pub reliability: Reliability,
+    /// Every [`crate::band_reliability::FIT_STRIDE`]-th sample of `reliability`, for the fit.
+    #[serde(skip)]
+    pub band_samples: Vec<BandSample>,
 }
 
 /// A controller warning the truth did not raise.
@@ -406,6 +413,8 @@ pub fn warning_trust(
     let mut level = vec![vec![0usize; 4]; 4];
     let (mut frames, mut nanos) = (0usize, 0i64);
     let mut tasks: BTreeMap<String, usize> = BTreeMap::new();
+    let mut reliability = Reliability::default();
+    let mut band_samples = Vec::new();
     for (i, &h) in statures_m.iter().enumerate() {
         let seed = session_seed(setup.seed, i);
         let class = HeightClass::of(h, &ClassThresholds::default());
@@ -431,7 +440,7 @@ pub fn warning_trust(
         if let (Some(first), Some(last)) = (ticks.first(), ticks.last()) {
             nanos += last.frame.stamp_nanos - first.frame.stamp_nanos + period;
         }
-        let mut assessor = RulaAssessor::new(truth_config(AssessmentConfig::new(up()?)))?;
+        let mut assessor = RulaAssessor::new(truth_config(&AssessmentConfig::new(up()?)))?;
         let truth: Vec<FrameAssessment> = ticks
             .iter()
             .map(|t| assessor.assess(&t.truth.skeleton))
@@ -439,6 +448,7 @@ pub fn warning_trust(
         let truth_scores: Vec<Option<Scored>> = truth.iter().map(scored).collect();
         let mut pipeline = Intervals::default();
         let mut scores: Vec<(usize, Option<Scored>)> = Vec::new();
+        let mut sample_index = 0usize;
         // As run_pipeline_with, knowing when each frame is released (what the operator sees when).
         let mut p = Pipeline::new(setup.rig.clone(), config.clone())?;
         for tick in &ticks {
@@ -448,6 +458,15 @@ pub fn warning_trust(
                     pipeline.feed(&tracked.warnings, Some(now));
                     let k = nearest_tick(&ticks, tracked.skeleton.stamp_nanos);
                     scores.push((k, pipeline_headline(tracked)?));
+                    if let (Ok(a), true) = (&tracked.assessment, at_station(ticks[k].truth.phase)) {
+                        for (sample, stated) in frame_samples(a, &truth[k]) {
+                            reliability.add(sample.region, stated, sample.right());
+                            if sample_index.is_multiple_of(FIT_STRIDE) {
+                                band_samples.push(sample);
+                            }
+                            sample_index += 1;
+                        }
+                    }
                 }
             }
         }
@@ -504,6 +523,8 @@ pub fn warning_trust(
         tasks,
         statures_m: statures_m.to_vec(),
         fixed_lag_s: config.fixed_lag_s,
+        reliability,
+        band_samples,
     })
 }
 
@@ -522,6 +543,8 @@ pub struct WarningTrustSeeds {
     pub latency_max_s: f64,
     pub latency_bound_s: f64,
     pub goals: Vec<Goal>,
+    /// The stated band probabilities' reliability, pooled over the seeds.
+    pub reliability: Reliability,
     /// Each seed's result.
     pub per_seed: Vec<WarningTrust>,
 }
@@ -540,7 +563,9 @@ pub fn over_seeds(seeds: &[u64], runs: Vec<WarningTrust>) -> WarningTrustSeeds {
         ..RegionWarnings::default()
     };
     let (mut false_warnings, mut hours) = (0usize, 0.0);
+    let mut reliability = Reliability::default();
     for run in &runs {
+        reliability.merge(&run.reliability);
         for (p, r) in regions
             .iter_mut()
             .chain([&mut all])
@@ -597,6 +622,24 @@ pub fn over_seeds(seeds: &[u64], runs: Vec<WarningTrust>) -> WarningTrustSeeds {
             let e = runs[i].action_level.exact;
             (e.is_nan() || e < crate::seeds::RULA_EXACT_GOAL).then(|| format!("exact {e:.3}"))
         }),
+        Goal::judge(
+            "band probabilities calibrated: every bin of ≥ 500 samples within 5 points",
+            seeds,
+            |i| {
+                let off = runs[i].reliability.miscalibrated();
+                (!off.is_empty()).then(|| off.join("; "))
+            },
+        ),
+        Goal::judge(
+            "of the samples stated ≥ 90 % sure, ≥ 90 % right",
+            seeds,
+            |i| {
+                let r = &runs[i].reliability;
+                let share = r.sure_share();
+                (share.is_nan() || share < SURE_PROBABILITY)
+                    .then(|| format!("{} of {} right ({:.3})", r.sure_right, r.sure, share))
+            },
+        ),
     ];
     WarningTrustSeeds {
         seeds: seeds.to_vec(),
@@ -614,6 +657,7 @@ pub fn over_seeds(seeds: &[u64], runs: Vec<WarningTrust>) -> WarningTrustSeeds {
         latency_max_s: sorted.last().copied().unwrap_or(f64::NAN),
         latency_bound_s: bound,
         goals,
+        reliability,
         per_seed: runs,
     }
 }

@@ -352,6 +352,12 @@ pub struct LandmarkEstimate {
     pub reprojection_error_px: Option<f64>,
     /// Number of camera views that contributed.
     pub views: u32,
+    /// Standard deviation of the position per axis, metres: `sqrt(trace(Σ)/3)` of the fusion's
+    /// covariance for this landmark (the triangulation's noise model over the views it kept). What
+    /// the joint angles' uncertainty is propagated from. `None` when not known (a ground-truth
+    /// skeleton, a file without it, the paper's fusion).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub position_sd_m: Option<f64>,
 }
 
 /// Errors building a skeleton from outside data.
@@ -369,6 +375,8 @@ pub enum SkeletonError {
     },
     #[error("landmark {landmark} has confidence {confidence} outside 0..=1")]
     BadConfidence { landmark: Landmark, confidence: f64 },
+    #[error("landmark {landmark} has a position standard deviation of {sd_m} m (must be finite and >= 0)")]
+    BadSpread { landmark: Landmark, sd_m: f64 },
 }
 
 /// The fused 3D skeleton of one frame: one optional estimate per BlazePose landmark.
@@ -440,6 +448,7 @@ impl Skeleton3 {
                     confidence: 1.0,
                     reprojection_error_px: None,
                     views: 0,
+                    position_sd_m: None,
                 })
             })
             .collect();
@@ -512,6 +521,9 @@ fn validate(landmark: Landmark, e: &LandmarkEstimate) -> Result<(), SkeletonErro
             landmark,
             confidence: e.confidence,
         });
+    }
+    if let Some(sd_m) = e.position_sd_m.filter(|v| !(v.is_finite() && *v >= 0.0)) {
+        return Err(SkeletonError::BadSpread { landmark, sd_m });
     }
     Ok(())
 }
@@ -636,6 +648,7 @@ mod tests {
             confidence: 0.5,
             reprojection_error_px: Some(0.0),
             views: 2,
+            position_sd_m: None,
         };
         assert!(matches!(
             s.set(Landmark::Nose, Some(bad)),

@@ -127,6 +127,10 @@ pub struct Common {
     /// `default` for the shipped one.
     #[arg(long, global = true, default_value = ergocell_sim::tasks::DEFAULT_MIX_NAME)]
     pub tasks: String,
+    /// warnings: also fit the confidence model (each region's scale and floor of its angle's
+    /// stated spread) to these seeds' samples and print it. Fit on tuning seeds only.
+    #[arg(long, global = true)]
+    pub fit_confidence: bool,
     /// Print the numbers as one JSON object on stdout instead of a table.
     #[arg(long, global = true)]
     pub json: bool,
@@ -594,6 +598,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         return Err(
             UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
         );
+    }
+    if c.fit_confidence && !matches!(args.experiment, Experiment::Warnings) {
+        return Err(UsageError("--fit-confidence applies to warnings only".to_owned()).into());
     }
     if let Some(w) = c.fixed_lag_s {
         if !matches!(

@@ -6,7 +6,9 @@ use std::path::PathBuf;
 
 use anyhow::Context;
 use ergocell_cell::PipelineConfig;
+use ergocell_ergonomics::confidence::{ConfidenceModel, ANGLED_REGIONS};
 use ergocell_ergonomics::UpVector;
+use ergocell_sim::band_reliability::{self, Reliability, FIT_STRIDE, MIN_BIN_SAMPLES};
 use ergocell_sim::experiments::Setup;
 use ergocell_sim::tasks::{TaskMix, DEFAULT_MIX_NAME};
 use ergocell_sim::warning_trust::{self, RegionWarnings, WarningTrustSeeds};
@@ -95,9 +97,20 @@ pub fn run(c: &Common) -> anyhow::Result<()> {
         pb.inc(1);
     }
     pb.finish_and_clear();
+    let fitted = c.fit_confidence.then(|| {
+        let samples: Vec<_> = runs
+            .iter()
+            .flat_map(|r| r.band_samples.iter().copied())
+            .collect();
+        band_reliability::fit(&samples, &config.assessment.confidence)
+    });
     let sum = warning_trust::over_seeds(&seeds, runs);
     if !c.json {
         print_summary(c, &sum, &mix);
+        print_reliability(&sum.reliability);
+        if let Some((model, counts)) = &fitted {
+            print_fit(model, counts);
+        }
     }
     let figure = plot_latency(c, &sum, &c.out_dir.join(format!("{file_stem}_latency.svg")))?;
     let setup_json = serde_json::json!({
@@ -109,6 +122,7 @@ pub fn run(c: &Common) -> anyhow::Result<()> {
         "mix": mix,
         "handovers_m": handovers,
         "operators_m": operators,
+        "confidence_model": config.assessment.confidence,
     });
     write_result(
         c,
@@ -147,6 +161,71 @@ fn print_summary(c: &Common, sum: &WarningTrustSeeds, mix: &TaskMix) {
         sum.latency_bound_s
     );
     print_goals(&sum.goals);
+}
+
+/// The reliability table of the stated band probabilities, pooled over the seeds.
+fn print_reliability(r: &Reliability) {
+    println!(
+        "  How sure the bands are: stated probability against the share right (region × side × frame at the station; judged from {MIN_BIN_SAMPLES} samples)"
+    );
+    println!(
+        "  {:<9} {:>9} {:>7} {:>8}",
+        "stated", "samples", "mean", "observed"
+    );
+    for b in &r.bins {
+        if b.samples == 0 {
+            continue;
+        }
+        println!(
+            "  {:.1}–{:.1}  {:>9} {:>7.3} {:>8.3}{}",
+            b.lo,
+            b.hi,
+            b.samples,
+            b.stated(),
+            b.observed(),
+            match b.calibrated() {
+                Some(true) => "",
+                Some(false) => "  off by more than 5 points",
+                None => "  (too few to judge)",
+            }
+        );
+    }
+    println!(
+        "  stated ≥ 90 % sure: {} samples, {:.1} % right",
+        r.sure,
+        100.0 * r.sure_share()
+    );
+    let shares: Vec<String> = ANGLED_REGIONS
+        .iter()
+        .zip(r.region_samples.iter().zip(&r.region_right))
+        .map(|(region, (n, right))| {
+            format!(
+                "{} {:.1} %",
+                region.name().replace('_', " "),
+                100.0 * *right as f64 / *n as f64
+            )
+        })
+        .collect();
+    println!("  band right, per region: {}", shares.join(", "));
+}
+
+/// The fitted confidence model, as `ConfidenceModel`'s default would hold it.
+fn print_fit(model: &ConfidenceModel, counts: &[usize]) {
+    println!("  Confidence model fitted to these seeds (every {FIT_STRIDE}th sample):");
+    for (i, region) in ANGLED_REGIONS.iter().enumerate() {
+        let points: Vec<String> = model.recalibration[i]
+            .iter()
+            .map(|[m, s]| format!("[{m:.4}, {s:.4}]"))
+            .collect();
+        println!(
+            "    {:<10} scale {:.2}, floor {:.2}° ({} samples); recalibration [{}]",
+            region.name(),
+            model.scale[i],
+            model.floor_rad[i].to_degrees(),
+            counts[i],
+            points.join(", ")
+        );
+    }
 }
 
 /// The latency's cumulative distribution, pooled over the seeds, against the goal.

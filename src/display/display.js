@@ -23,6 +23,9 @@
     [15, 17], [15, 19], [17, 19], [16, 18], [16, 20], [18, 20], [0, 11], [0, 12]];
   const $ = (id) => document.getElementById(id);
   window.__latencies = [];
+  // per warning first shown: from the capture stamp of the frame that raised it to the screen
+  window.__warningLatencies = [];
+  const shownWarnings = new Set();
   window.__snapshots = 0;
   let lastRaised = 0;
 
@@ -49,6 +52,14 @@
       li.dataset.level = String(w.action_level);
       li.dataset.region = w.region;
       li.textContent = w.message;
+      if (w.near_limit) {
+        // the band is less than 90 % sure: the posture is close to the band's edge
+        const near = document.createElement("span");
+        near.className = "near";
+        near.textContent = " — near the limit";
+        li.appendChild(near);
+        li.dataset.near = "true";
+      }
       if (fresh && w.message === fresh) li.className = "fresh";
       list.appendChild(li);
     }
@@ -86,8 +97,16 @@
       render(s);
       window.__snapshots += 1;
       // on screen: after the next paint
+      const fresh = (s.warnings || []).filter((w) => {
+        const key = `${w.region}|${w.side}|${w.stamp_ms}`;
+        if (shownWarnings.has(key)) return false;
+        shownWarnings.add(key);
+        return true;
+      });
       requestAnimationFrame(() => setTimeout(() => {
-        window.__latencies.push(Date.now() - s.sent_unix_ms);
+        const now = Date.now();
+        window.__latencies.push(now - s.sent_unix_ms);
+        for (const w of fresh) window.__warningLatencies.push({ region: w.region, side: w.side, ms: now - w.stamp_ms });
       }, 0));
     };
     source.onerror = () => {

@@ -81,7 +81,17 @@ await main(async (b) => {
   }
   pass(`the class decision is in the session facts: ${JSON.stringify(facts.match(/Height class.*?(boundary[^A-Z]*|class)(?=[A-Z])/s)?.[0] ?? '')}`);
 
-  // 7. the screenshot.
+  // 7. how sure each score is: every warning says how sure its band was, and the frame's readout
+  // names its least sure region with its probability.
+  const sure = await page.$$eval('#warnings ol.events li:not(.muted)', (lis) => lis.map((li) => li.querySelector('.sure')?.textContent ?? null));
+  if (!sure.length) fail('the recording has no posture warning to check');
+  if (sure.some((t) => t === null)) fail(`a warning does not say how sure it is: ${JSON.stringify(sure)}`);
+  if (!sure.some((t) => /\d+ % sure/.test(t))) fail(`no warning states its band's probability: ${JSON.stringify(sure)}`);
+  const readoutSure = await page.textContent('#readout .sure').catch(() => null);
+  if (!readoutSure || !/^[a-z ]+ \d+ % sure$/.test(readoutSure)) fail(`the frame readout does not say how sure its scores are: ${JSON.stringify(readoutSure)}`);
+  pass(`each of the ${sure.length} warnings says how sure it is (e.g. "${sure.find((t) => /%/.test(t)).trim()}"); the frame readout: "${readoutSure}"`);
+
+  // 8. the screenshot.
   await page.mouse.move(5, 5);
   await page.waitForTimeout(200);
   await screenshot(b, shot);

@@ -85,6 +85,20 @@ export function legAt(legs, time) {
   return found;
 }
 
+/** Per frame, a row of band probabilities (numbers in 0..1 or null); a missing or malformed row: []. */
+function bandRows(a, n) {
+  const src = arr(a);
+  const out = new Array(n);
+  for (let i = 0; i < n; i++) {
+    const row = Array.isArray(src[i]) ? src[i] : [];
+    out[i] = row.map((v) => {
+      const x = num(v);
+      return x !== null && x >= 0 && x <= 1 ? x : null;
+    });
+  }
+  return out;
+}
+
 function column(a, n) {
   const src = arr(a);
   const out = new Array(n);
@@ -198,6 +212,9 @@ export function normalizeSession(s, index) {
     uncertainLeft: flags(frames.uncertain_left, n),
     uncertainRight: flags(frames.uncertain_right, n),
     hasUncertain: Array.isArray(frames.uncertain_left) || Array.isArray(frames.uncertain_right),
+    // How sure each region's band is, per frame (upper arm, lower arm, wrist, neck, trunk; absent in older data).
+    bandLeft: bandRows(frames.band_left, n),
+    bandRight: bandRows(frames.band_right, n),
     tcp,
     handover,
     warnings: arr(s.warnings).filter((w) => w && num(w.t) !== null).sort((a, b) => a.t - b.t),

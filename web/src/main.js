@@ -104,6 +104,17 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
 
 const ACTION_TEXT = ['not scored', 'acceptable', 'investigate further', 'investigate, change soon', 'investigate, change now'];
 
+const BAND_REGIONS = ['upper arm', 'lower arm', 'wrist', 'neck', 'trunk'];
+
+/** How sure a side's region bands are at one frame: the least sure one in words, every one in the tooltip. */
+function bandsHtml(name, bands) {
+  const known = (bands || []).map((p, i) => [BAND_REGIONS[i], p]).filter(([r, p]) => r && p != null);
+  if (!known.length) return '';
+  const [region, p] = known.reduce((a, b) => (b[1] < a[1] ? b : a));
+  const tip = `${name} side, probability that each region's band is right: ${known.map(([r, v]) => `${r} ${Math.round(v * 100)} %`).join(', ')}`;
+  return `<span class="sure${p < 0.9 ? ' near' : ''}" title="${esc(tip)}">${esc(region)} ${Math.round(p * 100)} % sure</span>`;
+}
+
 /** The RULA scores and session state at frame f, for the 3D view's corner. */
 function readoutHtml(s, f) {
   const g = (v) => (v == null ? '–' : v);
@@ -112,15 +123,15 @@ function readoutHtml(s, f) {
   let state = null;
   for (const st of s.facts.states) if (Number(st.t) <= t + 1e-9) state = st.state;
   const al = a == null ? '' : `<span class="al al${a}">action level ${a}${ACTION_TEXT[a] ? ` · ${ACTION_TEXT[a]}` : ''}</span>`;
-  const side = (name, letter, color, v, unc) => {
+  const side = (name, letter, color, v, unc, bands) => {
     const q = unc && v != null;
     const tip = q ? ` title="${name} score ${v} rests on low-confidence landmarks or held inputs (uncertain)"` : '';
-    return `<span class="gs${q ? ' unc' : ''}"${tip}><i style="background:${color}"></i>${letter} ${g(v)}${q ? '<span class="q">?</span>' : ''}</span>`;
+    return `<span class="gs${q ? ' unc' : ''}"${tip}><i style="background:${color}"></i>${letter} ${g(v)}${q ? '<span class="q">?</span>' : ''}</span>${v == null ? '' : bandsHtml(name, bands)}`;
   };
   const leg = legAt(s.robotLegs, t);
   const robot = leg ? `<span class="rl"><i style="background:${legColor(leg)}"></i>robot ${esc(leg.leg || 'leg')}</span>` : '';
   const reba = s.hasReba ? `<span class="st" title="REBA score (Hignett &amp; McAtamney 2000) per side, 1–15">REBA L ${g(s.rebaLeft[f])} · R ${g(s.rebaRight[f])}</span>` : '';
-  return `${side('Left', 'L', SERIES_COLORS.left, s.grandLeft[f], s.uncertainLeft[f])}${side('Right', 'R', SERIES_COLORS.right, s.grandRight[f], s.uncertainRight[f])}${al}${reba}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}${robot}`;
+  return `${side('Left', 'L', SERIES_COLORS.left, s.grandLeft[f], s.uncertainLeft[f], s.bandLeft[f])}${side('Right', 'R', SERIES_COLORS.right, s.grandRight[f], s.uncertainRight[f], s.bandRight[f])}${al}${reba}${state ? `<span class="st">${esc(String(state).replace(/_/g, ' '))}</span>` : ''}${robot}`;
 }
 
 function start(app, raw) {

@@ -138,12 +138,19 @@ export function renderRobot(el, sessions, onSeek) {
   wireSeek(el, onSeek);
 }
 
+/** How sure a warning's band was: its probability in words, "near the limit" below 90 %. */
+function sureText(w) {
+  const p = typeof w.band_probability === 'number' && Number.isFinite(w.band_probability) ? w.band_probability : null;
+  if (p === null) return ' <span class="sure muted">· how sure: not known</span>';
+  return ` <span class="sure${w.near_limit ? ' near' : ''}">· ${Math.round(p * 100)} % sure${w.near_limit ? ', near the limit' : ''}</span>`;
+}
+
 export function renderWarnings(el, sessions, onSeek) {
   const blocks = sessions.map((s, si) => {
     const items = s.warnings
       .map(
         (w) =>
-          `<li><button class="linkish" data-s="${si}" data-t="${w.t}"><span class="t">${fmt(w.t, 2)} s</span><span class="kind kind-${esc(w.kind)}">${esc(w.kind)}</span></button><span class="reason">${esc(w.message || `${w.side} ${w.region}`)}</span></li>`,
+          `<li><button class="linkish" data-s="${si}" data-t="${w.t}"><span class="t">${fmt(w.t, 2)} s</span><span class="kind kind-${esc(w.kind)}">${esc(w.kind)}</span></button><span class="reason">${esc(w.message || `${w.side} ${w.region}`)}${sureText(w)}</span></li>`,
       )
       .join('');
     const head = sessions.length > 1 ? `<h3><span class="sess-dot" style="background:${SESSION_COLORS[si]}"></span>${'AB'[si]} · ${esc(s.label)}</h3>` : '';
