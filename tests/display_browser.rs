@@ -2,7 +2,8 @@
 //! runs the session in real time; Debian's headless Chromium driven by Playwright (`web/e2e/
 //! display.e2e.mjs`) watches it: the state as it changes, a posture warning with its advice and
 //! colour, a reload that brings the picture back at once, and — the demo ended, a second one started
-//! on the same address — the page reconnecting by itself. It prints the event-to-screen latency of
+//! on the same address with the shipped task mix — the page reconnecting by itself and showing a
+//! warning raised and then cleared. It prints the event-to-screen latency of
 //! every update it rendered (measured, not asserted) and writes a screenshot (with
 //! `ERGOCELL_DISPLAY_SCREENSHOT=PATH`, there too: `docs/display.png` in the README).
 //!
@@ -28,8 +29,9 @@ fn tmp(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name)
 }
 
-/// A demo serving the display on `addr`; returns it and the URL it printed.
-fn demo(addr: &str, seed: u64, out: &Path) -> (Child, String) {
+/// A demo serving the display on `addr` (with the shipped task mix when `tasks`); returns it and the
+/// URL it printed.
+fn demo(addr: &str, seed: u64, out: &Path, tasks: bool) -> (Child, String) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_ergocell"))
         .current_dir(root())
         .args([
@@ -44,6 +46,11 @@ fn demo(addr: &str, seed: u64, out: &Path) -> (Child, String) {
         .arg(seed.to_string())
         .arg("--out")
         .arg(out)
+        .args(if tasks {
+            &["--tasks", "default"][..]
+        } else {
+            &[][..]
+        })
         .stdout(Stdio::piped())
         .stderr(Stdio::null())
         .spawn()
@@ -71,7 +78,7 @@ fn the_operator_display_shows_the_session_live_and_survives_reload_and_restart()
     if common::skip_browser_test() {
         return;
     }
-    let (mut first, url) = demo("127.0.0.1:0", 11, &tmp("display-1.mcap"));
+    let (mut first, url) = demo("127.0.0.1:0", 11, &tmp("display-1.mcap"), false);
     let shot = tmp("display.png");
     let node = Command::new("node")
         .current_dir(root())
@@ -79,6 +86,7 @@ fn the_operator_display_shows_the_session_live_and_survives_reload_and_restart()
         .arg(&url)
         .arg(&shot)
         .arg("restart")
+        .arg("tasks")
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -90,7 +98,8 @@ fn the_operator_display_shows_the_session_live_and_survives_reload_and_restart()
         .trim_start_matches("http://")
         .trim_end_matches('/')
         .to_owned();
-    let (mut second, _) = demo(&addr, 12, &tmp("display-2.mcap"));
+    // the second session runs the station's task mix: a warning raised and cleared on screen
+    let (mut second, _) = demo(&addr, 12, &tmp("display-2.mcap"), true);
     let out = node.wait_with_output().unwrap();
     let _ = second.kill();
     let _ = second.wait();

@@ -1,13 +1,15 @@
 // The operator display (`ergocell demo --display`) in headless Chromium:
-//   node web/e2e/display.e2e.mjs <url> <screenshot.png> [restart]
+//   node web/e2e/display.e2e.mjs <url> <screenshot.png> [restart [tasks]]
 // Checks: the page connects and shows the session's state as it changes; a posture warning appears
 // with its advice and the action level's colour, and the height class with its probability; after a reload the current state is back at once
 // (the server sends its snapshot on connect); with `restart`, when the server goes away the page says
 // so and, once a server is back on the same address, reconnects by itself. Prints the event-to-screen
 // latency (server send time → after the next paint, same machine clock) of every update it rendered.
+// With `tasks` (the restarted server runs the station's task mix), a warning is raised and then
+// cleared on screen: the region's line appears and goes away again.
 import { main, pass, fail, screenshot } from './lib.mjs';
 
-const [url, shot, restart] = process.argv.slice(2);
+const [url, shot, restart, tasks] = process.argv.slice(2);
 if (!url || !shot) {
   console.error('usage: node display.e2e.mjs <url> <screenshot.png> [restart]');
   process.exit(2);
@@ -70,5 +72,18 @@ await main(async (b) => {
     pass(`the page reconnected by itself to the restarted server (${await page.textContent('#seq')})`);
     // the refused reconnection attempts while the server was down are expected
     b.problems.splice(0, b.problems.length, ...b.problems.filter((p) => !/\/events/.test(p)));
+    if (tasks === 'tasks') {
+      // the task mix's postures: a warning raised, then cleared (its line goes away)
+      const shown = await page.waitForFunction(() => {
+        const li = document.querySelector('#warnings li');
+        return li ? { region: li.dataset.region, text: li.textContent, near: li.dataset.near === 'true' } : null;
+      }, null, { timeout: 180000, polling: 50 })
+        .then((h) => h.jsonValue())
+        .catch(() => fail('under the task mix no warning was raised on screen within 180 s'));
+      pass(`under the task mix a warning is raised on screen: "${shown.text}"${shown.near ? ' (near the limit)' : ''}`);
+      await page.waitForFunction((region) => !document.querySelector(`#warnings li[data-region="${region}"]`), shown.region, { timeout: 180000, polling: 50 })
+        .catch(() => fail(`the ${shown.region} warning was never cleared on screen within 180 s`));
+      pass(`and cleared: the ${shown.region} line went away`);
+    }
   }
 });
