@@ -308,3 +308,126 @@ fn two_operators_in_one_recording_are_two_sessions_of_its_operator() {
         .iter()
         .all(|g| cell(&groups, g, "rula_al3plus_share").is_empty()));
 }
+
+/// `rec` rewritten with each message's log time replaced by `log_time(index, count, original)`
+/// (metadata kept): a recording whose clock lies.
+fn with_log_times(rec: &Path, out: &Path, log_time: impl Fn(u64, u64, u64) -> u64) {
+    let bytes = std::fs::read(rec).unwrap();
+    let count = mcap::MessageStream::new(&bytes).unwrap().count() as u64;
+    let mut w =
+        mcap::Writer::new(std::io::BufWriter::new(std::fs::File::create(out).unwrap())).unwrap();
+    for record in mcap::read::LinearReader::new(&bytes).unwrap() {
+        if let mcap::records::Record::Metadata(m) = record.unwrap() {
+            w.write_metadata(&m).unwrap();
+        }
+    }
+    for (k, m) in mcap::MessageStream::new(&bytes).unwrap().enumerate() {
+        let mut m = m.unwrap();
+        m.log_time = log_time(k as u64, count, m.log_time);
+        m.publish_time = m.log_time;
+        w.write(&m).unwrap();
+    }
+    w.finish().unwrap();
+}
+
+/// A recording whose log times disagree with its own capture stamps (one time for every message;
+/// times running backwards) is read by the capture stamps, and says so: the exposure files the
+/// session under the same day and week with the same seconds, and the report spans the same time.
+#[test]
+fn a_recording_whose_clock_disagrees_with_its_capture_stamps_is_read_by_the_stamps() {
+    let scratch = Scratch::new("exposure-clock");
+    let rec = common::demo_recording("exposure-demo.mcap");
+    let report_of = |r: &Path, name: &str| {
+        let html = scratch.0.join(name);
+        let o = ergocell(&[
+            "report",
+            r.to_str().unwrap(),
+            "--out",
+            html.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let html = std::fs::read_to_string(&html).unwrap();
+        let start = html.find("window.ERGOCELL_REVIEW_DATA = ").unwrap() + 30;
+        let end = start + html[start..].find(";</script>").unwrap();
+        let data: serde_json::Value = serde_json::from_str(&html[start..end]).unwrap();
+        data["sessions"][0].clone()
+    };
+    let original = report_of(rec, "original.html");
+    let span = |s: &serde_json::Value| {
+        s["frames"]["t"]
+            .as_array()
+            .unwrap()
+            .last()
+            .unwrap()
+            .as_f64()
+            .unwrap()
+    };
+    let problems = |s: &serde_json::Value| s["source"]["problems"].as_array().unwrap().len();
+    let o = exposure(&[rec], &scratch.0.join("original"));
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let sessions = scratch.0.join("original/sessions.csv");
+    let honest = rows(&sessions);
+    // one time for every message (a clock that never ran); then times running backwards from a day
+    // later
+    let constant = scratch.0.join("constant.mcap");
+    with_log_times(rec, &constant, |_, _, _| 1);
+    let reversed = scratch.0.join("reversed.mcap");
+    let day = 86_400_000_000_000u64;
+    with_log_times(rec, &reversed, |k, n, t| t + day + (n - k) * 100_000_000);
+    for (lying, name) in [(&constant, "constant"), (&reversed, "reversed")] {
+        let s = report_of(lying, &format!("{name}.html"));
+        assert_eq!(
+            s["frames"]["t"].as_array().unwrap().len(),
+            original["frames"]["t"].as_array().unwrap().len(),
+            "{name}"
+        );
+        // read by the capture stamps: the first frame's capture precedes its logging by under a
+        // frame period
+        assert!(
+            (span(&s) - span(&original)).abs() < 0.1,
+            "{name}: {} s against {} s",
+            span(&s),
+            span(&original)
+        );
+        // named: one problem more than the honest recording's
+        assert_eq!(
+            problems(&s),
+            problems(&original) + 1,
+            "{name}: {}",
+            s["source"]["problems"]
+        );
+        let out = scratch.0.join(name);
+        let o = exposure(&[lying], &out);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        // the same rows: each column as the honest recording's but the file's name, and the start
+        // (its first capture rather than its first logging) within a frame period
+        let lying_sessions = out.join("sessions.csv");
+        let got = rows(&lying_sessions);
+        assert_eq!(got.len(), honest.len(), "{name}");
+        for (g, h) in got.iter().zip(&honest) {
+            for column in ["operator", "day", "week", "class", "segment", "parts_taken"] {
+                assert_eq!(
+                    cell(&lying_sessions, g, column),
+                    cell(&sessions, h, column),
+                    "{name}: {column}"
+                );
+            }
+            // the whole session's seconds exactly; a segment's within the fixed lag: the robot's
+            // commands carry no capture stamp of their own (stamp 0 is "now" to the controller)
+            // and are placed at the latest stamp read before them
+            let seconds = |p: &Path, r: &csv::StringRecord| num(p, r, "duration_s");
+            let off = (seconds(&lying_sessions, g) - seconds(&sessions, h)).abs();
+            let whole = cell(&sessions, h, "segment") == "all";
+            assert!(
+                if whole { off < 1e-9 } else { off < 0.6 },
+                "{name}: {} off by {off} s",
+                cell(&sessions, h, "segment")
+            );
+            let start = |p: &Path, r: &csv::StringRecord| num(p, r, "start_unix_s");
+            assert!(
+                (start(&lying_sessions, g) - start(&sessions, h)).abs() < 0.1,
+                "{name}"
+            );
+        }
+    }
+}

@@ -48,7 +48,45 @@ pub enum Decoded {
     ControllerEvent(Stamped<ControllerEvent>),
 }
 
+/// A message is logged when the cell handles it, milliseconds to a second after its capture; a log
+/// time further than this from the message's own capture stamp is the recording's clock
+/// disagreeing with the cameras' (a clock stepped, a file rewritten with one time for every
+/// message), and the message is read by its capture stamp.
+pub const MAX_LOG_CLOCK_DISAGREEMENT_NANOS: u64 = 10_000_000_000;
+
 impl Decoded {
+    /// The capture stamp in the message's header (a marker array's first marker's), nanoseconds;
+    /// `None` when it has none or it is zero or negative.
+    pub fn capture_stamp_nanos(&self) -> Option<u64> {
+        let header = match self {
+            Self::Pose(m) => Some(&m.message.header),
+            Self::Ergonomics(m) => Some(&m.message.header),
+            Self::Reba(m) => Some(&m.message.header),
+            Self::Warning(m) => Some(&m.message.header),
+            Self::State(m) => Some(&m.message.header),
+            Self::RobotMarkers(m) => m.message.markers.first().map(|k| &k.header),
+            Self::Trajectory(m) => Some(&m.message.header),
+            Self::ControllerEvent(m) => Some(&m.message.header),
+        }?;
+        u64::try_from(header.stamp.to_nanos())
+            .ok()
+            .filter(|&t| t > 0)
+    }
+
+    /// Reads the message at `nanos` instead of its log time.
+    fn set_log_time(&mut self, nanos: u64) {
+        match self {
+            Self::Pose(m) => m.log_time_nanos = nanos,
+            Self::Ergonomics(m) => m.log_time_nanos = nanos,
+            Self::Reba(m) => m.log_time_nanos = nanos,
+            Self::Warning(m) => m.log_time_nanos = nanos,
+            Self::State(m) => m.log_time_nanos = nanos,
+            Self::RobotMarkers(m) => m.log_time_nanos = nanos,
+            Self::Trajectory(m) => m.log_time_nanos = nanos,
+            Self::ControllerEvent(m) => m.log_time_nanos = nanos,
+        }
+    }
+
     /// The message's log time, nanoseconds (the session clock).
     pub fn log_time_nanos(&self) -> u64 {
         match self {
@@ -392,6 +430,18 @@ const MAX_RECORD_BYTES: usize = 256 << 20;
 struct Reader<'v, V: Visit> {
     rec: ReadStats,
     skipped: BTreeMap<String, Skipped>,
+    /// Messages read by their capture stamp (their log time too far from it), and the first one's
+    /// log time and stamp.
+    clock_disagreements: u64,
+    first_disagreement: Option<(u64, u64)>,
+    /// The log clock disagreed at the latest stamped message.
+    clock_lies: bool,
+    /// The latest capture stamp read: while the clock disagrees, where a message without a stamp
+    /// of its own is placed (a session's state changes are stamped the instant they are logged).
+    latest_stamp: Option<u64>,
+    /// The span of the decoded messages' times (their capture stamps where the clock disagreed):
+    /// the recording's span when it did, as the other topics' log times cannot be checked.
+    decoded_span: Option<(u64, u64)>,
     visitor: &'v mut V,
 }
 
@@ -403,8 +453,29 @@ impl<'v, V: Visit> Reader<'v, V> {
                 ..ReadStats::default()
             },
             skipped: BTreeMap::new(),
+            clock_disagreements: 0,
+            first_disagreement: None,
+            clock_lies: false,
+            latest_stamp: None,
+            decoded_span: None,
             visitor,
         }
+    }
+
+    /// The time of a message without a capture stamp to check its log time against: the log time,
+    /// or while the clock disagrees, the latest capture stamp read.
+    fn unstamped(&self, t: u64) -> u64 {
+        match (self.clock_lies, self.latest_stamp) {
+            (true, Some(latest)) => latest,
+            _ => t,
+        }
+    }
+
+    /// Counts `t` into the span of log times read.
+    fn span(&mut self, t: u64) {
+        let rec = &mut self.rec;
+        rec.first_log_time_nanos = Some(rec.first_log_time_nanos.map_or(t, |f| f.min(t)));
+        rec.last_log_time_nanos = Some(rec.last_log_time_nanos.map_or(t, |l| l.max(t)));
     }
 
     fn secs_into(&self, t: u64) -> f64 {
@@ -520,8 +591,6 @@ impl<'v, V: Visit> Reader<'v, V> {
     fn take_message(&mut self, topic: &str, schema: &str, t: u64, data: &[u8]) {
         let rec = &mut self.rec;
         rec.messages += 1;
-        rec.first_log_time_nanos = Some(rec.first_log_time_nanos.map_or(t, |f| f.min(t)));
-        rec.last_log_time_nanos = Some(rec.last_log_time_nanos.map_or(t, |l| l.max(t)));
         if let Some(c) = rec.channels.get_mut(topic) {
             c.messages += 1;
         } else {
@@ -547,10 +616,12 @@ impl<'v, V: Visit> Reader<'v, V> {
                 topics::REBA | topics::JOINT_TRAJECTORY | topics::CONTROLLER_EVENTS
             );
         if !known {
+            self.span(self.unstamped(t));
             return;
         }
         if !self.visitor.wants_at(topic, t) {
             rec.session_messages += u64::from(session_topic);
+            self.span(self.unstamped(t));
             return;
         }
         let outcome = match topic {
@@ -564,11 +635,37 @@ impl<'v, V: Visit> Reader<'v, V> {
             _ => take_controller_event(schema, data, t).map(Decoded::ControllerEvent),
         };
         match outcome {
-            Ok(message) => {
-                rec.session_messages += u64::from(session_topic);
+            Ok(mut message) => {
+                self.rec.session_messages += u64::from(session_topic);
+                let stamp = message.capture_stamp_nanos();
+                if let Some(s) = stamp {
+                    self.latest_stamp = Some(self.latest_stamp.map_or(s, |l| l.max(s)));
+                }
+                let at = match stamp {
+                    Some(stamp) if t.abs_diff(stamp) > MAX_LOG_CLOCK_DISAGREEMENT_NANOS => {
+                        self.clock_disagreements += 1;
+                        self.first_disagreement.get_or_insert((t, stamp));
+                        self.clock_lies = true;
+                        stamp
+                    }
+                    Some(_) => {
+                        self.clock_lies = false;
+                        t
+                    }
+                    None => self.unstamped(t),
+                };
+                if at != t {
+                    message.set_log_time(at);
+                }
+                self.span(at);
+                self.decoded_span = Some(
+                    self.decoded_span
+                        .map_or((at, at), |(a, b)| (a.min(at), b.max(at))),
+                );
                 self.visitor.message(message);
             }
             Err(why) => {
+                self.span(self.unstamped(t));
                 let s = self.skipped.entry(topic.to_owned()).or_default();
                 s.count += 1;
                 if s.first.is_empty() {
@@ -579,6 +676,20 @@ impl<'v, V: Visit> Reader<'v, V> {
     }
 
     fn finish(mut self) -> Result<ReadStats, ReviewError> {
+        if let Some((log, stamp)) = self.first_disagreement {
+            if let Some((first, last)) = self.decoded_span {
+                self.rec.first_log_time_nanos = Some(first);
+                self.rec.last_log_time_nanos = Some(last);
+            }
+            let secs = |n: u64| n as f64 * 1e-9;
+            self.rec.problems.push(format!(
+                "the recording's clock disagrees with its capture stamps: {} message(s) were logged more than {} s from the instant they were captured (the first logged at {:.3} s, captured at {:.3} s, Unix time) and are read by their capture stamps",
+                self.clock_disagreements,
+                MAX_LOG_CLOCK_DISAGREEMENT_NANOS / 1_000_000_000,
+                secs(log),
+                secs(stamp)
+            ));
+        }
         let rec = &mut self.rec;
         for (topic, s) in std::mem::take(&mut self.skipped) {
             rec.problems.push(format!(
