@@ -216,6 +216,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     // The first session's machine before anything is started: a cell that cannot run is said now.
     let machine = setup.new_machine()?;
+    // Which classes the robot can serve, said before anyone is measured.
+    println!("{}", ApprovalSummary::of(&mut setup.provider()));
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()
@@ -1040,5 +1042,101 @@ mod tests {
             None
         );
         assert_eq!(multicast_note(&scope(DiscoveryRange::Off, None)), None);
+    }
+}
+
+/// At start-up: the classes whose locked trajectory verifies now (with who approved it), and those
+/// that do not, whose operators the robot will not serve.
+#[derive(Debug, PartialEq)]
+struct ApprovalSummary {
+    approved: Vec<(ergocell_robot::TrajectoryClass, Vec<String>)>,
+    refused: Vec<ergocell_robot::TrajectoryClass>,
+}
+
+impl ApprovalSummary {
+    fn of(provider: &mut dyn ergocell_cell::session::TrajectoryProvider) -> Self {
+        let mut out = Self {
+            approved: Vec::new(),
+            refused: Vec::new(),
+        };
+        for class in ergocell_robot::TrajectoryClass::ALL {
+            match provider.verify(class) {
+                Ok(a) => out.approved.push((
+                    class,
+                    a.approvals()
+                        .iter()
+                        .map(|x| x.approved_by.clone())
+                        .collect(),
+                )),
+                Err(_) => out.refused.push(class),
+            }
+        }
+        out
+    }
+}
+
+impl std::fmt::Display for ApprovalSummary {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let approved: Vec<String> = self
+            .approved
+            .iter()
+            .map(|(class, by)| format!("{class} (approved by {})", by.join(", ")))
+            .collect();
+        let refused: Vec<String> = self.refused.iter().map(ToString::to_string).collect();
+        match (approved.is_empty(), refused.is_empty()) {
+            (_, true) => write!(f, "robot: every class is approved: {}", approved.join(", ")),
+            (true, false) => write!(
+                f,
+                "robot: no class is approved: the robot will not move for any operator \
+                 (`ergocell trajectories verify` says why; a safety engineer approves each class, \
+                 docs/safety.md)"
+            ),
+            (false, false) => write!(
+                f,
+                "robot: {}; not approved: {} — the robot will not move for an operator of {} \
+                 (`ergocell trajectories verify` says why)",
+                approved.join(", "),
+                refused.join(", "),
+                if refused.len() == 1 {
+                    "that class"
+                } else {
+                    "those classes"
+                }
+            ),
+        }
+    }
+}
+
+#[cfg(test)]
+mod approval_summary_tests {
+    use super::*;
+    use ergocell_cell::session::{ProviderError, TrajectoryProvider};
+    use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
+
+    /// A cell whose approvals are all missing.
+    struct Unapproved(Vec<TrajectoryClass>);
+
+    impl TrajectoryProvider for Unapproved {
+        fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
+            self.0.push(class);
+            Err(ProviderError(format!("no approvals file for {class}")))
+        }
+        fn stature_bounds_m(&mut self, _: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
+            Ok((1.5, 2.0))
+        }
+    }
+
+    #[test]
+    fn every_class_is_asked_and_the_unapproved_are_named() {
+        let mut cell = Unapproved(Vec::new());
+        let summary = ApprovalSummary::of(&mut cell);
+        assert_eq!(cell.0, TrajectoryClass::ALL.to_vec());
+        assert_eq!(
+            summary,
+            ApprovalSummary {
+                approved: Vec::new(),
+                refused: TrajectoryClass::ALL.to_vec(),
+            }
+        );
     }
 }
