@@ -692,6 +692,42 @@ pub fn rula_cost_clause(cost: Option<f64>) -> String {
 }
 
 /// One line for a person reading the terminal or the log.
+/// The console's lines for one step's events (frames left out): each event as [`describe`] says
+/// it, except that cameras degraded in the same step for the same reason share one line (a cell
+/// started before its camera nodes names them all at once, not six times).
+pub fn describe_step(events: &[SessionEvent]) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut i = 0;
+    while i < events.len() {
+        match &events[i] {
+            SessionEvent::Frame { .. } => i += 1,
+            SessionEvent::CameraDegraded { why, .. } => {
+                let mut cameras = Vec::new();
+                while let Some(SessionEvent::CameraDegraded {
+                    camera, why: same, ..
+                }) = events.get(i)
+                {
+                    if same != why {
+                        break;
+                    }
+                    cameras.push(camera.as_str());
+                    i += 1;
+                }
+                lines.push(if cameras.len() == 1 {
+                    format!("camera {} degraded: {why}", cameras[0])
+                } else {
+                    format!("cameras {} degraded: {why}", cameras.join(", "))
+                });
+            }
+            e => {
+                lines.push(describe(e));
+                i += 1;
+            }
+        }
+    }
+    lines
+}
+
 pub fn describe(e: &SessionEvent) -> String {
     use ergocell_cell::session::{RobotCommand, SessionEvent as E};
     use ergocell_ergonomics::height::DecisionBasis;
@@ -757,5 +793,44 @@ pub fn describe(e: &SessionEvent) -> String {
         },
         E::Warning(w) => format!("RULA warning: {}", w.message),
         E::Frame { .. } => "frame".to_owned(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn degraded(camera: &str, why: &str) -> SessionEvent {
+        SessionEvent::CameraDegraded {
+            stamp_nanos: 1,
+            camera: camera.to_owned(),
+            why: why.to_owned(),
+        }
+    }
+
+    #[test]
+    fn cameras_degraded_together_for_one_reason_share_a_line() {
+        let never = "no view at all since the session started (500 ms ago)";
+        let events = [
+            degraded("s1_left", never),
+            degraded("s1_right", never),
+            degraded("s2_left", never),
+            degraded("s2_right", "no view for more than 500 ms"),
+            SessionEvent::CameraRestored {
+                stamp_nanos: 2,
+                camera: "s3_left".to_owned(),
+            },
+            degraded("s3_right", never),
+        ];
+        assert_eq!(
+            describe_step(&events),
+            vec![
+                format!("cameras s1_left, s1_right, s2_left degraded: {never}"),
+                "camera s2_right degraded: no view for more than 500 ms".to_owned(),
+                describe(&events[4]),
+                format!("camera s3_right degraded: {never}"),
+            ]
+        );
+        assert!(describe_step(&[]).is_empty());
     }
 }

@@ -335,10 +335,8 @@ impl CellOutputs for RunOutputs {
         if let Some(d) = &self.display {
             d.update(machine, events);
         }
-        for e in events {
-            if !matches!(e, SessionEvent::Frame { .. }) {
-                println!("  {}", messages::describe(e));
-            }
+        for line in messages::describe_step(events) {
+            println!("  {line}");
         }
         self.ros.session_step(now, machine, events)
     }

@@ -359,7 +359,8 @@ impl SessionMachine {
                 } else {
                     format!(
                         "no view at all since the session started ({} ms ago): fusion continues \
-                         without it",
+                         without it (is the camera's node, `ergocell-edge publish`, running on this \
+                         ROS 2 domain and network?)",
                         (now_nanos - since) / 1_000_000
                     )
                 };
