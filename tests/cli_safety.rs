@@ -84,6 +84,11 @@ fn existing_output_is_not_overwritten_without_force() {
     assert_usage_error(&o, &["--record sessions.mcap", "already exists", "--force"]);
     assert_eq!(std::fs::read_to_string(&rec).unwrap(), keep);
 
+    // an output in a folder that does not exist: bad input, said before any work
+    let o = ergocell(&dir.0, &["demo", "--out", "shifts/mon.mcap"]);
+    assert_usage_error(&o, &["--out shifts/mon.mcap", "shifts does not exist"]);
+    assert!(!dir.0.join("shifts").exists());
+
     // demo --out: refused before the session starts (no demo approval written).
     let o = ergocell(&dir.0, &["demo", "--out", "sessions.mcap"]);
     assert_usage_error(&o, &["--out sessions.mcap", "already exists", "--force"]);

@@ -192,7 +192,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     .map(|name| args.out.join(name));
     let inputs: Vec<(&str, &Path)> = files.iter().map(|f| ("recording", f.as_path())).collect();
     for out in &outputs {
-        output::check("--out", out, true, &inputs)?;
+        output::check_in_new_folder("--out", out, true, &inputs)?;
     }
 
     let mut table = ExposureTable::default();

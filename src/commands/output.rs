@@ -18,6 +18,27 @@ use super::UsageError;
 /// Checks the output `out` (given with `flag`, e.g. `--out`) against `inputs` (`(flag, path)`) and,
 /// unless `force`, against an existing file.
 pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> anyhow::Result<()> {
+    check_file(flag, out, force, inputs, true)
+}
+
+/// [`check`] for a file in a folder the command creates itself (`exposure --out FOLDER`): its
+/// folder need not exist yet.
+pub fn check_in_new_folder(
+    flag: &str,
+    out: &Path,
+    force: bool,
+    inputs: &[(&str, &Path)],
+) -> anyhow::Result<()> {
+    check_file(flag, out, force, inputs, false)
+}
+
+fn check_file(
+    flag: &str,
+    out: &Path,
+    force: bool,
+    inputs: &[(&str, &Path)],
+    folder_must_exist: bool,
+) -> anyhow::Result<()> {
     for (input_flag, input) in inputs {
         if same_file(out, input) {
             return Err(UsageError(format!(
@@ -29,6 +50,21 @@ pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> a
         }
     }
     not_a_regular_file(flag, out)?;
+    // A new file in a folder that does not exist: said now, as bad input, not when the work is done.
+    if let Some(parent) = out
+        .parent()
+        .filter(|p| folder_must_exist && !p.as_os_str().is_empty())
+    {
+        if std::fs::metadata(out).is_err() && !parent.is_dir() {
+            return Err(UsageError(format!(
+                "{flag} {}: the folder {} does not exist; create it first (mkdir -p {})",
+                out.display(),
+                parent.display(),
+                parent.display()
+            ))
+            .into());
+        }
+    }
     match std::fs::metadata(out) {
         Ok(m) if m.is_dir() => Err(UsageError(format!(
             "{flag} {} is a folder, not a file",
