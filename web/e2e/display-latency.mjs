@@ -7,7 +7,7 @@
 // is printed is the part beyond the dwell and the lag: transport, fusion, scoring, the display's
 // push and the browser's paint. Prints one line `warning latency: …` and the JSON of every sample;
 // measured, never asserted.
-import { main, pass, fail } from './lib.mjs';
+import { main, pass, fail, quantile, openDisplay } from './lib.mjs';
 
 const [url, seconds, lag] = process.argv.slice(2);
 if (!url || !(Number(seconds) > 0) || !(Number(lag) >= 0)) {
@@ -15,15 +15,9 @@ if (!url || !(Number(seconds) > 0) || !(Number(lag) >= 0)) {
   process.exit(2);
 }
 
-function quantile(sorted, q) {
-  return sorted[Math.min(sorted.length - 1, Math.max(0, Math.ceil(q * sorted.length) - 1))];
-}
-
 await main(async (b) => {
   const { page } = b;
-  await page.goto(url, { waitUntil: 'load', timeout: 30000 });
-  await page.waitForFunction(() => document.getElementById('conn').textContent === 'live', null, { timeout: 15000 })
-    .catch(() => fail('the page never said "live": no event stream'));
+  await openDisplay(page, url);
   pass('the display page is live');
   await page.waitForTimeout(Number(seconds) * 1000);
   const samples = await page.evaluate(() => window.__warningLatencies.slice());

@@ -7,7 +7,7 @@
 // latency (server send time → after the next paint, same machine clock) of every update it rendered.
 // With `tasks` (the restarted server runs the station's task mix), a warning is raised and then
 // cleared on screen: the region's line appears and goes away again.
-import { main, pass, fail, screenshot } from './lib.mjs';
+import { main, pass, fail, screenshot, quantile, openDisplay } from './lib.mjs';
 
 const [url, shot, restart, tasks] = process.argv.slice(2);
 if (!url || !shot) {
@@ -17,15 +17,9 @@ if (!url || !shot) {
 
 const ACTIVE = ['measuring_height', 'class_decided', 'trajectory_locked', 'working', 'held'];
 
-function quantile(sorted, q) {
-  return sorted[Math.min(sorted.length - 1, Math.max(0, Math.ceil(q * sorted.length) - 1))];
-}
-
 await main(async (b) => {
   const { page } = b;
-  await page.goto(url, { waitUntil: 'load', timeout: 30000 });
-  await page.waitForFunction(() => document.getElementById('conn').textContent === 'live', null, { timeout: 15000 })
-    .catch(() => fail('the page never said "live": no event stream'));
+  await openDisplay(page, url);
   pass('the page connects to the event stream');
   await page.waitForFunction((active) => active.includes(document.getElementById('state').dataset.state), ACTIVE, { timeout: 60000 })
     .catch(async () => fail(`no session state shown; #state says ${JSON.stringify(await page.textContent('#state'))}`));

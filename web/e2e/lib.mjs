@@ -26,6 +26,18 @@ export function fail(msg) {
   throw new CheckFailed(msg);
 }
 
+/** The `q` quantile of ascending `sorted` by nearest rank. */
+export function quantile(sorted, q) {
+  return sorted[Math.min(sorted.length - 1, Math.max(0, Math.ceil(q * sorted.length) - 1))];
+}
+
+/** Opens the operator display at `url` and waits until its event stream is live. */
+export async function openDisplay(page, url) {
+  await page.goto(url, { waitUntil: 'load', timeout: 30000 });
+  await page.waitForFunction(() => document.getElementById('conn').textContent === 'live', null, { timeout: 15000 })
+    .catch(() => fail('the page never said "live": no event stream'));
+}
+
 export function pass(msg) {
   console.log(`ok - ${msg}`);
 }
