@@ -384,7 +384,7 @@ impl WarningTracker {
                                 |rest| rest.trim_start().to_owned(),
                             );
                             format!(
-                                "{label} easing: now {now} (warning level {after}, was {before}; it clears once the posture stays within limits)"
+                                "{label} easing: now {now}; the warning clears once the posture stays within limits"
                             )
                         }
                         _ => format!(

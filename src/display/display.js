@@ -39,9 +39,15 @@
     state.dataset.state = s.state;
 
     const level = $("level");
-    const al = s.action_level || 0;
+    // While the operator is asked to stand straight for the height measurement, a coloured band
+    // ("change may be needed") contradicts the instruction: the band waits for work to start,
+    // unless a posture warning is up (warnings always run).
+    const measuring = s.state === "waiting_for_operator" || s.state === "measuring_height";
+    const al = measuring && !s.warnings.length ? 0 : s.action_level || 0;
     level.dataset.level = String(al);
-    level.textContent = al ? `${LEVELS[al]} (RULA ${s.grand_score})` : "Posture: —";
+    level.textContent = al
+      ? `${LEVELS[al]} (RULA score ${s.grand_score} of 7, action level ${al})`
+      : measuring ? "Posture: shown once your height is measured" : "Posture: —";
 
     const list = $("warnings");
     list.textContent = "";

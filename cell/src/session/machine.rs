@@ -605,8 +605,10 @@ impl SessionMachine {
                         self.cameras_fresh()
                     )
                 } else {
+                    // Every camera silent, or the cameras' clocks far from the cell's: either way no
+                    // frame is recent enough to move the robot by.
                     format!(
-                        "newest frame older than the {} ms bound",
+                        "cameras lost: no camera frame newer than {} ms",
                         self.config.max_frame_age_nanos / 1_000_000
                     )
                 };
