@@ -717,7 +717,11 @@ fn lock_approve_and_report_on_a_full_filesystem_leave_the_previous_files_intact(
             std::env::var_os("ERGOCELL_REQUIRE_ANCHOR").is_none(),
             "CI must be able to mount a tmpfs in a mount namespace (root)"
         );
-        eprintln!("skipped: cannot mount a tmpfs here");
+        // Straight to the stream: cargo test shows it without --nocapture.
+        let _ = std::io::Write::write_all(
+            &mut std::io::stderr(),
+            b"SKIPPED: cannot mount a tmpfs here\n",
+        );
         return;
     }
     let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
