@@ -120,9 +120,13 @@ pub struct WarningTrust {
     pub regions: Vec<RegionWarnings>,
     /// Every region together.
     pub all: RegionWarnings,
-    /// Controller warnings matched to no truth warning.
+    /// Controller warnings matched to no truth warning (what precision counts against).
+    pub unmatched_warnings: usize,
+    /// Of those, the ones RULA did not deserve: the truth's posture did not score the warned level
+    /// on most frames of the warning's dwell ([`FalseWarning::deserved`]).
     pub false_warnings: usize,
-    /// Each of them: where and when, and what the truth was doing.
+    /// Each unmatched warning: where and when, what the truth was doing, and whether RULA
+    /// deserved it.
     pub false_list: Vec<FalseWarning>,
     pub false_per_hour: f64,
     /// Latency quantiles over every caught clear stretch, seconds (NaN without one).
@@ -149,6 +153,13 @@ pub struct WarningTrust {
 }
 
 /// A controller warning the truth did not raise.
+///
+/// The truth's own warning can stay down for a posture RULA scores at the warned level: it rises
+/// only once the posture is the rise margin past the band's edge, after the dwell. An upper arm
+/// held at 47.9° scores 3 (past 45°) and is 0.1° short of the truth's rise; the controller measures
+/// it at 48.5° and warns. That warning is unmatched (precision counts it) but not false: the
+/// posture is what it says. It is false when the truth's posture did not score the warned level on
+/// at least half the frames of the dwell before it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FalseWarning {
     /// The operator's index in `statures_m`.
@@ -161,6 +172,9 @@ pub struct FalseWarning {
     pub phase: crate::session::Phase,
     /// The truth's angle of the region then, degrees (none for the legs).
     pub truth_angle_deg: Option<f64>,
+    /// The truth's posture scored the warned level on at least half the frames of the warning's
+    /// dwell (the frames whose release showed it, the fixed lag earlier): RULA deserved it.
+    pub deserved: bool,
 }
 
 /// A warning as an interval of time for one region and side: raised at `from`, cleared at `to`
@@ -304,17 +318,28 @@ fn region_index(r: BodyRegion) -> usize {
 }
 
 /// The controller's and the truth's warnings of one session compared.
+/// A session's timing, for [`compare`]: the controller's fixed lag and the frame period.
+#[derive(Debug, Clone, Copy)]
+struct Timing {
+    lag_nanos: i64,
+    period_nanos: i64,
+}
+
 fn compare(
     ticks: &[Tick],
     truth: &[FrameAssessment],
     pipeline: Intervals,
     config: &WarningConfig,
-    period_nanos: i64,
+    timing: Timing,
     session: usize,
     counts: &mut Counts,
 ) {
     let end = ticks.last().map_or(0, |t| t.frame.stamp_nanos);
     let dwell = config.dwell_nanos;
+    let Timing {
+        lag_nanos,
+        period_nanos,
+    } = timing;
     let mut truth_tracker = WarningTracker::new(*config);
     let mut truth_intervals = Intervals::default();
     let mut per_tick = Vec::with_capacity(ticks.len());
@@ -366,6 +391,15 @@ fn compare(
                 }?;
                 region_angle(key.0, &s.input)
             });
+            // The frames the controller's dwell covered: shown at `stamp`, the lag after its frame.
+            let (from, to) = (stamp - lag_nanos - dwell, stamp - lag_nanos);
+            let (mut at_level, mut n) = (0usize, 0usize);
+            for (t, levels) in &per_tick {
+                if (from..=to).contains(t) {
+                    n += 1;
+                    at_level += usize::from(levels.get(&key).is_some_and(|l| l.0));
+                }
+            }
             counts.false_list.push(FalseWarning {
                 session,
                 at_s: round6((stamp - start) as f64 * 1e-9),
@@ -373,6 +407,7 @@ fn compare(
                 side: key.1,
                 phase: ticks[k].truth.phase,
                 truth_angle_deg: angle.map(round6),
+                deserved: n > 0 && 2 * at_level >= n,
             });
         }
     }
@@ -482,7 +517,12 @@ pub fn warning_trust(
                 frames += 1;
             }
         }
-        compare(&ticks, &truth, pipeline, &wconfig, period, i, &mut counts);
+        let lag_nanos = config.fixed_lag_s.map_or(0, |s| (s * 1e9).round() as i64);
+        let timing = Timing {
+            lag_nanos,
+            period_nanos: period,
+        };
+        compare(&ticks, &truth, pipeline, &wconfig, timing, i, &mut counts);
         progress(i + 1, statures_m.len());
     }
     let hours = nanos as f64 / 3.6e12;
@@ -501,8 +541,10 @@ pub fn warning_trust(
     let mut sorted = all.latencies_s.clone();
     sorted.sort_by(f64::total_cmp);
     let lag_s = config.fixed_lag_s.unwrap_or(0.0);
-    let false_warnings = counts.false_list.len();
+    let unmatched_warnings = counts.false_list.len();
+    let false_warnings = counts.false_list.iter().filter(|f| !f.deserved).count();
     Ok(WarningTrust {
+        unmatched_warnings,
         regions,
         false_warnings,
         false_list: counts.false_list,
@@ -535,6 +577,7 @@ pub struct WarningTrustSeeds {
     /// Pooled over the seeds, per region then all (`latencies_s` pooled too).
     pub regions: Vec<RegionWarnings>,
     pub all: RegionWarnings,
+    pub unmatched_warnings: usize,
     pub false_warnings: usize,
     pub false_per_hour: f64,
     pub hours: f64,
@@ -562,7 +605,7 @@ pub fn over_seeds(seeds: &[u64], runs: Vec<WarningTrust>) -> WarningTrustSeeds {
         region: "all".to_owned(),
         ..RegionWarnings::default()
     };
-    let (mut false_warnings, mut hours) = (0usize, 0.0);
+    let (mut unmatched_warnings, mut false_warnings, mut hours) = (0usize, 0usize, 0.0);
     let mut reliability = Reliability::default();
     for run in &runs {
         reliability.merge(&run.reliability);
@@ -573,6 +616,7 @@ pub fn over_seeds(seeds: &[u64], runs: Vec<WarningTrust>) -> WarningTrustSeeds {
         {
             p.add(r);
         }
+        unmatched_warnings += run.unmatched_warnings;
         false_warnings += run.false_warnings;
         hours += run.hours;
     }
@@ -645,6 +689,7 @@ pub fn over_seeds(seeds: &[u64], runs: Vec<WarningTrust>) -> WarningTrustSeeds {
         seeds: seeds.to_vec(),
         regions,
         all,
+        unmatched_warnings,
         false_warnings,
         false_per_hour: if hours > 0.0 {
             round6(false_warnings as f64 / hours)

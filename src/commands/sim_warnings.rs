@@ -152,7 +152,8 @@ fn print_summary(c: &Common, sum: &WarningTrustSeeds, mix: &TaskMix) {
     }
     print_row(&sum.all);
     println!(
-        "  false warnings: {} ({:.2} per hour); latency from the posture to the warning: p50 {:.2} s, p95 {:.2} s, max {:.2} s (goal p95 ≤ {:.2} s)",
+        "  unmatched warnings: {}, of which false (the truth's posture below the warned level): {} ({:.2} per hour); latency from the posture to the warning: p50 {:.2} s, p95 {:.2} s, max {:.2} s (goal p95 ≤ {:.2} s)",
+        sum.unmatched_warnings,
         sum.false_warnings,
         sum.false_per_hour,
         sum.latency_p50_s,
