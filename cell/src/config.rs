@@ -472,10 +472,7 @@ impl SessionFile {
             station_xy_m: [station.xyz_m[0], station.xyz_m[1]],
             at_knot_tolerance_rad: self.at_knot_tolerance_rad,
             height_timeout_nanos: nanos(self.height_timeout_s),
-            T_world_station: nalgebra::Isometry3::new(
-                nalgebra::Vector3::new(sx, sy, sz),
-                nalgebra::Vector3::z() * station.yaw_rad,
-            ),
+            T_world_station: ergocell_robot::station_pose([sx, sy, sz], station.yaw_rad),
             take_radius_m: self.take_radius_m,
             release_radius_m: self.release_radius_m,
             next_part_after_nanos: nanos(self.next_part_after_s),
@@ -793,6 +790,24 @@ mod tests {
                 .to_string();
             assert!(e.contains(key) && e.contains(bad), "{table}: {e}");
         }
+    }
+
+    #[test]
+    fn a_turned_and_moved_station_puts_the_handover_point_in_one_place() {
+        // Turned 0.3 rad about the vertical and shifted 0.2 m: the session's station pose and the
+        // robot side's agree, and the point 0.6 m forward of the station lies along the turned
+        // forward axis.
+        let text = SHIPPED
+            .replace("xyz_m = [0.0, 0.0, 0.0]", "xyz_m = [0.2, 0.0, 0.0]")
+            .replace("yaw_rad = 0.0", "yaw_rad = 0.3");
+        let s = CellSettings::from_toml_str(&text, "cell.toml").unwrap();
+        let robot_side = ergocell_robot::CellConfig::from_toml_str(&text).unwrap();
+        let station_m = [0.6, 0.1, 1.1];
+        let session_side = ergocell_robot::handover_world(&s.session.T_world_station, station_m);
+        assert!((session_side - robot_side.handover_world(station_m)).norm() < 1e-12);
+        let (c, sn) = (0.3f64.cos(), 0.3f64.sin());
+        let expected = nalgebra::Point3::new(0.2 + 0.6 * c - 0.1 * sn, 0.6 * sn + 0.1 * c, 1.1);
+        assert!((session_side - expected).norm() < 1e-12, "{session_side}");
     }
 
     #[test]

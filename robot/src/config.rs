@@ -9,7 +9,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use nalgebra::{Isometry3, Translation3, UnitQuaternion};
+use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion};
 use serde::{Deserialize, Serialize};
 
 use crate::pose::isometry_from_xyz_rpy;
@@ -193,11 +193,13 @@ impl CellConfig {
 
     /// `T_cell_station`.
     pub fn T_cell_station(&self) -> Isometry3<f64> {
-        let [x, y, z] = self.station.xyz_m;
-        Isometry3::from_parts(
-            Translation3::new(x, y, z),
-            UnitQuaternion::from_euler_angles(0.0, 0.0, self.station.yaw_rad),
-        )
+        station_pose(self.station.xyz_m, self.station.yaw_rad)
+    }
+
+    /// A class's handover point (the station's frame: forward, lateral, height) in the cell's
+    /// world frame ([`handover_world`]).
+    pub fn handover_world(&self, handover_station_m: [f64; 3]) -> Point3<f64> {
+        handover_world(&self.T_cell_station(), handover_station_m)
     }
 
     /// Canonical bytes of the robot-relevant configuration (what the lock's `cell_sha256` covers):
@@ -206,6 +208,31 @@ impl CellConfig {
     pub fn canonical_bytes(&self) -> Vec<u8> {
         serde_json::to_vec(self).unwrap_or_default()
     }
+}
+
+/// `T_world_station` of a station at `xyz_m` (world frame, metres) turned `yaw_rad` about the
+/// world's vertical: the `[station]` table. The session and the robot side both build it here.
+#[allow(non_snake_case)]
+pub fn station_pose(xyz_m: [f64; 3], yaw_rad: f64) -> Isometry3<f64> {
+    let [x, y, z] = xyz_m;
+    Isometry3::from_parts(
+        Translation3::new(x, y, z),
+        UnitQuaternion::from_euler_angles(0.0, 0.0, yaw_rad),
+    )
+}
+
+/// The handover point in the world: `T_world_station` applied to the point the trajectory and its
+/// lock give in the station's frame (`[forward, lateral, height]`, metres; the lock's
+/// `handover_station_m`). The one place a handover point is put in the world: the session machine,
+/// `demo`, `sim` and the robot markers all call it, so a cell whose station is turned or moved
+/// sees one point everywhere.
+#[allow(non_snake_case)]
+pub fn handover_world(
+    T_world_station: &Isometry3<f64>,
+    handover_station_m: [f64; 3],
+) -> Point3<f64> {
+    let [forward, lateral, height] = handover_station_m;
+    T_world_station * Point3::new(forward, lateral, height)
 }
 
 /// Stature bounds (m) of a class. `min_m..=max_m` is the class itself, for which the handover

@@ -44,7 +44,7 @@ pub mod signing;
 pub mod validate;
 pub mod witness;
 
-pub use config::{CellConfig, TrajectoryClass, TrajectorySpec};
+pub use config::{handover_world, station_pose, CellConfig, TrajectoryClass, TrajectorySpec};
 pub use error::RobotError;
 pub use layout::{TrajectoryFile, TrajectoryLayout};
 pub use lock::{ApprovedTrajectory, LockFile, SessionLock};

@@ -31,8 +31,7 @@ impl RobotGeometry {
             joint_names,
             T_world_base: cell.T_cell_base(),
             T_flange_tcp: Isometry3::translation(x, y, z),
-            handover_world: cell.T_cell_station()
-                * Point3::new(h.forward_m, h.lateral_m, h.height_m),
+            handover_world: cell.handover_world([h.forward_m, h.lateral_m, h.height_m]),
             model,
         })
     }

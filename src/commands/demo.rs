@@ -448,7 +448,8 @@ impl CellOutputs for DemoOutputs {
     }
 }
 
-/// Each class's handover point (the station frame of its lock, in the world here) and robot geometry.
+/// Each class's handover point (the station frame of its lock, put in the world by the cell's
+/// `[station]`, as the session puts it) and robot geometry.
 struct Handover {
     class: TrajectoryClass,
     point: Point3<f64>,
@@ -456,20 +457,25 @@ struct Handover {
     lock: LockFile,
 }
 
-fn handovers(provider: &FileTrajectories) -> anyhow::Result<Vec<Handover>> {
+#[allow(non_snake_case)]
+fn handovers(
+    provider: &FileTrajectories,
+    T_world_station: &nalgebra::Isometry3<f64>,
+) -> anyhow::Result<Vec<Handover>> {
     TrajectoryClass::ALL
         .into_iter()
         .map(|class| {
             let text = provider.lock_text(class).map_err(|e| anyhow::anyhow!(e))?;
             let lock = LockFile::from_toml_str(class, &text)
                 .map_err(|e| anyhow::anyhow!("lock of {class}: {e}"))?;
-            let [x, y, z] = lock.summary.handover_station_m;
+            let point =
+                ergocell_robot::handover_world(T_world_station, lock.summary.handover_station_m);
             let geometry = provider
                 .robot_geometry(class)
                 .map_err(|e| anyhow::anyhow!(e))?;
             Ok(Handover {
                 class,
-                point: Point3::new(x, y, z),
+                point,
                 geometry,
                 lock,
             })
@@ -660,7 +666,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     // serve them with the neighbouring class (validated for their stature), and they then reach
     // where that class's robot brings the part.
     let true_class = trajectory_class(HeightClass::of(args.stature_m, &ClassThresholds::default()));
-    let handovers = handovers(&provider)?;
+    let handovers = handovers(&provider, &settings.session.T_world_station)?;
     let own = handovers
         .iter()
         .find(|h| h.class == true_class)

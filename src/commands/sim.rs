@@ -31,7 +31,7 @@ use ergocell_sim::experiments::{
 use ergocell_sim::seeds::{self, Goal, Spread};
 use ergocell_sim::{ring_rig, DetectorNoise, RingRigConfig};
 use indicatif::{ProgressBar, ProgressStyle};
-use nalgebra::{Point3, Vector3};
+use nalgebra::Vector3;
 use plotters::prelude::*;
 
 use super::UsageError;
@@ -456,7 +456,6 @@ pub(super) fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     let (cell_text, cell_label) = ergocell::shipped::read_or_shipped(&common.cell)?;
     let cell = CellConfig::from_toml_str(&cell_text)
         .map_err(|e| UsageError(format!("{cell_label}: {e}")))?;
-    let T_world_station = cell.T_cell_station();
     let mut points = Vec::new();
     let mut statures = Vec::new();
     let mut served = Vec::new();
@@ -467,14 +466,14 @@ pub(super) fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
         let spec = TrajectorySpec::from_toml_str(&spec_text)
             .map_err(|e| UsageError(format!("{spec_label}: {e}")))?;
         let h = &spec.handover;
-        points.push(T_world_station * Point3::new(h.forward_m, h.lateral_m, h.height_m));
+        points.push(cell.handover_world([h.forward_m, h.lateral_m, h.height_m]));
         statures.push([spec.stature.min_m, spec.stature.max_m]);
         let (lo, hi) = spec.stature.served_m();
         served.push([lo, hi]);
     }
     let [forward, lateral, height] = common.before_handover;
     Ok(Handovers {
-        before_m: T_world_station * Point3::new(forward, lateral, height),
+        before_m: cell.handover_world([forward, lateral, height]),
         c1_m: points[0],
         c2_m: points[1],
         c3_m: points[2],

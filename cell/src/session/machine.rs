@@ -940,14 +940,11 @@ impl SessionMachine {
     /// The locked trajectory's handover point in the world (the lock stores it in the station's
     /// frame), once locked.
     fn handover_world(&self) -> Option<Point3<f64>> {
-        let [x, y, z] = self
-            .lock
-            .as_ref()?
-            .trajectory()
-            .lock()
-            .summary
-            .handover_station_m;
-        Some(self.config.T_world_station * Point3::new(x, y, z))
+        let lock = self.lock.as_ref()?.trajectory().lock();
+        Some(ergocell_robot::handover_world(
+            &self.config.T_world_station,
+            lock.summary.handover_station_m,
+        ))
     }
 
     fn set_hold_reason(&mut self, why: &str) {
