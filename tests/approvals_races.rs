@@ -145,15 +145,56 @@ fn a_signed_approval_with_a_time_verify_refuses_is_not_written() {
     }
 }
 
-/// Runs ergocell in the cell with the anchor and the state folder `state`: (exit code, stdout,
-/// stderr).
+/// The cell's own account in [`with_state`]: `nobody`, unprivileged. It owns the cell folder and
+/// the state folder and runs every command, as on a real cell; the trust anchor stays root's.
+const CELL_ACCOUNT: u32 = 65534;
+
+/// Hands `paths` (recursively) to [`CELL_ACCOUNT`]. False when `setpriv` (util-linux) is missing,
+/// so the commands cannot run as that account; CI (ERGOCELL_REQUIRE_ANCHOR) must have it.
+fn hand_to_cell_account(paths: &[&std::path::Path]) -> bool {
+    fn chown_all(p: &std::path::Path) {
+        std::os::unix::fs::lchown(p, Some(CELL_ACCOUNT), Some(CELL_ACCOUNT)).unwrap();
+        if p.is_dir() && !p.is_symlink() {
+            for entry in std::fs::read_dir(p).unwrap() {
+                chown_all(&entry.unwrap().path());
+            }
+        }
+    }
+    if Command::new("setpriv").arg("--version").output().is_err() {
+        assert!(
+            std::env::var_os("ERGOCELL_REQUIRE_ANCHOR").is_none(),
+            "ERGOCELL_REQUIRE_ANCHOR is set but setpriv is missing: the cell's account cannot be tried"
+        );
+        return false;
+    }
+    for p in paths {
+        chown_all(p);
+    }
+    true
+}
+
+/// Runs ergocell in the cell with the anchor and the state folder `state` as the cell's own,
+/// unprivileged account ([`CELL_ACCOUNT`]) when `unprivileged`: (exit code, stdout, stderr).
 fn with_state(
     cell: &AnchoredCell,
     state: &std::path::Path,
+    unprivileged: bool,
     args: &[&str],
 ) -> (i32, String, String) {
+    let bin = env!("CARGO_BIN_EXE_ergocell");
+    let mut command = if unprivileged {
+        let mut c = Command::new("setpriv");
+        c.arg(format!("--reuid={CELL_ACCOUNT}"))
+            .arg(format!("--regid={CELL_ACCOUNT}"))
+            .args(["--clear-groups", "--"])
+            .arg(bin)
+            .env("HOME", state);
+        c
+    } else {
+        Command::new(bin)
+    };
     common::outcome(
-        Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        command
             .current_dir(&cell.dir)
             .env("ERGOCELL_TRUST_ANCHOR_DIR", &cell.anchor)
             .env("ERGOCELL_STATE_DIR", state)
@@ -164,6 +205,8 @@ fn with_state(
 /// The approvals folder swapped for a symlink to a folder holding the older copy (before the
 /// withdrawal): the witness keyed its records by the resolved path, so it had never seen that
 /// file and `verify` said "c2: OK". One appended byte in the witness switched it off the same way.
+/// Every command runs as the cell's own unprivileged account, which owns the cell and the witness's
+/// folder (the account the attack was made from); the anchor is root's.
 #[test]
 fn a_symlinked_approvals_folder_or_a_poisoned_witness_does_not_revive_a_withdrawal() {
     let Some(cell) = AnchoredCell::new("approvals_symlink") else {
@@ -171,7 +214,14 @@ fn a_symlinked_approvals_folder_or_a_poisoned_witness_does_not_revive_a_withdraw
     };
     let state = cell.dir.join("state");
     std::fs::create_dir_all(&state).unwrap();
-    let run = |args: &[&str]| with_state(&cell, &state, args);
+    let unprivileged = hand_to_cell_account(&[&cell.dir]);
+    if !unprivileged {
+        let _ = std::io::Write::write_all(
+            &mut std::io::stderr(),
+            b"note: setpriv missing: the commands run as root, not as the cell's account\n",
+        );
+    }
+    let run = |args: &[&str]| with_state(&cell, &state, unprivileged, args);
     let (code, out, err) = run(&["trajectories", "lock", "--class", "c2"]);
     assert_eq!(code, 0, "{out}{err}");
     let sign = |command: &str| {
@@ -187,6 +237,13 @@ fn a_symlinked_approvals_folder_or_a_poisoned_witness_does_not_revive_a_withdraw
         ])
     };
     assert_eq!(sign("approve").0, 0);
+    if unprivileged {
+        // The witness was written by the cell's account, not by root.
+        let owner = std::os::unix::fs::MetadataExt::uid(
+            &std::fs::metadata(state.join("witness.jsonl")).unwrap(),
+        );
+        assert_eq!(owner, CELL_ACCOUNT);
+    }
     let approvals = cell.dir.join("trajectories/approvals");
     let older = std::fs::read(approvals.join("c2.toml")).unwrap();
     assert_eq!(sign("withdraw").0, 0);
