@@ -12,7 +12,7 @@ use ergocell_perception::video_geometry::{VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, Keypoint2, View2};
 use ergocell_skeleton::LANDMARK_COUNT;
 
-use ergocell_cell::session::{SessionEvent, SessionMachine};
+use ergocell_cell::session::{RobotCommand, SessionEvent, SessionMachine};
 
 /// One message a session step sends out, by its role (the topic comes from the publisher's
 /// configuration or, in a recording, from [`ergocell_bridge::topics`]).
@@ -691,10 +691,11 @@ pub fn rula_cost_clause(cost: Option<f64>) -> String {
     cost.map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
 }
 
-/// One line for a person reading the terminal or the log.
 /// The console's lines for one step's events (frames left out): each event as [`describe`] says
 /// it, except that cameras degraded in the same step for the same reason share one line (a cell
-/// started before its camera nodes names them all at once, not six times).
+/// started before its camera nodes names them all at once, not six times), and a hold whose reason
+/// a state change of the same step gives leaves the reason to that line (a session ended for an
+/// unverified trajectory said it twice).
 pub fn describe_step(events: &[SessionEvent]) -> Vec<String> {
     let mut lines = Vec::new();
     let mut i = 0;
@@ -719,6 +720,16 @@ pub fn describe_step(events: &[SessionEvent]) -> Vec<String> {
                     format!("cameras {} degraded: {why}", cameras.join(", "))
                 });
             }
+            SessionEvent::RobotCommandSent {
+                command: RobotCommand::Hold { reason },
+                ..
+            } if events.iter().any(
+                |e| matches!(e, SessionEvent::StateChanged { reason: r, .. } if r == reason),
+            ) =>
+            {
+                lines.push(HOLD_LINE.to_owned());
+                i += 1;
+            }
             e => {
                 lines.push(describe(e));
                 i += 1;
@@ -728,8 +739,12 @@ pub fn describe_step(events: &[SessionEvent]) -> Vec<String> {
     lines
 }
 
+/// How the console names a hold: what the robot does, not how it is stopped.
+const HOLD_LINE: &str = "robot ← HOLD (stopped where it is; not an e-stop)";
+
+/// One line for a person reading the terminal or the log.
 pub fn describe(e: &SessionEvent) -> String {
-    use ergocell_cell::session::{RobotCommand, SessionEvent as E};
+    use ergocell_cell::session::SessionEvent as E;
     use ergocell_ergonomics::height::DecisionBasis;
     match e {
         E::StateChanged {
@@ -787,9 +802,7 @@ pub fn describe(e: &SessionEvent) -> String {
                     .last()
                     .map_or(0.0, |p| p.time_from_start_s)
             ),
-            RobotCommand::Hold { reason } => {
-                format!("robot ← HOLD (stopped where it is; not an e-stop): {reason}")
-            }
+            RobotCommand::Hold { reason } => format!("{HOLD_LINE}: {reason}"),
         },
         E::Warning(w) => format!("RULA warning: {}", w.message),
         E::Frame { .. } => "frame".to_owned(),
@@ -799,6 +812,7 @@ pub fn describe(e: &SessionEvent) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ergocell_cell::session::SessionState;
 
     fn degraded(camera: &str, why: &str) -> SessionEvent {
         SessionEvent::CameraDegraded {
@@ -832,5 +846,30 @@ mod tests {
             ]
         );
         assert!(describe_step(&[]).is_empty());
+    }
+
+    #[test]
+    fn a_hold_whose_reason_the_state_line_gives_says_it_once() {
+        let why = "trajectory for class c2 not verified: no approvals file";
+        let hold = |reason: &str| SessionEvent::RobotCommandSent {
+            stamp_nanos: 1,
+            command: RobotCommand::Hold {
+                reason: reason.to_owned(),
+            },
+        };
+        let ended = SessionEvent::StateChanged {
+            stamp_nanos: 1,
+            from: SessionState::ClassDecided,
+            to: SessionState::SessionEnded,
+            reason: why.to_owned(),
+        };
+        let lines = describe_step(&[hold(why), ended.clone()]);
+        assert_eq!(lines, vec![HOLD_LINE.to_owned(), describe(&ended)]);
+        assert_eq!(lines.iter().filter(|l| l.contains(why)).count(), 1);
+        // A hold alone keeps its reason.
+        assert_eq!(
+            describe_step(&[hold("joint states stale")]),
+            vec![format!("{HOLD_LINE}: joint states stale")]
+        );
     }
 }
