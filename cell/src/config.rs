@@ -105,6 +105,7 @@ impl CellSettings {
             window_nanos: nanos(a.muscle.window_s),
             min_repetitions: a.muscle.min_repetitions,
             min_excursion_nanos: nanos(a.muscle.min_excursion_s),
+            min_return_nanos: nanos(a.muscle.min_return_s),
         };
         assessment.smoothing_window_nanos = nanos(a.smoothing_window_s);
         let mut height = HeightConfig::new(up);
@@ -199,6 +200,7 @@ impl CellSettings {
             "assessment.muscle.min_excursion_s",
             a.muscle.min_excursion_s,
         )?;
+        seconds("assessment.muscle.min_return_s", a.muscle.min_return_s)?;
         let t = &a.thresholds;
         for (key, v) in [
             ("assessment.thresholds.abduction_rad", t.abduction_rad),
@@ -589,6 +591,7 @@ struct MuscleFile {
     window_s: f64,
     min_repetitions: usize,
     min_excursion_s: f64,
+    min_return_s: f64,
 }
 
 impl Default for MuscleFile {
@@ -599,6 +602,7 @@ impl Default for MuscleFile {
             window_s: m.window_nanos as f64 * 1e-9,
             min_repetitions: m.min_repetitions,
             min_excursion_s: m.min_excursion_nanos as f64 * 1e-9,
+            min_return_s: m.min_return_nanos as f64 * 1e-9,
         }
     }
 }

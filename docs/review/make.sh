@@ -21,7 +21,7 @@ for _ in $(seq 50); do grep -q '^review: ' "$tmp/review.log" && break; sleep 0.1
 url=$(sed -n 's/^review: //p' "$tmp/review.log")
 node web/e2e/review.e2e.mjs "$url" "$out/review.png"
 
-# Before vs after adaptation for a 1.90 m operator (class c3, who gains: 3.40 → 3.00 on the truth), 5 handover cycles.
+# Before vs after adaptation for a 1.90 m operator (class c3, who gains: 3.30 → 3.00 on the truth), 5 handover cycles.
 "$bin" sim adaptation --seed 1 --out-dir "$tmp" --record-height 1.90 >/dev/null
 "$bin" report "$tmp/adaptation_1.90m_before.mcap" --compare "$tmp/adaptation_1.90m_after.mcap" \
   --out "$tmp/compare.html"

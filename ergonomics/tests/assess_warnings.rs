@@ -225,8 +225,8 @@ fn repetitions(per_minute: i64) -> bool {
     let mut repeated = false;
     let mut stamp = 0;
     while stamp < 120 * SEC {
-        // One second reaching out (non-relaxed), the rest relaxed.
-        let reaching = stamp % period < SEC;
+        // Two seconds reaching out (non-relaxed), the rest relaxed.
+        let reaching = stamp % period < 2 * SEC;
         repeated = t.update(stamp, !reaching).unwrap().repeated;
         stamp += FRAME;
     }
@@ -240,15 +240,71 @@ fn muscle_use_from_repetitions_four_a_minute() {
     assert!(!repetitions(3));
 }
 
+/// A posture held out of the relaxed one while the angle wanders back across the relaxed limit for
+/// a moment (shorter than the return time) is one excursion: static after a minute, never counted
+/// twice. A return that lasts ends it.
+#[test]
+fn a_moment_back_across_the_relaxed_limit_neither_ends_nor_repeats_an_excursion() {
+    let config = MuscleUseConfig::default();
+    let mut t = MuscleUseTracker::new(config);
+    let blip = config.min_return_nanos / 2;
+    let mut most = 0;
+    let mut last = None;
+    let mut stamp = 0;
+    while stamp <= 62 * SEC {
+        // Out, and every 5 s back for half the return time.
+        let relaxed = stamp % (5 * SEC) >= 4 * SEC && stamp % (5 * SEC) < 4 * SEC + blip;
+        let m = t.update(stamp, relaxed).unwrap();
+        most = most.max(m.repetitions_in_window);
+        last = Some(m);
+        stamp += FRAME;
+    }
+    let held = last.unwrap();
+    assert!(held.static_hold, "{held:?}");
+    assert_eq!(most, 1);
+
+    // Relaxed for the return time: the excursion is over, and with it the hold.
+    let end = stamp + config.min_return_nanos;
+    while stamp <= end {
+        last = Some(t.update(stamp, true).unwrap());
+        stamp += FRAME;
+    }
+    assert!(!last.unwrap().static_hold);
+}
+
+/// Four excursions of 2 s a minute, each interrupted by a moment back: still four.
+#[test]
+fn repetitions_are_counted_through_a_moment_back() {
+    let config = MuscleUseConfig::default();
+    let mut t = MuscleUseTracker::new(config);
+    let period = 15 * SEC;
+    let mut last = None;
+    let mut stamp = 0;
+    while stamp < 59 * SEC {
+        let phase = stamp % period;
+        // Out 0–3 s, except a moment back at 1.5 s; relaxed the rest of the period.
+        let blip = phase >= 3 * SEC / 2 && phase < 3 * SEC / 2 + config.min_return_nanos / 2;
+        let relaxed = phase >= 3 * SEC || blip;
+        last = Some(t.update(stamp, relaxed).unwrap());
+        stamp += FRAME;
+    }
+    let m = last.unwrap();
+    assert_eq!(m.repetitions_in_window, 4, "{m:?}");
+    assert!(m.repeated);
+}
+
 #[test]
 fn band_edge_noise_is_not_counted_as_repetitions() {
     let mut t = MuscleUseTracker::new(MuscleUseConfig::default());
     let mut last = None;
     for k in 0..600 {
-        // Alternates every frame: never 0.3 s outside the relaxed posture.
+        // Alternates every frame: never back in the relaxed posture for the return time, so one
+        // posture held at the limit (one excursion), not sixty repetitions.
         last = Some(t.update(k * FRAME, k % 2 == 0).unwrap());
     }
-    assert_eq!(last.unwrap().repetitions_in_window, 0);
+    let m = last.unwrap();
+    assert_eq!(m.repetitions_in_window, 1);
+    assert!(!m.repeated);
 }
 
 /// "Neck within 20° of upright" is relaxed either way: a head upright within a few degrees, now a
