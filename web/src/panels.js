@@ -222,26 +222,33 @@ export function renderRegions(el, sessions) {
     return;
   }
   const cmp = sessions.length > 1;
+  // The highest score the row reached (its last score with scored time), and the top of its scale.
+  const peak = (r) => {
+    const xs = (r && r.time_share) || [];
+    for (let i = xs.length - 1; i >= 0; i--) if (Number(xs[i]) > 0) return i + 1;
+    return '–';
+  };
+  const peakTitle = 'the highest score reached / the top of the row\'s scale';
   const head = cmp
-    ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num">max</th><th>Share of scored time per score (A above B)</th></tr>`
-    : `<tr><th>Region</th><th class="num">mean</th><th class="num">max</th><th>Share of scored time per score</th><th title="per score level reached: separate stretches at or above it × the longest stretch">Exposure: episodes × longest</th></tr>`;
+    ? `<tr><th>Region</th><th class="num">mean A</th><th class="num">mean B</th><th class="num">Δ B−A</th><th class="num" title="${peakTitle}">highest A, B / top</th><th>Share of scored time per score (A above B)</th></tr>`
+    : `<tr><th>Region</th><th class="num">mean</th><th class="num" title="${peakTitle}">highest / top</th><th>Share of scored time per score</th><th title="per score level reached: separate stretches at or above it × the longest stretch">Exposure: episodes × longest</th></tr>`;
   const body = keys
     .map((k) => {
       const rs = maps.map((m) => m.get(k));
       const r0 = rs.find(Boolean);
       const name = `${r0.side ? `${titleCase(r0.side)} ` : ''}${r0.name}`;
       const max = r0.max_score ?? '–';
-      if (!cmp) return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(rs[0])}</td><td class="num">${esc(max)}</td><td>${shareBar(rs[0])}</td><td class="small">${exposureCell(rs[0])}</td></tr>`;
+      if (!cmp) return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(rs[0])}</td><td class="num">${esc(peak(rs[0]))} / ${esc(max)}</td><td>${shareBar(rs[0])}</td><td class="small">${exposureCell(rs[0])}</td></tr>`;
       const [a, b] = rs;
       let delta = '<span class="muted">–</span>';
       if (a && b && a.mean != null && b.mean != null) {
         const d = b.mean - a.mean;
         delta = `<span class="${d < -0.05 ? 'better' : d > 0.05 ? 'worse' : 'muted'}">${d > 0 ? '+' : ''}${d.toFixed(2)}</span>`;
       }
-      return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(a)}</td><td class="num">${meanChip(b)}</td><td class="num">${delta}</td><td class="num">${esc(max)}</td><td>${shareBar(a, 'A')}${shareBar(b, 'B')}</td></tr>`;
+      return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(a)}</td><td class="num">${meanChip(b)}</td><td class="num">${delta}</td><td class="num">${esc(peak(a))}, ${esc(peak(b))} / ${esc(max)}</td><td>${shareBar(a, 'A')}${shareBar(b, 'B')}</td></tr>`;
     })
     .join('');
-  el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region, grand score per side and the worse side's action level; REBA score per side below when recorded; bar segments from score 1 (deep blue) to the row's maximum (deep red)</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
+  el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region, grand score per side and the worse side's action level; REBA score per side below when recorded; bar segments from score 1 (deep blue) to the top of the row's scale (deep red)</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
 }
 
 /** A bar of shares over levels `first..`, coloured like a score out of `n` levels. */
