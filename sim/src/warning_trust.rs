@@ -317,7 +317,6 @@ fn region_index(r: BodyRegion) -> usize {
     BodyRegion::ALL.iter().position(|x| *x == r).unwrap_or(0)
 }
 
-/// The controller's and the truth's warnings of one session compared.
 /// A session's timing, for [`compare`]: the controller's fixed lag and the frame period.
 #[derive(Debug, Clone, Copy)]
 struct Timing {
@@ -325,6 +324,7 @@ struct Timing {
     period_nanos: i64,
 }
 
+/// The controller's and the truth's warnings of one session compared.
 fn compare(
     ticks: &[Tick],
     truth: &[FrameAssessment],
