@@ -212,7 +212,6 @@ impl CellConfig {
 
 /// `T_world_station` of a station at `xyz_m` (world frame, metres) turned `yaw_rad` about the
 /// world's vertical: the `[station]` table. The session and the robot side both build it here.
-#[allow(non_snake_case)]
 pub fn station_pose(xyz_m: [f64; 3], yaw_rad: f64) -> Isometry3<f64> {
     let [x, y, z] = xyz_m;
     Isometry3::from_parts(
