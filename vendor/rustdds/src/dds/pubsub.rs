@@ -1017,20 +1017,6 @@ impl Subscriber {
   // Retrieves a previously created DataReader belonging to the Subscriber.
   // TODO: Is this even possible. Would probably need to return reference and
   // store references on creation
-  /*
-  pub(crate) fn lookup_datareader<D, SA>(
-    &self,
-    _topic_name: &str,
-  ) -> Option<WithKeyDataReader<D, SA>>
-  where
-    D: Keyed + DeserializeOwned,
-    SA: DeserializerAdapter<D>,
-  {
-    todo!()
-  // TO think: Is this really necessary? Because the caller would have to know
-    // types D and SA. Should we just trust whoever creates DataReaders to also remember them?
-  }
-  */
 
   /// Returns [DomainParticipant](struct.DomainParticipant.html) if it is sill
   /// alive.

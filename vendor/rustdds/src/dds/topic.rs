@@ -120,14 +120,6 @@ impl Topic {
   pub fn kind(&self) -> TopicKind {
     self.inner.kind()
   }
-  /*
-  // DDS spec 2.2.2.3.2 Topic Class
-  // specifies only method get_inconsistent_topic_status
-  // TODO: implement
-  pub(crate) fn get_inconsistent_topic_status() -> Result<InconsistentTopicStatus> {
-    unimplemented!()
-  }
-  */
 }
 
 impl PartialEq for Topic {
@@ -214,10 +206,6 @@ impl InnerTopic {
   pub fn kind(&self) -> TopicKind {
     self.topic_kind
   }
-  /*
-  pub(crate) fn get_inconsistent_topic_status() -> Result<TopicStatus> {
-    unimplemented!()
-  } */
 }
 
 impl PartialEq for InnerTopic {
