@@ -14,7 +14,9 @@
 //! [`approvals_toml`], [`mcap_recording`] (the review's and `replay`'s readers), [`cdr_messages`]
 //! (every message `bridge` decodes), [`rula_json`] (`rula score` worksheets and tables),
 //! [`review_request`] (raw HTTP/1 bytes into the review server) and [`detector_model`] (the twin's
-//! fitted detector and the real measurement it is fitted to).
+//! fitted detector and the real measurement it is fitted to). Three more build inputs that nest as
+//! deep as the fuzzer asks and hand them to every reader of one format: [`nesting_xml`],
+//! [`nesting_toml`], [`nesting_json`].
 #![allow(clippy::missing_panics_doc)]
 
 use std::net::{Ipv4Addr, SocketAddr};
@@ -330,6 +332,188 @@ pub fn rula_json(data: &[u8]) {
         }
     }
     let _ = ergocell_ergonomics::tables::parse_tables(text);
+}
+
+/// The depth a nesting entry asks for (three bytes, so the fuzzer reaches any depth up to it at
+/// once rather than by growing an input level by level), the rest of the input and a fragment of it
+/// as text.
+const MAX_FUZZ_DEPTH: usize = 200_000;
+
+fn depth_and_fragment(data: &[u8]) -> Option<(u8, usize, String)> {
+    let (&[shape, a, b, c], rest) = data.split_first_chunk::<4>()?;
+    let depth =
+        (usize::from(a) << 16 | usize::from(b) << 8 | usize::from(c)) % (MAX_FUZZ_DEPTH + 1);
+    let fragment: String = String::from_utf8_lossy(rest).chars().take(64).collect();
+    Some((shape, depth, fragment))
+}
+
+/// XML nested as deep as the input asks (up to [`MAX_FUZZ_DEPTH`]), in the shapes ergocell's two
+/// XML readers meet: a URDF's `<robot>` or a Qualisys calibration's `<calibration><cameras>` around
+/// elements that open (and close, or never close), with the fuzzer's bytes inside each tag, in a
+/// comment and in CDATA. Both readers take every text: the URDF loader and the rig reader (which
+/// recognises a Qualisys export by its content).
+pub fn nesting_xml(data: &[u8]) {
+    let Some((shape, depth, fragment)) = depth_and_fragment(data) else {
+        return;
+    };
+    let (head, tail) = if shape & 1 == 0 {
+        ("<robot name=\"r\">", "</robot>")
+    } else {
+        (
+            "<?xml version=\"1.0\"?><calibration><cameras>",
+            "</cameras></calibration>",
+        )
+    };
+    let (open, close) = match (shape >> 1) % 4 {
+        0 => (format!("<link{fragment}>"), "</link>".to_owned()),
+        1 => (format!("<x a=\"{fragment}\">"), "</x>".to_owned()),
+        2 => (
+            format!("<x><!--{fragment}--><![CDATA[{fragment}]]>"),
+            "</x>".to_owned(),
+        ),
+        _ => (format!("<x><y/>{fragment}"), "</x>".to_owned()),
+    };
+    let closed = shape & 8 == 0;
+    let mut text = String::with_capacity(head.len() + depth * (open.len() + close.len()));
+    text.push_str(head);
+    for _ in 0..depth {
+        text.push_str(&open);
+    }
+    if closed {
+        for _ in 0..depth {
+            text.push_str(&close);
+        }
+        text.push_str(tail);
+    }
+    urdf(text.as_bytes());
+    rig(text.as_bytes());
+}
+
+/// The top-level tables and keys ergocell's TOML files have, so that a nested value lands where a
+/// reader looks rather than only in a key it ignores.
+const TOML_KEYS: &[&str] = &[
+    "cameras",
+    "stereo_pairs",
+    "robot",
+    "station",
+    "ros",
+    "pipeline",
+    "warnings",
+    "assessment",
+    "approval",
+    "lock",
+    "waypoints",
+    "tasks",
+    "mix",
+    "faults",
+    "noise",
+    "calibration",
+    "x",
+];
+
+/// TOML nested as deep as the input asks, after the fuzzer's own text: arrays in arrays, inline
+/// tables in inline tables, arrays of inline tables, and the two nestings the parser does not
+/// recurse for but a reader's deserialiser and drop do (a dotted key and a dotted table header,
+/// each one level per dot). Every TOML reader takes every text: rigs (three formats), the cell file
+/// (robot, session settings and `[ros]`), trajectories, locks, approvals, the detector model, the
+/// task mix, the fault schedule and the expected handover RULA.
+pub fn nesting_toml(data: &[u8]) {
+    let Some((shape, depth, fragment)) = depth_and_fragment(data) else {
+        return;
+    };
+    let key = TOML_KEYS[usize::from(shape >> 3) % TOML_KEYS.len()];
+    let mut text = String::with_capacity(fragment.len() + 16 + depth * 8);
+    text.push_str(&fragment);
+    text.push('\n');
+    let repeat = |text: &mut String, s: &str| {
+        for _ in 0..depth {
+            text.push_str(s);
+        }
+    };
+    match shape % 6 {
+        0 => {
+            text.push_str(key);
+            text.push_str(" = ");
+            repeat(&mut text, "[");
+            repeat(&mut text, "]");
+        }
+        1 => {
+            text.push_str(key);
+            text.push_str(" = ");
+            repeat(&mut text, "{ a = ");
+            text.push('1');
+            repeat(&mut text, " }");
+        }
+        2 => {
+            text.push_str(key);
+            text.push_str(" = ");
+            repeat(&mut text, "[{ a = ");
+            text.push('1');
+            repeat(&mut text, " }]");
+        }
+        3 => {
+            text.push_str(key);
+            repeat(&mut text, ".a");
+            text.push_str(" = 1");
+        }
+        4 => {
+            text.push('[');
+            text.push_str(key);
+            repeat(&mut text, ".a");
+            text.push_str("]\nb = 1");
+        }
+        _ => {
+            text.push_str("[[");
+            text.push_str(key);
+            repeat(&mut text, ".a");
+            text.push_str("]]\nb = 1");
+        }
+    }
+    text.push('\n');
+    let bytes = text.as_bytes();
+    rig(bytes);
+    cell_toml(bytes);
+    trajectory_toml(bytes);
+    lock_toml(bytes);
+    approvals_toml(bytes);
+    detector_model(bytes);
+    let _ = ergocell_bridge::transport::RosConfig::from_cell_toml(&text);
+    let _ = ergocell_sim::tasks::TaskMix::from_toml_str(&text);
+    let _ = ergocell_sim::faults::FaultSchedule::from_toml_str(&text, "fuzz", &["cam_0", "cam_1"]);
+    let _ = toml::from_str::<ergocell_ergonomics::height::HandoverRula>(&text);
+}
+
+/// JSON nested as deep as the input asks: arrays, objects, arrays of objects, with the fuzzer's
+/// text innermost. Every JSON reader takes every text: `rula score` worksheets and tables, OpenPose
+/// frames, JSON landmark recordings, the detector-error report and the approval witness (as a line).
+pub fn nesting_json(data: &[u8]) {
+    let Some((shape, depth, fragment)) = depth_and_fragment(data) else {
+        return;
+    };
+    let (open, close) = match shape % 3 {
+        0 => ("[", "]"),
+        1 => ("{\"people\":", "}"),
+        _ => ("[{\"format\":", "}]"),
+    };
+    let mut text = String::with_capacity(depth * (open.len() + close.len()) + fragment.len() + 1);
+    for _ in 0..depth {
+        text.push_str(open);
+    }
+    text.push_str(&fragment);
+    if shape & 4 == 0 {
+        for _ in 0..depth {
+            text.push_str(close);
+        }
+    }
+    rula_json(text.as_bytes());
+    openpose_json(text.as_bytes());
+    let mut selected = Vec::with_capacity(text.len() + 1);
+    selected.push(0); // landmarks_file's selector: JSON
+    selected.extend_from_slice(text.as_bytes());
+    landmarks_file(&selected);
+    detector_model(text.as_bytes());
+    text.push('\n');
+    let _ = ergocell_robot::witness::Witness::parse(text.as_bytes());
 }
 
 fn runtime() -> &'static tokio::runtime::Runtime {

@@ -36,6 +36,9 @@ targets!(
     rula_json,
     review_request,
     detector_model,
+    nesting_xml,
+    nesting_toml,
+    nesting_json,
 );
 
 fn fuzz_dir() -> PathBuf {
@@ -154,9 +157,9 @@ fn deep_nesting_is_refused_by_every_reader_without_overflowing_the_stack() {
         format!("{}1{}", "{\"a\":".repeat(n), "}".repeat(n)),
     ];
     assert_eq!(
-        ENTRIES.len() + 3,
+        ENTRIES.len() + 6,
         TARGETS.len(),
-        "every text reader is here"
+        "every text reader is here (the three nesting entries build their own deep inputs)"
     );
     for (name, entry) in ENTRIES {
         for (k, payload) in payloads.iter().enumerate() {
