@@ -173,10 +173,12 @@ fn hand_to_cell_account(paths: &[&std::path::Path]) -> bool {
     true
 }
 
-/// Runs ergocell in the cell with the anchor and the state folder `state` as the cell's own,
-/// unprivileged account ([`CELL_ACCOUNT`]) when `unprivileged`: (exit code, stdout, stderr).
+/// Runs ergocell in the cell with the anchor folder `anchor` and the state folder `state` as the
+/// cell's own, unprivileged account ([`CELL_ACCOUNT`]) when `unprivileged`: (exit code, stdout,
+/// stderr).
 fn with_state(
     cell: &AnchoredCell,
+    anchor: &std::path::Path,
     state: &std::path::Path,
     unprivileged: bool,
     args: &[&str],
@@ -196,7 +198,7 @@ fn with_state(
     common::outcome(
         command
             .current_dir(&cell.dir)
-            .env("ERGOCELL_TRUST_ANCHOR_DIR", &cell.anchor)
+            .env("ERGOCELL_TRUST_ANCHOR_DIR", anchor)
             .env("ERGOCELL_STATE_DIR", state)
             .args(args),
     )
@@ -221,7 +223,7 @@ fn a_symlinked_approvals_folder_or_a_poisoned_witness_does_not_revive_a_withdraw
             b"note: setpriv missing: the commands run as root, not as the cell's account\n",
         );
     }
-    let run = |args: &[&str]| with_state(&cell, &state, unprivileged, args);
+    let run = |args: &[&str]| with_state(&cell, &cell.anchor, &state, unprivileged, args);
     let (code, out, err) = run(&["trajectories", "lock", "--class", "c2"]);
     assert_eq!(code, 0, "{out}{err}");
     let sign = |command: &str| {
@@ -279,4 +281,183 @@ fn a_symlinked_approvals_folder_or_a_poisoned_witness_does_not_revive_a_withdraw
         format!("{out}{err}").contains("the witness of the approvals cannot be read"),
         "{out}{err}"
     );
+}
+
+/// The trust-anchor race, as the hostile account made it: the cell's own unprivileged account
+/// points `ERGOCELL_TRUST_ANCHOR_DIR` at a folder of its own whose `approvers-authority.pub` is a
+/// symlink that **a separate process of that account** flips between root's key and a key of its
+/// own, as fast as `ln` and `mv` go. The account has added its approver (mallory) to the allowed
+/// signers and signed them with its own authority. 50 rounds of `approve` (mallory) and `verify`
+/// run as that account while the flipper runs: none may succeed (root's key rejects the
+/// signature; the account's key is not root's), and nothing is written. Checking the anchor through
+/// one open of the path and reading it through another let `approve` through on the 2nd try.
+#[test]
+fn an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authority() {
+    use std::os::unix::fs::PermissionsExt as _;
+    let Some(cell) = AnchoredCell::new("anchor_flip") else {
+        return;
+    };
+    let state = cell.dir.join("state");
+    std::fs::create_dir_all(&state).unwrap();
+    // The account's own authority, and its approver among the allowed signers, signed by that
+    // authority (with no anchor installed the signature is written unchecked); then the lock.
+    let keys = cell.dir.join("keys");
+    common::key_file(&keys, "evil", 66, "evil");
+    let allowed_path = cell.dir.join("config/approvers/allowed_signers");
+    let mut allowed = std::fs::read_to_string(&allowed_path).unwrap();
+    allowed.push_str(&common::key_file(&keys, "mallory", 3, common::MALLORY));
+    std::fs::write(&allowed_path, &allowed).unwrap();
+    let nowhere = cell.dir.join("no-anchor-here");
+    let (code, out, err) = with_state(
+        &cell,
+        &nowhere,
+        &state,
+        false,
+        &["trajectories", "sign-approvers", "--key", "keys/evil"],
+    );
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    let theirs = std::env::temp_dir().join(format!(
+        "ergocell-test-anchor-theirs-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&theirs);
+    std::fs::create_dir_all(&theirs).unwrap();
+    std::fs::set_permissions(&theirs, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let evil = ergocell_robot::signing::key_from_seed(&[66; 32], "evil");
+    std::fs::write(
+        theirs.join("evil.pub"),
+        ergocell_robot::signing::public_key_openssh(&evil).unwrap() + "\n",
+    )
+    .unwrap();
+    let roots = cell.anchor.join("approvers-authority.pub");
+    let link = theirs.join("approvers-authority.pub");
+    std::os::unix::fs::symlink(&roots, &link).unwrap();
+    if !hand_to_cell_account(&[&cell.dir, &theirs]) {
+        let _ = std::io::Write::write_all(
+            &mut std::io::stderr(),
+            b"SKIPPED: setpriv missing: the race needs a second account\n",
+        );
+        let _ = std::fs::remove_dir_all(&theirs);
+        return;
+    }
+    let run =
+        |anchor: &std::path::Path, args: &[&str]| with_state(&cell, anchor, &state, true, args);
+
+    // The flipper: this test binary again, running only `flip_anchor_link`, as the account.
+    let flipper = Command::new("setpriv")
+        .arg(format!("--reuid={CELL_ACCOUNT}"))
+        .arg(format!("--regid={CELL_ACCOUNT}"))
+        .args(["--clear-groups", "--"])
+        .arg(std::env::current_exe().unwrap())
+        .args([
+            "--exact",
+            "flip_anchor_link",
+            "--nocapture",
+            "--test-threads=1",
+        ])
+        .env(FLIP_LINK, &link)
+        .env(FLIP_TARGETS, format!("evil.pub\n{}", roots.display()))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let (mut saw_evil, mut saw_root) = (false, false);
+    let mut outcomes = Vec::new();
+    for round in 0..50 {
+        let approve = run(
+            &theirs,
+            &[
+                "trajectories",
+                "approve",
+                "--class",
+                "c2",
+                "--by",
+                common::MALLORY,
+                "--key",
+                "keys/mallory",
+            ],
+        );
+        let verify = run(&theirs, &["trajectories", "verify", "--class", "c2"]);
+        match std::fs::read_link(&link) {
+            Ok(target) if target == std::path::Path::new("evil.pub") => saw_evil = true,
+            Ok(target) if target == roots => saw_root = true,
+            _ => {}
+        }
+        outcomes.push((round, approve, verify));
+    }
+    let mut flipper = flipper;
+    let still_flipping = flipper.try_wait().unwrap().is_none();
+    let _ = flipper.kill();
+    let _ = flipper.wait();
+    let _ = std::fs::remove_dir_all(&theirs);
+    assert!(still_flipping, "the flipping process stopped early");
+    assert!(saw_evil && saw_root, "the link was seen on both keys");
+    for (round, (a_code, a_out, a_err), (v_code, v_out, v_err)) in &outcomes {
+        assert_ne!(*a_code, 0, "round {round}: approve passed: {a_out}{a_err}");
+        assert_ne!(*v_code, 0, "round {round}: verify passed: {v_out}{v_err}");
+    }
+    assert_eq!(entries(&cell), 0, "an approval was written");
+
+    // The control: had root installed the account's key as the authority, the same approve would
+    // pass, so the refusals above came from the anchor check and nothing else.
+    let installed = std::env::temp_dir().join(format!(
+        "ergocell-test-anchor-installed-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&installed);
+    std::fs::create_dir_all(&installed).unwrap();
+    std::fs::set_permissions(&installed, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let key = installed.join("approvers-authority.pub");
+    std::fs::write(
+        &key,
+        ergocell_robot::signing::public_key_openssh(&evil).unwrap() + "\n",
+    )
+    .unwrap();
+    std::fs::set_permissions(&key, std::fs::Permissions::from_mode(0o644)).unwrap();
+    let (code, out, err) = run(
+        &installed,
+        &[
+            "trajectories",
+            "approve",
+            "--class",
+            "c2",
+            "--by",
+            common::MALLORY,
+            "--key",
+            "keys/mallory",
+        ],
+    );
+    let _ = std::fs::remove_dir_all(&installed);
+    assert_eq!(code, 0, "{out}{err}");
+    assert_eq!(entries(&cell), 1);
+}
+
+/// The link [`flip_anchor_link`] flips, and its two targets (a line each).
+const FLIP_LINK: &str = "ERGOCELL_TEST_FLIP_LINK";
+const FLIP_TARGETS: &str = "ERGOCELL_TEST_FLIP_TARGETS";
+
+/// Not a test of its own: the hostile account's flipper, run as a separate process by
+/// [`an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authority`] (this binary
+/// with `--exact flip_anchor_link`). With the variables set it points the link at each target in
+/// turn (a new symlink renamed over it, atomic) until killed, as fast as two system calls go; in an
+/// ordinary test run it returns at once.
+#[test]
+fn flip_anchor_link() {
+    let (Some(link), Some(targets)) = (
+        std::env::var_os(FLIP_LINK),
+        std::env::var(FLIP_TARGETS).ok(),
+    ) else {
+        return;
+    };
+    let link = std::path::PathBuf::from(link);
+    let tmp = link.with_extension("flip");
+    let targets: Vec<&str> = targets.lines().collect();
+    for k in 0usize.. {
+        let _ = std::fs::remove_file(&tmp);
+        if std::os::unix::fs::symlink(targets[k % targets.len()], &tmp).is_ok() {
+            let _ = std::fs::rename(&tmp, &link);
+        }
+    }
 }
