@@ -332,19 +332,31 @@ fn with_log_times(rec: &Path, out: &Path, log_time: impl Fn(u64, u64, u64) -> u6
 
 /// A recording whose log times disagree with its own capture stamps (one time for every message;
 /// times running backwards) is read by the capture stamps, and says so: the exposure files the
-/// session under the same day and week with the same seconds, and the report spans the same time.
+/// session under the same day and week with the same seconds, and the report spans the same time,
+/// through the whole-file reader and the overview's streamed one alike.
 #[test]
 fn a_recording_whose_clock_disagrees_with_its_capture_stamps_is_read_by_the_stamps() {
     let scratch = Scratch::new("exposure-clock");
     let rec = common::demo_recording("exposure-demo.mcap");
-    let report_of = |r: &Path, name: &str| {
+    // The whole-file reader, and the overview's streamed one keeping every frame.
+    let overview: &[&str] = &[
+        "--page-frames",
+        "overview",
+        "--overview-frames",
+        "1000000",
+        "--window-frames",
+        "1000000",
+    ];
+    let report_with = |r: &Path, name: &str, extra: &[&str]| {
         let html = scratch.0.join(name);
-        let o = ergocell(&[
+        let mut args = vec![
             "report",
             r.to_str().unwrap(),
             "--out",
             html.to_str().unwrap(),
-        ]);
+        ];
+        args.extend_from_slice(extra);
+        let o = ergocell(&args);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let html = std::fs::read_to_string(&html).unwrap();
         let start = html.find("window.ERGOCELL_REVIEW_DATA = ").unwrap() + 30;
@@ -352,6 +364,7 @@ fn a_recording_whose_clock_disagrees_with_its_capture_stamps_is_read_by_the_stam
         let data: serde_json::Value = serde_json::from_str(&html[start..end]).unwrap();
         data["sessions"][0].clone()
     };
+    let report_of = |r: &Path, name: &str| report_with(r, name, &[]);
     let original = report_of(rec, "original.html");
     let span = |s: &serde_json::Value| {
         s["frames"]["t"]
@@ -376,6 +389,15 @@ fn a_recording_whose_clock_disagrees_with_its_capture_stamps_is_read_by_the_stam
     with_log_times(rec, &reversed, |k, n, t| t + day + (n - k) * 100_000_000);
     for (lying, name) in [(&constant, "constant"), (&reversed, "reversed")] {
         let s = report_of(lying, &format!("{name}.html"));
+        // the overview's reader reads the same frames at the same times and names the clock too
+        // (its first disagreeing message is the file's first, the whole-file reader's the first
+        // in log-time order)
+        let streamed = report_with(lying, &format!("{name}-overview.html"), overview);
+        assert_eq!(
+            streamed["frames"]["t"], s["frames"]["t"],
+            "{name}: overview"
+        );
+        assert_eq!(problems(&streamed), problems(&s), "{name}: overview");
         assert_eq!(
             s["frames"]["t"].as_array().unwrap().len(),
             original["frames"]["t"].as_array().unwrap().len(),

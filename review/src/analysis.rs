@@ -1421,6 +1421,7 @@ mod tests {
     fn stamped<M>(t: u64, message: M) -> Stamped<M> {
         Stamped {
             log_time_nanos: t,
+            logged_nanos: t,
             message,
         }
     }

@@ -227,6 +227,8 @@ impl FirstPass {
 
     /// Reads one message of the wanted session.
     fn take(&mut self, message: Decoded, log_time: u64) {
+        // Pass 2 chooses a message before decoding it, by the log time the file has.
+        let logged = message.logged_nanos();
         let frame = match &message {
             Decoded::Pose(m) => Some((FrameTopic::Pose, &m.message.header)),
             Decoded::Ergonomics(m) => Some((FrameTopic::Ergonomics, &m.message.header)),
@@ -234,8 +236,7 @@ impl FirstPass {
             _ => None,
         };
         if let Some((topic, header)) = frame {
-            self.frame_messages
-                .push((topic, stamp_of(header), log_time));
+            self.frame_messages.push((topic, stamp_of(header), logged));
         }
         match &message {
             Decoded::Pose(m) => {
@@ -561,22 +562,30 @@ struct SecondPass<'a> {
     ranges: Ranges,
 }
 
+impl SecondPass<'_> {
+    /// Whether a robot marker at `t` is kept: inside a window kept at the recorded rate, or a
+    /// bucket after the last one kept.
+    fn marker_due(&mut self, t: u64) -> bool {
+        let in_window = self.plan.windows.iter().any(|&(a, b)| a <= t && t <= b);
+        let due = self
+            .last_marker
+            .is_none_or(|last| t >= last.saturating_add(self.plan.bucket_nanos));
+        if in_window || due {
+            self.last_marker = Some(t);
+        }
+        in_window || due
+    }
+}
+
 impl Visit for SecondPass<'_> {
     fn wants_at(&mut self, topic: &str, log_time_nanos: u64) -> bool {
         if let Some(frame) = FrameTopic::of(topic) {
             return self.plan.kept_messages.contains(&(frame, log_time_nanos));
         }
         if topic == crate::read::topics::ROBOT_MARKERS {
-            let t = log_time_nanos;
-            let in_window = self.plan.windows.iter().any(|&(a, b)| a <= t && t <= b);
-            let due = self
-                .last_marker
-                .is_none_or(|last| t >= last.saturating_add(self.plan.bucket_nanos));
-            if in_window || due {
-                self.last_marker = Some(t);
-                return true;
-            }
-            return false;
+            // Where the clock disagreed, a marker's time is known only once decoded: all are
+            // decoded and thinned in `message`.
+            return self.plan.stats.clock_disagreements > 0 || self.marker_due(log_time_nanos);
         }
         true
     }
@@ -598,6 +607,9 @@ impl Visit for SecondPass<'_> {
             Decoded::Pose(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
             Decoded::Ergonomics(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
             Decoded::Reba(m) => self.plan.kept.contains(&stamp_of(&m.message.header)),
+            Decoded::RobotMarkers(_) if self.plan.stats.clock_disagreements > 0 => {
+                self.marker_due(t)
+            }
             _ => true,
         };
         if keep {

@@ -24,7 +24,11 @@ pub use ergocell_bridge::topics;
 /// A message and its log time (nanoseconds, the session clock).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stamped<M> {
+    /// The time the message is read at: its log time, or its capture stamp where the recording's
+    /// clock disagreed with it ([`MAX_LOG_CLOCK_DISAGREEMENT_NANOS`]).
     pub log_time_nanos: u64,
+    /// The log time as the file has it (what [`Visit::wants_at`] was asked with).
+    pub logged_nanos: u64,
     pub message: M,
 }
 
@@ -87,6 +91,20 @@ impl Decoded {
         }
     }
 
+    /// The log time as the file has it, nanoseconds ([`Stamped::logged_nanos`]).
+    pub fn logged_nanos(&self) -> u64 {
+        match self {
+            Self::Pose(m) => m.logged_nanos,
+            Self::Ergonomics(m) => m.logged_nanos,
+            Self::Reba(m) => m.logged_nanos,
+            Self::Warning(m) => m.logged_nanos,
+            Self::State(m) => m.logged_nanos,
+            Self::RobotMarkers(m) => m.logged_nanos,
+            Self::Trajectory(m) => m.logged_nanos,
+            Self::ControllerEvent(m) => m.logged_nanos,
+        }
+    }
+
     /// The message's log time, nanoseconds (the session clock).
     pub fn log_time_nanos(&self) -> u64 {
         match self {
@@ -139,6 +157,9 @@ pub struct ReadStats {
     /// Messages on the session's topics (operator, RULA, warnings, states, robot markers) that were
     /// decoded or not asked for.
     pub session_messages: u64,
+    /// Messages read by their capture stamp because their log time disagreed with it
+    /// ([`MAX_LOG_CLOCK_DISAGREEMENT_NANOS`]); one of [`ReadStats::problems`] names them.
+    pub clock_disagreements: u64,
 }
 
 /// What could be read of one recording.
@@ -676,6 +697,7 @@ impl<'v, V: Visit> Reader<'v, V> {
     }
 
     fn finish(mut self) -> Result<ReadStats, ReviewError> {
+        self.rec.clock_disagreements = self.clock_disagreements;
         if let Some((log, stamp)) = self.first_disagreement {
             if let Some((first, last)) = self.decoded_span {
                 self.rec.first_log_time_nanos = Some(first);
@@ -798,6 +820,7 @@ fn take<M: RosMessage + DeserializeOwned>(
     let message = cdr::decode::<M>(data).map_err(|e| e.to_string())?;
     Ok(Stamped {
         log_time_nanos,
+        logged_nanos: log_time_nanos,
         message,
     })
 }
@@ -837,6 +860,7 @@ fn take_session_state(
     };
     Ok(Stamped {
         log_time_nanos,
+        logged_nanos: log_time_nanos,
         message: SessionState {
             header: old.header,
             state: old.state,
@@ -885,6 +909,7 @@ fn take_ergonomic_state(
     };
     Ok(Stamped {
         log_time_nanos,
+        logged_nanos: log_time_nanos,
         message: ErgonomicState {
             header: old.header,
             left: old.left,
@@ -926,6 +951,7 @@ fn take_posture_warning(
     };
     Ok(Stamped {
         log_time_nanos,
+        logged_nanos: log_time_nanos,
         message: PostureWarning {
             header: old.header,
             kind: old.kind,
@@ -984,6 +1010,7 @@ fn take_controller_event(
     };
     Ok(Stamped {
         log_time_nanos,
+        logged_nanos: log_time_nanos,
         message: ControllerEvent {
             leg_id: legacy_leg_id(&old.leg),
             header: old.header,
@@ -1133,6 +1160,7 @@ mod tests {
     fn stamped<M>(t: u64, message: M) -> Stamped<M> {
         Stamped {
             log_time_nanos: t,
+            logged_nanos: t,
             message,
         }
     }
