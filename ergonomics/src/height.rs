@@ -371,6 +371,20 @@ impl ServedStatures {
     pub fn of(&self, class: HeightClass) -> [f64; 2] {
         self.ranges_m[class.index()]
     }
+
+    /// Whether `class`'s trajectory serves an operator whose stature interval is `interval_m`
+    /// ([`serves_interval`]).
+    pub fn serves(&self, class: HeightClass, interval_m: [f64; 2]) -> bool {
+        serves_interval(self.of(class), interval_m)
+    }
+}
+
+/// The one rule for whether a trajectory served for the statures `served_m` (`[min_m, max_m]`) may
+/// be handed to an operator whose stature interval is `interval_m` (`height ± k·σ`): the whole
+/// interval inside, bounds included. The height decision chooses by it, the session checks it
+/// again before the robot moves, and the twin's experiments judge service by it.
+pub fn serves_interval(served_m: [f64; 2], interval_m: [f64; 2]) -> bool {
+    served_m[0] <= interval_m[0] && interval_m[1] <= served_m[1]
 }
 
 /// Each class's expected RULA grand score for an operator of a given stature holding the part at
@@ -984,12 +998,7 @@ impl HeightEstimator {
         let k = c.decision_sigmas;
         let (h, sigma) = (estimate.height_m, estimate.uncertainty_m.max(1e-6));
         let interval_m = [h - k * sigma, h + k * sigma];
-        let serves = |class: HeightClass| {
-            c.served_m.is_none_or(|s| {
-                let [lo, hi] = s.of(class);
-                lo <= interval_m[0] && interval_m[1] <= hi
-            })
-        };
+        let serves = |class: HeightClass| c.served_m.is_none_or(|s| s.serves(class, interval_m));
         let expected = |class: HeightClass| {
             c.handover_rula.as_ref().map(|curves| {
                 normal_grid(h, sigma)

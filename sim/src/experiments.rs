@@ -33,7 +33,8 @@ use ergocell_anthropometry::ansur::{Person, Split};
 use ergocell_cell::{Pipeline, PipelineConfig, TrackedFrame};
 use ergocell_ergonomics::assess::BodyRegion;
 use ergocell_ergonomics::height::{
-    calibrate_ear_offset, CalibrationSample, DecisionBasis, EarOffset, HandoverRula, ServedStatures,
+    calibrate_ear_offset, serves_interval, CalibrationSample, DecisionBasis, EarOffset,
+    HandoverRula, ServedStatures,
 };
 use ergocell_ergonomics::rula::action_level;
 use ergocell_ergonomics::{
@@ -107,15 +108,6 @@ impl Handovers {
         }
     }
 
-    /// The statures the class's trajectory was validated for.
-    pub fn stature_bounds_m(&self, class: HeightClass) -> [f64; 2] {
-        match class {
-            HeightClass::C1 => self.c1_stature_m,
-            HeightClass::C2 => self.c2_stature_m,
-            HeightClass::C3 => self.c3_stature_m,
-        }
-    }
-
     /// The served statures of every class, for the height decision.
     pub fn served(&self) -> Result<ServedStatures, SimError> {
         Ok(ServedStatures::new([
@@ -125,11 +117,20 @@ impl Handovers {
         ])?)
     }
 
-    /// Whether the cell would hand over to an operator of this stature in `class` (inside the
-    /// statures the class's trajectory was validated for, bounds included, as the session checks).
-    pub fn serves(&self, class: HeightClass, stature_m: f64) -> bool {
-        let [lo, hi] = self.stature_bounds_m(class);
-        (lo..=hi).contains(&stature_m)
+    /// The statures `class`'s trajectory is served for.
+    pub fn served_m(&self, class: HeightClass) -> [f64; 2] {
+        match class {
+            HeightClass::C1 => self.c1_served_m,
+            HeightClass::C2 => self.c2_served_m,
+            HeightClass::C3 => self.c3_served_m,
+        }
+    }
+
+    /// Whether the cell would hand over in `class` to an operator whose stature interval is
+    /// `interval_m`: the session's own rule ([`serves_interval`]: the whole interval inside the
+    /// statures the class's trajectory is served for).
+    pub fn serves(&self, class: HeightClass, interval_m: [f64; 2]) -> bool {
+        serves_interval(self.served_m(class), interval_m)
     }
 }
 
@@ -676,11 +677,12 @@ pub fn adaptation(
         let after_point = handovers.for_class(class);
         r.handover_after_m
             .push([after_point.x, after_point.y, after_point.z]);
-        let served = handovers.serves(class, h);
+        // The paper's protocol: the class of the true stature, so the interval is the point.
+        let served = handovers.serves(class, [h, h]);
         r.not_served_after.push((!served).then(|| {
-            let [lo, hi] = handovers.stature_bounds_m(class);
+            let [lo, hi] = handovers.served_m(class);
             format!(
-                "{h:.2} m is outside the statures class {}'s trajectory was validated for \
+                "{h:.2} m is outside the statures class {}'s trajectory is served for \
                  ({lo:.2}–{hi:.2} m): the session ends without moving the robot",
                 class.name()
             )

@@ -1,6 +1,6 @@
 //! The session state machine (see the module docs of [`crate::session`]).
 
-use ergocell_ergonomics::height::ServedStatures;
+use ergocell_ergonomics::height::{serves_interval, ServedStatures};
 use ergocell_ergonomics::warnings::WarningKind;
 use ergocell_ergonomics::{HeightClass, HeightDecision, HeightStatus, UpVector};
 use ergocell_perception::{CameraRig, View2};
@@ -770,7 +770,7 @@ impl SessionMachine {
         // A class's trajectory suits the statures it was validated and is served for: the
         // operator's whole interval must lie inside them. Outside, the robot does not move.
         match self.provider.stature_bounds_m(class) {
-            Ok((min_m, max_m)) if min_m <= lo_m && hi_m <= max_m => {}
+            Ok((min_m, max_m)) if serves_interval([min_m, max_m], decision.interval_m) => {}
             Ok((min_m, max_m)) => {
                 let why = format!(
                     "operator stature {lo_m:.3}–{hi_m:.3} m reaches outside the statures class {class}'s \
