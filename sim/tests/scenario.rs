@@ -253,34 +253,40 @@ fn the_solved_hold_posture_reaches_every_class_handover_for_every_stature() {
     }
 }
 
-/// After adaptation an operator outside the statures of their class's trajectory is not served —
-/// the session ends without moving the robot — and the experiment says so instead of a score.
+/// After adaptation an operator outside the statures their class's trajectory is served for is not
+/// served — the session ends without moving the robot — and the experiment says so instead of a
+/// score. The rule is the session's: 1.45 m lies below c1's own statures (1.50–1.68 m) but inside
+/// those its trajectory is served for, and is served.
 #[test]
-fn adaptation_reports_operators_outside_the_validated_statures_as_not_served() {
+fn adaptation_reports_operators_outside_the_served_statures_as_not_served() {
     let mut none = |_: usize, _: usize| {};
     let r = ergocell_sim::experiments::adaptation(
         &setup(1),
         &handovers(),
-        &[1.45, 1.60, 2.05],
+        &[1.40, 1.45, 1.60, 2.05, 2.10],
         1,
         &mut none,
     )
     .unwrap();
+    let range = |[lo, hi]: [f64; 2]| format!("{lo:.2}–{hi:.2}");
+    let h = handovers();
     assert!(r.not_served_after[0]
         .as_ref()
         .unwrap()
-        .contains("1.50–1.68"));
-    assert!(r.not_served_after[1].is_none());
-    assert!(r.not_served_after[2]
+        .contains(&range(h.c1_served_m)));
+    assert!(r.not_served_after[4]
         .as_ref()
         .unwrap()
-        .contains("1.82–2.00"));
-    for i in [0, 2] {
+        .contains(&range(h.c3_served_m)));
+    for i in [0, 4] {
         assert!(r.mean_grand_score_after[i].is_nan());
         assert!(r.true_mean_grand_score_after[i].is_nan());
         assert!(r.mean_grand_score_before[i].is_finite(), "before is scored");
     }
-    assert!(r.mean_grand_score_after[1].is_finite());
+    for i in [1, 2, 3] {
+        assert!(r.not_served_after[i].is_none(), "{i}");
+        assert!(r.mean_grand_score_after[i].is_finite());
+    }
     let json = serde_json::to_value(&r).unwrap();
     assert!(json["mean_grand_score_after"][0].is_null());
 }
