@@ -363,7 +363,19 @@ fn an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authori
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
+    // The rounds start once the link has been seen on both keys (the flipper is running).
     let (mut saw_evil, mut saw_root) = (false, false);
+    for _ in 0..2000 {
+        match std::fs::read_link(&link) {
+            Ok(target) if target == std::path::Path::new("evil.pub") => saw_evil = true,
+            Ok(target) if target == roots => saw_root = true,
+            _ => {}
+        }
+        if saw_evil && saw_root {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
     let mut outcomes = Vec::new();
     for round in 0..50 {
         let approve = run(
@@ -380,11 +392,6 @@ fn an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authori
             ],
         );
         let verify = run(&theirs, &["trajectories", "verify", "--class", "c2"]);
-        match std::fs::read_link(&link) {
-            Ok(target) if target == std::path::Path::new("evil.pub") => saw_evil = true,
-            Ok(target) if target == roots => saw_root = true,
-            _ => {}
-        }
         outcomes.push((round, approve, verify));
     }
     let mut flipper = flipper;
@@ -393,7 +400,10 @@ fn an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authori
     let _ = flipper.wait();
     let _ = std::fs::remove_dir_all(&theirs);
     assert!(still_flipping, "the flipping process stopped early");
-    assert!(saw_evil && saw_root, "the link was seen on both keys");
+    assert!(
+        saw_evil && saw_root,
+        "the link was not seen on both keys within 20 s"
+    );
     for (round, (a_code, a_out, a_err), (v_code, v_out, v_err)) in &outcomes {
         assert_ne!(*a_code, 0, "round {round}: approve passed: {a_out}{a_err}");
         assert_ne!(*v_code, 0, "round {round}: verify passed: {v_out}{v_err}");
