@@ -124,7 +124,7 @@ impl Harness {
             RobotInterface::Topic => (None, None),
             RobotInterface::Action => {
                 let (tx, rx) = tokio::sync::mpsc::unbounded_channel();
-                (Some((tx, ros.goal_tolerances())), Some(rx))
+                (Some(tx), Some(rx))
             }
         };
         let timeout_s = ros.joint_state_timeout_s;

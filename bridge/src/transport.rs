@@ -55,12 +55,13 @@ pub struct RosConfig {
     /// The goal's path tolerance per joint (radians): the largest deviation while it runs.
     #[serde(default = "default_path_tolerance")]
     pub path_tolerance_rad: f64,
-    /// The goal's tolerance per joint at the end (radians).
-    #[serde(default = "default_goal_tolerance")]
-    pub goal_tolerance_rad: f64,
-    /// How late the goal may arrive after its last point's time (seconds).
-    #[serde(default = "default_goal_time_tolerance")]
-    pub goal_time_tolerance_s: f64,
+    /// At most this goal tolerance per joint at a leg's end (radians): tightens the lock's
+    /// (`[monitor] goal_tolerance_rad` when it was locked); unset, the lock's holds.
+    #[serde(default)]
+    pub goal_tolerance_rad: Option<f64>,
+    /// At most this late after a leg's last point (seconds): tightens the lock's.
+    #[serde(default)]
+    pub goal_time_tolerance_s: Option<f64>,
     /// The execution monitor (`ergocell_robot::monitor`): every `/joint_states` sample against the
     /// locked leg; a deviation cancels and holds, and ends the session.
     #[serde(default = "default_true")]
@@ -68,15 +69,15 @@ pub struct RosConfig {
     /// Joint states older than this (seconds) are stale: the robot is held until they are back.
     #[serde(default = "default_joint_state_timeout")]
     pub joint_state_timeout_s: f64,
-    /// At rest (a leg arrived, a hold stopped), the largest motion allowed (radians).
-    #[serde(default = "default_rest_tolerance")]
-    pub rest_tolerance_rad: f64,
-    /// A stall is judged over this window (seconds).
-    #[serde(default = "default_stall_window")]
-    pub stall_window_s: f64,
-    /// After a hold, the time the robot has to come to rest (seconds).
-    #[serde(default = "default_stop_time")]
-    pub stop_time_s: f64,
+    /// At rest (a leg arrived, a hold stopped), at most this motion (radians): tightens the lock's.
+    #[serde(default)]
+    pub rest_tolerance_rad: Option<f64>,
+    /// A stall is judged over at most this window (seconds): tightens the lock's.
+    #[serde(default)]
+    pub stall_window_s: Option<f64>,
+    /// After a hold, at most this time to come to rest (seconds): tightens the lock's.
+    #[serde(default)]
+    pub stop_time_s: Option<f64>,
     /// Read the KUKA driver's state (kuka_drivers conventions) and send no goal unless it is
     /// configured and controlling; "stopped by user" or "stopped by error" hold the robot.
     #[serde(default)]
@@ -155,26 +156,11 @@ fn default_distro() -> String {
 fn default_path_tolerance() -> f64 {
     0.05
 }
-fn default_goal_tolerance() -> f64 {
-    0.01
-}
-fn default_goal_time_tolerance() -> f64 {
-    1.0
-}
 fn default_true() -> bool {
     true
 }
 fn default_joint_state_timeout() -> f64 {
     0.1
-}
-fn default_rest_tolerance() -> f64 {
-    0.01
-}
-fn default_stall_window() -> f64 {
-    0.1
-}
-fn default_stop_time() -> f64 {
-    0.5
 }
 fn default_is_configured() -> String {
     topics::IS_CONFIGURED.to_owned()
@@ -247,12 +233,7 @@ impl RosConfig {
                 cfg.distro
             )));
         }
-        for (key, value, min) in [
-            (
-                "path_tolerance_rad",
-                cfg.path_tolerance_rad,
-                f64::MIN_POSITIVE,
-            ),
+        let caps = [
             (
                 "goal_tolerance_rad",
                 cfg.goal_tolerance_rad,
@@ -260,18 +241,27 @@ impl RosConfig {
             ),
             ("goal_time_tolerance_s", cfg.goal_time_tolerance_s, 0.0),
             (
-                "joint_state_timeout_s",
-                cfg.joint_state_timeout_s,
-                f64::MIN_POSITIVE,
-            ),
-            (
                 "rest_tolerance_rad",
                 cfg.rest_tolerance_rad,
                 f64::MIN_POSITIVE,
             ),
             ("stall_window_s", cfg.stall_window_s, f64::MIN_POSITIVE),
             ("stop_time_s", cfg.stop_time_s, 0.0),
-        ] {
+        ];
+        let set = [
+            (
+                "path_tolerance_rad",
+                Some(cfg.path_tolerance_rad),
+                f64::MIN_POSITIVE,
+            ),
+            (
+                "joint_state_timeout_s",
+                Some(cfg.joint_state_timeout_s),
+                f64::MIN_POSITIVE,
+            ),
+        ];
+        for (key, value, min) in set.into_iter().chain(caps) {
+            let Some(value) = value else { continue };
             if !(value.is_finite() && value >= min && value <= 10.0) {
                 return Err(BridgeError::Config(format!(
                     "[ros] {key} = {value}: expected a finite number {}, at most 10",
@@ -285,15 +275,6 @@ impl RosConfig {
     /// The controller's FollowJointTrajectory Feedback layout (from `distro`).
     pub fn feedback_layout(&self) -> Option<crate::action::FeedbackLayout> {
         crate::action::FeedbackLayout::for_distro(&self.distro)
-    }
-
-    /// The tolerances every goal carries.
-    pub fn goal_tolerances(&self) -> crate::action::GoalTolerances {
-        crate::action::GoalTolerances {
-            path_position_rad: self.path_tolerance_rad,
-            goal_position_rad: self.goal_tolerance_rad,
-            goal_time_s: self.goal_time_tolerance_s,
-        }
     }
 
     /// The topic of one camera.
@@ -571,7 +552,8 @@ mod tests {
             cfg.feedback_layout(),
             Some(crate::action::FeedbackLayout::WithoutIndex)
         );
-        assert_eq!(cfg.goal_tolerances().path_position_rad, 0.05);
+        assert_eq!(cfg.path_tolerance_rad, 0.05);
+        assert_eq!(cfg.goal_tolerance_rad, None, "unset: the lock's holds");
         let action = RosConfig::from_cell_toml(&format!(
             "{base}robot_interface = \"action\"\ndistro = \"kilted\"\npath_tolerance_rad = 0.02\n"
         ))
@@ -581,7 +563,7 @@ mod tests {
             action.feedback_layout(),
             Some(crate::action::FeedbackLayout::WithIndex)
         );
-        assert_eq!(action.goal_tolerances().path_position_rad, 0.02);
+        assert_eq!(action.path_tolerance_rad, 0.02);
         for (bad, says) in [
             ("distro = \"iron\"", "distro"),
             ("robot_interface = \"service\"", "robot_interface"),

@@ -10,6 +10,7 @@
 //! |---|---|---|
 //! | `[robot]` | `ergocell_robot` (validated through it) | URDF, base pose, limits — covered by the trajectory locks |
 //! | `[station]` | `ergocell_robot` | the operator station's pose in the world — covered by the locks, and the session's station |
+//! | `[monitor]` | `ergocell_robot` | the execution monitor's goal, rest, stall and stop limits — covered by the locks, recorded in each |
 //! | `[ros]` | `ergocell_bridge` | topics, DDS domain (kept as an opaque table here: the core knows no ROS) |
 //! | `[session]` | here | stale, hold, resume and departure bounds |
 //! | `[pipeline]` | here | frame assembly, fusion method, One-Euro filter, the tracked gate, the operator gate |
@@ -75,7 +76,7 @@ impl CellSettings {
             reason,
         };
         let file: CellFile = toml::from_str(text).map_err(|e| err(e.to_string()))?;
-        // [robot] and [station] are the robot crate's: validated by it, as the locks read them.
+        // [robot], [station] and [monitor] are the robot crate's: validated by it, as the locks read them.
         ergocell_robot::CellConfig::from_toml_str(text).map_err(|e| err(e.to_string()))?;
         let settings = Self {
             session: file.session.to_config(&file.station).map_err(err)?,
@@ -377,7 +378,7 @@ fn landmarks(key: &str, v: usize) -> Result<(), String> {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct CellFile {
-    // [robot] and [ros] are their owners' (validated by the robot crate, read by the bridge): named
+    // [robot], [monitor] and [ros] are their owners' (validated by the robot crate, read by the bridge): named
     // here only so that `deny_unknown_fields` knows them.
     #[allow(dead_code)]
     robot: toml::Table,
@@ -385,6 +386,10 @@ struct CellFile {
     #[serde(default)]
     #[allow(dead_code)]
     ros: Option<toml::Table>,
+    /// The execution monitor's limits: the robot crate's, validated by it and locked.
+    #[serde(default)]
+    #[allow(dead_code)]
+    monitor: Option<toml::Table>,
     #[serde(default)]
     session: SessionFile,
     #[serde(default)]

@@ -1,4 +1,4 @@
-//! Configuration the robot crate owns: the `[robot]` and `[station]` tables of `config/cell.toml`
+//! Configuration the robot crate owns: the `[robot]`, `[station]` and `[monitor]` tables of `config/cell.toml`
 //! and the per-class trajectory files `trajectories/c1.toml`… Parsed from strings; the binary reads the
 //! files and puts the path into every error it reports.
 //!
@@ -12,6 +12,7 @@ use std::str::FromStr;
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion};
 use serde::{Deserialize, Serialize};
 
+use crate::monitor::MonitorLimits;
 use crate::pose::isometry_from_xyz_rpy;
 use crate::RobotError;
 
@@ -141,11 +142,15 @@ pub struct StationConfig {
 }
 
 /// The parts of `config/cell.toml` this crate reads. Other top-level tables belong to other crates and
-/// are ignored here; the two tables read are strict (`deny_unknown_fields`).
+/// are ignored here; the tables read are strict (`deny_unknown_fields`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CellConfig {
     pub robot: RobotCellConfig,
     pub station: StationConfig,
+    /// `[monitor]` (optional, [`MonitorLimits::default`] without it): the execution monitor's
+    /// limits, which a lock records and its approval signs.
+    #[serde(default)]
+    pub monitor: MonitorLimits,
 }
 
 impl CellConfig {
@@ -183,6 +188,9 @@ impl CellConfig {
         for (i, a) in r.max_acceleration_rad_s2.iter().enumerate() {
             positive(&format!("robot.max_acceleration_rad_s2[{i}]"), *a)?;
         }
+        self.monitor.check().map_err(|e| RobotError::Config {
+            reason: e.to_string(),
+        })?;
         Ok(())
     }
 
@@ -203,7 +211,7 @@ impl CellConfig {
     }
 
     /// Canonical bytes of the robot-relevant configuration (what the lock's `cell_sha256` covers):
-    /// compact JSON of the `[robot]` and `[station]` tables as parsed. Comments, formatting and other
+    /// compact JSON of the `[robot]`, `[station]` and `[monitor]` tables as parsed. Comments, formatting and other
     /// crates' tables do not change it; any value that changes the motion does.
     pub fn canonical_bytes(&self) -> Vec<u8> {
         serde_json::to_vec(self).unwrap_or_default()

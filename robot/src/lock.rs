@@ -36,12 +36,13 @@ use serde::{Deserialize, Serialize};
 
 use crate::config::TrajectoryClass;
 use crate::model::RobotModel;
+use crate::monitor::MonitorLimits;
 use crate::signing::{self, Action, ApprovalClaim, TrustedSigners};
 use crate::validate::{sha256_hex, InputHashes, LockedTrajectory, SAFETY_NOTE};
 use crate::RobotError;
 
 /// Version tag of the lock format.
-pub const LOCK_FORMAT: &str = "ergocell-trajectory-lock/3";
+pub const LOCK_FORMAT: &str = "ergocell-trajectory-lock/4";
 
 /// Headline numbers of the validation, kept in the lock for the reviewer.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -60,6 +61,10 @@ pub struct LockSummary {
     /// by the validation ([`crate::ValidationReport::path_tolerance_rad`]): signed off with the
     /// trajectory, carried with every leg; the cell may only tighten it.
     pub path_tolerance_rad: Vec<f64>,
+    /// The execution monitor's other limits (goal, goal time, rest, stall window, stop time), the
+    /// cell's `[monitor]` when it was locked: signed off with the trajectory, applied to every leg;
+    /// the cell may only tighten them.
+    pub monitor: MonitorLimits,
 }
 
 /// One knot of the locked trajectory.
@@ -141,6 +146,7 @@ impl LockFile {
                 min_singular_value: r.singularity.min_singular_value,
                 handover_station_m: r.handover.target_station_m,
                 path_tolerance_rad: r.path_tolerance_rad.clone(),
+                monitor: r.monitor,
             },
             trajectory: LockTrajectory {
                 joint_names: locked.joint_names().to_vec(),
@@ -231,6 +237,10 @@ impl LockFile {
                 lock.trajectory.joint_names.len()
             )));
         }
+        lock.summary
+            .monitor
+            .check()
+            .map_err(|e| corrupt(e.to_string()))?;
         Ok(lock)
     }
 }
@@ -715,6 +725,11 @@ impl ApprovedTrajectory {
     pub fn path_tolerance_rad(&self) -> &[f64] {
         &self.lock.summary.path_tolerance_rad
     }
+
+    /// The execution monitor's other limits, as locked and approved.
+    pub fn monitor_limits(&self) -> MonitorLimits {
+        self.lock.summary.monitor
+    }
     pub fn points(&self) -> &[LockPoint] {
         &self.lock.trajectory.point
     }
@@ -908,6 +923,25 @@ pub fn check_matches_validation(
     }
     if &lock.inputs != validated.inputs() {
         return differs("its input hashes differ from the current inputs".to_owned());
+    }
+    let report = validated.report();
+    if lock.summary.monitor != report.monitor {
+        return differs(format!(
+            "monitor limits {:?}, the cell's [monitor] gives {:?}",
+            lock.summary.monitor, report.monitor
+        ));
+    }
+    let tolerances = &lock.summary.path_tolerance_rad;
+    if tolerances.len() != report.path_tolerance_rad.len()
+        || tolerances
+            .iter()
+            .zip(&report.path_tolerance_rad)
+            .any(|(a, b)| (a - b).abs() > REVALIDATION_TOLERANCE)
+    {
+        return differs(format!(
+            "path tolerances {tolerances:?}, validation gives {:?}",
+            report.path_tolerance_rad
+        ));
     }
     let t = &lock.trajectory;
     if t.joint_names != validated.joint_names() {

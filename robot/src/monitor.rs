@@ -49,6 +49,107 @@ pub struct MonitorSettings {
     pub stop_time_s: f64,
 }
 
+/// The monitor's limits other than the path tolerance (which the validation derives), decided
+/// when a trajectory is locked: the cell file's `[monitor]` table ([`crate::CellConfig::monitor`],
+/// covered by the lock's cell hash), copied into the lock ([`crate::lock::LockSummary::monitor`]) and
+/// so signed off with the trajectory. At run time the cell may only tighten them
+/// ([`MonitorLimits::tightened`]).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MonitorLimits {
+    /// Every joint at a leg's end, and the FollowJointTrajectory goal's goal tolerance.
+    pub goal_tolerance_rad: f64,
+    /// How late a leg may arrive after its end time (and the goal's goal time tolerance).
+    pub goal_time_tolerance_s: f64,
+    /// At rest, the largest motion from where the robot came to rest.
+    pub rest_tolerance_rad: f64,
+    /// A stall is judged over this window.
+    pub stall_window_s: f64,
+    /// After a hold, the time the robot has to stop before it must be at rest.
+    pub stop_time_s: f64,
+}
+
+impl Default for MonitorLimits {
+    /// 0.01 rad at the goal and at rest, 1 s late at most, stalls over 0.1 s, 0.5 s to stop.
+    fn default() -> Self {
+        Self {
+            goal_tolerance_rad: 0.01,
+            goal_time_tolerance_s: 1.0,
+            rest_tolerance_rad: 0.01,
+            stall_window_s: 0.1,
+            stop_time_s: 0.5,
+        }
+    }
+}
+
+/// The limits a cell's run-time settings impose on top of a lock's: each `None` leaves the lock's.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct MonitorCaps {
+    pub goal_tolerance_rad: Option<f64>,
+    pub goal_time_tolerance_s: Option<f64>,
+    pub rest_tolerance_rad: Option<f64>,
+    pub stall_window_s: Option<f64>,
+    pub stop_time_s: Option<f64>,
+}
+
+/// The largest value any monitor limit may have (radians or seconds).
+pub const MONITOR_LIMIT_MAX: f64 = 10.0;
+
+impl MonitorLimits {
+    /// The limits by name, with whether zero is allowed (a time that may be zero) or not.
+    fn named(&self) -> [(&'static str, f64, bool); 5] {
+        [
+            ("goal_tolerance_rad", self.goal_tolerance_rad, false),
+            ("goal_time_tolerance_s", self.goal_time_tolerance_s, true),
+            ("rest_tolerance_rad", self.rest_tolerance_rad, false),
+            ("stall_window_s", self.stall_window_s, false),
+            ("stop_time_s", self.stop_time_s, true),
+        ]
+    }
+
+    /// Each limit finite and at most [`MONITOR_LIMIT_MAX`]; the tolerances and the stall window
+    /// above zero, the two times at least zero. The error names the first key that is not.
+    pub fn check(&self) -> Result<(), MonitorError> {
+        for (key, value, zero_ok) in self.named() {
+            let low_ok = if zero_ok { value >= 0.0 } else { value > 0.0 };
+            if !(value.is_finite() && low_ok && value <= MONITOR_LIMIT_MAX) {
+                return Err(MonitorError::Limit {
+                    key,
+                    value,
+                    expected: if zero_ok { ">= 0" } else { "> 0" },
+                    max: MONITOR_LIMIT_MAX,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// These limits with each one `caps` sets lowered to it: a cap never loosens a limit.
+    #[must_use]
+    pub fn tightened(&self, caps: &MonitorCaps) -> Self {
+        let cap = |limit: f64, cap: Option<f64>| cap.map_or(limit, |c| c.min(limit));
+        Self {
+            goal_tolerance_rad: cap(self.goal_tolerance_rad, caps.goal_tolerance_rad),
+            goal_time_tolerance_s: cap(self.goal_time_tolerance_s, caps.goal_time_tolerance_s),
+            rest_tolerance_rad: cap(self.rest_tolerance_rad, caps.rest_tolerance_rad),
+            stall_window_s: cap(self.stall_window_s, caps.stall_window_s),
+            stop_time_s: cap(self.stop_time_s, caps.stop_time_s),
+        }
+    }
+
+    /// The monitor's settings: these limits and the leg's path tolerances.
+    pub fn settings(&self, path_tolerance_rad: Vec<f64>) -> MonitorSettings {
+        MonitorSettings {
+            path_tolerance_rad,
+            goal_tolerance_rad: self.goal_tolerance_rad,
+            goal_time_tolerance_s: self.goal_time_tolerance_s,
+            rest_tolerance_rad: self.rest_tolerance_rad,
+            stall_window_s: self.stall_window_s,
+            stop_time_s: self.stop_time_s,
+        }
+    }
+}
+
 /// Why the monitor stopped trusting the execution.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Deviation {
@@ -158,6 +259,14 @@ impl fmt::Display for Deviation {
 pub enum MonitorError {
     #[error("execution monitor: {0}")]
     Invalid(String),
+    /// A limit out of its range.
+    #[error("[monitor] {key} = {value}: expected a finite number {expected}, at most {max}")]
+    Limit {
+        key: &'static str,
+        value: f64,
+        expected: &'static str,
+        max: f64,
+    },
 }
 
 /// A leg: knot times (from its start, increasing), positions and velocities.
@@ -640,6 +749,55 @@ pub fn path_tolerances_of(
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used)]
     use super::*;
+
+    /// A cap lowers a limit and never raises it; each limit out of range is refused by its name.
+    #[test]
+    fn a_cap_only_tightens_and_a_limit_out_of_range_is_named() {
+        type Set = fn(&mut MonitorLimits, f64);
+        let locked = MonitorLimits::default();
+        let caps = MonitorCaps {
+            goal_tolerance_rad: Some(0.005),
+            stall_window_s: Some(5.0),
+            ..MonitorCaps::default()
+        };
+        let t = locked.tightened(&caps);
+        assert_eq!(t.goal_tolerance_rad, 0.005);
+        assert_eq!(t.stall_window_s, locked.stall_window_s);
+        assert_eq!(t.goal_time_tolerance_s, locked.goal_time_tolerance_s);
+        assert_eq!(locked.check(), Ok(()));
+        let fields: [(&str, Set); 5] = [
+            ("goal_tolerance_rad", |m, v| m.goal_tolerance_rad = v),
+            ("goal_time_tolerance_s", |m, v| m.goal_time_tolerance_s = v),
+            ("rest_tolerance_rad", |m, v| m.rest_tolerance_rad = v),
+            ("stall_window_s", |m, v| m.stall_window_s = v),
+            ("stop_time_s", |m, v| m.stop_time_s = v),
+        ];
+        for (name, set) in fields {
+            for bad in [f64::NAN, -0.1, 10.5, f64::INFINITY] {
+                let mut m = MonitorLimits::default();
+                set(&mut m, bad);
+                assert!(
+                    matches!(m.check(), Err(MonitorError::Limit { key, .. }) if key == name),
+                    "{name} = {bad}"
+                );
+            }
+        }
+        // zero: a tolerance or a window is refused, a time allowed
+        let mut m = MonitorLimits {
+            stop_time_s: 0.0,
+            goal_time_tolerance_s: 0.0,
+            ..MonitorLimits::default()
+        };
+        assert_eq!(m.check(), Ok(()));
+        m.stall_window_s = 0.0;
+        assert!(matches!(
+            m.check(),
+            Err(MonitorError::Limit {
+                key: "stall_window_s",
+                ..
+            })
+        ));
+    }
 
     const MS: i64 = 1_000_000;
 

@@ -204,7 +204,7 @@ pub struct InputHashes {
     pub trajectory_sha256: String,
     /// SHA-256 of the URDF file's bytes.
     pub urdf_sha256: String,
-    /// SHA-256 of [`CellConfig::canonical_bytes`] (the `[robot]` and `[station]` tables).
+    /// SHA-256 of [`CellConfig::canonical_bytes`] (the `[robot]`, `[station]` and `[monitor]` tables).
     pub cell_sha256: String,
     /// SHA-256 of the trusted approvers' file ([`crate::signing::ALLOWED_SIGNERS`]): adding a key
     /// is a change the lock sees.
@@ -366,6 +366,9 @@ pub struct ValidationReport {
     /// ([`crate::monitor::path_tolerances_of`], at most [`PATH_TOLERANCE_MAX_RAD`]); locked and
     /// signed with the trajectory. Empty when the checks did not run or left no margin.
     pub path_tolerance_rad: Vec<f64>,
+    /// The execution monitor's other limits, the cell's `[monitor]`: locked and signed with the
+    /// trajectory.
+    pub monitor: crate::monitor::MonitorLimits,
     pub inputs: InputHashes,
     pub note: String,
 }
@@ -656,6 +659,7 @@ pub fn plan_and_validate(inputs: &PlanInputs<'_>) -> Result<Validation, RobotErr
         checks_run,
         dense_samples_per_interval: JOINT_SAMPLES_PER_INTERVAL,
         path_tolerance_rad,
+        monitor: cell.monitor,
         inputs: hashes.clone(),
         note: SAFETY_NOTE.to_owned(),
     };
@@ -1536,6 +1540,14 @@ impl fmt::Display for ValidationReport {
                     .join(", ")
             )?;
         }
+        let m = &self.monitor;
+        writeln!(
+            f,
+            "Execution monitor's other limits (the cell's [monitor]; locked and signed with the trajectory; the cell may \
+             only tighten them): goal {} rad, {} s late at most; at rest {} rad; stalls judged over {} s; {} s to stop \
+             after a hold",
+            m.goal_tolerance_rad, m.goal_time_tolerance_s, m.rest_tolerance_rad, m.stall_window_s, m.stop_time_s
+        )?;
         let g = &self.singularity;
         writeln!(
             f,

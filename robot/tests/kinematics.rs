@@ -371,13 +371,13 @@ fn a_lock_without_its_path_tolerances_is_refused_saying_relock() {
     let old: String = text
         .lines()
         .filter(|l| !l.starts_with("path_tolerance_rad"))
-        .map(|l| l.replace("ergocell-trajectory-lock/3", "ergocell-trajectory-lock/2") + "\n")
+        .map(|l| l.replace("ergocell-trajectory-lock/4", "ergocell-trajectory-lock/3") + "\n")
         .collect();
     let e = LockFile::from_toml_str(TrajectoryClass::C2, &old)
         .unwrap_err()
         .to_string();
     assert!(
-        e.contains("format `ergocell-trajectory-lock/2`") && e.contains("lock it again"),
+        e.contains("format `ergocell-trajectory-lock/3`") && e.contains("lock it again"),
         "{e}"
     );
     let loosened = text.replacen("path_tolerance_rad = [0.0", "path_tolerance_rad = [0.9", 1);

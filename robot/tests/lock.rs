@@ -357,3 +357,82 @@ fn a_hand_edited_and_rehashed_lock_passes_integrity_but_not_the_validation_match
         "{err}"
     );
 }
+
+/// The execution monitor's limits are the cell's `[monitor]` when the trajectory is locked: in the
+/// lock, through its TOML, covered by the cell hash (another `[monitor]` is another cell). A lock
+/// whose limits were loosened and re-hashed passes integrity but not the validation match; one
+/// whose limit is out of range is refused on reading.
+#[test]
+fn the_monitor_limits_are_the_cells_when_locked_and_a_loosened_lock_is_refused() {
+    let s = common::shipped();
+    let text = common::spec_text(CLASS);
+    let mut cell = s.cell.clone();
+    cell.monitor.goal_tolerance_rad = 0.005;
+    cell.monitor.stop_time_s = 0.3;
+    let spec = TrajectorySpec::from_toml_str(&text).unwrap();
+    let mut hashes = common::hashes(&s, &text);
+    assert_eq!(
+        hashes.cell_sha256,
+        ergocell_robot::validate::sha256_hex(&s.cell.canonical_bytes())
+    );
+    hashes.cell_sha256 = ergocell_robot::validate::sha256_hex(&cell.canonical_bytes());
+    assert_ne!(hashes.cell_sha256, common::hashes(&s, &text).cell_sha256);
+    let validated = plan_and_validate(&PlanInputs {
+        model: &s.model,
+        cell: &cell,
+        spec: &spec,
+        hashes: &hashes,
+    })
+    .unwrap()
+    .into_locked()
+    .unwrap();
+    let lock = LockFile::from_locked(&validated);
+    assert_eq!(lock.summary.monitor, cell.monitor);
+    let parsed = LockFile::from_toml_str(CLASS, &lock.to_toml().unwrap()).unwrap();
+    assert_eq!(parsed.summary.monitor, cell.monitor);
+    lock::check_matches_validation(&parsed, &validated).unwrap();
+
+    let mut loosened = lock.clone();
+    loosened.summary.monitor.goal_tolerance_rad = 0.5;
+    loosened.lock_sha256 = loosened.content_sha256();
+    let toml = loosened.to_toml().unwrap();
+    assert!(lock::verify_integrity(&inputs(&toml, &hashes, &s.model, None)).is_ok());
+    let err = lock::check_matches_validation(&loosened, &validated).unwrap_err();
+    assert!(matches!(err, RobotError::LockCorrupt { .. }), "{err}");
+
+    let mut bad = lock.clone();
+    bad.summary.monitor.stall_window_s = 0.0;
+    bad.lock_sha256 = bad.content_sha256();
+    let err = LockFile::from_toml_str(CLASS, &bad.to_toml().unwrap()).unwrap_err();
+    assert!(matches!(err, RobotError::LockCorrupt { .. }), "{err}");
+}
+
+/// `[monitor]` in the cell file: left out, the defaults; a value out of range or an unknown key is
+/// refused.
+#[test]
+fn the_cells_monitor_table_is_optional_and_strict() {
+    use ergocell_robot::monitor::MonitorLimits;
+    let shipped = common::read("config/cell.toml");
+    let cell = ergocell_robot::CellConfig::from_toml_str(&shipped).unwrap();
+    let start = shipped.find("[monitor]").unwrap();
+    let end = start + shipped[start..].find("\n[").unwrap();
+    let without = format!("{}{}", &shipped[..start], &shipped[end..]);
+    let default = ergocell_robot::CellConfig::from_toml_str(&without).unwrap();
+    assert_eq!(default.monitor, MonitorLimits::default());
+    assert_eq!(cell.monitor, MonitorLimits::default(), "the shipped values");
+    for bad in [
+        "stall_window_s = 0.0",
+        "stop_time_s = 11.0",
+        "stall_window = 0.1",
+    ] {
+        let text = shipped.replacen("stall_window_s = 0.1", bad, 1);
+        assert_ne!(text, shipped);
+        assert!(
+            matches!(
+                ergocell_robot::CellConfig::from_toml_str(&text),
+                Err(RobotError::Config { .. })
+            ),
+            "{bad}"
+        );
+    }
+}

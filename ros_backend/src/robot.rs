@@ -15,7 +15,7 @@ use ergocell_bridge::transport::{Publisher, RosConfig};
 use ergocell_cell::session::{
     BackendError, CellLoop, CellOutputs, Leg, LegTrajectory, RobotCommand, RobotSink,
 };
-use ergocell_robot::monitor::{ExecutionMonitor, MonitorSettings};
+use ergocell_robot::monitor::{ExecutionMonitor, MonitorCaps, MonitorLimits};
 
 use crate::messages;
 use crate::monitor::MonitorNote;
@@ -43,14 +43,11 @@ pub type SharedMonitor = Arc<Mutex<Option<ExecutionMonitor>>>;
 /// The robot over ROS 2, as the session's [`RobotSink`].
 pub struct RosRobot<T: TrajectoryTopic = Publisher<JointTrajectory>> {
     topic: Arc<T>,
-    /// Action mode: the FollowJointTrajectory task's commands and the goals' tolerances.
-    action: Option<(
-        tokio::sync::mpsc::UnboundedSender<ControllerCommand>,
-        GoalTolerances,
-    )>,
+    /// Action mode: the FollowJointTrajectory task's commands.
+    action: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
     /// The newest joint state (the monitor task writes it).
     latest: Arc<Mutex<Option<JointState>>>,
-    /// The `[ros]` settings (the path tolerances' cap, the monitor's settings).
+    /// The `[ros]` settings (the caps on the lock's tolerances and limits, the monitor switch).
     ros: RosConfig,
     monitor: SharedMonitor,
     events: EventQueue,
@@ -69,10 +66,7 @@ impl<T: TrajectoryTopic> RosRobot<T> {
     /// action interface.
     pub fn new(
         topic: Arc<T>,
-        action: Option<(
-            tokio::sync::mpsc::UnboundedSender<ControllerCommand>,
-            GoalTolerances,
-        )>,
+        action: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
         ros: RosConfig,
     ) -> Self {
         let driver = ros.driver_state.then(DriverState::default);
@@ -102,7 +96,7 @@ impl<T: TrajectoryTopic> RosRobot<T> {
 
     /// The FollowJointTrajectory task's command channel (the monitor task cancels through it).
     pub fn cancel_channel(&self) -> Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>> {
-        self.action.as_ref().map(|(tx, _)| tx.clone())
+        self.action.clone()
     }
 
     pub fn monitor(&self) -> SharedMonitor {
@@ -152,6 +146,18 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         Ok(t.iter().map(|v| v.min(cap)).collect())
     }
 
+    /// The leg's other monitor limits and goal tolerances: the lock's, tightened by what `[ros]`
+    /// sets ([`MonitorLimits::tightened`]: never loosened).
+    pub fn monitor_limits(&self, trajectory: &LegTrajectory) -> MonitorLimits {
+        trajectory.monitor.tightened(&MonitorCaps {
+            goal_tolerance_rad: self.ros.goal_tolerance_rad,
+            goal_time_tolerance_s: self.ros.goal_time_tolerance_s,
+            rest_tolerance_rad: self.ros.rest_tolerance_rad,
+            stall_window_s: self.ros.stall_window_s,
+            stop_time_s: self.ros.stop_time_s,
+        })
+    }
+
     /// Starts monitoring `trajectory` (a leg just sent), making the monitor if needed.
     fn watch_leg(
         &mut self,
@@ -159,6 +165,7 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         label: &str,
         trajectory: &LegTrajectory,
         path_rad: &[f64],
+        limits: &MonitorLimits,
     ) -> Result<(), BackendError> {
         let refused = |e: ergocell_robot::monitor::MonitorError| BackendError {
             backend: "execution monitor",
@@ -168,19 +175,11 @@ impl<T: TrajectoryTopic> RosRobot<T> {
             backend: "execution monitor",
             reason: "the monitor task failed".to_owned(),
         })?;
+        let settings = limits.settings(path_rad.to_vec());
         let fits = guard.as_ref().is_some_and(|m| {
-            m.joints() == trajectory.joint_names.as_slice()
-                && m.settings().path_tolerance_rad == path_rad
+            m.joints() == trajectory.joint_names.as_slice() && *m.settings() == settings
         });
         if !fits {
-            let settings = MonitorSettings {
-                path_tolerance_rad: path_rad.to_vec(),
-                goal_tolerance_rad: self.ros.goal_tolerance_rad,
-                goal_time_tolerance_s: self.ros.goal_time_tolerance_s,
-                rest_tolerance_rad: self.ros.rest_tolerance_rad,
-                stall_window_s: self.ros.stall_window_s,
-                stop_time_s: self.ros.stop_time_s,
-            };
             *guard = Some(
                 ExecutionMonitor::new(trajectory.joint_names.clone(), settings).map_err(refused)?,
             );
@@ -273,8 +272,9 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
                 let label = leg_label(*leg);
                 // No tolerances, no monitor: the leg is not sent (the robot does not move).
                 let path_rad = self.path_tolerances(trajectory)?;
+                let limits = self.monitor_limits(trajectory);
                 if self.ros.monitor_execution {
-                    self.watch_leg(now_nanos, &label.text, trajectory, &path_rad)?;
+                    self.watch_leg(now_nanos, &label.text, trajectory, &path_rad, &limits)?;
                 }
                 match &self.action {
                     None => {
@@ -282,13 +282,17 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
                         // The controller starts a topic trajectory on receipt.
                         self.with_monitor(|m| m.leg_started(now_nanos));
                     }
-                    Some((commands, tolerances)) => commands
+                    Some(commands) => commands
                         .send(ControllerCommand::Execute {
                             label: label.clone(),
                             goal: Box::new(ergocell_bridge::action::goal(
                                 message,
                                 &path_rad,
-                                *tolerances,
+                                GoalTolerances {
+                                    path_position_rad: self.ros.path_tolerance_rad,
+                                    goal_position_rad: limits.goal_tolerance_rad,
+                                    goal_time_s: limits.goal_time_tolerance_s,
+                                },
                             )),
                         })
                         .map_err(|_| controller_task_stopped())?,
@@ -308,7 +312,7 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
             }
             RobotCommand::Hold { .. } => {
                 self.with_monitor(|m| m.held(now_nanos));
-                let Some((commands, _)) = &self.action else {
+                let Some(commands) = &self.action else {
                     return self.publish(message);
                 };
                 // Both, so that either stops the robot: the cancel ends the goal the controller
@@ -484,4 +488,118 @@ pub fn driver_readiness<T: TrajectoryTopic, O: CellOutputs>(
     robot.driver_said = Said::Readiness(why.clone());
     cell.set_driver_unready(why);
     Some(format!("driver: {text}"))
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, clippy::expect_used)]
+    use super::*;
+    use ergocell_cell::session::LegPoint;
+
+    struct NoTopic;
+
+    impl TrajectoryTopic for NoTopic {
+        fn publish(&self, _: JointTrajectory) -> Result<(), String> {
+            Ok(())
+        }
+    }
+
+    fn leg(monitor: MonitorLimits) -> LegTrajectory {
+        let point = |t: f64, q: f64| LegPoint {
+            positions_rad: vec![q, q],
+            velocities_rad_s: vec![0.0, 0.0],
+            accelerations_rad_s2: vec![0.0, 0.0],
+            time_from_start_s: t,
+        };
+        LegTrajectory {
+            joint_names: vec!["joint_1".into(), "joint_2".into()],
+            points: vec![point(0.0, 0.0), point(1.0, 0.1)],
+            path_tolerance_rad: vec![0.02, 0.03],
+            monitor,
+        }
+    }
+
+    /// The monitor's limits and the goal's tolerances are the lock's; `[ros]` may lower each one
+    /// and a looser `[ros]` value leaves the lock's. The lock's own values (not the defaults) are
+    /// chosen so that reading them from anywhere else shows.
+    #[test]
+    fn the_monitor_and_the_goal_take_the_locks_limits_tightened_never_loosened_by_ros() {
+        let locked = MonitorLimits {
+            goal_tolerance_rad: 0.004,
+            goal_time_tolerance_s: 0.7,
+            rest_tolerance_rad: 0.006,
+            stall_window_s: 0.2,
+            stop_time_s: 0.4,
+        };
+        let tighter = MonitorLimits {
+            goal_tolerance_rad: 0.002,
+            goal_time_tolerance_s: 0.3,
+            rest_tolerance_rad: 0.003,
+            stall_window_s: 0.05,
+            stop_time_s: 0.25,
+        };
+        let keys = |m: &MonitorLimits| {
+            format!(
+                "goal_tolerance_rad = {}\ngoal_time_tolerance_s = {}\nrest_tolerance_rad = {}\n\
+                 stall_window_s = {}\nstop_time_s = {}\n",
+                m.goal_tolerance_rad,
+                m.goal_time_tolerance_s,
+                m.rest_tolerance_rad,
+                m.stall_window_s,
+                m.stop_time_s
+            )
+        };
+        let looser = MonitorLimits {
+            goal_tolerance_rad: 0.5,
+            goal_time_tolerance_s: 5.0,
+            rest_tolerance_rad: 0.5,
+            stall_window_s: 3.0,
+            stop_time_s: 4.0,
+        };
+        for (extra, expected) in [
+            (String::new(), locked),
+            (keys(&tighter), tighter),
+            (keys(&looser), locked),
+        ] {
+            let ros = RosConfig::from_cell_toml(&format!(
+                "[ros]\ncameras = [\"a\"]\nrobot_interface = \"action\"\n{extra}"
+            ))
+            .unwrap();
+            let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel();
+            let mut robot = RosRobot::new(Arc::new(NoTopic), Some(tx), ros);
+            robot
+                .send(
+                    0,
+                    &RobotCommand::Execute {
+                        leg: Leg::ToHandover,
+                        lock_sha256: "a".repeat(64),
+                        trajectory: leg(locked),
+                    },
+                )
+                .unwrap();
+            let settings = robot
+                .monitor()
+                .lock()
+                .unwrap()
+                .as_ref()
+                .unwrap()
+                .settings()
+                .clone();
+            assert_eq!(settings, expected.settings(vec![0.02, 0.03]), "{extra}");
+            let Ok(ControllerCommand::Execute { goal, .. }) = rx.try_recv() else {
+                panic!("no goal sent");
+            };
+            assert!(goal
+                .goal_tolerance
+                .iter()
+                .all(|t| t.position == expected.goal_tolerance_rad));
+            // a Duration holds whole nanoseconds
+            assert!(
+                (goal.goal_time_tolerance.as_secs_f64() - expected.goal_time_tolerance_s).abs()
+                    < 1e-9
+            );
+            let path: Vec<f64> = goal.path_tolerance.iter().map(|t| t.position).collect();
+            assert_eq!(path, vec![0.02, 0.03]);
+        }
+    }
 }

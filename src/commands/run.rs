@@ -348,17 +348,14 @@ impl CellOutputs for RunOutputs {
 
 type RunLoop = CellLoop<RosRobot, RunOutputs>;
 
-/// The FollowJointTrajectory task (with `robot_interface = "action"`): its command channel with the
-/// goals' tolerances, and its reports.
+/// The FollowJointTrajectory task (with `robot_interface = "action"`): its command channel and its
+/// reports.
 #[allow(clippy::type_complexity)]
 fn controller_task(
     node: &mut RosNode,
     ros: &RosConfig,
 ) -> anyhow::Result<(
-    Option<(
-        tokio::sync::mpsc::UnboundedSender<ControllerCommand>,
-        ergocell_bridge::action::GoalTolerances,
-    )>,
+    Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
     tokio::sync::mpsc::UnboundedReceiver<ControllerReport>,
 )> {
     let (reports_tx, reports) = tokio::sync::mpsc::unbounded_channel::<ControllerReport>();
@@ -375,7 +372,7 @@ fn controller_task(
         let client = node.follow_joint_trajectory_client::<FeedbackWithoutIndex>(name)?;
         tokio::spawn(run_controller(client, rx, reports_tx, timeout));
     }
-    Ok((Some((tx, ros.goal_tolerances())), reports))
+    Ok((Some(tx), reports))
 }
 
 /// The sessions on the ROS 2 node: the cell loop fed by the camera topics, the monitor task, the
@@ -602,12 +599,18 @@ fn print_start(ros: &RosConfig, cameras: usize, scope: &ergocell_bridge::scope::
         match ros.robot_interface {
             RobotInterface::Topic => format!("{} (topic)", ros.joint_trajectory_topic),
             RobotInterface::Action => format!(
-                "{} (FollowJointTrajectory, control_msgs of {}; tolerances: path from the lock, at most {} rad, goal {} rad, {} s)",
+                "{} (FollowJointTrajectory, control_msgs of {}; tolerances from the lock: path at most {} rad, goal {})",
                 ros.follow_joint_trajectory_action,
                 ros.distro,
                 ros.path_tolerance_rad,
-                ros.goal_tolerance_rad,
-                ros.goal_time_tolerance_s
+                match (ros.goal_tolerance_rad, ros.goal_time_tolerance_s) {
+                    (None, None) => "as locked".to_owned(),
+                    (rad, s) => format!(
+                        "as locked, at most {} rad and {} s late",
+                        rad.map_or("(locked)".to_owned(), |v| v.to_string()),
+                        s.map_or("(locked)".to_owned(), |v| v.to_string())
+                    ),
+                }
             ),
         }
     );

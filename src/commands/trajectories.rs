@@ -54,7 +54,7 @@ pub struct Args {
     /// Directory of the trajectory files (`c1.toml`…); locks go to `<dir>/locks`, approvals to `<dir>/approvals`.
     #[arg(long, global = true, default_value = TrajectoryLayout::DEFAULT_DIR)]
     pub trajectories_dir: PathBuf,
-    /// Cell configuration (its `[robot]` and `[station]` tables; the URDF path is relative to this file).
+    /// Cell configuration (its `[robot]`, `[station]` and `[monitor]` tables; the URDF path is relative to this file).
     #[arg(long, global = true, default_value = "config/cell.toml")]
     pub cell: PathBuf,
 }

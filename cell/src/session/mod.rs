@@ -30,6 +30,7 @@ pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
 use ergocell_perception::View2;
+use ergocell_robot::monitor::MonitorLimits;
 use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
 use ergocell_skeleton::Skeleton3;
 use nalgebra::Isometry3;
@@ -102,6 +103,9 @@ pub struct LegTrajectory {
     /// The execution monitor's path tolerance per joint, radians: the lock's, derived when it was
     /// validated and signed off with it (the backend may only tighten it).
     pub path_tolerance_rad: Vec<f64>,
+    /// The execution monitor's other limits and the goal's tolerances: the lock's, signed off with
+    /// it (the backend may only tighten them, [`MonitorLimits::tightened`]).
+    pub monitor: MonitorLimits,
 }
 
 impl LegTrajectory {
@@ -310,5 +314,6 @@ pub fn leg_trajectory(approved: &ApprovedTrajectory, leg: Leg) -> LegTrajectory 
         joint_names: approved.joint_names().to_vec(),
         points,
         path_tolerance_rad: approved.path_tolerance_rad().to_vec(),
+        monitor: approved.monitor_limits(),
     }
 }
