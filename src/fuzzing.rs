@@ -334,11 +334,12 @@ pub fn rula_json(data: &[u8]) {
     let _ = ergocell_ergonomics::tables::parse_tables(text);
 }
 
-/// The depth a nesting entry asks for (three bytes, so the fuzzer reaches any depth up to it at
-/// once rather than by growing an input level by level), the rest of the input and a fragment of it
-/// as text.
-const MAX_FUZZ_DEPTH: usize = 200_000;
+/// The deepest nesting the nesting entries build.
+pub const MAX_FUZZ_DEPTH: usize = 200_000;
 
+/// A nesting entry's input: its shape byte, the depth it asks for (three bytes, so the fuzzer
+/// reaches any depth up to [`MAX_FUZZ_DEPTH`] at once rather than by growing an input level by
+/// level) and the rest as a fragment of text.
 fn depth_and_fragment(data: &[u8]) -> Option<(u8, usize, String)> {
     let (&[shape, a, b, c], rest) = data.split_first_chunk::<4>()?;
     let depth =
