@@ -233,39 +233,49 @@ impl RosConfig {
                 cfg.distro
             )));
         }
-        let caps = [
-            (
-                "goal_tolerance_rad",
-                cfg.goal_tolerance_rad,
-                f64::MIN_POSITIVE,
-            ),
-            ("goal_time_tolerance_s", cfg.goal_time_tolerance_s, 0.0),
-            (
-                "rest_tolerance_rad",
-                cfg.rest_tolerance_rad,
-                f64::MIN_POSITIVE,
-            ),
-            ("stall_window_s", cfg.stall_window_s, f64::MIN_POSITIVE),
-            ("stop_time_s", cfg.stop_time_s, 0.0),
-        ];
-        let set = [
+        if let Some(v) = cfg.stall_window_s {
+            return Err(BridgeError::Config(format!(
+                "[ros] stall_window_s = {v}: the stall window is the trajectory lock's alone (set \
+                 [monitor] stall_window_s and lock again): a shorter window misses stalls on slow \
+                 legs, so it cannot be tightened here"
+            )));
+        }
+        // (key, value, least, least allowed)
+        let checks = [
             (
                 "path_tolerance_rad",
                 Some(cfg.path_tolerance_rad),
-                f64::MIN_POSITIVE,
+                0.0,
+                false,
             ),
             (
                 "joint_state_timeout_s",
                 Some(cfg.joint_state_timeout_s),
-                f64::MIN_POSITIVE,
+                0.0,
+                false,
             ),
+            ("goal_tolerance_rad", cfg.goal_tolerance_rad, 0.0, false),
+            // control_msgs reads a zero goal time tolerance as the action server's default
+            (
+                "goal_time_tolerance_s",
+                cfg.goal_time_tolerance_s,
+                0.001,
+                true,
+            ),
+            ("rest_tolerance_rad", cfg.rest_tolerance_rad, 0.0, false),
+            ("stop_time_s", cfg.stop_time_s, 0.0, true),
         ];
-        for (key, value, min) in set.into_iter().chain(caps) {
+        for (key, value, least, least_ok) in checks {
             let Some(value) = value else { continue };
-            if !(value.is_finite() && value >= min && value <= 10.0) {
+            let low_ok = if least_ok {
+                value >= least
+            } else {
+                value > least
+            };
+            if !(value.is_finite() && low_ok && value <= 10.0) {
                 return Err(BridgeError::Config(format!(
-                    "[ros] {key} = {value}: expected a finite number {}, at most 10",
-                    if min > 0.0 { "> 0" } else { ">= 0" }
+                    "[ros] {key} = {value}: expected a finite number {} {least}, at most 10",
+                    if least_ok { ">=" } else { ">" }
                 )));
             }
         }
@@ -570,6 +580,8 @@ mod tests {
             ("path_tolerance_rad = 0.0", "path_tolerance_rad"),
             ("goal_tolerance_rad = nan", "goal_tolerance_rad"),
             ("goal_time_tolerance_s = -1.0", "goal_time_tolerance_s"),
+            ("goal_time_tolerance_s = 0.0", "goal_time_tolerance_s"),
+            ("stall_window_s = 0.05", "stall_window_s"),
         ] {
             let e = RosConfig::from_cell_toml(&format!("{base}{bad}\n")).unwrap_err();
             assert!(e.to_string().contains(says), "{bad}: {e}");

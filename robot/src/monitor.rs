@@ -54,12 +54,16 @@ pub struct MonitorSettings {
 /// covered by the lock's cell hash), copied into the lock ([`crate::lock::LockSummary::monitor`]) and
 /// so signed off with the trajectory. At run time the cell may only tighten them
 /// ([`MonitorLimits::tightened`]).
+///
+/// Strict when read: a `[monitor]` table (and a lock's `[summary.monitor]`) names all five limits;
+/// only a cell file without the table takes [`MonitorLimits::default`].
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields, default)]
+#[serde(deny_unknown_fields)]
 pub struct MonitorLimits {
     /// Every joint at a leg's end, and the FollowJointTrajectory goal's goal tolerance.
     pub goal_tolerance_rad: f64,
-    /// How late a leg may arrive after its end time (and the goal's goal time tolerance).
+    /// How late a leg may arrive after its end time (and the goal's goal time tolerance; at least
+    /// [`MIN_GOAL_TIME_TOLERANCE_S`], since control_msgs reads 0 as "the controller's default").
     pub goal_time_tolerance_s: f64,
     /// At rest, the largest motion from where the robot came to rest.
     pub rest_tolerance_rad: f64,
@@ -83,40 +87,57 @@ impl Default for MonitorLimits {
 }
 
 /// The limits a cell's run-time settings impose on top of a lock's: each `None` leaves the lock's.
+/// The stall window is not among them: a shorter window is not a stricter one (a stall is named
+/// only where the lock moved more than the rest tolerance within the window, so a shorter window
+/// misses stalls on slow legs); it is the lock's alone.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct MonitorCaps {
     pub goal_tolerance_rad: Option<f64>,
     pub goal_time_tolerance_s: Option<f64>,
     pub rest_tolerance_rad: Option<f64>,
-    pub stall_window_s: Option<f64>,
     pub stop_time_s: Option<f64>,
 }
 
 /// The largest value any monitor limit may have (radians or seconds).
 pub const MONITOR_LIMIT_MAX: f64 = 10.0;
 
+/// The smallest goal time tolerance, seconds: control_msgs' FollowJointTrajectory reads a zero
+/// tolerance as "use the action server's default", which kuka_drivers leaves unbounded.
+pub const MIN_GOAL_TIME_TOLERANCE_S: f64 = 0.001;
+
 impl MonitorLimits {
-    /// The limits by name, with whether zero is allowed (a time that may be zero) or not.
-    fn named(&self) -> [(&'static str, f64, bool); 5] {
+    /// The limits by name, with the least each may be and whether that least is allowed.
+    fn named(&self) -> [(&'static str, f64, f64, bool); 5] {
         [
-            ("goal_tolerance_rad", self.goal_tolerance_rad, false),
-            ("goal_time_tolerance_s", self.goal_time_tolerance_s, true),
-            ("rest_tolerance_rad", self.rest_tolerance_rad, false),
-            ("stall_window_s", self.stall_window_s, false),
-            ("stop_time_s", self.stop_time_s, true),
+            ("goal_tolerance_rad", self.goal_tolerance_rad, 0.0, false),
+            (
+                "goal_time_tolerance_s",
+                self.goal_time_tolerance_s,
+                MIN_GOAL_TIME_TOLERANCE_S,
+                true,
+            ),
+            ("rest_tolerance_rad", self.rest_tolerance_rad, 0.0, false),
+            ("stall_window_s", self.stall_window_s, 0.0, false),
+            ("stop_time_s", self.stop_time_s, 0.0, true),
         ]
     }
 
     /// Each limit finite and at most [`MONITOR_LIMIT_MAX`]; the tolerances and the stall window
-    /// above zero, the two times at least zero. The error names the first key that is not.
+    /// above zero, the goal time tolerance at least [`MIN_GOAL_TIME_TOLERANCE_S`], the stop time
+    /// at least zero. The error names the first key that is not.
     pub fn check(&self) -> Result<(), MonitorError> {
-        for (key, value, zero_ok) in self.named() {
-            let low_ok = if zero_ok { value >= 0.0 } else { value > 0.0 };
+        for (key, value, least, least_ok) in self.named() {
+            let low_ok = if least_ok {
+                value >= least
+            } else {
+                value > least
+            };
             if !(value.is_finite() && low_ok && value <= MONITOR_LIMIT_MAX) {
                 return Err(MonitorError::Limit {
                     key,
                     value,
-                    expected: if zero_ok { ">= 0" } else { "> 0" },
+                    least,
+                    least_allowed: least_ok,
                     max: MONITOR_LIMIT_MAX,
                 });
             }
@@ -132,7 +153,7 @@ impl MonitorLimits {
             goal_tolerance_rad: cap(self.goal_tolerance_rad, caps.goal_tolerance_rad),
             goal_time_tolerance_s: cap(self.goal_time_tolerance_s, caps.goal_time_tolerance_s),
             rest_tolerance_rad: cap(self.rest_tolerance_rad, caps.rest_tolerance_rad),
-            stall_window_s: cap(self.stall_window_s, caps.stall_window_s),
+            stall_window_s: self.stall_window_s,
             stop_time_s: cap(self.stop_time_s, caps.stop_time_s),
         }
     }
@@ -259,12 +280,17 @@ impl fmt::Display for Deviation {
 pub enum MonitorError {
     #[error("execution monitor: {0}")]
     Invalid(String),
-    /// A limit out of its range.
-    #[error("[monitor] {key} = {value}: expected a finite number {expected}, at most {max}")]
+    /// A limit out of its range: finite, above `least` (or equal to it when `least_allowed`), at
+    /// most `max`.
+    #[error(
+        "[monitor] {key} = {value}: expected a finite number {} {least}, at most {max}",
+        if *least_allowed { ">=" } else { ">" }
+    )]
     Limit {
         key: &'static str,
         value: f64,
-        expected: &'static str,
+        least: f64,
+        least_allowed: bool,
         max: f64,
     },
 }
@@ -757,12 +783,15 @@ mod tests {
         let locked = MonitorLimits::default();
         let caps = MonitorCaps {
             goal_tolerance_rad: Some(0.005),
-            stall_window_s: Some(5.0),
+            stop_time_s: Some(5.0),
             ..MonitorCaps::default()
         };
         let t = locked.tightened(&caps);
         assert_eq!(t.goal_tolerance_rad, 0.005);
-        assert_eq!(t.stall_window_s, locked.stall_window_s);
+        assert_eq!(
+            t.stop_time_s, locked.stop_time_s,
+            "a looser cap leaves the lock's"
+        );
         assert_eq!(t.goal_time_tolerance_s, locked.goal_time_tolerance_s);
         assert_eq!(locked.check(), Ok(()));
         let fields: [(&str, Set); 5] = [
@@ -782,13 +811,23 @@ mod tests {
                 );
             }
         }
-        // zero: a tolerance or a window is refused, a time allowed
+        // zero: a tolerance, a window and the goal time (control_msgs' "default") are refused, the
+        // stop time allowed
         let mut m = MonitorLimits {
             stop_time_s: 0.0,
-            goal_time_tolerance_s: 0.0,
+            goal_time_tolerance_s: MIN_GOAL_TIME_TOLERANCE_S,
             ..MonitorLimits::default()
         };
         assert_eq!(m.check(), Ok(()));
+        m.goal_time_tolerance_s = 0.0;
+        assert!(matches!(
+            m.check(),
+            Err(MonitorError::Limit {
+                key: "goal_time_tolerance_s",
+                ..
+            })
+        ));
+        m.goal_time_tolerance_s = 1.0;
         m.stall_window_s = 0.0;
         assert!(matches!(
             m.check(),

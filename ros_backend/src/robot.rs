@@ -147,15 +147,22 @@ impl<T: TrajectoryTopic> RosRobot<T> {
     }
 
     /// The leg's other monitor limits and goal tolerances: the lock's, tightened by what `[ros]`
-    /// sets ([`MonitorLimits::tightened`]: never loosened).
-    pub fn monitor_limits(&self, trajectory: &LegTrajectory) -> MonitorLimits {
-        trajectory.monitor.tightened(&MonitorCaps {
+    /// sets ([`MonitorLimits::tightened`]: never loosened). A leg whose limits are out of range is
+    /// not sent.
+    pub fn monitor_limits(
+        &self,
+        trajectory: &LegTrajectory,
+    ) -> Result<MonitorLimits, BackendError> {
+        trajectory.monitor.check().map_err(|e| BackendError {
+            backend: "execution monitor",
+            reason: format!("the leg's limits: {e}"),
+        })?;
+        Ok(trajectory.monitor.tightened(&MonitorCaps {
             goal_tolerance_rad: self.ros.goal_tolerance_rad,
             goal_time_tolerance_s: self.ros.goal_time_tolerance_s,
             rest_tolerance_rad: self.ros.rest_tolerance_rad,
-            stall_window_s: self.ros.stall_window_s,
             stop_time_s: self.ros.stop_time_s,
-        })
+        }))
     }
 
     /// Starts monitoring `trajectory` (a leg just sent), making the monitor if needed.
@@ -272,7 +279,7 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
                 let label = leg_label(*leg);
                 // No tolerances, no monitor: the leg is not sent (the robot does not move).
                 let path_rad = self.path_tolerances(trajectory)?;
-                let limits = self.monitor_limits(trajectory);
+                let limits = self.monitor_limits(trajectory)?;
                 if self.ros.monitor_execution {
                     self.watch_leg(now_nanos, &label.text, trajectory, &path_rad, &limits)?;
                 }
@@ -519,9 +526,10 @@ mod tests {
         }
     }
 
-    /// The monitor's limits and the goal's tolerances are the lock's; `[ros]` may lower each one
-    /// and a looser `[ros]` value leaves the lock's. The lock's own values (not the defaults) are
-    /// chosen so that reading them from anywhere else shows.
+    /// The monitor's limits and the goal's tolerances are the lock's; `[ros]` may lower each one it
+    /// names and a looser `[ros]` value leaves the lock's. The lock's own values (not the defaults)
+    /// are chosen so that reading them from anywhere else shows. A leg with a limit out of range is
+    /// not sent.
     #[test]
     fn the_monitor_and_the_goal_take_the_locks_limits_tightened_never_loosened_by_ros() {
         let locked = MonitorLimits {
@@ -531,29 +539,26 @@ mod tests {
             stall_window_s: 0.2,
             stop_time_s: 0.4,
         };
+        // the stall window is the lock's alone: `[ros]` cannot name it
         let tighter = MonitorLimits {
             goal_tolerance_rad: 0.002,
             goal_time_tolerance_s: 0.3,
             rest_tolerance_rad: 0.003,
-            stall_window_s: 0.05,
+            stall_window_s: locked.stall_window_s,
             stop_time_s: 0.25,
         };
         let keys = |m: &MonitorLimits| {
             format!(
                 "goal_tolerance_rad = {}\ngoal_time_tolerance_s = {}\nrest_tolerance_rad = {}\n\
-                 stall_window_s = {}\nstop_time_s = {}\n",
-                m.goal_tolerance_rad,
-                m.goal_time_tolerance_s,
-                m.rest_tolerance_rad,
-                m.stall_window_s,
-                m.stop_time_s
+                 stop_time_s = {}\n",
+                m.goal_tolerance_rad, m.goal_time_tolerance_s, m.rest_tolerance_rad, m.stop_time_s
             )
         };
         let looser = MonitorLimits {
             goal_tolerance_rad: 0.5,
             goal_time_tolerance_s: 5.0,
             rest_tolerance_rad: 0.5,
-            stall_window_s: 3.0,
+            stall_window_s: locked.stall_window_s,
             stop_time_s: 4.0,
         };
         for (extra, expected) in [
@@ -589,10 +594,8 @@ mod tests {
             let Ok(ControllerCommand::Execute { goal, .. }) = rx.try_recv() else {
                 panic!("no goal sent");
             };
-            assert!(goal
-                .goal_tolerance
-                .iter()
-                .all(|t| t.position == expected.goal_tolerance_rad));
+            let goal_rad: Vec<f64> = goal.goal_tolerance.iter().map(|t| t.position).collect();
+            assert_eq!(goal_rad, vec![expected.goal_tolerance_rad; 2]);
             // a Duration holds whole nanoseconds
             assert!(
                 (goal.goal_time_tolerance.as_secs_f64() - expected.goal_time_tolerance_s).abs()
@@ -601,5 +604,24 @@ mod tests {
             let path: Vec<f64> = goal.path_tolerance.iter().map(|t| t.position).collect();
             assert_eq!(path, vec![0.02, 0.03]);
         }
+        let ros =
+            RosConfig::from_cell_toml("[ros]\ncameras = [\"a\"]\nrobot_interface = \"action\"\n")
+                .unwrap();
+        let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel();
+        let mut robot = RosRobot::new(Arc::new(NoTopic), Some(tx), ros);
+        let bad = MonitorLimits {
+            goal_time_tolerance_s: f64::NAN,
+            ..locked
+        };
+        let sent = robot.send(
+            0,
+            &RobotCommand::Execute {
+                leg: Leg::ToHandover,
+                lock_sha256: "a".repeat(64),
+                trajectory: leg(bad),
+            },
+        );
+        assert!(sent.is_err());
+        assert!(rx.try_recv().is_err(), "nothing sent");
     }
 }

@@ -60,7 +60,7 @@ const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.01..=100.0;
     (empty trajectory published) and the recording closed with its summary and footer."
 )]
 pub struct Args {
-    /// Cell configuration: `[robot]`, `[station]` and `[ros]`.
+    /// Cell configuration: `[robot]`, `[station]`, `[monitor]` and `[ros]`.
     #[arg(long, default_value = "config/cell.toml")]
     pub config: PathBuf,
     /// Camera rig; its camera ids must match `[ros] cameras`.

@@ -176,7 +176,7 @@ check(len(derived) == 7 and all(abs(x - y) < 6e-5 and 0 < x <= 0.05 for x, y in 
       and all(t["path"] == tol["path"] for t in a["tolerances"]) and len(set(tol["path"])) > 1
       and tol["goal"] == [0.01] * 7 and abs(tol["goal_time_s"] - 1.0) < 1e-9 and tol["points"] == 100,
       "each goal carries the locked trajectory (100 points), per-joint path tolerances derived from the lock "
-      f"({', '.join('%.4f' % x for x in tol['path'])} rad, at most [ros]' 0.05) and goal tolerances of [ros]")
+      f"({', '.join('%.4f' % x for x in tol['path'])} rad, at most [ros]' 0.05) and the lock's goal tolerances ([monitor])")
 check("feedback #1 (home → handover)" in nrun, "run read the controller's feedback (Kilted layout, with index)")
 a, rrun = load("reject")["action"], read("reject.run")
 check(a["rejected"] >= 1 and a["accepted"] == 0 and "the controller rejected the goal (home → handover)" in rrun
