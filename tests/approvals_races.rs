@@ -285,15 +285,30 @@ fn a_symlinked_approvals_folder_or_a_poisoned_witness_does_not_revive_a_withdraw
 
 /// The trust-anchor race, as the hostile account made it: the cell's own unprivileged account
 /// points `ERGOCELL_TRUST_ANCHOR_DIR` at a folder of its own whose `approvers-authority.pub` is a
-/// symlink that **a separate process of that account** flips between root's key and a key of its
-/// own, as fast as `ln` and `mv` go. The account has added its approver (mallory) to the allowed
-/// signers and signed them with its own authority. 50 rounds of `approve` (mallory) and `verify`
-/// run as that account while the flipper runs: none may succeed (root's key rejects the
-/// signature; the account's key is not root's), and nothing is written. Checking the anchor through
-/// one open of the path and reading it through another let `approve` through on the 2nd try.
+/// symlink that **a separate process of that account** (a perl loop: a new symlink renamed over
+/// the old, as fast as the two system calls go) flips between root's key and a key of its own. The
+/// account has added its approver (mallory) to the allowed signers and signed them with its own
+/// authority, and mallory's approval of c2 is on file (recorded while root had, for the control,
+/// installed that authority: `approve` passes then, so the anchor check alone refuses below).
+/// 50 rounds of `approve` (mallory again) and `verify` run as that account while the flipper runs:
+/// each passes only if the account's key is admitted, and none may. Checking the anchor through one
+/// open of the path and reading it through another let `approve` through on the 2nd try.
 #[test]
 fn an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authority() {
     use std::os::unix::fs::PermissionsExt as _;
+    /// Kills the flipper and removes the account's folders however the test ends.
+    struct Cleanup(Option<std::process::Child>, Vec<std::path::PathBuf>);
+    impl Drop for Cleanup {
+        fn drop(&mut self) {
+            if let Some(child) = self.0.as_mut() {
+                let _ = child.kill();
+                let _ = child.wait();
+            }
+            for dir in &self.1 {
+                let _ = std::fs::remove_dir_all(dir);
+            }
+        }
+    }
     let Some(cell) = AnchoredCell::new("anchor_flip") else {
         return;
     };
@@ -318,51 +333,71 @@ fn an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authori
     assert_eq!(code, 0, "{out}{err}");
     let (code, out, err) = cell.ergocell(&["trajectories", "lock", "--class", "c2"]);
     assert_eq!(code, 0, "{out}{err}");
-    let theirs = std::env::temp_dir().join(format!(
-        "ergocell-test-anchor-theirs-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&theirs);
-    std::fs::create_dir_all(&theirs).unwrap();
-    std::fs::set_permissions(&theirs, std::fs::Permissions::from_mode(0o755)).unwrap();
+
+    let pid = std::process::id();
+    let theirs = std::env::temp_dir().join(format!("ergocell-test-anchor-theirs-{pid}"));
+    let installed = std::env::temp_dir().join(format!("ergocell-test-anchor-installed-{pid}"));
+    let mut cleanup = Cleanup(None, vec![theirs.clone(), installed.clone()]);
     let evil = ergocell_robot::signing::key_from_seed(&[66; 32], "evil");
-    std::fs::write(
-        theirs.join("evil.pub"),
-        ergocell_robot::signing::public_key_openssh(&evil).unwrap() + "\n",
-    )
-    .unwrap();
+    let evil_pub = ergocell_robot::signing::public_key_openssh(&evil).unwrap() + "\n";
+    for dir in [&theirs, &installed] {
+        let _ = std::fs::remove_dir_all(dir);
+        std::fs::create_dir_all(dir).unwrap();
+        std::fs::set_permissions(dir, std::fs::Permissions::from_mode(0o755)).unwrap();
+    }
+    std::fs::write(theirs.join("evil.pub"), &evil_pub).unwrap();
     let roots = cell.anchor.join("approvers-authority.pub");
     let link = theirs.join("approvers-authority.pub");
     std::os::unix::fs::symlink(&roots, &link).unwrap();
+    // root installs the account's key (the control's anchor)
+    let key = installed.join("approvers-authority.pub");
+    std::fs::write(&key, &evil_pub).unwrap();
+    std::fs::set_permissions(&key, std::fs::Permissions::from_mode(0o644)).unwrap();
     if !hand_to_cell_account(&[&cell.dir, &theirs]) {
         let _ = std::io::Write::write_all(
             &mut std::io::stderr(),
             b"SKIPPED: setpriv missing: the race needs a second account\n",
         );
-        let _ = std::fs::remove_dir_all(&theirs);
         return;
     }
     let run =
         |anchor: &std::path::Path, args: &[&str]| with_state(&cell, anchor, &state, true, args);
+    let approve: &[&str] = &[
+        "trajectories",
+        "approve",
+        "--class",
+        "c2",
+        "--by",
+        common::MALLORY,
+        "--key",
+        "keys/mallory",
+    ];
+    let verify: &[&str] = &["trajectories", "verify", "--class", "c2"];
+    // The control: under the installed key both pass.
+    let (code, out, err) = run(&installed, approve);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = run(&installed, verify);
+    assert_eq!(code, 0, "{out}{err}");
+    assert_eq!(entries(&cell), 1);
 
-    // The flipper: this test binary again, running only `flip_anchor_link`, as the account.
-    let flipper = Command::new("setpriv")
-        .arg(format!("--reuid={CELL_ACCOUNT}"))
-        .arg(format!("--regid={CELL_ACCOUNT}"))
-        .args(["--clear-groups", "--"])
-        .arg(std::env::current_exe().unwrap())
-        .args([
-            "--exact",
-            "flip_anchor_link",
-            "--nocapture",
-            "--test-threads=1",
-        ])
-        .env(FLIP_LINK, &link)
-        .env(FLIP_TARGETS, format!("evil.pub\n{}", roots.display()))
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
+    cleanup.0 = Some(
+        Command::new("setpriv")
+            .arg(format!("--reuid={CELL_ACCOUNT}"))
+            .arg(format!("--regid={CELL_ACCOUNT}"))
+            .args(["--clear-groups", "--", "perl", "-e"])
+            .arg(
+                "my ($link, @to) = @ARGV; my $tmp = \"$link.flip\"; \
+                 for (my $k = 0; ; $k++) { unlink $tmp; \
+                 rename($tmp, $link) if symlink($to[$k % 2], $tmp); }",
+            )
+            .arg(&link)
+            .arg("evil.pub")
+            .arg(&roots)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
     // The rounds start once the link has been seen on both keys (the flipper is running).
     let (mut saw_evil, mut saw_root) = (false, false);
     for _ in 0..2000 {
@@ -376,98 +411,20 @@ fn an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authori
         }
         std::thread::sleep(std::time::Duration::from_millis(10));
     }
-    let mut outcomes = Vec::new();
-    for round in 0..50 {
-        let approve = run(
-            &theirs,
-            &[
-                "trajectories",
-                "approve",
-                "--class",
-                "c2",
-                "--by",
-                common::MALLORY,
-                "--key",
-                "keys/mallory",
-            ],
-        );
-        let verify = run(&theirs, &["trajectories", "verify", "--class", "c2"]);
-        outcomes.push((round, approve, verify));
-    }
-    let mut flipper = flipper;
-    let still_flipping = flipper.try_wait().unwrap().is_none();
-    let _ = flipper.kill();
-    let _ = flipper.wait();
-    let _ = std::fs::remove_dir_all(&theirs);
-    assert!(still_flipping, "the flipping process stopped early");
     assert!(
         saw_evil && saw_root,
         "the link was not seen on both keys within 20 s"
     );
-    for (round, (a_code, a_out, a_err), (v_code, v_out, v_err)) in &outcomes {
-        assert_ne!(*a_code, 0, "round {round}: approve passed: {a_out}{a_err}");
-        assert_ne!(*v_code, 0, "round {round}: verify passed: {v_out}{v_err}");
+    for round in 0..50 {
+        let (code, out, err) = run(&theirs, approve);
+        assert_ne!(code, 0, "round {round}: approve passed: {out}{err}");
+        let (code, out, err) = run(&theirs, verify);
+        assert_ne!(code, 0, "round {round}: verify passed: {out}{err}");
     }
-    assert_eq!(entries(&cell), 0, "an approval was written");
-
-    // The control: had root installed the account's key as the authority, the same approve would
-    // pass, so the refusals above came from the anchor check and nothing else.
-    let installed = std::env::temp_dir().join(format!(
-        "ergocell-test-anchor-installed-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&installed);
-    std::fs::create_dir_all(&installed).unwrap();
-    std::fs::set_permissions(&installed, std::fs::Permissions::from_mode(0o755)).unwrap();
-    let key = installed.join("approvers-authority.pub");
-    std::fs::write(
-        &key,
-        ergocell_robot::signing::public_key_openssh(&evil).unwrap() + "\n",
-    )
-    .unwrap();
-    std::fs::set_permissions(&key, std::fs::Permissions::from_mode(0o644)).unwrap();
-    let (code, out, err) = run(
-        &installed,
-        &[
-            "trajectories",
-            "approve",
-            "--class",
-            "c2",
-            "--by",
-            common::MALLORY,
-            "--key",
-            "keys/mallory",
-        ],
-    );
-    let _ = std::fs::remove_dir_all(&installed);
-    assert_eq!(code, 0, "{out}{err}");
-    assert_eq!(entries(&cell), 1);
-}
-
-/// The link [`flip_anchor_link`] flips, and its two targets (a line each).
-const FLIP_LINK: &str = "ERGOCELL_TEST_FLIP_LINK";
-const FLIP_TARGETS: &str = "ERGOCELL_TEST_FLIP_TARGETS";
-
-/// Not a test of its own: the hostile account's flipper, run as a separate process by
-/// [`an_anchor_symlink_flipped_by_another_process_never_admits_a_self_made_authority`] (this binary
-/// with `--exact flip_anchor_link`). With the variables set it points the link at each target in
-/// turn (a new symlink renamed over it, atomic) until killed, as fast as two system calls go; in an
-/// ordinary test run it returns at once.
-#[test]
-fn flip_anchor_link() {
-    let (Some(link), Some(targets)) = (
-        std::env::var_os(FLIP_LINK),
-        std::env::var(FLIP_TARGETS).ok(),
-    ) else {
-        return;
-    };
-    let link = std::path::PathBuf::from(link);
-    let tmp = link.with_extension("flip");
-    let targets: Vec<&str> = targets.lines().collect();
-    for k in 0usize.. {
-        let _ = std::fs::remove_file(&tmp);
-        if std::os::unix::fs::symlink(targets[k % targets.len()], &tmp).is_ok() {
-            let _ = std::fs::rename(&tmp, &link);
-        }
-    }
+    let flipping = cleanup
+        .0
+        .as_mut()
+        .is_some_and(|c| c.try_wait().ok().flatten().is_none());
+    assert!(flipping, "the flipping process stopped early");
+    assert_eq!(entries(&cell), 1, "an approval was written in the race");
 }
