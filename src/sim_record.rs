@@ -36,7 +36,7 @@ pub enum SimRecordError {
     Cell(#[from] CellError),
     /// After adaptation the cell does not serve this operator (the session ends without moving the
     /// robot), so there is no task to record.
-    #[error("a {stature_m:.2} m operator is outside the statures {min_m:.2}–{max_m:.2} m class {class}'s trajectory was validated for: after adaptation the cell does not serve them (the session ends without moving the robot), so there is no \"after\" task to record")]
+    #[error("a {stature_m:.2} m operator is outside the statures {min_m:.2}–{max_m:.2} m class {class}'s trajectory is served for: after adaptation the cell does not serve them (the session ends without moving the robot), so there is no \"after\" task to record")]
     NotServed {
         stature_m: f64,
         class: &'static str,
@@ -94,12 +94,9 @@ pub fn record_both(
 
 fn check_served(handovers: &Handovers, stature_m: f64) -> Result<(), SimRecordError> {
     let class = HeightClass::of(stature_m, &ClassThresholds::default());
-    let [min_m, max_m] = match class {
-        HeightClass::C1 => handovers.c1_stature_m,
-        HeightClass::C2 => handovers.c2_stature_m,
-        HeightClass::C3 => handovers.c3_stature_m,
-    };
-    if (min_m..=max_m).contains(&stature_m) {
+    // The session's rule, for a stature known exactly (the interval is the point).
+    let [min_m, max_m] = handovers.served_m(class);
+    if handovers.serves(class, [stature_m, stature_m]) {
         Ok(())
     } else {
         Err(SimRecordError::NotServed {

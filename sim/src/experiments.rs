@@ -85,14 +85,14 @@ pub struct Handovers {
     pub c1_m: Point3<f64>,
     pub c2_m: Point3<f64>,
     pub c3_m: Point3<f64>,
-    /// The statures `[min, max]` each class's trajectory was derived and validated for (its
-    /// trajectory file's `[stature]`): the cell controller ends the session without moving the robot
-    /// for an operator outside them.
+    /// The statures `[min, max]` each class's handover point was derived for (its trajectory
+    /// file's `[stature]`, the class itself); service is judged on the served range below.
     pub c1_stature_m: [f64; 2],
     pub c2_stature_m: [f64; 2],
     pub c3_stature_m: [f64; 2],
     /// The statures each class's trajectory is validated and served for (its file's served range,
-    /// wider than the class): what the height decision may choose the class for.
+    /// wider than the class): what the height decision may choose the class for, and what the
+    /// session checks the operator's interval against before the robot moves ([`Handovers::serves`]).
     pub c1_served_m: [f64; 2],
     pub c2_served_m: [f64; 2],
     pub c3_served_m: [f64; 2],
