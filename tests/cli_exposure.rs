@@ -398,6 +398,36 @@ fn a_recording_whose_clock_disagrees_with_its_capture_stamps_is_read_by_the_stam
             "{name}: overview"
         );
         assert_eq!(problems(&streamed), problems(&s), "{name}: overview");
+        // thinned to a small page: frames kept (a constant clock once kept none), each one of the
+        // whole-file reader's at its time
+        let thin = report_with(
+            lying,
+            &format!("{name}-thin.html"),
+            &[
+                "--page-frames",
+                "overview",
+                "--overview-frames",
+                "20",
+                "--window-frames",
+                "20",
+            ],
+        );
+        let times = |v: &serde_json::Value| -> Vec<f64> {
+            v["frames"]["t"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|t| t.as_f64().unwrap())
+                .collect()
+        };
+        let (kept, all) = (times(&thin), times(&s));
+        assert!(
+            !kept.is_empty() && kept.len() < all.len(),
+            "{name}: {} of {}",
+            kept.len(),
+            all.len()
+        );
+        assert!(kept.iter().all(|t| all.contains(t)), "{name}");
         assert_eq!(
             s["frames"]["t"].as_array().unwrap().len(),
             original["frames"]["t"].as_array().unwrap().len(),
