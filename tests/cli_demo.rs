@@ -61,6 +61,30 @@ fn demo_runs_a_whole_session_and_records_it() {
             "missing `{expected}` in:\n{stdout}"
         );
     }
+    // The report command the demo names for its recording works as printed.
+    let report: Vec<&str> = stdout
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("report:"))
+        .and_then(|l| l.trim_start().split("   ").next())
+        .map_or_else(
+            || panic!("no `report:` line in:\n{stdout}"),
+            |l| l.split_whitespace().collect(),
+        );
+    assert_eq!(&report[..2], ["ergocell", "report"], "{stdout}");
+    let html = out.with_extension("html");
+    let _ = std::fs::remove_file(&html);
+    let made = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(root)
+        .args(&report[1..])
+        .output()
+        .unwrap();
+    assert!(
+        made.status.success(),
+        "{}",
+        String::from_utf8_lossy(&made.stderr)
+    );
+    assert!(std::fs::metadata(&html).unwrap().len() > 0);
+    let _ = std::fs::remove_file(&html);
     // The floor pick raises at least one posture warning.
     let raised: u32 = stdout
         .lines()

@@ -787,6 +787,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         out.display(),
         messages.map_or("n/a".to_owned(), |m| m.to_string())
     );
+    let (recording, report) = (shell_word(&out), shell_word(&out.with_extension("html")));
+    println!("  review it:      ergocell review {recording}   (in the browser)");
+    println!(
+        "  report:         ergocell report {recording} --out {report}   (one HTML file to keep)"
+    );
     if let Some(signal) = stop.get() {
         return Err(Stopped {
             signal,
@@ -1079,5 +1084,43 @@ fn report(events: &[SessionEvent], now: i64, start: i64) {
             }
         }
         println!("  t={:5.1} s  {}", secs(now, start), messages::describe(e));
+    }
+}
+
+/// `path` as one word for a POSIX shell: as it is when it holds only characters no shell treats
+/// specially, else in single quotes (a quote inside written `'\''`), so a printed command can be
+/// pasted as it stands.
+fn shell_word(path: &Path) -> String {
+    let text = path.display().to_string();
+    let plain = !text.is_empty()
+        && text
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "/._-+,:@%".contains(c));
+    if plain {
+        text
+    } else {
+        format!("'{}'", text.replace('\'', "'\\''"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::shell_word;
+    use std::path::Path;
+
+    /// A plain path is printed as it is; one with a space, a quote or a `$` is one quoted word that
+    /// `sh` reads back as the same path.
+    #[test]
+    fn a_path_is_printed_as_one_shell_word() {
+        assert_eq!(shell_word(Path::new("/tmp/a-b_c.mcap")), "/tmp/a-b_c.mcap");
+        for path in ["/tmp/my run.mcap", "/tmp/it's.mcap", "/tmp/$HOME;x.mcap"] {
+            let word = shell_word(Path::new(path));
+            let out = std::process::Command::new("sh")
+                .arg("-c")
+                .arg(format!("printf %s {word}"))
+                .output()
+                .unwrap();
+            assert_eq!(String::from_utf8(out.stdout).unwrap(), path, "{word}");
+        }
     }
 }
