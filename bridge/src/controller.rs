@@ -155,30 +155,30 @@ impl ControllerReport {
 impl ControllerReport {
     /// The report as the `ergocell_msgs/ControllerEvent` published and recorded.
     pub fn to_message(&self, stamp_nanos: i64) -> crate::msg::ControllerEvent {
-        use crate::msg::{ControllerEvent, Header};
-        let base = |kind: &str, label: &GoalLabel| ControllerEvent {
+        use crate::msg::{ControllerEvent, ControllerEventKind as K, Header};
+        let base = |kind: K, label: &GoalLabel| ControllerEvent {
             header: Header::new(stamp_nanos, ""),
-            kind: kind.to_owned(),
+            kind: kind.name().to_owned(),
             leg: label.text.clone(),
             leg_id: label.leg_id,
             max_error: f64::NAN,
             ..ControllerEvent::default()
         };
         match self {
-            Self::Accepted { label } => base("accepted", label),
+            Self::Accepted { label } => base(K::Accepted, label),
             Self::Rejected { label } => ControllerEvent {
                 text: self.failure().unwrap_or_default(),
-                ..base("rejected", label)
+                ..base(K::Rejected, label)
             },
             Self::NoResponse { label, .. } => ControllerEvent {
                 text: self.describe(),
-                ..base("no_response", label)
+                ..base(K::NoResponse, label)
             },
             Self::Failed { label, reason } => ControllerEvent {
                 text: reason.clone(),
-                ..base("failed", label)
+                ..base(K::Failed, label)
             },
-            Self::CancelRequested { label } => base("cancel_requested", label),
+            Self::CancelRequested { label } => base(K::CancelRequested, label),
             Self::Feedback {
                 label,
                 count,
@@ -186,7 +186,7 @@ impl ControllerReport {
             } => ControllerEvent {
                 feedback_count: u32::try_from(*count).unwrap_or(u32::MAX),
                 max_error: max_error_rad.unwrap_or(f64::NAN),
-                ..base("feedback", label)
+                ..base(K::Feedback, label)
             },
             Self::Finished {
                 label,
@@ -199,7 +199,7 @@ impl ControllerReport {
                 error_code: *error_code,
                 text: error_string.clone(),
                 feedback_count: u32::try_from(*feedback_count).unwrap_or(u32::MAX),
-                ..base("finished", label)
+                ..base(K::Finished, label)
             },
         }
     }

@@ -248,6 +248,11 @@ pub struct SessionState {
     pub last_part_closest_m: f64,
 }
 
+impl SessionState {
+    /// `state` once the session has ended (the session machine's `SessionState::SessionEnded`).
+    pub const SESSION_ENDED: &'static str = "session_ended";
+}
+
 impl RosMessage for SessionState {
     const PACKAGE: &'static str = "ergocell_msgs";
     const NAME: &'static str = "SessionState";
@@ -471,6 +476,11 @@ pub struct PostureWarning {
     pub near_limit: bool,
 }
 
+impl PostureWarning {
+    /// `kind` of a warning raised (then `changed`, `cleared`: ergonomics' `WarningKind`).
+    pub const RAISED: &'static str = "raised";
+}
+
 impl RosMessage for PostureWarning {
     const PACKAGE: &'static str = "ergocell_msgs";
     const NAME: &'static str = "PostureWarning";
@@ -509,6 +519,68 @@ pub struct ControllerEvent {
     pub leg_id: u8,
 }
 
+/// What a [`ControllerEvent`] reports: the `kind` field's values, named once. The wire carries the
+/// name (so recordings stay readable by any tool); programs compare the kind, not the words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ControllerEventKind {
+    /// ergocell sent a leg (a topic trajectory or a FollowJointTrajectory goal).
+    GoalSent,
+    /// The controller accepted the goal.
+    Accepted,
+    /// The controller rejected the goal.
+    Rejected,
+    /// The controller did not answer in time.
+    NoResponse,
+    /// The action exchange failed.
+    Failed,
+    /// ergocell asked the controller to cancel the goal.
+    CancelRequested,
+    /// Feedback received (counted).
+    Feedback,
+    /// The goal finished (its status and error code in the event).
+    Finished,
+    /// The execution monitor's verdict (a deviation, stale or returned joint states).
+    Monitor,
+    /// The KUKA driver's state.
+    Driver,
+}
+
+impl ControllerEventKind {
+    pub const ALL: [Self; 10] = [
+        Self::GoalSent,
+        Self::Accepted,
+        Self::Rejected,
+        Self::NoResponse,
+        Self::Failed,
+        Self::CancelRequested,
+        Self::Feedback,
+        Self::Finished,
+        Self::Monitor,
+        Self::Driver,
+    ];
+
+    /// The name on the wire.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::GoalSent => "goal_sent",
+            Self::Accepted => "accepted",
+            Self::Rejected => "rejected",
+            Self::NoResponse => "no_response",
+            Self::Failed => "failed",
+            Self::CancelRequested => "cancel_requested",
+            Self::Feedback => "feedback",
+            Self::Finished => "finished",
+            Self::Monitor => "monitor",
+            Self::Driver => "driver",
+        }
+    }
+
+    /// The kind a name on the wire stands for; `None` for one this version does not know.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.name() == name)
+    }
+}
+
 impl ControllerEvent {
     /// Not about a leg (the monitor's and the driver's events).
     pub const LEG_NONE: u8 = 0;
@@ -516,6 +588,11 @@ impl ControllerEvent {
     pub const LEG_TO_HANDOVER: u8 = 1;
     /// Handover → home: the locked trajectory time-reversed.
     pub const LEG_TO_HOME: u8 = 2;
+
+    /// The event's kind; `None` for a name this version does not know.
+    pub fn event_kind(&self) -> Option<ControllerEventKind> {
+        ControllerEventKind::from_name(&self.kind)
+    }
 }
 
 impl RosMessage for ControllerEvent {
@@ -757,6 +834,23 @@ pub fn msg_fields(definition: &str) -> Vec<(String, String)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every kind's name reads back as that kind, the names are distinct, and a name this version
+    /// does not know is no kind.
+    #[test]
+    fn controller_event_kinds_round_trip_through_their_names() {
+        for kind in ControllerEventKind::ALL {
+            assert_eq!(ControllerEventKind::from_name(kind.name()), Some(kind));
+        }
+        let names: std::collections::BTreeSet<&str> =
+            ControllerEventKind::ALL.iter().map(|k| k.name()).collect();
+        assert_eq!(names.len(), ControllerEventKind::ALL.len());
+        let event = ControllerEvent {
+            kind: "estop".to_owned(),
+            ..ControllerEvent::default()
+        };
+        assert_eq!(event.event_kind(), None);
+    }
 
     fn check<M: RosMessage>() {
         let declared = msg_fields(M::DEFINITION);

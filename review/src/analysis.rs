@@ -13,6 +13,7 @@
 //! events from the joint trajectory topic and `/ergocell/controller_events` (see [`Robot`]; the
 //! feedback folded into its leg); the parts the operator took from the session states' fields (in recordings made before those, their reasons).
 
+use ergocell_bridge::msg::ControllerEventKind as EventKind;
 use ergocell_bridge::msg::{
     ControllerEvent, ErgonomicState, JointTrajectory, RebaSide, RebaState, RulaSide, SessionState,
 };
@@ -1110,7 +1111,8 @@ pub(crate) fn robot_legs(
         let planned_nanos = (last.time_from_start.as_secs_f64().max(0.0) * 1e9) as u64;
         let sent = events.iter().enumerate().position(|(i, e)| {
             !named[i]
-                && e.message.kind == "goal_sent"
+                && e.message.event_kind()
+                    == Some(ergocell_bridge::msg::ControllerEventKind::GoalSent)
                 && (e.log_time_nanos == t || event_time(e) == t)
         });
         let leg_id = if let Some(i) = sent {
@@ -1154,11 +1156,17 @@ pub(crate) fn robot_legs(
     let mut listed = Vec::new();
     for e in &events {
         let m = &e.message;
-        let kind = m.kind.as_str();
+        let kind = m.event_kind();
         let about_leg = m.leg_id != ControllerEvent::LEG_NONE
             && matches!(
                 kind,
-                "feedback" | "finished" | "rejected" | "failed" | "no_response"
+                Some(
+                    EventKind::Feedback
+                        | EventKind::Finished
+                        | EventKind::Rejected
+                        | EventKind::Failed
+                        | EventKind::NoResponse
+                )
             );
         if about_leg {
             // Its leg: the latest one sent before it, of its name, not yet ended; any such leg when
@@ -1169,23 +1177,20 @@ pub(crate) fn robot_legs(
                 .rposition(|d| open(d) && d.leg_id == m.leg_id)
                 .or_else(|| drafts.iter().rposition(open));
             if let Some(d) = k.and_then(|k| drafts.get_mut(k)) {
-                let count = (kind == "feedback" || kind == "finished").then_some(m.feedback_count);
+                let count = matches!(kind, Some(EventKind::Feedback | EventKind::Finished))
+                    .then_some(m.feedback_count);
                 if let Some(count) = count {
                     d.feedback_count = Some(d.feedback_count.map_or(count, |c| c.max(count)));
                 }
-                if kind == "feedback" {
+                if kind == Some(EventKind::Feedback) {
                     if let Some(err) = finite(m.max_error) {
                         d.max_error = Some(d.max_error.map_or(err, |x: f64| x.max(err)));
                     }
                 } else {
-                    let outcome = if kind == "finished" {
-                        if m.status.is_empty() {
-                            "finished"
-                        } else {
-                            m.status.as_str()
-                        }
+                    let outcome = if kind == Some(EventKind::Finished) && !m.status.is_empty() {
+                        m.status.as_str()
                     } else {
-                        kind
+                        m.kind.as_str()
                     };
                     d.end = Some((
                         event_time(e).max(d.start),
@@ -1195,7 +1200,7 @@ pub(crate) fn robot_legs(
                 }
             }
         }
-        if kind == "feedback" {
+        if kind == Some(EventKind::Feedback) {
             continue;
         }
         listed.push(RobotEvent {

@@ -225,7 +225,10 @@ pub fn write_summary<W: Write>(out: W, review: &SessionReview) -> Result<W, Revi
             let n = review
                 .warnings
                 .iter()
-                .filter(|w| w.kind == "raised" && w.region == region.name())
+                .filter(|w| {
+                    w.kind == ergocell_bridge::msg::PostureWarning::RAISED
+                        && w.region == region.name()
+                })
                 .count();
             (region, n)
         })

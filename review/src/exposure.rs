@@ -18,7 +18,9 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::io::Read;
 
-use ergocell_bridge::msg::{ControllerEvent, JointTrajectory, OperatorPose, SessionState};
+use ergocell_bridge::msg::{
+    ControllerEvent, ControllerEventKind, JointTrajectory, OperatorPose, SessionState,
+};
 use ergocell_ergonomics::activity::{Activity, ActivityConfig, ActivityTracker};
 use ergocell_ergonomics::summary::{RebaBrief, SessionSummary};
 use ergocell_ergonomics::UpVector;
@@ -248,7 +250,7 @@ impl SessionAccumulator {
             legacy_part_from_reason(&m.reason).map(|(p, _, _)| p)
         };
         self.parts.extend(part);
-        if m.state == "session_ended" {
+        if m.state == SessionState::SESSION_ENDED {
             self.ended = true;
         }
     }
@@ -343,8 +345,14 @@ impl Visit for SessionStream<'_> {
         match &message {
             Decoded::Pose(_) | Decoded::Ergonomics(_) => self.next_operator(),
             Decoded::Trajectory(m) if !m.message.points.is_empty() => self.next_operator(),
-            Decoded::ControllerEvent(m) if m.message.kind == "goal_sent" => self.next_operator(),
-            Decoded::State(m) if m.message.state != "session_ended" => self.next_operator(),
+            Decoded::ControllerEvent(m)
+                if m.message.event_kind() == Some(ControllerEventKind::GoalSent) =>
+            {
+                self.next_operator();
+            }
+            Decoded::State(m) if m.message.state != SessionState::SESSION_ENDED => {
+                self.next_operator();
+            }
             _ => {}
         }
         self.current.take(message, log_time);

@@ -132,7 +132,10 @@ impl Ranges {
             Decoded::Trajectory(m) if !m.message.points.is_empty() => {
                 self.leg_sent_since_end = true;
             }
-            Decoded::ControllerEvent(m) if m.message.kind == "goal_sent" => {
+            Decoded::ControllerEvent(m)
+                if m.message.event_kind()
+                    == Some(ergocell_bridge::msg::ControllerEventKind::GoalSent) =>
+            {
                 self.leg_sent_since_end = true;
             }
             Decoded::ControllerEvent(m) => {
@@ -163,7 +166,11 @@ impl Ranges {
 
 fn session_ended_at(message: &Decoded, t: u64) -> Option<u64> {
     match message {
-        Decoded::State(m) if m.message.state == "session_ended" => Some(t),
+        Decoded::State(m)
+            if m.message.state == ergocell_bridge::msg::SessionState::SESSION_ENDED =>
+        {
+            Some(t)
+        }
         _ => None,
     }
 }
@@ -260,7 +267,9 @@ impl FirstPass {
                     (e.action_level, grand(&e.left).max(grand(&e.right))),
                 );
             }
-            Decoded::Warning(m) if m.message.kind == "raised" => {
+            Decoded::Warning(m)
+                if m.message.kind == ergocell_bridge::msg::PostureWarning::RAISED =>
+            {
                 let t = u64::try_from(m.message.header.stamp.to_nanos())
                     .ok()
                     .filter(|&t| t > 0)

@@ -1054,7 +1054,7 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
     let ends: Vec<u64> = rec
         .states
         .iter()
-        .filter(|s| s.message.state == "session_ended")
+        .filter(|s| s.message.state == ergocell_bridge::msg::SessionState::SESSION_ENDED)
         .map(|s| s.log_time_nanos)
         .collect();
     if ends.len() <= 1 {
@@ -1085,7 +1085,9 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
             .iter()
             .any(|m| !m.message.points.is_empty() && m.log_time_nanos > a && m.log_time_nanos <= b)
             || rec.controller_events.iter().any(|m| {
-                m.message.kind == "goal_sent" && m.log_time_nanos > a && m.log_time_nanos <= b
+                m.message.event_kind() == Some(ergocell_bridge::msg::ControllerEventKind::GoalSent)
+                    && m.log_time_nanos > a
+                    && m.log_time_nanos <= b
             })
     };
     let event_range: Vec<usize> = rec
@@ -1098,7 +1100,8 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
                 .position(|&r| inside(t, r))
                 .unwrap_or(bounds.len() - 1);
             let late = k > 0
-                && e.message.kind != "goal_sent"
+                && e.message.event_kind()
+                    != Some(ergocell_bridge::msg::ControllerEventKind::GoalSent)
                 && !e.message.leg.is_empty()
                 && bounds[k].0.is_some_and(|end| {
                     t <= end.saturating_add(LATE_EVENT_NANOS) && !leg_sent_in(end, t)

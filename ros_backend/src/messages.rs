@@ -538,7 +538,7 @@ pub fn reba_message(a: &FrameAssessment) -> RebaState {
 /// A warning event.
 pub fn warning_message(w: &WarningEvent) -> PostureWarning {
     let kind = match w.kind {
-        ergocell_ergonomics::warnings::WarningKind::Raised => "raised",
+        ergocell_ergonomics::warnings::WarningKind::Raised => PostureWarning::RAISED,
         ergocell_ergonomics::warnings::WarningKind::Changed => "changed",
         ergocell_ergonomics::warnings::WarningKind::Cleared => "cleared",
     };
@@ -820,6 +820,29 @@ mod tests {
             camera: camera.to_owned(),
             why: why.to_owned(),
         }
+    }
+
+    /// The names the review and exposure compare with are the names the cell writes.
+    #[test]
+    fn the_recorded_names_programs_compare_are_the_cells() {
+        assert_eq!(
+            SessionState::SessionEnded.name(),
+            ergocell_bridge::msg::SessionState::SESSION_ENDED
+        );
+        let raised = warning_message(&ergocell_ergonomics::warnings::WarningEvent {
+            stamp_nanos: 1,
+            kind: ergocell_ergonomics::warnings::WarningKind::Raised,
+            region: ergocell_ergonomics::assess::BodyRegion::Neck,
+            side: None,
+            region_score: 3,
+            angle_deg: Some(25.0),
+            action_level: 2,
+            uncertain: false,
+            band_probability: Some(0.9),
+            near_limit: false,
+            message: String::new(),
+        });
+        assert_eq!(raised.kind, PostureWarning::RAISED);
     }
 
     #[test]

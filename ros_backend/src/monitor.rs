@@ -10,7 +10,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use ergocell_bridge::controller::ControllerCommand;
-use ergocell_bridge::msg::{ControllerEvent, JointState};
+use ergocell_bridge::msg::{ControllerEvent, ControllerEventKind, JointState};
 use ergocell_cell::session::RobotCommand;
 use futures::StreamExt as _;
 
@@ -116,7 +116,7 @@ impl<T: TrajectoryTopic> Judge<T> {
                 self.stale = false;
                 notes.push(MonitorNote::Back(controller_event(
                     now,
-                    "monitor",
+                    ControllerEventKind::Monitor,
                     &no_leg(),
                     "joint states back".to_owned(),
                 )));
@@ -137,7 +137,8 @@ impl<T: TrajectoryTopic> Judge<T> {
                     tracing::error!(error = %e, "the execution monitor's hold was not published");
                 }
                 let held_after_ms = arrival.elapsed().as_secs_f64() * 1e3;
-                let mut event = controller_event(now, "monitor", &no_leg(), d.to_string());
+                let mut event =
+                    controller_event(now, ControllerEventKind::Monitor, &no_leg(), d.to_string());
                 event.max_error = worst;
                 event.sample_stamp = js.header.stamp;
                 notes.push(MonitorNote::Deviation {
@@ -169,7 +170,7 @@ impl<T: TrajectoryTopic> Judge<T> {
         tracing::warn!(age_s = age, "{why}");
         Some(MonitorNote::Stale(controller_event(
             now,
-            "monitor",
+            ControllerEventKind::Monitor,
             &no_leg(),
             why,
         )))

@@ -10,7 +10,9 @@ use std::sync::{Arc, Mutex};
 
 use ergocell_bridge::action::GoalTolerances;
 use ergocell_bridge::controller::{ControllerCommand, ControllerReport, GoalLabel};
-use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, JointState, JointTrajectory};
+use ergocell_bridge::msg::{
+    ControllerEvent, ControllerEventKind, HardwareEvent, JointState, JointTrajectory,
+};
 use ergocell_bridge::transport::{Publisher, RosConfig};
 use ergocell_cell::session::{
     BackendError, CellLoop, CellOutputs, Leg, LegTrajectory, RobotCommand, RobotSink,
@@ -252,13 +254,13 @@ fn controller_task_stopped() -> BackendError {
 /// A controller event of `kind` about `leg` with `text`.
 pub fn controller_event(
     now_nanos: i64,
-    kind: &str,
+    kind: ControllerEventKind,
     leg: &GoalLabel,
     text: String,
 ) -> ControllerEvent {
     ControllerEvent {
         header: ergocell_bridge::msg::Header::new(now_nanos, ""),
-        kind: kind.to_owned(),
+        kind: kind.name().to_owned(),
         leg: leg.text.clone(),
         leg_id: leg.leg_id,
         text,
@@ -306,7 +308,7 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
                 }
                 self.push(controller_event(
                     now_nanos,
-                    "goal_sent",
+                    ControllerEventKind::GoalSent,
                     &label,
                     format!(
                         "{} points over {:.2} s; path tolerances {} rad",
@@ -490,7 +492,12 @@ pub fn driver_readiness<T: TrajectoryTopic, O: CellOutputs>(
     let status = if why.is_some() { "not_ready" } else { "ready" };
     robot.push(ControllerEvent {
         status: status.to_owned(),
-        ..controller_event(now_nanos, "driver", &no_leg(), text.clone())
+        ..controller_event(
+            now_nanos,
+            ControllerEventKind::Driver,
+            &no_leg(),
+            text.clone(),
+        )
     });
     robot.driver_said = Said::Readiness(why.clone());
     cell.set_driver_unready(why);

@@ -394,7 +394,10 @@ fn summary(data: &ReviewData) -> String {
                     " (the page holds {}: the overview)",
                     o.frames_kept
                 )),
-                s.warnings.iter().filter(|w| w.kind == "raised").count(),
+                s.warnings
+                    .iter()
+                    .filter(|w| w.kind == ergocell_bridge::msg::PostureWarning::RAISED)
+                    .count(),
                 s.facts
                     .height_m
                     .map_or("not measured".to_owned(), |h| format!("{h:.3} m")),
