@@ -924,6 +924,7 @@ pub fn check_matches_validation(
     if &lock.inputs != validated.inputs() {
         return differs("its input hashes differ from the current inputs".to_owned());
     }
+    let close = |a: f64, b: f64| (a - b).abs() <= REVALIDATION_TOLERANCE;
     let report = validated.report();
     if lock.summary.monitor != report.monitor {
         return differs(format!(
@@ -936,7 +937,7 @@ pub fn check_matches_validation(
         || tolerances
             .iter()
             .zip(&report.path_tolerance_rad)
-            .any(|(a, b)| (a - b).abs() > REVALIDATION_TOLERANCE)
+            .any(|(a, b)| !close(*a, *b))
     {
         return differs(format!(
             "path tolerances {tolerances:?}, validation gives {:?}",
@@ -958,7 +959,6 @@ pub fn check_matches_validation(
             validated.time_s().len()
         ));
     }
-    let close = |a: f64, b: f64| (a - b).abs() <= REVALIDATION_TOLERANCE;
     if !close(t.dt_s, validated.dt_s()) {
         return differs(format!("dt_s {} vs {}", t.dt_s, validated.dt_s()));
     }
