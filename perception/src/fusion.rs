@@ -827,31 +827,65 @@ impl FusionEngine {
     }
 }
 
-/// No landmark of a human body lies farther than this from the median of its landmarks (a 2.2 m
-/// person's fingertip overhead is ≈ 1.3 m from mid-body), metres.
+/// No landmark of a human body lies farther than this from the centre of its torso, metres. The
+/// farthest are the feet, about 0.68 H from the torso's centre (hips at 0.53 H, shoulders at 0.82 H
+/// of stature H, Drillis & Contini): 1.43 m for a 2.1 m person. A fingertip straight overhead is
+/// nearer, about 0.55 H.
 pub const MAX_BODY_RADIUS_M: f64 = 1.5;
 
-/// Drops landmarks farther than [`MAX_BODY_RADIUS_M`] from the per-axis median of the frame's
-/// landmarks (needs at least 5 landmarks to judge); returns the views they had used.
+/// The torso's landmarks: the centre [`drop_off_body`] measures from.
+const TORSO: [Landmark; 4] = [
+    Landmark::LeftShoulder,
+    Landmark::RightShoulder,
+    Landmark::LeftHip,
+    Landmark::RightHip,
+];
+
+/// Drops landmarks farther than [`MAX_BODY_RADIUS_M`] from the body's centre; returns the views
+/// they had used.
+///
+/// The centre is the per-axis median of the torso's landmarks when at least three of the four
+/// were triangulated (one of them far off cannot move it outside the others), else the per-axis
+/// median of every landmark (at least 5 are needed to judge). Not the median of every landmark
+/// when the torso is there: 21 of the 33 are the face's and the hands', so with both arms raised
+/// that median sits at the head, and a tall operator's feet are more than the radius below it.
 fn drop_off_body(
     points: &mut [Option<Point3<f64>>; LANDMARK_COUNT],
     masks: &[u64; LANDMARK_COUNT],
 ) -> usize {
-    let n = points.iter().flatten().count();
-    if n < 5 {
-        return 0;
-    }
     // on the stack: no allocation per frame
-    let median = |axis: usize| {
-        let mut v = [0.0; LANDMARK_COUNT];
-        for (slot, p) in v.iter_mut().zip(points.iter().flatten()) {
-            *slot = p[axis];
+    let median = |pts: &mut dyn Iterator<Item = Point3<f64>>| {
+        let mut v = [[0.0; LANDMARK_COUNT]; 3];
+        let mut n = 0;
+        for p in pts.take(LANDMARK_COUNT) {
+            for axis in 0..3 {
+                v[axis][n] = p[axis];
+            }
+            n += 1;
         }
-        let v = &mut v[..n];
-        v.sort_unstable_by(f64::total_cmp);
-        v[n / 2]
+        let mut mid = |axis: usize| {
+            let v = &mut v[axis][..n];
+            v.sort_unstable_by(f64::total_cmp);
+            if n == 0 {
+                f64::NAN
+            } else if n % 2 == 0 {
+                0.5 * (v[n / 2 - 1] + v[n / 2])
+            } else {
+                v[n / 2]
+            }
+        };
+        (n, Point3::new(mid(0), mid(1), mid(2)))
     };
-    let centre = Point3::new(median(0), median(1), median(2));
+    let torso = median(&mut TORSO.iter().filter_map(|l| points[l.index()]));
+    let centre = if torso.0 >= 3 {
+        torso.1
+    } else {
+        let all = median(&mut points.iter().flatten().copied());
+        if all.0 < 5 {
+            return 0;
+        }
+        all.1
+    };
     let mut dropped = 0;
     for (p, mask) in points.iter_mut().zip(masks) {
         if p.is_some_and(|q| (q - centre).norm() > MAX_BODY_RADIUS_M) {
@@ -1082,6 +1116,58 @@ pub(crate) mod tests {
         few[0] = Some(Point3::origin());
         few[1] = Some(Point3::new(30.0, 0.0, 0.0));
         assert_eq!(drop_off_body(&mut few, &masks), 0);
+    }
+
+    /// A 1.95 m operator placing a part on a high shelf: both arms straight overhead (Drillis &
+    /// Contini proportions), feet on the floor.
+    fn tall_operator_reaching_overhead() -> [Option<Point3<f64>>; LANDMARK_COUNT] {
+        let h = 1.95;
+        std::array::from_fn(|i| {
+            let lm = Landmark::ALL[i];
+            let x = match lm.side() {
+                Some(ergocell_skeleton::Side::Left) => 1.0,
+                Some(ergocell_skeleton::Side::Right) => -1.0,
+                None => 0.0,
+            };
+            let (lateral, z) = match lm {
+                Landmark::LeftShoulder | Landmark::RightShoulder => (0.13, 0.818),
+                Landmark::LeftElbow | Landmark::RightElbow => (0.13, 0.818 + 0.186),
+                Landmark::LeftWrist | Landmark::RightWrist => (0.13, 0.818 + 0.332),
+                Landmark::LeftHip | Landmark::RightHip => (0.1, 0.53),
+                Landmark::LeftKnee | Landmark::RightKnee => (0.1, 0.285),
+                Landmark::LeftAnkle | Landmark::RightAnkle => (0.1, 0.039),
+                Landmark::LeftHeel | Landmark::RightHeel => (0.1, 0.01),
+                Landmark::LeftFootIndex | Landmark::RightFootIndex => (0.1, 0.005),
+                // the hands' points above the wrist, the face's about the head
+                l if l.index() >= Landmark::LeftPinky.index() => (0.13, 0.818 + 0.37),
+                _ => (0.03, 0.93),
+            };
+            Some(Point3::new(x * lateral * h, 0.0, z * h))
+        })
+    }
+
+    #[test]
+    fn a_tall_operator_reaching_overhead_keeps_their_feet() {
+        let mut points = tall_operator_reaching_overhead();
+        let masks = [0b11u64; LANDMARK_COUNT];
+        // The premise: the median of all 33 landmarks sits at the head, farther than the radius
+        // from the feet (what dropped them before the centre was the torso's).
+        let mut z: Vec<f64> = points.iter().flatten().map(|p| p.z).collect();
+        z.sort_by(f64::total_cmp);
+        let ankle = points[Landmark::LeftAnkle.index()].map_or(f64::NAN, |p| p.z);
+        assert!(z[z.len() / 2] - ankle > MAX_BODY_RADIUS_M);
+        assert_eq!(drop_off_body(&mut points, &masks), 0);
+        assert_eq!(points.iter().flatten().count(), LANDMARK_COUNT);
+    }
+
+    #[test]
+    fn a_torso_landmark_far_off_is_dropped_and_the_body_kept() {
+        let mut points = tall_operator_reaching_overhead();
+        let masks = [0b111u64; LANDMARK_COUNT];
+        points[Landmark::RightHip.index()] = Some(Point3::new(40.0, -12.0, 1.0));
+        assert_eq!(drop_off_body(&mut points, &masks), 3);
+        assert!(points[Landmark::RightHip.index()].is_none());
+        assert_eq!(points.iter().flatten().count(), LANDMARK_COUNT - 1);
     }
 
     #[test]
