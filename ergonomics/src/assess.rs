@@ -475,6 +475,49 @@ pub struct SideAssessment {
     /// How sure each region's score is: its angle's stated spread and the probability that the
     /// band is right ([`crate::confidence`]).
     pub confidence: RegionConfidences,
+    /// How far each yes/no adjustment's angle is past its threshold ([`AdjustmentMargins`]): for
+    /// the warnings' rise margin. Derived from the angles; not serialised.
+    #[serde(skip)]
+    pub adjustment_margins: AdjustmentMargins,
+}
+
+/// How far the angle behind each of the worksheet's yes/no adjustments is past its threshold,
+/// radians: positive when the adjustment applies, negative when it does not; `None` when the
+/// angle was never observed (the adjustment is then scored as not present). The shoulder raise
+/// (a ratio) and the forearm out to the side (shoulder widths) have no angle and are not listed.
+///
+/// An adjustment that applies by less than a degree is as likely measured not to apply: the
+/// warnings rise only on adjustments past their threshold by the rise margin
+/// ([`crate::warnings::WarningConfig::rise_margin_rad`]), as they do on the region's angle.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct AdjustmentMargins {
+    pub upper_arm_abducted: Option<f64>,
+    pub wrist_bent_from_midline: Option<f64>,
+    pub neck_twisted: Option<f64>,
+    pub neck_side_bending: Option<f64>,
+    pub trunk_twisted: Option<f64>,
+    pub trunk_side_bending: Option<f64>,
+}
+
+impl AdjustmentMargins {
+    /// `input` with each listed adjustment that applies by less than `margin_rad` set to not
+    /// present; the others as they are.
+    pub fn settled(&self, input: &RulaInput, margin_rad: f64) -> RulaInput {
+        let keep =
+            |applies: bool, past: Option<f64>| applies && past.is_none_or(|m| m >= margin_rad);
+        RulaInput {
+            upper_arm_abducted: keep(input.upper_arm_abducted, self.upper_arm_abducted),
+            wrist_bent_from_midline: keep(
+                input.wrist_bent_from_midline,
+                self.wrist_bent_from_midline,
+            ),
+            neck_twisted: keep(input.neck_twisted, self.neck_twisted),
+            neck_side_bending: keep(input.neck_side_bending, self.neck_side_bending),
+            trunk_twisted: keep(input.trunk_twisted, self.trunk_twisted),
+            trunk_side_bending: keep(input.trunk_side_bending, self.trunk_side_bending),
+            ..*input
+        }
+    }
 }
 
 /// One side's REBA (Hignett & McAtamney 2000, [`crate::reba`]) beside its RULA, from the same
@@ -1019,6 +1062,14 @@ impl RulaAssessor {
                 uncertain_reasons: reasons,
                 reba,
                 confidence: RegionConfidences::default(),
+                adjustment_margins: AdjustmentMargins {
+                    upper_arm_abducted: abd.map(|a| a - th.abduction_rad),
+                    wrist_bent_from_midline: wd.map(|d| d.abs() - th.wrist_deviation_rad),
+                    neck_twisted: neck_tw.map(|x| x.abs() - th.neck_twist_rad),
+                    neck_side_bending: neck_sb.map(|x| x - th.neck_side_bend_rad),
+                    trunk_twisted: trunk_tw.map(|x| x.abs() - th.trunk_twist_rad),
+                    trunk_side_bending: trunk_sb.map(|x| x.abs() - th.trunk_side_bend_rad),
+                },
             };
             assessment.confidence =
                 region_confidences(skeleton, &assessment, &self.config.confidence);

@@ -14,7 +14,10 @@
 //!   3°, [`WarningConfig::rise_margin_rad`]): `hi` is then the lowest score within the margin of
 //!   `x` either way. A measured angle jitters by a few degrees; a posture 1° past an edge is as
 //!   likely measured 1° short of it, and a warning the operator cannot reproduce teaches them to
-//!   ignore the display.
+//!   ignore the display. The yes/no adjustments with an angle behind them (a wrist deviated past
+//!   10°, a neck or trunk twisted or bent sideways, an arm abducted) are edges too: for `hi`, an
+//!   adjustment that applies by less than the margin counts as not present
+//!   ([`crate::assess::AdjustmentMargins`]).
 //! - `L` rises to the highest level `v > L` for which `hi ≥ v` has held continuously for the dwell
 //!   time (default 2 s); it falls to the lowest level `v < L` for which `lo ≤ v` has held for the
 //!   dwell time. Each level keeps its own clock, so a posture that passes through a band on its way
@@ -37,7 +40,7 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use crate::assess::{BodyRegion, FrameAssessment, InputSource};
+use crate::assess::{BodyRegion, FrameAssessment, InputSource, SideAssessment};
 use crate::confidence::SURE_PROBABILITY;
 use crate::rula::{
     action_level_meaning, legs_score, lower_arm_score, neck_score, trunk_score, upper_arm_score,
@@ -51,9 +54,11 @@ use crate::Side;
 pub struct WarningConfig {
     /// How far inside a lower band a posture must be before a warning falls (default 5°).
     pub hysteresis_rad: f64,
-    /// How far past a band's edge a posture must be before a warning rises to that band (default
+    /// How far past a band's edge a posture must be before a warning rises to that band, and how
+    /// far past its threshold a yes/no adjustment's angle must be to count for the rise (default
     /// 3°, chosen on the twin's task sessions, seeds 1–20: false warnings 5.6 → 1.2 per hour with
-    /// every clear posture still warned). The score is never changed; only when the warning comes.
+    /// every clear posture still warned; on the adjustments too, 0.32 → 0.16 per hour). The score
+    /// is never changed; only when the warning comes.
     pub rise_margin_rad: f64,
     /// How long a change must hold before it is reported (default 2 s).
     pub dwell_nanos: i64,
@@ -196,17 +201,26 @@ pub fn region_score_at(region: BodyRegion, i: &RulaInput, angle: Option<f64>) ->
     }
 }
 
-/// The score a warning may rise to at `angle`: the region's lowest score within `margin_deg` of it
-/// either way (the score itself when the region has no angle or the margin is 0), so a warning
-/// rises to a band only once the posture is that far past the band's edge.
-fn rise_score(region: BodyRegion, i: &RulaInput, angle: Option<f64>, margin_deg: f64) -> u8 {
-    let at = region_score_at(region, i, angle);
+/// The score a warning may rise to: the region's lowest score within `margin_rad` of its angle
+/// either way, with each yes/no adjustment that applies by less than `margin_rad` taken as not
+/// present ([`crate::assess::AdjustmentMargins::settled`]). A warning rises to a band only once the
+/// posture is that far past the band's edge, whether the edge is the angle's or an adjustment's.
+/// The score itself when the margin is 0.
+fn rise_score(region: BodyRegion, a: &SideAssessment, margin_rad: f64) -> u8 {
+    let i = &a.input;
+    let angle = region_angle(region, i);
+    if margin_rad <= 0.0 {
+        return region_score_at(region, i, angle);
+    }
+    let settled = a.adjustment_margins.settled(i, margin_rad);
+    let at = region_score_at(region, &settled, angle);
+    let margin_deg = margin_rad.to_degrees();
     match angle {
-        Some(x) if margin_deg > 0.0 => [x - margin_deg, x + margin_deg]
+        Some(x) => [x - margin_deg, x + margin_deg]
             .iter()
-            .map(|v| region_score_at(region, i, Some(*v)))
+            .map(|v| region_score_at(region, &settled, Some(*v)))
             .fold(at, u8::min),
-        _ => at,
+        None => at,
     }
 }
 
@@ -332,14 +346,13 @@ impl WarningTracker {
         };
         let action_level = head.scores.action_level;
         let margin_deg = self.config.hysteresis_rad.to_degrees();
-        let rise_deg = self.config.rise_margin_rad.to_degrees();
         for (ri, region) in BodyRegion::ALL.iter().enumerate() {
             for (side, assessment) in judged(frame, *region) {
                 let input = &assessment.input;
                 let angle = region_angle(*region, input);
                 let warn_at = self.config.warn_at[ri];
                 let state = self.states.entry((*region, side)).or_default();
-                let hi = rise_score(*region, input, angle, rise_deg);
+                let hi = rise_score(*region, assessment, self.config.rise_margin_rad);
                 let lo = match (angle, state.level_angle) {
                     (Some(x), Some(anchor)) => {
                         region_score_at(*region, input, Some(toward(x, anchor, margin_deg)))

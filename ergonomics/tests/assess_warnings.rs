@@ -479,6 +479,51 @@ fn a_warning_rises_only_past_the_edge_by_the_rise_margin() {
     assert_eq!(neck_events(-5.0), [(WarningKind::Raised, 4)]);
 }
 
+/// A yes/no adjustment is a band edge too: a wrist deviated 1° past the 10° threshold scores the
+/// +1, but the warning rises on it only once it is the rise margin past.
+#[test]
+fn a_warning_rises_on_an_adjustment_only_past_its_threshold_by_the_rise_margin() {
+    let wrist_events = |deviation_deg: f64| {
+        let mut assessor = assessor_for(&PoseSpec::default());
+        let mut warnings = WarningTracker::new(WarningConfig::default());
+        let mut events = Vec::new();
+        let mut scored = Vec::new();
+        for k in 0..60 {
+            let s = PoseSpec {
+                right_arm: ArmPose {
+                    flexion_rad: 40f64.to_radians(),
+                    elbow_flexion_rad: 90f64.to_radians(),
+                    wrist_flexion_rad: 8f64.to_radians(),
+                    wrist_deviation_rad: deviation_deg.to_radians(),
+                    ..ArmPose::default()
+                },
+                stamp_nanos: k * FRAME,
+                ..PoseSpec::default()
+            }
+            .skeleton();
+            let f = assessor.assess(&s).unwrap();
+            scored.push(f.right.as_ref().unwrap().scores.wrist_score);
+            events.extend(
+                warnings
+                    .update(&f)
+                    .into_iter()
+                    .filter(|e| e.region == BodyRegion::Wrist && e.side == Some(Side::Right))
+                    .map(|e| (e.kind, e.region_score)),
+            );
+        }
+        (scored.last().copied(), events)
+    };
+    // 8° of flexion scores 2; a deviation past 10° adds 1.
+    assert_eq!(wrist_events(0.0), (Some(2), vec![]));
+    // 11°: scored 3 every frame, never warned however long it is held.
+    assert_eq!(wrist_events(11.0), (Some(3), vec![]));
+    // 15°: past by more than the 3° margin, warned at 3.
+    assert_eq!(
+        wrist_events(15.0),
+        (Some(3), vec![(WarningKind::Raised, 3)])
+    );
+}
+
 #[test]
 fn session_summary_shares_add_up() {
     let spec = PoseSpec::reaching();
