@@ -830,10 +830,11 @@ impl FusionEngine {
 /// No landmark of a human body lies farther than this from the centre of its torso, metres. The
 /// farthest are the feet, about 0.68 H from the torso's centre (hips at 0.53 H, shoulders at 0.82 H
 /// of stature H, Drillis & Contini): 1.43 m for a 2.1 m person. A fingertip straight overhead is
-/// nearer, about 0.55 H.
+/// nearer, about 0.55 H. From the median of all landmarks a standing person's farthest is ≈ 1.3 m
+/// for 2.2 m.
 pub const MAX_BODY_RADIUS_M: f64 = 1.5;
 
-/// The torso's landmarks: the centre [`drop_off_body`] measures from.
+/// The torso's landmarks: one of the centres [`drop_off_body`] measures from.
 const TORSO: [Landmark; 4] = [
     Landmark::LeftShoulder,
     Landmark::RightShoulder,
@@ -844,11 +845,13 @@ const TORSO: [Landmark; 4] = [
 /// Drops landmarks farther than [`MAX_BODY_RADIUS_M`] from the body's centre; returns the views
 /// they had used.
 ///
-/// The centre is the per-axis median of the torso's landmarks when at least three of the four
-/// were triangulated (one of them far off cannot move it outside the others), else the per-axis
-/// median of every landmark (at least 5 are needed to judge). Not the median of every landmark
-/// when the torso is there: 21 of the 33 are the face's and the hands', so with both arms raised
-/// that median sits at the head, and a tall operator's feet are more than the radius below it.
+/// The body's centre is judged two ways, and a landmark is off the body only when it is farther
+/// than the radius from both: the per-axis median of every landmark (at least 5 are needed to
+/// judge), and the per-axis median of the torso's landmarks when at least three of the four were
+/// triangulated (one of them far off cannot move it outside the others). Either alone can sit off
+/// the body's middle: 21 of the 33 landmarks are the face's and the hands', so with both arms raised
+/// the median of all of them sits at the head and a tall operator's feet are more than the radius
+/// below it; and the torso's own landmarks can be triangulated wrong together.
 fn drop_off_body(
     points: &mut [Option<Point3<f64>>; LANDMARK_COUNT],
     masks: &[u64; LANDMARK_COUNT],
@@ -876,19 +879,19 @@ fn drop_off_body(
         };
         (n, Point3::new(mid(0), mid(1), mid(2)))
     };
+    let (n, all) = median(&mut points.iter().flatten().copied());
+    if n < 5 {
+        return 0;
+    }
     let torso = median(&mut TORSO.iter().filter_map(|l| points[l.index()]));
-    let centre = if torso.0 >= 3 {
-        torso.1
-    } else {
-        let all = median(&mut points.iter().flatten().copied());
-        if all.0 < 5 {
-            return 0;
-        }
-        all.1
+    let torso = (torso.0 >= 3).then_some(torso.1);
+    let off = |q: &Point3<f64>| {
+        (q - all).norm() > MAX_BODY_RADIUS_M
+            && torso.is_none_or(|t| (q - t).norm() > MAX_BODY_RADIUS_M)
     };
     let mut dropped = 0;
     for (p, mask) in points.iter_mut().zip(masks) {
-        if p.is_some_and(|q| (q - centre).norm() > MAX_BODY_RADIUS_M) {
+        if p.as_ref().is_some_and(off) {
             *p = None;
             dropped += mask.count_ones() as usize;
         }
