@@ -193,6 +193,21 @@ pub fn read_signature(cell_dir: &Path) -> Result<Option<String>, AnchorError> {
     }
 }
 
+/// Why the cell's approvers are not trusted ([`trusted_signers`]).
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum TrustListError {
+    /// The approvers' files themselves do not parse.
+    #[error("{0}")]
+    Files(#[source] ergocell_robot::RobotError),
+    /// The authority's signature beside them cannot be read.
+    #[error("{0}")]
+    Signature(#[source] AnchorError),
+    /// The files are not signed by the site's authority, or the authority cannot be used.
+    #[error("{0}")]
+    Authority(#[source] authority::AuthorityError),
+}
+
 /// The approvers the cell trusts: the project's files (`allowed`, `revoked`, read by the caller
 /// from `cell_dir/approvers/`) under the authority installed in `anchor_dir`. A list that trusts no
 /// key needs no authority. The error says why the keys are not trusted.
@@ -201,12 +216,13 @@ pub fn trusted_signers(
     allowed: &str,
     revoked: &str,
     anchor_dir: &Path,
-) -> Result<TrustedSigners, String> {
-    let listed = TrustedSigners::parse(allowed, revoked).map_err(|e| e.to_string())?;
+) -> Result<TrustedSigners, TrustListError> {
+    let listed = TrustedSigners::parse(allowed, revoked).map_err(TrustListError::Files)?;
     if listed.keys().is_empty() {
         return Ok(listed);
     }
-    let signature = read_signature(cell_dir).map_err(|e| e.to_string())?;
+    let signature = read_signature(cell_dir).map_err(TrustListError::Signature)?;
+    // The authority's check names why the anchor could not be loaded, in its own words.
     let loaded = load_authority(anchor_dir).map_err(|e| e.to_string());
     authority::anchored_signers(
         allowed,
@@ -214,7 +230,7 @@ pub fn trusted_signers(
         signature.as_deref(),
         loaded.as_ref().map_err(String::as_str),
     )
-    .map_err(|e| e.to_string())
+    .map_err(TrustListError::Authority)
 }
 
 #[cfg(test)]

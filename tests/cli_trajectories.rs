@@ -533,13 +533,19 @@ fn the_mallory_attack_is_refused_by_verify_and_by_run_naming_why() {
             && !out.contains("c2: OK"),
         "{out}"
     );
-    let refused = cell
-        .provider()
-        .verify(TrajectoryClass::C2)
-        .unwrap_err()
-        .to_string();
+    // The provider `run` uses refuses it for the same typed reason: the trust list, edited after
+    // the authority signed it.
+    let refused = cell.provider().verify(TrajectoryClass::C2).unwrap_err();
+    let ergocell::session::ProviderError::TrustList { cause } = &refused else {
+        panic!("not refused for the trust list: {refused}");
+    };
     assert!(
-        refused.contains("trusted approvers") && refused.contains("edited after signing"),
+        matches!(
+            cause.downcast_ref::<ergocell::trust_anchor::TrustListError>(),
+            Some(ergocell::trust_anchor::TrustListError::Authority(
+                ergocell_robot::authority::AuthorityError::Edited
+            ))
+        ),
         "{refused}"
     );
 

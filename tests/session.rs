@@ -915,10 +915,21 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
             shipped.stature_bounds_m(class).is_ok(),
             "trajectories/{class}.toml"
         );
-        assert!(
-            shipped.verify(class).is_err(),
-            "{class} has no approval yet"
-        );
+        // No approval yet: refused by the lock's verification, naming the class, not approved.
+        match shipped.verify(class) {
+            Err(ergocell::session::ProviderError::NotVerified { failure, witness }) => {
+                assert_eq!(failure.class, class);
+                assert!(
+                    matches!(
+                        failure.problems.as_slice(),
+                        [ergocell_robot::RobotError::NotApproved { .. }]
+                    ),
+                    "{failure}"
+                );
+                assert!(witness.is_none(), "the demo keeps no witness");
+            }
+            other => panic!("{class}: {other:?}"),
+        }
         shipped
             .approve_for_demo(class, "2026-01-01T00:00:00Z")
             .unwrap();

@@ -290,7 +290,7 @@ pub fn assemble_openpose(
                 contents
                     .get(&(camera, name))
                     .map(|b| b.to_vec())
-                    .ok_or_else(|| "not given".to_owned())
+                    .ok_or(NotGiven)
             },
             stats,
         );
@@ -411,10 +411,10 @@ impl OpenPosePlan {
     /// Assembles frame `k` (frames in order: the operator selection follows them), reading each of
     /// its files with `read(camera, name)`; a file that cannot be read or parsed is left out,
     /// counted and named in [`Self::warnings`]. `None` for `k` beyond the last frame.
-    pub fn frame(
+    pub fn frame<E: std::fmt::Display>(
         &mut self,
         k: usize,
-        mut read: impl FnMut(CameraIndex, &str) -> std::result::Result<Vec<u8>, String>,
+        mut read: impl FnMut(CameraIndex, &str) -> std::result::Result<Vec<u8>, E>,
         stats: &mut ImportStats,
     ) -> Option<Frame2> {
         let number = *self.numbers.get(k)?;
@@ -815,6 +815,16 @@ impl<R: std::io::Read> Iterator for CaliscopeStream<'_, R> {
             }
         }
         self.current.take().map(|(_, views)| frame_of(views))
+    }
+}
+
+/// A file the frame names that the caller did not give (in-memory import).
+#[derive(Debug)]
+struct NotGiven;
+
+impl std::fmt::Display for NotGiven {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("not given")
     }
 }
 

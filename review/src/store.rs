@@ -51,13 +51,17 @@ pub const SCHEMA: &str = "message ergocell_exposure_segments {
 
 /// The store could not be written.
 #[derive(Debug, thiserror::Error)]
-#[error("writing the Parquet store: {0}")]
-pub struct StoreError(String);
-
-impl From<parquet::errors::ParquetError> for StoreError {
-    fn from(e: parquet::errors::ParquetError) -> Self {
-        Self(e.to_string())
-    }
+#[non_exhaustive]
+pub enum StoreError {
+    /// The Parquet writer failed.
+    #[error("writing the Parquet store: {0}")]
+    Parquet(#[from] parquet::errors::ParquetError),
+    /// A row's day is not a `YYYY-MM-DD` date a 32-bit day count holds.
+    #[error("writing the Parquet store: day {day:?} is not a YYYY-MM-DD date within ±5.8 million years of 1970")]
+    Day { day: String },
+    /// The columns written do not match the schema (a bug here, not bad input).
+    #[error("writing the Parquet store: the schema has {schema} columns where {written} were written, or a column's type differs")]
+    Schema { schema: usize, written: usize },
 }
 
 /// One column's values, in row order (`None`: null).
@@ -70,10 +74,13 @@ enum Column {
 
 /// Days since 1970-01-01 of a `YYYY-MM-DD` day.
 fn epoch_day(day: &str) -> Result<i32, StoreError> {
-    let d = chrono::NaiveDate::parse_from_str(day, "%Y-%m-%d")
-        .map_err(|e| StoreError(format!("day {day:?}: {e}")))?;
+    let d = chrono::NaiveDate::parse_from_str(day, "%Y-%m-%d").map_err(|_| StoreError::Day {
+        day: day.to_owned(),
+    })?;
     let epoch = chrono::NaiveDate::from_ymd_opt(1970, 1, 1).unwrap_or_default();
-    i32::try_from((d - epoch).num_days()).map_err(|e| StoreError(e.to_string()))
+    i32::try_from((d - epoch).num_days()).map_err(|_| StoreError::Day {
+        day: day.to_owned(),
+    })
 }
 
 fn int(x: u32) -> i32 {
@@ -135,14 +142,17 @@ pub fn write_parquet<W: Write + Send>(rows: &[SegmentRow], sink: W) -> Result<()
             .set_created_by(concat!("ergocell ", env!("CARGO_PKG_VERSION")).to_owned())
             .build(),
     );
+    let columns = columns(rows)?;
+    let mismatch = StoreError::Schema {
+        schema: schema.get_fields().len(),
+        written: columns.len(),
+    };
     let mut writer = SerializedFileWriter::new(sink, schema, props)?;
     let mut group = writer.next_row_group()?;
-    let mut values = columns(rows)?.into_iter();
+    let mut values = columns.into_iter();
     while let Some(mut column) = group.next_column()? {
         let Some(data) = values.next() else {
-            return Err(StoreError(
-                "more columns in the schema than written".to_owned(),
-            ));
+            return Err(mismatch);
         };
         let written = match (column.untyped(), data) {
             (ColumnWriter::ByteArrayColumnWriter(w), Column::Text(v)) => {
@@ -159,19 +169,13 @@ pub fn write_parquet<W: Write + Send>(rows: &[SegmentRow], sink: W) -> Result<()
             (ColumnWriter::DoubleColumnWriter(w), Column::Double(v)) => {
                 w.write_batch(&v, None, None)
             }
-            _ => {
-                return Err(StoreError(
-                    "a column's values do not match the schema's type".to_owned(),
-                ))
-            }
+            _ => return Err(mismatch),
         };
         written?;
         column.close()?;
     }
     if values.next().is_some() {
-        return Err(StoreError(
-            "fewer columns in the schema than written".to_owned(),
-        ));
+        return Err(mismatch);
     }
     group.close()?;
     writer.close()?;

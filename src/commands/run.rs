@@ -1120,7 +1120,17 @@ mod approval_summary_tests {
     impl TrajectoryProvider for Unapproved {
         fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
             self.0.push(class);
-            Err(ProviderError(format!("no approvals file for {class}")))
+            Err(ProviderError::NotVerified {
+                failure: ergocell_robot::lock::VerifyFailure {
+                    class,
+                    problems: vec![ergocell_robot::RobotError::NotApproved {
+                        class: class.to_string(),
+                        lock_sha256: String::new(),
+                        detail: "no approvals file".to_owned(),
+                    }],
+                },
+                witness: None,
+            })
         }
         fn stature_bounds_m(&mut self, _: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
             Ok((1.5, 2.0))

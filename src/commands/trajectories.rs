@@ -242,7 +242,7 @@ impl Context {
             trust_anchor::trusted_signers(dir, &allowed, &revoked, &trust_anchor::anchor_dir());
         let (trusted, trust_problem) = match anchored {
             Ok(t) => (t, None),
-            Err(why) => (TrustedSigners::default(), Some(why)),
+            Err(why) => (TrustedSigners::default(), Some(why.to_string())),
         };
         Ok(Self {
             layout: TrajectoryLayout::new(&args.trajectories_dir),
@@ -805,7 +805,9 @@ fn verify(
                 .map(|()| approved)
                 .map_err(|why| lock::VerifyFailure {
                     class,
-                    problems: vec![ergocell_robot::RobotError::Config { reason: why }],
+                    problems: vec![ergocell_robot::RobotError::Config {
+                        reason: why.to_string(),
+                    }],
                 })
         });
         // The witness's refusal joins the others (a forged entry is also one it did not see).

@@ -656,11 +656,7 @@ impl Iterator for FrameSource<'_> {
                 let k = *next;
                 *next += 1;
                 // the file names are full paths (as listed)
-                plan.frame(
-                    k,
-                    |_, name| input::read(Path::new(name), Kind::Data).map_err(|e| e.to_string()),
-                    stats,
-                )
+                plan.frame(k, |_, name| input::read(Path::new(name), Kind::Data), stats)
             }
         }
     }

@@ -3,6 +3,7 @@
 //! so a file changed during a session is noticed before the robot resumes.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
 use ergocell_robot::signing::{self, TrustedSigners};
@@ -11,7 +12,7 @@ use ergocell_robot::{
     TrajectoryClass, TrajectoryLayout, TrajectorySpec, TrustFiles,
 };
 
-use super::{ProviderError, TrajectoryProvider};
+use super::{Cause, ProviderError, TrajectoryProvider};
 use crate::robot_markers::RobotGeometry;
 
 /// Reads and verifies the locked trajectories.
@@ -88,15 +89,17 @@ impl FileTrajectories {
         if shipped {
             return crate::shipped::file(path)
                 .map(str::to_owned)
-                .ok_or_else(|| {
-                    ProviderError(format!(
-                        "{} is not among the files shipped in the binary",
-                        path.display()
-                    ))
+                .ok_or_else(|| ProviderError::Unreadable {
+                    path: path.to_owned(),
+                    cause: Arc::new(NotShipped(path.to_owned())),
                 });
         }
-        crate::input::read_text(path, crate::input::Kind::Config)
-            .map_err(|e| ProviderError(e.to_string()))
+        crate::input::read_text(path, crate::input::Kind::Config).map_err(|e| {
+            ProviderError::Unreadable {
+                path: path.to_owned(),
+                cause: Arc::new(e),
+            }
+        })
     }
 
     /// A file of the cell (the cell file or its URDF).
@@ -171,8 +174,11 @@ impl FileTrajectories {
     /// The cell config (text and parsed), the URDF's path and its text.
     fn cell_and_urdf(&self) -> Result<(String, CellConfig, PathBuf, String), ProviderError> {
         let cell_text = self.read_cell(&self.cell_path)?;
-        let cell = CellConfig::from_toml_str(&cell_text)
-            .map_err(|e| ProviderError(format!("{}: {e}", self.cell_path.display())))?;
+        let cell =
+            CellConfig::from_toml_str(&cell_text).map_err(|cause| ProviderError::Invalid {
+                path: self.cell_path.clone(),
+                cause: Box::new(cause),
+            })?;
         let urdf_path = self
             .cell_path
             .parent()
@@ -186,8 +192,12 @@ impl FileTrajectories {
     pub fn robot_geometry(&self, class: TrajectoryClass) -> Result<RobotGeometry, ProviderError> {
         let (cell_text, _, _, urdf_text) = self.cell_and_urdf()?;
         let spec_text = self.read(&self.layout.spec(class))?;
-        RobotGeometry::from_texts(&cell_text, &urdf_text, &spec_text)
-            .map_err(|e| ProviderError(format!("robot geometry for the recording ({class}): {e}")))
+        RobotGeometry::from_texts(&cell_text, &urdf_text, &spec_text).map_err(|cause| {
+            ProviderError::Geometry {
+                class,
+                cause: Box::new(cause),
+            }
+        })
     }
 
     /// The trusted approvers' files (`approvers/allowed_signers` and `approvers/revoked_keys` beside
@@ -198,10 +208,11 @@ impl FileTrajectories {
         }
         let dir = self.cell_path.parent().unwrap_or_else(|| Path::new("."));
         let read = |name: &str| {
-            self.read_cell(&dir.join(name)).map_err(|e| {
-                ProviderError(format!(
-                    "{e} (the cell's trusted approvers: config/approvers/ in the repository shows the format)"
-                ))
+            self.read_cell(&dir.join(name)).map_err(|e| match e {
+                ProviderError::Unreadable { path, cause } => {
+                    ProviderError::ApproversUnreadable { path, cause }
+                }
+                other => other,
             })
         };
         Ok((
@@ -216,19 +227,26 @@ impl FileTrajectories {
         let (_, cell, urdf_path, urdf_text) = self.cell_and_urdf()?;
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
-                .map_err(|e| ProviderError(format!("{}: {e}", urdf_path.display())))?;
+                .map_err(|cause| ProviderError::Invalid {
+                path: urdf_path.clone(),
+                cause: Box::new(cause),
+            })?;
         let spec_path = self.layout.spec(class);
         let spec_text = self.read(&spec_path)?;
-        let spec = TrajectorySpec::from_toml_str(&spec_text)
-            .map_err(|e| ProviderError(format!("{}: {e}", spec_path.display())))?;
+        let spec =
+            TrajectorySpec::from_toml_str(&spec_text).map_err(|cause| ProviderError::Invalid {
+                path: spec_path.clone(),
+                cause: Box::new(cause),
+            })?;
         let (allowed, revoked) = self.trust_texts()?;
         let trusted = if self.demo.is_some() {
-            TrustedSigners::parse(&allowed, &revoked).map_err(|e| e.to_string())
+            TrustedSigners::parse(&allowed, &revoked)
+                .map_err(|e| ProviderError::TrustList { cause: Arc::new(e) })
         } else {
             let dir = self.cell_path.parent().unwrap_or_else(|| Path::new("."));
             crate::trust_anchor::trusted_signers(dir, &allowed, &revoked, &self.anchor_dir)
-        }
-        .map_err(|e| ProviderError(format!("trusted approvers: {e}")))?;
+                .map_err(|e| ProviderError::TrustList { cause: Arc::new(e) })
+        }?;
         let hashes = InputHashes::new(
             spec_text.as_bytes(),
             urdf_text.as_bytes(),
@@ -272,7 +290,9 @@ impl FileTrajectories {
     /// shipped), so the demo runs the reviewed trajectory; only its trust inputs differ.
     pub fn with_demo_key(mut self, seed: &[u8; 32]) -> Result<Self, ProviderError> {
         let key = signing::key_from_seed(seed, "ergocell demo (throwaway key, simulator only)");
-        let public = signing::public_key_openssh(&key).map_err(|e| ProviderError(e.to_string()))?;
+        let public = signing::public_key_openssh(&key).map_err(|cause| ProviderError::DemoKey {
+            cause: Box::new(cause),
+        })?;
         let allowed_signers = format!(
             "{DEMO_PRINCIPAL} namespaces=\"{}\" {public}\n",
             signing::APPROVAL_NAMESPACE
@@ -292,10 +312,18 @@ impl FileTrajectories {
                 hashes: &c.hashes,
             })
             .and_then(ergocell_robot::Validation::into_locked)
-            .map_err(|e| ProviderError(format!("{class}: demo lock: {e}")))?;
-            let reviewed = self.read(&self.layout.lock(class))?;
-            let reviewed = LockFile::from_toml_str(class, &reviewed)
-                .map_err(|e| ProviderError(format!("{class}: {e}")))?;
+            .map_err(|cause| ProviderError::DemoLock {
+                class,
+                cause: Box::new(cause),
+            })?;
+            let reviewed_path = self.layout.lock(class);
+            let reviewed = self.read(&reviewed_path)?;
+            let reviewed = LockFile::from_toml_str(class, &reviewed).map_err(|cause| {
+                ProviderError::Invalid {
+                    path: reviewed_path.clone(),
+                    cause: Box::new(cause),
+                }
+            })?;
             // The reviewed lock covers the cell's approvers files; everything else must be the same
             // inputs, and the samples the same trajectory.
             let mut expected = locked.inputs().clone();
@@ -306,21 +334,23 @@ impl FileTrajectories {
                 .revoked_keys_sha256
                 .clone_from(&reviewed.inputs.revoked_keys_sha256);
             if reviewed.inputs != expected {
-                return Err(ProviderError(format!(
-                    "{class}: the lock on disk was made from other inputs than the current trajectory file, URDF, cell or version: re-lock it"
-                )));
+                return Err(ProviderError::LockInputsChanged { class });
             }
             let mut reviewed = reviewed;
             reviewed.inputs = locked.inputs().clone();
-            lock::check_matches_validation(&reviewed, &locked).map_err(|e| {
-                ProviderError(format!(
-                    "{class}: the lock on disk is not what validation produces now: {e}"
-                ))
+            lock::check_matches_validation(&reviewed, &locked).map_err(|cause| {
+                ProviderError::DemoLock {
+                    class,
+                    cause: Box::new(cause),
+                }
             })?;
             let demo_lock = LockFile::from_locked(&locked);
             let text = demo_lock
                 .to_toml()
-                .map_err(|e| ProviderError(e.to_string()))?;
+                .map_err(|cause| ProviderError::DemoLock {
+                    class,
+                    cause: Box::new(cause),
+                })?;
             locks.push((
                 class,
                 text,
@@ -344,15 +374,12 @@ impl FileTrajectories {
     ) -> Result<String, ProviderError> {
         let approvals_dir = self.layout.approvals_dir();
         if approvals_dir.ends_with(TrajectoryLayout::default().approvals_dir()) {
-            return Err(ProviderError(format!(
-                "refusing to write a demo approval into {}: demo approvals live in a temporary folder",
-                approvals_dir.display()
-            )));
+            return Err(ProviderError::DemoApprovalsInRepository {
+                dir: approvals_dir.to_owned(),
+            });
         }
         let Some(demo) = &self.demo else {
-            return Err(ProviderError(
-                "a demo approval needs the demo key (FileTrajectories::with_demo_key)".to_owned(),
-            ));
+            return Err(ProviderError::NoDemoKey);
         };
         let c = self.current(class)?;
         let lock_text = self.lock_text(class)?;
@@ -364,21 +391,34 @@ impl FileTrajectories {
             approvals_toml: None,
             trusted: &c.trusted,
         };
-        let lock = lock::verify_integrity(&inputs).map_err(|f| ProviderError(f.to_string()))?;
+        let lock =
+            lock::verify_integrity(&inputs).map_err(|failure| ProviderError::NotVerified {
+                failure,
+                witness: None,
+            })?;
         let mut file = ApprovalsFile::default();
         file.approve(&lock, DEMO_PRINCIPAL, stamp_utc, &c.trusted, &demo.key)
-            .map_err(|e| ProviderError(e.to_string()))?;
-        let text = file.to_toml().map_err(|e| ProviderError(e.to_string()))?;
-        std::fs::create_dir_all(approvals_dir).map_err(|e| {
-            ProviderError(format!("cannot create {}: {e}", approvals_dir.display()))
+            .map_err(|cause| ProviderError::DemoLock {
+                class,
+                cause: Box::new(cause),
+            })?;
+        let text = file.to_toml().map_err(|cause| ProviderError::DemoLock {
+            class,
+            cause: Box::new(cause),
+        })?;
+        std::fs::create_dir_all(approvals_dir).map_err(|e| ProviderError::Write {
+            path: approvals_dir.to_owned(),
+            cause: Arc::new(e),
         })?;
         let path = self.layout.approvals(class);
         let text = format!(
             "# DEMO APPROVAL written by `ergocell demo` for the simulator. Not a safety sign-off;\n\
              # never copy into trajectories/approvals/.\n{text}"
         );
-        std::fs::write(&path, text)
-            .map_err(|e| ProviderError(format!("cannot write {}: {e}", path.display())))?;
+        std::fs::write(&path, text).map_err(|e| ProviderError::Write {
+            path: path.clone(),
+            cause: Arc::new(e),
+        })?;
         Ok(lock.lock_sha256)
     }
 }
@@ -404,17 +444,24 @@ impl TrajectoryProvider for FileTrajectories {
             return Ok(None);
         }
         let text = self.read(&path)?;
+        let curves = |cause: Cause| ProviderError::Curves {
+            path: path.clone(),
+            cause,
+        };
         let rula: ergocell_ergonomics::height::HandoverRula =
-            toml::from_str(&text).map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
-        rula.check()
-            .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
+            toml::from_str(&text).map_err(|e| curves(Arc::new(e)))?;
+        rula.check().map_err(|e| curves(Arc::new(e)))?;
         Ok(Some(rula))
     }
 
     fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
         let path = self.layout.spec(class);
-        let spec = TrajectorySpec::from_toml_str(&self.read(&path)?)
-            .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
+        let spec = TrajectorySpec::from_toml_str(&self.read(&path)?).map_err(|cause| {
+            ProviderError::Invalid {
+                path,
+                cause: Box::new(cause),
+            }
+        })?;
         Ok(spec.stature.served_m())
     }
 
@@ -445,10 +492,14 @@ impl TrajectoryProvider for FileTrajectories {
         let approved = match (lock::verify(&inputs), seen) {
             (Ok(approved), Ok(())) => approved,
             (Ok(_), Err(e)) => return Err(e),
-            (Err(f), Ok(())) => return Err(ProviderError(f.to_string())),
-            (Err(f), Err(e)) => return Err(ProviderError(format!("{f}\n  - {}", e.0))),
+            (Err(failure), seen) => {
+                return Err(ProviderError::NotVerified {
+                    failure,
+                    witness: seen.err().map(Box::new),
+                })
+            }
         };
-        check_approval_times(&approved, crate::trust_anchor::now_unix()).map_err(ProviderError)?;
+        check_approval_times(&approved, crate::trust_anchor::now_unix())?;
         Ok(approved)
     }
 }
@@ -461,8 +512,12 @@ fn witness_check(
     text: Option<&str>,
     trusted: &TrustedSigners,
 ) -> Result<(), ProviderError> {
-    let notes = crate::witness::observe_text(path, class, text, trusted)
-        .map_err(|e| ProviderError(format!("{}: {e}", path.display())))?;
+    let notes = crate::witness::observe_text(path, class, text, trusted).map_err(|cause| {
+        ProviderError::Witness {
+            path: path.to_owned(),
+            cause: Box::new(cause),
+        }
+    })?;
     for note in notes {
         tracing::warn!("{note}");
     }
@@ -470,13 +525,25 @@ fn witness_check(
 }
 
 /// Every approval's time is one an approval can bear now ([`signing::check_approval_time`]).
-pub fn check_approval_times(approved: &ApprovedTrajectory, now_unix: i64) -> Result<(), String> {
+pub fn check_approval_times(
+    approved: &ApprovedTrajectory,
+    now_unix: i64,
+) -> Result<(), ProviderError> {
     for a in approved.approvals() {
-        signing::check_approval_time(&a.approved_at_utc, now_unix)
-            .map_err(|e| format!("approval by {}: {e}", signing::printable(&a.approved_by)))?;
+        signing::check_approval_time(&a.approved_at_utc, now_unix).map_err(|cause| {
+            ProviderError::ApprovalTime {
+                approver: signing::printable(&a.approved_by),
+                cause,
+            }
+        })?;
     }
     Ok(())
 }
+
+/// A file asked of the shipped set that is not in it.
+#[derive(Debug, thiserror::Error)]
+#[error("{} is not among the files shipped in the binary", .0.display())]
+struct NotShipped(PathBuf);
 
 /// What [`FileTrajectories::current`] read.
 struct Current {

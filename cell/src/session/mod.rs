@@ -35,7 +35,7 @@ use ergocell_robot::{ApprovedTrajectory, TrajectoryClass};
 use ergocell_skeleton::Skeleton3;
 use nalgebra::Isometry3;
 
-pub use crate::error::{BackendError, ProviderError};
+pub use crate::error::{BackendError, Cause, ProviderError};
 
 /// The session's states.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
