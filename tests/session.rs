@@ -11,8 +11,8 @@ mod common;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    LandmarkSource, Leg, RobotCommand, SessionEvent, SessionMachine, SessionState,
-    TrajectoryProvider,
+    AbortReason, LandmarkSource, Leg, RobotCommand, SessionEnd, SessionEvent, SessionMachine,
+    SessionState, TrajectoryProvider,
 };
 use ergocell_cell::CellSettings;
 use ergocell_perception::{CameraRig, View2};
@@ -191,6 +191,14 @@ impl Run {
             | SessionEvent::Frame { stamp_nanos, .. } => *stamp_nanos,
             SessionEvent::Warning(w) => w.stamp_nanos,
         })
+    }
+}
+
+/// Why the session was aborted, when it was.
+fn aborted(machine: &ergocell::session::SessionMachine) -> Option<&AbortReason> {
+    match &machine.summary().end {
+        Some(SessionEnd::Aborted { reason }) => Some(reason),
+        _ => None,
     }
 }
 
@@ -440,7 +448,17 @@ fn an_unapproved_lock_never_moves_the_robot() {
         .received
         .iter()
         .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
-    assert!(run.machine.summary().end_reason.contains("not verified"));
+    assert!(
+        matches!(
+            aborted(&run.machine),
+            Some(AbortReason::NotVerified {
+                class: TrajectoryClass::C2,
+                ..
+            })
+        ),
+        "{}",
+        run.machine.summary().end_reason
+    );
     assert!(run.machine.lock_sha256().is_none());
 }
 
@@ -463,9 +481,22 @@ fn the_mallory_attack_never_moves_the_robot() {
         .received
         .iter()
         .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
+    // Not verified because the trust list is not what the site's authority signed.
     let reason = &run.machine.summary().end_reason;
+    let Some(AbortReason::NotVerified {
+        class: TrajectoryClass::C2,
+        error: ergocell::session::ProviderError::TrustList { cause },
+    }) = aborted(&run.machine)
+    else {
+        panic!("{reason}");
+    };
     assert!(
-        reason.contains("not verified") && reason.contains("edited after signing"),
+        matches!(
+            cause.downcast_ref::<ergocell::trust_anchor::TrustListError>(),
+            Some(ergocell::trust_anchor::TrustListError::Authority(
+                ergocell_robot::authority::AuthorityError::Edited
+            ))
+        ),
         "{reason}"
     );
 }
@@ -734,9 +765,17 @@ fn the_session_never_serves_outside_the_statures_it_verifies_at_lock_time() {
         .any(|e| matches!(e, SessionEvent::ClassDecided { .. })));
     assert_eq!(machine.state(), SessionState::SessionEnded);
     let reason = &machine.summary().end_reason;
+    let Some(AbortReason::StatureOutsideServed {
+        class: TrajectoryClass::C2,
+        interval_m,
+        served_m,
+    }) = aborted(&machine)
+    else {
+        panic!("{reason}");
+    };
     assert!(
-        reason.contains("reaches outside the statures class c2's trajectory was validated for"),
-        "{reason}"
+        interval_m[0] < served_m[0] || interval_m[1] > served_m[1],
+        "{interval_m:?} inside {served_m:?}"
     );
     assert!(machine.lock_sha256().is_none());
     assert!(robot
@@ -864,21 +903,25 @@ fn a_station_offset_in_cell_toml_moves_where_the_operator_is_measured() {
     }
     assert_eq!(at_origin.machine.state(), SessionState::SessionEnded);
     assert!(
-        at_origin
-            .machine
-            .summary()
-            .end_reason
-            .contains("operator left"),
+        matches!(
+            at_origin.machine.summary().end,
+            Some(SessionEnd::OperatorLeft { .. })
+        ),
         "{}",
         at_origin.machine.summary().end_reason
     );
     // Nobody stood at the station 3 m away: the session ends undecided, saying why.
     assert_eq!(away.machine.state(), SessionState::SessionEnded);
     let reason = &away.machine.summary().end_reason;
-    assert!(
-        reason.contains("height undecided") && reason.contains("away from the station"),
-        "{reason}"
-    );
+    let Some(AbortReason::HeightUndecided {
+        upright_frames: 0,
+        missing,
+        ..
+    }) = aborted(&away.machine)
+    else {
+        panic!("{reason}");
+    };
+    assert!(missing.contains("away from the station"), "{reason}");
     // The height is measured only where the station is (the operator gate's zone): the operator never
     // stood 3 m away, so no class was decided there and the robot never moved.
     let class = |r: &Run| r.machine.summary().class.clone();

@@ -8,6 +8,7 @@ use ergocell_robot::{SessionLock, TrajectoryClass};
 use ergocell_skeleton::{Landmark, Skeleton3};
 use nalgebra::Point3;
 
+use super::end::{AbortReason, SessionEnd};
 use super::{
     leg_trajectory, trajectory_class, Leg, RobotCommand, RobotSink, SessionConfig, SessionEvent,
     SessionState, TrajectoryProvider,
@@ -48,7 +49,7 @@ enum Part {
 }
 
 /// Counts for the final summary.
-#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Default, serde::Serialize)]
 pub struct SessionSummary {
     pub frames_fused: u64,
     pub frames_tracked: u64,
@@ -70,7 +71,10 @@ pub struct SessionSummary {
     /// the handover point, metres.
     pub last_part: Option<PartTakenFacts>,
     pub ended: bool,
+    /// How the session ended, in words ([`SessionSummary::end`]'s).
     pub end_reason: String,
+    /// How the session ended, typed; `None` while it runs.
+    pub end: Option<SessionEnd>,
 }
 
 /// One part the operator took at the handover point.
@@ -296,7 +300,11 @@ impl SessionMachine {
         };
         self.send(now_nanos, robot, command, &mut events);
         self.hold_reason = Some(why.to_owned());
-        self.summary.end_reason = format!("interrupted: {why} (robot held)");
+        let end = SessionEnd::Interrupted {
+            why: why.to_owned(),
+        };
+        self.summary.end_reason = end.to_string();
+        self.summary.end = Some(end);
         self.transition(now_nanos, SessionState::SessionEnded, why, &mut events);
         events
     }
@@ -744,16 +752,21 @@ impl SessionMachine {
         if now_nanos - since < self.config.height_timeout_nanos {
             return;
         }
-        let why = match self.pipeline.height_status() {
-            HeightStatus::Measuring { why, .. } => why,
+        let reason = match self.pipeline.height_status() {
+            HeightStatus::Measuring {
+                why,
+                frames_seen,
+                upright_frames,
+                ..
+            } => AbortReason::HeightUndecided {
+                after_s: self.config.height_timeout_nanos as f64 * 1e-9,
+                frames_seen,
+                upright_frames,
+                missing: why,
+            },
             HeightStatus::Decided(_) => return,
         };
-        let why = format!(
-            "height undecided after {:.0} s ({why}): the cell cannot class this operator, so the \
-             robot does not move",
-            self.config.height_timeout_nanos as f64 * 1e-9
-        );
-        self.abort(now_nanos, robot, &why, events);
+        self.abort(now_nanos, robot, reason, events);
     }
 
     fn lock_trajectory(
@@ -772,17 +785,17 @@ impl SessionMachine {
         match self.provider.stature_bounds_m(class) {
             Ok((min_m, max_m)) if serves_interval([min_m, max_m], decision.interval_m) => {}
             Ok((min_m, max_m)) => {
-                let why = format!(
-                    "operator stature {lo_m:.3}–{hi_m:.3} m reaches outside the statures class {class}'s \
-                     trajectory was validated for ({min_m:.2}–{max_m:.2} m): the robot does not move; a \
-                     trajectory for this stature must be derived, validated and approved first"
-                );
-                self.abort(now_nanos, robot, &why, events);
+                let reason = AbortReason::StatureOutsideServed {
+                    class,
+                    interval_m: [lo_m, hi_m],
+                    served_m: [min_m, max_m],
+                };
+                self.abort(now_nanos, robot, reason, events);
                 return;
             }
-            Err(e) => {
-                let why = format!("cannot read the stature bounds of class {class}: {e}");
-                self.abort(now_nanos, robot, &why, events);
+            Err(error) => {
+                let reason = AbortReason::StatureBoundsUnreadable { class, error };
+                self.abort(now_nanos, robot, reason, events);
                 return;
             }
         }
@@ -790,20 +803,14 @@ impl SessionMachine {
             Ok(approved) => {
                 let names = approved.joint_names().to_vec();
                 if let Some(current) = robot.joint_positions(now_nanos, &names) {
-                    if let Err(e) =
+                    if let Err(error) =
                         approved.check_start(&current, self.config.at_knot_tolerance_rad)
                     {
-                        let why = format!("the robot is not at the trajectory's start: {e}");
-                        self.abort(now_nanos, robot, &why, events);
+                        self.abort(now_nanos, robot, AbortReason::NotAtStart { error }, events);
                         return;
                     }
                 } else {
-                    self.abort(
-                        now_nanos,
-                        robot,
-                        "no joint positions from the robot: cannot check the trajectory's start",
-                        events,
-                    );
+                    self.abort(now_nanos, robot, AbortReason::NoJointPositions, events);
                     return;
                 }
                 let sha = approved.lock().lock_sha256.clone();
@@ -828,9 +835,13 @@ impl SessionMachine {
                     events,
                 );
             }
-            Err(why) => {
-                let why = format!("trajectory for class {class} not verified: {why}");
-                self.abort(now_nanos, robot, &why, events);
+            Err(error) => {
+                self.abort(
+                    now_nanos,
+                    robot,
+                    AbortReason::NotVerified { class, error },
+                    events,
+                );
             }
         }
     }
@@ -961,10 +972,11 @@ impl SessionMachine {
         match lock.end(self.operator_departed, at_home) {
             Ok(refused) => {
                 self.summary.ended = true;
-                self.summary.end_reason = format!(
-                    "operator left, robot at home ({} change request(s) refused during the session)",
-                    refused.len()
-                );
+                let end = SessionEnd::OperatorLeft {
+                    changes_refused: refused.len(),
+                };
+                self.summary.end_reason = end.to_string();
+                self.summary.end = Some(end);
                 let reason = self.summary.end_reason.clone();
                 self.transition(now_nanos, SessionState::SessionEnded, &reason, events);
             }
@@ -976,17 +988,20 @@ impl SessionMachine {
         &mut self,
         now_nanos: i64,
         robot: &mut dyn RobotSink,
-        why: &str,
+        reason: AbortReason,
         events: &mut Vec<SessionEvent>,
     ) {
+        let why = reason.to_string();
         tracing::error!(reason = %why, "session aborted");
         let command = RobotCommand::Hold {
-            reason: why.to_owned(),
+            reason: why.clone(),
         };
         self.send(now_nanos, robot, command, events);
-        self.hold_reason = Some(why.to_owned());
-        self.summary.end_reason = format!("aborted: {why}");
-        self.transition(now_nanos, SessionState::SessionEnded, why, events);
+        self.hold_reason = Some(why.clone());
+        let end = SessionEnd::Aborted { reason };
+        self.summary.end_reason = end.to_string();
+        self.summary.end = Some(end);
+        self.transition(now_nanos, SessionState::SessionEnded, &why, events);
     }
 
     /// Sends a command; a failed send is logged and the robot is assumed not to have moved.

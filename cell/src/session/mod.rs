@@ -22,9 +22,11 @@
 
 pub mod cell_loop;
 pub mod dummy;
+pub mod end;
 mod machine;
 
 pub use cell_loop::{CellLoop, CellOutputs, EndCause, Ending, OutputError};
+pub use end::{AbortReason, SessionEnd};
 pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 
 use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};

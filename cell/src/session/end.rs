@@ -1,0 +1,135 @@
+//! How a session ended, as types: [`SessionEnd`] and, for a session that could not serve,
+//! [`AbortReason`] with its facts as fields. The summary's `end_reason` is their words
+//! ([`std::fmt::Display`]); programs and tests match the variants.
+
+use std::fmt;
+
+use ergocell_robot::{RobotError, TrajectoryClass};
+use serde::{Serialize, Serializer};
+
+use crate::error::ProviderError;
+
+/// Why the session ended without serving: the robot is held and does not move.
+#[derive(Debug, Clone, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum AbortReason {
+    /// The operator's height was still undecided when the height timeout passed.
+    HeightUndecided {
+        /// The height timeout, seconds.
+        after_s: f64,
+        frames_seen: usize,
+        upright_frames: usize,
+        /// What the height measurement still misses, in its own words.
+        missing: String,
+    },
+    /// The operator's ±2σ stature interval reaches outside the statures the class's trajectory was
+    /// validated and is served for.
+    StatureOutsideServed {
+        class: TrajectoryClass,
+        interval_m: [f64; 2],
+        served_m: [f64; 2],
+    },
+    /// The class's served statures could not be read.
+    StatureBoundsUnreadable {
+        class: TrajectoryClass,
+        #[serde(serialize_with = "as_text")]
+        error: ProviderError,
+    },
+    /// The class's trajectory did not verify against its lock and approvals.
+    NotVerified {
+        class: TrajectoryClass,
+        #[serde(serialize_with = "as_text")]
+        error: ProviderError,
+    },
+    /// The robot is not at the locked trajectory's first knot.
+    NotAtStart {
+        #[serde(serialize_with = "as_text")]
+        error: RobotError,
+    },
+    /// The robot reported no joint positions, so its start could not be checked.
+    NoJointPositions,
+}
+
+fn as_text<T: fmt::Display, S: Serializer>(value: &T, s: S) -> Result<S::Ok, S::Error> {
+    s.collect_str(value)
+}
+
+impl fmt::Display for AbortReason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::HeightUndecided {
+                after_s, missing, ..
+            } => write!(
+                f,
+                "height undecided after {after_s:.0} s ({missing}): the cell cannot class this \
+                 operator, so the robot does not move"
+            ),
+            Self::StatureOutsideServed {
+                class,
+                interval_m: [lo, hi],
+                served_m: [min, max],
+            } => write!(
+                f,
+                "operator stature {lo:.3}–{hi:.3} m reaches outside the statures class {class}'s \
+                 trajectory was validated for ({min:.2}–{max:.2} m): the robot does not move; a \
+                 trajectory for this stature must be derived, validated and approved first"
+            ),
+            Self::StatureBoundsUnreadable { class, error } => {
+                write!(
+                    f,
+                    "cannot read the stature bounds of class {class}: {error}"
+                )
+            }
+            Self::NotVerified { class, error } => {
+                write!(f, "trajectory for class {class} not verified: {error}")
+            }
+            Self::NotAtStart { error } => {
+                write!(f, "the robot is not at the trajectory's start: {error}")
+            }
+            Self::NoJointPositions => f.write_str(
+                "no joint positions from the robot: cannot check the trajectory's start",
+            ),
+        }
+    }
+}
+
+/// How the session ended.
+#[derive(Debug, Clone, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum SessionEnd {
+    /// The operator left and the robot is home: the normal end.
+    OperatorLeft {
+        /// Class change requests refused during the session (the trajectory stayed locked).
+        changes_refused: usize,
+    },
+    /// The session could not serve; the robot was held.
+    Aborted { reason: AbortReason },
+    /// The caller stopped the session (a signal, a backend or output failure); the robot was held.
+    Interrupted {
+        /// The caller's reason, in its words.
+        why: String,
+    },
+}
+
+impl SessionEnd {
+    /// The normal end: the operator left with the robot at home.
+    pub fn is_normal(&self) -> bool {
+        matches!(self, Self::OperatorLeft { .. })
+    }
+}
+
+impl fmt::Display for SessionEnd {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::OperatorLeft { changes_refused } => write!(
+                f,
+                "operator left, robot at home ({changes_refused} change request(s) refused during \
+                 the session)"
+            ),
+            Self::Aborted { reason } => write!(f, "aborted: {reason}"),
+            Self::Interrupted { why } => write!(f, "interrupted: {why} (robot held)"),
+        }
+    }
+}
