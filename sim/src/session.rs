@@ -17,7 +17,7 @@
 
 use ergocell_perception::{CameraIndex, CameraRig, Frame2};
 use ergocell_skeleton::{Landmark, Skeleton3};
-use nalgebra::Point3;
+use nalgebra::{Isometry3, Point3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
@@ -231,6 +231,29 @@ impl SessionScript {
             step_hz: 1.8,
             habits: Habits::default(),
             floor_pick: None,
+        }
+    }
+
+    /// Moves where the operator stands, faces and walks in from (and the floor pick's part) with a
+    /// station at `T_world_station`: those are written for a station at the world's origin facing
+    /// +x, as [`SessionScript::new`] and [`FloorPick::new`] give them. The handover point is the
+    /// world's already (the cell puts each lock's station-frame point there) and stays.
+    pub fn place_at_station(&mut self, T_world_station: &Isometry3<f64>) {
+        let on_floor = |xy: [f64; 2]| {
+            let p = T_world_station * Point3::new(xy[0], xy[1], 0.0);
+            [p.x, p.y]
+        };
+        self.station_m = on_floor(self.station_m);
+        self.entry_m = on_floor(self.entry_m);
+        let facing = T_world_station.rotation
+            * Vector3::new(
+                self.station_heading_rad.cos(),
+                self.station_heading_rad.sin(),
+                0.0,
+            );
+        self.station_heading_rad = facing.y.atan2(facing.x);
+        if let Some(pick) = &mut self.floor_pick {
+            pick.target_m = T_world_station * pick.target_m;
         }
     }
 

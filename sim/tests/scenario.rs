@@ -424,3 +424,39 @@ fn with_a_fixed_lag_each_frame_comes_out_half_a_window_late_and_the_height_is_th
     }
     assert_eq!(decisions[0], decisions[1]);
 }
+
+/// A script placed at a station carries the operator's place, heading, entry and floor pick with
+/// the station; at the world's own station (the identity) nothing moves, bit for bit.
+#[test]
+fn a_script_placed_at_a_station_moves_with_it() {
+    use ergocell_sim::FloorPick;
+    use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+    let mut script = SessionScript::new(c2_handover());
+    script.floor_pick = Some(FloorPick::new(1));
+    let mut same = script;
+    same.place_at_station(&Isometry3::identity());
+    assert_eq!(same, script);
+    let yaw = 0.3;
+    let t = Isometry3::from_parts(
+        Translation3::new(0.12, 0.16, 0.0),
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), yaw),
+    );
+    let mut moved = script;
+    moved.place_at_station(&t);
+    let on_floor = |xy: [f64; 2]| {
+        let p = t * Point3::new(xy[0], xy[1], 0.0);
+        [p.x, p.y]
+    };
+    let close = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]) < 1e-12;
+    assert!(
+        close(moved.station_m, [0.12, 0.16]),
+        "{:?}",
+        moved.station_m
+    );
+    assert!(close(moved.entry_m, on_floor(script.entry_m)));
+    assert!((moved.station_heading_rad - yaw).abs() < 1e-12);
+    let pick = |s: &SessionScript| s.floor_pick.unwrap().target_m;
+    assert!((pick(&moved) - t * pick(&script)).norm() < 1e-12);
+    // The handover point is the world's already.
+    assert_eq!(moved.handover_m, script.handover_m);
+}

@@ -608,6 +608,8 @@ fn script(args: &Args, own: &Handover, settings: &CellSettings) -> SessionScript
     if !args.no_floor_pick {
         script.floor_pick = Some(FloorPick::new(args.cycles.min(1)));
     }
+    // The operator stands at the cell's station (`[station]`), not at the world's origin.
+    script.place_at_station(&settings.session.T_world_station);
     script
 }
 
