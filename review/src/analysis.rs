@@ -958,7 +958,7 @@ fn facts(states: &[Stamped<SessionState>], t0: u64) -> Facts {
 /// The parts taken, from the session states' fields (`parts_taken`, `last_part_hand`,
 /// `last_part_closest_m`); each part once. A recording made before the states carried them has
 /// only the state's reason for people ("part 2 taken: the operator's left hand came to 0.083 m of
-/// the handover point …"): for those messages alone ([`legacy_part_from_reason`]) it is read.
+/// the handover point …"): for those messages alone ([`crate::legacy::legacy_part_from_reason`]) it is read.
 fn parts_taken(states: &[Stamped<SessionState>], t0: u64) -> Vec<PartTaken> {
     let mut parts: Vec<PartTaken> = Vec::new();
     for s in states {
@@ -970,7 +970,7 @@ fn parts_taken(states: &[Stamped<SessionState>], t0: u64) -> Vec<PartTaken> {
                 finite(m.last_part_closest_m),
             ))
         } else {
-            legacy_part_from_reason(&m.reason)
+            crate::legacy::legacy_part_from_reason(&m.reason)
         };
         let Some((part, hand, distance_m)) = taken else {
             continue;
@@ -987,29 +987,6 @@ fn parts_taken(states: &[Stamped<SessionState>], t0: u64) -> Vec<PartTaken> {
         });
     }
     parts
-}
-
-/// A part taken, as the reason of a session state recorded before the states carried it as fields
-/// said it: `part N taken: the operator's <hand> hand came to <d> m of …`.
-pub(crate) fn legacy_part_from_reason(reason: &str) -> Option<(u32, Option<String>, Option<f64>)> {
-    let (part, rest) = reason
-        .strip_prefix("part ")
-        .and_then(|r| r.split_once(' '))
-        .and_then(|(n, rest)| Some((n.parse::<u32>().ok()?, rest)))?;
-    if !rest.starts_with("taken") {
-        return None;
-    }
-    let hand = rest
-        .split_once("operator's ")
-        .and_then(|(_, r)| r.split_whitespace().next())
-        .filter(|h| matches!(*h, "left" | "right"))
-        .map(str::to_owned);
-    let distance_m = rest
-        .split_once("came to ")
-        .and_then(|(_, r)| r.split_once(" m"))
-        .and_then(|(d, _)| d.trim().parse::<f64>().ok())
-        .and_then(finite);
-    Some((part, hand, distance_m))
 }
 
 fn robot(rec: &Recording, t0: u64) -> Robot {

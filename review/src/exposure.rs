@@ -26,9 +26,10 @@ use ergocell_ergonomics::summary::{RebaBrief, SessionSummary};
 use ergocell_ergonomics::UpVector;
 
 use crate::analysis::{
-    frame_facts, handover_spans_of, legacy_part_from_reason, phase_of, robot_legs, scored_side,
-    secs, skeleton_of, summarise, FrameFacts, ScoredFrame,
+    frame_facts, handover_spans_of, phase_of, robot_legs, scored_side, secs, skeleton_of,
+    summarise, FrameFacts, ScoredFrame,
 };
+use crate::legacy::legacy_part_from_reason;
 use crate::read::{stream_recording, topics, Decoded, ReadStats, Stamped, Visit};
 use crate::ReviewError;
 

@@ -7,6 +7,8 @@
 //! - [`read`]: an MCAP recording (bytes, or streamed from a reader) → the ergocell messages in it. A file cut short (a crash, a
 //!   partial copy) is read up to its last complete chunk and says so; a foreign MCAP or a file that is
 //!   not MCAP at all is refused with what could be read.
+//!   Recordings made before a message carried a fact as a field are read in one module, `legacy`:
+//!   the older layouts, and the only facts read from words (a leg's, a part taken's).
 //! - [`analysis`]: the messages → [`ReviewData`], the JSON the page renders (`version` 1).
 //! - [`overview`]: a long recording (a shift) in bounded memory: read twice, streamed; its numbers
 //!   over every frame, its page the overview and the worst moments.
@@ -24,6 +26,7 @@
 pub mod analysis;
 pub mod export;
 pub mod exposure;
+mod legacy;
 pub mod overview;
 pub mod page;
 pub mod read;

@@ -16,6 +16,9 @@ use ergocell_bridge::msg::{
 use ergocell_bridge::session_info;
 use serde::de::DeserializeOwned;
 
+use crate::legacy::{
+    take_controller_event, take_ergonomic_state, take_posture_warning, take_session_state,
+};
 use crate::ReviewError;
 
 /// Topics the review reads: the recorder's names, from the one table in the bridge.
@@ -355,9 +358,12 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
     let mut channels: BTreeMap<u16, (String, String)> = BTreeMap::new();
     let mut past_data_end = false;
     let mut failure: Option<String> = None;
+    // A chunk compressed with what this build does not decompress: said so, with the way out.
+    let mut compressed = false;
     while let Some(event) = linear.next_event() {
         match event {
             Err(e) => {
+                compressed = matches!(e, mcap::McapError::UnsupportedCompression(_));
                 failure = Some(e.to_string());
                 break;
             }
@@ -430,7 +436,7 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
         );
         let why = if past_data_end {
             format!("its summary is unreadable ({why}); every message before it was read")
-        } else if why.contains("compression") {
+        } else if compressed {
             format!("{why}; ergocell writes and reads uncompressed recordings (`mcap convert --compression none` decompresses one)")
         } else {
             format!("the rest is unreadable ({why}): the recording was cut short or damaged")
@@ -808,7 +814,7 @@ fn check_chunk(bytes: &[u8], index: &mcap::records::ChunkIndex) -> Result<(), St
 }
 
 /// Decodes one message of type `M` if the channel's schema names `M`.
-fn take<M: RosMessage + DeserializeOwned>(
+pub(crate) fn take<M: RosMessage + DeserializeOwned>(
     schema: &str,
     data: &[u8],
     log_time_nanos: u64,
@@ -822,207 +828,6 @@ fn take<M: RosMessage + DeserializeOwned>(
         log_time_nanos,
         logged_nanos: log_time_nanos,
         message,
-    })
-}
-
-/// `SessionState` as recorded before it carried the height decision (basis, probability, expected
-/// RULA cost) and the parts taken as fields (the same fields, without those six): such recordings
-/// stay reviewable.
-#[derive(serde::Deserialize)]
-#[cfg_attr(test, derive(serde::Serialize))]
-struct SessionStateWithoutDecision {
-    header: ergocell_bridge::msg::Header,
-    state: String,
-    reason: String,
-    height_m: f64,
-    height_uncertainty_m: f64,
-    height_class: String,
-    trajectory_sha256: String,
-    robot_held: bool,
-    cameras_fresh: u32,
-    stereo_pairs_tracking: u32,
-    trajectory_approved_by: Vec<String>,
-}
-
-/// Decodes a `SessionState`, or one of the layout before the decision's and the parts' fields (those
-/// then NaN, empty or 0: unknown; the review reads such a recording's parts from the reasons).
-fn take_session_state(
-    schema: &str,
-    data: &[u8],
-    log_time_nanos: u64,
-) -> Result<Stamped<SessionState>, String> {
-    let current = take(schema, data, log_time_nanos);
-    if current.is_ok() || schema != SessionState::type_name() {
-        return current;
-    }
-    let Ok(old) = cdr::decode::<SessionStateWithoutDecision>(data) else {
-        return current;
-    };
-    Ok(Stamped {
-        log_time_nanos,
-        logged_nanos: log_time_nanos,
-        message: SessionState {
-            header: old.header,
-            state: old.state,
-            reason: old.reason,
-            height_m: old.height_m,
-            height_uncertainty_m: old.height_uncertainty_m,
-            height_class: old.height_class,
-            trajectory_sha256: old.trajectory_sha256,
-            robot_held: old.robot_held,
-            cameras_fresh: old.cameras_fresh,
-            stereo_pairs_tracking: old.stereo_pairs_tracking,
-            trajectory_approved_by: old.trajectory_approved_by,
-            height_decision_basis: String::new(),
-            height_class_probability: f64::NAN,
-            height_expected_rula_cost: f64::NAN,
-            parts_taken: 0,
-            last_part_hand: String::new(),
-            last_part_closest_m: f64::NAN,
-        },
-    })
-}
-
-/// `ErgonomicState` as recorded before it carried how sure each region's band is: such recordings
-/// stay reviewable, their confidences unknown (empty).
-#[derive(serde::Deserialize)]
-#[cfg_attr(test, derive(serde::Serialize))]
-struct ErgonomicStateWithoutConfidence {
-    header: ergocell_bridge::msg::Header,
-    left: ergocell_bridge::msg::RulaSide,
-    right: ergocell_bridge::msg::RulaSide,
-    action_level: u8,
-}
-
-/// Decodes an `ErgonomicState`, or one of the layout before the band probabilities.
-fn take_ergonomic_state(
-    schema: &str,
-    data: &[u8],
-    log_time_nanos: u64,
-) -> Result<Stamped<ErgonomicState>, String> {
-    let current = take(schema, data, log_time_nanos);
-    if current.is_ok() || schema != ErgonomicState::type_name() {
-        return current;
-    }
-    let Ok(old) = cdr::decode::<ErgonomicStateWithoutConfidence>(data) else {
-        return current;
-    };
-    Ok(Stamped {
-        log_time_nanos,
-        logged_nanos: log_time_nanos,
-        message: ErgonomicState {
-            header: old.header,
-            left: old.left,
-            right: old.right,
-            action_level: old.action_level,
-            ..ErgonomicState::default()
-        },
-    })
-}
-
-/// `PostureWarning` as recorded before it carried its band's probability: such recordings stay
-/// reviewable, the probability unknown (NaN) and never "near the limit".
-#[derive(serde::Deserialize)]
-#[cfg_attr(test, derive(serde::Serialize))]
-struct PostureWarningWithoutConfidence {
-    header: ergocell_bridge::msg::Header,
-    kind: String,
-    region: String,
-    side: String,
-    region_score: u8,
-    angle_deg: f64,
-    action_level: u8,
-    uncertain: bool,
-    message: String,
-}
-
-/// Decodes a `PostureWarning`, or one of the layout before the band's probability.
-fn take_posture_warning(
-    schema: &str,
-    data: &[u8],
-    log_time_nanos: u64,
-) -> Result<Stamped<PostureWarning>, String> {
-    let current = take(schema, data, log_time_nanos);
-    if current.is_ok() || schema != PostureWarning::type_name() {
-        return current;
-    }
-    let Ok(old) = cdr::decode::<PostureWarningWithoutConfidence>(data) else {
-        return current;
-    };
-    Ok(Stamped {
-        log_time_nanos,
-        logged_nanos: log_time_nanos,
-        message: PostureWarning {
-            header: old.header,
-            kind: old.kind,
-            region: old.region,
-            side: old.side,
-            region_score: old.region_score,
-            angle_deg: old.angle_deg,
-            action_level: old.action_level,
-            uncertain: old.uncertain,
-            message: old.message,
-            band_probability: f64::NAN,
-            near_limit: false,
-        },
-    })
-}
-
-/// `ControllerEvent` as recorded before it carried the leg as a constant (`leg_id`): such recordings
-/// stay reviewable.
-#[derive(serde::Deserialize)]
-#[cfg_attr(test, derive(serde::Serialize))]
-struct ControllerEventWithoutLegId {
-    header: ergocell_bridge::msg::Header,
-    kind: String,
-    leg: String,
-    status: String,
-    error_code: i32,
-    text: String,
-    feedback_count: u32,
-    max_error: f64,
-    sample_stamp: ergocell_bridge::msg::Time,
-}
-
-/// The leg constant of an event recorded before `leg_id`, from the words `ergocell run` wrote for
-/// the two legs then (the only place the review reads a leg from words).
-fn legacy_leg_id(words: &str) -> u8 {
-    match words {
-        "home → handover" => ControllerEvent::LEG_TO_HANDOVER,
-        "handover → home" => ControllerEvent::LEG_TO_HOME,
-        _ => ControllerEvent::LEG_NONE,
-    }
-}
-
-/// Decodes a `ControllerEvent`, or one of the layout before `leg_id` (the leg's constant then from
-/// its words).
-fn take_controller_event(
-    schema: &str,
-    data: &[u8],
-    log_time_nanos: u64,
-) -> Result<Stamped<ControllerEvent>, String> {
-    let current = take(schema, data, log_time_nanos);
-    if current.is_ok() || schema != ControllerEvent::type_name() {
-        return current;
-    }
-    let Ok(old) = cdr::decode::<ControllerEventWithoutLegId>(data) else {
-        return current;
-    };
-    Ok(Stamped {
-        log_time_nanos,
-        logged_nanos: log_time_nanos,
-        message: ControllerEvent {
-            leg_id: legacy_leg_id(&old.leg),
-            header: old.header,
-            kind: old.kind,
-            leg: old.leg,
-            status: old.status,
-            error_code: old.error_code,
-            text: old.text,
-            feedback_count: old.feedback_count,
-            max_error: old.max_error,
-            sample_stamp: old.sample_stamp,
-        },
     })
 }
 
@@ -1159,6 +964,10 @@ pub fn split_sessions(rec: &Recording) -> Vec<SessionPart> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::legacy::{
+        ControllerEventWithoutLegId, ErgonomicStateWithoutConfidence,
+        PostureWarningWithoutConfidence, SessionStateWithoutDecision,
+    };
 
     fn stamped<M>(t: u64, message: M) -> Stamped<M> {
         Stamped {
