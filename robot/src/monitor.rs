@@ -3,8 +3,9 @@
 //! Every joint-state sample is compared with the leg being executed at that sample's time (the locked
 //! knots, cubic Hermite between them with the locked velocities, as the joint trajectory controller
 //! interpolates). The controller's own tolerances are the controller's business; this is ergocell's
-//! independent check of what the robot does, and the binary cancels the goal and holds the robot on
-//! the first [`Deviation`]:
+//! independent check of what the robot does, and the ROS backend's monitor task
+//! (`ergocell_ros_backend::monitor`) cancels the goal and holds the robot on the first
+//! [`Deviation`]:
 //!
 //! - a joint farther from the lock than its path tolerance while the leg runs ([`Deviation::Path`]),
 //!   diagnosed as [`Deviation::Lagging`] when the robot is on the locked path but behind it in time;

@@ -10,9 +10,11 @@
 //! clock: the simulator's, a test's or the wall clock at the binary's boundary), the camera views that
 //! arrived since the last step, and a [`RobotSink`]. The machine owns one
 //! [`Pipeline`](crate::pipeline::Pipeline): every frame is fused, filtered, assessed and measured
-//! there, nowhere else. Backends implement two traits — [`LandmarkSource`] (camera landmarks in) and
-//! [`RobotSink`] (commands out, joint positions in) — with this crate's own types: no ROS message
-//! crosses into the core (the ROS 2 backend, `ergocell_ros_backend::messages`, converts at its boundary). Trajectories come only through a
+//! there, nowhere else. Backends speak this crate's own types: a [`RobotSink`] (commands out, joint
+//! positions in; the ROS 2 backend's `RosRobot`, the simulated `DummyRobot`) and the camera views,
+//! which the simulator and the tests' scripts give as a [`LandmarkSource`] and `ergocell run` hands
+//! to the loop as they arrive over ROS 2. No ROS message crosses into the core (the ROS 2 backend,
+//! `ergocell_ros_backend::messages`, converts at its boundary). Trajectories come only through a
 //! [`TrajectoryProvider`], which verifies the lock and its approval on every call.
 //!
 //! The robot is **held** (goal cancelled: on ROS an empty `JointTrajectory`) when fewer than one
