@@ -1,5 +1,6 @@
-//! How a session ended, as types: [`SessionEnd`] and, for a session that could not serve,
-//! [`AbortReason`] with its facts as fields. The summary's `end_reason` is their words
+//! Why the robot is held and how a session ended, as types: [`HoldReason`], [`SessionEnd`] and,
+//! for a session that could not serve, [`AbortReason`], each with its facts as fields. The
+//! summary's `end_reason` and the hold's reason on the wire are their words
 //! ([`std::fmt::Display`]); programs and tests match the variants.
 
 use std::fmt;
@@ -130,6 +131,63 @@ impl fmt::Display for SessionEnd {
             ),
             Self::Aborted { reason } => write!(f, "aborted: {reason}"),
             Self::Interrupted { why } => write!(f, "interrupted: {why} (robot held)"),
+        }
+    }
+}
+
+/// Why the robot is held (the session goes on, and resumes by its rules once the reason clears).
+#[derive(Debug, Clone, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum HoldReason {
+    /// Frames arrive, but no stereo pair sees the operator.
+    NoStereoPair { cameras_fresh: usize },
+    /// No camera frame is recent enough to move the robot by (every camera silent, or their clocks
+    /// far from the cell's).
+    CamerasLost { max_frame_age_ms: i64 },
+    /// The robot side is not ready (its driver not configured or not controlling, its joint states
+    /// stale), in the backend's words.
+    RobotNotReady { why: String },
+    /// The trajectory locked for this session is not the one the files give now.
+    LockChanged { locked: String, now: String },
+    /// The locked trajectory no longer verifies against its files and approvals.
+    LockNoLongerVerifies {
+        #[serde(serialize_with = "as_text")]
+        error: ProviderError,
+    },
+    /// Tracking is back, but the robot stopped between the locked trajectory's ends.
+    StoppedBetweenEnds,
+    /// The session was aborted or interrupted; the robot stays held.
+    Ended {
+        /// The end's words.
+        why: String,
+    },
+}
+
+impl fmt::Display for HoldReason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NoStereoPair { cameras_fresh } => write!(
+                f,
+                "fewer than one stereo pair sees the operator ({cameras_fresh} cameras fresh)"
+            ),
+            Self::CamerasLost { max_frame_age_ms } => write!(
+                f,
+                "cameras lost: no camera frame newer than {max_frame_age_ms} ms"
+            ),
+            Self::RobotNotReady { why } | Self::Ended { why } => f.write_str(why),
+            Self::LockChanged { locked, now } => write!(
+                f,
+                "the lock changed during the session ({locked} → {now}): staying held"
+            ),
+            Self::LockNoLongerVerifies { error } => write!(
+                f,
+                "the locked trajectory no longer verifies: {error}; staying held"
+            ),
+            Self::StoppedBetweenEnds => f.write_str(
+                "tracking back, but the robot stopped between the locked trajectory's ends: bring \
+                 it home with the pendant; the session resumes once /joint_states match home",
+            ),
         }
     }
 }

@@ -8,7 +8,7 @@ use ergocell_robot::{SessionLock, TrajectoryClass};
 use ergocell_skeleton::{Landmark, Skeleton3};
 use nalgebra::Point3;
 
-use super::end::{AbortReason, SessionEnd};
+use super::end::{AbortReason, HoldReason, SessionEnd};
 use super::{
     leg_trajectory, trajectory_class, Leg, RobotCommand, RobotSink, SessionConfig, SessionEvent,
     SessionState, TrajectoryProvider,
@@ -101,7 +101,8 @@ pub struct SessionMachine {
     motion: Motion,
     /// Since when the robot stands at home between cycles (the next part is loaded meanwhile).
     at_home_since: Option<i64>,
-    hold_reason: Option<String>,
+    /// Why the robot is held, and its words.
+    hold_reason: Option<(HoldReason, String)>,
     /// Why the robot side cannot be trusted to move right now (the driver not controlling, joint
     /// states stale), from the backend: the robot is held and nothing is sent until it clears.
     robot_unready: Option<String>,
@@ -229,7 +230,7 @@ impl SessionMachine {
 
     /// Why the robot is held, if it is.
     pub fn hold_reason(&self) -> Option<&str> {
-        self.hold_reason.as_deref()
+        self.hold_reason.as_ref().map(|(_, words)| words.as_str())
     }
 
     /// Cameras whose views are fresh.
@@ -299,7 +300,9 @@ impl SessionMachine {
             reason: format!("session interrupted: {why}"),
         };
         self.send(now_nanos, robot, command, &mut events);
-        self.hold_reason = Some(why.to_owned());
+        self.set_hold(HoldReason::Ended {
+            why: why.to_owned(),
+        });
         let end = SessionEnd::Interrupted {
             why: why.to_owned(),
         };
@@ -576,10 +579,11 @@ impl SessionMachine {
         // The robot side not ready: held, nothing sent, until it is (then the usual resume rules).
         if let Some(why) = self.robot_unready.clone() {
             self.tracking_back_since = None;
+            let reason = HoldReason::RobotNotReady { why };
             if self.state == SessionState::Held {
-                self.set_hold_reason(&why);
+                self.set_hold(reason);
             } else {
-                self.hold(now_nanos, robot, &why, events);
+                self.hold(now_nanos, robot, reason, events);
             }
             return;
         }
@@ -607,20 +611,18 @@ impl SessionMachine {
         if !tracking_ok {
             self.tracking_back_since = None;
             if self.state != SessionState::Held {
-                let why = if frames_fresh {
-                    format!(
-                        "fewer than one stereo pair sees the operator ({} cameras fresh)",
-                        self.cameras_fresh()
-                    )
+                let reason = if frames_fresh {
+                    HoldReason::NoStereoPair {
+                        cameras_fresh: self.cameras_fresh(),
+                    }
                 } else {
                     // Every camera silent, or the cameras' clocks far from the cell's: either way no
                     // frame is recent enough to move the robot by.
-                    format!(
-                        "cameras lost: no camera frame newer than {} ms",
-                        self.config.max_frame_age_nanos / 1_000_000
-                    )
+                    HoldReason::CamerasLost {
+                        max_frame_age_ms: self.config.max_frame_age_nanos / 1_000_000,
+                    }
                 };
-                self.hold(now_nanos, robot, &why, events);
+                self.hold(now_nanos, robot, reason, events);
             }
             return;
         }
@@ -871,17 +873,18 @@ impl SessionMachine {
         &mut self,
         now_nanos: i64,
         robot: &mut dyn RobotSink,
-        why: &str,
+        reason: HoldReason,
         events: &mut Vec<SessionEvent>,
     ) {
+        let why = reason.to_string();
         let command = RobotCommand::Hold {
-            reason: why.to_owned(),
+            reason: why.clone(),
         };
         self.send(now_nanos, robot, command, events);
         self.summary.holds += 1;
-        self.hold_reason = Some(why.to_owned());
+        self.hold_reason = Some((reason, why.clone()));
         tracing::warn!(reason = %why, "robot held");
-        self.transition(now_nanos, SessionState::Held, why, events);
+        self.transition(now_nanos, SessionState::Held, &why, events);
     }
 
     fn try_resume(
@@ -901,18 +904,14 @@ impl SessionMachine {
         match self.provider.verify(class) {
             Ok(a) if a.lock().lock_sha256 == locked_sha => {}
             Ok(a) => {
-                let why = format!(
-                    "the lock changed during the session ({} → {}): staying held",
-                    locked_sha,
-                    a.lock().lock_sha256
-                );
-                self.set_hold_reason(&why);
+                self.set_hold(HoldReason::LockChanged {
+                    locked: locked_sha,
+                    now: a.lock().lock_sha256.clone(),
+                });
                 return;
             }
-            Err(e) => {
-                self.set_hold_reason(&format!(
-                    "the locked trajectory no longer verifies: {e}; staying held"
-                ));
+            Err(error) => {
+                self.set_hold(HoldReason::LockNoLongerVerifies { error });
                 return;
             }
         }
@@ -933,10 +932,7 @@ impl SessionMachine {
             )
         } else {
             // Stopped between knots: resuming from there would be a motion nobody validated.
-            self.set_hold_reason(
-                "tracking back, but the robot stopped between the locked trajectory's ends: bring \
-                 it home with the pendant; the session resumes once /joint_states match home",
-            );
+            self.set_hold(HoldReason::StoppedBetweenEnds);
             return;
         };
         self.motion = motion;
@@ -958,11 +954,18 @@ impl SessionMachine {
         ))
     }
 
-    fn set_hold_reason(&mut self, why: &str) {
-        if self.hold_reason.as_deref() != Some(why) {
+    /// The robot stays held for `reason` (said once, when the reason's words change).
+    fn set_hold(&mut self, reason: HoldReason) {
+        let why = reason.to_string();
+        if self.hold_reason() != Some(why.as_str()) {
             tracing::warn!(reason = %why, "robot stays held");
-            self.hold_reason = Some(why.to_owned());
+            self.hold_reason = Some((reason, why));
         }
+    }
+
+    /// Why the robot is held, typed; `None` while it is not.
+    pub fn held_for(&self) -> Option<&HoldReason> {
+        self.hold_reason.as_ref().map(|(reason, _)| reason)
     }
 
     fn end_session(&mut self, now_nanos: i64, at_home: bool, events: &mut Vec<SessionEvent>) {
@@ -997,7 +1000,7 @@ impl SessionMachine {
             reason: why.clone(),
         };
         self.send(now_nanos, robot, command, events);
-        self.hold_reason = Some(why.clone());
+        self.hold_reason = Some((HoldReason::Ended { why: why.clone() }, why.clone()));
         let end = SessionEnd::Aborted { reason };
         self.summary.end_reason = end.to_string();
         self.summary.end = Some(end);

@@ -28,7 +28,7 @@ pub mod end;
 mod machine;
 
 pub use cell_loop::{CellLoop, CellOutputs, EndCause, Ending, OutputError};
-pub use end::{AbortReason, SessionEnd};
+pub use end::{AbortReason, HoldReason, SessionEnd};
 pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 
 use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};
