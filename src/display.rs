@@ -59,8 +59,11 @@ pub struct Snapshot {
     pub sent_unix_ms: f64,
     /// The session state's snake-case name.
     pub state: String,
-    /// Why the robot is held, when it is.
+    /// Why the robot is held, when it is, in the operator's terms with what to do
+    /// (`HoldReason::for_operator`).
     pub held_reason: Option<String>,
+    /// The same hold in the integrator's words (the hold command's reason).
+    pub held_detail: Option<String>,
     /// The decided height class (`c1`…), once decided.
     pub class: Option<String>,
     /// The probability that `class` is the operator's true class, once decided.
@@ -124,9 +127,11 @@ impl Display {
         let (snap, active) = &mut *guard;
         fold_events(snap, active, events);
         machine.state().name().clone_into(&mut snap.state);
-        snap.held_reason = (machine.state() == SessionState::Held)
-            .then(|| machine.hold_reason().map(str::to_owned))
+        let held = (machine.state() == SessionState::Held)
+            .then(|| machine.held_for())
             .flatten();
+        snap.held_reason = held.map(|h| h.for_operator().to_owned());
+        snap.held_detail = held.map(ToString::to_string);
         snap.class.clone_from(&machine.summary().class);
         snap.class_probability = machine.decision().map(|d| d.probability);
         snap.across_boundary = machine

@@ -33,6 +33,8 @@
     const state = $("state");
     let text = STATES[s.state] || s.state;
     if (s.state === "held" && s.held_reason) text += " — " + s.held_reason;
+    // the integrator's words for the same hold, on hover
+    state.title = s.state === "held" && s.held_detail ? s.held_detail : "";
     if (s.state === "working" && s.class) text += " — class " + s.class;
     state.textContent = text;
     state.className = s.state;

@@ -164,6 +164,28 @@ pub enum HoldReason {
     },
 }
 
+impl HoldReason {
+    /// What the operator is told on the display: what happened in their terms and what to do.
+    /// The [`fmt::Display`] words are the integrator's (the hold command, the console, the
+    /// recording).
+    pub fn for_operator(&self) -> &'static str {
+        match self {
+            Self::NoStereoPair { .. } => "the cameras lost you: step back into view at the station",
+            Self::CamerasLost { .. } => {
+                "camera system fault: no camera is sending; wait, and call your supervisor if it stays"
+            }
+            Self::RobotNotReady { .. } => "the robot is not ready: call your supervisor",
+            Self::LockChanged { .. } | Self::LockNoLongerVerifies { .. } => {
+                "the robot's approved path was changed: call your supervisor"
+            }
+            Self::StoppedBetweenEnds => {
+                "the robot stopped partway: a trained person must bring it home with the pendant"
+            }
+            Self::Ended { .. } => "the session stopped: call your supervisor",
+        }
+    }
+}
+
 impl fmt::Display for HoldReason {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -189,5 +211,57 @@ impl fmt::Display for HoldReason {
                  it home with the pendant; the session resumes once /joint_states match home",
             ),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The operator reads what happened in their terms and what to do: every hold has its own
+    /// words, none of them the integrator's vocabulary, and a lost operator is told apart from
+    /// cameras that stopped sending.
+    #[test]
+    fn the_operator_is_told_each_hold_in_their_terms() {
+        let holds = [
+            HoldReason::NoStereoPair { cameras_fresh: 4 },
+            HoldReason::CamerasLost {
+                max_frame_age_ms: 500,
+            },
+            HoldReason::RobotNotReady {
+                why: "joint states stale (none for more than 0.1 s)".to_owned(),
+            },
+            HoldReason::LockChanged {
+                locked: "a".repeat(64),
+                now: "b".repeat(64),
+            },
+            HoldReason::StoppedBetweenEnds,
+            HoldReason::Ended {
+                why: "SIGTERM".to_owned(),
+            },
+        ];
+        let words: Vec<&str> = holds.iter().map(HoldReason::for_operator).collect();
+        for (hold, said) in holds.iter().zip(&words) {
+            for jargon in [
+                "stereo",
+                " ms",
+                "joint states",
+                "lock",
+                "trajectory",
+                "SIGTERM",
+            ] {
+                assert!(
+                    !said.contains(jargon),
+                    "{hold:?} tells the operator {said:?}"
+                );
+            }
+            assert!(
+                said.contains(": "),
+                "{said:?}: what happened, then what to do"
+            );
+            assert_ne!(*said, hold.to_string());
+        }
+        let distinct: std::collections::BTreeSet<&str> = words.iter().copied().collect();
+        assert_eq!(distinct.len(), words.len());
     }
 }
