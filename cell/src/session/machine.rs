@@ -300,9 +300,13 @@ impl SessionMachine {
             reason: format!("session interrupted: {why}"),
         };
         self.send(now_nanos, robot, command, &mut events);
-        self.set_hold(HoldReason::Ended {
-            why: why.to_owned(),
-        });
+        // Said by the caller (the signal, the failure): not logged again here.
+        self.hold_reason = Some((
+            HoldReason::Ended {
+                why: why.to_owned(),
+            },
+            why.to_owned(),
+        ));
         let end = SessionEnd::Interrupted {
             why: why.to_owned(),
         };
