@@ -172,7 +172,7 @@ impl HoldReason {
         match self {
             Self::NoStereoPair { .. } => "the cameras lost you: step back into view at the station",
             Self::CamerasLost { .. } => {
-                "camera system fault: no camera is sending; wait, and call your supervisor if it stays"
+                "camera system fault: no recent camera pictures; wait, and call your supervisor if it stays"
             }
             Self::RobotNotReady { .. } => "the robot is not ready: call your supervisor",
             Self::LockChanged { .. } | Self::LockNoLongerVerifies { .. } => {
