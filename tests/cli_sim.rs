@@ -104,13 +104,17 @@ fn bad_camera_arguments_are_usage_errors() {
             .unwrap();
         assert!(!status.success(), "{cameras}");
     }
-    // the fixed-lag smoother is an option of rula-agreement only, and takes a half window in
+    // the fixed-lag smoother is an option of rula-agreement and warnings only, and takes a half window in
     // (0, 60] seconds or 0 (off)
     for args in [
         &["height", "--fixed-lag-s", "0.5"][..],
         &["rula-agreement", "--fixed-lag-s", "-1"],
         &["rula-agreement", "--fixed-lag-s", "nan"],
         &["rula-agreement", "--fixed-lag-s", "61"],
+        // the views' transport delay is an option of warnings only, a time of 0 to 10 s
+        &["height", "--transport-delay-ms", "100"],
+        &["warnings", "--transport-delay-ms", "nan"],
+        &["warnings", "--transport-delay-ms", "10001"],
     ] {
         let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
             .current_dir(&root)

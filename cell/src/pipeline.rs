@@ -34,9 +34,11 @@
 //! each tracked frame's mean over the frames up to the half window before and after it
 //! ([`ergocell_perception::fixed_lag`]): every score and warning comes out that much later, each [`TrackedFrame`] with its own (earlier) stamp. The operator's presence, hands
 //! and height ([`FrameOutput::operator`], [`FrameOutput::height`]) come at once, so nothing the robot
-//! waits for is delayed. The last half window of frames
-//! before the operator is lost from view comes out once time has moved on; a session that ends
-//! sooner leaves them unscored.
+//! waits for is delayed. Frames are released on the clock ([`Pipeline::release_due`], which the
+//! session calls every step): a frame is scored once the clock is past its stamp by the half
+//! window, on the frames that have arrived, so what the cameras' transport delays is left out of
+//! its window rather than waited for. A session that ends sooner leaves the last half window of
+//! frames unscored.
 
 use ergocell_ergonomics::{
     AssessmentConfig, ErgonomicsError, FrameAssessment, HeightConfig, HeightDecision,
@@ -479,6 +481,19 @@ impl Pipeline {
     ) -> Vec<Result<FrameOutput, PerceptionError>> {
         let frames = self.reconstruction.push_views(now_nanos, views);
         frames.iter().map(|f| self.process_frame(f)).collect()
+    }
+
+    /// The clock has reached `now_nanos`: with a fixed lag, every frame whose window has closed is
+    /// scored now, on the frames that have arrived (what is still in transit is not waited for:
+    /// the scores and the warnings come at the designed lag). Without one, nothing is waiting.
+    pub fn release_due(&mut self, now_nanos: i64) -> Vec<TrackedFrame> {
+        let Some(lag) = self.lag.as_mut() else {
+            return Vec::new();
+        };
+        lag.advance(now_nanos)
+            .into_iter()
+            .map(|smoothed| self.assessment.score(smoothed))
+            .collect()
     }
 
     /// One time-aligned frame through both stages.

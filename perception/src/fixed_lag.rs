@@ -3,10 +3,16 @@
 //!
 //! The causal One-Euro filter ([`crate::temporal`]) must follow a reach or a glance as it happens,
 //! so it lags and keeps much of a detector's slow error; a window centred on the frame has no lag
-//! and averages both sides. The price is latency: a frame's smoothed skeleton exists only once a
-//! frame more than the half window later has arrived. Offline (the ergonomist's review of a
-//! landmark file, [`centered_mean`]) that costs nothing; live ([`FixedLagSmoother`]) it delays
-//! every score by the half window. On the digital twin under the detector fitted to real MediaPipe
+//! and averages both sides. The price is latency: a frame's smoothed skeleton exists only once its
+//! window has closed. Offline (the ergonomist's review of a landmark file, [`centered_mean`]) that
+//! costs nothing; live ([`FixedLagSmoother`]) it delays every score by the half window.
+//!
+//! Live, a window closes on the clock ([`FixedLagSmoother::advance`]), not only when a later frame
+//! arrives: a frame is released once the clock is past its stamp by the half window, with the
+//! frames that have arrived by then. Camera messages reach the cell some time after their capture
+//! (the edge's inference and the network), so the newest of that time's frames are left out of the
+//! window rather than waited for: the score, and the operator's warning, come at the designed lag
+//! whatever the transport takes. A frame that arrives after a later one was released is not taken. On the digital twin under the detector fitted to real MediaPipe
 //! data (`docs/sim`), ±0.5 s at 10 Hz took per-frame RULA agreement from κ 0.77 (the causal filter)
 //! to 0.88.
 //!
@@ -65,6 +71,8 @@ pub struct FixedLagSmoother {
     frames: VecDeque<Skeleton3>,
     /// How many frames at the front of `frames` have been released.
     released: usize,
+    /// The stamp of the newest frame released: no frame older than it is taken.
+    last_released_nanos: Option<i64>,
 }
 
 impl FixedLagSmoother {
@@ -74,29 +82,34 @@ impl FixedLagSmoother {
             half_window_nanos: half_window_nanos(half_window_s)?,
             frames: VecDeque::new(),
             released: 0,
+            last_released_nanos: None,
         })
     }
 
     /// A new frame; returns the frames (smoothed, in time order) whose window it closed: those more
-    /// than the half window older than it. A frame older than the last one is not taken (time
-    /// went backwards; the next frames close the window as usual).
+    /// than the half window older than it. A frame older than the last one, or than the last one
+    /// released, is not taken (time went backwards, or it came after its time was scored; the next
+    /// frames close the window as usual).
     pub fn push(&mut self, frame: Skeleton3) -> Vec<Skeleton3> {
         let stamp = frame.stamp_nanos;
-        if self.frames.back().is_some_and(|f| f.stamp_nanos > stamp) {
+        if self.frames.back().is_some_and(|f| f.stamp_nanos > stamp)
+            || self.last_released_nanos.is_some_and(|t| t > stamp)
+        {
             return Vec::new();
         }
         self.frames.push_back(frame);
         self.advance(stamp)
     }
 
-    /// Time has reached `now_nanos` without a frame (the operator not tracked): releases the frames
-    /// whose window has closed.
+    /// Time has reached `now_nanos` (the clock, or a frame without the operator): releases the
+    /// frames whose window has closed, on the frames that have arrived.
     pub fn advance(&mut self, now_nanos: i64) -> Vec<Skeleton3> {
         let mut out = Vec::new();
         while let Some(centre) = self.frames.get(self.released) {
             if now_nanos.saturating_sub(centre.stamp_nanos) <= self.half_window_nanos {
                 break;
             }
+            self.last_released_nanos = Some(centre.stamp_nanos);
             out.push(self.smoothed(self.released));
             self.released += 1;
         }
@@ -109,9 +122,22 @@ impl FixedLagSmoother {
         let out = (self.released..self.frames.len())
             .map(|n| self.smoothed(n))
             .collect();
+        self.last_released_nanos = self
+            .frames
+            .back()
+            .map(|f| f.stamp_nanos)
+            .or(self.last_released_nanos);
         self.frames.clear();
         self.released = 0;
         out
+    }
+
+    /// When the oldest unreleased frame's window closes, if there is one: [`Self::advance`] to any
+    /// time past this releases it.
+    pub fn next_release_nanos(&self) -> Option<i64> {
+        self.frames
+            .get(self.released)
+            .map(|f| f.stamp_nanos.saturating_add(self.half_window_nanos))
     }
 
     /// Drops the frames no unreleased frame's window reaches.
@@ -324,6 +350,57 @@ mod tests {
             centered_mean(&backwards, 0.5),
             Err(FixedLagError::OutOfOrder { index: 1 })
         );
+    }
+
+    #[test]
+    fn on_the_clock_a_frame_is_released_at_its_lag_on_the_frames_that_arrived() {
+        // 10 Hz, x = frame index; the frames arrive 120 ms after their stamps
+        let frames: Vec<_> = (0..30)
+            .map(|i| frame(i * 100 * MS, i as f64, true))
+            .collect();
+        let delay = 120 * MS;
+        let mut live = FixedLagSmoother::new(0.5).unwrap();
+        let mut out = Vec::new();
+        let mut next = 0;
+        // the clock ticks every 10 ms; each frame is pushed once it has arrived
+        for now in (0..3_000 * MS).step_by(10 * MS as usize) {
+            while next < frames.len() && frames[next].stamp_nanos + delay <= now {
+                out.extend(
+                    live.push(frames[next].clone())
+                        .into_iter()
+                        .map(|f| (now, f)),
+                );
+                next += 1;
+            }
+            let due = live.next_release_nanos();
+            let released = live.advance(now);
+            assert_eq!(
+                !released.is_empty(),
+                due.is_some_and(|d| now > d),
+                "at {now}: due {due:?}"
+            );
+            out.extend(released.into_iter().map(|f| (now, f)));
+        }
+        assert_eq!(out.len(), 25, "frames 0..=24 are due by 2.99 s");
+        for (now, f) in &out {
+            // released on the clock, within a tick of its lag, not when frame +6 arrived (+720 ms)
+            let after = now - f.stamp_nanos;
+            assert!(after > 500 * MS && after <= 510 * MS, "{after}");
+        }
+        // frame 10 is released at 1.5x s: frames 5..=13 had arrived (14 arrives at 1.52 s), so
+        // its mean is (5 + 13) / 2, not 10
+        let (_, ten) = &out[10];
+        assert_eq!(ten.stamp_nanos, 1_000 * MS);
+        assert!((x(ten) - 9.0).abs() < 1e-12, "{}", x(ten));
+        // a frame older than one released is not taken, even with nothing unreleased before it
+        let mut live = FixedLagSmoother::new(0.5).unwrap();
+        assert!(live.push(frames[10].clone()).is_empty());
+        assert_eq!(live.advance(2_000 * MS).len(), 1);
+        assert_eq!(live.next_release_nanos(), None);
+        assert!(live.push(frames[8].clone()).is_empty());
+        assert!(live.flush().is_empty());
+        assert!(live.push(frames[12].clone()).is_empty());
+        assert_eq!(live.next_release_nanos(), Some(1_700 * MS));
     }
 
     #[test]

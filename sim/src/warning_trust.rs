@@ -433,13 +433,16 @@ fn quantile(sorted: &[f64], q: f64) -> f64 {
 /// The warnings of operators of `statures_m`, each doing a session of `mix` (its handovers at
 /// their height class's handover point, class from the true stature with the default thresholds,
 /// as the cell adapts to them) on `setup`'s rig and detector, through the controller's pipeline with
-/// `config` (its fixed lag, assessor and warning tracker).
+/// `config` (its fixed lag, assessor and warning tracker). Each frame's views reach the pipeline
+/// `transport_delay_nanos` after their capture (0: at once), as the edge's inference and the network
+/// delay them on a real cell.
 pub fn warning_trust(
     setup: &Setup,
     handovers: &Handovers,
     statures_m: &[f64],
     mix: &TaskMix,
     config: &PipelineConfig,
+    transport_delay_nanos: i64,
     progress: Progress<'_>,
 ) -> Result<WarningTrust, SimError> {
     let wconfig = config.warnings;
@@ -484,23 +487,28 @@ pub fn warning_trust(
         let mut pipeline = Intervals::default();
         let mut scores: Vec<(usize, Option<Scored>)> = Vec::new();
         let mut sample_index = 0usize;
-        // As run_pipeline_with, knowing when each frame is released (what the operator sees when).
+        // As run_pipeline_with, knowing when each frame is released (what the operator sees when):
+        // each frame's views reach the cell `transport_delay_nanos` after their capture, and the
+        // frames whose window has closed are released on the clock.
         let mut p = Pipeline::new(setup.rig.clone(), config.clone())?;
         for tick in &ticks {
-            let now = tick.frame.stamp_nanos;
+            let now = tick.frame.stamp_nanos + transport_delay_nanos;
+            let mut released = Vec::new();
             for output in p.push_views(now, tick.frame.views.clone()) {
-                for tracked in &output?.tracked {
-                    pipeline.feed(&tracked.warnings, Some(now));
-                    let k = nearest_tick(&ticks, tracked.skeleton.stamp_nanos);
-                    scores.push((k, pipeline_headline(tracked)?));
-                    if let (Ok(a), true) = (&tracked.assessment, at_station(ticks[k].truth.phase)) {
-                        for (sample, stated) in frame_samples(a, &truth[k]) {
-                            reliability.add(sample.region, stated, sample.right());
-                            if sample_index.is_multiple_of(FIT_STRIDE) {
-                                band_samples.push(sample);
-                            }
-                            sample_index += 1;
+                released.extend(output?.tracked);
+            }
+            released.extend(p.release_due(now));
+            for tracked in &released {
+                pipeline.feed(&tracked.warnings, Some(now));
+                let k = nearest_tick(&ticks, tracked.skeleton.stamp_nanos);
+                scores.push((k, pipeline_headline(tracked)?));
+                if let (Ok(a), true) = (&tracked.assessment, at_station(ticks[k].truth.phase)) {
+                    for (sample, stated) in frame_samples(a, &truth[k]) {
+                        reliability.add(sample.region, stated, sample.right());
+                        if sample_index.is_multiple_of(FIT_STRIDE) {
+                            band_samples.push(sample);
                         }
+                        sample_index += 1;
                     }
                 }
             }

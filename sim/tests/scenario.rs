@@ -425,6 +425,55 @@ fn with_a_fixed_lag_each_frame_comes_out_half_a_window_late_and_the_height_is_th
     assert_eq!(decisions[0], decisions[1]);
 }
 
+/// Views that reach the cell 150 ms after their capture (the edge's inference and the network) do
+/// not delay the scores: on a clock ticking every 10 ms, each frame is scored within a tick of its
+/// lag, in time order, and as many frames are scored as on time.
+#[test]
+fn with_a_fixed_lag_on_the_clock_late_views_do_not_delay_the_scores() {
+    use ergocell_cell::{Pipeline, PipelineConfig};
+    const MS: i64 = 1_000_000;
+    let ticks = run(5, &DetectorNoise::default(), 1.74, 1);
+    let mut config = PipelineConfig::new(ergocell_ergonomics::UpVector::z());
+    config.fixed_lag_s = Some(0.5);
+    let mut counts = Vec::new();
+    for delay in [0, 150 * MS] {
+        let mut p = Pipeline::new(reference_rig(), config.clone()).unwrap();
+        let (mut scored, mut last) = (Vec::new(), i64::MIN);
+        let (start, end) = (
+            ticks[0].frame.stamp_nanos,
+            ticks.last().unwrap().frame.stamp_nanos,
+        );
+        let mut next = 0;
+        for now in (start..end).step_by(10 * MS as usize) {
+            let mut tracked = Vec::new();
+            // a frame's views, once the last of them has been captured and has come
+            let arrives =
+                |t: &Tick| t.frame.views.iter().map(|v| v.stamp_nanos).max().unwrap() + delay;
+            while next < ticks.len() && arrives(&ticks[next]) <= now {
+                for output in p.push_views(now, ticks[next].frame.views.clone()) {
+                    tracked.extend(output.unwrap().tracked);
+                }
+                next += 1;
+            }
+            tracked.extend(p.release_due(now));
+            for t in tracked {
+                let after = now - t.skeleton.stamp_nanos;
+                assert!(
+                    after > 500 * MS && after <= 510 * MS,
+                    "scored {after} ns after capture"
+                );
+                assert!(t.skeleton.stamp_nanos > last, "out of order");
+                last = t.skeleton.stamp_nanos;
+                assert!(t.assessment.is_ok());
+                scored.push(t.skeleton.stamp_nanos);
+            }
+        }
+        counts.push(scored.len());
+    }
+    assert!(counts[0] > 100, "{counts:?}");
+    assert_eq!(counts[0], counts[1], "{counts:?}");
+}
+
 /// A script placed at a station carries the operator's place, heading, entry and floor pick with
 /// the station; at the world's own station (the identity) nothing moves, bit for bit.
 #[test]

@@ -154,7 +154,18 @@ fn the_warnings_of_a_task_session_are_measured_and_reproducible() {
         c3_served_m: [1.8, 2.1],
     };
     let config = PipelineConfig::new(UpVector::new(Vector3::z()).unwrap());
-    let run = || warning_trust(&setup, &handovers, &[1.70], &mix, &config, &mut |_, _| {}).unwrap();
+    let run = || {
+        warning_trust(
+            &setup,
+            &handovers,
+            &[1.70],
+            &mix,
+            &config,
+            0,
+            &mut |_, _| {},
+        )
+        .unwrap()
+    };
     let w = run();
     // (NaN ≠ NaN: compared as the JSON they are written as.)
     let json = |w: &ergocell_sim::warning_trust::WarningTrust| serde_json::to_string(w).unwrap();

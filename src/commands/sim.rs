@@ -170,6 +170,11 @@ pub struct Common {
     /// confident mistakes for more operators decided across a boundary.
     #[arg(long, global = true)]
     pub decision_sigmas: Option<f64>,
+    /// warnings: how long after its capture each frame's views reach the cell, milliseconds (the
+    /// edge's inference and the network); the fixed lag's frames are released on the clock, so the
+    /// newest of that time's frames are left out of each window.
+    #[arg(long, global = true, default_value_t = 0.0)]
+    pub transport_delay_ms: f64,
 }
 
 /// The seeds of `--seeds`.
@@ -597,6 +602,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         return Err(
             UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
         );
+    }
+    if c.transport_delay_ms != 0.0 && !matches!(args.experiment, Experiment::Warnings) {
+        return Err(UsageError("--transport-delay-ms applies to warnings only".to_owned()).into());
     }
     if c.fit_confidence && !matches!(args.experiment, Experiment::Warnings) {
         return Err(UsageError("--fit-confidence applies to warnings only".to_owned()).into());

@@ -32,6 +32,17 @@ pub fn load_mix(spec: &str) -> anyhow::Result<TaskMix> {
     TaskMix::from_toml_str(&text).map_err(|e| UsageError(format!("{}: {e}", path.display())).into())
 }
 
+/// `--transport-delay-ms` checked: a time of 0 to 10 s.
+fn transport_delay_nanos(ms: f64) -> Result<i64, UsageError> {
+    if ms.is_finite() && (0.0..=10_000.0).contains(&ms) {
+        Ok((ms * 1e6).round() as i64)
+    } else {
+        Err(UsageError(format!(
+            "--transport-delay-ms {ms}: must be a time of 0 to 10000 ms"
+        )))
+    }
+}
+
 fn pct(x: f64) -> String {
     if x.is_nan() {
         "    —".to_owned()
@@ -71,6 +82,7 @@ pub fn run(c: &Common) -> anyhow::Result<()> {
         None => (vec![c.seed], "warnings"),
     };
     let operators = statures(c.operators.unwrap_or(20));
+    let transport_delay_nanos = transport_delay_nanos(c.transport_delay_ms)?;
     std::fs::create_dir_all(&c.out_dir)
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
     let pb = ProgressBar::new(seeds.len() as u64);
@@ -92,6 +104,7 @@ pub fn run(c: &Common) -> anyhow::Result<()> {
             &operators,
             &mix,
             &config,
+            transport_delay_nanos,
             &mut |_, _| {},
         )?);
         pb.inc(1);
@@ -122,6 +135,7 @@ pub fn run(c: &Common) -> anyhow::Result<()> {
         "mix": mix,
         "handovers_m": handovers,
         "operators_m": operators,
+        "transport_delay_ms": c.transport_delay_ms,
         "confidence_model": config.assessment.confidence,
     });
     write_result(

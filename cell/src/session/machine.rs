@@ -341,6 +341,11 @@ impl SessionMachine {
                 Err(e) => tracing::warn!(error = %e, "frame not fused"),
             }
         }
+        // Frames whose fixed-lag window closed on the clock: scored now, not when a later frame
+        // completes (the cameras' messages come with the edge's and the network's delay).
+        for scored in self.pipeline.release_due(now_nanos) {
+            self.on_scored_frame(scored, &mut events);
+        }
         self.pairs_tracking = self
             .pairs
             .iter()
