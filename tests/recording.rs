@@ -185,8 +185,12 @@ fn replay_of_a_damaged_file_says_where_it_stops() {
         (whole.frames.len(), whole.damaged.clone(), whole.undecodable),
         (30, None, 0)
     );
-    // Cut in the middle of the file (a crash, a partial copy): fewer messages, and why.
-    let cut = ergocell::recording::read_camera_landmarks(&bytes[..bytes.len() / 2]).unwrap();
+    // Cut in the middle of the (compressed) chunk that holds them (a crash, a partial copy): fewer
+    // messages, and why.
+    let summary = mcap::Summary::read(&bytes).unwrap().unwrap();
+    let chunk = &summary.chunk_indexes[0];
+    let middle = (chunk.chunk_start_offset + chunk.chunk_length / 2) as usize;
+    let cut = ergocell::recording::read_camera_landmarks(&bytes[..middle]).unwrap();
     assert!(cut.frames.len() < 30, "{}", cut.frames.len());
     assert!(cut.damaged.is_some(), "the cut is reported");
 }

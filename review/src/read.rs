@@ -359,11 +359,11 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
     let mut past_data_end = false;
     let mut failure: Option<String> = None;
     // A chunk compressed with what this build does not decompress: said so, with the way out.
-    let mut compressed = false;
+    let mut unsupported = false;
     while let Some(event) = linear.next_event() {
         match event {
             Err(e) => {
-                compressed = matches!(e, mcap::McapError::UnsupportedCompression(_));
+                unsupported = matches!(e, mcap::McapError::UnsupportedCompression(_));
                 failure = Some(e.to_string());
                 break;
             }
@@ -436,8 +436,8 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
         );
         let why = if past_data_end {
             format!("its summary is unreadable ({why}); every message before it was read")
-        } else if compressed {
-            format!("{why}; ergocell writes and reads uncompressed recordings (`mcap convert --compression none` decompresses one)")
+        } else if unsupported {
+            format!("{why}; {READ_COMPRESSIONS}")
         } else {
             format!("the rest is unreadable ({why}): the recording was cut short or damaged")
         };
@@ -521,14 +521,28 @@ impl<'v, V: Visit> Reader<'v, V> {
                 i.message_end_time.saturating_sub(first_time) as f64 * 1e-9
             )
         };
+        // Chunks in a compression this build does not decompress: one problem per compression
+        // (a file has thousands of chunks), with how many and the span they cover.
+        let mut unsupported: BTreeMap<String, (usize, String)> = BTreeMap::new();
         for index in indexes {
-            if let Err(why) = check_chunk(bytes, index) {
-                self.rec.complete = false;
-                self.rec.problems.push(format!(
-                    "the chunk of {} is unreadable and was skipped: {why}",
-                    span(index)
-                ));
-                continue;
+            match check_chunk(bytes, index) {
+                Ok(()) => {}
+                Err(ChunkProblem::Unsupported(compression)) => {
+                    self.rec.complete = false;
+                    unsupported
+                        .entry(compression)
+                        .or_insert_with(|| (0, span(index)))
+                        .0 += 1;
+                    continue;
+                }
+                Err(ChunkProblem::Damaged(why)) => {
+                    self.rec.complete = false;
+                    self.rec.problems.push(format!(
+                        "the chunk of {} is unreadable and was skipped: {why}",
+                        span(index)
+                    ));
+                    continue;
+                }
             }
             let messages = match summary.stream_chunk(bytes, index) {
                 Ok(m) => m,
@@ -554,6 +568,12 @@ impl<'v, V: Visit> Reader<'v, V> {
                     }
                 }
             }
+        }
+        for (compression, (chunks, first)) in unsupported {
+            self.rec.problems.push(format!(
+                "{chunks} chunk(s), the first of {first}, are {compression}-compressed and were \
+                 skipped; {READ_COMPRESSIONS}"
+            ));
         }
         if let Some(stats) = &summary.stats {
             if stats.message_count > self.rec.messages {
@@ -588,9 +608,9 @@ impl<'v, V: Visit> Reader<'v, V> {
                         |t| format!("after {:.1} s of recording", self.secs_into(t)),
                     );
                     let why = match &e {
-                        mcap::McapError::UnsupportedCompression(c) => format!(
-                            "its chunks are {c}-compressed; ergocell writes and reads uncompressed recordings (`mcap convert --compression none` decompresses one)"
-                        ),
+                        mcap::McapError::UnsupportedCompression(c) => {
+                            format!("its chunks are {c}-compressed; {READ_COMPRESSIONS}")
+                        }
                         e => format!("the rest is unreadable ({e})"),
                     };
                     self.rec.problems.push(format!(
@@ -787,30 +807,82 @@ fn channel_list(channels: &BTreeMap<String, ChannelInfo>) -> String {
         .join(", ")
 }
 
-/// A chunk's record is whole, uncompressed and matches its CRC.
-fn check_chunk(bytes: &[u8], index: &mcap::records::ChunkIndex) -> Result<(), String> {
-    let start = usize::try_from(index.chunk_start_offset).map_err(|e| e.to_string())?;
+/// What a recording's chunks may be compressed with, for the message that refuses another.
+const READ_COMPRESSIONS: &str =
+    "ergocell reads chunks compressed with zstd or lz4, or uncompressed \
+     (`mcap convert --compression zstd` re-compresses one)";
+
+/// Why a chunk the summary indexes is not read.
+#[derive(Debug, Clone, PartialEq)]
+enum ChunkProblem {
+    /// Compressed with this (chunk `compression` field), which this build does not decompress.
+    Unsupported(String),
+    /// Not where the index says, not a chunk, or its bytes damaged: why.
+    Damaged(String),
+}
+
+/// A chunk's record is whole and its uncompressed bytes match its CRC (a compressed chunk is
+/// decompressed to check it).
+fn check_chunk(bytes: &[u8], index: &mcap::records::ChunkIndex) -> Result<(), ChunkProblem> {
+    let damaged = |e: &dyn std::fmt::Display| ChunkProblem::Damaged(e.to_string());
+    let start = usize::try_from(index.chunk_start_offset).map_err(|e| damaged(&e))?;
     let end = usize::try_from(index.chunk_start_offset.saturating_add(index.chunk_length))
-        .map_err(|e| e.to_string())?;
-    let body = bytes
-        .get(start.saturating_add(9)..end)
-        .ok_or_else(|| "beyond the end of the file".to_owned())?;
-    match mcap::parse_record(mcap::records::op::CHUNK, body) {
+        .map_err(|e| damaged(&e))?;
+    let record = bytes
+        .get(start..end)
+        .filter(|r| r.len() >= 9)
+        .ok_or_else(|| damaged(&"beyond the end of the file"))?;
+    match mcap::parse_record(mcap::records::op::CHUNK, &record[9..]) {
         Ok(mcap::records::Record::Chunk { header, data }) => {
             if !header.compression.is_empty() {
-                return Err(format!(
-                    "{}-compressed; ergocell writes and reads uncompressed recordings (`mcap convert --compression none` decompresses one)",
-                    header.compression
-                ));
+                return check_compressed_chunk(record);
             }
             if header.uncompressed_crc != 0 && crc32fast::hash(&data) != header.uncompressed_crc {
-                return Err("its CRC does not match (the bytes were damaged)".to_owned());
+                return Err(damaged(&"its CRC does not match (the bytes were damaged)"));
             }
             Ok(())
         }
-        Ok(_) => Err("the index does not point at a chunk".to_owned()),
-        Err(e) => Err(e.to_string()),
+        Ok(_) => Err(damaged(&"the index does not point at a chunk")),
+        Err(e) => Err(damaged(&e)),
     }
+}
+
+/// A compressed chunk's `record` (opcode, length and body) read through mcap's streaming reader,
+/// which decompresses it and checks the CRC of what comes out.
+fn check_compressed_chunk(record: &[u8]) -> Result<(), ChunkProblem> {
+    use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
+    let options = LinearReaderOptions::default()
+        .with_skip_start_magic(true)
+        .with_skip_end_magic(true)
+        .with_validate_chunk_crcs(true)
+        .with_record_length_limit(MAX_RECORD_BYTES);
+    let mut linear = LinearReader::new_with_options(options);
+    let mut rest = record;
+    while let Some(event) = linear.next_event() {
+        match event {
+            Err(mcap::McapError::UnsupportedCompression(c)) => {
+                return Err(ChunkProblem::Unsupported(c));
+            }
+            Err(mcap::McapError::BadChunkCrc { .. }) => {
+                return Err(ChunkProblem::Damaged(
+                    "its CRC does not match (the bytes were damaged)".to_owned(),
+                ));
+            }
+            Err(e) => {
+                return Err(ChunkProblem::Damaged(format!(
+                    "it does not decompress ({e})"
+                )))
+            }
+            Ok(LinearReadEvent::ReadRequest(need)) => {
+                let n = need.min(rest.len());
+                linear.insert(n).copy_from_slice(&rest[..n]);
+                linear.notify_read(n);
+                rest = &rest[n..];
+            }
+            Ok(LinearReadEvent::Record { .. }) => {}
+        }
+    }
+    Ok(())
 }
 
 /// Decodes one message of type `M` if the channel's schema names `M`.
@@ -1278,9 +1350,14 @@ mod tests {
 
     /// MCAP bytes of `n` session states, one chunk each, naming operator `op-7`.
     fn states_recording(n: u64) -> Vec<u8> {
+        states_recording_compressed(n, None)
+    }
+
+    /// As [`states_recording`], each chunk compressed with `compression`.
+    fn states_recording_compressed(n: u64, compression: Option<mcap::Compression>) -> Vec<u8> {
         let mut w = mcap::WriteOptions::new()
             .profile("ros2")
-            .compression(None)
+            .compression(compression)
             .chunk_size(Some(64))
             .create(std::io::Cursor::new(Vec::new()))
             .unwrap();
@@ -1374,5 +1451,89 @@ mod tests {
             stream_recording(&b"not a recording"[..], &mut Recording::default()),
             Err(ReviewError::NotMcap { .. })
         ));
+    }
+
+    /// Recordings as rosbag2, Foxglove and Python's mcap write them (zstd or lz4 chunks) read as the
+    /// uncompressed one does, by every reader; a damaged compressed chunk is skipped and named; a
+    /// compression this build does not decompress is refused with the ones it does.
+    #[test]
+    fn zstd_and_lz4_recordings_read_as_uncompressed_ones_and_damage_is_found() {
+        let plain_bytes = states_recording(40);
+        let plain = read_recording(&plain_bytes).unwrap();
+        assert_eq!(plain.states.len(), 40);
+        // cut before chunk 30's start: what the linear reader makes of a file without its summary
+        let plain_summary = mcap::Summary::read(&plain_bytes).unwrap().unwrap();
+        let plain_cut = read_recording(
+            &plain_bytes[..plain_summary.chunk_indexes[30].chunk_start_offset as usize],
+        )
+        .unwrap();
+        assert!(plain_cut.states.len() >= 29 && !plain_cut.complete);
+        let same = |a: &Recording, b: &Recording| a.states == b.states;
+        for compression in [mcap::Compression::Zstd, mcap::Compression::Lz4] {
+            let bytes = states_recording_compressed(40, Some(compression));
+            let summary = mcap::Summary::read(&bytes).unwrap().unwrap();
+            assert!(
+                summary.chunk_indexes.len() >= 40,
+                "{compression:?}: one chunk a state"
+            );
+            let first = summary.chunk_indexes[0].chunk_start_offset as usize + 9;
+            let Ok(mcap::records::Record::Chunk { header, .. }) =
+                mcap::parse_record(mcap::records::op::CHUNK, &bytes[first..])
+            else {
+                panic!("{compression:?}: no chunk at the index");
+            };
+            assert_ne!(
+                header.compression, "",
+                "{compression:?}: written compressed"
+            );
+
+            // through the summary's index, linearly (no summary: cut before it) and streamed
+            let whole = read_recording(&bytes).unwrap();
+            assert!(same(&whole, &plain), "{compression:?}");
+            assert!(whole.complete, "{compression:?}: {:?}", whole.problems);
+            let mut streamed = Recording::default();
+            let stats = stream_recording(Trickle(&bytes), &mut streamed).unwrap();
+            assert!(same(&streamed, &plain), "{compression:?}");
+            assert!(stats.complete, "{compression:?}: {:?}", stats.problems);
+            let cut = &bytes[..summary.chunk_indexes[30].chunk_start_offset as usize];
+            let linear = read_recording(cut).unwrap();
+            assert!(same(&linear, &plain_cut), "{compression:?}");
+
+            // one chunk's compressed bytes damaged: that chunk skipped, the others read
+            let mut damaged = bytes.clone();
+            let index = &summary.chunk_indexes[10];
+            let at = (index.chunk_start_offset + index.chunk_length) as usize - 6;
+            damaged[at] ^= 0x55;
+            let read = read_recording(&damaged).unwrap();
+            assert!(!read.complete, "{compression:?}");
+            assert_eq!(read.states.len(), 39, "{compression:?}");
+            // said: the chunk skipped, and the summary's count not reached
+            assert_eq!(
+                read.problems.len(),
+                whole.problems.len() + 2,
+                "{compression:?}: {:?}",
+                read.problems
+            );
+        }
+        // a compression no reader here decompresses ("zstd" renamed in place, same length)
+        let mut bytes = states_recording_compressed(40, Some(mcap::Compression::Zstd));
+        let mut renamed = 0;
+        for at in 0..bytes.len() - 8 {
+            if &bytes[at..at + 8] == b"\x04\0\0\0zstd" {
+                bytes[at + 7] = b'x';
+                renamed += 1;
+            }
+        }
+        assert!(renamed >= 40, "{renamed}");
+        // through the summary: every chunk skipped, said once; linearly: the first chunk stops it
+        for read in [
+            read_recording(&bytes),
+            read_recording(&bytes[..bytes.len() / 2]),
+        ] {
+            let Err(ReviewError::NotMcap { reason }) = read else {
+                panic!("read: {read:?}");
+            };
+            assert_eq!(reason.matches("zstx-compressed").count(), 1, "{reason}");
+        }
     }
 }

@@ -67,7 +67,12 @@ impl McapRecorder {
     pub fn from_file(file: File) -> Result<Self, RecordingError> {
         let options = mcap::WriteOptions::new()
             .profile("ros2")
-            .compression(None)
+            // zstd, as rosbag2 and Foxglove write: a chunk is closed (compressed and written) at
+            // least every second by `tick`, so a crash loses at most that second.
+            .compression(Some(mcap::Compression::Zstd))
+            // in the writing thread: no compression workers beside the session loop (a second's
+            // chunk takes about a millisecond)
+            .compression_threads(0)
             .library(concat!("ergocell ", env!("CARGO_PKG_VERSION")));
         let writer = options.create(BufWriter::new(file))?;
         let mut rec = Self {
