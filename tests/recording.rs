@@ -49,6 +49,18 @@ fn finished_recording_has_ros2_profile_schemas_and_decodable_messages() {
         })
         .unwrap();
     assert_eq!(header.profile, "ros2");
+    // every chunk compressed as the recorder says (`run` and `demo` print it)
+    let compressions: std::collections::BTreeSet<String> = mcap::read::LinearReader::new(&bytes)
+        .unwrap()
+        .filter_map(|r| match r.unwrap() {
+            mcap::records::Record::Chunk { header, .. } => Some(header.compression),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(
+        compressions,
+        [ergocell::recording::COMPRESSION.to_owned()].into()
+    );
     let mut states = 0;
     for m in mcap::MessageStream::new(&bytes).unwrap() {
         let m = m.unwrap();
@@ -193,4 +205,55 @@ fn replay_of_a_damaged_file_says_where_it_stops() {
     let cut = ergocell::recording::read_camera_landmarks(&bytes[..middle]).unwrap();
     assert!(cut.frames.len() < 30, "{}", cut.frames.len());
     assert!(cut.damaged.is_some(), "the cut is reported");
+}
+
+/// `replay` of a recording whose compressed chunk unpacks into a record past the bound (a zstd
+/// "bomb": 257 MiB of zeros in a few kB): the camera messages before it are read and the reading
+/// stops there, said, without allocating it.
+#[test]
+fn replay_refuses_a_compressed_record_past_the_size_bound() {
+    let mut w = mcap::WriteOptions::new()
+        .profile("ros2")
+        .compression(Some(mcap::Compression::Zstd))
+        .create(std::io::Cursor::new(Vec::new()))
+        .unwrap();
+    let schema = w
+        .add_schema(
+            &ergocell_bridge::msg::CameraLandmarks::type_name(),
+            "ros2msg",
+            b"",
+        )
+        .unwrap();
+    let channel = w
+        .add_channel(
+            schema,
+            &topics::camera("s1_left"),
+            "cdr",
+            &std::collections::BTreeMap::default(),
+        )
+        .unwrap();
+    let header = |k: u32| mcap::records::MessageHeader {
+        channel_id: channel,
+        sequence: k,
+        log_time: u64::from(k) * 100_000_000,
+        publish_time: u64::from(k) * 100_000_000,
+    };
+    let view = ergocell_bridge::msg::CameraLandmarks {
+        camera_id: "s1_left".into(),
+        ..Default::default()
+    };
+    for k in 0..3 {
+        w.write_to_known_channel(&header(k), &cdr::encode(&view).unwrap())
+            .unwrap();
+    }
+    w.flush().unwrap();
+    let bound = ergocell_ros_backend::recording::MAX_RECORD_BYTES;
+    w.write_to_known_channel(&header(3), &vec![0u8; bound + 1])
+        .unwrap();
+    w.finish().unwrap();
+    let bytes = w.into_inner().into_inner();
+    assert!(bytes.len() < 1 << 20, "{} bytes: compressed", bytes.len());
+    let read = ergocell::recording::read_camera_landmarks(&bytes).unwrap();
+    assert_eq!(read.frames.len(), 3);
+    assert!(read.damaged.is_some(), "the bound is said");
 }

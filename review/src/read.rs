@@ -303,19 +303,21 @@ pub fn read_into<V: Visit>(bytes: &[u8], visitor: &mut V) -> Result<ReadStats, R
             ),
         });
     }
-    let mut reader = Reader::new(visitor);
-    reader.rec.bytes = bytes.len() as u64;
     let summary = mcap::Summary::read(bytes).ok().flatten();
     match summary {
         Some(summary) if !summary.chunk_indexes.is_empty() => {
+            let mut reader = Reader::new(visitor);
+            reader.rec.bytes = bytes.len() as u64;
             for (name, entries) in metadata_records(bytes, &summary) {
                 reader.visitor.metadata(&name, &entries);
             }
             reader.read_chunks(bytes, &summary);
+            reader.finish()
         }
-        _ => reader.read_linear(bytes),
+        // Front to back, as a stream is read: each record's size bounded, so a compressed chunk
+        // cannot unpack into more memory than that.
+        _ => stream_recording(bytes, visitor),
     }
-    reader.finish()
 }
 
 /// The metadata records a summary indexes (unreadable ones left out).
@@ -362,8 +364,12 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
     let mut unsupported = false;
     while let Some(event) = linear.next_event() {
         match event {
+            Err(mcap::McapError::UnsupportedCompression(c)) => {
+                unsupported = true;
+                failure = Some(format!("its chunks are {c}-compressed"));
+                break;
+            }
             Err(e) => {
-                unsupported = matches!(e, mcap::McapError::UnsupportedCompression(_));
                 failure = Some(e.to_string());
                 break;
             }
@@ -584,49 +590,6 @@ impl<'v, V: Visit> Reader<'v, V> {
                     stats.message_count
                 ));
             }
-        }
-    }
-
-    /// Linearly, up to the first unreadable record (a file cut short has no summary).
-    fn read_linear(&mut self, bytes: &[u8]) {
-        let options = mcap::read::Options::IgnoreEndMagic | mcap::read::Options::ValidateChunkCrcs;
-        let stream = match mcap::read::MessageStream::new_with_options(bytes, options) {
-            Ok(s) => s,
-            Err(e) => {
-                self.rec.complete = false;
-                self.rec.problems.push(format!("unreadable MCAP: {e}"));
-                return;
-            }
-        };
-        for item in stream {
-            match item {
-                Ok(m) => self.take_mcap_message(&m),
-                Err(e) => {
-                    self.rec.complete = false;
-                    let at = self.rec.last_log_time_nanos.map_or_else(
-                        || "before the first message".to_owned(),
-                        |t| format!("after {:.1} s of recording", self.secs_into(t)),
-                    );
-                    let why = match &e {
-                        mcap::McapError::UnsupportedCompression(c) => {
-                            format!("its chunks are {c}-compressed; {READ_COMPRESSIONS}")
-                        }
-                        e => format!("the rest is unreadable ({e})"),
-                    };
-                    self.rec.problems.push(format!(
-                        "the recording could be read only up to {at} ({} messages): {why}",
-                        self.rec.messages
-                    ));
-                    break;
-                }
-            }
-        }
-        if !bytes.ends_with(mcap::MAGIC) {
-            self.rec.complete = false;
-            self.rec.problems.push(format!(
-                "the file has no MCAP footer: the recording was cut short (a crash or a partial copy); {} messages were read up to its last complete chunk",
-                self.rec.messages
-            ));
         }
     }
 
@@ -1451,6 +1414,49 @@ mod tests {
             stream_recording(&b"not a recording"[..], &mut Recording::default()),
             Err(ReviewError::NotMcap { .. })
         ));
+    }
+
+    /// A compressed chunk that unpacks into a record larger than the readers take (a zstd "bomb":
+    /// 257 MiB of zeros is a few kB compressed) is refused unread by every path, never allocated.
+    #[test]
+    fn a_compressed_record_past_the_size_bound_is_refused_unread() {
+        let mut w = mcap::WriteOptions::new()
+            .profile("ros2")
+            .compression(Some(mcap::Compression::Zstd))
+            .create(std::io::Cursor::new(Vec::new()))
+            .unwrap();
+        let schema = w
+            .add_schema(&SessionState::type_name(), "ros2msg", b"")
+            .unwrap();
+        let channel = w
+            .add_channel(schema, topics::SESSION_STATE, "cdr", &BTreeMap::new())
+            .unwrap();
+        let header = |k: u32| mcap::records::MessageHeader {
+            channel_id: channel,
+            sequence: k,
+            log_time: u64::from(k) * 1_000_000_000,
+            publish_time: u64::from(k) * 1_000_000_000,
+        };
+        w.write_to_known_channel(&header(0), &cdr::encode(&state("working")).unwrap())
+            .unwrap();
+        w.flush().unwrap();
+        w.write_to_known_channel(&header(1), &vec![0u8; MAX_RECORD_BYTES + 1])
+            .unwrap();
+        w.finish().unwrap();
+        let bytes = w.into_inner().into_inner();
+        assert!(bytes.len() < 1 << 20, "{} bytes: compressed", bytes.len());
+        // through the summary: that chunk skipped, the first read
+        let read = read_recording(&bytes).unwrap();
+        assert_eq!((read.states.len(), read.complete), (1, false));
+        // streamed, and linearly (no summary): read up to it
+        let mut streamed = Recording::default();
+        let stats = stream_recording(&bytes[..], &mut streamed).unwrap();
+        assert_eq!((streamed.states.len(), stats.complete), (1, false));
+        let summary = mcap::Summary::read(&bytes).unwrap().unwrap();
+        let last = summary.chunk_indexes.last().unwrap();
+        let cut = &bytes[..(last.chunk_start_offset + last.chunk_length) as usize];
+        let linear = read_recording(cut).unwrap();
+        assert_eq!((linear.states.len(), linear.complete), (1, false));
     }
 
     /// Recordings as rosbag2, Foxglove and Python's mcap write them (zstd or lz4 chunks) read as the

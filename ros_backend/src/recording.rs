@@ -36,6 +36,10 @@ pub enum RecordingError {
     Bridge(#[from] ergocell_bridge::BridgeError),
 }
 
+/// The compression of a recording's chunks, as MCAP names it.
+pub const COMPRESSION: &str = "zstd";
+const COMPRESSION_KIND: mcap::Compression = mcap::Compression::Zstd;
+
 /// Writes one session's MCAP file.
 pub struct McapRecorder {
     writer: mcap::Writer<BufWriter<File>>,
@@ -69,7 +73,7 @@ impl McapRecorder {
             .profile("ros2")
             // zstd, as rosbag2 and Foxglove write: a chunk is closed (compressed and written) at
             // least every second by `tick`, so a crash loses at most that second.
-            .compression(Some(mcap::Compression::Zstd))
+            .compression(Some(COMPRESSION_KIND))
             // in the writing thread: no compression workers beside the session loop (a second's
             // chunk takes about a millisecond)
             .compression_threads(0)
@@ -234,30 +238,79 @@ pub struct CameraReadout {
 /// Reads every camera-landmarks message of a recording (`ergocell replay`): a file cut by a crash is
 /// read up to its last complete chunk; a damaged record stops the reading and is reported, never
 /// silently; an undecodable message is skipped and counted.
+///
+/// Read front to back with each record's size bounded ([`MAX_RECORD_BYTES`]), so a compressed chunk
+/// (zstd, lz4) cannot unpack into more memory than that.
 pub fn read_camera_landmarks(bytes: &[u8]) -> Result<CameraReadout, RecordingError> {
-    let options = enumset::EnumSet::only(mcap::read::Options::IgnoreEndMagic);
+    use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
+    if !bytes.starts_with(mcap::MAGIC) {
+        return Err(RecordingError::Mcap(mcap::McapError::BadMagic));
+    }
+    let options = LinearReaderOptions::default()
+        .with_skip_end_magic(true)
+        .with_validate_chunk_crcs(true)
+        .with_record_length_limit(MAX_RECORD_BYTES);
+    let mut linear = LinearReader::new_with_options(options);
     let mut out = CameraReadout {
         frames: Vec::new(),
         damaged: None,
         undecodable: 0,
     };
-    for m in mcap::read::MessageStream::new_with_options(bytes, options)? {
-        let m = match m {
-            Ok(m) => m,
+    // channel id → whether it carries a camera's landmarks
+    let mut cameras: BTreeMap<u16, bool> = BTreeMap::new();
+    let mut rest = bytes;
+    while let Some(event) = linear.next_event() {
+        let record = match event {
             Err(e) => {
                 out.damaged = Some(e.to_string());
                 break;
             }
-        };
-        if topics::camera_id(&m.channel.topic).is_some() {
-            match cdr::decode::<ergocell_bridge::msg::CameraLandmarks>(&m.data) {
-                Ok(lm) => out.frames.push((m.log_time, lm)),
-                Err(_) => out.undecodable += 1,
+            Ok(LinearReadEvent::ReadRequest(need)) => {
+                let n = need.min(rest.len());
+                linear.insert(n).copy_from_slice(&rest[..n]);
+                linear.notify_read(n);
+                rest = &rest[n..];
+                continue;
             }
+            Ok(LinearReadEvent::Record { opcode, data }) => mcap::parse_record(opcode, data),
+        };
+        match record {
+            Err(e) => {
+                out.damaged = Some(e.to_string());
+                break;
+            }
+            Ok(mcap::records::Record::Channel(c)) => {
+                cameras.insert(c.id, topics::camera_id(&c.topic).is_some());
+            }
+            Ok(mcap::records::Record::Message { header, data }) => {
+                match cameras.get(&header.channel_id) {
+                    Some(true) => {
+                        match cdr::decode::<ergocell_bridge::msg::CameraLandmarks>(&data) {
+                            Ok(lm) => out.frames.push((header.log_time, lm)),
+                            Err(_) => out.undecodable += 1,
+                        }
+                    }
+                    Some(false) => {}
+                    None => {
+                        out.damaged = Some(format!(
+                            "a message on channel {} that no channel record declared",
+                            header.channel_id
+                        ));
+                        break;
+                    }
+                }
+            }
+            // the summary repeats the channels; nothing after the data section is needed
+            Ok(mcap::records::Record::DataEnd(_)) => break,
+            Ok(_) => {}
         }
     }
     Ok(out)
 }
+
+/// The largest record [`read_camera_landmarks`] takes (a chunk is read record by record): a damaged
+/// length field, or a compressed chunk that would unpack into more, stops the reading instead.
+pub const MAX_RECORD_BYTES: usize = 256 << 20;
 
 /// A session's recording that cannot stop silently: the recorder while it works and its first write
 /// error, after which nothing more is written. The cell loop asks for the failure

@@ -785,9 +785,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     drop(demo_dir);
     summary(&machine, args, true_class, secs(now, start));
     println!(
-        "  recording:      {} ({} messages; open in Foxglove or `ros2 bag info`)",
+        "  recording:      {} ({} messages, {}-compressed chunks; open in Foxglove or `ros2 bag info`)",
         out.display(),
-        messages.map_or("n/a".to_owned(), |m| m.to_string())
+        messages.map_or("n/a".to_owned(), |m| m.to_string()),
+        recording::COMPRESSION
     );
     let (recording, report) = (shell_word(&out), shell_word(&out.with_extension("html")));
     println!("  review it:      ergocell review {recording}   (in the browser)");

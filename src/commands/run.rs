@@ -291,6 +291,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .map_err(|e| anyhow::Error::new(e).context("closing the recording")),
         None => Ok(None),
     };
+    if let (Ok(Some(messages)), Some(path)) = (&closed, &args.record) {
+        println!(
+            "recording: {} ({messages} messages, {}-compressed chunks)",
+            path.display(),
+            recording::COMPRESSION
+        );
+    }
     match (result, closed) {
         (Ok(()), Ok(_)) => Ok(()),
         (Ok(()), Err(e)) | (Err(e), Ok(_)) => Err(e),
