@@ -414,7 +414,7 @@ pub struct StreamedRecording {
 ///
 /// # Errors
 /// As [`stream_recording`].
-pub fn stream_sessions<R: Read>(
+pub fn stream_sessions<R: Read + Send>(
     source: R,
     file: &str,
     each: &mut dyn FnMut(SegmentRow),

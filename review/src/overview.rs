@@ -337,7 +337,7 @@ impl Visit for FirstPass {
 ///
 /// # Errors
 /// As [`stream_recording`].
-pub fn plan<R: Read>(
+pub fn plan<R: Read + Send>(
     source: R,
     session: usize,
     budget: Budget,
@@ -632,7 +632,7 @@ impl Visit for SecondPass<'_> {
 ///
 /// # Errors
 /// As [`stream_recording`].
-pub fn analyse_planned<R: Read>(
+pub fn analyse_planned<R: Read + Send>(
     source: R,
     plan: Plan,
     label: &str,

@@ -339,22 +339,21 @@ fn metadata_records(
         .collect()
 }
 
-/// Reads a recording from `source` front to back, never holding more of it than one record, and
-/// hands each message to `visitor`: memory does not grow with the file. Each chunk's CRC is
+/// Reads a recording from `source` front to back, never holding more of it than a few batches of
+/// records, and hands each message to `visitor`: memory does not grow with the file. Each chunk's CRC is
 /// checked; a file cut short (a crash, a partial copy) is read up to its last complete record and
 /// says so in [`ReadStats::problems`].
 ///
+/// Two threads: one reads `source`, decompresses its chunks and splits them into records
+/// (`read_batches`), the calling one decodes the messages and visits them; between them are at most
+/// four or five batches of 4 MiB or 4,096 records (a single record may reach the 256 MiB bound).
+///
 /// # Errors
 /// As [`read_recording`]; an error reading `source` is [`ReviewError::NotMcap`] with its reason.
-pub fn stream_recording<R: std::io::Read, V: Visit>(
-    mut source: R,
+pub fn stream_recording<R: std::io::Read + Send, V: Visit>(
+    source: R,
     visitor: &mut V,
 ) -> Result<ReadStats, ReviewError> {
-    use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
-    let options = LinearReaderOptions::default()
-        .with_validate_chunk_crcs(true)
-        .with_record_length_limit(MAX_RECORD_BYTES);
-    let mut linear = LinearReader::new_with_options(options);
     let mut reader = Reader::new(visitor);
     let mut schemas: BTreeMap<u16, String> = BTreeMap::new();
     let mut channels: BTreeMap<u16, (String, String)> = BTreeMap::new();
@@ -362,44 +361,24 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
     let mut failure: Option<String> = None;
     // A chunk compressed with what this build does not decompress: said so, with the way out.
     let mut unsupported = false;
-    while let Some(event) = linear.next_event() {
-        match event {
-            Err(mcap::McapError::UnsupportedCompression(c)) => {
-                unsupported = true;
-                failure = Some(format!("its chunks are {c}-compressed"));
-                break;
-            }
-            Err(e) => {
-                failure = Some(e.to_string());
-                break;
-            }
-            Ok(LinearReadEvent::ReadRequest(need)) => {
-                let buf = linear.insert(need);
-                match source.read(buf) {
-                    Ok(n) => {
-                        reader.rec.bytes += n as u64;
-                        linear.notify_read(n);
-                    }
-                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => linear.notify_read(0),
-                    Err(e) => {
-                        return Err(ReviewError::NotMcap {
-                            reason: format!(
-                                "reading it failed after {} bytes: {e}",
-                                reader.rec.bytes
-                            ),
-                        })
-                    }
-                }
-            }
-            Ok(LinearReadEvent::Record { opcode, data }) => {
+    std::thread::scope(|scope| -> Result<(), ReviewError> {
+        let (tx, rx) = std::sync::mpsc::sync_channel(2);
+        // Batches go back to the reading thread to be filled again: their buffers are allocated
+        // once, and freed by the thread that allocated them.
+        let (free_tx, free_rx) = std::sync::mpsc::channel();
+        scope.spawn(move || read_batches(source, &tx, &free_rx));
+        // Leaving this loop early drops `rx`: the reading thread stops at its next batch.
+        'batches: for mut batch in rx {
+            reader.rec.bytes += batch.bytes;
+            for (opcode, range) in &batch.records {
                 if past_data_end {
-                    continue;
+                    break;
                 }
-                let record = match mcap::parse_record(opcode, data) {
+                let record = match mcap::parse_record(*opcode, &batch.data[range.clone()]) {
                     Ok(r) => r,
                     Err(e) => {
                         failure = Some(e.to_string());
-                        break;
+                        break 'batches;
                     }
                 };
                 match record {
@@ -416,7 +395,7 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
                                 "a message on channel {} that no channel record declared",
                                 header.channel_id
                             ));
-                            break;
+                            break 'batches;
                         };
                         reader.take_message(topic, schema, header.log_time, &data);
                     }
@@ -427,8 +406,28 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
                     _ => {}
                 }
             }
+            match batch.end.take() {
+                None => {}
+                Some(End::Failed(mcap::McapError::UnsupportedCompression(c))) => {
+                    unsupported = true;
+                    failure = Some(format!("its chunks are {c}-compressed"));
+                    break;
+                }
+                Some(End::Failed(e)) => {
+                    failure = Some(e.to_string());
+                    break;
+                }
+                Some(End::Io(e)) => {
+                    return Err(ReviewError::NotMcap {
+                        reason: format!("reading it failed after {} bytes: {e}", reader.rec.bytes),
+                    })
+                }
+            }
+            // The reading thread may be done: then the batch is freed here.
+            let _ = free_tx.send(batch);
         }
-    }
+        Ok(())
+    })?;
     if reader.rec.bytes < (mcap::MAGIC.len() * 2) as u64 && reader.rec.messages == 0 {
         return Err(ReviewError::NotMcap {
             reason: failure.unwrap_or_else(|| format!("{} bytes", reader.rec.bytes)),
@@ -453,6 +452,84 @@ pub fn stream_recording<R: std::io::Read, V: Visit>(
         ));
     }
     reader.finish()
+}
+
+/// What the reading thread of [`stream_recording`] hands the decoding one: records in file order,
+/// each an opcode and its bytes' range in one buffer.
+#[derive(Default)]
+struct Batch {
+    data: Vec<u8>,
+    records: Vec<(u8, std::ops::Range<usize>)>,
+    /// How many bytes of the source were read meanwhile.
+    bytes: u64,
+    /// Why reading ended after these records, if it did.
+    end: Option<End>,
+}
+
+/// Why the reading thread stopped before the end of the source.
+enum End {
+    /// The MCAP reader's error.
+    Failed(mcap::McapError),
+    /// Reading the source failed.
+    Io(std::io::Error),
+}
+
+/// How many records, or how many of their bytes, [`read_batches`] sends at once.
+const BATCH_RECORDS: usize = 4096;
+const BATCH_BYTES: usize = 4 << 20;
+
+/// Reads `source` with mcap's streaming reader (each chunk's CRC checked, each record's size
+/// bounded) and sends its records to `tx` in batches (refilling those `free` gives back), until
+/// the end, an error, or the receiver is gone.
+fn read_batches<R: std::io::Read>(
+    mut source: R,
+    tx: &std::sync::mpsc::SyncSender<Batch>,
+    free: &std::sync::mpsc::Receiver<Batch>,
+) {
+    use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
+    let options = LinearReaderOptions::default()
+        .with_validate_chunk_crcs(true)
+        .with_record_length_limit(MAX_RECORD_BYTES);
+    let mut linear = LinearReader::new_with_options(options);
+    let mut batch = Batch::default();
+    while let Some(event) = linear.next_event() {
+        match event {
+            Err(e) => {
+                batch.end = Some(End::Failed(e));
+                break;
+            }
+            Ok(LinearReadEvent::ReadRequest(need)) => {
+                let buf = linear.insert(need);
+                match source.read(buf) {
+                    Ok(n) => {
+                        linear.notify_read(n);
+                        batch.bytes += n as u64;
+                    }
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => linear.notify_read(0),
+                    Err(e) => {
+                        batch.end = Some(End::Io(e));
+                        break;
+                    }
+                }
+            }
+            Ok(LinearReadEvent::Record { opcode, data }) => {
+                let at = batch.data.len();
+                batch.data.extend_from_slice(data);
+                batch.records.push((opcode, at..batch.data.len()));
+                if batch.records.len() >= BATCH_RECORDS || batch.data.len() >= BATCH_BYTES {
+                    let mut next = free.try_recv().unwrap_or_default();
+                    next.data.clear();
+                    next.records.clear();
+                    next.bytes = 0;
+                    if tx.send(std::mem::replace(&mut batch, next)).is_err() {
+                        return;
+                    }
+                }
+            }
+        }
+    }
+    // The receiver may be gone already: nothing to tell it then.
+    let _ = tx.send(batch);
 }
 
 /// The largest record (other than a chunk, which is read piece by piece) the streaming reader
@@ -1414,6 +1491,34 @@ mod tests {
             stream_recording(&b"not a recording"[..], &mut Recording::default()),
             Err(ReviewError::NotMcap { .. })
         ));
+    }
+
+    /// Streamed over several batches between the reading and the decoding thread: every message in
+    /// order, as the whole-file reader reads them; a damaged chunk far in stops the stream there,
+    /// with the messages before it read.
+    #[test]
+    fn a_long_recording_streams_across_batches_in_order_and_stops_at_damage() {
+        let n = 3 * BATCH_RECORDS as u64;
+        let bytes = states_recording_compressed(n, Some(mcap::Compression::Zstd));
+        let whole = read_recording(&bytes).unwrap();
+        let mut streamed = Recording::default();
+        let stats = stream_recording(&bytes[..], &mut streamed).unwrap();
+        assert!(stats.complete, "{:?}", stats.problems);
+        assert_eq!(streamed.states.len() as u64, n);
+        assert!(streamed.states == whole.states, "the same messages in the same order");
+        let summary = mcap::Summary::read(&bytes).unwrap().unwrap();
+        let index = &summary.chunk_indexes[2 * BATCH_RECORDS];
+        let mut damaged = bytes.clone();
+        damaged[(index.chunk_start_offset + index.chunk_length) as usize - 6] ^= 0x55;
+        let mut cut = Recording::default();
+        let stats = stream_recording(&damaged[..], &mut cut).unwrap();
+        assert!(!stats.complete);
+        assert!(
+            cut.states.len() >= 2 * BATCH_RECORDS - 1 && cut.states.len() <= 2 * BATCH_RECORDS,
+            "{}",
+            cut.states.len()
+        );
+        assert!(cut.states[..] == whole.states[..cut.states.len()]);
     }
 
     /// A compressed chunk that unpacks into a record larger than the readers take (a zstd "bomb":
