@@ -1395,23 +1395,12 @@ mod tests {
 
     /// As [`states_recording`], each chunk compressed with `compression`.
     fn states_recording_compressed(n: u64, compression: Option<mcap::Compression>) -> Vec<u8> {
-        let mut w = mcap::WriteOptions::new()
-            .profile("ros2")
-            .compression(compression)
-            .chunk_size(Some(64))
-            .create(std::io::Cursor::new(Vec::new()))
-            .unwrap();
+        let (mut w, channel) = states_writer(compression, Some(64));
         w.write_metadata(&mcap::records::Metadata {
             name: session_info::METADATA_NAME.to_owned(),
             metadata: session_info::metadata(&session_info::OperatorId::new("op-7").unwrap()),
         })
         .unwrap();
-        let schema = w
-            .add_schema(&SessionState::type_name(), "ros2msg", b"")
-            .unwrap();
-        let channel = w
-            .add_channel(schema, topics::SESSION_STATE, "cdr", &BTreeMap::new())
-            .unwrap();
         for k in 0..n {
             let data = cdr::encode(&state(if k + 1 == n {
                 "session_ended"
@@ -1419,16 +1408,41 @@ mod tests {
                 "working"
             }))
             .unwrap();
-            let header = mcap::records::MessageHeader {
-                channel_id: channel,
-                sequence: u32::try_from(k).unwrap(),
-                log_time: k * 1_000_000_000,
-                publish_time: k * 1_000_000_000,
-            };
-            w.write_to_known_channel(&header, &data).unwrap();
+            w.write_to_known_channel(&state_header(channel, k), &data)
+                .unwrap();
         }
         w.finish().unwrap();
         w.into_inner().into_inner()
+    }
+
+    /// An MCAP writer in memory with the session-state channel (its id).
+    fn states_writer(
+        compression: Option<mcap::Compression>,
+        chunk_size: Option<u64>,
+    ) -> (mcap::Writer<std::io::Cursor<Vec<u8>>>, u16) {
+        let mut w = mcap::WriteOptions::new()
+            .profile("ros2")
+            .compression(compression)
+            .chunk_size(chunk_size)
+            .create(std::io::Cursor::new(Vec::new()))
+            .unwrap();
+        let schema = w
+            .add_schema(&SessionState::type_name(), "ros2msg", b"")
+            .unwrap();
+        let channel = w
+            .add_channel(schema, topics::SESSION_STATE, "cdr", &BTreeMap::new())
+            .unwrap();
+        (w, channel)
+    }
+
+    /// Message `k` on `channel`, logged at `k` seconds.
+    fn state_header(channel: u16, k: u64) -> mcap::records::MessageHeader {
+        mcap::records::MessageHeader {
+            channel_id: channel,
+            sequence: u32::try_from(k).unwrap(),
+            log_time: k * 1_000_000_000,
+            publish_time: k * 1_000_000_000,
+        }
     }
 
     /// A reader handing out one byte at a time: the stream never needs more than it asks for.
@@ -1505,7 +1519,10 @@ mod tests {
         let stats = stream_recording(&bytes[..], &mut streamed).unwrap();
         assert!(stats.complete, "{:?}", stats.problems);
         assert_eq!(streamed.states.len() as u64, n);
-        assert!(streamed.states == whole.states, "the same messages in the same order");
+        assert!(
+            streamed.states == whole.states,
+            "the same messages in the same order"
+        );
         let summary = mcap::Summary::read(&bytes).unwrap().unwrap();
         let index = &summary.chunk_indexes[2 * BATCH_RECORDS];
         let mut damaged = bytes.clone();
@@ -1525,23 +1542,11 @@ mod tests {
     /// 257 MiB of zeros is a few kB compressed) is refused unread by every path, never allocated.
     #[test]
     fn a_compressed_record_past_the_size_bound_is_refused_unread() {
-        let mut w = mcap::WriteOptions::new()
-            .profile("ros2")
-            .compression(Some(mcap::Compression::Zstd))
-            .create(std::io::Cursor::new(Vec::new()))
-            .unwrap();
-        let schema = w
-            .add_schema(&SessionState::type_name(), "ros2msg", b"")
-            .unwrap();
-        let channel = w
-            .add_channel(schema, topics::SESSION_STATE, "cdr", &BTreeMap::new())
-            .unwrap();
-        let header = |k: u32| mcap::records::MessageHeader {
-            channel_id: channel,
-            sequence: k,
-            log_time: u64::from(k) * 1_000_000_000,
-            publish_time: u64::from(k) * 1_000_000_000,
-        };
+        let (mut w, channel) = states_writer(
+            Some(mcap::Compression::Zstd),
+            Some(mcap::WriteOptions::DEFAULT_CHUNK_SIZE),
+        );
+        let header = |k: u64| state_header(channel, k);
         w.write_to_known_channel(&header(0), &cdr::encode(&state("working")).unwrap())
             .unwrap();
         w.flush().unwrap();
