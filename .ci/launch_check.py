@@ -33,8 +33,21 @@ class DeclareLaunchArgument:
 
 
 class ExecuteProcess:
-    def __init__(self, cmd, name, output, sigterm_timeout):
+    def __init__(self, cmd, name, output, sigterm_timeout, additional_env, on_exit):
+        assert additional_env.get("ERGOCELL_STATE_DIR"), f"{name}: no ERGOCELL_STATE_DIR"
         started.append((name, cmd))
+        if name == "ergocell_run":
+            assert on_exit and isinstance(on_exit[0].event, Shutdown), "the launch outlives run"
+
+
+class Shutdown:
+    def __init__(self, reason):
+        self.reason = reason
+
+
+class EmitEvent:
+    def __init__(self, event):
+        self.event = event
 
 
 class OpaqueFunction:
@@ -53,10 +66,13 @@ launch.actions = types.ModuleType("launch.actions")
 launch.actions.DeclareLaunchArgument = DeclareLaunchArgument
 launch.actions.ExecuteProcess = ExecuteProcess
 launch.actions.OpaqueFunction = OpaqueFunction
+launch.actions.EmitEvent = EmitEvent
+launch.events = types.ModuleType("launch.events")
+launch.events.Shutdown = Shutdown
 launch.substitutions = types.ModuleType("launch.substitutions")
 launch.substitutions.LaunchConfiguration = LaunchConfiguration
 sys.modules.update({"launch": launch, "launch.actions": launch.actions,
-                    "launch.substitutions": launch.substitutions})
+                    "launch.events": launch.events, "launch.substitutions": launch.substitutions})
 
 spec = importlib.util.spec_from_file_location("ergocell_launch", "deploy/ros2/ergocell.launch.py")
 module = importlib.util.module_from_spec(spec)

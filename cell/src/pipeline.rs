@@ -36,9 +36,10 @@
 //! and height ([`FrameOutput::operator`], [`FrameOutput::height`]) come at once, so nothing the robot
 //! waits for is delayed. Frames are released on the clock ([`Pipeline::release_due`], which the
 //! session calls every step): a frame is scored once the clock is past its stamp by the half
-//! window, on the frames that have arrived, so what the cameras' transport delays is left out of
-//! its window rather than waited for. A session that ends sooner leaves the last half window of
-//! frames unscored.
+//! window (and no sooner than the half window less 0.1 s after it arrived), on the frames that
+//! have arrived, so what the cameras' transport delays is left out of its window, up to 0.1 s of
+//! it, rather than waited for. A session that ends sooner leaves the last half window of frames
+//! unscored.
 
 use ergocell_ergonomics::{
     AssessmentConfig, ErgonomicsError, FrameAssessment, HeightConfig, HeightDecision,
@@ -430,6 +431,9 @@ pub struct Pipeline {
     assessment: Assessment,
     /// The fixed-lag smoother, when configured.
     lag: Option<FixedLagSmoother>,
+    /// When the frames being processed arrived (the clock of [`Pipeline::push_views`]); `None`:
+    /// at their own stamps (a frame handed to [`Pipeline::process_frame`] directly).
+    arrival_nanos: Option<i64>,
 }
 
 impl Pipeline {
@@ -453,6 +457,7 @@ impl Pipeline {
             assessment: Assessment::new(&config)?,
             config,
             lag,
+            arrival_nanos: None,
         })
     }
 
@@ -480,17 +485,21 @@ impl Pipeline {
         views: Vec<View2>,
     ) -> Vec<Result<FrameOutput, PerceptionError>> {
         let frames = self.reconstruction.push_views(now_nanos, views);
-        frames.iter().map(|f| self.process_frame(f)).collect()
+        self.arrival_nanos = Some(now_nanos);
+        let out = frames.iter().map(|f| self.process_frame(f)).collect();
+        self.arrival_nanos = None;
+        out
     }
 
-    /// The clock has reached `now_nanos`: with a fixed lag, every frame whose window has closed is
-    /// scored now, on the frames that have arrived (what is still in transit is not waited for:
-    /// the scores and the warnings come at the designed lag). Without one, nothing is waiting.
+    /// The clock has reached `now_nanos`: with a fixed lag, every frame due is scored now, on the
+    /// frames that have arrived: what is still in transit is not waited for, up to
+    /// [`ergocell_perception::fixed_lag::MAX_CUT_NANOS`] of it, so the scores and the warnings come
+    /// at the designed lag. Without a fixed lag nothing is waiting.
     pub fn release_due(&mut self, now_nanos: i64) -> Vec<TrackedFrame> {
         let Some(lag) = self.lag.as_mut() else {
             return Vec::new();
         };
-        lag.advance(now_nanos)
+        lag.release_due(now_nanos)
             .into_iter()
             .map(|smoothed| self.assessment.score(smoothed))
             .collect()
@@ -526,7 +535,10 @@ impl Pipeline {
                 .collect(),
             Some(lag) => {
                 let released = match r.tracked {
-                    Some(skeleton) => lag.push(skeleton),
+                    Some(skeleton) => match self.arrival_nanos {
+                        Some(arrived) => lag.push_arrived(skeleton, arrived),
+                        None => lag.push(skeleton),
+                    },
                     None => lag.advance(r.stamp_nanos),
                 };
                 released

@@ -1,6 +1,6 @@
 """The cell as one ROS 2 launch: an `ergocell-edge publish` node per camera (or side-by-side stereo
-camera) and `ergocell run`, with the same commands as the systemd units beside it
-(deploy/systemd/). For a bench or a cell whose cameras are on the cell PC; on a plant cell each
+camera) and `ergocell run`, with the commands and the state folder of the systemd units beside it
+(deploy/systemd/), without their hardening. For a bench or a cell whose cameras are on the cell PC; on a plant cell each
 edge device runs its own node (docs/integrator.md).
 
     ros2 launch deploy/ros2/ergocell.launch.py site:=/srv/ergocell \\
@@ -20,6 +20,8 @@ import time
 ARGUMENTS = [
     ("site", "/srv/ergocell",
      "the site folder: config/cell.toml, config/rig.toml and trajectories/ (locks and approvals)"),
+    ("state_dir", "/var/lib/ergocell",
+     "ERGOCELL_STATE_DIR: the approvals witness, as the systemd unit keeps it"),
     ("recordings", "/var/lib/ergocell/recordings",
      "where `ergocell run` records; one file per launch, named by its UTC start time"),
     ("edge_nodes", "s1_left:s1_right@/dev/video0;s2_left:s2_right@/dev/video2;s3_left:s3_right@/dev/video4",
@@ -75,14 +77,27 @@ def commands(values, now=None):
 
 
 def _actions(context):
-    from launch.actions import ExecuteProcess
+    from launch.actions import EmitEvent, ExecuteProcess
+    from launch.events import Shutdown
     from launch.substitutions import LaunchConfiguration
 
     values = {name: LaunchConfiguration(name).perform(context) for name, _, _ in ARGUMENTS}
-    os.makedirs(values["recordings"], exist_ok=True)
-    # SIGINT first (ergocell holds the robot and closes the recording), SIGTERM after 10 s
-    return [ExecuteProcess(cmd=argv, name=name, output="screen", sigterm_timeout="10")
-            for name, argv in commands(values)]
+    try:
+        os.makedirs(values["recordings"], exist_ok=True)
+    except OSError as e:
+        raise RuntimeError(f"recordings:={values['recordings']}: {e.strerror}; give a folder this "
+                           "user can write (recordings:=<folder>)") from None
+    actions = []
+    for name, argv in commands(values):
+        # Ctrl-C: SIGINT to every process (ergocell holds the robot and closes the recording),
+        # SIGTERM after 10 s. When `ergocell run` ends (a held robot, exit 1 or 2, needs a person),
+        # the whole launch ends with it.
+        on_exit = ([EmitEvent(event=Shutdown(reason="ergocell run ended"))]
+                   if name == "ergocell_run" else None)
+        actions.append(ExecuteProcess(
+            cmd=argv, name=name, output="screen", sigterm_timeout="10",
+            additional_env={"ERGOCELL_STATE_DIR": values["state_dir"]}, on_exit=on_exit))
+    return actions
 
 
 def generate_launch_description():

@@ -487,8 +487,11 @@ fn read_batches<R: std::io::Read>(
     free: &std::sync::mpsc::Receiver<Batch>,
 ) {
     use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
+    // Each chunk decompressed whole and its CRC checked before any of its records is handed on:
+    // a damaged chunk gives no message (its size bounded by the record limit).
     let options = LinearReaderOptions::default()
         .with_validate_chunk_crcs(true)
+        .with_prevalidate_chunk_crcs(true)
         .with_record_length_limit(MAX_RECORD_BYTES);
     let mut linear = LinearReader::new_with_options(options);
     let mut batch = Batch::default();
@@ -520,6 +523,9 @@ fn read_batches<R: std::io::Read>(
                     let mut next = free.try_recv().unwrap_or_default();
                     next.data.clear();
                     next.records.clear();
+                    // a batch that carried a large record does not keep its memory
+                    next.data.shrink_to(BATCH_BYTES);
+                    next.records.shrink_to(BATCH_RECORDS);
                     next.bytes = 0;
                     if tx.send(std::mem::replace(&mut batch, next)).is_err() {
                         return;

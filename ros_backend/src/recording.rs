@@ -246,9 +246,11 @@ pub fn read_camera_landmarks(bytes: &[u8]) -> Result<CameraReadout, RecordingErr
     if !bytes.starts_with(mcap::MAGIC) {
         return Err(RecordingError::Mcap(mcap::McapError::BadMagic));
     }
+    // each chunk checked whole before its records are taken: a damaged one gives no frame
     let options = LinearReaderOptions::default()
         .with_skip_end_magic(true)
         .with_validate_chunk_crcs(true)
+        .with_prevalidate_chunk_crcs(true)
         .with_record_length_limit(MAX_RECORD_BYTES);
     let mut linear = LinearReader::new_with_options(options);
     let mut out = CameraReadout {
