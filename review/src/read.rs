@@ -538,8 +538,8 @@ fn read_batches<R: std::io::Read>(
     let _ = tx.send(batch);
 }
 
-/// The largest record (other than a chunk, which is read piece by piece) the streaming reader
-/// accepts: a damaged length field is refused, never allocated.
+/// The largest record, or decompressed chunk, the streaming reader accepts: a damaged length field,
+/// or a compressed chunk that would unpack into more, is refused, never allocated.
 const MAX_RECORD_BYTES: usize = 256 << 20;
 
 /// Reading state: what was read and what was skipped.

@@ -239,8 +239,9 @@ pub struct CameraReadout {
 /// read up to its last complete chunk; a damaged record stops the reading and is reported, never
 /// silently; an undecodable message is skipped and counted.
 ///
-/// Read front to back with each record's size bounded ([`MAX_RECORD_BYTES`]), so a compressed chunk
-/// (zstd, lz4) cannot unpack into more memory than that.
+/// Read front to back, each chunk decompressed whole and checked against its CRC before any of its
+/// messages is taken, each record and each decompressed chunk bounded by [`MAX_RECORD_BYTES`]: a
+/// compressed chunk (zstd, lz4) cannot unpack into more memory than that.
 pub fn read_camera_landmarks(bytes: &[u8]) -> Result<CameraReadout, RecordingError> {
     use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
     if !bytes.starts_with(mcap::MAGIC) {
@@ -310,8 +311,8 @@ pub fn read_camera_landmarks(bytes: &[u8]) -> Result<CameraReadout, RecordingErr
     Ok(out)
 }
 
-/// The largest record [`read_camera_landmarks`] takes (a chunk is read record by record): a damaged
-/// length field, or a compressed chunk that would unpack into more, stops the reading instead.
+/// The largest record, or decompressed chunk, [`read_camera_landmarks`] takes: a damaged length
+/// field, or a compressed chunk that would unpack into more, stops the reading instead.
 pub const MAX_RECORD_BYTES: usize = 256 << 20;
 
 /// A session's recording that cannot stop silently: the recorder while it works and its first write

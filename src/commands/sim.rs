@@ -172,7 +172,7 @@ pub struct Common {
     pub decision_sigmas: Option<f64>,
     /// warnings: how long after its capture each frame's views reach the cell, milliseconds (the
     /// edge's inference and the network); the fixed lag's frames are released on the clock, so the
-    /// newest of that time's frames are left out of each window.
+    /// newest of that time's frames (up to 0.1 s of them) are left out of each window.
     #[arg(long, global = true, default_value_t = 0.0)]
     pub transport_delay_ms: f64,
 }
