@@ -14,7 +14,8 @@
 # mixed in): classed, ended, rejected, latency and memory bounded; the Cyclone peer killed and
 # restarted mid-session: the new participant matched; the wall clock jumping (libfaketime): reported,
 # nothing timed by it.
-# Also prints the latency (camera message arrival → RULA state published, 6 cameras at 30 Hz) and CPU.
+# Also prints the latency (a step's start, woken by a camera message or the clock's tick, → RULA state
+# published, 6 cameras at 30 Hz) and CPU.
 # Measured on the dev machine (2 vCPUs shared with other builds; release; ros2-client 0.12.1, RustDDS
 # 0.15.1, cyclonedds 11.0.1), 2026-11-23, four runs: p50 0.13–0.18 ms, p99 0.29–1.96 ms, max ≤ 4.3 ms,
 # ergocell's CPU 1.9–2.1 % of one core. Not asserted (wall-clock figures vary with the machine's load).
@@ -168,6 +169,10 @@ peer = json.load(open(sys.argv[2]))
 rss_mb = int(open(sys.argv[3]).read().split()[-1]) / 1024
 rejected = int(re.search(r"(\d+) camera message\(s\) rejected", log).group(1))
 lat = re.search(r"p50 = ([\d.]+) ms, p99 = ([\d.]+) ms, max = ([\d.]+) ms", log)
+if lat is None:
+    print("FAIL camera message storm: run printed no latency report (no RULA state published?)")
+    print(log[-3000:])
+    sys.exit(1)
 p50, p99, mx = (float(x) for x in lat.groups())
 print(f"storm: {peer['camera_messages_sent']} + {peer.get('storm_messages_sent', 0)} camera messages sent, "
       f"{rejected} rejected; latency p50 {p50:.3f} ms, p99 {p99:.3f} ms, max {mx:.1f} ms; peak RSS {rss_mb:.0f} MB")
