@@ -17,17 +17,19 @@ mod common;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    CellLoop, EndCause, Leg, RobotCommand, RobotSink, SessionEvent, SessionState,
+    CellLoop, DriverStop, GoalStatus, HoldReason, Interruption, Leg, ResultCode, RobotCommand,
+    RobotFailure, RobotSink, RobotUnready, SessionEnd, SessionEvent, SessionState, StopSignal,
     TrajectoryProvider,
 };
-use ergocell_bridge::controller::{ControllerCommand, ControllerReport};
+use ergocell_bridge::controller::{ControllerCommand, ControllerReport, GoalStatusEnum};
 use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, Header, JointState, JointTrajectory};
 use ergocell_bridge::transport::{RobotInterface, RosConfig};
 use ergocell_cell::CellSettings;
 use ergocell_perception::CameraRig;
+use ergocell_robot::monitor::Deviation;
 use ergocell_robot::TrajectoryClass;
 use ergocell_ros_backend::monitor::Judge;
-use ergocell_ros_backend::robot::{driver_readiness, feed, RobotInput, RosRobot, TrajectoryTopic};
+use ergocell_ros_backend::robot::{announce_driver, feed, RobotInput, RosRobot, TrajectoryTopic};
 use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
 
@@ -146,7 +148,11 @@ impl Harness {
         )
         .unwrap();
         let mut cell = CellLoop::new(machine, robot, ());
-        driver_readiness(&mut cell, 0);
+        if driver_state {
+            cell = cell.with_driver_state();
+        }
+        let readiness = cell.driver_readiness();
+        announce_driver(&mut cell, 0, readiness);
         Self {
             cell,
             judge,
@@ -270,36 +276,44 @@ impl Harness {
             .collect()
     }
 
-    /// The session ended held for the robot side's `reason`, with an empty trajectory on the topic,
-    /// the monitor's event saying it, and the summary marking an abnormal end (exit 1).
-    fn assert_ended_held_for(&self, reason: &str) {
-        self.assert_ended_held(reason, "monitor");
-    }
-
-    /// [`Harness::assert_ended_held_for`] with the controller event of `kind` that says it (the
-    /// monitor's verdict in its text; a controller's answer as its kind).
-    fn assert_ended_held(&self, reason: &str, kind: &str) {
+    /// The robot side's failure the session ended for, held: an empty trajectory on the topic, the
+    /// controller event of `kind` (the monitor's verdict, or the controller's answer) beside it, and
+    /// the summary marking an abnormal end (exit 1).
+    fn failure(&self, kind: &str) -> RobotFailure {
         let ending = self.cell.ended().expect("the session ended");
-        assert_eq!(ending.cause, EndCause::RobotFailed, "{ending:?}");
-        assert!(ending.reason.contains(reason), "{ending:?}");
+        let Some(Interruption::RobotFailed { failure }) = ending.interruption() else {
+            panic!("not ended by the robot side: {ending:?}");
+        };
         let summary = self.cell.machine().summary();
         assert!(!summary.ended, "an abnormal end: {}", summary.end_reason);
         assert!(
-            summary.end_reason.contains(reason),
-            "{}",
-            summary.end_reason
+            matches!(
+                summary.end,
+                Some(SessionEnd::Interrupted {
+                    by: Interruption::RobotFailed { .. }
+                })
+            ),
+            "{:?}",
+            summary.end
         );
         assert!(
             self.topic.holds() >= 1,
             "the empty trajectory was published"
         );
         assert!(
-            self.controller_events()
-                .iter()
-                .any(|(k, text)| k == kind && (kind != "monitor" || text.contains(reason))),
+            self.controller_events().iter().any(|(k, _)| k == kind),
             "{:?}",
             self.controller_events()
         );
+        failure.clone()
+    }
+
+    /// The execution monitor's deviation the session ended for.
+    fn deviation(&self) -> Deviation {
+        match self.failure("monitor") {
+            RobotFailure::Deviation { deviation } => deviation,
+            other => panic!("not the monitor's: {other:?}"),
+        }
     }
 
     /// The true positions of the current leg at leg time `t_s` (seconds since it was sent).
@@ -315,23 +329,29 @@ impl Harness {
 #[test]
 fn the_controller_refusing_aborting_or_not_answering_a_goal_ends_the_session_held() {
     let label = ergocell_ros_backend::robot::leg_label(Leg::ToHandover);
+    let leg = Some(Leg::ToHandover);
     let cases = [
         (
             ControllerReport::Rejected {
                 label: label.clone(),
             },
-            "the controller rejected the goal (home → handover)",
+            RobotFailure::GoalRejected { leg },
             "rejected",
         ),
         (
             ControllerReport::Finished {
                 label: label.clone(),
-                status: "aborted",
+                status: GoalStatusEnum::Aborted,
                 error_code: -4,
                 error_string: "joint_2 out of its path tolerance".to_owned(),
                 feedback_count: 3,
             },
-            "PATH_TOLERANCE_VIOLATED (-4)",
+            RobotFailure::GoalEnded {
+                leg,
+                status: GoalStatus::Aborted,
+                result: ResultCode::PathToleranceViolated,
+                error_string: "joint_2 out of its path tolerance".to_owned(),
+            },
             "finished",
         ),
         (
@@ -339,11 +359,11 @@ fn the_controller_refusing_aborting_or_not_answering_a_goal_ends_the_session_hel
                 label: label.clone(),
                 waited_s: 5.0,
             },
-            "home → handover",
+            RobotFailure::GoalUnanswered { leg, waited_s: 5.0 },
             "no_response",
         ),
     ];
-    for (k, (report, reason, kind)) in cases.into_iter().enumerate() {
+    for (k, (report, expected, kind)) in cases.into_iter().enumerate() {
         let mut h = Harness::new(&format!("controller-{k}"), RobotInterface::Action, false);
         h.until_first_leg();
         let rx = h.action.as_mut().unwrap();
@@ -351,8 +371,6 @@ fn the_controller_refusing_aborting_or_not_answering_a_goal_ends_the_session_hel
             rx.try_recv(),
             Ok(ControllerCommand::Execute { .. })
         ));
-        let failure = report.failure().expect("a failure");
-        assert!(failure.contains(reason), "{failure}");
         let now = h.now;
         feed(&mut h.cell, now, RobotInput::Controller(report));
         h.run(
@@ -360,7 +378,7 @@ fn the_controller_refusing_aborting_or_not_answering_a_goal_ends_the_session_hel
             &mut |_, _, q| Sample::Send(q),
             &Harness::ended,
         );
-        h.assert_ended_held(&failure, kind);
+        assert_eq!(h.failure(kind), expected);
         let queue = h.cell.robot().events();
         let answer = queue
             .lock()
@@ -404,8 +422,21 @@ fn a_joint_leaving_its_path_tolerance_is_held_by_the_monitor_at_once() {
         },
         &Harness::ended,
     );
-    h.assert_ended_held_for("off the locked trajectory");
-    assert!(h.cell.ended().unwrap().reason.contains("joint_2"));
+    match h.deviation() {
+        Deviation::Path {
+            joint,
+            error_rad,
+            tolerance_rad,
+            ..
+        } => {
+            assert_eq!(joint, "joint_2");
+            assert!(
+                error_rad.abs() > tolerance_rad,
+                "{error_rad} {tolerance_rad}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
     // The hold went out with the bad sample, before the cell loop's next step ended the session.
     let held_at = held_at.expect("held by the monitor");
     assert!(h.cell.ended().unwrap().stamp_nanos >= held_at);
@@ -422,7 +453,11 @@ fn a_robot_late_on_the_locked_path_ends_the_session_held() {
         &mut |h, now, _| Sample::Send(h.leg_at(0.8 * (now - sent) as f64 * 1e-9)),
         &Harness::ended,
     );
-    h.assert_ended_held_for("lags the locked trajectory");
+    assert!(
+        matches!(h.deviation(), Deviation::Lagging { behind_s, .. } if behind_s > 0.0),
+        "{:?}",
+        h.deviation()
+    );
 }
 
 /// Row "the robot stands while the lock moves".
@@ -436,7 +471,11 @@ fn a_robot_standing_while_the_lock_moves_is_named_stalled() {
         &mut |h, now, _| Sample::Send(h.leg_at(((now - sent) as f64 * 1e-9).min(1.5))),
         &Harness::ended,
     );
-    h.assert_ended_held_for("stalled");
+    assert!(
+        matches!(h.deviation(), Deviation::Stalled { moved_rad, locked_moved_rad, .. } if moved_rad < locked_moved_rad),
+        "{:?}",
+        h.deviation()
+    );
 }
 
 /// Row "not within goal_tolerance_rad goal_time_tolerance_s after the leg's end".
@@ -453,7 +492,11 @@ fn a_leg_that_does_not_arrive_ends_the_session_held() {
         },
         &Harness::ended,
     );
-    h.assert_ended_held_for("did not arrive");
+    assert!(
+        matches!(h.deviation(), Deviation::Goal { ref joint, .. } if joint == "joint_7"),
+        "{:?}",
+        h.deviation()
+    );
 }
 
 /// Row "motion while it should be at rest".
@@ -474,7 +517,11 @@ fn motion_at_rest_after_a_leg_ends_the_session_held() {
         },
         &Harness::ended,
     );
-    h.assert_ended_held_for("while the robot should be at rest");
+    assert!(
+        matches!(h.deviation(), Deviation::MotionAtRest { ref joint, .. } if joint == "joint_1"),
+        "{:?}",
+        h.deviation()
+    );
 }
 
 /// Row "a joint state without every joint, or NaN".
@@ -496,7 +543,11 @@ fn a_joint_state_missing_a_joint_or_with_nan_ends_the_session_held() {
             },
             &Harness::ended,
         );
-        h.assert_ended_held_for("joint state");
+        assert!(
+            matches!(h.deviation(), Deviation::BadSample { .. }),
+            "{:?}",
+            h.deviation()
+        );
     }
 }
 
@@ -519,9 +570,15 @@ fn stale_joint_states_hold_the_robot_and_the_session_resumes_when_they_are_back(
         &|h| h.cell.machine().state() == SessionState::Held,
     ));
     assert!(!h.ended());
-    assert_eq!(
-        h.cell.machine().hold_reason(),
-        Some("joint states stale (none for more than 0.1 s)")
+    assert!(
+        matches!(
+            h.cell.machine().held_for(),
+            Some(HoldReason::RobotNotReady {
+                unready: RobotUnready::JointStatesStale { timeout_s }
+            }) if *timeout_s == 0.1
+        ),
+        "{:?}",
+        h.cell.machine().held_for()
     );
     assert!(h.topic.holds() >= 1);
     assert!(h
@@ -556,9 +613,15 @@ fn no_goal_is_sent_until_the_driver_is_configured_and_controlling() {
         h.cell.machine().state() == SessionState::Held
     });
     assert!(locked, "{:?}", h.transitions());
-    assert_eq!(
-        h.cell.machine().hold_reason(),
-        Some("waiting for the KUKA driver: no is_configured yet")
+    assert!(
+        matches!(
+            h.cell.machine().held_for(),
+            Some(HoldReason::RobotNotReady {
+                unready: RobotUnready::DriverSilent
+            })
+        ),
+        "{:?}",
+        h.cell.machine().held_for()
     );
     // Two more seconds: still no goal.
     h.run(h.now + 2_000 * MS, &mut |_, _, q| Sample::Send(q), &|_| {
@@ -571,9 +634,15 @@ fn no_goal_is_sent_until_the_driver_is_configured_and_controlling() {
         false
     });
     assert!(h.leg_sent.is_none(), "configured but control not started");
-    assert_eq!(
-        h.cell.machine().hold_reason(),
-        Some("waiting for the KUKA driver: control not started")
+    assert!(
+        matches!(
+            h.cell.machine().held_for(),
+            Some(HoldReason::RobotNotReady {
+                unready: RobotUnready::ControlNotStarted
+            })
+        ),
+        "{:?}",
+        h.cell.machine().held_for()
     );
     let now = h.now;
     h.driver_event(now, HardwareEvent::CONTROL_STARTED);
@@ -587,7 +656,10 @@ fn no_goal_is_sent_until_the_driver_is_configured_and_controlling() {
 /// Row "driver event 4 or 6": held.
 #[test]
 fn the_driver_stopping_holds_the_robot() {
-    for event in [HardwareEvent::CONTROL_STOPPED, HardwareEvent::ERROR] {
+    for (event, by) in [
+        (HardwareEvent::CONTROL_STOPPED, DriverStop::ByUser),
+        (HardwareEvent::ERROR, DriverStop::ByError),
+    ] {
         let mut h = Harness::new(&format!("driver-{event}"), RobotInterface::Topic, true);
         feed(&mut h.cell, 0, RobotInput::DriverConfigured(true));
         h.driver_event(0, HardwareEvent::CONTROL_STARTED);
@@ -601,10 +673,15 @@ fn the_driver_stopping_holds_the_robot() {
                 .state()
                 == SessionState::Held,)
         );
-        let why = h.cell.machine().hold_reason().unwrap().to_owned();
         assert!(
-            why.starts_with("the KUKA driver reports: stopped by"),
-            "{why}"
+            matches!(
+                h.cell.machine().held_for(),
+                Some(HoldReason::RobotNotReady {
+                    unready: RobotUnready::DriverStopped { by: b }
+                }) if *b == by
+            ),
+            "{:?}",
+            h.cell.machine().held_for()
         );
         assert!(h.topic.holds() >= 1);
         assert!(!h.ended(), "held, not ended");
@@ -617,15 +694,22 @@ fn the_driver_stopping_holds_the_robot() {
 fn a_stop_ends_the_session_held_with_its_own_cause() {
     let mut h = Harness::new("stop", RobotInterface::Topic, false);
     h.until_first_leg();
-    h.cell.stop("SIGTERM");
+    h.cell.stop(StopSignal::Terminate);
     h.run(
         h.now + FRAME,
         &mut |_, _, q| Sample::Send(q),
         &Harness::ended,
     );
     let ending = h.cell.ended().unwrap();
-    assert_eq!(ending.cause, EndCause::Stopped);
-    assert_eq!(ending.reason, "SIGTERM");
+    assert!(
+        matches!(
+            ending.interruption(),
+            Some(Interruption::Stopped {
+                signal: StopSignal::Terminate
+            })
+        ),
+        "{ending:?}"
+    );
     assert!(h.topic.holds() >= 1);
     let summary = h.cell.machine().summary();
     assert_eq!(summary.end_reason, "interrupted: SIGTERM (robot held)");
@@ -688,8 +772,7 @@ fn a_failed_output_or_the_time_limit_ends_the_session_held() {
             fail_at: fail_at.unwrap_or(usize::MAX),
             after: 0,
         };
-        let mut cell =
-            CellLoop::new(machine, robot, outputs).with_deadline(20_000 * MS, "time limit");
+        let mut cell = CellLoop::new(machine, robot, outputs).with_deadline(20_000 * MS, 20.0);
         let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.055));
         script.cycles = 3;
         let mut sim = Simulation::new(
@@ -716,10 +799,12 @@ fn a_failed_output_or_the_time_limit_ends_the_session_held() {
             "held: {last:?}"
         );
         if let Some(n) = fail_at {
-            assert_eq!(ending.cause, EndCause::OutputFailed);
+            let Some(Interruption::OutputFailed { error }) = ending.interruption() else {
+                panic!("{ending:?}");
+            };
             assert_eq!(
-                ending.reason,
-                "recording failed: No space left on device (os error 28)"
+                (error.output, error.why.as_str()),
+                ("recording", "No space left on device (os error 28)")
             );
             assert_eq!(ending.stamp_nanos, (n as i64 - 1) * FRAME, "at once");
             assert_eq!(
@@ -728,8 +813,13 @@ fn a_failed_output_or_the_time_limit_ends_the_session_held() {
                 "only the shutdown's events after it"
             );
         } else {
-            assert_eq!(ending.cause, EndCause::TimeLimit);
-            assert_eq!(ending.reason, "time limit");
+            assert!(
+                matches!(
+                    ending.interruption(),
+                    Some(Interruption::TimeLimit { limit_s }) if *limit_s == 20.0
+                ),
+                "{ending:?}"
+            );
             assert_eq!(ending.stamp_nanos, 20_000 * MS + FRAME);
         }
         assert!(!cell.machine().summary().ended);

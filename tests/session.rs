@@ -11,8 +11,8 @@ mod common;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    AbortReason, HoldReason, LandmarkSource, Leg, RobotCommand, SessionEnd, SessionEvent,
-    SessionMachine, SessionState, TrajectoryProvider,
+    AbortReason, HoldReason, LandmarkSource, Leg, RobotCommand, RobotUnready, SessionEnd,
+    SessionEvent, SessionMachine, SessionState, TrajectoryProvider,
 };
 use ergocell_cell::CellSettings;
 use ergocell_perception::{CameraRig, View2};
@@ -426,7 +426,13 @@ fn ctrl_c_holds_the_robot_and_ends_the_session() {
     run.run_until(12_000_000_000, &|m| m.state() == SessionState::Working);
     assert_eq!(run.machine.state(), SessionState::Working);
     run.run_until(run.now + 1_000_000_000, &|_| false);
-    let ev = run.machine.shutdown(run.now, &mut run.robot, "Ctrl-C");
+    let ev = run.machine.shutdown(
+        run.now,
+        &mut run.robot,
+        ergocell::session::Interruption::Stopped {
+            signal: ergocell::session::StopSignal::Interrupt,
+        },
+    );
     assert!(matches!(
         ev.last(),
         Some(SessionEvent::StateChanged {
@@ -1060,9 +1066,8 @@ fn an_operator_whose_interval_straddles_a_boundary_is_served_at_once() {
 #[test]
 fn a_robot_that_is_not_ready_is_held_before_its_first_goal_and_the_session_resumes_once_it_is() {
     let mut run = Run::new("unready", Some(TrajectoryClass::C2), 1);
-    run.machine.set_robot_unready(Some(
-        "driver not configured (robot_manager/is_configured)".into(),
-    ));
+    run.machine
+        .set_robot_unready(Some(RobotUnready::DriverNotConfigured));
     run.run_until(15_000_000_000, &|m| m.state() == SessionState::Held);
     assert_eq!(run.machine.state(), SessionState::Held);
     assert!(run.machine.lock_sha256().is_some(), "locked, then held");
@@ -1073,10 +1078,12 @@ fn a_robot_that_is_not_ready_is_held_before_its_first_goal_and_the_session_resum
         .received
         .iter()
         .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
-    assert_eq!(
-        run.machine.hold_reason(),
-        Some("driver not configured (robot_manager/is_configured)")
-    );
+    assert!(matches!(
+        run.machine.held_for(),
+        Some(HoldReason::RobotNotReady {
+            unready: RobotUnready::DriverNotConfigured
+        })
+    ));
     // Ready: the session resumes from home and sends the first leg.
     run.machine.set_robot_unready(None);
     run.run_until(run.now + 2_000_000_000, &|m| {
@@ -1089,13 +1096,17 @@ fn a_robot_that_is_not_ready_is_held_before_its_first_goal_and_the_session_resum
     ));
     // Unready again mid-leg (joint states stale): held at once.
     run.step(&|_| true);
-    run.machine
-        .set_robot_unready(Some("joint states stale".into()));
+    let stale = RobotUnready::JointStatesStale { timeout_s: 0.1 };
+    run.machine.set_robot_unready(Some(stale.clone()));
     run.step(&|_| true);
     assert_eq!(run.machine.state(), SessionState::Held);
     assert!(matches!(
+        run.machine.held_for(),
+        Some(HoldReason::RobotNotReady { unready }) if *unready == stale
+    ));
+    assert!(matches!(
         run.robot.received.last(),
-        Some((_, RobotCommand::Hold { reason })) if reason == "joint states stale"
+        Some((_, RobotCommand::Hold { reason })) if *reason == stale.to_string()
     ));
 }
 

@@ -12,7 +12,7 @@ use std::time::Duration;
 
 use futures::StreamExt as _;
 use ros2_client::action::ActionClient;
-use ros2_client::action_msgs::GoalStatusEnum;
+pub use ros2_client::action_msgs::GoalStatusEnum;
 use ros2_client::builtin_interfaces::Time;
 use tokio::sync::mpsc;
 
@@ -78,10 +78,11 @@ pub enum ControllerReport {
         count: u64,
         max_error_rad: Option<f64>,
     },
-    /// The goal's end: its status (`succeeded`, `aborted`, `canceled`, …) and the result.
+    /// The goal's end: its status (succeeded, aborted, canceled, …) and the result. What it means
+    /// for the session is the cell's rule (`ergocell_cell::session::GoalAnswer::failure`).
     Finished {
         label: GoalLabel,
-        status: &'static str,
+        status: GoalStatusEnum,
         error_code: i32,
         error_string: String,
         feedback_count: u64,
@@ -89,32 +90,6 @@ pub enum ControllerReport {
 }
 
 impl ControllerReport {
-    /// The reason to hold the robot and end the session, if this report is one: a rejected,
-    /// unanswered, failed or aborted goal, or one that ended with an error code. A canceled goal is
-    /// not (ergocell cancels only when it holds).
-    pub fn failure(&self) -> Option<String> {
-        match self {
-            Self::Rejected { label } => Some(format!("the controller rejected the goal ({label})")),
-            Self::NoResponse { label, waited_s } => Some(format!(
-                "the controller did not answer the goal ({label}) within {waited_s:.1} s"
-            )),
-            Self::Failed { label, reason } => Some(format!("the goal ({label}) failed: {reason}")),
-            Self::Finished {
-                label,
-                status,
-                error_code,
-                error_string,
-                ..
-            } if *status != "canceled" && (*status != "succeeded" || *error_code != 0) => {
-                Some(format!(
-                    "the controller {status} the goal ({label}): {}",
-                    result_text(*error_code, error_string)
-                ))
-            }
-            _ => None,
-        }
-    }
-
     /// Whether a goal is still running after this report (accepted, or sending feedback).
     pub fn goal_running(&self) -> bool {
         matches!(self, Self::Accepted { .. } | Self::Feedback { .. })
@@ -145,7 +120,8 @@ impl ControllerReport {
                 error_string,
                 feedback_count,
             } => format!(
-                "goal {status} ({label}): {} after {feedback_count} feedback messages",
+                "goal {} ({label}): {} after {feedback_count} feedback messages",
+                status_name(*status),
                 result_text(*error_code, error_string)
             ),
         }
@@ -167,7 +143,7 @@ impl ControllerReport {
         match self {
             Self::Accepted { label } => base(K::Accepted, label),
             Self::Rejected { label } => ControllerEvent {
-                text: self.failure().unwrap_or_default(),
+                text: format!("the controller rejected the goal ({label})"),
                 ..base(K::Rejected, label)
             },
             Self::NoResponse { label, .. } => ControllerEvent {
@@ -195,7 +171,7 @@ impl ControllerReport {
                 error_string,
                 feedback_count,
             } => ControllerEvent {
-                status: (*status).to_owned(),
+                status: status_name(*status).to_owned(),
                 error_code: *error_code,
                 text: error_string.clone(),
                 feedback_count: u32::try_from(*feedback_count).unwrap_or(u32::MAX),
@@ -215,7 +191,8 @@ fn result_text(error_code: i32, error_string: &str) -> String {
     }
 }
 
-fn status_name(s: GoalStatusEnum) -> &'static str {
+/// The status in `action_msgs`' words, lower case: the `status` of the controller event.
+pub fn status_name(s: GoalStatusEnum) -> &'static str {
     match s {
         GoalStatusEnum::Unknown => "unknown",
         GoalStatusEnum::Accepted => "accepted",
@@ -290,7 +267,7 @@ pub async fn run_controller<F>(
                     report(match r {
                         Ok((status, res)) => ControllerReport::Finished {
                             label: label.clone(),
-                            status: status_name(status),
+                            status,
                             error_code: res.error_code,
                             error_string: res.error_string,
                             feedback_count: count,
@@ -342,54 +319,18 @@ mod tests {
     use super::*;
 
     #[test]
-    fn rejections_aborts_and_error_codes_hold_with_the_controllers_reason_cancels_do_not() {
+    fn a_report_becomes_its_controller_event_with_the_status_and_leg_as_fields() {
         let l = || GoalLabel {
             leg_id: crate::msg::ControllerEvent::LEG_TO_HANDOVER,
             text: "home → handover".to_owned(),
         };
-        assert!(ControllerReport::Rejected { label: l() }
-            .failure()
-            .is_some_and(|r| r.contains("rejected the goal (home → handover)")));
         let aborted = ControllerReport::Finished {
             label: l(),
-            status: "aborted",
+            status: GoalStatusEnum::Aborted,
             error_code: -4,
             error_string: "joint_2 0.3 rad off".into(),
             feedback_count: 10,
         };
-        assert_eq!(
-            aborted.failure().as_deref(),
-            Some(
-                "the controller aborted the goal (home → handover): PATH_TOLERANCE_VIOLATED (-4): \
-                 joint_2 0.3 rad off"
-            )
-        );
-        let odd = ControllerReport::Finished {
-            label: l(),
-            status: "succeeded",
-            error_code: -5,
-            error_string: String::new(),
-            feedback_count: 0,
-        };
-        assert!(odd
-            .failure()
-            .is_some_and(|r| r.contains("GOAL_TOLERANCE_VIOLATED (-5)")));
-        let ok = ControllerReport::Finished {
-            label: l(),
-            status: "succeeded",
-            error_code: 0,
-            error_string: String::new(),
-            feedback_count: 250,
-        };
-        assert_eq!(ok.failure(), None);
-        let canceled = ControllerReport::Finished {
-            label: l(),
-            status: "canceled",
-            error_code: 0,
-            error_string: String::new(),
-            feedback_count: 3,
-        };
-        assert_eq!(canceled.failure(), None);
         let m = aborted.to_message(7);
         assert_eq!(
             (
@@ -424,11 +365,5 @@ mod tests {
             .to_message(0)
             .max_error
             .is_nan());
-        assert!(ControllerReport::NoResponse {
-            label: l(),
-            waited_s: 5.0
-        }
-        .failure()
-        .is_some_and(|r| r.contains("did not answer")));
     }
 }

@@ -173,7 +173,8 @@ impl MonitorLimits {
 }
 
 /// Why the monitor stopped trusting the execution.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Deviation {
     /// A joint beyond its path tolerance.
     Path {

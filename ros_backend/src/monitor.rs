@@ -25,11 +25,15 @@ pub enum MonitorNote {
     Sample(JointState, i64),
     /// The execution deviated: the goal was cancelled and the robot held already.
     Deviation {
+        deviation: ergocell_robot::monitor::Deviation,
         event: ControllerEvent,
         held_after_ms: f64,
     },
-    /// No joint state for longer than the timeout.
-    Stale(ControllerEvent),
+    /// No joint state for longer than `timeout_s`.
+    Stale {
+        event: ControllerEvent,
+        timeout_s: f64,
+    },
     /// Joint states again after a stale spell.
     Back(ControllerEvent),
 }
@@ -142,6 +146,7 @@ impl<T: TrajectoryTopic> Judge<T> {
                 event.max_error = worst;
                 event.sample_stamp = js.header.stamp;
                 notes.push(MonitorNote::Deviation {
+                    deviation: d,
                     event,
                     held_after_ms,
                 });
@@ -168,12 +173,10 @@ impl<T: TrajectoryTopic> Judge<T> {
         self.stale = true;
         let why = format!("joint states stale (none for more than {timeout_s} s)");
         tracing::warn!(age_s = age, "{why}");
-        Some(MonitorNote::Stale(controller_event(
-            now,
-            ControllerEventKind::Monitor,
-            &no_leg(),
-            why,
-        )))
+        Some(MonitorNote::Stale {
+            event: controller_event(now, ControllerEventKind::Monitor, &no_leg(), why),
+            timeout_s,
+        })
     }
 }
 

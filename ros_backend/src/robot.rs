@@ -1,21 +1,26 @@
 //! The robot over ROS 2: commands out on the controller's trajectory topic or as FollowJointTrajectory
-//! goals, positions in from `/joint_states`, the KUKA driver's state, and what each report from the
-//! robot side means for the session ([`RobotInput`], [`feed`]).
+//! goals, positions in from `/joint_states`, and each report of the robot side (the controller's
+//! answers, the monitor's notes, the KUKA driver's state) turned into the cell's
+//! [`ergocell_cell::session::RobotReport`] ([`RobotInput`], [`feed`]). What a report means for the
+//! session (a failure, readiness) is the cell's rule (`ergocell_cell::session::robot_side`), not
+//! decided here.
 //!
 //! The transport is behind [`TrajectoryTopic`] (a ROS 2 publisher on a cell; a fake in tests) and
-//! the FollowJointTrajectory task's channel, so the rules here are tested without DDS
+//! the FollowJointTrajectory task's channel, so the path is tested without DDS
 //! (`tests/failure_table.rs`).
 
 use std::sync::{Arc, Mutex};
 
 use ergocell_bridge::action::GoalTolerances;
+use ergocell_bridge::controller::GoalStatusEnum;
 use ergocell_bridge::controller::{ControllerCommand, ControllerReport, GoalLabel};
 use ergocell_bridge::msg::{
     ControllerEvent, ControllerEventKind, HardwareEvent, JointState, JointTrajectory,
 };
 use ergocell_bridge::transport::{Publisher, RosConfig};
 use ergocell_cell::session::{
-    BackendError, CellLoop, CellOutputs, Leg, LegTrajectory, RobotCommand, RobotSink,
+    BackendError, CellLoop, CellOutputs, DriverEvent, DriverStop, GoalAnswer, GoalStatus, Leg,
+    LegTrajectory, ResultCode, RobotCommand, RobotReport, RobotSink, RobotUnready,
 };
 use ergocell_robot::monitor::{ExecutionMonitor, MonitorCaps, MonitorLimits};
 
@@ -53,10 +58,6 @@ pub struct RosRobot<T: TrajectoryTopic = Publisher<JointTrajectory>> {
     ros: RosConfig,
     monitor: SharedMonitor,
     events: EventQueue,
-    /// The driver's state, when `[ros] driver_state` reads it.
-    driver: Option<DriverState>,
-    /// What was last said about the driver: nothing yet, or its readiness (`None`: ready).
-    driver_said: Said,
     /// A goal the controller accepted and has not finished.
     goal_outstanding: bool,
     /// After the monitor's deviation: sample arrival → cancel and hold published, milliseconds.
@@ -71,7 +72,6 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         action: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
         ros: RosConfig,
     ) -> Self {
-        let driver = ros.driver_state.then(DriverState::default);
         Self {
             topic,
             action,
@@ -79,8 +79,6 @@ impl<T: TrajectoryTopic> RosRobot<T> {
             ros,
             monitor: Arc::new(Mutex::new(None)),
             events: Arc::new(Mutex::new(Vec::new())),
-            driver,
-            driver_said: Said::Nothing,
             goal_outstanding: false,
             held_after_ms: None,
         }
@@ -344,54 +342,80 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
     }
 }
 
-/// What was last said about the driver's readiness.
-#[derive(Debug, Clone, PartialEq, Eq)]
-enum Said {
-    Nothing,
-    /// `None`: ready; `Some(why)`: not ready.
-    Readiness(Option<String>),
+/// The leg a goal's label names (its `ControllerEvent::LEG_*` constant).
+pub fn leg_of(label: &GoalLabel) -> Option<Leg> {
+    match label.leg_id {
+        ControllerEvent::LEG_TO_HANDOVER => Some(Leg::ToHandover),
+        ControllerEvent::LEG_TO_HOME => Some(Leg::ToHome),
+        _ => None,
+    }
 }
 
-/// The KUKA driver's state as kuka_drivers reports it (`[ros] driver_state`).
-#[derive(Debug, Default)]
-pub struct DriverState {
-    configured: Option<bool>,
-    controlling: bool,
-    /// "stopped by user (4)" / "stopped by error (6)" since the last "control started".
-    stopped: Option<String>,
+/// `action_msgs`' goal status in the cell's type.
+pub fn goal_status(status: GoalStatusEnum) -> GoalStatus {
+    match status {
+        GoalStatusEnum::Unknown => GoalStatus::Unknown,
+        GoalStatusEnum::Accepted => GoalStatus::Accepted,
+        GoalStatusEnum::Executing => GoalStatus::Executing,
+        GoalStatusEnum::Canceling => GoalStatus::Canceling,
+        GoalStatusEnum::Succeeded => GoalStatus::Succeeded,
+        GoalStatusEnum::Canceled => GoalStatus::Canceled,
+        GoalStatusEnum::Aborted => GoalStatus::Aborted,
+    }
 }
 
-impl DriverState {
-    pub fn on_configured(&mut self, configured: bool) {
-        self.configured = Some(configured);
+/// The FollowJointTrajectory task's report in the cell's types (what it means is the cell's rule).
+pub fn goal_answer(report: &ControllerReport) -> GoalAnswer {
+    match report {
+        ControllerReport::Accepted { label } => GoalAnswer::Accepted { leg: leg_of(label) },
+        ControllerReport::Rejected { label } => GoalAnswer::Rejected { leg: leg_of(label) },
+        ControllerReport::NoResponse { label, waited_s } => GoalAnswer::Unanswered {
+            leg: leg_of(label),
+            waited_s: *waited_s,
+        },
+        ControllerReport::Failed { label, reason } => GoalAnswer::Lost {
+            leg: leg_of(label),
+            transport: reason.clone(),
+        },
+        ControllerReport::CancelRequested { label } => {
+            GoalAnswer::CancelRequested { leg: leg_of(label) }
+        }
+        ControllerReport::Feedback {
+            label,
+            count,
+            max_error_rad,
+        } => GoalAnswer::Feedback {
+            leg: leg_of(label),
+            count: *count,
+            max_error_rad: *max_error_rad,
+        },
+        ControllerReport::Finished {
+            label,
+            status,
+            error_code,
+            error_string,
+            feedback_count,
+        } => GoalAnswer::Finished {
+            leg: leg_of(label),
+            status: goal_status(*status),
+            result: ResultCode::from_code(*error_code),
+            error_string: error_string.clone(),
+            feedback_count: *feedback_count,
+        },
     }
+}
 
-    pub fn on_event(&mut self, e: &HardwareEvent) {
-        use ergocell_bridge::msg::HardwareEvent as H;
-        match e.event {
-            H::CONTROL_STARTED => {
-                self.controlling = true;
-                self.stopped = None;
-            }
-            H::CONTROL_STOPPED | H::ERROR => {
-                self.controlling = false;
-                self.stopped = Some(e.describe());
-            }
-            _ => {}
-        }
-    }
-
-    /// Why no goal may be sent now, if none may.
-    pub fn unready(&self) -> Option<String> {
-        match self.configured {
-            None => return Some("waiting for the KUKA driver: no is_configured yet".to_owned()),
-            Some(false) => return Some("the KUKA driver is not configured".to_owned()),
-            Some(true) => {}
-        }
-        if let Some(s) = &self.stopped {
-            return Some(format!("the KUKA driver reports: {s}"));
-        }
-        (!self.controlling).then(|| "waiting for the KUKA driver: control not started".to_owned())
+/// kuka_drivers' hardware event in the cell's type.
+pub fn driver_event(e: &HardwareEvent) -> DriverEvent {
+    match e.event {
+        HardwareEvent::CONTROL_STARTED => DriverEvent::ControlStarted,
+        HardwareEvent::CONTROL_STOPPED => DriverEvent::Stopped {
+            by: DriverStop::ByUser,
+        },
+        HardwareEvent::ERROR => DriverEvent::Stopped {
+            by: DriverStop::ByError,
+        },
+        code => DriverEvent::Other { code },
     }
 }
 
@@ -408,10 +432,9 @@ pub enum RobotInput {
     DriverEvent(HardwareEvent),
 }
 
-/// What the robot side's report means for the session, applied to `cell`: a deviation or a failed
-/// goal ends the session held (the first reason wins); stale joint states and a driver that is not
-/// ready hold the robot until they clear; every report worth keeping becomes a controller event.
-/// Returns the line to print for a person, if any.
+/// Hands the robot side's report to `cell` in the cell's types (what it means is the cell's rule:
+/// `CellLoop::report`) and keeps a controller event of every report worth keeping. Returns the line
+/// to print for a person, if any.
 pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
     cell: &mut CellLoop<RosRobot<T>, O>,
     now_nanos: i64,
@@ -422,6 +445,7 @@ pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
         RobotInput::Monitor(note) => match note {
             MonitorNote::Sample(..) => None,
             MonitorNote::Deviation {
+                deviation,
                 event,
                 held_after_ms,
             } => {
@@ -429,21 +453,20 @@ pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
                     "{} — cancelled and held {held_after_ms:.3} ms after the sample arrived",
                     event.text
                 );
-                let why = event.text.clone();
                 robot.held_after_ms = Some(held_after_ms);
                 robot.push(event);
-                cell.robot_failed(why);
+                cell.report(RobotReport::Deviation(deviation));
                 Some(line)
             }
-            MonitorNote::Stale(event) => {
-                let why = event.text.clone();
+            MonitorNote::Stale { event, timeout_s } => {
+                let line = event.text.clone();
                 robot.push(event);
-                cell.set_joint_states_stale(Some(why.clone()));
-                Some(why)
+                cell.report(RobotReport::JointStatesStale { timeout_s });
+                Some(line)
             }
             MonitorNote::Back(event) => {
                 robot.push(event);
-                cell.set_joint_states_stale(None);
+                cell.report(RobotReport::JointStatesBack);
                 None
             }
         },
@@ -456,41 +479,40 @@ pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
             }
             robot.push(report.to_message(now_nanos));
             let line = format!("controller: {}", report.describe());
-            if let Some(why) = report.failure() {
-                cell.robot_failed(why);
-            }
+            cell.report(RobotReport::Goal(goal_answer(&report)));
             Some(line)
         }
         RobotInput::DriverConfigured(configured) => {
-            robot.driver.as_mut()?.on_configured(configured);
-            driver_readiness(cell, now_nanos)
+            let effect = cell.report(RobotReport::DriverConfigured(configured));
+            announce_driver(cell, now_nanos, effect.driver_readiness)
         }
         RobotInput::DriverEvent(e) => {
             let line = format!("driver: {} ({})", e.describe(), e.robot_name);
-            robot.driver.as_mut()?.on_event(&e);
-            Some(match driver_readiness(cell, now_nanos) {
-                Some(more) => format!("{line}\n  {more}"),
-                None => line,
-            })
+            let effect = cell.report(RobotReport::DriverEvent(driver_event(&e)));
+            Some(
+                match announce_driver(cell, now_nanos, effect.driver_readiness) {
+                    Some(more) => format!("{line}\n  {more}"),
+                    None => line,
+                },
+            )
         }
     }
 }
 
-/// The driver's readiness into the cell, said (and published as an event) when it changes.
-pub fn driver_readiness<T: TrajectoryTopic, O: CellOutputs>(
+/// The driver's readiness, when it changed (`Some(None)`: now ready), published as a controller
+/// event and said.
+pub fn announce_driver<T: TrajectoryTopic, O: CellOutputs>(
     cell: &mut CellLoop<RosRobot<T>, O>,
     now_nanos: i64,
+    readiness: Option<Option<RobotUnready>>,
 ) -> Option<String> {
-    let robot = cell.robot_mut();
-    let why = robot.driver.as_ref()?.unready();
-    if robot.driver_said == Said::Readiness(why.clone()) {
-        return None;
-    }
-    let text = why
-        .clone()
-        .unwrap_or_else(|| "configured and controlling".to_owned());
+    let why = readiness?;
+    let text = why.as_ref().map_or_else(
+        || "configured and controlling".to_owned(),
+        ToString::to_string,
+    );
     let status = if why.is_some() { "not_ready" } else { "ready" };
-    robot.push(ControllerEvent {
+    cell.robot_mut().push(ControllerEvent {
         status: status.to_owned(),
         ..controller_event(
             now_nanos,
@@ -499,8 +521,6 @@ pub fn driver_readiness<T: TrajectoryTopic, O: CellOutputs>(
             text.clone(),
         )
     });
-    robot.driver_said = Said::Readiness(why.clone());
-    cell.set_driver_unready(why);
     Some(format!("driver: {text}"))
 }
 

@@ -32,8 +32,8 @@ use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    trajectory_class, CellLoop, CellOutputs, LandmarkSource, Leg, OutputError, RobotCommand,
-    RobotSink, SessionEvent, SessionMachine, SessionState,
+    trajectory_class, CellLoop, CellOutputs, Interruption, LandmarkSource, Leg, OutputError,
+    RobotCommand, RobotSink, SessionEnd, SessionEvent, SessionMachine, SessionState,
 };
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
@@ -761,12 +761,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         start,
         rula: "RULA -".to_owned(),
     };
-    let why = format!(
-        "the demo's time limit was reached: {limit_secs:.1} s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for the robot's way home)",
-        limit_secs - MARGIN_SECS
-    );
     let mut cell = CellLoop::new(machine, robot, outputs)
-        .with_deadline(start + (limit_secs * 1e9).round() as i64, why);
+        .with_deadline(start + (limit_secs * 1e9).round() as i64, limit_secs);
     let mut twin = Twin {
         source: SimSource::new(sim),
         faults: FaultPlayer::new(schedule),
@@ -804,6 +800,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     let s = machine.summary();
     if !s.ended {
+        if let Some(SessionEnd::Interrupted {
+            by: Interruption::TimeLimit { limit_s },
+        }) = &s.end
+        {
+            anyhow::bail!(
+                "the session did not end normally: the demo's time limit was reached: {limit_s:.1} \
+                 s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for the robot's way \
+                 home)",
+                limit_s - MARGIN_SECS
+            );
+        }
         anyhow::bail!("the session did not end normally: {}", s.end_reason);
     }
     Ok(())
@@ -851,7 +858,7 @@ impl Twin<'_> {
             }
             let step_started = instant();
             if let Some(signal) = stop.get() {
-                cell.stop(signal.name());
+                cell.stop(signal.stop());
             }
             // Ctrl-C, the time limit, a recording that failed: ended (held) before this tick's views.
             if cell.check(now).is_some() {

@@ -18,7 +18,7 @@ use anyhow::Context as _;
 use ergocell::display::Display;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    CellLoop, CellOutputs, EndCause, OutputError, SessionEvent, SessionMachine, SessionState,
+    CellLoop, CellOutputs, Interruption, OutputError, SessionEvent, SessionMachine, SessionState,
 };
 use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
 use ergocell_bridge::controller::{run_controller, ControllerCommand, ControllerReport};
@@ -38,7 +38,7 @@ use ergocell_ros_backend::messages;
 use ergocell_ros_backend::monitor::{monitor_task, Judge, MonitorNote, MonitorStats};
 use ergocell_ros_backend::outputs::RosOutputs;
 use ergocell_ros_backend::recording::{self, topics, McapRecorder, Recording};
-use ergocell_ros_backend::robot::{driver_readiness, feed, radians_list, RobotInput, RosRobot};
+use ergocell_ros_backend::robot::{announce_driver, feed, radians_list, RobotInput, RosRobot};
 use ergocell_ros_backend::robot_markers::RobotGeometry;
 use futures::StreamExt as _;
 
@@ -425,9 +425,12 @@ async fn serve(
         },
     };
     let mut cell = CellLoop::new(machine, robot, outputs);
+    if ros.driver_state {
+        cell = cell.with_driver_state();
+    }
     if let Some(limit) = args.max_secs {
         let at = clock.now() + (limit * 1e9).round() as i64;
-        cell = cell.with_deadline(at, "--max-secs reached");
+        cell = cell.with_deadline(at, limit);
     }
     let scope = network_scope(ros)?;
     print_start(ros, topics.cameras.len(), &scope);
@@ -486,7 +489,8 @@ async fn drive(
     let p = &cell.outputs().ros.publishers;
     publish(&p.session_state, first.clone()).await?;
     publish(&p.session_events, first).await?;
-    say(driver_readiness(cell, clock.now()));
+    let readiness = cell.driver_readiness();
+    say(announce_driver(cell, clock.now(), readiness));
     loop {
         let mut views = Vec::new();
         let input = tokio::select! {
@@ -532,7 +536,7 @@ async fn drive(
             tracing::warn!(step_s = step as f64 * 1e-9, "wall clock stepped");
         }
         if let Some(signal) = stop.get() {
-            cell.stop(signal.name());
+            cell.stop(signal.stop());
         }
         // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
         cell.outputs_mut().ros.recording.with(|rec| rec.tick(now));
@@ -545,7 +549,7 @@ async fn drive(
         };
         sessions_done += 1;
         let more = args.sessions.is_none_or(|n| sessions_done < n);
-        if ending.cause == EndCause::Session && cell.machine().summary().ended && more {
+        if ending.end.is_normal() && more {
             print_summary(cell.machine(), inbox.rejected());
             cell.next_session(setup.new_machine()?);
             if let Some(d) = &cell.outputs().display {
@@ -573,7 +577,11 @@ async fn drive(
     if args.latency_report {
         latency.print();
     }
-    if cell.ended().is_some_and(|e| e.cause == EndCause::Stopped) {
+    if cell
+        .ended()
+        .and_then(|e| e.interruption())
+        .is_some_and(|by| matches!(by, Interruption::Stopped { .. }))
+    {
         if let Some(signal) = stop.get() {
             return Err(Stopped {
                 signal,
@@ -587,6 +595,11 @@ async fn drive(
     }
     let machine = cell.machine();
     if machine.state() == SessionState::SessionEnded && !machine.summary().ended {
+        if let Some(Interruption::TimeLimit { limit_s }) =
+            cell.ended().and_then(|e| e.interruption())
+        {
+            anyhow::bail!("session interrupted: --max-secs {limit_s} reached (robot held)");
+        }
         anyhow::bail!("session {}", machine.summary().end_reason);
     }
     Ok(())

@@ -24,9 +24,14 @@ pub enum Signal {
 impl Signal {
     /// The name shown in the output and recorded as the session's end reason.
     pub fn name(self) -> &'static str {
+        self.stop().name()
+    }
+
+    /// The stop the session ends for.
+    pub fn stop(self) -> ergocell_cell::session::StopSignal {
         match self {
-            Self::Interrupt => "Ctrl-C (SIGINT)",
-            Self::Terminate => "SIGTERM",
+            Self::Interrupt => ergocell_cell::session::StopSignal::Interrupt,
+            Self::Terminate => ergocell_cell::session::StopSignal::Terminate,
         }
     }
 

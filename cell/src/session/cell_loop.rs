@@ -19,6 +19,8 @@
 use ergocell_perception::View2;
 use ergocell_robot::TrajectoryClass;
 
+use super::end::{Interruption, SessionEnd, StopSignal};
+use super::robot_side::{DriverState, ReportEffect, RobotFailure, RobotReport, RobotUnready};
 use super::{RobotSink, SessionEvent, SessionMachine, SessionState};
 
 /// An output of the cell (a publisher, a recorder, a display): it sees every step's events.
@@ -51,40 +53,33 @@ impl CellOutputs for () {
 }
 
 /// An output that cannot go on: its name ("recording", "ROS 2 publisher") and why.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error, serde::Serialize)]
 #[error("{output} failed: {why}")]
 pub struct OutputError {
     pub output: &'static str,
     pub why: String,
 }
 
-/// Why the loop ended the session.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum EndCause {
-    /// The machine ended the session itself (the operator left, or it could not go on: its summary
-    /// says which).
-    Session,
-    /// An output failed ([`OutputError`]).
-    OutputFailed,
-    /// The robot side failed ([`CellLoop::robot_failed`]).
-    RobotFailed,
-    /// A stop was asked for ([`CellLoop::stop`]).
-    Stopped,
-    /// The time limit ([`CellLoop::with_deadline`]) passed.
-    TimeLimit,
-}
-
-/// How and when the session ended.
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// How and when the session ended: the machine's own end, or an [`Interruption`] of the loop's
+/// rules.
+#[derive(Debug, Clone)]
 pub struct Ending {
-    pub cause: EndCause,
-    /// The reason as the machine recorded it (the hold's reason for an early end).
-    pub reason: String,
+    pub end: SessionEnd,
     pub stamp_nanos: i64,
 }
 
+impl Ending {
+    /// The interruption that ended the session early, if one did.
+    pub fn interruption(&self) -> Option<&Interruption> {
+        match &self.end {
+            SessionEnd::Interrupted { by } => Some(by),
+            _ => None,
+        }
+    }
+}
+
 /// What one [`CellLoop::step`] did.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Step {
     /// The events of the step (or of the shutdown), as the outputs saw them.
     pub events: Vec<SessionEvent>,
@@ -92,11 +87,21 @@ pub struct Step {
     pub ended: Option<Ending>,
 }
 
-/// The robot side's readiness, as its two reporters last said it.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+/// The robot side's readiness: the driver's state (when the backend reads it) and the joint
+/// states' freshness.
+#[derive(Debug, Clone, Default, PartialEq)]
 struct Readiness {
-    driver: Option<String>,
-    joint_states: Option<String>,
+    driver: Option<DriverState>,
+    joint_states: Option<RobotUnready>,
+}
+
+impl Readiness {
+    fn unready(&self) -> Option<RobotUnready> {
+        self.driver
+            .as_ref()
+            .and_then(DriverState::unready)
+            .or_else(|| self.joint_states.clone())
+    }
 }
 
 /// One session's loop: the machine, the robot sink, the outputs and the early-end rules.
@@ -104,9 +109,9 @@ pub struct CellLoop<R, O> {
     machine: SessionMachine,
     robot: R,
     outputs: O,
-    deadline: Option<(i64, String)>,
-    robot_failure: Option<String>,
-    stop: Option<String>,
+    deadline: Option<(i64, f64)>,
+    robot_failure: Option<RobotFailure>,
+    stop: Option<StopSignal>,
     readiness: Readiness,
     ended: Option<Ending>,
 }
@@ -125,11 +130,26 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         }
     }
 
-    /// Ends the session, holding the robot, at the first step after `at_nanos`, with `why`.
+    /// Ends the session, holding the robot, at the first step after `at_nanos`
+    /// ([`Interruption::TimeLimit`] with `limit_s`, the limit as the caller set it).
     #[must_use]
-    pub fn with_deadline(mut self, at_nanos: i64, why: impl Into<String>) -> Self {
-        self.deadline = Some((at_nanos, why.into()));
+    pub fn with_deadline(mut self, at_nanos: i64, limit_s: f64) -> Self {
+        self.deadline = Some((at_nanos, limit_s));
         self
+    }
+
+    /// The robot may move only while the KUKA driver is configured and controlling (its
+    /// `is_configured` and hardware events, [`RobotReport::DriverConfigured`] and
+    /// [`RobotReport::DriverEvent`]): until it says so, the session holds.
+    #[must_use]
+    pub fn with_driver_state(mut self) -> Self {
+        self.readiness.driver = Some(DriverState::default());
+        self
+    }
+
+    /// The driver's readiness (`Some(None)`: ready), when the loop reads the driver's state.
+    pub fn driver_readiness(&self) -> Option<Option<RobotUnready>> {
+        self.readiness.driver.as_ref().map(DriverState::unready)
     }
 
     pub fn machine(&self) -> &SessionMachine {
@@ -162,25 +182,47 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         (self.machine, self.robot, self.outputs)
     }
 
-    /// The robot side failed (`why`: the controller's reason, the monitor's verdict): the session
-    /// ends, held, at the next step. The first failure is the reason; later ones are dropped.
-    pub fn robot_failed(&mut self, why: impl Into<String>) {
-        self.robot_failure.get_or_insert_with(|| why.into());
+    /// A report from the robot side, applied by the rules of [`super::robot_side`]: a failure ends
+    /// the session, held, at the next step (the first failure is the reason; later ones are
+    /// dropped); the driver's state and stale joint states hold the robot until they clear.
+    pub fn report(&mut self, report: RobotReport) -> ReportEffect {
+        let mut effect = ReportEffect::default();
+        let driver_before = self.driver_readiness();
+        match report {
+            RobotReport::Goal(answer) => effect.failure = answer.failure(),
+            RobotReport::Deviation(deviation) => {
+                effect.failure = Some(RobotFailure::Deviation { deviation });
+            }
+            RobotReport::JointStatesStale { timeout_s } => {
+                self.readiness.joint_states = Some(RobotUnready::JointStatesStale { timeout_s });
+            }
+            RobotReport::JointStatesBack => self.readiness.joint_states = None,
+            RobotReport::DriverConfigured(configured) => {
+                if let Some(d) = self.readiness.driver.as_mut() {
+                    d.on_configured(configured);
+                }
+            }
+            RobotReport::DriverEvent(event) => {
+                if let Some(d) = self.readiness.driver.as_mut() {
+                    d.on_event(event);
+                }
+            }
+        }
+        let driver_after = self.driver_readiness();
+        if driver_after != driver_before {
+            effect.driver_readiness = driver_after;
+        }
+        if let Some(failure) = &effect.failure {
+            if self.ended.is_none() {
+                self.robot_failure.get_or_insert_with(|| failure.clone());
+            }
+        }
+        effect
     }
 
-    /// A stop was asked for (`why`: "SIGINT", "SIGTERM"): the session ends, held, at the next step.
-    pub fn stop(&mut self, why: impl Into<String>) {
-        self.stop.get_or_insert_with(|| why.into());
-    }
-
-    /// The robot driver's readiness (`Some(why)` while it is not configured or not controlling).
-    pub fn set_driver_unready(&mut self, why: Option<String>) {
-        self.readiness.driver = why;
-    }
-
-    /// Whether the joint states are fresh (`Some(why)` while they are stale).
-    pub fn set_joint_states_stale(&mut self, why: Option<String>) {
-        self.readiness.joint_states = why;
+    /// A stop was asked for: the session ends, held, at the next step.
+    pub fn stop(&mut self, signal: StopSignal) {
+        self.stop.get_or_insert(signal);
     }
 
     /// The next session on the same robot and outputs (after the last one ended normally).
@@ -206,12 +248,7 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         if let Some(step) = self.check(now_nanos) {
             return step;
         }
-        let unready = self
-            .readiness
-            .driver
-            .clone()
-            .or_else(|| self.readiness.joint_states.clone());
-        self.machine.set_robot_unready(unready);
+        self.machine.set_robot_unready(self.readiness.unready());
         let events = self.machine.step(now_nanos, views, &mut self.robot);
         self.deliver(now_nanos, events)
     }
@@ -223,24 +260,22 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         if self.ended.is_some() {
             return Some(self.ended_step());
         }
-        let (cause, why) = self.early_end(now_nanos)?;
-        Some(self.end(now_nanos, cause, &why))
+        let by = self.early_end(now_nanos)?;
+        Some(self.end(now_nanos, by))
     }
 
-    /// Ends the session now, holding the robot, for `cause` with `why` (a caller's own reason: the
-    /// rules of [`CellLoop::step`] cover the usual ones).
-    pub fn end(&mut self, now_nanos: i64, cause: EndCause, why: &str) -> Step {
+    /// Ends the session now, holding the robot, for `by`.
+    fn end(&mut self, now_nanos: i64, by: Interruption) -> Step {
         if self.ended.is_some() {
             return self.ended_step();
         }
-        let events = self.machine.shutdown(now_nanos, &mut self.robot, why);
+        let events = self.machine.shutdown(now_nanos, &mut self.robot, by);
         if let Err(e) = self.outputs.session_step(now_nanos, &self.machine, &events) {
             // Already ending: the failure is reported, the robot is held either way.
             tracing::error!(error = %e, "an output failed while the session was ending");
         }
-        self.ended = Some(Ending {
-            cause,
-            reason: why.to_owned(),
+        self.ended = self.machine.summary().end.clone().map(|end| Ending {
+            end,
             stamp_nanos: now_nanos,
         });
         Step {
@@ -250,18 +285,18 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
     }
 
     /// The first reason to end now, in the rules' order.
-    fn early_end(&mut self, now_nanos: i64) -> Option<(EndCause, String)> {
-        if let Some(e) = self.outputs.take_failure() {
-            return Some((EndCause::OutputFailed, e.to_string()));
+    fn early_end(&mut self, now_nanos: i64) -> Option<Interruption> {
+        if let Some(error) = self.outputs.take_failure() {
+            return Some(Interruption::OutputFailed { error });
         }
-        if let Some(why) = self.robot_failure.take() {
-            return Some((EndCause::RobotFailed, why));
+        if let Some(failure) = self.robot_failure.take() {
+            return Some(Interruption::RobotFailed { failure });
         }
-        if let Some(why) = self.stop.clone() {
-            return Some((EndCause::Stopped, why));
+        if let Some(signal) = self.stop {
+            return Some(Interruption::Stopped { signal });
         }
-        match &self.deadline {
-            Some((at, why)) if now_nanos > *at => Some((EndCause::TimeLimit, why.clone())),
+        match self.deadline {
+            Some((at, limit_s)) if now_nanos > at => Some(Interruption::TimeLimit { limit_s }),
             _ => None,
         }
     }
@@ -269,16 +304,15 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
     /// The outputs see `events`; an output that fails ends the session at once, held.
     fn deliver(&mut self, now_nanos: i64, events: Vec<SessionEvent>) -> Step {
         if let Err(e) = self.outputs.session_step(now_nanos, &self.machine, &events) {
-            let mut step = self.end(now_nanos, EndCause::OutputFailed, &e.to_string());
+            let mut step = self.end(now_nanos, Interruption::OutputFailed { error: e });
             let mut all = events;
             all.append(&mut step.events);
             step.events = all;
             return step;
         }
-        if self.machine.state() == SessionState::SessionEnded {
-            self.ended = Some(Ending {
-                cause: EndCause::Session,
-                reason: self.machine.summary().end_reason.clone(),
+        if self.machine.state() == SessionState::SessionEnded && self.ended.is_none() {
+            self.ended = self.machine.summary().end.clone().map(|end| Ending {
+                end,
                 stamp_nanos: now_nanos,
             });
         }

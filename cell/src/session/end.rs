@@ -8,6 +8,8 @@ use std::fmt;
 use ergocell_robot::{RobotError, TrajectoryClass};
 use serde::{Serialize, Serializer};
 
+use super::cell_loop::OutputError;
+use super::robot_side::{RobotFailure, RobotUnready};
 use crate::error::ProviderError;
 
 /// Why the session ended without serving: the robot is held and does not move.
@@ -107,11 +109,57 @@ pub enum SessionEnd {
     },
     /// The session could not serve; the robot was held.
     Aborted { reason: AbortReason },
-    /// The caller stopped the session (a signal, a backend or output failure); the robot was held.
-    Interrupted {
-        /// The caller's reason, in its words.
-        why: String,
-    },
+    /// The session was ended early (a signal, the robot side or an output failed, the time
+    /// limit); the robot was held.
+    Interrupted { by: Interruption },
+}
+
+/// Why a session was ended early, before it could end by its own rules.
+#[derive(Debug, Clone, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Interruption {
+    /// An output failed (a recording that cannot be written: a cell that records must not run on
+    /// unrecorded).
+    OutputFailed { error: OutputError },
+    /// The robot side failed: the controller refused, aborted or did not answer a goal, or the
+    /// execution monitor saw a deviation.
+    RobotFailed { failure: RobotFailure },
+    /// A stop was asked for.
+    Stopped { signal: StopSignal },
+    /// The session's time limit passed.
+    TimeLimit { limit_s: f64 },
+}
+
+impl fmt::Display for Interruption {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::OutputFailed { error } => write!(f, "{error}"),
+            Self::RobotFailed { failure } => write!(f, "{failure}"),
+            Self::Stopped { signal } => f.write_str(signal.name()),
+            Self::TimeLimit { limit_s } => write!(f, "the time limit of {limit_s:.1} s passed"),
+        }
+    }
+}
+
+/// The stop a person or a service manager asked for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StopSignal {
+    /// Ctrl-C.
+    Interrupt,
+    /// systemd, `docker stop`, `timeout`.
+    Terminate,
+}
+
+impl StopSignal {
+    /// The signal's name as the console and the session's end reason show it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Interrupt => "Ctrl-C (SIGINT)",
+            Self::Terminate => "SIGTERM",
+        }
+    }
 }
 
 impl SessionEnd {
@@ -130,7 +178,7 @@ impl fmt::Display for SessionEnd {
                  the session)"
             ),
             Self::Aborted { reason } => write!(f, "aborted: {reason}"),
-            Self::Interrupted { why } => write!(f, "interrupted: {why} (robot held)"),
+            Self::Interrupted { by } => write!(f, "interrupted: {by} (robot held)"),
         }
     }
 }
@@ -146,8 +194,8 @@ pub enum HoldReason {
     /// far from the cell's).
     CamerasLost { max_frame_age_ms: i64 },
     /// The robot side is not ready (its driver not configured or not controlling, its joint states
-    /// stale), in the backend's words.
-    RobotNotReady { why: String },
+    /// stale).
+    RobotNotReady { unready: RobotUnready },
     /// The trajectory locked for this session is not the one the files give now.
     LockChanged { locked: String, now: String },
     /// The locked trajectory no longer verifies against its files and approvals.
@@ -158,10 +206,7 @@ pub enum HoldReason {
     /// Tracking is back, but the robot stopped between the locked trajectory's ends.
     StoppedBetweenEnds,
     /// The session was aborted or interrupted; the robot stays held.
-    Ended {
-        /// The end's words.
-        why: String,
-    },
+    Ended { end: SessionEnd },
 }
 
 impl HoldReason {
@@ -197,7 +242,14 @@ impl fmt::Display for HoldReason {
                 f,
                 "cameras lost: no camera frame newer than {max_frame_age_ms} ms"
             ),
-            Self::RobotNotReady { why } | Self::Ended { why } => f.write_str(why),
+            Self::RobotNotReady { unready } => write!(f, "{unready}"),
+            Self::Ended {
+                end: SessionEnd::Aborted { reason },
+            } => write!(f, "{reason}"),
+            Self::Ended {
+                end: SessionEnd::Interrupted { by },
+            } => write!(f, "{by}"),
+            Self::Ended { end } => write!(f, "{end}"),
             Self::LockChanged { locked, now } => write!(
                 f,
                 "the lock changed during the session ({locked} → {now}): staying held"
@@ -229,7 +281,7 @@ mod tests {
                 max_frame_age_ms: 500,
             },
             HoldReason::RobotNotReady {
-                why: "joint states stale (none for more than 0.1 s)".to_owned(),
+                unready: RobotUnready::JointStatesStale { timeout_s: 0.1 },
             },
             HoldReason::LockChanged {
                 locked: "a".repeat(64),
@@ -237,7 +289,11 @@ mod tests {
             },
             HoldReason::StoppedBetweenEnds,
             HoldReason::Ended {
-                why: "SIGTERM".to_owned(),
+                end: SessionEnd::Interrupted {
+                    by: Interruption::Stopped {
+                        signal: StopSignal::Terminate,
+                    },
+                },
             },
         ];
         let words: Vec<&str> = holds.iter().map(HoldReason::for_operator).collect();

@@ -8,7 +8,8 @@ use ergocell_robot::{SessionLock, TrajectoryClass};
 use ergocell_skeleton::{Landmark, Skeleton3};
 use nalgebra::Point3;
 
-use super::end::{AbortReason, HoldReason, SessionEnd};
+use super::end::{AbortReason, HoldReason, Interruption, SessionEnd};
+use super::robot_side::RobotUnready;
 use super::{
     leg_trajectory, trajectory_class, Leg, RobotCommand, RobotSink, SessionConfig, SessionEvent,
     SessionState, TrajectoryProvider,
@@ -105,7 +106,7 @@ pub struct SessionMachine {
     hold_reason: Option<(HoldReason, String)>,
     /// Why the robot side cannot be trusted to move right now (the driver not controlling, joint
     /// states stale), from the backend: the robot is held and nothing is sent until it clears.
-    robot_unready: Option<String>,
+    robot_unready: Option<RobotUnready>,
     tracking_back_since: Option<i64>,
     last_frame_stamp: Option<i64>,
     last_tracked: Option<(i64, Point3<f64>)>,
@@ -264,12 +265,13 @@ impl SessionMachine {
         }
     }
 
-    /// The robot side's readiness, from the backend: `Some(why)` while the robot must not move (its
-    /// driver is not configured or not controlling, its joint states are stale). From the next step
-    /// a session that has locked its trajectory holds the robot with `why` and sends no goal; once
-    /// it clears, the session resumes by its usual rules (tracking back for `resume_after_nanos`,
-    /// the robot at home or at the handover point, the lock still verified).
-    pub fn set_robot_unready(&mut self, why: Option<String>) {
+    /// The robot side's readiness (the cell loop's rules, [`super::robot_side`]): `Some(why)` while
+    /// the robot must not move (its driver is not configured or not controlling, its joint states
+    /// are stale). From the next step a session that has locked its trajectory holds the robot for
+    /// `why` and sends no goal; once it clears, the session resumes by its usual rules (tracking back
+    /// for `resume_after_nanos`, the robot at home or at the handover point, the lock still
+    /// verified).
+    pub fn set_robot_unready(&mut self, why: Option<RobotUnready>) {
         if why != self.robot_unready {
             if let Some(w) = &why {
                 tracing::warn!(reason = %w, "robot not ready");
@@ -281,38 +283,33 @@ impl SessionMachine {
     }
 
     /// Why the robot side is not ready, if it is not.
-    pub fn robot_unready(&self) -> Option<&str> {
-        self.robot_unready.as_deref()
+    pub fn robot_unready(&self) -> Option<&RobotUnready> {
+        self.robot_unready.as_ref()
     }
 
-    /// Ctrl-C or a backend failure: hold the robot and end the session.
+    /// Ctrl-C, a failure of the robot side or an output, the time limit: hold the robot and end
+    /// the session.
     pub fn shutdown(
         &mut self,
         now_nanos: i64,
         robot: &mut dyn RobotSink,
-        why: &str,
+        by: Interruption,
     ) -> Vec<SessionEvent> {
         let mut events = Vec::new();
         if self.state == SessionState::SessionEnded {
             return events;
         }
+        let why = by.to_string();
         let command = RobotCommand::Hold {
             reason: format!("session interrupted: {why}"),
         };
         self.send(now_nanos, robot, command, &mut events);
         // Said by the caller (the signal, the failure): not logged again here.
-        self.hold_reason = Some((
-            HoldReason::Ended {
-                why: why.to_owned(),
-            },
-            why.to_owned(),
-        ));
-        let end = SessionEnd::Interrupted {
-            why: why.to_owned(),
-        };
+        let end = SessionEnd::Interrupted { by };
+        self.hold_reason = Some((HoldReason::Ended { end: end.clone() }, why.clone()));
         self.summary.end_reason = end.to_string();
         self.summary.end = Some(end);
-        self.transition(now_nanos, SessionState::SessionEnded, why, &mut events);
+        self.transition(now_nanos, SessionState::SessionEnded, &why, &mut events);
         events
     }
 
@@ -586,9 +583,9 @@ impl SessionMachine {
             _ => {}
         }
         // The robot side not ready: held, nothing sent, until it is (then the usual resume rules).
-        if let Some(why) = self.robot_unready.clone() {
+        if let Some(unready) = self.robot_unready.clone() {
             self.tracking_back_since = None;
-            let reason = HoldReason::RobotNotReady { why };
+            let reason = HoldReason::RobotNotReady { unready };
             if self.state == SessionState::Held {
                 self.set_hold(reason);
             } else {
@@ -1009,8 +1006,8 @@ impl SessionMachine {
             reason: why.clone(),
         };
         self.send(now_nanos, robot, command, events);
-        self.hold_reason = Some((HoldReason::Ended { why: why.clone() }, why.clone()));
         let end = SessionEnd::Aborted { reason };
+        self.hold_reason = Some((HoldReason::Ended { end: end.clone() }, why.clone()));
         self.summary.end_reason = end.to_string();
         self.summary.end = Some(end);
         self.transition(now_nanos, SessionState::SessionEnded, &why, events);

@@ -26,10 +26,15 @@ pub mod cell_loop;
 pub mod dummy;
 pub mod end;
 mod machine;
+pub mod robot_side;
 
-pub use cell_loop::{CellLoop, CellOutputs, EndCause, Ending, OutputError};
-pub use end::{AbortReason, HoldReason, SessionEnd};
+pub use cell_loop::{CellLoop, CellOutputs, Ending, OutputError};
+pub use end::{AbortReason, HoldReason, Interruption, SessionEnd, StopSignal};
 pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
+pub use robot_side::{
+    DriverEvent, DriverState, DriverStop, GoalAnswer, GoalStatus, ReportEffect, ResultCode,
+    RobotFailure, RobotReport, RobotUnready,
+};
 
 use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
