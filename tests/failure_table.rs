@@ -65,7 +65,7 @@ fn ros(interface: RobotInterface, driver_state: bool) -> RosConfig {
 struct FakeTopic(Mutex<Vec<JointTrajectory>>);
 
 impl TrajectoryTopic for FakeTopic {
-    fn publish(&self, message: JointTrajectory) -> Result<(), String> {
+    fn publish(&self, message: JointTrajectory) -> Result<(), ergocell::session::BackendError> {
         self.0.lock().unwrap().push(message);
         Ok(())
     }
@@ -129,15 +129,8 @@ impl Harness {
                 (Some(tx), Some(rx))
             }
         };
-        let timeout_s = ros.joint_state_timeout_s;
         let robot = RosRobot::new(topic.clone(), action, ros);
-        let judge = Judge::new(
-            robot.monitor(),
-            robot.latest(),
-            robot.topic(),
-            robot.cancel_channel(),
-            timeout_s,
-        );
+        let judge = Judge::new(robot.monitor(), robot.latest(), robot.port());
         let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.055));
         script.cycles = 1;
         let sim = Simulation::new(

@@ -1,22 +1,23 @@
-//! The execution monitor's own task: it alone reads `/joint_states`, judges every sample as it
-//! arrives and, on the first deviation, cancels the goal and publishes the hold itself (the cell loop
-//! may be busy verifying a lock or fusing a frame; the robot must not wait for it), then tells the
-//! loop, which ends the session. Every 5 ms it checks for stale joint states.
+//! The execution monitor's own task: it alone reads `/joint_states`, has every sample judged as it
+//! arrives by the cell's [`ergocell_cell::session::ExecutionWatch`] (the rules the twin runs too)
+//! and, on the first deviation, sends the hold at once through the robot's own port (the cancel and
+//! the empty trajectory `RosRobot` sends for every hold: the cell loop may be busy verifying a lock
+//! or fusing a frame, and the robot must not wait for it), then tells the loop, which ends the
+//! session. Every 5 ms it checks for stale joint states.
 //!
-//! The judging is [`Judge`], synchronous and on an injected clock (tested without DDS);
-//! [`monitor_task`] only feeds it from the subscription and a timer.
+//! [`Judge`] is synchronous and on an injected clock (tested without DDS); [`monitor_task`] only
+//! feeds it from the subscription and a timer.
 
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use ergocell_bridge::controller::ControllerCommand;
 use ergocell_bridge::msg::{ControllerEvent, ControllerEventKind, JointState};
-use ergocell_cell::session::RobotCommand;
+use ergocell_cell::session::{RobotCommand, RobotReport};
 use futures::StreamExt as _;
 
 use crate::clock::{instant, now_nanos, SessionClock};
 use crate::messages;
-use crate::robot::{controller_event, no_leg, SharedMonitor, TrajectoryTopic};
+use crate::robot::{controller_event, no_leg, CommandPort, SharedMonitor, TrajectoryTopic};
 
 /// What the monitor tells the cell loop.
 #[derive(Debug)]
@@ -49,38 +50,27 @@ pub struct MonitorStats {
     pub transit_us: Vec<f64>,
 }
 
-/// Judges joint states against the shared monitor and holds the robot on the first deviation.
+/// Has joint states judged by the shared execution watch and holds the robot on the first
+/// deviation.
 pub struct Judge<T: TrajectoryTopic> {
     pub monitor: SharedMonitor,
     pub latest: Arc<Mutex<Option<JointState>>>,
-    /// The controller's trajectory topic: a deviation publishes the empty trajectory (hold) at once.
-    pub hold: Arc<T>,
-    /// Action mode: a deviation cancels the goal at once.
-    pub cancel: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
+    /// The controller's command port: a deviation holds the robot through it at once.
+    pub port: CommandPort<T>,
     pub stats: Arc<Mutex<MonitorStats>>,
-    /// Joint states older than this are stale, seconds.
-    pub timeout_s: f64,
-    tripped: bool,
-    stale: bool,
 }
 
 impl<T: TrajectoryTopic> Judge<T> {
     pub fn new(
         monitor: SharedMonitor,
         latest: Arc<Mutex<Option<JointState>>>,
-        hold: Arc<T>,
-        cancel: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
-        timeout_s: f64,
+        port: CommandPort<T>,
     ) -> Self {
         Self {
             monitor,
             latest,
-            hold,
-            cancel,
+            port,
             stats: Arc::new(Mutex::new(MonitorStats::default())),
-            timeout_s,
-            tripped: false,
-            stale: false,
         }
     }
 
@@ -94,62 +84,32 @@ impl<T: TrajectoryTopic> Judge<T> {
         transit_us: f64,
     ) -> Vec<MonitorNote> {
         let mut notes = Vec::new();
-        let stale = self.stale;
-        let judged = self.monitor.lock().ok().and_then(|mut g| {
-            let m = g.as_mut()?;
-            if stale {
-                m.resync_rest();
-            }
-            let verdict = match js.positions_for(m.joints()) {
-                Some(p) => m.observe(now, &p),
-                None => Err(ergocell_robot::monitor::Deviation::BadSample {
-                    reason: format!(
-                        "a joint state without every joint of the lock ({})",
-                        m.joints().join(", ")
-                    ),
-                }),
-            };
-            Some((verdict, m.worst_path_ratio().0))
+        let judged = self.monitor.lock().ok().and_then(|mut w| {
+            let positions = js.positions_for(w.joints()?);
+            let reports = w.sample(now, positions.as_deref());
+            let worst = w.monitor().map_or(0.0, |m| m.worst_path_ratio().0);
+            Some((reports, worst))
         });
-        if let Some((verdict, worst)) = judged {
+        if let Some((reports, worst)) = judged {
             if let Ok(mut st) = self.stats.lock() {
                 st.verdict_us.push(arrival.elapsed().as_secs_f64() * 1e6);
                 st.transit_us.push(transit_us);
             }
-            if self.stale {
-                self.stale = false;
-                notes.push(MonitorNote::Back(controller_event(
-                    now,
-                    ControllerEventKind::Monitor,
-                    &no_leg(),
-                    "joint states back".to_owned(),
-                )));
-            }
-            if let (Err(d), false) = (verdict, self.tripped) {
-                self.tripped = true;
-                if let Some(tx) = &self.cancel {
-                    // The controller task is gone only when the session is over.
-                    let _ = tx.send(ControllerCommand::Cancel);
+            for report in reports {
+                match report {
+                    RobotReport::JointStatesBack => {
+                        notes.push(MonitorNote::Back(controller_event(
+                            now,
+                            ControllerEventKind::Monitor,
+                            &no_leg(),
+                            "joint states back".to_owned(),
+                        )));
+                    }
+                    RobotReport::Deviation(deviation) => {
+                        notes.push(self.hold(now, &js, deviation, worst, arrival));
+                    }
+                    _ => {}
                 }
-                let hold = messages::command_message(
-                    &RobotCommand::Hold {
-                        reason: d.to_string(),
-                    },
-                    now,
-                );
-                if let Err(e) = self.hold.publish(hold) {
-                    tracing::error!(error = %e, "the execution monitor's hold was not published");
-                }
-                let held_after_ms = arrival.elapsed().as_secs_f64() * 1e3;
-                let mut event =
-                    controller_event(now, ControllerEventKind::Monitor, &no_leg(), d.to_string());
-                event.max_error = worst;
-                event.sample_stamp = js.header.stamp;
-                notes.push(MonitorNote::Deviation {
-                    deviation: d,
-                    event,
-                    held_after_ms,
-                });
             }
         }
         if let Ok(mut l) = self.latest.lock() {
@@ -159,20 +119,49 @@ impl<T: TrajectoryTopic> Judge<T> {
         notes
     }
 
+    /// The first deviation: the goal cancelled and the empty trajectory published at once, the
+    /// note for the loop.
+    fn hold(
+        &self,
+        now: i64,
+        js: &JointState,
+        deviation: ergocell_robot::monitor::Deviation,
+        worst: f64,
+        arrival: std::time::Instant,
+    ) -> MonitorNote {
+        let hold = messages::command_message(
+            &RobotCommand::Hold {
+                reason: deviation.to_string(),
+            },
+            now,
+        );
+        if let Err(e) = self.port.hold(hold) {
+            tracing::error!(error = %e, "the execution monitor's hold was not sent");
+        }
+        let held_after_ms = arrival.elapsed().as_secs_f64() * 1e3;
+        let mut event = controller_event(
+            now,
+            ControllerEventKind::Monitor,
+            &no_leg(),
+            deviation.to_string(),
+        );
+        event.max_error = worst;
+        event.sample_stamp = js.header.stamp;
+        MonitorNote::Deviation {
+            deviation,
+            event,
+            held_after_ms,
+        }
+    }
+
     /// The timer at session time `now`: a note when the joint states have just gone stale.
     pub fn tick(&mut self, now: i64) -> Option<MonitorNote> {
-        let timeout_s = self.timeout_s;
-        let age = self
-            .monitor
-            .lock()
-            .ok()
-            .and_then(|g| g.as_ref()?.stale_for_s(now, timeout_s))?;
-        if self.stale {
+        let report = self.monitor.lock().ok()?.tick(now)?;
+        let RobotReport::JointStatesStale { timeout_s } = report else {
             return None;
-        }
-        self.stale = true;
+        };
         let why = format!("joint states stale (none for more than {timeout_s} s)");
-        tracing::warn!(age_s = age, "{why}");
+        tracing::warn!("{why}");
         Some(MonitorNote::Stale {
             event: controller_event(now, ControllerEventKind::Monitor, &no_leg(), why),
             timeout_s,

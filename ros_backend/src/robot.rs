@@ -19,10 +19,10 @@ use ergocell_bridge::msg::{
 };
 use ergocell_bridge::transport::{Publisher, RosConfig};
 use ergocell_cell::session::{
-    BackendError, CellLoop, CellOutputs, DriverEvent, DriverStop, GoalAnswer, GoalStatus, Leg,
-    LegTrajectory, ResultCode, RobotCommand, RobotReport, RobotSink, RobotUnready,
+    BackendError, CellLoop, CellOutputs, DriverEvent, DriverStop, ExecutionWatch, GoalAnswer,
+    GoalStatus, Leg, LegTrajectory, ResultCode, RobotCommand, RobotReport, RobotSink, RobotUnready,
 };
-use ergocell_robot::monitor::{ExecutionMonitor, MonitorCaps, MonitorLimits};
+use ergocell_robot::monitor::{MonitorCaps, MonitorLimits};
 
 use crate::messages;
 use crate::monitor::MonitorNote;
@@ -30,12 +30,15 @@ use crate::monitor::MonitorNote;
 /// The controller's joint trajectory topic: every command in topic mode, and in action mode the
 /// empty trajectory of a hold too (it overrides any active goal), beside the cancel.
 pub trait TrajectoryTopic: Send + Sync {
-    fn publish(&self, message: JointTrajectory) -> Result<(), String>;
+    fn publish(&self, message: JointTrajectory) -> Result<(), BackendError>;
 }
 
 impl TrajectoryTopic for Publisher<JointTrajectory> {
-    fn publish(&self, message: JointTrajectory) -> Result<(), String> {
-        Publisher::publish(self, message).map_err(|e| format!("{e:?}"))
+    fn publish(&self, message: JointTrajectory) -> Result<(), BackendError> {
+        Publisher::publish(self, message).map_err(|e| BackendError {
+            backend: "ROS 2 joint trajectory",
+            reason: format!("{e:?}"),
+        })
     }
 }
 
@@ -43,9 +46,32 @@ impl TrajectoryTopic for Publisher<JointTrajectory> {
 /// robot sink and the monitor push, the cell's outputs drain.
 pub type EventQueue = Arc<Mutex<Vec<ControllerEvent>>>;
 
-/// The execution monitor shared between the robot sink (which starts each leg) and the monitor task
+/// The execution watch shared between the robot sink (which starts each leg) and the monitor task
 /// (which judges every sample).
-pub type SharedMonitor = Arc<Mutex<Option<ExecutionMonitor>>>;
+pub type SharedMonitor = Arc<Mutex<ExecutionWatch>>;
+
+/// The controller's command port: its trajectory topic and, in action mode, the FollowJointTrajectory
+/// task's channel.
+pub struct CommandPort<T: TrajectoryTopic> {
+    topic: Arc<T>,
+    action: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
+}
+
+impl<T: TrajectoryTopic> CommandPort<T> {
+    /// Holds the robot: `message` is the hold's empty trajectory
+    /// ([`messages::command_message`] of a [`RobotCommand::Hold`]). In action mode the goal is
+    /// cancelled too, so that either stops the robot: the cancel ends the goal the controller
+    /// reports on, the empty trajectory overrides whatever it runs.
+    pub fn hold(&self, message: JointTrajectory) -> Result<(), BackendError> {
+        let cancel = self.action.as_ref().map(|commands| {
+            commands
+                .send(ControllerCommand::Cancel)
+                .map_err(|_| controller_task_stopped())
+        });
+        self.topic.publish(message)?;
+        cancel.unwrap_or(Ok(()))
+    }
+}
 
 /// The robot over ROS 2, as the session's [`RobotSink`].
 pub struct RosRobot<T: TrajectoryTopic = Publisher<JointTrajectory>> {
@@ -72,12 +98,13 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         action: Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>,
         ros: RosConfig,
     ) -> Self {
+        let timeout_s = ros.joint_state_timeout_s;
         Self {
             topic,
             action,
             latest: Arc::new(Mutex::new(None)),
             ros,
-            monitor: Arc::new(Mutex::new(None)),
+            monitor: Arc::new(Mutex::new(ExecutionWatch::new(timeout_s))),
             events: Arc::new(Mutex::new(Vec::new())),
             goal_outstanding: false,
             held_after_ms: None,
@@ -89,14 +116,13 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         self.held_after_ms
     }
 
-    /// The trajectory topic (the monitor task publishes its hold on it).
-    pub fn topic(&self) -> Arc<T> {
-        self.topic.clone()
-    }
-
-    /// The FollowJointTrajectory task's command channel (the monitor task cancels through it).
-    pub fn cancel_channel(&self) -> Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>> {
-        self.action.clone()
+    /// The controller's command port, which every hold goes through (the session's, and the
+    /// monitor task's at once on a deviation).
+    pub fn port(&self) -> CommandPort<T> {
+        CommandPort {
+            topic: self.topic.clone(),
+            action: self.action.clone(),
+        }
     }
 
     pub fn monitor(&self) -> SharedMonitor {
@@ -123,10 +149,7 @@ impl<T: TrajectoryTopic> RosRobot<T> {
     }
 
     fn publish(&self, message: JointTrajectory) -> Result<(), BackendError> {
-        self.topic.publish(message).map_err(|reason| BackendError {
-            backend: "ROS 2 joint trajectory",
-            reason,
-        })
+        self.topic.publish(message)
     }
 
     /// The leg's path tolerances: the lock's (derived when it was validated, signed off with it),
@@ -165,7 +188,7 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         }))
     }
 
-    /// Starts monitoring `trajectory` (a leg just sent), making the monitor if needed.
+    /// Starts watching `trajectory` (a leg just sent).
     fn watch_leg(
         &mut self,
         now_nanos: i64,
@@ -174,40 +197,21 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         path_rad: &[f64],
         limits: &MonitorLimits,
     ) -> Result<(), BackendError> {
-        let refused = |e: ergocell_robot::monitor::MonitorError| BackendError {
-            backend: "execution monitor",
-            reason: e.to_string(),
-        };
         let mut guard = self.monitor.lock().map_err(|_| BackendError {
             backend: "execution monitor",
             reason: "the monitor task failed".to_owned(),
         })?;
-        let settings = limits.settings(path_rad.to_vec());
-        let fits = guard.as_ref().is_some_and(|m| {
-            m.joints() == trajectory.joint_names.as_slice() && *m.settings() == settings
-        });
-        if !fits {
-            *guard = Some(
-                ExecutionMonitor::new(trajectory.joint_names.clone(), settings).map_err(refused)?,
-            );
-        }
-        if let Some(m) = guard.as_mut() {
-            let p = &trajectory.points;
-            m.leg_sent(
-                now_nanos,
-                label,
-                p.iter().map(|k| k.time_from_start_s).collect(),
-                p.iter().map(|k| k.positions_rad.clone()).collect(),
-                p.iter().map(|k| k.velocities_rad_s.clone()).collect(),
-            )
-            .map_err(refused)?;
-        }
-        Ok(())
+        guard
+            .leg_sent(now_nanos, label, trajectory, path_rad, limits)
+            .map_err(|e| BackendError {
+                backend: "execution monitor",
+                reason: e.to_string(),
+            })
     }
 
-    fn with_monitor(&self, f: impl FnOnce(&mut ExecutionMonitor)) {
-        if let Some(m) = self.monitor.lock().ok().as_mut().and_then(|g| g.as_mut()) {
-            f(m);
+    fn with_monitor(&self, f: impl FnOnce(&mut ExecutionWatch)) {
+        if let Ok(mut g) = self.monitor.lock() {
+            f(&mut g);
         }
     }
 }
@@ -319,16 +323,7 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
             }
             RobotCommand::Hold { .. } => {
                 self.with_monitor(|m| m.held(now_nanos));
-                let Some(commands) = &self.action else {
-                    return self.publish(message);
-                };
-                // Both, so that either stops the robot: the cancel ends the goal the controller
-                // reports on, the empty trajectory overrides whatever it runs.
-                let cancel = commands
-                    .send(ControllerCommand::Cancel)
-                    .map_err(|_| controller_task_stopped());
-                self.publish(message)?;
-                cancel
+                self.port().hold(message)
             }
         }
     }
@@ -533,7 +528,7 @@ mod tests {
     struct NoTopic;
 
     impl TrajectoryTopic for NoTopic {
-        fn publish(&self, _: JointTrajectory) -> Result<(), String> {
+        fn publish(&self, _: JointTrajectory) -> Result<(), BackendError> {
             Ok(())
         }
     }
@@ -613,7 +608,7 @@ mod tests {
                 .monitor()
                 .lock()
                 .unwrap()
-                .as_ref()
+                .monitor()
                 .unwrap()
                 .settings()
                 .clone();

@@ -400,13 +400,7 @@ async fn serve(
     let (action, reports) = controller_task(node, ros)?;
     let robot = RosRobot::new(Arc::new(topics.joint_trajectory), action, ros.clone());
     let clock = SessionClock::start();
-    let judge = Judge::new(
-        robot.monitor(),
-        robot.latest(),
-        robot.topic(),
-        robot.cancel_channel(),
-        ros.joint_state_timeout_s,
-    );
+    let judge = Judge::new(robot.monitor(), robot.latest(), robot.port());
     let stats = judge.stats.clone();
     let (notes_tx, notes) = tokio::sync::mpsc::unbounded_channel();
     let monitor = tokio::spawn(monitor_task(
@@ -663,7 +657,7 @@ fn print_monitor(robot: &RosRobot, stats: &MonitorStats) {
     let Ok(guard) = monitor.lock() else {
         return;
     };
-    let Some(m) = guard.as_ref() else {
+    let Some(m) = guard.monitor() else {
         return;
     };
     let mut v = stats.verdict_us.clone();

@@ -27,6 +27,7 @@ pub mod dummy;
 pub mod end;
 mod machine;
 pub mod robot_side;
+pub mod watch;
 
 pub use cell_loop::{CellLoop, CellOutputs, Ending, OutputError};
 pub use end::{AbortReason, HoldReason, Interruption, SessionEnd, StopSignal};
@@ -35,6 +36,7 @@ pub use robot_side::{
     DriverEvent, DriverState, DriverStop, GoalAnswer, GoalStatus, ReportEffect, ResultCode,
     RobotFailure, RobotReport, RobotUnready,
 };
+pub use watch::ExecutionWatch;
 
 use ergocell_ergonomics::height::{DecisionBasis, HandoverRula};
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
