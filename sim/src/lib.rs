@@ -19,6 +19,8 @@
 //!   (`ergocell_perception::detector_error`), at the real cameras, and the model file the twin reads.
 //! - [`experiments`]: the seed paper's Table 1 and Figs. 7–9, height estimation and RULA agreement,
 //!   run through the real perception and ergonomics crates.
+//! - [`controller`]: the twin's robot side: a simulated joint trajectory controller and KUKA driver
+//!   with its faults as data, run under the cell's own execution watch ([`controller::TwinRobot`]).
 //! - [`faults`]: the demo's faults (silent cameras, a class change request) as a schedule timed
 //!   from the cell's cycle, a file a user or a test can change.
 //! - [`source`]: the simulator as the cell's landmark source ([`source::SimSource`]).
@@ -60,6 +62,7 @@
 pub mod band_reliability;
 pub mod body;
 pub mod cameras;
+pub mod controller;
 pub mod detector;
 pub mod detector_fit;
 pub mod experiments;

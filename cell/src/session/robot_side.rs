@@ -270,7 +270,7 @@ impl fmt::Display for RobotFailure {
 }
 
 /// How the KUKA driver stopped controlling (kuka_drivers' hardware events).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DriverStop {
     /// `CONTROL_STOPPED` (4): stopped by a user (the pendant, the smartHMI).
