@@ -532,3 +532,71 @@ fn a_cell_with_a_fixed_lag_serves_the_operator_as_without_it() {
         "{said}\n{stdout}"
     );
 }
+
+/// `demo --faults` with the shipped robot faults (`sim/faults/robot-*.toml`): the twin's controller
+/// misbehaves and the cell's rules answer as `run`'s do against CI's rclpy peer (the typed reasons
+/// on the same twin robot side: `tests/twin_robot.rs`). A path deviation and a stall end the
+/// session at once, held (exit 1); the driver stopping and an e-stop hold the robot, which stays
+/// held until the demo's time limit (exit 1), no part taken.
+#[test]
+fn demo_plays_the_robot_faults_as_run_meets_them() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (file, ends_at_once) in [
+        ("robot-path-deviation.toml", true),
+        ("robot-stall.toml", true),
+        ("robot-driver-stopped.toml", false),
+        ("robot-e-stop.toml", false),
+    ] {
+        let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-demo-{file}.mcap"));
+        let faults = root.join("sim/faults").join(file);
+        let run = demo_in(
+            root,
+            &[
+                "--cycles",
+                "1",
+                "--no-floor-pick",
+                "--force",
+                "--faults",
+                faults.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+            ],
+        );
+        assert_eq!(
+            run.status.code(),
+            Some(1),
+            "{file}: {}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        let bytes = std::fs::read(&out).unwrap();
+        let states: Vec<ergocell_bridge::msg::SessionState> = mcap::MessageStream::new(&bytes)
+            .unwrap()
+            .map(|m| m.unwrap())
+            .filter(|m| m.channel.topic == "/ergocell/session_state")
+            .map(|m| {
+                ergocell_bridge::cdr::decode::<ergocell_bridge::msg::SessionState>(&m.data).unwrap()
+            })
+            .collect();
+        let last = states.last().unwrap();
+        assert_eq!(last.state, "session_ended", "{file}");
+        assert!(last.robot_held, "{file}: ended held");
+        assert_eq!(last.parts_taken, 0, "{file}");
+        let working = states.iter().find(|s| s.state == "working").unwrap();
+        let held = states.iter().find(|s| s.state == "held");
+        let secs = |s: &ergocell_bridge::msg::SessionState| {
+            (s.header.stamp.to_nanos() - working.header.stamp.to_nanos()) as f64 * 1e-9
+        };
+        if ends_at_once {
+            assert!(held.is_none(), "{file}: ended without a hold first");
+            assert!(secs(last) < 5.0, "{file}: ended {} s in", secs(last));
+        } else {
+            let held = held.unwrap_or_else(|| panic!("{file}: held"));
+            assert!(held.robot_held);
+            assert!(secs(held) < 5.0, "{file}: held {} s in", secs(held));
+            assert!(
+                secs(last) - secs(held) > 20.0,
+                "{file}: held until the time limit"
+            );
+        }
+    }
+}

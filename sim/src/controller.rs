@@ -31,6 +31,8 @@ use ergocell_cell::session::{
 };
 use serde::Deserialize;
 
+use crate::SimError;
+
 /// What goes wrong on the robot side, on the first leg the controller runs once armed.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
@@ -57,6 +59,31 @@ pub enum RobotFault {
     /// The KUKA driver stops `at_fraction` of the way through the leg (`by = "by_user"`: control
     /// stopped, 4; `"by_error"`: an error such as an e-stop, 6) and the robot brakes where it is.
     DriverStops { by: DriverStop, at_fraction: f64 },
+}
+
+impl RobotFault {
+    /// Every value in range: fractions within 0–1, rates and distances finite, a speed in (0, 1],
+    /// waits and delays within an hour.
+    pub fn check(&self) -> Result<(), String> {
+        let fraction = |v: f64| (0.0..=1.0).contains(&v);
+        let ok = match *self {
+            Self::PathDeviation { rad_per_s, .. } => rad_per_s.is_finite(),
+            Self::Lag { speed } => speed > 0.0 && speed <= 1.0,
+            Self::Stall { at_fraction }
+            | Self::GoalAborted { at_fraction }
+            | Self::DriverStops { at_fraction, .. } => fraction(at_fraction),
+            Self::MotionAtRest { rad, after_s, .. } => {
+                rad.is_finite() && (0.0..=3600.0).contains(&after_s)
+            }
+            Self::GoalRejected => true,
+            Self::LateAnswer { waited_s } => waited_s > 0.0 && waited_s <= 3600.0,
+        };
+        if ok {
+            Ok(())
+        } else {
+            Err(format!("robot fault {self:?} holds a value out of range"))
+        }
+    }
 }
 
 /// The leg the controller is running.
@@ -112,8 +139,19 @@ impl SimController {
     }
 
     /// `fault` happens on the next leg the controller runs (or the one running now, for the faults
-    /// that strike partway).
-    pub fn arm(&mut self, fault: RobotFault) {
+    /// that strike partway). A fault naming a joint the robot does not have is refused.
+    pub fn arm(&mut self, fault: RobotFault) -> Result<(), SimError> {
+        if let RobotFault::PathDeviation { joint, .. } | RobotFault::MotionAtRest { joint, .. } =
+            fault
+        {
+            if joint >= self.joints.len() {
+                return Err(SimError::NoSuchJoint {
+                    fault: format!("{fault:?}"),
+                    joint,
+                    joints: self.joints.len(),
+                });
+            }
+        }
         let strikes_partway = matches!(
             fault,
             RobotFault::Stall { .. }
@@ -125,10 +163,11 @@ impl SimController {
             if r.fault.is_none() {
                 r.fault = Some(fault);
                 self.schedule_partway(fault);
-                return;
+                return Ok(());
             }
         }
         self.armed.push(fault);
+        Ok(())
     }
 
     /// The joints in the controller's order.

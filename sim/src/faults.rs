@@ -1,6 +1,7 @@
-//! The demo's faults as data: which camera views go missing when, and when a supervisor asks for
-//! another trajectory class, each timed from a moment of the cell's cycle (the robot starting to
-//! work, or the robot arriving at the handover point with a given part). `ergocell demo` plays a
+//! The demo's faults as data: which camera views go missing when, when a supervisor asks for
+//! another trajectory class, and what goes wrong on the robot side (a [`RobotFault`] of the twin's
+//! controller), each timed from a moment of the cell's cycle (the robot starting to work, or the
+//! robot arriving at the handover point with a given part). `ergocell demo` plays a
 //! [`FaultSchedule`] (the default one, a TOML file with `--faults`, or none with `--no-faults`); a test
 //! or a user changes the schedule, not the demo's loop.
 //!
@@ -11,13 +12,24 @@
 //! at_s = 5.5                   # seconds after that moment
 //! for_s = 1.0                  # cameras_silent: how long
 //! cameras = ["s1_left"]        # cameras_silent: which (absent or empty: every camera)
+//!
+//! [[fault]]
+//! kind = "robot"               # the twin's controller misbehaves (`controller::RobotFault`)
+//! after = "working"
+//! at_s = 0.0
+//! robot = { kind = "stall", at_fraction = 0.4 }
 //! ```
+//!
+//! A robot fault strikes the leg the controller is running when its time comes (the faults that
+//! strike partway: a stall, a path deviation, an abort, the driver stopping) or the next leg it is
+//! sent (the others).
 //!
 //! A fault begins at the first step at or after its time and lasts `for_s` from that step; each
 //! fires once. Times come from the caller's clock (the simulator's): no wall time, deterministic.
 
 use serde::Deserialize;
 
+use crate::controller::RobotFault;
 use crate::SimError;
 
 /// The moment a fault is timed from.
@@ -38,6 +50,8 @@ pub enum FaultKind {
     CamerasSilent,
     /// A supervisor asks for another trajectory class (the session must refuse it).
     ClassChangeRequest,
+    /// The robot side misbehaves (`robot`).
+    Robot,
 }
 
 /// One fault of the schedule.
@@ -57,6 +71,9 @@ pub struct ScheduledFault {
     /// `cameras_silent`: the cameras by name; empty = every camera.
     #[serde(default)]
     pub cameras: Vec<String>,
+    /// `robot`: what goes wrong.
+    #[serde(default)]
+    pub robot: Option<RobotFault>,
 }
 
 impl std::fmt::Display for ScheduledFault {
@@ -74,6 +91,10 @@ impl std::fmt::Display for ScheduledFault {
                 self.for_s.unwrap_or(0.0)
             )?,
             FaultKind::ClassChangeRequest => write!(f, "a request for another class")?,
+            FaultKind::Robot => match &self.robot {
+                Some(r) => write!(f, "the robot side: {r:?}")?,
+                None => write!(f, "the robot side")?,
+            },
         }
         match self.after {
             After::Working => write!(f, ", {:.1} s after the robot starts working", self.at_s),
@@ -110,6 +131,7 @@ impl FaultSchedule {
                     at_s: 5.5,
                     for_s: Some(1.0),
                     cameras: vec!["s1_left".to_owned()],
+                    robot: None,
                 },
                 ScheduledFault {
                     kind: FaultKind::ClassChangeRequest,
@@ -118,6 +140,7 @@ impl FaultSchedule {
                     at_s: 2.0,
                     for_s: None,
                     cameras: Vec::new(),
+                    robot: None,
                 },
                 ScheduledFault {
                     kind: FaultKind::CamerasSilent,
@@ -126,6 +149,7 @@ impl FaultSchedule {
                     at_s: 0.3,
                     for_s: Some(1.2),
                     cameras: Vec::new(),
+                    robot: None,
                 },
             ],
         }
@@ -163,7 +187,20 @@ impl FaultSchedule {
                 }
                 _ => {}
             }
+            if (f.kind == FaultKind::Robot) != f.robot.is_some() {
+                return Err(at(
+                    "robot = { kind = … } goes with kind = \"robot\", and only there",
+                ));
+            }
             match f.kind {
+                FaultKind::Robot => {
+                    if f.for_s.is_some() || !f.cameras.is_empty() {
+                        return Err(at("robot takes neither for_s nor cameras"));
+                    }
+                    if let Some(r) = &f.robot {
+                        r.check().map_err(|why| at(&why))?;
+                    }
+                }
                 FaultKind::CamerasSilent => {
                     if !f.for_s.is_some_and(|d| seconds(d) && d > 0.0) {
                         return Err(at("cameras_silent needs for_s > 0 (at most 86400 s)"));
@@ -210,11 +247,13 @@ impl Silenced {
 }
 
 /// What a step of the schedule does.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct FaultStep {
     pub silenced: Silenced,
     /// A supervisor asks for another class now.
     pub class_change_request: bool,
+    /// The robot side's faults that begin now.
+    pub robot: Vec<RobotFault>,
 }
 
 /// A schedule being played: the cell's moments as they happen, each fault's start once it began.
@@ -277,6 +316,7 @@ impl FaultPlayer {
                 if f.kind == FaultKind::ClassChangeRequest {
                     out.class_change_request = true;
                 }
+                out.robot.extend(f.robot);
             }
             let (Some(from), FaultKind::CamerasSilent) = (*started, f.kind) else {
                 continue;
@@ -373,6 +413,36 @@ mod tests {
                 .unwrap_err()
                 .to_string();
             assert!(e.contains("f.toml") && e.contains(why), "{why}: {e}");
+        }
+    }
+
+    /// A robot fault is read with its facts, plays once at its time, and a malformed one is
+    /// refused naming the file.
+    #[test]
+    fn a_robot_fault_is_read_and_played_once_and_a_bad_one_is_refused() {
+        let text = "[[fault]]\nkind = \"robot\"\nafter = \"working\"\nat_s = 1.0\nrobot = { kind = \"stall\", at_fraction = 0.4 }\n";
+        let s = FaultSchedule::from_toml_str(text, "f.toml", &CAMERAS).unwrap();
+        assert_eq!(
+            s.faults[0].robot,
+            Some(RobotFault::Stall { at_fraction: 0.4 })
+        );
+        let mut p = FaultPlayer::new(s);
+        p.working(10 * S);
+        assert!(p.step(10 * S).robot.is_empty());
+        assert_eq!(
+            p.step(11 * S).robot,
+            vec![RobotFault::Stall { at_fraction: 0.4 }]
+        );
+        assert!(p.step(12 * S).robot.is_empty(), "once");
+        for bad in [
+            text.replace("at_fraction = 0.4", "at_fraction = 1.4"),
+            text.replace("\"stall\"", "\"stal\""),
+            text.replace("robot = { kind = \"stall\", at_fraction = 0.4 }\n", ""),
+            text.replace("kind = \"robot\"", "kind = \"class_change_request\""),
+            text.replace("at_fraction = 0.4", "at_fraction = 0.4, speed = 2"),
+        ] {
+            let e = FaultSchedule::from_toml_str(&bad, "f.toml", &CAMERAS).unwrap_err();
+            assert!(e.to_string().contains("f.toml"), "{bad}: {e}");
         }
     }
 }

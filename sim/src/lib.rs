@@ -109,6 +109,13 @@ pub enum SimError {
     /// A fault schedule that does not parse or names what the rig does not have.
     #[error("fault schedule {file}: {reason}")]
     Faults { file: String, reason: String },
+    /// A robot fault naming a joint the robot does not have.
+    #[error("robot fault {fault}: joint {joint} does not exist (the robot has {joints} joints, 0-based)")]
+    NoSuchJoint {
+        fault: String,
+        joint: usize,
+        joints: usize,
+    },
     /// A detector model (file or fit) that cannot be used.
     #[error("detector model: {why}")]
     BadModel { why: String },

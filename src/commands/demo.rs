@@ -29,7 +29,6 @@ use anyhow::Context as _;
 use ergocell::messages;
 use ergocell::recording::{self, topics, McapRecorder, Recording};
 use ergocell::robot_markers::RobotGeometry;
-use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
     trajectory_class, CellLoop, CellOutputs, Interruption, LandmarkSource, Leg, OutputError,
@@ -43,6 +42,7 @@ use ergocell_ergonomics::HeightClass;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
+use ergocell_sim::controller::{SimController, TwinRobot};
 use ergocell_sim::faults::{FaultPlayer, FaultSchedule, Silenced};
 use ergocell_sim::source::SimSource;
 use ergocell_sim::{CameraBump, FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
@@ -701,8 +701,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .first()
         .map(|p| p.positions_rad.clone())
         .context("lock file without points")?;
-    // The newest command is all the demo reads back (the blackout waits for a leg's arrival).
-    let robot = DummyRobot::new(joints.clone(), home).keeping_last(1);
+    // The twin's controller and KUKA driver under the cell's execution watch, its joint states at a
+    // KUKA driver's 250 Hz. The newest command is all the demo reads back (the blackout waits for
+    // a leg's arrival).
+    let robot = TwinRobot::new(
+        SimController::new(joints.clone(), home).keeping_last(1),
+        JOINT_STATE_PERIOD_NANOS,
+        JOINT_STATE_TIMEOUT_S,
+    );
     let machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
         .map_err(|e| UsageError(e.to_string()))?;
     // The default name is taken when the file is created: a demo started meanwhile in this folder
@@ -762,7 +768,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         rula: "RULA -".to_owned(),
     };
     let mut cell = CellLoop::new(machine, robot, outputs)
-        .with_deadline(start + (limit_secs * 1e9).round() as i64, limit_secs);
+        .with_deadline(start + (limit_secs * 1e9).round() as i64, limit_secs)
+        .with_driver_state();
     let mut twin = Twin {
         source: SimSource::new(sim),
         faults: FaultPlayer::new(schedule),
@@ -831,7 +838,12 @@ struct Twin<'a> {
     period_nanos: i64,
 }
 
-type DemoLoop = CellLoop<DummyRobot, DemoOutputs>;
+type DemoLoop = CellLoop<TwinRobot, DemoOutputs>;
+
+/// The twin's joint states: a KUKA driver's 250 Hz.
+const JOINT_STATE_PERIOD_NANOS: i64 = 4_000_000;
+/// Joint states stale after this long (`[ros] joint_state_timeout_s`'s default).
+const JOINT_STATE_TIMEOUT_S: f64 = 0.1;
 
 impl Twin<'_> {
     /// Plays the session to its end on the simulator's clock; the time it ended.
@@ -895,7 +907,12 @@ impl Twin<'_> {
                 // The script is over and the cell is empty; the cameras keep publishing "nobody".
                 views = (0..self.rig.len()).map(|k| View2::empty(k, now)).collect();
             }
-            let class_change = self.apply_faults(cell, now, &mut views);
+            // The robot side's reports up to now, each handed to the cell and stepped on at its
+            // time, as `run` steps on every report it receives.
+            if self.robot_side(cell, now)? {
+                break;
+            }
+            let class_change = self.apply_faults(cell, now, &mut views)?;
             let rig = self.rig;
             cell.outputs_mut().recording.with(|rec| {
                 views.iter().try_for_each(|v| {
@@ -947,8 +964,14 @@ impl Twin<'_> {
     }
 
     /// The fault schedule at `now`: silenced cameras' views dropped; whether a class change request
-    /// is due. The robot's arrival with each part is a moment the schedule is timed from.
-    fn apply_faults(&mut self, cell: &DemoLoop, now: i64, views: &mut Vec<View2>) -> bool {
+    /// is due; a robot fault due is armed on the twin's controller. The robot's arrival with each
+    /// part is a moment the schedule is timed from.
+    fn apply_faults(
+        &mut self,
+        cell: &mut DemoLoop,
+        now: i64,
+        views: &mut Vec<View2>,
+    ) -> anyhow::Result<bool> {
         if let Some((
             sent,
             RobotCommand::Execute {
@@ -956,13 +979,20 @@ impl Twin<'_> {
                 trajectory,
                 ..
             },
-        )) = cell.robot().received.last()
+        )) = cell.robot().controller.received.last()
         {
             let arrived = sent + (trajectory.duration_s() * 1e9).round() as i64;
             self.faults
                 .arrived_with_part(cell.machine().summary().parts_taken + 1, arrived);
         }
         let fault = self.faults.step(now);
+        for f in fault.robot {
+            println!(
+                "  t={:5.1} s  (simulator) robot fault armed: {f:?}",
+                secs(now, self.start)
+            );
+            cell.robot_mut().controller.arm(f)?;
+        }
         if fault.silenced != Silenced::None {
             views.retain(|v| {
                 self.rig
@@ -970,7 +1000,36 @@ impl Twin<'_> {
                     .is_none_or(|c| !fault.silenced.drops(c.id.as_str()))
             });
         }
-        fault.class_change_request
+        Ok(fault.class_change_request)
+    }
+
+    /// The robot side up to `now`: each batch of reports handed to the cell's rules
+    /// (`CellLoop::report`), what changed said, and a step at its time. Whether the session ended.
+    fn robot_side(&mut self, cell: &mut DemoLoop, now: i64) -> anyhow::Result<bool> {
+        while let Some((t, reports)) = cell.robot_mut().advance(now) {
+            for r in reports {
+                let effect = cell.report(r);
+                if let Some(failure) = effect.failure {
+                    println!("  t={:5.1} s  robot: {failure}", secs(t, self.start));
+                }
+                if let Some(readiness) = effect.driver_readiness {
+                    println!(
+                        "  t={:5.1} s  driver: {}",
+                        secs(t, self.start),
+                        readiness.map_or_else(
+                            || "configured and controlling".to_owned(),
+                            |why| why.to_string()
+                        )
+                    );
+                }
+            }
+            let step = cell.step(t, Vec::new());
+            self.follow_decision(&step.events, t)?;
+            if step.ended.is_some() {
+                return Ok(true);
+            }
+        }
+        Ok(false)
     }
 
     /// Once the cell decides a class other than the operator's own, the simulated operator reaches
