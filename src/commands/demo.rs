@@ -3,7 +3,8 @@
 //! The digital twin (`ergocell_sim`) plays an operator who walks in, stands, does handover cycles and
 //! walks out, seen by the reference cell's six cameras (`config/rig.toml`) with pose-estimator noise.
 //! The real session state machine fuses the views, measures the height, decides the class, verifies
-//! and locks the class's trajectory and runs RULA; a simulated controller follows the trajectory.
+//! and locks the class's trajectory and runs RULA; the twin's joint trajectory controller and KUKA
+//! driver (`ergocell_sim::controller`) follow it under the cell's own execution watch.
 //! Two faults are injected while working (one camera silent, then every camera) to show the degrade
 //! and the hold. After the first handover the operator picks up a dropped part from low down (trunk
 //! bent far forward for 4 s, the robot not involved), so a RULA posture warning is raised and cleared
@@ -31,8 +32,9 @@ use ergocell::recording::{self, topics, McapRecorder, Recording};
 use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    trajectory_class, CellLoop, CellOutputs, Interruption, LandmarkSource, Leg, OutputError,
-    RobotCommand, RobotSink, SessionEnd, SessionEvent, SessionMachine, SessionState,
+    trajectory_class, AfterSession, CellLoop, CellOutputs, ExitStatus, Interruption,
+    LandmarkSource, Leg, OutputError, RobotCommand, RobotSink, SessionEnd, SessionEvent,
+    SessionMachine, SessionState,
 };
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
@@ -112,8 +114,10 @@ pub struct Args {
     /// Do not inject the camera faults (the supervisor's class change request stays).
     #[arg(long, conflicts_with = "faults")]
     pub no_faults: bool,
-    /// The faults to play, a TOML schedule (`ergocell_sim::faults`: silent cameras and class change
-    /// requests, timed from the robot starting to work or arriving with a part). Default: one camera
+    /// The faults to play, a TOML schedule (`ergocell_sim::faults`: silent cameras, class change
+    /// requests and the robot side's faults, timed from the robot starting to work or arriving with a
+    /// part; `sim/faults/robot-*.toml` has a path deviation, a stall, the driver stopping and an
+    /// e-stop). Default: one camera
     /// silent 5.5 s into work, a class change request 2 s in, every camera silent 0.3 s after the
     /// robot brought the second part.
     #[arg(long)]
@@ -782,6 +786,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         period_nanos: (1e9 / args.fps).round() as i64,
     };
     let now = twin.play(&mut cell, &stop, args.soak_report)?;
+    // One session: the cell's rule for what follows its end gives the exit.
+    let status = match cell.ended().map(|e| e.after(1, Some(1))) {
+        Some(AfterSession::Stop(status)) => status,
+        Some(AfterSession::NextSession) => ExitStatus::Done,
+        None => ExitStatus::NeedsAPerson,
+    };
     let (machine, _, outputs) = cell.into_parts();
     drop(outputs.display);
     let messages = outputs.recording.close()?;
@@ -798,29 +808,29 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     println!(
         "  report:         ergocell report {recording} --out {report}   (one HTML file to keep)"
     );
-    if let Some(signal) = stop.get() {
-        return Err(Stopped {
-            signal,
+    let s = machine.summary();
+    match status {
+        ExitStatus::Done => Ok(()),
+        ExitStatus::Stopped(signal) => Err(Stopped {
+            signal: signal.into(),
             what: format!("robot held, recording {} closed", out.display()),
         }
-        .into());
-    }
-    let s = machine.summary();
-    if !s.ended {
-        if let Some(SessionEnd::Interrupted {
-            by: Interruption::TimeLimit { limit_s },
-        }) = &s.end
-        {
-            anyhow::bail!(
-                "the session did not end normally: the demo's time limit was reached: {limit_s:.1} \
-                 s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for the robot's way \
-                 home)",
-                limit_s - MARGIN_SECS
-            );
+        .into()),
+        ExitStatus::NeedsAPerson => {
+            if let Some(SessionEnd::Interrupted {
+                by: Interruption::TimeLimit { limit_s },
+            }) = &s.end
+            {
+                anyhow::bail!(
+                    "the session did not end normally: the demo's time limit was reached: \
+                     {limit_s:.1} s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for \
+                     the robot's way home)",
+                    limit_s - MARGIN_SECS
+                );
+            }
+            anyhow::bail!("the session did not end normally: {}", s.end_reason)
         }
-        anyhow::bail!("the session did not end normally: {}", s.end_reason);
     }
-    Ok(())
 }
 
 /// The digital twin around the cell loop: the simulated cameras with the fault schedule, and the

@@ -18,7 +18,8 @@ use anyhow::Context as _;
 use ergocell::display::Display;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    CellLoop, CellOutputs, Interruption, OutputError, SessionEvent, SessionMachine, SessionState,
+    AfterSession, CellLoop, CellOutputs, ExitStatus, Interruption, OutputError, SessionEvent,
+    SessionMachine,
 };
 use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
 use ergocell_bridge::controller::{run_controller, ControllerCommand, ControllerReport};
@@ -42,7 +43,7 @@ use ergocell_ros_backend::robot::{announce_driver, feed, radians_list, RobotInpu
 use ergocell_ros_backend::robot_markers::RobotGeometry;
 use futures::StreamExt as _;
 
-use super::signals::{StopFlag, Stopped};
+use super::signals::{Signal, StopFlag, Stopped};
 use super::{output, UsageError};
 
 /// The longest `--max-secs`: a year.
@@ -479,13 +480,15 @@ async fn drive(
     let mut latency = Latency::start();
     let mut inbox = CameraInbox::new(setup.rig.clone(), setup.video_geometries.clone());
     let mut sessions_done = 0u32;
+    // One step per camera message, robot-side report or tick until a session's end stops the
+    // program (the cell's rule: `Ending::after`).
     let first = messages::session_state_message(cell.machine(), clock.now(), "started");
     let p = &cell.outputs().ros.publishers;
     publish(&p.session_state, first.clone()).await?;
     publish(&p.session_events, first).await?;
     let readiness = cell.driver_readiness();
     say(announce_driver(cell, clock.now(), readiness));
-    loop {
+    let status = loop {
         let mut views = Vec::new();
         let input = tokio::select! {
             Some(item) = camera_stream.next() => {
@@ -542,18 +545,18 @@ async fn drive(
             continue;
         };
         sessions_done += 1;
-        let more = args.sessions.is_none_or(|n| sessions_done < n);
-        if ending.end.is_normal() && more {
-            print_summary(cell.machine(), inbox.rejected());
-            cell.next_session(setup.new_machine()?);
-            if let Some(d) = &cell.outputs().display {
-                d.next_session(cell.machine());
+        match ending.after(sessions_done, args.sessions) {
+            AfterSession::NextSession => {
+                print_summary(cell.machine(), inbox.rejected());
+                cell.next_session(setup.new_machine()?);
+                if let Some(d) = &cell.outputs().display {
+                    d.next_session(cell.machine());
+                }
+                println!("next session: waiting for an operator");
             }
-            println!("next session: waiting for an operator");
-            continue;
+            AfterSession::Stop(status) => break status,
         }
-        break;
-    }
+    };
     // A goal the controller accepted and has not finished: its result is waited for (2 s at most),
     // so the last leg's result is on record.
     let drain_until = tokio::time::Instant::now() + Duration::from_secs(2);
@@ -571,32 +574,27 @@ async fn drive(
     if args.latency_report {
         latency.print();
     }
-    if cell
-        .ended()
-        .and_then(|e| e.interruption())
-        .is_some_and(|by| matches!(by, Interruption::Stopped { .. }))
-    {
-        if let Some(signal) = stop.get() {
-            return Err(Stopped {
-                signal,
-                what: match &args.record {
-                    Some(p) => format!("robot held, recording {} closed", p.display()),
-                    None => "robot held".to_owned(),
-                },
+    match status {
+        ExitStatus::Done => Ok(()),
+        ExitStatus::Stopped(signal) => Err(Stopped {
+            signal: Signal::from(signal),
+            what: match &args.record {
+                Some(p) => format!("robot held, recording {} closed", p.display()),
+                None => "robot held".to_owned(),
+            },
+        }
+        .into()),
+        ExitStatus::NeedsAPerson => {
+            if let Some(Interruption::TimeLimit { limit_s }) =
+                cell.ended().and_then(|e| e.interruption())
+            {
+                anyhow::bail!(
+                    "session interrupted: --max-secs reached (robot held) after {limit_s} s"
+                );
             }
-            .into());
+            anyhow::bail!("session {}", cell.machine().summary().end_reason)
         }
     }
-    let machine = cell.machine();
-    if machine.state() == SessionState::SessionEnded && !machine.summary().ended {
-        if let Some(Interruption::TimeLimit { limit_s }) =
-            cell.ended().and_then(|e| e.interruption())
-        {
-            anyhow::bail!("session interrupted: --max-secs {limit_s} reached (robot held)");
-        }
-        anyhow::bail!("session {}", machine.summary().end_reason);
-    }
-    Ok(())
 }
 
 /// Prints a line about the robot side, if there is one.

@@ -35,12 +35,10 @@ impl Signal {
         }
     }
 
-    /// The exit code after the robot was held and the recording closed: 128 + the signal's number.
+    /// The exit code after the robot was held and the recording closed: 128 + the signal's number
+    /// (the cell's rule, `ExitStatus::Stopped`).
     pub fn exit_code(self) -> u8 {
-        match self {
-            Self::Interrupt => 130,
-            Self::Terminate => 143,
-        }
+        ergocell_cell::session::ExitStatus::Stopped(self.stop()).code()
     }
 
     fn to_u8(self) -> u8 {
@@ -55,6 +53,15 @@ impl Signal {
             1 => Some(Self::Interrupt),
             2 => Some(Self::Terminate),
             _ => None,
+        }
+    }
+}
+
+impl From<ergocell_cell::session::StopSignal> for Signal {
+    fn from(s: ergocell_cell::session::StopSignal) -> Self {
+        match s {
+            ergocell_cell::session::StopSignal::Interrupt => Self::Interrupt,
+            ergocell_cell::session::StopSignal::Terminate => Self::Terminate,
         }
     }
 }

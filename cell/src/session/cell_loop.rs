@@ -76,6 +76,59 @@ impl Ending {
             _ => None,
         }
     }
+
+    /// The cell's rule for what follows this ending, the `sessions_done`-th (1 for the first), when
+    /// `sessions_wanted` sessions were asked for (`None`: one after another until stopped). Only a
+    /// normal end (the operator left, the robot at home) lets the next operator in; any other end
+    /// needs a person and stops the program, as a stop signal does.
+    pub fn after(&self, sessions_done: u32, sessions_wanted: Option<u32>) -> AfterSession {
+        match &self.end {
+            SessionEnd::OperatorLeft { .. } => {
+                if sessions_wanted.is_none_or(|n| sessions_done < n) {
+                    AfterSession::NextSession
+                } else {
+                    AfterSession::Stop(ExitStatus::Done)
+                }
+            }
+            SessionEnd::Interrupted {
+                by: Interruption::Stopped { signal },
+            } => AfterSession::Stop(ExitStatus::Stopped(*signal)),
+            _ => AfterSession::Stop(ExitStatus::NeedsAPerson),
+        }
+    }
+}
+
+/// What follows a session's end ([`Ending::after`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AfterSession {
+    /// Wait for the next operator, on the same robot and outputs.
+    NextSession,
+    /// Stop the program.
+    Stop(ExitStatus),
+}
+
+/// How the program ends after its sessions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ExitStatus {
+    /// The sessions asked for ended normally: exit 0.
+    Done,
+    /// A session did not end normally (it could not serve, the robot side or an output failed, the
+    /// time limit passed): the robot is held and a person must look: exit 1.
+    NeedsAPerson,
+    /// A stop signal, the robot held: 128 + the signal's number (130 for SIGINT, 143 for SIGTERM).
+    Stopped(StopSignal),
+}
+
+impl ExitStatus {
+    /// The process exit code.
+    pub const fn code(self) -> u8 {
+        match self {
+            Self::Done => 0,
+            Self::NeedsAPerson => 1,
+            Self::Stopped(StopSignal::Interrupt) => 130,
+            Self::Stopped(StopSignal::Terminate) => 143,
+        }
+    }
 }
 
 /// What one [`CellLoop::step`] did.
@@ -327,5 +380,55 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
             events: Vec::new(),
             ended: self.ended.clone(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::session::robot_side::RobotFailure;
+
+    fn ending(end: SessionEnd) -> Ending {
+        Ending {
+            end,
+            stamp_nanos: 0,
+        }
+    }
+
+    /// Only a normal end lets the next operator in, until the sessions asked for are done; every
+    /// other end stops with its status.
+    #[test]
+    fn the_next_session_follows_only_a_normal_end_and_every_other_end_has_its_exit_code() {
+        let left = ending(SessionEnd::OperatorLeft { changes_refused: 0 });
+        assert_eq!(left.after(1, None), AfterSession::NextSession);
+        assert_eq!(left.after(1, Some(2)), AfterSession::NextSession);
+        assert_eq!(left.after(2, Some(2)), AfterSession::Stop(ExitStatus::Done));
+        let failed = ending(SessionEnd::Interrupted {
+            by: Interruption::RobotFailed {
+                failure: RobotFailure::GoalRejected { leg: None },
+            },
+        });
+        let limit = ending(SessionEnd::Interrupted {
+            by: Interruption::TimeLimit { limit_s: 5.0 },
+        });
+        for e in [&failed, &limit] {
+            assert_eq!(
+                e.after(1, None),
+                AfterSession::Stop(ExitStatus::NeedsAPerson)
+            );
+        }
+        for (signal, code) in [(StopSignal::Interrupt, 130), (StopSignal::Terminate, 143)] {
+            let stopped = ending(SessionEnd::Interrupted {
+                by: Interruption::Stopped { signal },
+            });
+            let AfterSession::Stop(status) = stopped.after(1, None) else {
+                panic!("a stop goes on");
+            };
+            assert_eq!((status, status.code()), (ExitStatus::Stopped(signal), code));
+        }
+        assert_eq!(
+            (ExitStatus::Done.code(), ExitStatus::NeedsAPerson.code()),
+            (0, 1)
+        );
     }
 }

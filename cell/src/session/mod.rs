@@ -11,7 +11,9 @@
 //! arrived since the last step, and a [`RobotSink`]. The machine owns one
 //! [`Pipeline`](crate::pipeline::Pipeline): every frame is fused, filtered, assessed and measured
 //! there, nowhere else. Backends speak this crate's own types: a [`RobotSink`] (commands out, joint
-//! positions in; the ROS 2 backend's `RosRobot`, the simulated `DummyRobot`) and the camera views,
+//! positions in; the ROS 2 backend's `RosRobot`, the twin's `TwinRobot`, the tests' [`dummy::DummyRobot`]),
+//! the robot side's reports ([`RobotReport`], judged by the rules of [`robot_side`] and the
+//! [`ExecutionWatch`]) and the camera views,
 //! which the simulator and the tests' scripts give as a [`LandmarkSource`] and `ergocell run` hands
 //! to the loop as they arrive over ROS 2. No ROS message crosses into the core (the ROS 2 backend,
 //! `ergocell_ros_backend::messages`, converts at its boundary). Trajectories come only through a
@@ -29,7 +31,7 @@ mod machine;
 pub mod robot_side;
 pub mod watch;
 
-pub use cell_loop::{CellLoop, CellOutputs, Ending, OutputError};
+pub use cell_loop::{AfterSession, CellLoop, CellOutputs, Ending, ExitStatus, OutputError};
 pub use end::{AbortReason, HoldReason, Interruption, SessionEnd, StopSignal};
 pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 pub use robot_side::{
