@@ -577,6 +577,37 @@ fn demo_plays_the_robot_faults_as_run_meets_them() {
                 ergocell_bridge::cdr::decode::<ergocell_bridge::msg::SessionState>(&m.data).unwrap()
             })
             .collect();
+        // The robot side's events are recorded as a real cell records its controller's: the
+        // monitor's verdict, or the driver ready and then not ready.
+        let events: Vec<ergocell_bridge::msg::ControllerEvent> = mcap::MessageStream::new(&bytes)
+            .unwrap()
+            .map(|m| m.unwrap())
+            .filter(|m| m.channel.topic == "/ergocell/controller_events")
+            .map(|m| {
+                ergocell_bridge::cdr::decode::<ergocell_bridge::msg::ControllerEvent>(&m.data)
+                    .unwrap()
+            })
+            .collect();
+        let kinds: Vec<(&str, &str)> = events
+            .iter()
+            .map(|e| (e.kind.as_str(), e.status.as_str()))
+            .collect();
+        assert!(kinds.contains(&("accepted", "")), "{file}: {kinds:?}");
+        assert_eq!(
+            kinds.iter().filter(|k| k.0 == "monitor").count(),
+            usize::from(ends_at_once),
+            "{file}: {kinds:?}"
+        );
+        let driver: Vec<&str> = kinds
+            .iter()
+            .filter(|k| k.0 == "driver")
+            .map(|k| k.1)
+            .collect();
+        assert_eq!(
+            driver.last(),
+            Some(&if ends_at_once { "ready" } else { "not_ready" }),
+            "{file}: {kinds:?}"
+        );
         let last = states.last().unwrap();
         assert_eq!(last.state, "session_ended", "{file}");
         assert!(last.robot_held, "{file}: ended held");

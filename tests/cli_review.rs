@@ -150,8 +150,8 @@ fn report_holds_the_whole_session() {
     let hp = s["robot"]["handover_point"].as_array().unwrap();
     let hz = hp[2].as_f64().unwrap();
     assert!((0.8..1.6).contains(&hz), "handover height {hz}");
-    // The cell's cycle: the legs the robot was sent alternate, home → handover first; the demo's
-    // in-process robot reports nothing, so each ends as planned (after it starts).
+    // The cell's cycle: the legs the robot was sent alternate, home → handover first; the twin's
+    // controller answers as a real one, so each leg ends at its reported result.
     let legs = s["robot"]["legs"].as_array().unwrap();
     assert!(legs.len() >= 2, "{legs:?}");
     for (k, leg) in legs.iter().enumerate() {
@@ -167,8 +167,23 @@ fn report_holds_the_whole_session() {
         );
         assert!(b > a, "leg {k}: {leg}");
         assert!(leg["planned_s"].as_f64().unwrap() > 0.0, "leg {k}: {leg}");
+        if leg["end_known"] == true {
+            assert_eq!(leg["outcome"], "succeeded", "leg {k}: {leg}");
+        }
     }
-    assert!(s["robot"]["events"].as_array().unwrap().is_empty());
+    assert!(
+        legs.iter().filter(|l| l["end_known"] == true).count() >= 2,
+        "{legs:?}"
+    );
+    // The driver's readiness, as a KUKA driver's is recorded: ready before the first leg.
+    let driver: Vec<&str> = s["robot"]["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == "driver")
+        .map(|e| e["status"].as_str().unwrap())
+        .collect();
+    assert_eq!(driver.last(), Some(&"ready"), "{driver:?}");
 }
 
 #[test]

@@ -128,59 +128,6 @@ impl ControllerReport {
     }
 }
 
-impl ControllerReport {
-    /// The report as the `ergocell_msgs/ControllerEvent` published and recorded.
-    pub fn to_message(&self, stamp_nanos: i64) -> crate::msg::ControllerEvent {
-        use crate::msg::{ControllerEvent, ControllerEventKind as K, Header};
-        let base = |kind: K, label: &GoalLabel| ControllerEvent {
-            header: Header::new(stamp_nanos, ""),
-            kind: kind.name().to_owned(),
-            leg: label.text.clone(),
-            leg_id: label.leg_id,
-            max_error: f64::NAN,
-            ..ControllerEvent::default()
-        };
-        match self {
-            Self::Accepted { label } => base(K::Accepted, label),
-            Self::Rejected { label } => ControllerEvent {
-                text: format!("the controller rejected the goal ({label})"),
-                ..base(K::Rejected, label)
-            },
-            Self::NoResponse { label, .. } => ControllerEvent {
-                text: self.describe(),
-                ..base(K::NoResponse, label)
-            },
-            Self::Failed { label, reason } => ControllerEvent {
-                text: reason.clone(),
-                ..base(K::Failed, label)
-            },
-            Self::CancelRequested { label } => base(K::CancelRequested, label),
-            Self::Feedback {
-                label,
-                count,
-                max_error_rad,
-            } => ControllerEvent {
-                feedback_count: u32::try_from(*count).unwrap_or(u32::MAX),
-                max_error: max_error_rad.unwrap_or(f64::NAN),
-                ..base(K::Feedback, label)
-            },
-            Self::Finished {
-                label,
-                status,
-                error_code,
-                error_string,
-                feedback_count,
-            } => ControllerEvent {
-                status: status_name(*status).to_owned(),
-                error_code: *error_code,
-                text: error_string.clone(),
-                feedback_count: u32::try_from(*feedback_count).unwrap_or(u32::MAX),
-                ..base(K::Finished, label)
-            },
-        }
-    }
-}
-
 /// `PATH_TOLERANCE_VIOLATED (-4): <error_string>` (no `: …` when the string is empty).
 fn result_text(error_code: i32, error_string: &str) -> String {
     let name = error_code_name(error_code);
@@ -318,52 +265,25 @@ pub async fn run_controller<F>(
 mod tests {
     use super::*;
 
+    /// A finished goal is said with its status and its result code's name, number and words.
     #[test]
-    fn a_report_becomes_its_controller_event_with_the_status_and_leg_as_fields() {
-        let l = || GoalLabel {
+    fn a_finished_goal_is_described_with_its_status_and_result() {
+        let label = GoalLabel {
             leg_id: crate::msg::ControllerEvent::LEG_TO_HANDOVER,
             text: "home → handover".to_owned(),
         };
         let aborted = ControllerReport::Finished {
-            label: l(),
+            label,
             status: GoalStatusEnum::Aborted,
             error_code: -4,
             error_string: "joint_2 0.3 rad off".into(),
             feedback_count: 10,
         };
-        let m = aborted.to_message(7);
         assert_eq!(
-            (
-                m.kind.as_str(),
-                m.status.as_str(),
-                m.error_code,
-                m.feedback_count
-            ),
-            ("finished", "aborted", -4, 10)
+            aborted.describe(),
+            "goal aborted (home → handover): PATH_TOLERANCE_VIOLATED (-4): joint_2 0.3 rad off \
+             after 10 feedback messages"
         );
-        assert_eq!(m.text, "joint_2 0.3 rad off");
-        assert_eq!(m.header.stamp.to_nanos(), 7);
-        assert_eq!(
-            (m.leg.as_str(), m.leg_id),
-            (
-                "home → handover",
-                crate::msg::ControllerEvent::LEG_TO_HANDOVER
-            ),
-            "the leg in words and as the constant"
-        );
-        let m = ControllerReport::Feedback {
-            label: l(),
-            count: 25,
-            max_error_rad: Some(0.002),
-        }
-        .to_message(0);
-        assert_eq!(
-            (m.kind.as_str(), m.feedback_count, m.max_error),
-            ("feedback", 25, 0.002)
-        );
-        assert!(ControllerReport::Accepted { label: l() }
-            .to_message(0)
-            .max_error
-            .is_nan());
+        assert!(!aborted.goal_running());
     }
 }

@@ -1057,7 +1057,7 @@ struct LegDraft {
 /// by its points: its first point at home (the first point of the session's first leg) → home →
 /// handover, its last point at home → handover → home. It ends at its `finished` (or `rejected`,
 /// `failed`, `no_response`) event; else at a hold or the next leg sent before its planned end; else
-/// as planned (`end_known` false: nothing reported it, e.g. `demo`'s in-process robot). Feedback is
+/// as planned (`end_known` false: nothing reported it, e.g. a controller on the topic interface). Feedback is
 /// folded into its leg (count, largest error), not listed.
 pub(crate) fn robot_legs(
     commands: &[Stamped<JointTrajectory>],

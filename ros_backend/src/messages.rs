@@ -4,15 +4,19 @@
 //! ([`step_messages`]), which `ergocell run`'s publisher and every recorder send alike.
 
 use ergocell_bridge::msg::{
-    CameraLandmarks, ErgonomicState, Header, JointTrajectory, MarkerArray, OperatorPose,
-    PostureWarning, RebaSide, RebaState, RulaSide, SessionState,
+    CameraLandmarks, ControllerEvent, ErgonomicState, Header, JointTrajectory, MarkerArray,
+    OperatorPose, PostureWarning, RebaSide, RebaState, RulaSide, SessionState,
 };
 use ergocell_ergonomics::{FrameAssessment, SideAssessment, WarningEvent};
 use ergocell_perception::video_geometry::{VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, Keypoint2, View2};
 use ergocell_skeleton::LANDMARK_COUNT;
 
-use ergocell_cell::session::{RobotCommand, SessionEvent, SessionMachine};
+use ergocell_cell::session::{
+    GoalAnswer, Leg, RobotCommand, RobotReport, RobotUnready, SessionEvent, SessionMachine,
+};
+
+use crate::robot::{controller_event, leg_label, no_leg};
 
 /// One message a session step sends out, by its role (the topic comes from the publisher's
 /// configuration or, in a recording, from [`ergocell_bridge::topics`]).
@@ -645,6 +649,85 @@ pub fn session_state_messages(
     out
 }
 
+/// The controller event of a report of the robot side, as `run` publishes and records it and
+/// `demo` records it: kind, leg, status and numbers as fields, the words in `text` (a failure's own
+/// words). The driver's raw state (`is_configured`, hardware events) has none of its own: what it
+/// changes is [`driver_readiness_message`].
+pub fn robot_report_message(stamp_nanos: i64, report: &RobotReport) -> Option<ControllerEvent> {
+    use ergocell_bridge::msg::ControllerEventKind as K;
+    let label = |leg: &Option<Leg>| leg.map_or_else(no_leg, leg_label);
+    let event = |kind: K, leg: &Option<Leg>, text: String| {
+        controller_event(stamp_nanos, kind, &label(leg), text)
+    };
+    let failure = |answer: &GoalAnswer| answer.failure().map(|f| f.to_string()).unwrap_or_default();
+    Some(match report {
+        RobotReport::Goal(answer) => match answer {
+            GoalAnswer::Accepted { leg } => event(K::Accepted, leg, String::new()),
+            GoalAnswer::Rejected { leg } => event(K::Rejected, leg, failure(answer)),
+            GoalAnswer::Unanswered { leg, .. } => event(K::NoResponse, leg, failure(answer)),
+            GoalAnswer::Lost { leg, .. } => event(K::Failed, leg, failure(answer)),
+            GoalAnswer::CancelRequested { leg } => event(K::CancelRequested, leg, String::new()),
+            GoalAnswer::Feedback {
+                leg,
+                count,
+                max_error_rad,
+            } => ControllerEvent {
+                feedback_count: u32::try_from(*count).unwrap_or(u32::MAX),
+                max_error: max_error_rad.unwrap_or(f64::NAN),
+                ..event(K::Feedback, leg, String::new())
+            },
+            GoalAnswer::Finished {
+                leg,
+                status,
+                result,
+                error_string,
+                feedback_count,
+            } => ControllerEvent {
+                status: status.name().to_owned(),
+                error_code: result.code(),
+                feedback_count: u32::try_from(*feedback_count).unwrap_or(u32::MAX),
+                ..event(K::Finished, leg, error_string.clone())
+            },
+        },
+        RobotReport::Deviation(d) => event(K::Monitor, &None, d.to_string()),
+        RobotReport::JointStatesStale { timeout_s } => event(
+            K::Monitor,
+            &None,
+            RobotUnready::JointStatesStale {
+                timeout_s: *timeout_s,
+            }
+            .to_string(),
+        ),
+        RobotReport::JointStatesBack => event(K::Monitor, &None, "joint states back".to_owned()),
+        RobotReport::DriverConfigured(_) | RobotReport::DriverEvent(_) => return None,
+    })
+}
+
+/// The driver's readiness changed: `unready` (`None`: configured and controlling), status
+/// `not_ready` or `ready`.
+pub fn driver_readiness_message(
+    stamp_nanos: i64,
+    unready: Option<&RobotUnready>,
+) -> ControllerEvent {
+    ControllerEvent {
+        status: if unready.is_some() {
+            "not_ready"
+        } else {
+            "ready"
+        }
+        .to_owned(),
+        ..controller_event(
+            stamp_nanos,
+            ergocell_bridge::msg::ControllerEventKind::Driver,
+            &no_leg(),
+            unready.map_or_else(
+                || "configured and controlling".to_owned(),
+                ToString::to_string,
+            ),
+        )
+    }
+}
+
 /// The message on the controller's `joint_trajectory` topic for a command (a hold is the empty
 /// trajectory: the joint trajectory controller drops its goal and stops).
 ///
@@ -823,6 +906,81 @@ mod tests {
     }
 
     /// The names the review and exposure compare with are the names the cell writes.
+    /// A controller's report becomes its event with the status, the result code, the counts and
+    /// the leg as fields (the one conversion, `run`'s and `demo`'s).
+    #[test]
+    fn a_robot_report_becomes_its_controller_event_with_its_facts_as_fields() {
+        use ergocell_bridge::controller::{ControllerReport, GoalStatusEnum};
+        use ergocell_bridge::msg::ControllerEvent;
+        let label = crate::robot::leg_label(ergocell_cell::session::Leg::ToHandover);
+        let event = |r: ControllerReport, t: i64| {
+            robot_report_message(t, &RobotReport::Goal(crate::robot::goal_answer(&r))).unwrap()
+        };
+        let m = event(
+            ControllerReport::Finished {
+                label: label.clone(),
+                status: GoalStatusEnum::Aborted,
+                error_code: -4,
+                error_string: "joint_2 0.3 rad off".into(),
+                feedback_count: 10,
+            },
+            7,
+        );
+        assert_eq!(
+            (
+                m.kind.as_str(),
+                m.status.as_str(),
+                m.error_code,
+                m.feedback_count
+            ),
+            ("finished", "aborted", -4, 10)
+        );
+        assert_eq!(m.text, "joint_2 0.3 rad off");
+        assert_eq!(m.header.stamp.to_nanos(), 7);
+        assert_eq!(
+            (m.leg.as_str(), m.leg_id),
+            ("home → handover", ControllerEvent::LEG_TO_HANDOVER),
+            "the leg in words and as the constant"
+        );
+        let m = event(
+            ControllerReport::Feedback {
+                label: label.clone(),
+                count: 25,
+                max_error_rad: Some(0.002),
+            },
+            0,
+        );
+        assert_eq!(
+            (m.kind.as_str(), m.feedback_count, m.max_error),
+            ("feedback", 25, 0.002)
+        );
+        let m = event(
+            ControllerReport::Rejected {
+                label: label.clone(),
+            },
+            0,
+        );
+        assert_eq!(
+            (m.kind.as_str(), m.leg_id, m.max_error.is_nan()),
+            ("rejected", ControllerEvent::LEG_TO_HANDOVER, true)
+        );
+        assert_eq!(
+            robot_report_message(0, &RobotReport::DriverConfigured(true)),
+            None,
+            "the driver's raw state has no event of its own"
+        );
+        let d = driver_readiness_message(0, Some(&RobotUnready::DriverSilent));
+        assert_eq!(
+            (d.kind.as_str(), d.status.as_str()),
+            ("driver", "not_ready")
+        );
+        let d = driver_readiness_message(0, None);
+        assert_eq!(
+            (d.status.as_str(), d.text.as_str()),
+            ("ready", "configured and controlling")
+        );
+    }
+
     #[test]
     fn the_recorded_names_programs_compare_are_the_cells() {
         assert_eq!(

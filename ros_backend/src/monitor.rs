@@ -11,13 +11,13 @@
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use ergocell_bridge::msg::{ControllerEvent, ControllerEventKind, JointState};
+use ergocell_bridge::msg::{ControllerEvent, JointState};
 use ergocell_cell::session::{RobotCommand, RobotReport};
 use futures::StreamExt as _;
 
 use crate::clock::{instant, now_nanos, SessionClock};
 use crate::messages;
-use crate::robot::{controller_event, no_leg, CommandPort, SharedMonitor, TrajectoryTopic};
+use crate::robot::{CommandPort, SharedMonitor, TrajectoryTopic};
 
 /// What the monitor tells the cell loop.
 #[derive(Debug)]
@@ -98,12 +98,9 @@ impl<T: TrajectoryTopic> Judge<T> {
             for report in reports {
                 match report {
                     RobotReport::JointStatesBack => {
-                        notes.push(MonitorNote::Back(controller_event(
-                            now,
-                            ControllerEventKind::Monitor,
-                            &no_leg(),
-                            "joint states back".to_owned(),
-                        )));
+                        if let Some(event) = messages::robot_report_message(now, &report) {
+                            notes.push(MonitorNote::Back(event));
+                        }
                     }
                     RobotReport::Deviation(deviation) => {
                         notes.push(self.hold(now, &js, deviation, worst, arrival));
@@ -139,12 +136,9 @@ impl<T: TrajectoryTopic> Judge<T> {
             tracing::error!(error = %e, "the execution monitor's hold was not sent");
         }
         let held_after_ms = arrival.elapsed().as_secs_f64() * 1e3;
-        let mut event = controller_event(
-            now,
-            ControllerEventKind::Monitor,
-            &no_leg(),
-            deviation.to_string(),
-        );
+        let mut event =
+            messages::robot_report_message(now, &RobotReport::Deviation(deviation.clone()))
+                .unwrap_or_default();
         event.max_error = worst;
         event.sample_stamp = js.header.stamp;
         MonitorNote::Deviation {
@@ -160,12 +154,9 @@ impl<T: TrajectoryTopic> Judge<T> {
         let RobotReport::JointStatesStale { timeout_s } = report else {
             return None;
         };
-        let why = format!("joint states stale (none for more than {timeout_s} s)");
-        tracing::warn!("{why}");
-        Some(MonitorNote::Stale {
-            event: controller_event(now, ControllerEventKind::Monitor, &no_leg(), why),
-            timeout_s,
-        })
+        let event = messages::robot_report_message(now, &report)?;
+        tracing::warn!("{}", event.text);
+        Some(MonitorNote::Stale { event, timeout_s })
     }
 }
 

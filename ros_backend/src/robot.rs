@@ -472,9 +472,12 @@ pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
                 // The controller starts an accepted goal now.
                 robot.with_monitor(|m| m.leg_started(now_nanos));
             }
-            robot.push(report.to_message(now_nanos));
             let line = format!("controller: {}", report.describe());
-            cell.report(RobotReport::Goal(goal_answer(&report)));
+            let report = RobotReport::Goal(goal_answer(&report));
+            if let Some(event) = messages::robot_report_message(now_nanos, &report) {
+                robot.push(event);
+            }
+            cell.report(report);
             Some(line)
         }
         RobotInput::DriverConfigured(configured) => {
@@ -502,20 +505,9 @@ pub fn announce_driver<T: TrajectoryTopic, O: CellOutputs>(
     readiness: Option<Option<RobotUnready>>,
 ) -> Option<String> {
     let why = readiness?;
-    let text = why.as_ref().map_or_else(
-        || "configured and controlling".to_owned(),
-        ToString::to_string,
-    );
-    let status = if why.is_some() { "not_ready" } else { "ready" };
-    cell.robot_mut().push(ControllerEvent {
-        status: status.to_owned(),
-        ..controller_event(
-            now_nanos,
-            ControllerEventKind::Driver,
-            &no_leg(),
-            text.clone(),
-        )
-    });
+    let event = messages::driver_readiness_message(now_nanos, why.as_ref());
+    let text = event.text.clone();
+    cell.robot_mut().push(event);
     Some(format!("driver: {text}"))
 }
 

@@ -1018,11 +1018,21 @@ impl Twin<'_> {
     fn robot_side(&mut self, cell: &mut DemoLoop, now: i64) -> anyhow::Result<bool> {
         while let Some((t, reports)) = cell.robot_mut().advance(now) {
             for r in reports {
+                // Recorded as a real cell records its controller's events.
+                if let Some(e) = messages::robot_report_message(t, &r) {
+                    cell.outputs_mut()
+                        .recording
+                        .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
+                }
                 let effect = cell.report(r);
                 if let Some(failure) = effect.failure {
                     println!("  t={:5.1} s  robot: {failure}", secs(t, self.start));
                 }
                 if let Some(readiness) = effect.driver_readiness {
+                    let e = messages::driver_readiness_message(t, readiness.as_ref());
+                    cell.outputs_mut()
+                        .recording
+                        .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
                     println!(
                         "  t={:5.1} s  driver: {}",
                         secs(t, self.start),
