@@ -132,7 +132,7 @@ impl Display {
             .flatten();
         snap.held_reason = held.map(|h| h.for_operator().to_owned());
         snap.held_detail = held.map(ToString::to_string);
-        snap.class.clone_from(&machine.summary().class);
+        snap.class = machine.summary().class.map(|c| c.to_string());
         snap.class_probability = machine.decision().map(|d| d.probability);
         snap.across_boundary = machine
             .decision()

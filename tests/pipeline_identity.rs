@@ -140,5 +140,8 @@ fn the_session_and_the_experiments_run_one_pipeline() {
         "{session_height} vs {}",
         d.estimate.height_m
     );
-    assert_eq!(machine.summary().class.as_deref(), Some(d.class.name()));
+    assert_eq!(
+        machine.summary().class,
+        Some(ergocell::session::trajectory_class(d.class))
+    );
 }

@@ -940,7 +940,7 @@ fn a_station_offset_in_cell_toml_moves_where_the_operator_is_measured() {
     assert!(missing.contains("away from the station"), "{reason}");
     // The height is measured only where the station is (the operator gate's zone): the operator never
     // stood 3 m away, so no class was decided there and the robot never moved.
-    let class = |r: &Run| r.machine.summary().class.clone();
+    let class = |r: &Run| r.machine.summary().class;
     assert!(class(&at_origin).is_some());
     assert_eq!(class(&away), None);
     assert!(away

@@ -592,7 +592,7 @@ pub fn session_state_message(
         last_part_hand: machine
             .summary()
             .last_part
-            .map_or(String::new(), |p| p.hand.to_owned()),
+            .map_or(String::new(), |p| p.hand.name().to_owned()),
         last_part_closest_m: machine
             .summary()
             .last_part
@@ -641,7 +641,7 @@ pub fn session_state_messages(
         } = e
         {
             m.parts_taken = *part;
-            (*hand).clone_into(&mut m.last_part_hand);
+            hand.name().clone_into(&mut m.last_part_hand);
             m.last_part_closest_m = *closest_m;
         }
         out.push(m);
@@ -869,8 +869,9 @@ pub fn describe(e: &SessionEvent) -> String {
             closest_m,
             ..
         } => format!(
-            "part {part} taken: the operator's {hand} hand came to {closest_m:.3} m of the handover \
-             point and left it; robot going home for the next part"
+            "part {part} taken: the operator's {} hand came to {closest_m:.3} m of the handover \
+             point and left it; robot going home for the next part",
+            hand.name()
         ),
         E::CameraDegraded { camera, why, .. } => format!("camera {camera} degraded: {why}"),
         E::CameraRestored { camera, .. } => format!("camera {camera} restored"),

@@ -938,7 +938,7 @@ impl Twin<'_> {
             }
             // A supervisor asks for another class mid-session (the schedule's request): refused.
             if class_change {
-                let other = if cell.machine().summary().class.as_deref() == Some("c3") {
+                let other = if cell.machine().summary().class == Some(TrajectoryClass::C3) {
                     TrajectoryClass::C1
                 } else {
                     TrajectoryClass::C3
@@ -1123,7 +1123,7 @@ fn summary(machine: &SessionMachine, args: &Args, true_class: TrajectoryClass, e
             s.height_uncertainty_m.unwrap_or(f64::NAN)
         )),
         args.stature_m,
-        s.class.as_deref().unwrap_or("none")
+        s.class.map_or_else(|| "none".to_owned(), |c| c.to_string())
     );
     if let Some(d) = machine.decision() {
         println!(

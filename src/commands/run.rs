@@ -764,7 +764,7 @@ fn print_summary(machine: &SessionMachine, rejected: u64) {
         machine.state(),
         s.frames_fused,
         s.frames_tracked,
-        s.class.as_deref().unwrap_or("-"),
+        s.class.map_or_else(|| "-".to_owned(), |c| c.to_string()),
         s.lock_sha256.as_deref().unwrap_or("-"),
         s.holds,
         s.robot_commands,

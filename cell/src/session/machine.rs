@@ -5,7 +5,7 @@ use ergocell_ergonomics::warnings::WarningKind;
 use ergocell_ergonomics::{HeightClass, HeightDecision, HeightStatus, UpVector};
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{SessionLock, TrajectoryClass};
-use ergocell_skeleton::{Landmark, Skeleton3};
+use ergocell_skeleton::{Landmark, Side, Skeleton3};
 use nalgebra::Point3;
 
 use super::end::{AbortReason, HoldReason, Interruption, SessionEnd};
@@ -44,9 +44,9 @@ enum Part {
     /// No hand has come to it yet.
     Offered,
     /// A hand came within the take radius; the part is taken when it leaves the release radius.
-    InHand { hand: &'static str, closest_m: f64 },
+    InHand { hand: Side, closest_m: f64 },
     /// The hand that had it left the release radius: taken.
-    Taken { hand: &'static str, closest_m: f64 },
+    Taken { hand: Side, closest_m: f64 },
 }
 
 /// Counts for the final summary.
@@ -56,7 +56,7 @@ pub struct SessionSummary {
     pub frames_tracked: u64,
     pub height_m: Option<f64>,
     pub height_uncertainty_m: Option<f64>,
-    pub class: Option<String>,
+    pub class: Option<TrajectoryClass>,
     pub lock_sha256: Option<String>,
     pub holds: u32,
     pub warnings_raised: u32,
@@ -79,12 +79,12 @@ pub struct SessionSummary {
 }
 
 /// One part the operator took at the handover point.
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct PartTakenFacts {
     /// 1 for the session's first part.
     pub part: u32,
-    /// "left" or "right".
-    pub hand: &'static str,
+    /// The operator's hand that took it.
+    pub hand: Side,
     /// How close that hand's palm centre came to the handover point, metres.
     pub closest_m: f64,
 }
@@ -504,7 +504,7 @@ impl SessionMachine {
         let e = &decision.estimate;
         self.summary.height_m = Some(e.height_m);
         self.summary.height_uncertainty_m = Some(e.uncertainty_m);
-        self.summary.class = Some(decision.class.name().to_owned());
+        self.summary.class = Some(trajectory_class(decision.class));
         tracing::info!(
             height_m = e.height_m,
             uncertainty_m = e.uncertainty_m,
@@ -669,7 +669,7 @@ impl SessionMachine {
                         hand,
                         closest_m,
                     });
-                    tracing::info!(part, hand, closest_m, "part taken");
+                    tracing::info!(part, hand = hand.name(), closest_m, "part taken");
                     events.insert(
                         at,
                         SessionEvent::PartTaken {
@@ -708,7 +708,7 @@ impl SessionMachine {
         let distance = |marks| palm_centre(skeleton, marks).map(|p| (p - point).norm());
         let hands = [
             (
-                "left",
+                Side::Left,
                 distance([
                     Landmark::LeftWrist,
                     Landmark::LeftIndex,
@@ -716,7 +716,7 @@ impl SessionMachine {
                 ]),
             ),
             (
-                "right",
+                Side::Right,
                 distance([
                     Landmark::RightWrist,
                     Landmark::RightIndex,

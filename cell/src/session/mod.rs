@@ -181,8 +181,8 @@ pub enum SessionEvent {
         stamp_nanos: i64,
         /// 1 for the session's first part.
         part: u32,
-        /// "left" or "right".
-        hand: &'static str,
+        /// The operator's hand that took it.
+        hand: ergocell_skeleton::Side,
         /// How close that hand's palm centre came to the handover point, metres.
         closest_m: f64,
     },
