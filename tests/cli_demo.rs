@@ -630,4 +630,28 @@ fn demo_plays_the_robot_faults_as_run_meets_them() {
             );
         }
     }
+    // A robot fault the robot cannot play (no joint 9) is refused before anything runs (exit 2).
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-demo-robot-faults");
+    std::fs::create_dir_all(&dir).unwrap();
+    let faults = dir.join("joint9.toml");
+    std::fs::write(
+        &faults,
+        "[[fault]]\nkind = \"robot\"\nafter = \"working\"\nat_s = 0.0\nrobot = { kind = \"path_deviation\", joint = 9, rad_per_s = 0.1 }\n",
+    )
+    .unwrap();
+    let out = dir.join("joint9.mcap");
+    let _ = std::fs::remove_file(&out);
+    let bad = demo_in(
+        root,
+        &[
+            "--faults",
+            faults.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert_eq!(bad.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("joint 9 does not exist"), "{stderr}");
+    assert!(!out.exists(), "nothing recorded");
 }

@@ -17,9 +17,9 @@ mod common;
 use ergocell::session::dummy::DummyRobot;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    CellLoop, DriverStop, GoalStatus, HoldReason, Interruption, Leg, ResultCode, RobotCommand,
-    RobotFailure, RobotSink, RobotUnready, SessionEnd, SessionEvent, SessionState, StopSignal,
-    TrajectoryProvider,
+    AfterSession, CellLoop, DriverStop, ExitStatus, GoalStatus, HoldReason, Interruption, Leg,
+    ResultCode, RobotCommand, RobotFailure, RobotSink, RobotUnready, SessionEnd, SessionEvent,
+    SessionState, StopSignal, TrajectoryProvider,
 };
 use ergocell_bridge::controller::{ControllerCommand, ControllerReport, GoalStatusEnum};
 use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, Header, JointState, JointTrajectory};
@@ -293,11 +293,17 @@ impl Harness {
             self.topic.holds() >= 1,
             "the empty trajectory was published"
         );
-        assert!(
-            self.controller_events().iter().any(|(k, _)| k == kind),
-            "{:?}",
-            self.controller_events()
-        );
+        // The controller event of the failure: the monitor's verdict in its own words, sample
+        // stamped; a controller's answer as its kind.
+        let events = self.cell.robot().events();
+        let events = events.lock().unwrap();
+        let said = events.iter().find(|e| e.kind == kind);
+        assert!(said.is_some(), "{:?}", self.controller_events());
+        if kind == "monitor" {
+            let said = said.unwrap();
+            assert_eq!(said.text, failure.to_string());
+            assert!(said.sample_stamp.to_nanos() > 0, "{said:?}");
+        }
         failure.clone()
     }
 
@@ -817,4 +823,66 @@ fn a_failed_output_or_the_time_limit_ends_the_session_held() {
         }
         assert!(!cell.machine().summary().ended);
     }
+}
+
+/// An output that fails on the very step the operator leaves: the session's end is the output's
+/// failure, not the normal end the loop could not finish, and no next session follows it.
+#[test]
+fn an_output_failing_as_the_operator_leaves_ends_the_program_not_the_session_only() {
+    let run = |fail_at: usize| {
+        let mut p = provider(&format!("outputs-leaving-{fail_at}"));
+        let approved = p.verify(TrajectoryClass::C2).unwrap();
+        let robot = DummyRobot::new(
+            approved.joint_names().to_vec(),
+            approved.points()[0].positions_rad.clone(),
+        );
+        let machine = ergocell::session::SessionMachine::from_settings(
+            rig(),
+            &CellSettings::default(),
+            Box::new(p),
+        )
+        .unwrap();
+        let outputs = FailingOutputs {
+            steps: 0,
+            fail_at,
+            after: 0,
+        };
+        let mut cell = CellLoop::new(machine, robot, outputs);
+        let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.055));
+        script.cycles = 1;
+        let mut sim = Simulation::new(
+            rig(),
+            Operator::new(1.75).unwrap(),
+            script,
+            SimConfig::new(7),
+        )
+        .unwrap();
+        let mut now = 0;
+        while cell.ended().is_none() && now < 120_000 * MS {
+            let views = sim
+                .step()
+                .unwrap()
+                .map(|t| t.frame.views)
+                .unwrap_or_default();
+            cell.step(now, views);
+            now += FRAME;
+        }
+        let steps = cell.outputs().steps;
+        (cell.ended().unwrap().clone(), steps)
+    };
+    let (normal, steps) = run(usize::MAX);
+    assert!(normal.end.is_normal(), "{normal:?}");
+    assert_eq!(normal.after(1, None), AfterSession::NextSession);
+    let (failed, _) = run(steps);
+    assert!(
+        matches!(
+            failed.interruption(),
+            Some(Interruption::OutputFailed { .. })
+        ),
+        "{failed:?}"
+    );
+    assert_eq!(
+        failed.after(1, None),
+        AfterSession::Stop(ExitStatus::NeedsAPerson)
+    );
 }

@@ -40,7 +40,7 @@ impl Twin {
             approved.points()[0].positions_rad.clone(),
         );
         if let Some(f) = fault {
-            controller.arm(f).unwrap();
+            controller.arm(0, f).unwrap();
         }
         let machine = ergocell::session::SessionMachine::from_settings(
             common::reference_rig(),

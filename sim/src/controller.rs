@@ -62,18 +62,19 @@ pub enum RobotFault {
 }
 
 impl RobotFault {
-    /// Every value in range: fractions within 0–1, rates and distances finite, a speed in (0, 1],
-    /// waits and delays within an hour.
-    pub fn check(&self) -> Result<(), String> {
-        let fraction = |v: f64| (0.0..=1.0).contains(&v);
+    /// Every value in range: fractions in [0, 1), rates and distances finite and not 0, a speed in
+    /// (0, 1), waits and delays within an hour.
+    pub fn check(&self) -> Result<(), SimError> {
+        // Before the leg's end: a stall or a stop at its end would be no fault at all.
+        let fraction = |v: f64| (0.0..1.0).contains(&v);
         let ok = match *self {
-            Self::PathDeviation { rad_per_s, .. } => rad_per_s.is_finite(),
-            Self::Lag { speed } => speed > 0.0 && speed <= 1.0,
+            Self::PathDeviation { rad_per_s, .. } => rad_per_s.is_finite() && rad_per_s != 0.0,
+            Self::Lag { speed } => speed > 0.0 && speed < 1.0,
             Self::Stall { at_fraction }
             | Self::GoalAborted { at_fraction }
             | Self::DriverStops { at_fraction, .. } => fraction(at_fraction),
             Self::MotionAtRest { rad, after_s, .. } => {
-                rad.is_finite() && (0.0..=3600.0).contains(&after_s)
+                rad.is_finite() && rad != 0.0 && (0.0..=3600.0).contains(&after_s)
             }
             Self::GoalRejected => true,
             Self::LateAnswer { waited_s } => waited_s > 0.0 && waited_s <= 3600.0,
@@ -81,7 +82,9 @@ impl RobotFault {
         if ok {
             Ok(())
         } else {
-            Err(format!("robot fault {self:?} holds a value out of range"))
+            Err(SimError::RobotFaultOutOfRange {
+                fault: format!("{self:?}"),
+            })
         }
     }
 }
@@ -93,6 +96,17 @@ struct Running {
     start_nanos: i64,
     duration_s: f64,
     fault: Option<RobotFault>,
+    /// Leg time (seconds from its start) from which the fault acts: 0 for a fault armed before
+    /// the leg, the time it was armed for one armed while it runs (a fault never acts backwards).
+    fault_from_s: f64,
+}
+
+impl Running {
+    /// Leg time (seconds) at which a fault striking `at_fraction` of the way acts: never before
+    /// it was armed.
+    fn strike_s(&self, at_fraction: f64) -> f64 {
+        (at_fraction * self.duration_s).max(self.fault_from_s)
+    }
 }
 
 /// A simulated joint trajectory controller and KUKA driver.
@@ -138,11 +152,12 @@ impl SimController {
         self
     }
 
-    /// `fault` happens on the next leg the controller runs (or the one running now, for the faults
-    /// that strike partway). A fault naming a joint the robot does not have is refused.
-    pub fn arm(&mut self, fault: RobotFault) -> Result<(), SimError> {
+    /// Whether this controller can play `fault`: its values in range ([`RobotFault::check`]) and
+    /// every joint it names one the robot has.
+    pub fn check(&self, fault: &RobotFault) -> Result<(), SimError> {
+        fault.check()?;
         if let RobotFault::PathDeviation { joint, .. } | RobotFault::MotionAtRest { joint, .. } =
-            fault
+            *fault
         {
             if joint >= self.joints.len() {
                 return Err(SimError::NoSuchJoint {
@@ -152,6 +167,15 @@ impl SimController {
                 });
             }
         }
+        Ok(())
+    }
+
+    /// `fault` happens from `now_nanos`: on the leg running now, for the faults that strike partway
+    /// (at their fraction of the leg, or now if that has passed; a drift from now), or else on the
+    /// next leg the controller is sent. A fault that cannot be played ([`SimController::check`]) is
+    /// refused.
+    pub fn arm(&mut self, now_nanos: i64, fault: RobotFault) -> Result<(), SimError> {
+        self.check(&fault)?;
         let strikes_partway = matches!(
             fault,
             RobotFault::Stall { .. }
@@ -160,8 +184,11 @@ impl SimController {
                 | RobotFault::PathDeviation { .. }
         );
         if let (Some(r), true) = (self.running.as_mut(), strikes_partway) {
-            if r.fault.is_none() {
+            let t = (now_nanos - r.start_nanos) as f64 * 1e-9;
+            // A leg past its end (its result not yet out) is as good as done: the next one.
+            if r.fault.is_none() && t < r.duration_s {
                 r.fault = Some(fault);
+                r.fault_from_s = t.max(0.0);
                 self.schedule_partway(fault);
                 return Ok(());
             }
@@ -187,7 +214,7 @@ impl SimController {
                         RobotFault::Stall { at_fraction }
                         | RobotFault::GoalAborted { at_fraction }
                         | RobotFault::DriverStops { at_fraction, .. },
-                    ) => t.min(at_fraction * r.duration_s),
+                    ) => t.min(r.strike_s(at_fraction)),
                     _ => t,
                 };
                 let mut q = self
@@ -195,7 +222,7 @@ impl SimController {
                     .positions_at(r.start_nanos + (warped * 1e9) as i64);
                 if let Some(RobotFault::PathDeviation { joint, rad_per_s }) = r.fault {
                     if let Some(x) = q.get_mut(joint) {
-                        *x += rad_per_s * t.max(0.0);
+                        *x += rad_per_s * (t - r.fault_from_s).max(0.0);
                     }
                 }
                 q
@@ -248,6 +275,16 @@ impl SimController {
             return;
         }
         let here = self.positions_at(at_nanos);
+        // Where the robot rests, without the creep it may already show (the creep stays where it
+        // crept to, on top of the rest).
+        let mut base = here;
+        if let Some((from, joint, rad)) = self.creep {
+            if at_nanos >= from {
+                if let Some(x) = base.get_mut(joint) {
+                    *x -= rad;
+                }
+            }
+        }
         let fault = self.running.take().and_then(|r| r.fault);
         if let Some(RobotFault::MotionAtRest {
             joint,
@@ -257,17 +294,6 @@ impl SimController {
         {
             self.creep = Some((at_nanos + (after_s * 1e9) as i64, joint, rad));
         }
-        let base = match self.creep {
-            // the creep stays where it crept to
-            Some((from, j, rad)) if at_nanos >= from => {
-                let mut b = here;
-                if let Some(x) = b.get_mut(j) {
-                    *x -= rad;
-                }
-                b
-            }
-            _ => here,
-        };
         self.physics = DummyRobot::new(self.joints.clone(), base);
     }
 
@@ -281,8 +307,8 @@ impl SimController {
         let Some(r) = self.running.as_ref() else {
             return;
         };
-        let (start, duration_s, leg) = (r.start_nanos, r.duration_s, r.leg);
-        let at = |f: f64| start + (f * duration_s * 1e9) as i64;
+        let (start, leg, running) = (r.start_nanos, r.leg, r.clone());
+        let at = |f: f64| start + (running.strike_s(f) * 1e9) as i64;
         match fault {
             RobotFault::Stall { .. } | RobotFault::PathDeviation { .. } => {
                 // the goal never finishes: the monitor judges it first
@@ -353,6 +379,7 @@ impl SimController {
             start_nanos: now_nanos,
             duration_s,
             fault: None,
+            fault_from_s: 0.0,
         });
         self.push_due(now_nanos, RobotReport::Goal(GoalAnswer::Accepted { leg }));
         let lag = match fault {
@@ -520,5 +547,127 @@ impl RobotSink for TwinRobot {
                 here.get(i).copied()
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use ergocell_cell::session::LegPoint;
+
+    const S: i64 = 1_000_000_000;
+
+    /// Two joints from 0 to 1 rad in 1 s.
+    fn leg() -> LegTrajectory {
+        let point = |t: f64| LegPoint {
+            positions_rad: vec![t, t],
+            velocities_rad_s: vec![0.0, 0.0],
+            accelerations_rad_s2: vec![0.0, 0.0],
+            time_from_start_s: t,
+        };
+        LegTrajectory {
+            joint_names: vec!["a".into(), "b".into()],
+            points: (0..=10).map(|k| point(f64::from(k) * 0.1)).collect(),
+            ..LegTrajectory::default()
+        }
+    }
+
+    fn running() -> SimController {
+        let mut c = SimController::new(vec!["a".into(), "b".into()], vec![0.0, 0.0]);
+        c.command(
+            0,
+            &RobotCommand::Execute {
+                leg: Leg::ToHandover,
+                lock_sha256: String::new(),
+                trajectory: leg(),
+            },
+        );
+        c
+    }
+
+    fn near(a: &[f64], b: &[f64]) -> bool {
+        a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-9)
+    }
+
+    /// A fault armed while a leg runs acts from then on, never backwards: a stall armed past its
+    /// fraction stops the robot where it is, a drift starts from zero.
+    #[test]
+    fn a_fault_armed_partway_acts_from_then_on() {
+        let mut c = running();
+        let before = c.positions_at(S * 6 / 10);
+        c.arm(S * 6 / 10, RobotFault::Stall { at_fraction: 0.4 })
+            .unwrap();
+        assert!(near(&c.positions_at(S * 6 / 10), &before));
+        assert!(
+            near(&c.positions_at(S * 9 / 10), &before),
+            "stopped where it was"
+        );
+
+        let mut c = running();
+        let before = c.positions_at(S / 2);
+        c.arm(
+            S / 2,
+            RobotFault::PathDeviation {
+                joint: 1,
+                rad_per_s: 0.1,
+            },
+        )
+        .unwrap();
+        assert!(near(&c.positions_at(S / 2), &before), "no jump when armed");
+        let later = c.positions_at(S * 7 / 10);
+        assert!((later[1] - later[0] - 0.02).abs() < 1e-9, "{later:?}");
+    }
+
+    /// Motion at rest creeps the joint by its distance once the leg has ended and `after_s` passed,
+    /// even with no wait at all.
+    #[test]
+    fn motion_at_rest_creeps_after_the_leg() {
+        let mut c = SimController::new(vec!["a".into(), "b".into()], vec![0.0, 0.0]);
+        c.arm(
+            0,
+            RobotFault::MotionAtRest {
+                joint: 0,
+                rad: 0.02,
+                after_s: 0.0,
+            },
+        )
+        .unwrap();
+        c.command(
+            0,
+            &RobotCommand::Execute {
+                leg: Leg::ToHandover,
+                lock_sha256: String::new(),
+                trajectory: leg(),
+            },
+        );
+        let answers = c.reports(2 * S);
+        assert!(answers
+            .iter()
+            .any(|(_, r)| matches!(r, RobotReport::Goal(GoalAnswer::Finished { .. }))));
+        assert!(near(&c.positions_at(2 * S), &[1.02, 1.0]));
+    }
+
+    /// Faults that would be none, or name a joint the robot lacks, are refused.
+    #[test]
+    fn faults_that_would_be_none_or_name_no_joint_are_refused() {
+        for bad in [
+            RobotFault::Stall { at_fraction: 1.0 },
+            RobotFault::Lag { speed: 1.0 },
+            RobotFault::PathDeviation {
+                joint: 0,
+                rad_per_s: 0.0,
+            },
+            RobotFault::LateAnswer { waited_s: 0.0 },
+        ] {
+            assert!(bad.check().is_err(), "{bad:?}");
+        }
+        let c = SimController::new(vec!["a".into()], vec![0.0]);
+        assert!(c
+            .check(&RobotFault::PathDeviation {
+                joint: 1,
+                rad_per_s: 0.1
+            })
+            .is_err());
     }
 }

@@ -198,7 +198,7 @@ impl FaultSchedule {
                         return Err(at("robot takes neither for_s nor cameras"));
                     }
                     if let Some(r) = &f.robot {
-                        r.check().map_err(|why| at(&why))?;
+                        r.check().map_err(|e| at(&e.to_string()))?;
                     }
                 }
                 FaultKind::CamerasSilent => {

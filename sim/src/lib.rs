@@ -21,8 +21,8 @@
 //!   run through the real perception and ergonomics crates.
 //! - [`controller`]: the twin's robot side: a simulated joint trajectory controller and KUKA driver
 //!   with its faults as data, run under the cell's own execution watch ([`controller::TwinRobot`]).
-//! - [`faults`]: the demo's faults (silent cameras, a class change request) as a schedule timed
-//!   from the cell's cycle, a file a user or a test can change.
+//! - [`faults`]: the demo's faults (silent cameras, a class change request, the robot side's
+//!   faults) as a schedule timed from the cell's cycle, a file a user or a test can change.
 //! - [`source`]: the simulator as the cell's landmark source ([`source::SimSource`]).
 //! - [`session`]: the session script (walk in → idle → N handovers → walk out) and the simulation
 //!   clock; each [`Tick`] carries the ground truth and every camera's [`View2`](ergocell_perception::View2).
@@ -109,6 +109,10 @@ pub enum SimError {
     /// A fault schedule that does not parse or names what the rig does not have.
     #[error("fault schedule {file}: {reason}")]
     Faults { file: String, reason: String },
+    /// A robot fault with a value out of range (a fraction of a leg outside [0, 1), a speed outside
+    /// (0, 1), a zero rate or distance, a wait beyond an hour).
+    #[error("robot fault {fault}: a value out of range")]
+    RobotFaultOutOfRange { fault: String },
     /// A robot fault naming a joint the robot does not have.
     #[error("robot fault {fault}: joint {joint} does not exist (the robot has {joints} joints, 0-based)")]
     NoSuchJoint {

@@ -12,7 +12,8 @@
 //!
 //! The simulated session lasts as long as its script (walk in, height, the handover cycles, the floor
 //! pick, walk out) plus a margin for the robot's way home; a session still running then is stopped
-//! with the robot held and says so. Ctrl-C and SIGTERM stop it the same way (exit 130 / 143).
+//! with the robot held and says so. Ctrl-C and SIGTERM stop it the same way (exit 130 / 143; a
+//! session that had already failed on the robot side or an output exits 1, as `run` does).
 //!
 //! The recording is never written over an existing file unless asked (`--force`): an existing
 //! `--out` is a usage error, and the default `ergocell-demo.mcap` moves on to the next free
@@ -708,11 +709,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     // The twin's controller and KUKA driver under the cell's execution watch, its joint states at a
     // KUKA driver's 250 Hz. The newest command is all the demo reads back (the blackout waits for
     // a leg's arrival).
-    let robot = TwinRobot::new(
-        SimController::new(joints.clone(), home).keeping_last(1),
-        JOINT_STATE_PERIOD_NANOS,
-        JOINT_STATE_TIMEOUT_S,
-    );
+    let controller = SimController::new(joints.clone(), home).keeping_last(1);
+    for f in schedule.faults.iter().filter_map(|f| f.robot.as_ref()) {
+        controller
+            .check(f)
+            .map_err(|e| UsageError(format!("--faults: {e}")))?;
+    }
+    let robot = TwinRobot::new(controller, JOINT_STATE_PERIOD_NANOS, JOINT_STATE_TIMEOUT_S);
     let machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
         .map_err(|e| UsageError(e.to_string()))?;
     // The default name is taken when the file is created: a demo started meanwhile in this folder
@@ -922,7 +925,7 @@ impl Twin<'_> {
             if self.robot_side(cell, now)? {
                 break;
             }
-            let class_change = self.apply_faults(cell, now, &mut views)?;
+            let class_change = self.apply_faults(cell, now, &mut views);
             let rig = self.rig;
             cell.outputs_mut().recording.with(|rec| {
                 views.iter().try_for_each(|v| {
@@ -976,12 +979,7 @@ impl Twin<'_> {
     /// The fault schedule at `now`: silenced cameras' views dropped; whether a class change request
     /// is due; a robot fault due is armed on the twin's controller. The robot's arrival with each
     /// part is a moment the schedule is timed from.
-    fn apply_faults(
-        &mut self,
-        cell: &mut DemoLoop,
-        now: i64,
-        views: &mut Vec<View2>,
-    ) -> anyhow::Result<bool> {
+    fn apply_faults(&mut self, cell: &mut DemoLoop, now: i64, views: &mut Vec<View2>) -> bool {
         if let Some((
             sent,
             RobotCommand::Execute {
@@ -1001,7 +999,10 @@ impl Twin<'_> {
                 "  t={:5.1} s  (simulator) robot fault armed: {f:?}",
                 secs(now, self.start)
             );
-            cell.robot_mut().controller.arm(f)?;
+            // Each was checked against the robot before the session started.
+            if let Err(e) = cell.robot_mut().controller.arm(now, f) {
+                println!("  (simulator) robot fault not played: {e}");
+            }
         }
         if fault.silenced != Silenced::None {
             views.retain(|v| {
@@ -1010,7 +1011,7 @@ impl Twin<'_> {
                     .is_none_or(|c| !fault.silenced.drops(c.id.as_str()))
             });
         }
-        Ok(fault.class_change_request)
+        fault.class_change_request
     }
 
     /// The robot side up to `now`: each batch of reports handed to the cell's rules

@@ -322,13 +322,18 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         if self.ended.is_some() {
             return self.ended_step();
         }
-        let events = self.machine.shutdown(now_nanos, &mut self.robot, by);
+        let events = self
+            .machine
+            .shutdown(now_nanos, &mut self.robot, by.clone());
         if let Err(e) = self.outputs.session_step(now_nanos, &self.machine, &events) {
             // Already ending: the failure is reported, the robot is held either way.
             tracing::error!(error = %e, "an output failed while the session was ending");
         }
-        self.ended = self.machine.summary().end.clone().map(|end| Ending {
-            end,
+        // The interruption is the ending, even when the machine had just ended by itself in the
+        // same step (an output that failed on the operator's departure): what follows is decided by
+        // the interruption, never by a normal end the loop could not finish.
+        self.ended = Some(Ending {
+            end: SessionEnd::Interrupted { by },
             stamp_nanos: now_nanos,
         });
         Step {

@@ -6,8 +6,8 @@
 //!   and a hold ([`ExecutionWatch::held`]) move the monitor on.
 //! - Every joint state is judged as it arrives ([`ExecutionWatch::sample`]). The first deviation is
 //!   the verdict ([`RobotReport::Deviation`]); the backend holds the robot at once through its robot
-//!   port, without waiting for the cell loop, and hands the report on. Later samples after a verdict
-//!   are not judged again.
+//!   port, without waiting for the cell loop, and hands the report on. Later samples still move the
+//!   monitor on, but no later deviation is reported.
 //! - A joint state missing one of the lock's joints is a bad sample, a deviation like any other.
 //! - No joint state for longer than the timeout is [`RobotReport::JointStatesStale`] (the session
 //!   holds until they are back, [`RobotReport::JointStatesBack`]); after such a gap the rest
