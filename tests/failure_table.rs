@@ -140,10 +140,7 @@ impl Harness {
             SimConfig::new(7),
         )
         .unwrap();
-        let mut cell = CellLoop::new(machine, robot, ());
-        if driver_state {
-            cell = cell.with_driver_state();
-        }
+        let mut cell = ergocell_ros_backend::robot::cell_loop(machine, robot, ());
         let readiness = cell.driver_readiness();
         announce_driver(&mut cell, 0, readiness);
         Self {

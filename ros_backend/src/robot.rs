@@ -337,6 +337,23 @@ impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
     }
 }
 
+/// The cell loop on the ROS 2 robot: with `[ros] driver_state`, the robot may move only once the
+/// KUKA driver says it is configured and controlling (`CellLoop::with_driver_state`). `run` and the
+/// failure table build it here, so neither can forget it.
+pub fn cell_loop<T: TrajectoryTopic, O: CellOutputs>(
+    machine: ergocell_cell::session::SessionMachine,
+    robot: RosRobot<T>,
+    outputs: O,
+) -> CellLoop<RosRobot<T>, O> {
+    let driver_state = robot.ros.driver_state;
+    let cell = CellLoop::new(machine, robot, outputs);
+    if driver_state {
+        cell.with_driver_state()
+    } else {
+        cell
+    }
+}
+
 /// The leg a goal's label names (its `ControllerEvent::LEG_*` constant).
 pub fn leg_of(label: &GoalLabel) -> Option<Leg> {
     match label.leg_id {

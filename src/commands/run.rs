@@ -419,10 +419,7 @@ async fn serve(
             published_frame: false,
         },
     };
-    let mut cell = CellLoop::new(machine, robot, outputs);
-    if ros.driver_state {
-        cell = cell.with_driver_state();
-    }
+    let mut cell = ergocell_ros_backend::robot::cell_loop(machine, robot, outputs);
     if let Some(limit) = args.max_secs {
         let at = clock.now() + (limit * 1e9).round() as i64;
         cell = cell.with_deadline(at, limit);
