@@ -11,10 +11,14 @@
 //!   not run on unrecorded; the failed output is the caller's to silence), the robot side failed (the
 //!   controller refused, aborted or did not answer a goal; the execution monitor saw a deviation),
 //!   a stop was asked for (Ctrl-C, SIGTERM), the time limit. The first one found is the reason.
+//! - **The robot side's reports** ([`CellLoop::report`]): what each means is decided by the rules
+//!   of [`super::robot_side`] (a failure ends the session, the first one being the reason).
 //! - **The robot's readiness** (the driver configured and controlling, joint states fresh): while
 //!   either side says no, the machine holds and sends no goal; it resumes by its usual rules.
 //! - **The shutdown**: the hold is sent, the machine ends, and the outputs see the shutdown's events
 //!   like any step's. An output that fails during a step ends the session at once, held.
+//! - **What follows the end** ([`Ending::after`]): the next operator only after a normal end, and
+//!   the program's exit status otherwise.
 
 use ergocell_perception::View2;
 use ergocell_robot::TrajectoryClass;
