@@ -13,6 +13,15 @@
 //!   the station, strictly parsed (`deny_unknown_fields`) with errors that name the file, the key and
 //!   the value.
 //!
+//! **The failure table** (`cargo test -p ergocell_cell --test failure_table`, `tests/failure_table.rs`):
+//! the loop driven by the twin's cameras and robot side (the simulated controller and KUKA driver
+//! under [`session::ExecutionWatch`]), each row asserting its typed outcome: a joint off the locked
+//! path and a stall end the session held (`RobotFailed` with the `Deviation`); a late controller
+//! answer ends it (`GoalUnanswered`); the driver stopping (by a user, or an error such as an e-stop)
+//! holds the robot (`RobotNotReady`); a lock that does not verify ends the session before the robot
+//! moves (`Aborted { NotVerified }`); tracking lost holds (`CamerasLost`) and resumes at an end of the
+//! path; one camera lost is reported and the robot works on; the cameras' clock jumping back holds.
+//!
 //! Dependencies: perception, ergonomics, robot, skeleton. Not ROS (`ergocell_bridge`), not the
 //! simulator; `.ci/deps` checks it.
 
