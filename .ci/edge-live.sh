@@ -32,15 +32,19 @@ videos=../shared/data/pose2sim-demo-videos/videos
 "$bin" --log error run --config "$tmp/cell.toml" --rig "$calib" --video-geometry cam01=fit \
   --max-secs 18 --record "$tmp/live.mcap" --display 127.0.0.1:0 > "$tmp/run.out" 2> "$tmp/run.err" &
 run=$!
-# the operator display's snapshot (what a page gets first), every 2 s from 8 s in until it shows the
-# operator being measured, for the check below
+# the operator display's snapshot (what a page gets first), every second from 8 s in until it shows
+# the operator being measured with their skeleton (a snapshot between two tracked frames has none),
+# for the check below
 ( for _ in $(seq 50); do grep -q "operator display: http" "$tmp/run.out" && break; sleep 0.2; done
   url=$(grep -o "operator display: http[^ ]*" "$tmp/run.out" | head -1 | cut -d' ' -f3)
   sleep 8
-  for _ in 1 2 3 4 5; do
+  for _ in $(seq 9); do
     curl -s -m 2 "${url}events" | grep -m1 "^data: " > "$tmp/display.json" || true
-    grep -q '"state":"measuring_height"' "$tmp/display.json" && break
-    sleep 2
+    python3 -c 'import json, sys
+s = json.loads(open(sys.argv[1]).read()[len("data: "):])
+sys.exit(s["state"] != "measuring_height" or sum(p is not None for p in s["skeleton"]) < 20)' \
+      "$tmp/display.json" 2>/dev/null && break
+    sleep 1
   done ) &
 # From a frame's capture stamp to its posture warning painted in headless Chromium (the page's own
 # measurement, web/e2e/display-latency.mjs; the fixed lag is [pipeline]'s default 0.55 s): printed
