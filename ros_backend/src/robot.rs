@@ -218,13 +218,13 @@ impl<T: TrajectoryTopic> RosRobot<T> {
 
 /// A leg as the controller's reports and events name it: the message's constant and the words.
 pub fn leg_label(leg: Leg) -> GoalLabel {
-    let (leg_id, text) = match leg {
-        Leg::ToHandover => (ControllerEvent::LEG_TO_HANDOVER, "home → handover"),
-        Leg::ToHome => (ControllerEvent::LEG_TO_HOME, "handover → home"),
+    let leg_id = match leg {
+        Leg::ToHandover => ControllerEvent::LEG_TO_HANDOVER,
+        Leg::ToHome => ControllerEvent::LEG_TO_HOME,
     };
     GoalLabel {
         leg_id,
-        text: text.to_owned(),
+        text: leg.words().to_owned(),
     }
 }
 

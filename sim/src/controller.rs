@@ -515,10 +515,7 @@ impl RobotSink for TwinRobot {
             leg, trajectory, ..
         } = command
         {
-            let label = match leg {
-                Leg::ToHandover => "home → handover",
-                Leg::ToHome => "handover → home",
-            };
+            let label = leg.words();
             self.watch
                 .leg_sent(
                     now_nanos,

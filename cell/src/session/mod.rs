@@ -97,6 +97,16 @@ pub enum Leg {
     ToHome,
 }
 
+impl Leg {
+    /// The leg in words, as the console, the monitor and the controller events say it.
+    pub const fn words(self) -> &'static str {
+        match self {
+            Self::ToHandover => "home → handover",
+            Self::ToHome => "handover → home",
+        }
+    }
+}
+
 /// One knot of a trajectory leg, in the order of [`LegTrajectory::joint_names`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct LegPoint {

@@ -115,11 +115,7 @@ impl fmt::Display for ResultCode {
 
 /// Which leg a report is about, in words ("home → handover"); "no leg" when it names none.
 fn leg_words(leg: Option<Leg>) -> &'static str {
-    match leg {
-        Some(Leg::ToHandover) => "home → handover",
-        Some(Leg::ToHome) => "handover → home",
-        None => "no leg",
-    }
+    leg.map_or("no leg", Leg::words)
 }
 
 /// What the controller answered about a goal (one leg of the locked trajectory).
