@@ -1,5 +1,6 @@
-//! The failure table at the library level: the cell loop driven by the twin's cameras
-//! (`ergocell_sim`) and its robot side (`ergocell_sim::controller::TwinRobot`: a simulated joint
+//! The failure table at the library level: the session driver (`Driver`) run to a session's end on
+//! a scripted station: the twin's cameras (`ergocell_sim`), changed by each row's camera fault,
+//! and its robot side (`ergocell_sim::controller::TwinRobot`: a simulated joint
 //! trajectory controller and KUKA driver under the cell's `ExecutionWatch`), deterministic, on an
 //! injected clock, each row asserting the typed outcome. The trajectory is the shipped c2 one,
 //! planned, locked and approved in memory (the robot crate's test approvers).
@@ -14,17 +15,22 @@
 //! | tracking lost (every camera silent) | held: `CamerasLost`, resumes at an end of the path when the cameras are back |
 //! | one camera lost | reported (`CameraDegraded`), not held |
 //! | the cameras' clock jumps back | held: `CamerasLost` (frames too old to move the robot by) |
+//! | a stop signal (Ctrl-C) | ends held: `Stopped { Interrupt }`, exit status 130 |
+//! | an input fails (the simulator) | ends held: `InputFailed`, the station's error returned |
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 #[path = "../../robot/tests/common/mod.rs"]
 mod robot_fixture;
 
+use std::cell::Cell;
+use std::rc::Rc;
 use std::sync::OnceLock;
 
 use ergocell_cell::session::{
-    AbortReason, CellLoop, DriverStop, HoldReason, Interruption, Leg, ProviderError, RobotCommand,
-    RobotFailure, RobotUnready, SessionEnd, SessionEvent, SessionMachine, SessionState,
-    TrajectoryProvider,
+    AbortReason, CellLoop, Driver, DriverError, DriverStop, ExitStatus, HoldReason, Input,
+    InputError, Interruption, Leg, Outcome, ProviderError, RobotCommand, RobotFailure,
+    RobotUnready, SessionEnd, SessionEvent, SessionMachine, SessionState, Station, Step,
+    StopRequest, StopSignal, Timed, TrajectoryProvider,
 };
 use ergocell_cell::CellSettings;
 use ergocell_perception::{CameraRig, View2};
@@ -119,31 +125,211 @@ fn rig() -> CameraRig {
         .0
 }
 
-/// What the cameras deliver at a time: the views as simulated, or changed by a fault.
-type Cameras = dyn Fn(i64, Vec<View2>) -> Vec<View2>;
+/// What the cameras deliver: the views as simulated, or changed by a fault, given the time and
+/// when the session started working (`None`: not yet).
+type Cameras = Box<dyn Fn(i64, Option<i64>, Vec<View2>) -> Vec<View2>>;
 
-struct Table {
-    cell: CellLoop<TwinRobot, ()>,
-    sim: Simulation,
-    now: i64,
-    events: Vec<SessionEvent>,
+/// The cameras as simulated.
+fn as_simulated() -> Cameras {
+    Box::new(|_, _, views| views)
 }
 
-impl Table {
-    /// A 1.75 m operator (class c2); `fault` armed for the robot's first leg.
-    fn new(verifies: bool, fault: Option<RobotFault>) -> Self {
+/// The session as it went, step by step.
+#[derive(Default)]
+struct Timeline {
+    events: Vec<SessionEvent>,
+    /// Each step's time, state and hold reason.
+    states: Vec<(i64, SessionState, Option<HoldReason>)>,
+}
+
+impl Timeline {
+    fn working_since(&self) -> Option<i64> {
+        self.events.iter().find_map(|e| match e {
+            SessionEvent::StateChanged {
+                to: SessionState::Working,
+                stamp_nanos,
+                ..
+            } => Some(*stamp_nanos),
+            _ => None,
+        })
+    }
+
+    /// The steps from `from` on.
+    fn after(&self, from: i64) -> impl Iterator<Item = &(i64, SessionState, Option<HoldReason>)> {
+        self.states.iter().filter(move |(t, ..)| *t >= from)
+    }
+}
+
+/// The table's station: the twin's cameras (through `cameras`) every frame and its robot side's
+/// reports at their times, on the test's clock (frames every 100 ms).
+struct Script {
+    sim: Simulation,
+    now: i64,
+    views: Option<Vec<View2>>,
+    frame_step: bool,
+    cameras: Cameras,
+    timeline: Timeline,
+    /// A simulator failure at this time (the station's error).
+    fail_at: Option<i64>,
+    /// The time of the last input (what the stop request reads).
+    clock: Rc<Cell<i64>>,
+}
+
+/// The station failed (the table's scripted simulator error).
+#[derive(Debug, thiserror::Error)]
+#[error("scripted simulator failure at {at_nanos} ns")]
+struct ScriptFailed {
+    at_nanos: i64,
+}
+
+impl Station<TwinRobot, ()> for Script {
+    type Error = ScriptFailed;
+
+    fn name(&self) -> &'static str {
+        "scripted twin"
+    }
+
+    async fn next(
+        &mut self,
+        cell: &mut CellLoop<TwinRobot, ()>,
+    ) -> Result<Option<Timed>, ScriptFailed> {
+        if self.fail_at.is_some_and(|at| self.now >= at) {
+            return Err(ScriptFailed { at_nanos: self.now });
+        }
+        if self.views.is_none() {
+            let views = self
+                .sim
+                .step()
+                .unwrap()
+                .map(|t| t.frame.views)
+                .unwrap_or_default();
+            self.views = Some((self.cameras)(
+                self.now,
+                self.timeline.working_since(),
+                views,
+            ));
+        }
+        if let Some((t, reports)) = cell.robot_mut().advance(self.now) {
+            self.frame_step = false;
+            self.clock.set(t);
+            return Ok(Some(Timed::new(t, Input::Reports(reports))));
+        }
+        self.frame_step = true;
+        self.clock.set(self.now);
+        Ok(Some(Timed::new(
+            self.now,
+            Input::Views(self.views.take().unwrap_or_default()),
+        )))
+    }
+
+    fn stepped(
+        &mut self,
+        cell: &mut CellLoop<TwinRobot, ()>,
+        at: i64,
+        step: &Step,
+    ) -> Result<(), ScriptFailed> {
+        self.timeline.events.extend(step.events.iter().cloned());
+        let m = cell.machine();
+        self.timeline
+            .states
+            .push((at, m.state(), m.held_for().cloned()));
+        if self.frame_step {
+            self.now += FRAME;
+        }
+        Ok(())
+    }
+
+    fn next_machine(
+        &mut self,
+        _: &mut CellLoop<TwinRobot, ()>,
+    ) -> Result<SessionMachine, ScriptFailed> {
+        Err(ScriptFailed { at_nanos: self.now })
+    }
+}
+
+/// A stop asked for once the session has run to `at_nanos` (a test's Ctrl-C).
+struct StopAt {
+    at_nanos: i64,
+    now: Rc<Cell<i64>>,
+}
+
+impl StopRequest for StopAt {
+    fn requested(&self) -> Option<StopSignal> {
+        (self.now.get() >= self.at_nanos).then_some(StopSignal::Interrupt)
+    }
+}
+
+/// One row: the driver run to the end of one session (at most 60 s), on a 1.75 m operator (class
+/// c2) with `fault` armed for the robot's first leg.
+struct Row {
+    verifies: bool,
+    fault: Option<RobotFault>,
+    cameras: Cameras,
+    fail_at: Option<i64>,
+    stop_at: Option<i64>,
+}
+
+/// How a row went: the driver's outcome (or its error), the timeline and the robot.
+struct Ran {
+    outcome: Result<Outcome, DriverError<ScriptFailed>>,
+    timeline: Timeline,
+    robot: TwinRobot,
+    end: Option<SessionEnd>,
+}
+
+impl Ran {
+    fn interruption(&self) -> Option<&Interruption> {
+        match &self.end {
+            Some(SessionEnd::Interrupted { by }) => Some(by),
+            _ => None,
+        }
+    }
+
+    fn failure(&self) -> RobotFailure {
+        match self.interruption() {
+            Some(Interruption::RobotFailed { failure }) => failure.clone(),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    fn status(&self) -> ExitStatus {
+        self.outcome.as_ref().expect("the driver ran").status
+    }
+}
+
+impl Row {
+    fn new() -> Self {
+        Self {
+            verifies: true,
+            fault: None,
+            cameras: as_simulated(),
+            fail_at: None,
+            stop_at: None,
+        }
+    }
+
+    fn fault(fault: RobotFault) -> Self {
+        Self {
+            fault: Some(fault),
+            ..Self::new()
+        }
+    }
+
+    fn run(self) -> Ran {
         let (a, _) = approved();
         let mut controller = SimController::new(
             a.joint_names().to_vec(),
             a.points()[0].positions_rad.clone(),
         );
-        if let Some(f) = fault {
+        if let Some(f) = self.fault {
             controller.arm(0, f).unwrap();
         }
         let machine = SessionMachine::from_settings(
             rig(),
             &CellSettings::default(),
-            Box::new(Provider { verifies }),
+            Box::new(Provider {
+                verifies: self.verifies,
+            }),
         )
         .unwrap();
         let robot = TwinRobot::new(controller, SAMPLE, 0.1);
@@ -156,83 +342,65 @@ impl Table {
             SimConfig::new(7),
         )
         .unwrap();
-        Self {
-            cell: CellLoop::new(machine, robot, ()).with_driver_state(),
+        let cell = CellLoop::new(machine, robot, ())
+            .with_driver_state()
+            .with_deadline(60_000 * MS, 60.0);
+        let mut station = Script {
             sim,
             now: 0,
-            events: Vec::new(),
+            views: None,
+            frame_step: false,
+            cameras: self.cameras,
+            timeline: Timeline::default(),
+            fail_at: self.fail_at,
+            clock: Rc::default(),
+        };
+        let mut driver = Driver::new(cell, Some(1));
+        let stop = StopAt {
+            at_nanos: self.stop_at.unwrap_or(i64::MAX),
+            now: station.clock.clone(),
+        };
+        let outcome = ready(driver.run(&mut station, &stop));
+        let (machine, robot, ()) = driver.into_cell().into_parts();
+        Ran {
+            outcome,
+            timeline: station.timeline,
+            robot,
+            end: machine.summary().end.clone(),
         }
     }
+}
 
-    /// Steps until `until` holds or the session ends (at most `limit_nanos`): the robot side's
-    /// reports to the cell and a step at each, the cameras' views (through `cameras`) every frame.
-    fn run(&mut self, limit_nanos: i64, cameras: &Cameras, until: &dyn Fn(&Self) -> bool) -> bool {
-        while self.now <= limit_nanos {
-            while let Some((t, reports)) = self.cell.robot_mut().advance(self.now) {
-                for r in reports {
-                    self.cell.report(r);
-                }
-                let step = self.cell.step(t, Vec::new());
-                self.events.extend(step.events);
-            }
-            let views = self
-                .sim
-                .step()
-                .unwrap()
-                .map(|t| t.frame.views)
-                .unwrap_or_default();
-            let step = self.cell.step(self.now, cameras(self.now, views));
-            self.events.extend(step.events);
-            if until(self) || self.cell.ended().is_some() {
-                return until(self);
-            }
-            self.now += FRAME;
-        }
-        false
-    }
-
-    fn failure(&mut self) -> RobotFailure {
-        self.run(60_000 * MS, &|_, v| v, &|_| false);
-        let ending = self.cell.ended().expect("ended");
-        match ending.interruption() {
-            Some(Interruption::RobotFailed { failure }) => failure.clone(),
-            other => panic!("{other:?}"),
-        }
-    }
-
-    fn working_since(&self) -> Option<i64> {
-        self.events.iter().find_map(|e| match e {
-            SessionEvent::StateChanged {
-                to: SessionState::Working,
-                stamp_nanos,
-                ..
-            } => Some(*stamp_nanos),
-            _ => None,
-        })
+/// The driver's future on a station that is always ready: done at the first poll.
+fn ready<T>(future: impl std::future::Future<Output = T>) -> T {
+    let mut future = std::pin::pin!(future);
+    let mut context = std::task::Context::from_waker(std::task::Waker::noop());
+    match future.as_mut().poll(&mut context) {
+        std::task::Poll::Ready(out) => out,
+        std::task::Poll::Pending => panic!("a scripted station never waits"),
     }
 }
 
 #[test]
 fn a_joint_drifting_off_the_path_ends_the_session_held() {
-    let mut t = Table::new(
-        true,
-        Some(RobotFault::PathDeviation {
-            joint: 1,
-            rad_per_s: 0.1,
-        }),
-    );
-    let f = t.failure();
+    let ran = Row::fault(RobotFault::PathDeviation {
+        joint: 1,
+        rad_per_s: 0.1,
+    })
+    .run();
+    let f = ran.failure();
     assert!(
         matches!(&f, RobotFailure::Deviation { deviation: Deviation::Path { joint, .. } } if joint == "joint_2"),
         "{f:?}"
     );
-    assert_eq!(t.cell.robot().monitor_holds, 1);
+    assert_eq!(ran.robot.monitor_holds, 1);
+    assert_eq!(ran.status(), ExitStatus::NeedsAPerson);
 }
 
 #[test]
 fn a_stall_ends_the_session_held() {
-    let mut t = Table::new(true, Some(RobotFault::Stall { at_fraction: 0.4 }));
-    let f = t.failure();
+    let ran = Row::fault(RobotFault::Stall { at_fraction: 0.4 }).run();
+    let f = ran.failure();
     assert!(
         matches!(
             f,
@@ -242,13 +410,14 @@ fn a_stall_ends_the_session_held() {
         ),
         "{f:?}"
     );
+    assert_eq!(ran.status(), ExitStatus::NeedsAPerson);
 }
 
 #[test]
 fn a_late_controller_answer_ends_the_session_held() {
-    let mut t = Table::new(true, Some(RobotFault::LateAnswer { waited_s: 5.0 }));
+    let ran = Row::fault(RobotFault::LateAnswer { waited_s: 5.0 }).run();
     assert_eq!(
-        t.failure(),
+        ran.failure(),
         RobotFailure::GoalUnanswered {
             leg: Some(Leg::ToHandover),
             waited_s: 5.0
@@ -259,38 +428,46 @@ fn a_late_controller_answer_ends_the_session_held() {
 #[test]
 fn a_driver_error_or_an_e_stop_holds_the_robot_until_the_driver_is_back() {
     for by in [DriverStop::ByUser, DriverStop::ByError] {
-        let mut t = Table::new(
-            true,
-            Some(RobotFault::DriverStops {
-                by,
-                at_fraction: 0.4,
-            }),
-        );
-        assert!(t.run(60_000 * MS, &|_, v| v, &|t| t.cell.machine().state()
-            == SessionState::Held));
-        t.run(t.now + 3_000 * MS, &|_, v| v, &|_| false);
-        assert!(t.cell.ended().is_none());
-        assert!(
-            matches!(
-                t.cell.machine().held_for(),
-                Some(HoldReason::RobotNotReady {
+        let ran = Row::fault(RobotFault::DriverStops {
+            by,
+            at_fraction: 0.4,
+        })
+        .run();
+        // Held from the stop on, for that reason, and never ended by it: the session runs into its
+        // time limit with the robot held.
+        let held = ran
+            .timeline
+            .states
+            .iter()
+            .position(|(_, s, _)| *s == SessionState::Held)
+            .expect("held");
+        let (from, ..) = ran.timeline.states[held];
+        assert!(ran
+            .timeline
+            .after(from)
+            .take_while(|(_, s, _)| *s != SessionState::SessionEnded)
+            .all(|(_, s, why)| *s == SessionState::Held
+                && matches!(why, Some(HoldReason::RobotNotReady {
                     unready: RobotUnready::DriverStopped { by: b }
-                }) if *b == by
-            ),
+                }) if *b == by)));
+        assert!(
+            matches!(ran.interruption(), Some(Interruption::TimeLimit { .. })),
             "{:?}",
-            t.cell.machine().held_for()
+            ran.end
         );
     }
 }
 
 #[test]
 fn a_lock_that_does_not_verify_ends_the_session_and_the_robot_never_moves() {
-    let mut t = Table::new(false, None);
-    t.run(60_000 * MS, &|_, v| v, &|_| false);
-    let s = t.cell.machine().summary();
+    let ran = Row {
+        verifies: false,
+        ..Row::new()
+    }
+    .run();
     assert!(
         matches!(
-            &s.end,
+            &ran.end,
             Some(SessionEnd::Aborted {
                 reason: AbortReason::NotVerified {
                     class: TrajectoryClass::C2,
@@ -299,89 +476,152 @@ fn a_lock_that_does_not_verify_ends_the_session_and_the_robot_never_moves() {
             })
         ),
         "{:?}",
-        s.end
+        ran.end
     );
-    assert!(t
-        .cell
-        .robot()
+    assert!(ran
+        .robot
         .controller
         .received
         .iter()
         .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
+    assert_eq!(ran.status(), ExitStatus::NeedsAPerson);
 }
 
 #[test]
 fn tracking_lost_holds_the_robot_and_the_session_resumes_when_the_cameras_are_back() {
-    let mut t = Table::new(true, None);
-    assert!(t.run(60_000 * MS, &|_, v| v, &|t| t.working_since().is_some()));
     // Once the first leg (5 s) has brought the part: a robot held at an end of the locked path
     // resumes (one stopped between its ends waits for the pendant).
-    let from = t.working_since().unwrap() + 5_300 * MS;
-    let silent = move |now: i64, views: Vec<View2>| {
-        if (from..from + 1_000 * MS).contains(&now) {
-            Vec::new()
-        } else {
-            views
-        }
-    };
+    let silent_from = |working: Option<i64>| working.map(|w| w + 5_300 * MS);
+    let ran = Row {
+        cameras: Box::new(move |now, working, views| match silent_from(working) {
+            Some(from) if (from..from + 1_000 * MS).contains(&now) => Vec::new(),
+            _ => views,
+        }),
+        ..Row::new()
+    }
+    .run();
+    let from = silent_from(ran.timeline.working_since()).expect("working");
+    let held = ran
+        .timeline
+        .after(from)
+        .find(|(_, s, _)| *s == SessionState::Held)
+        .expect("held");
     assert!(
-        t.run(from + 1_000 * MS, &silent, &|t| t.cell.machine().state()
-            == SessionState::Held)
+        matches!(held.2, Some(HoldReason::CamerasLost { .. })),
+        "{held:?}"
     );
-    assert!(
-        matches!(
-            t.cell.machine().held_for(),
-            Some(HoldReason::CamerasLost { .. })
-        ),
-        "{:?}",
-        t.cell.machine().held_for()
-    );
-    assert!(
-        t.run(t.now + 5_000 * MS, &silent, &|t| t.cell.machine().state()
-            == SessionState::Working)
-    );
+    assert!(ran
+        .timeline
+        .after(held.0)
+        .any(|(_, s, _)| *s == SessionState::Working));
+    // and the session then ends as it should: the operator left
+    assert_eq!(ran.status(), ExitStatus::Done);
 }
 
 #[test]
 fn one_camera_lost_is_reported_and_the_robot_keeps_working() {
-    let mut t = Table::new(true, None);
-    assert!(t.run(60_000 * MS, &|_, v| v, &|t| t.working_since().is_some()));
-    let without_the_first =
-        |_: i64, views: Vec<View2>| views.into_iter().filter(|v| v.camera != 0).collect();
-    t.run(t.now + 3_000 * MS, &without_the_first, &|_| false);
-    assert!(t
+    let ran = Row {
+        cameras: Box::new(|now, working, views| match working {
+            Some(w) if now >= w => views.into_iter().filter(|v| v.camera != 0).collect(),
+            _ => views,
+        }),
+        ..Row::new()
+    }
+    .run();
+    assert!(ran
+        .timeline
         .events
         .iter()
         .any(|e| matches!(e, SessionEvent::CameraDegraded { .. })));
-    assert_eq!(t.cell.machine().state(), SessionState::Working);
+    let w = ran.timeline.working_since().expect("working");
+    assert!(ran
+        .timeline
+        .after(w)
+        .all(|(_, s, _)| *s != SessionState::Held));
+    assert_eq!(ran.status(), ExitStatus::Done);
 }
 
 #[test]
 fn the_cameras_clock_jumping_back_holds_the_robot() {
-    let mut t = Table::new(true, None);
-    assert!(t.run(60_000 * MS, &|_, v| v, &|t| t.working_since().is_some()));
-    let from = t.now + 500 * MS;
-    let jumped = move |now: i64, views: Vec<View2>| {
-        views
-            .into_iter()
-            .map(|mut v| {
-                if now >= from {
-                    v.stamp_nanos -= 5_000 * MS;
-                }
-                v
-            })
-            .collect()
-    };
+    let jump_from = |working: Option<i64>| working.map(|w| w + 500 * MS);
+    let ran = Row {
+        cameras: Box::new(move |now, working, views| {
+            let jumped = jump_from(working).is_some_and(|from| now >= from);
+            views
+                .into_iter()
+                .map(|mut v| {
+                    if jumped {
+                        v.stamp_nanos -= 5_000 * MS;
+                    }
+                    v
+                })
+                .collect()
+        }),
+        ..Row::new()
+    }
+    .run();
+    let from = jump_from(ran.timeline.working_since()).expect("working");
+    let held = ran
+        .timeline
+        .after(from)
+        .find(|(_, s, _)| *s == SessionState::Held)
+        .expect("held");
     assert!(
-        t.run(t.now + 3_000 * MS, &jumped, &|t| t.cell.machine().state()
-            == SessionState::Held)
+        matches!(held.2, Some(HoldReason::CamerasLost { .. })),
+        "{held:?}"
     );
+}
+
+#[test]
+fn a_stop_signal_ends_the_session_held_with_its_exit_status() {
+    let ran = Row {
+        stop_at: Some(10_000 * MS),
+        ..Row::new()
+    }
+    .run();
     assert!(
         matches!(
-            t.cell.machine().held_for(),
-            Some(HoldReason::CamerasLost { .. })
+            ran.interruption(),
+            Some(Interruption::Stopped {
+                signal: StopSignal::Interrupt
+            })
         ),
         "{:?}",
-        t.cell.machine().held_for()
+        ran.end
     );
+    assert_eq!(ran.status(), ExitStatus::Stopped(StopSignal::Interrupt));
+    assert_eq!(ran.status().code(), 130);
+    // the shutdown's hold was sent
+    assert!(matches!(
+        ran.robot.controller.received.last(),
+        Some((_, RobotCommand::Hold { .. }))
+    ));
+}
+
+#[test]
+fn an_input_that_fails_ends_the_session_held_and_returns_its_error() {
+    let ran = Row {
+        fail_at: Some(12_000 * MS),
+        ..Row::new()
+    }
+    .run();
+    let error = ran.outcome.as_ref().expect_err("the station failed");
+    assert_eq!(error.error.at_nanos, 12_000 * MS);
+    assert!(
+        matches!(
+            ran.interruption(),
+            Some(Interruption::InputFailed {
+                error: InputError {
+                    input: "scripted twin",
+                    ..
+                }
+            })
+        ),
+        "{:?}",
+        ran.end
+    );
+    assert!(matches!(
+        ran.robot.controller.received.last(),
+        Some((_, RobotCommand::Hold { .. }))
+    ));
 }

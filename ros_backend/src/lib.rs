@@ -7,7 +7,7 @@
 //!   whose first failure is kept for the cell loop to end the session on.
 //! - [`robot`]: the robot sink over ROS 2 ([`robot::RosRobot`]: the joint trajectory topic or a
 //!   FollowJointTrajectory goal per leg, the hold as cancel + empty trajectory), and the robot
-//!   side's messages turned into the cell's reports ([`robot::feed`]).
+//!   side's messages turned into the cell's reports ([`robot::reports_of`]).
 //! - [`monitor`]: the execution monitor's own task: every `/joint_states` sample judged against the
 //!   locked leg as it arrives, the hold published at once on a deviation.
 //! - [`outputs`]: the cell's publishers and recorder as one [`ergocell_cell::session::CellOutputs`].

@@ -137,11 +137,6 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         self.events.clone()
     }
 
-    /// A goal is running on the controller (accepted, no result yet).
-    pub fn goal_outstanding(&self) -> bool {
-        self.goal_outstanding
-    }
-
     fn push(&self, event: ControllerEvent) {
         if let Ok(mut q) = self.events.lock() {
             q.push(event);
@@ -272,6 +267,11 @@ pub fn controller_event(
 }
 
 impl<T: TrajectoryTopic> RobotSink for RosRobot<T> {
+    /// A goal is running on the controller (accepted, no result yet).
+    fn goal_outstanding(&self) -> bool {
+        self.goal_outstanding
+    }
+
     fn send(&mut self, now_nanos: i64, command: &RobotCommand) -> Result<(), BackendError> {
         let message = messages::command_message(command, now_nanos);
         match command {
@@ -444,18 +444,18 @@ pub enum RobotInput {
     DriverEvent(HardwareEvent),
 }
 
-/// Hands the robot side's report to `cell` in the cell's types (what it means is the cell's rule:
-/// `CellLoop::report`) and keeps a controller event of every report worth keeping. Returns the line
-/// to print for a person, if any.
-pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
-    cell: &mut CellLoop<RosRobot<T>, O>,
+/// The robot side's input in the cell's types: the reports whose meaning is the cell's rule
+/// (`CellLoop::report`, applied by the session driver), a controller event kept for every report
+/// worth keeping, and the line to print for a person, if any. A joint-state sample is the monitor
+/// task's alone: no report.
+pub fn reports_of<T: TrajectoryTopic>(
+    robot: &mut RosRobot<T>,
     now_nanos: i64,
     input: RobotInput,
-) -> Option<String> {
-    let robot = cell.robot_mut();
+) -> (Vec<RobotReport>, Option<String>) {
     match input {
         RobotInput::Monitor(note) => match note {
-            MonitorNote::Sample(..) => None,
+            MonitorNote::Sample(..) => (Vec::new(), None),
             MonitorNote::Deviation {
                 deviation,
                 event,
@@ -467,19 +467,19 @@ pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
                 );
                 robot.held_after_ms = Some(held_after_ms);
                 robot.push(event);
-                cell.report(RobotReport::Deviation(deviation));
-                Some(line)
+                (vec![RobotReport::Deviation(deviation)], Some(line))
             }
             MonitorNote::Stale { event, timeout_s } => {
                 let line = event.text.clone();
                 robot.push(event);
-                cell.report(RobotReport::JointStatesStale { timeout_s });
-                Some(line)
+                (
+                    vec![RobotReport::JointStatesStale { timeout_s }],
+                    Some(line),
+                )
             }
             MonitorNote::Back(event) => {
                 robot.push(event);
-                cell.report(RobotReport::JointStatesBack);
-                None
+                (vec![RobotReport::JointStatesBack], None)
             }
         },
         RobotInput::Controller(report) => {
@@ -494,24 +494,36 @@ pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
             if let Some(event) = messages::robot_report_message(now_nanos, &report) {
                 robot.push(event);
             }
-            cell.report(report);
-            Some(line)
+            (vec![report], Some(line))
         }
         RobotInput::DriverConfigured(configured) => {
-            let effect = cell.report(RobotReport::DriverConfigured(configured));
-            announce_driver(cell, now_nanos, effect.driver_readiness)
+            (vec![RobotReport::DriverConfigured(configured)], None)
         }
-        RobotInput::DriverEvent(e) => {
-            let line = format!("driver: {} ({})", e.describe(), e.robot_name);
-            let effect = cell.report(RobotReport::DriverEvent(driver_event(&e)));
-            Some(
-                match announce_driver(cell, now_nanos, effect.driver_readiness) {
-                    Some(more) => format!("{line}\n  {more}"),
-                    None => line,
-                },
-            )
-        }
+        RobotInput::DriverEvent(e) => (
+            vec![RobotReport::DriverEvent(driver_event(&e))],
+            Some(format!("driver: {} ({})", e.describe(), e.robot_name)),
+        ),
     }
+}
+
+/// [`reports_of`] applied to `cell` at once (a test's or a tool's own loop; `run` hands the
+/// reports to the session driver): the lines to print.
+pub fn feed<T: TrajectoryTopic, O: CellOutputs>(
+    cell: &mut CellLoop<RosRobot<T>, O>,
+    now_nanos: i64,
+    input: RobotInput,
+) -> Option<String> {
+    let (reports, line) = reports_of(cell.robot_mut(), now_nanos, input);
+    let mut lines: Vec<String> = line.into_iter().collect();
+    for report in reports {
+        let effect = cell.report(report);
+        lines.extend(announce_readiness(
+            cell.robot(),
+            now_nanos,
+            effect.driver_readiness,
+        ));
+    }
+    (!lines.is_empty()).then(|| lines.join("\n  "))
 }
 
 /// The driver's readiness, when it changed (`Some(None)`: now ready), published as a controller
@@ -521,10 +533,19 @@ pub fn announce_driver<T: TrajectoryTopic, O: CellOutputs>(
     now_nanos: i64,
     readiness: Option<Option<RobotUnready>>,
 ) -> Option<String> {
+    announce_readiness(cell.robot(), now_nanos, readiness)
+}
+
+/// [`announce_driver`] on the robot port alone.
+pub fn announce_readiness<T: TrajectoryTopic>(
+    robot: &RosRobot<T>,
+    now_nanos: i64,
+    readiness: Option<Option<RobotUnready>>,
+) -> Option<String> {
     let why = readiness?;
     let event = messages::driver_readiness_message(now_nanos, why.as_ref());
     let text = event.text.clone();
-    cell.robot_mut().push(event);
+    robot.push(event);
     Some(format!("driver: {text}"))
 }
 

@@ -33,9 +33,9 @@ use ergocell::recording::{self, topics, McapRecorder, Recording};
 use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    trajectory_class, AfterSession, CellLoop, CellOutputs, ExitStatus, Interruption,
-    LandmarkSource, Leg, OutputError, RobotCommand, RobotSink, SessionEnd, SessionEvent,
-    SessionMachine, SessionState,
+    trajectory_class, CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption,
+    LandmarkSource, Leg, OutputError, ReportEffect, RobotCommand, RobotReport, RobotSink,
+    SessionEnd, SessionEvent, SessionMachine, SessionState, Station, Step, Timed,
 };
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
@@ -774,7 +774,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         start,
         rula: "RULA -".to_owned(),
     };
-    let mut cell = CellLoop::new(machine, robot, outputs)
+    let cell = CellLoop::new(machine, robot, outputs)
         .with_deadline(start + (limit_secs * 1e9).round() as i64, limit_secs)
         .with_driver_state();
     let mut twin = Twin {
@@ -787,17 +787,29 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         rig: &rig,
         start,
         period_nanos: (1e9 / args.fps).round() as i64,
+        now: start,
+        views: None,
+        frame_step: false,
+        class_change: false,
+        script: ScriptState::default(),
+        last_status: start,
+        soak: args.soak_report.map(|minutes| Soak::new(minutes, start)),
+        wall_start: instant(),
+        step_started: instant(),
     };
-    let now = twin.play(&mut cell, &stop, args.soak_report)?;
-    // One session: the cell's rule for what follows its end gives the exit.
-    let status = match cell.ended().map(|e| e.after(1, Some(1))) {
-        Some(AfterSession::Stop(status)) => status,
-        Some(AfterSession::NextSession) => ExitStatus::Done,
-        None => ExitStatus::NeedsAPerson,
-    };
+    // One session, by the cell's rules (the session driver's); the twin's station is ready at once.
+    let mut driver = Driver::new(cell, Some(1));
+    let outcome = futures::executor::block_on(driver.run(&mut twin, &stop));
+    let now = twin.now;
+    if let Some(soak) = twin.soak.as_mut() {
+        soak.line(secs(now, start) / 3600.0);
+    }
+    let cell = driver.into_cell();
     let (machine, _, outputs) = cell.into_parts();
     drop(outputs.display);
     let messages = outputs.recording.close()?;
+    // A simulator that failed ended the session held; its error is the demo's.
+    let status = outcome.map_err(|e| e.error)?.status;
     drop(demo_dir);
     summary(&machine, args, true_class, secs(now, start));
     println!(
@@ -836,7 +848,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
 }
 
-/// The digital twin around the cell loop: the simulated cameras with the fault schedule, and the
+/// The digital twin around the cell loop, as the session driver's station: the simulated cameras
+/// with the fault schedule, the twin robot's reports, both on the simulator's clock, and the
 /// simulated robot's joint states and markers recorded as a real cell's would be.
 struct Twin<'a> {
     source: SimSource,
@@ -849,131 +862,187 @@ struct Twin<'a> {
     rig: &'a CameraRig,
     start: i64,
     period_nanos: i64,
+    /// The simulator's clock: the time of the frame now being played.
+    now: i64,
+    /// The frame's views, polled and waiting for the robot side's reports up to `now` to be
+    /// handed over first.
+    views: Option<Vec<View2>>,
+    /// The last input handed over was the frame's views (the frame is done once it is stepped).
+    frame_step: bool,
+    class_change: bool,
+    script: ScriptState,
+    last_status: i64,
+    soak: Option<Soak>,
+    wall_start: std::time::Instant,
+    step_started: std::time::Instant,
 }
 
 type DemoLoop = CellLoop<TwinRobot, DemoOutputs>;
+
+/// Where the simulated operator's script is.
+#[derive(Default)]
+struct ScriptState {
+    /// The script is over (the cell is empty).
+    done: bool,
+    /// The operator is down for the floor pick.
+    picking: bool,
+}
 
 /// The twin's joint states: a KUKA driver's 250 Hz.
 const JOINT_STATE_PERIOD_NANOS: i64 = 4_000_000;
 /// Joint states stale after this long (`[ros] joint_state_timeout_s`'s default).
 const JOINT_STATE_TIMEOUT_S: f64 = 0.1;
 
-impl Twin<'_> {
-    /// Plays the session to its end on the simulator's clock; the time it ended.
-    fn play(
-        &mut self,
-        cell: &mut DemoLoop,
-        stop: &StopFlag,
-        soak_minutes: Option<u64>,
-    ) -> anyhow::Result<i64> {
-        let start = self.start;
-        let mut now = start;
-        let mut sim_done = false;
-        let mut was_picking = false;
-        let mut last_status = start;
-        let mut soak = soak_minutes.map(|minutes| Soak::new(minutes, start));
-        let wall_start = instant();
-        loop {
+impl Station<TwinRobot, DemoOutputs> for Twin<'_> {
+    type Error = anyhow::Error;
+
+    fn name(&self) -> &'static str {
+        "simulator"
+    }
+
+    /// Per frame: the cameras polled, then the robot side's reports up to the frame's time (each
+    /// batch at its own time, as `run` steps on every report it receives), then the frame's views
+    /// with the fault schedule applied.
+    async fn next(&mut self, cell: &mut DemoLoop) -> anyhow::Result<Option<Timed>> {
+        let now = self.now;
+        if self.views.is_none() {
             if cell.outputs().display.is_some() {
                 // real time: the page shows the session as it happens
-                let due = std::time::Duration::from_nanos(u64::try_from(now - start).unwrap_or(0));
-                if let Some(wait) = due.checked_sub(wall_start.elapsed()) {
+                let due =
+                    std::time::Duration::from_nanos(u64::try_from(now - self.start).unwrap_or(0));
+                if let Some(wait) = due.checked_sub(self.wall_start.elapsed()) {
                     std::thread::sleep(wait);
                 }
             }
-            let step_started = instant();
-            if let Some(signal) = stop.get() {
-                cell.stop(signal.stop());
-            }
-            // Ctrl-C, the time limit, a recording that failed: ended (held) before this tick's views.
-            if cell.check(now).is_some() {
-                break;
-            }
-            let mut views = Vec::new();
-            if !sim_done {
-                match self.source.poll(now)? {
-                    Some(v) => {
-                        views = v;
-                        // The simulator's ground truth: when the operator bends down and stands up.
-                        let picking = self
-                            .source
-                            .last_tick
-                            .as_ref()
-                            .is_some_and(|t| matches!(t.truth.phase, Phase::FloorPick { .. }));
-                        if picking != was_picking {
-                            was_picking = picking;
-                            println!(
-                                "  t={:5.1} s  (simulator) {}",
-                                secs(now, start),
-                                if picking {
-                                    "operator bends down for the dropped part (floor pick)"
-                                } else {
-                                    "operator stands back up with the part"
-                                }
-                            );
-                        }
+            self.step_started = instant();
+            self.views = Some(self.poll(now)?);
+        }
+        if let Some((t, reports)) = cell.robot_mut().advance(now) {
+            self.frame_step = false;
+            return Ok(Some(Timed::new(t, Input::Reports(reports))));
+        }
+        let mut views = self.views.take().unwrap_or_default();
+        self.class_change = self.apply_faults(cell, now, &mut views);
+        let rig = self.rig;
+        cell.outputs_mut().recording.with(|rec| {
+            views.iter().try_for_each(|v| {
+                let m = messages::landmarks_message(rig, v);
+                rec.write(&topics::camera(&m.camera_id), now, &m)
+            })
+        });
+        self.frame_step = true;
+        Ok(Some(Timed::new(now, Input::Views(views))))
+    }
+
+    /// Recorded as a real cell records its controller's events, and said.
+    fn reported(
+        &mut self,
+        cell: &mut DemoLoop,
+        t: i64,
+        report: &RobotReport,
+        effect: &ReportEffect,
+    ) -> anyhow::Result<()> {
+        if let Some(e) = messages::robot_report_message(t, report) {
+            cell.outputs_mut()
+                .recording
+                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
+        }
+        if let Some(failure) = &effect.failure {
+            println!("  t={:5.1} s  robot: {failure}", secs(t, self.start));
+        }
+        if let Some(readiness) = &effect.driver_readiness {
+            let e = messages::driver_readiness_message(t, readiness.as_ref());
+            cell.outputs_mut()
+                .recording
+                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
+            println!(
+                "  t={:5.1} s  driver: {}",
+                secs(t, self.start),
+                readiness.as_ref().map_or_else(
+                    || "configured and controlling".to_owned(),
+                    ToString::to_string
+                )
+            );
+        }
+        Ok(())
+    }
+
+    fn stepped(&mut self, cell: &mut DemoLoop, at: i64, step: &Step) -> anyhow::Result<()> {
+        self.follow_decision(&step.events, at)?;
+        if !self.frame_step {
+            return Ok(());
+        }
+        let now = self.now;
+        if cell.machine().state() == SessionState::Working {
+            // The first call counts: the moment the faults are timed from.
+            self.faults.working(now);
+        }
+        // A supervisor asks for another class mid-session (the schedule's request): refused.
+        if std::mem::take(&mut self.class_change) {
+            let other = if cell.machine().summary().class == Some(TrajectoryClass::C3) {
+                TrajectoryClass::C1
+            } else {
+                TrajectoryClass::C3
+            };
+            cell.request_class(now, other);
+        }
+        self.record_robot(cell, now);
+        if now - self.last_status >= 5_000_000_000 {
+            self.last_status = now;
+            let m = cell.machine();
+            println!(
+                "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {}",
+                secs(now, self.start),
+                m.state().name(),
+                m.cameras_fresh(),
+                self.rig.len(),
+                m.pairs_tracking(),
+                cell.outputs().rula
+            );
+        }
+        if let Some(soak) = self.soak.as_mut() {
+            soak.step(now, self.start, self.step_started);
+        }
+        self.now += self.period_nanos;
+        Ok(())
+    }
+
+    fn next_machine(&mut self, _cell: &mut DemoLoop) -> anyhow::Result<SessionMachine> {
+        anyhow::bail!("the demo plays one session")
+    }
+}
+
+impl Twin<'_> {
+    /// The simulated cameras' views at `now`; once the script is over the cell is empty and the
+    /// cameras keep publishing "nobody".
+    fn poll(&mut self, now: i64) -> anyhow::Result<Vec<View2>> {
+        if !self.script.done {
+            match self.source.poll(now)? {
+                Some(views) => {
+                    // The simulator's ground truth: when the operator bends down and stands up.
+                    let picking = self
+                        .source
+                        .last_tick
+                        .as_ref()
+                        .is_some_and(|t| matches!(t.truth.phase, Phase::FloorPick { .. }));
+                    if picking != self.script.picking {
+                        self.script.picking = picking;
+                        println!(
+                            "  t={:5.1} s  (simulator) {}",
+                            secs(now, self.start),
+                            if picking {
+                                "operator bends down for the dropped part (floor pick)"
+                            } else {
+                                "operator stands back up with the part"
+                            }
+                        );
                     }
-                    None => sim_done = true,
+                    return Ok(views);
                 }
-            }
-            if sim_done {
-                // The script is over and the cell is empty; the cameras keep publishing "nobody".
-                views = (0..self.rig.len()).map(|k| View2::empty(k, now)).collect();
-            }
-            // The robot side's reports up to now, each handed to the cell and stepped on at its
-            // time, as `run` steps on every report it receives.
-            if self.robot_side(cell, now)? {
-                break;
-            }
-            let class_change = self.apply_faults(cell, now, &mut views);
-            let rig = self.rig;
-            cell.outputs_mut().recording.with(|rec| {
-                views.iter().try_for_each(|v| {
-                    let m = messages::landmarks_message(rig, v);
-                    rec.write(&topics::camera(&m.camera_id), now, &m)
-                })
-            });
-            let step = cell.step(now, views);
-            self.follow_decision(&step.events, now)?;
-            if cell.machine().state() == SessionState::Working {
-                // The first call counts: the moment the faults are timed from.
-                self.faults.working(now);
-            }
-            // A supervisor asks for another class mid-session (the schedule's request): refused.
-            if class_change {
-                let other = if cell.machine().summary().class == Some(TrajectoryClass::C3) {
-                    TrajectoryClass::C1
-                } else {
-                    TrajectoryClass::C3
-                };
-                cell.request_class(now, other);
-            }
-            self.record_robot(cell, now);
-            if now - last_status >= 5_000_000_000 {
-                last_status = now;
-                let m = cell.machine();
-                println!(
-                    "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {}",
-                    secs(now, start),
-                    m.state().name(),
-                    m.cameras_fresh(),
-                    self.rig.len(),
-                    m.pairs_tracking(),
-                    cell.outputs().rula
-                );
-            }
-            if let Some(soak) = soak.as_mut() {
-                soak.step(now, start, step_started);
-            }
-            now += self.period_nanos;
-            if step.ended.is_some() {
-                break;
+                None => self.script.done = true,
             }
         }
-        if let Some(soak) = soak.as_mut() {
-            soak.line(secs(now, start) / 3600.0);
-        }
-        Ok(now)
+        Ok((0..self.rig.len()).map(|k| View2::empty(k, now)).collect())
     }
 
     /// The fault schedule at `now`: silenced cameras' views dropped; whether a class change request
@@ -1012,45 +1081,6 @@ impl Twin<'_> {
             });
         }
         fault.class_change_request
-    }
-
-    /// The robot side up to `now`: each batch of reports handed to the cell's rules
-    /// (`CellLoop::report`), what changed said, and a step at its time. Whether the session ended.
-    fn robot_side(&mut self, cell: &mut DemoLoop, now: i64) -> anyhow::Result<bool> {
-        while let Some((t, reports)) = cell.robot_mut().advance(now) {
-            for r in reports {
-                // Recorded as a real cell records its controller's events.
-                if let Some(e) = messages::robot_report_message(t, &r) {
-                    cell.outputs_mut()
-                        .recording
-                        .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
-                }
-                let effect = cell.report(r);
-                if let Some(failure) = effect.failure {
-                    println!("  t={:5.1} s  robot: {failure}", secs(t, self.start));
-                }
-                if let Some(readiness) = effect.driver_readiness {
-                    let e = messages::driver_readiness_message(t, readiness.as_ref());
-                    cell.outputs_mut()
-                        .recording
-                        .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
-                    println!(
-                        "  t={:5.1} s  driver: {}",
-                        secs(t, self.start),
-                        readiness.map_or_else(
-                            || "configured and controlling".to_owned(),
-                            |why| why.to_string()
-                        )
-                    );
-                }
-            }
-            let step = cell.step(t, Vec::new());
-            self.follow_decision(&step.events, t)?;
-            if step.ended.is_some() {
-                return Ok(true);
-            }
-        }
-        Ok(false)
     }
 
     /// Once the cell decides a class other than the operator's own, the simulated operator reaches

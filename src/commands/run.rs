@@ -18,8 +18,8 @@ use anyhow::Context as _;
 use ergocell::display::Display;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    AfterSession, CellLoop, CellOutputs, ExitStatus, Interruption, OutputError, SessionEvent,
-    SessionMachine,
+    CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption, OutputError, ReportEffect,
+    RobotReport, SessionEvent, SessionMachine, Station, Step, Timed,
 };
 use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
 use ergocell_bridge::controller::{run_controller, ControllerCommand, ControllerReport};
@@ -39,7 +39,7 @@ use ergocell_ros_backend::messages;
 use ergocell_ros_backend::monitor::{monitor_task, Judge, MonitorNote, MonitorStats};
 use ergocell_ros_backend::outputs::RosOutputs;
 use ergocell_ros_backend::recording::{self, topics, McapRecorder, Recording};
-use ergocell_ros_backend::robot::{announce_driver, feed, radians_list, RobotInput, RosRobot};
+use ergocell_ros_backend::robot::{announce_driver, radians_list, RobotInput, RosRobot};
 use ergocell_ros_backend::robot_markers::RobotGeometry;
 use futures::StreamExt as _;
 
@@ -397,6 +397,7 @@ async fn serve(
     stop: &StopFlag,
 ) -> anyhow::Result<()> {
     let ros = &setup.ros;
+    let scope = network_scope(ros)?;
     let topics = CellTopics::new(node, ros)?;
     let (action, reports) = controller_task(node, ros)?;
     let robot = RosRobot::new(Arc::new(topics.joint_trajectory), action, ros.clone());
@@ -424,154 +425,46 @@ async fn serve(
         let at = clock.now() + (limit * 1e9).round() as i64;
         cell = cell.with_deadline(at, limit);
     }
-    let scope = network_scope(ros)?;
     print_start(ros, topics.cameras.len(), &scope);
     say(multicast_note(&scope));
-    let inputs = Inputs {
-        cameras: topics.cameras,
-        driver: topics.driver,
+    let first = messages::session_state_message(cell.machine(), clock.now(), "started");
+    let p = &cell.outputs().ros.publishers;
+    let started = async {
+        publish(&p.session_state, first.clone()).await?;
+        publish(&p.session_events, first).await
+    };
+    if let Err(e) = started.await {
+        monitor.abort();
+        let (_, _, outputs) = cell.into_parts();
+        *recording = Some(outputs.ros.recording);
+        return Err(e.into());
+    }
+    let readiness = cell.driver_readiness();
+    say(announce_driver(&mut cell, clock.now(), readiness));
+    let mut station = RunStation::new(
+        setup,
+        &topics.cameras,
+        topics.driver.as_ref(),
         notes,
         reports,
-    };
-    let result = drive(&mut cell, inputs, setup, args, clock, stop).await;
+        clock,
+    );
+    // The sessions, one after another, by the cell's rules (the session driver's).
+    let mut driver = Driver::new(cell, args.sessions);
+    let outcome = driver.run(&mut station, stop).await;
     monitor.abort();
+    let cell = driver.into_cell();
     if let Ok(stats) = stats.lock() {
         print_monitor(cell.robot(), &stats);
     }
-    let (_, _, outputs) = cell.into_parts();
-    *recording = Some(outputs.ros.recording);
-    result
-}
-
-/// What feeds the cell loop besides the clock.
-struct Inputs {
-    cameras: Vec<Subscription<CameraLandmarks>>,
-    driver: Option<(
-        Subscription<ergocell_bridge::msg::BoolMsg>,
-        Subscription<ergocell_bridge::msg::HardwareEvent>,
-    )>,
-    notes: tokio::sync::mpsc::UnboundedReceiver<MonitorNote>,
-    reports: tokio::sync::mpsc::UnboundedReceiver<ControllerReport>,
-}
-
-/// The loop: one step per camera message, robot-side report or 20 ms tick.
-async fn drive(
-    cell: &mut RunLoop,
-    mut inputs: Inputs,
-    setup: &Setup,
-    args: &Args,
-    mut clock: SessionClock,
-    stop: &StopFlag,
-) -> anyhow::Result<()> {
-    let (mut configured, mut hardware) = match &inputs.driver {
-        Some((c, h)) => (c.async_stream().boxed(), h.async_stream().boxed()),
-        None => (
-            futures::stream::pending().boxed(),
-            futures::stream::pending().boxed(),
-        ),
-    };
-    let mut camera_stream =
-        futures::stream::select_all(inputs.cameras.iter().map(|s| Box::pin(s.async_stream())));
-    let mut markers = Markers::default();
-    let mut tick = tokio::time::interval(Duration::from_millis(20));
-    let mut latency = Latency::start();
-    let mut inbox = CameraInbox::new(setup.rig.clone(), setup.video_geometries.clone());
-    let mut sessions_done = 0u32;
-    // One step per camera message, robot-side report or tick until a session's end stops the
-    // program (the cell's rule: `Ending::after`).
-    let first = messages::session_state_message(cell.machine(), clock.now(), "started");
-    let p = &cell.outputs().ros.publishers;
-    publish(&p.session_state, first.clone()).await?;
-    publish(&p.session_events, first).await?;
-    let readiness = cell.driver_readiness();
-    say(announce_driver(cell, clock.now(), readiness));
-    let status = loop {
-        let mut views = Vec::new();
-        let input = tokio::select! {
-            Some(item) = camera_stream.next() => {
-                match item {
-                    Ok((m, _info)) => {
-                        let m: CameraLandmarks = m;
-                        let now = clock.now();
-                        cell.outputs_mut().ros.recording.with(|rec| rec.write(&topics::camera(&m.camera_id), now, &m));
-                        views.extend(inbox.accept(&m));
-                    }
-                    Err(e) => tracing::warn!(error = ?e, "camera read error"),
-                }
-                None
-            }
-            Some(note) = inputs.notes.recv() => {
-                if let MonitorNote::Sample(js, now) = &note {
-                    markers.record(cell, js, *now, setup);
-                    continue;
-                }
-                Some(RobotInput::Monitor(note))
-            }
-            Some(report) = inputs.reports.recv() => Some(RobotInput::Controller(report)),
-            Some(Ok((m, _))) = configured.next() => {
-                let m: ergocell_bridge::msg::BoolMsg = m;
-                Some(RobotInput::DriverConfigured(m.data))
-            }
-            Some(Ok((m, _))) = hardware.next() => Some(RobotInput::DriverEvent(m)),
-            _ = tick.tick() => None,
-        };
-        // The step starts now, woken by a camera message or the clock's tick (which releases the
-        // frames whose fixed lag has passed): the latency report times it to the RULA state.
-        let woken = instant();
-        let now = clock.now();
-        if let Some(input) = input {
-            say(feed(cell, now, input));
-        }
-        if let Some(step) = clock.wall_step(now_nanos(), now) {
-            println!(
-                "  wall clock stepped by {:+.3} s: session timing goes on unchanged (monotonic)",
-                step as f64 * 1e-9
-            );
-            tracing::warn!(step_s = step as f64 * 1e-9, "wall clock stepped");
-        }
-        if let Some(signal) = stop.get() {
-            cell.stop(signal.stop());
-        }
-        // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
-        cell.outputs_mut().ros.recording.with(|rec| rec.tick(now));
-        let step = cell.step(now, views);
-        if cell.outputs().ros.published_frame {
-            latency.push(woken);
-        }
-        let Some(ending) = step.ended else {
-            continue;
-        };
-        sessions_done += 1;
-        match ending.after(sessions_done, args.sessions) {
-            AfterSession::NextSession => {
-                print_summary(cell.machine(), inbox.rejected());
-                cell.next_session(setup.new_machine()?);
-                if let Some(d) = &cell.outputs().display {
-                    d.next_session(cell.machine());
-                }
-                println!("next session: waiting for an operator");
-            }
-            AfterSession::Stop(status) => break status,
-        }
-    };
-    // A goal the controller accepted and has not finished: its result is waited for (2 s at most),
-    // so the last leg's result is on record.
-    let drain_until = tokio::time::Instant::now() + Duration::from_secs(2);
-    while cell.robot().goal_outstanding() {
-        match tokio::time::timeout_at(drain_until, inputs.reports.recv()).await {
-            Ok(Some(report)) => {
-                let now = clock.now();
-                say(feed(cell, now, RobotInput::Controller(report)));
-                cell.outputs_mut().ros.flush_events(now)?;
-            }
-            Ok(None) | Err(_) => break,
-        }
-    }
-    print_summary(cell.machine(), inbox.rejected());
+    print_summary(cell.machine(), station.inbox.rejected());
     if args.latency_report {
-        latency.print();
+        station.latency.print();
     }
-    match status {
+    let (machine, _, outputs) = cell.into_parts();
+    *recording = Some(outputs.ros.recording);
+    let outcome = outcome.map_err(|e| e.error)?;
+    match outcome.status {
         ExitStatus::Done => Ok(()),
         ExitStatus::Stopped(signal) => Err(Stopped {
             signal: Signal::from(signal),
@@ -582,15 +475,193 @@ async fn drive(
         }
         .into()),
         ExitStatus::NeedsAPerson => {
-            if let Some(Interruption::TimeLimit { limit_s }) =
-                cell.ended().and_then(|e| e.interruption())
-            {
+            if let Some(Interruption::TimeLimit { limit_s }) = outcome.ending.interruption() {
                 anyhow::bail!(
                     "session interrupted: --max-secs reached (robot held) after {limit_s} s"
                 );
             }
-            anyhow::bail!("session {}", cell.machine().summary().end_reason)
+            anyhow::bail!("session {}", machine.summary().end_reason)
         }
+    }
+}
+
+type Items<'a, T> = futures::stream::LocalBoxStream<'a, Result<T, String>>;
+
+/// `run`'s station: the camera topics through the inbox, the robot side's reports (the monitor
+/// task, the controller task, the driver's topics) and a 20 ms tick, stamped by the session
+/// clock; the recording's camera messages, joint states and markers; the latency report.
+struct RunStation<'a> {
+    setup: &'a Setup,
+    cameras: Items<'a, CameraLandmarks>,
+    configured: Items<'a, ergocell_bridge::msg::BoolMsg>,
+    hardware: Items<'a, ergocell_bridge::msg::HardwareEvent>,
+    notes: tokio::sync::mpsc::UnboundedReceiver<MonitorNote>,
+    reports: tokio::sync::mpsc::UnboundedReceiver<ControllerReport>,
+    tick: tokio::time::Interval,
+    clock: SessionClock,
+    inbox: CameraInbox,
+    markers: Markers,
+    latency: Latency,
+    /// When the step now under way was woken (a camera message or the tick).
+    woken: Option<std::time::Instant>,
+    /// How long the controller's last answer is waited for after the last session.
+    settle_until: Option<tokio::time::Instant>,
+}
+
+impl<'a> RunStation<'a> {
+    fn new(
+        setup: &'a Setup,
+        cameras: &'a [Subscription<CameraLandmarks>],
+        driver: Option<&'a (
+            Subscription<ergocell_bridge::msg::BoolMsg>,
+            Subscription<ergocell_bridge::msg::HardwareEvent>,
+        )>,
+        notes: tokio::sync::mpsc::UnboundedReceiver<MonitorNote>,
+        reports: tokio::sync::mpsc::UnboundedReceiver<ControllerReport>,
+        clock: SessionClock,
+    ) -> Self {
+        fn items<M: 'static + serde::de::DeserializeOwned>(s: &Subscription<M>) -> Items<'_, M> {
+            s.async_stream()
+                .map(|r| r.map(|(m, _)| m).map_err(|e| format!("{e:?}")))
+                .boxed_local()
+        }
+        let (configured, hardware) = match driver {
+            Some((c, h)) => (items(c), items(h)),
+            None => (
+                futures::stream::pending().boxed_local(),
+                futures::stream::pending().boxed_local(),
+            ),
+        };
+        Self {
+            setup,
+            cameras: futures::stream::select_all(cameras.iter().map(items)).boxed_local(),
+            configured,
+            hardware,
+            notes,
+            reports,
+            tick: tokio::time::interval(Duration::from_millis(20)),
+            clock,
+            inbox: CameraInbox::new(setup.rig.clone(), setup.video_geometries.clone()),
+            markers: Markers::default(),
+            latency: Latency::start(),
+            woken: None,
+            settle_until: None,
+        }
+    }
+}
+
+/// The robot side's input in the cell's reports, its line said.
+fn robot_input(cell: &mut RunLoop, now: i64, input: RobotInput) -> Input {
+    let (reports, line) = ergocell_ros_backend::robot::reports_of(cell.robot_mut(), now, input);
+    say(line);
+    Input::Reports(reports)
+}
+
+impl Station<RosRobot, RunOutputs> for RunStation<'_> {
+    type Error = anyhow::Error;
+
+    fn name(&self) -> &'static str {
+        "ROS 2 inputs"
+    }
+
+    /// One camera message, robot-side report or 20 ms tick.
+    async fn next(&mut self, cell: &mut RunLoop) -> anyhow::Result<Option<Timed>> {
+        enum Woke {
+            Camera(CameraLandmarks),
+            Robot(RobotInput),
+            Tick,
+        }
+        let woke = tokio::select! {
+            Some(item) = self.cameras.next() => match item {
+                Ok(m) => Woke::Camera(m),
+                Err(e) => {
+                    tracing::warn!(error = %e, "camera read error");
+                    return Ok(None);
+                }
+            },
+            Some(note) = self.notes.recv() => {
+                if let MonitorNote::Sample(js, now) = &note {
+                    self.markers.record(cell, js, *now, self.setup);
+                    return Ok(None);
+                }
+                Woke::Robot(RobotInput::Monitor(note))
+            }
+            Some(report) = self.reports.recv() => Woke::Robot(RobotInput::Controller(report)),
+            Some(Ok(m)) = self.configured.next() => Woke::Robot(RobotInput::DriverConfigured(m.data)),
+            Some(Ok(m)) = self.hardware.next() => Woke::Robot(RobotInput::DriverEvent(m)),
+            _ = self.tick.tick() => Woke::Tick,
+        };
+        // The step starts now, woken by a camera message or the clock's tick (which releases the
+        // frames whose fixed lag has passed): the latency report times it to the RULA state.
+        self.woken = Some(instant());
+        let now = self.clock.now();
+        if let Some(step) = self.clock.wall_step(now_nanos(), now) {
+            println!(
+                "  wall clock stepped by {:+.3} s: session timing goes on unchanged (monotonic)",
+                step as f64 * 1e-9
+            );
+            tracing::warn!(step_s = step as f64 * 1e-9, "wall clock stepped");
+        }
+        // Flushed on the clock, not only when messages arrive (kill -9 loses at most a second).
+        cell.outputs_mut().ros.recording.with(|rec| rec.tick(now));
+        let input = match woke {
+            Woke::Camera(m) => {
+                cell.outputs_mut()
+                    .ros
+                    .recording
+                    .with(|rec| rec.write(&topics::camera(&m.camera_id), now, &m));
+                Input::Views(self.inbox.accept(&m).into_iter().collect())
+            }
+            Woke::Robot(input) => robot_input(cell, now, input),
+            Woke::Tick => Input::Tick,
+        };
+        Ok(Some(Timed::new(now, input)))
+    }
+
+    fn reported(
+        &mut self,
+        cell: &mut RunLoop,
+        at: i64,
+        _report: &RobotReport,
+        effect: &ReportEffect,
+    ) -> anyhow::Result<()> {
+        say(announce_driver(cell, at, effect.driver_readiness.clone()));
+        Ok(())
+    }
+
+    fn stepped(&mut self, cell: &mut RunLoop, _at: i64, _step: &Step) -> anyhow::Result<()> {
+        if cell.outputs().ros.published_frame {
+            if let Some(woken) = self.woken {
+                self.latency.push(woken);
+            }
+        }
+        Ok(())
+    }
+
+    fn next_machine(&mut self, cell: &mut RunLoop) -> anyhow::Result<SessionMachine> {
+        print_summary(cell.machine(), self.inbox.rejected());
+        self.setup.new_machine()
+    }
+
+    fn session_began(&mut self, cell: &mut RunLoop) {
+        if let Some(d) = &cell.outputs().display {
+            d.next_session(cell.machine());
+        }
+        println!("next session: waiting for an operator");
+    }
+
+    /// The controller's reports for at most 2 s after the last session, each published at once.
+    async fn settle(&mut self, cell: &mut RunLoop) -> anyhow::Result<Option<Timed>> {
+        let until = *self
+            .settle_until
+            .get_or_insert_with(|| tokio::time::Instant::now() + Duration::from_secs(2));
+        let Ok(Some(report)) = tokio::time::timeout_at(until, self.reports.recv()).await else {
+            return Ok(None);
+        };
+        let now = self.clock.now();
+        let input = robot_input(cell, now, RobotInput::Controller(report));
+        cell.outputs_mut().ros.flush_events(now)?;
+        Ok(Some(Timed::new(now, input)))
     }
 }
 

@@ -80,6 +80,13 @@ pub struct Stopped {
 #[derive(Debug, Clone, Default)]
 pub struct StopFlag(Arc<AtomicU8>);
 
+/// The session driver asks the flag.
+impl ergocell_cell::session::StopRequest for StopFlag {
+    fn requested(&self) -> Option<ergocell_cell::session::StopSignal> {
+        self.get().map(Signal::stop)
+    }
+}
+
 impl StopFlag {
     /// The signal that arrived, if any.
     pub fn get(&self) -> Option<Signal> {

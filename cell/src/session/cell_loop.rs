@@ -321,6 +321,12 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         Some(self.end(now_nanos, by))
     }
 
+    /// Ends the session now, holding the robot, for `by` (a caller's reason: an input that
+    /// failed); the shutdown's step. A session already ended keeps its ending.
+    pub fn interrupt(&mut self, now_nanos: i64, by: Interruption) -> Step {
+        self.end(now_nanos, by)
+    }
+
     /// Ends the session now, holding the robot, for `by`.
     fn end(&mut self, now_nanos: i64, by: Interruption) -> Step {
         if self.ended.is_some() {

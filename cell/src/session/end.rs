@@ -9,6 +9,7 @@ use ergocell_robot::{RobotError, TrajectoryClass};
 use serde::{Serialize, Serializer};
 
 use super::cell_loop::OutputError;
+use super::driver::InputError;
 use super::robot_side::{RobotFailure, RobotUnready};
 use crate::error::ProviderError;
 
@@ -122,6 +123,8 @@ pub enum Interruption {
     /// An output failed (a recording that cannot be written: a cell that records must not run on
     /// unrecorded).
     OutputFailed { error: OutputError },
+    /// An input failed (the simulator, the ROS 2 node): the cell cannot see what it must.
+    InputFailed { error: InputError },
     /// The robot side failed: the controller refused, aborted or did not answer a goal, or the
     /// execution monitor saw a deviation.
     RobotFailed { failure: RobotFailure },
@@ -135,6 +138,7 @@ impl fmt::Display for Interruption {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::OutputFailed { error } => write!(f, "{error}"),
+            Self::InputFailed { error } => write!(f, "{error}"),
             Self::RobotFailed { failure } => write!(f, "{failure}"),
             Self::Stopped { signal } => f.write_str(signal.name()),
             Self::TimeLimit { limit_s } => write!(f, "the time limit of {limit_s:.1} s passed"),

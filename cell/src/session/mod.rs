@@ -25,13 +25,15 @@
 //! interface, not an emergency stop.
 
 pub mod cell_loop;
+pub mod driver;
 pub mod dummy;
 pub mod end;
 mod machine;
 pub mod robot_side;
 pub mod watch;
 
-pub use cell_loop::{AfterSession, CellLoop, CellOutputs, Ending, ExitStatus, OutputError};
+pub use cell_loop::{AfterSession, CellLoop, CellOutputs, Ending, ExitStatus, OutputError, Step};
+pub use driver::{Driver, DriverError, Input, InputError, Outcome, Station, StopRequest, Timed};
 pub use end::{AbortReason, HoldReason, Interruption, SessionEnd, StopSignal};
 pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 pub use robot_side::{
@@ -289,6 +291,11 @@ pub trait RobotSink {
     /// The robot's joint positions in the order of `names` (from `/joint_states`, mapped by name);
     /// `None` if unknown.
     fn joint_positions(&mut self, now_nanos: i64, names: &[String]) -> Option<Vec<f64>>;
+    /// Whether the controller still runs a goal it accepted (its result not yet in): the driver
+    /// waits for it after the last session. A port that cannot tell says no.
+    fn goal_outstanding(&self) -> bool {
+        false
+    }
 }
 
 /// Verified trajectories: every call re-reads and re-verifies the lock and its approval.

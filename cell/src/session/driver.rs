@@ -1,0 +1,299 @@
+//! The session driver: runs sessions end to end, one after another, until one ends the program.
+//!
+//! `ergocell run` (ROS 2) and `ergocell demo` (the digital twin) each build a [`CellLoop`] (the
+//! machine, the robot port, the outputs) and a [`Station`] (what the cell is wired to: the
+//! landmark source and the robot side's reports, each input stamped by the station's clock), and
+//! call [`Driver::run`]. Neither has a loop of its own. The driver owns the order of things, so
+//! that no backend can get it wrong:
+//!
+//! 1. the station's next [`Input`]: camera views, the robot side's reports, or the clock's tick;
+//! 2. a stop asked for ([`StopRequest`]: Ctrl-C, SIGTERM) is handed to the loop;
+//! 3. each robot report is applied by the cell's rules ([`CellLoop::report`]), then the loop steps
+//!    at the input's time (the early-end rules first, then the machine);
+//! 4. at a session's end, the cell's rule ([`super::Ending::after`]) says whether the next operator
+//!    may come (a fresh machine from the station) or the program stops, and with which status;
+//! 5. a goal the controller still runs when the program stops is waited for through the station
+//!    ([`Station::settle`]), so that its result is on record.
+//!
+//! A station that fails ends the session at once, held ([`Interruption::InputFailed`]), and its
+//! error is returned. The driver reads no clock: every input carries the time the station's clock
+//! gave it (the wall clock at `run`'s boundary, the simulator's in the twin, a test's). It is
+//! `async` so that a network station can await its inputs; a simulated one is ready at once and is
+//! driven by any executor's `block_on`.
+
+use std::future::Future;
+
+use ergocell_perception::View2;
+
+use super::cell_loop::{AfterSession, CellLoop, CellOutputs, Ending, ExitStatus, Step};
+use super::end::{Interruption, StopSignal};
+use super::robot_side::{ReportEffect, RobotReport};
+use super::{RobotSink, SessionMachine};
+
+/// What the station hands the driver next.
+#[derive(Debug, Clone)]
+pub enum Input {
+    /// Camera views that arrived (possibly none: a camera message the inbox holds back).
+    Views(Vec<View2>),
+    /// The robot side's reports, in the order they came.
+    Reports(Vec<RobotReport>),
+    /// The clock's tick: a step with no views (frames whose fixed lag has passed are released,
+    /// the staleness rules run).
+    Tick,
+}
+
+/// An [`Input`] at the time the station's clock gave it, nanoseconds.
+#[derive(Debug, Clone)]
+pub struct Timed {
+    pub at_nanos: i64,
+    pub input: Input,
+}
+
+impl Timed {
+    pub fn new(at_nanos: i64, input: Input) -> Self {
+        Self { at_nanos, input }
+    }
+}
+
+/// A station that could not give its input (a simulator error, a lost network node): its name and
+/// why. The driver ends the session held for it.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error, serde::Serialize)]
+#[error("{input} failed: {why}")]
+pub struct InputError {
+    pub input: &'static str,
+    pub why: String,
+}
+
+/// Whether a stop was asked for (a signal handler's flag, a test's).
+pub trait StopRequest {
+    fn requested(&self) -> Option<StopSignal>;
+}
+
+/// No stop is ever asked for.
+impl StopRequest for () {
+    fn requested(&self) -> Option<StopSignal> {
+        None
+    }
+}
+
+/// What the cell is wired to besides its robot port and outputs (which the [`CellLoop`] holds):
+/// the landmark source and the robot side's reports, stamped by the station's clock, and what the
+/// binary does beside the rules (what it says, records or simulates). Every method gets the loop,
+/// so that a station can read the robot port (the twin's controller advances there) and the
+/// outputs.
+pub trait Station<R, O> {
+    /// The station's error (the binary's: any displayable error).
+    type Error: std::fmt::Display + std::fmt::Debug;
+
+    /// The station's name in an [`InputError`] ("ROS 2 inputs", "simulator").
+    fn name(&self) -> &'static str;
+
+    /// The next input, awaited (a network station) or at once (a simulated one); `Ok(None)`: an
+    /// input that is not the cell's (a joint state the station only records), asked again.
+    fn next(
+        &mut self,
+        cell: &mut CellLoop<R, O>,
+    ) -> impl Future<Output = Result<Option<Timed>, Self::Error>>;
+
+    /// A robot report was applied at `at_nanos` with `effect` (to say, publish or record).
+    fn reported(
+        &mut self,
+        _cell: &mut CellLoop<R, O>,
+        _at_nanos: i64,
+        _report: &RobotReport,
+        _effect: &ReportEffect,
+    ) -> Result<(), Self::Error> {
+        Ok(())
+    }
+
+    /// The loop stepped at `at_nanos` on `input`'s kind (views, reports or a tick).
+    fn stepped(
+        &mut self,
+        _cell: &mut CellLoop<R, O>,
+        _at_nanos: i64,
+        _step: &Step,
+    ) -> Result<(), Self::Error> {
+        Ok(())
+    }
+
+    /// The machine for the next operator's session (the last one ended normally).
+    fn next_machine(&mut self, cell: &mut CellLoop<R, O>) -> Result<SessionMachine, Self::Error>;
+
+    /// The next session began (the loop holds its new machine).
+    fn session_began(&mut self, _cell: &mut CellLoop<R, O>) {}
+
+    /// After the program's last session, while the controller still runs a goal: its next reports,
+    /// or `None` when the station stops waiting (its own time limit).
+    fn settle(
+        &mut self,
+        _cell: &mut CellLoop<R, O>,
+    ) -> impl Future<Output = Result<Option<Timed>, Self::Error>> {
+        async { Ok(None) }
+    }
+}
+
+/// How the driver's sessions ended.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// The program's exit status by the cell's rule ([`super::Ending::after`]).
+    pub status: ExitStatus,
+    /// Sessions ended, the last one included.
+    pub sessions: u32,
+    /// The last session's ending.
+    pub ending: Ending,
+}
+
+/// The driver failed: the station's error, after the session was ended held for it.
+#[derive(Debug, thiserror::Error)]
+#[error("{error} (the session was ended, robot held)")]
+pub struct DriverError<E: std::fmt::Display + std::fmt::Debug> {
+    pub error: E,
+    /// The ending the failure gave the session.
+    pub ending: Option<Ending>,
+}
+
+/// Runs sessions end to end on a [`CellLoop`].
+pub struct Driver<R, O> {
+    cell: CellLoop<R, O>,
+    sessions_wanted: Option<u32>,
+}
+
+impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
+    /// `sessions_wanted`: the sessions to run (`None`: one after another until one ends otherwise
+    /// than normally, or a stop).
+    pub fn new(cell: CellLoop<R, O>, sessions_wanted: Option<u32>) -> Self {
+        Self {
+            cell,
+            sessions_wanted,
+        }
+    }
+
+    pub fn cell(&self) -> &CellLoop<R, O> {
+        &self.cell
+    }
+
+    pub fn cell_mut(&mut self) -> &mut CellLoop<R, O> {
+        &mut self.cell
+    }
+
+    pub fn into_cell(self) -> CellLoop<R, O> {
+        self.cell
+    }
+
+    /// Runs until the cell's rule stops the program; the typed outcome.
+    pub async fn run<S: Station<R, O>>(
+        &mut self,
+        station: &mut S,
+        stop: &dyn StopRequest,
+    ) -> Result<Outcome, DriverError<S::Error>> {
+        let mut sessions = 0u32;
+        let mut last_nanos = 0i64;
+        let (status, ending) = loop {
+            let timed = match station.next(&mut self.cell).await {
+                Ok(Some(t)) => t,
+                Ok(None) => continue,
+                Err(error) => return Err(self.failed(station.name(), last_nanos, error)),
+            };
+            let at = timed.at_nanos;
+            last_nanos = last_nanos.max(at);
+            if let Some(signal) = stop.requested() {
+                self.cell.stop(signal);
+            }
+            let views = match timed.input {
+                Input::Views(views) => views,
+                Input::Tick => Vec::new(),
+                Input::Reports(reports) => {
+                    if let Err(error) = self.apply(station, at, reports) {
+                        return Err(self.failed(station.name(), at, error));
+                    }
+                    Vec::new()
+                }
+            };
+            let step = self.cell.step(at, views);
+            if let Err(error) = station.stepped(&mut self.cell, at, &step) {
+                return Err(self.failed(station.name(), at, error));
+            }
+            let Some(ending) = step.ended else {
+                continue;
+            };
+            sessions += 1;
+            match ending.after(sessions, self.sessions_wanted) {
+                AfterSession::NextSession => match station.next_machine(&mut self.cell) {
+                    Ok(machine) => {
+                        self.cell.next_session(machine);
+                        station.session_began(&mut self.cell);
+                    }
+                    // The last session ended normally (the robot home): there is nothing to hold.
+                    Err(error) => {
+                        return Err(DriverError {
+                            error,
+                            ending: Some(ending),
+                        })
+                    }
+                },
+                AfterSession::Stop(status) => break (status, ending),
+            }
+        };
+        // A goal the controller accepted and has not finished: its result is waited for, so the
+        // last leg's result is on record.
+        while self.cell.robot().goal_outstanding() {
+            match station.settle(&mut self.cell).await {
+                Ok(Some(Timed {
+                    at_nanos,
+                    input: Input::Reports(reports),
+                })) => {
+                    if let Err(error) = self.apply(station, at_nanos, reports) {
+                        tracing::error!(%error, "after the session, a robot report could not be kept");
+                    }
+                }
+                Ok(Some(_)) => {}
+                Ok(None) => break,
+                Err(error) => {
+                    tracing::error!(%error, "after the session, the controller's answer was not waited for");
+                    break;
+                }
+            }
+        }
+        Ok(Outcome {
+            status,
+            sessions,
+            ending,
+        })
+    }
+
+    /// Each report applied by the cell's rules, in order, and shown to the station.
+    fn apply<S: Station<R, O>>(
+        &mut self,
+        station: &mut S,
+        at_nanos: i64,
+        reports: Vec<RobotReport>,
+    ) -> Result<(), S::Error> {
+        for report in reports {
+            let effect = self.cell.report(report.clone());
+            station.reported(&mut self.cell, at_nanos, &report, &effect)?;
+        }
+        Ok(())
+    }
+
+    /// The station failed: the session ends now, held.
+    fn failed<E: std::fmt::Display + std::fmt::Debug>(
+        &mut self,
+        input: &'static str,
+        at_nanos: i64,
+        error: E,
+    ) -> DriverError<E> {
+        let step = self.cell.interrupt(
+            at_nanos,
+            Interruption::InputFailed {
+                error: InputError {
+                    input,
+                    why: error.to_string(),
+                },
+            },
+        );
+        DriverError {
+            error,
+            ending: step.ended,
+        }
+    }
+}
