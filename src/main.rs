@@ -2,8 +2,8 @@
 //!
 //! The library crates do the work; files, the clock and the network are read here and in the ROS 2
 //! backend (`ergocell_bridge`, `ergocell_ros_backend`: the DDS participant, the session clock, the
-//! recording). Each subcommand lives in a module under `commands/` (`replay` beside `run` in
-//! `run.rs`, `report` beside `review` in `review.rs`).
+//! recording). Each subcommand lives in a module under `commands/` (`report` beside `review` in
+//! `review.rs`).
 
 /// The commands' `println!`: a closed stdout (`ergocell trajectories lock | head -1`) drops the line
 /// and the command finishes its work (every lock written, every file closed); std's macro panics
@@ -63,7 +63,7 @@ enum Command {
     /// The cell controller on ROS 2: camera landmarks in, robot commands and session state out.
     Run(commands::run::Args),
     /// Replay a recording's camera landmarks over ROS 2 (`--ros`), as the camera nodes would publish them.
-    Replay(commands::run::ReplayArgs),
+    Replay(commands::replay::ReplayArgs),
     /// Triangulate and fuse 2D detections from calibrated cameras into 3D landmarks.
     Triangulate(commands::triangulate::Args),
     /// Camera and stereo calibration from checkerboard images, written as a rig file.
@@ -116,7 +116,7 @@ fn main() -> std::process::ExitCode {
     let result = match cli.command {
         Command::Demo(args) => commands::demo::run(&args),
         Command::Run(args) => commands::run::run(&args),
-        Command::Replay(args) => commands::run::replay(&args),
+        Command::Replay(args) => commands::replay::replay(&args),
         Command::Triangulate(args) => commands::triangulate::run(&args),
         Command::Calibrate(args) => commands::calibrate::run(&args),
         Command::Rula(args) => commands::rula::run(&args),

@@ -1,4 +1,4 @@
-//! A module per subcommand (`run.rs` also holds `replay`, `review.rs` also `report`). Each exposes
+//! A module per subcommand (`review.rs` also holds `report`). Each exposes
 //! its `Args` (clap) and a function taking them, returning `anyhow::Result<()>`.
 //! Shared by them: `output` (output files: `--force`, never an input) and `signals` (SIGINT and
 //! SIGTERM).
@@ -9,6 +9,7 @@ pub mod exposure;
 pub mod height;
 pub mod output;
 pub mod reba;
+pub mod replay;
 pub mod review;
 pub mod rula;
 pub mod run;
