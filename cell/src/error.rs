@@ -28,12 +28,41 @@ pub enum CellError {
     Ergonomics(#[from] ergocell_ergonomics::ErgonomicsError),
 }
 
-/// A backend (landmark source, robot sink) failed.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{backend}: {reason}")]
-pub struct BackendError {
-    pub backend: &'static str,
-    pub reason: String,
+/// A backend (landmark source, robot sink) failed, with the facts of each way as fields.
+#[derive(Debug, Clone, thiserror::Error)]
+#[non_exhaustive]
+pub enum BackendError {
+    /// The transport did not take a message (`channel`: "ROS 2 joint trajectory", …); `detail` is
+    /// the transport's own report, whose error type is not ours to keep.
+    #[error("{channel}: {detail}")]
+    Transport {
+        channel: &'static str,
+        detail: String,
+    },
+    /// The leg does not carry one positive path tolerance per joint: it is not sent.
+    #[error(
+        "execution monitor: the leg carries path tolerances {given:?}, not one positive tolerance \
+         per joint ({joints})"
+    )]
+    PathTolerances { given: Vec<f64>, joints: usize },
+    /// The leg's monitor limits are out of range, or the watch cannot take the leg: it is not sent.
+    #[error("execution monitor: the leg cannot be watched: {cause}")]
+    Monitor {
+        #[source]
+        cause: ergocell_robot::monitor::MonitorError,
+    },
+    /// The execution monitor's task failed (its state poisoned by a panic).
+    #[error("execution monitor: the monitor task failed")]
+    MonitorTaskFailed,
+    /// The FollowJointTrajectory task is gone: nothing can be sent to the controller.
+    #[error("ROS 2 FollowJointTrajectory: the controller task has stopped")]
+    ControllerTaskStopped,
+    /// The simulator behind a simulated backend failed.
+    #[error("simulator: {cause}")]
+    Simulator {
+        #[source]
+        cause: Cause,
+    },
 }
 
 /// A cause from outside the cell's crates (the binary's file readers, a TOML parser), shared so

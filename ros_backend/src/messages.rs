@@ -776,9 +776,9 @@ pub fn rula_cost_clause(cost: Option<f64>) -> String {
 
 /// The console's lines for one step's events (frames left out): each event as [`describe`] says
 /// it, except that cameras degraded in the same step for the same reason share one line (a cell
-/// started before its camera nodes names them all at once, not six times), and a hold whose reason
-/// a state change of the same step gives leaves the reason to that line (a session ended for an
-/// unverified trajectory said it twice).
+/// started before its camera nodes names them all at once, not six times), and a hold sent in the
+/// step that holds or ends the session leaves its reason to the state change's line (a session
+/// ended for an unverified trajectory said it twice).
 pub fn describe_step(events: &[SessionEvent]) -> Vec<String> {
     let mut lines = Vec::new();
     let mut i = 0;
@@ -804,11 +804,18 @@ pub fn describe_step(events: &[SessionEvent]) -> Vec<String> {
                 });
             }
             SessionEvent::RobotCommandSent {
-                command: RobotCommand::Hold { reason },
+                command: RobotCommand::Hold { .. },
                 ..
-            } if events.iter().any(
-                |e| matches!(e, SessionEvent::StateChanged { reason: r, .. } if r == reason),
-            ) =>
+            } if events.iter().any(|e| {
+                matches!(
+                    e,
+                    SessionEvent::StateChanged {
+                        to: ergocell_cell::session::SessionState::Held
+                            | ergocell_cell::session::SessionState::SessionEnded,
+                        ..
+                    }
+                )
+            }) =>
             {
                 lines.push(HOLD_LINE.to_owned());
                 i += 1;
@@ -1032,26 +1039,30 @@ mod tests {
 
     #[test]
     fn a_hold_whose_reason_the_state_line_gives_says_it_once() {
-        let why = "trajectory for class c2 not verified: no approvals file";
-        let hold = |reason: &str| SessionEvent::RobotCommandSent {
+        use ergocell_cell::session::{HoldReason, RobotUnready};
+        let stale = HoldReason::RobotNotReady {
+            unready: RobotUnready::JointStatesStale { timeout_s: 0.1 },
+        };
+        let why = stale.to_string();
+        let hold = || SessionEvent::RobotCommandSent {
             stamp_nanos: 1,
             command: RobotCommand::Hold {
-                reason: reason.to_owned(),
+                reason: stale.clone(),
             },
         };
-        let ended = SessionEvent::StateChanged {
+        let held = SessionEvent::StateChanged {
             stamp_nanos: 1,
-            from: SessionState::ClassDecided,
-            to: SessionState::SessionEnded,
-            reason: why.to_owned(),
+            from: SessionState::Working,
+            to: SessionState::Held,
+            reason: why.clone(),
         };
-        let lines = describe_step(&[hold(why), ended.clone()]);
-        assert_eq!(lines, vec![HOLD_LINE.to_owned(), describe(&ended)]);
-        assert_eq!(lines.iter().filter(|l| l.contains(why)).count(), 1);
+        let lines = describe_step(&[hold(), held.clone()]);
+        assert_eq!(lines, vec![HOLD_LINE.to_owned(), describe(&held)]);
+        assert_eq!(lines.iter().filter(|l| l.contains(&why)).count(), 1);
         // A hold alone keeps its reason.
         assert_eq!(
-            describe_step(&[hold("joint states stale")]),
-            vec![format!("{HOLD_LINE}: joint states stale")]
+            describe_step(&[hold()]),
+            vec![format!("{HOLD_LINE}: {why}")]
         );
     }
 }

@@ -12,7 +12,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use ergocell_bridge::msg::{ControllerEvent, JointState};
-use ergocell_cell::session::{RobotCommand, RobotReport};
+use ergocell_cell::session::{HoldReason, RobotCommand, RobotReport};
 use futures::StreamExt as _;
 
 use crate::clock::{instant, now_nanos, SessionClock};
@@ -128,7 +128,7 @@ impl<T: TrajectoryTopic> Judge<T> {
     ) -> MonitorNote {
         let hold = messages::command_message(
             &RobotCommand::Hold {
-                reason: deviation.to_string(),
+                reason: HoldReason::deviation(deviation.clone()),
             },
             now,
         );

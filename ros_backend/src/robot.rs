@@ -35,9 +35,9 @@ pub trait TrajectoryTopic: Send + Sync {
 
 impl TrajectoryTopic for Publisher<JointTrajectory> {
     fn publish(&self, message: JointTrajectory) -> Result<(), BackendError> {
-        Publisher::publish(self, message).map_err(|e| BackendError {
-            backend: "ROS 2 joint trajectory",
-            reason: format!("{e:?}"),
+        Publisher::publish(self, message).map_err(|e| BackendError::Transport {
+            channel: "ROS 2 joint trajectory",
+            detail: format!("{e:?}"),
         })
     }
 }
@@ -152,12 +152,9 @@ impl<T: TrajectoryTopic> RosRobot<T> {
     fn path_tolerances(&self, trajectory: &LegTrajectory) -> Result<Vec<f64>, BackendError> {
         let t = &trajectory.path_tolerance_rad;
         if t.len() != trajectory.joint_names.len() || !t.iter().all(|v| v.is_finite() && *v > 0.0) {
-            return Err(BackendError {
-                backend: "execution monitor",
-                reason: format!(
-                    "the leg carries path tolerances {t:?}, not one positive tolerance per joint ({})",
-                    trajectory.joint_names.len()
-                ),
+            return Err(BackendError::PathTolerances {
+                given: t.clone(),
+                joints: trajectory.joint_names.len(),
             });
         }
         let cap = self.ros.path_tolerance_rad;
@@ -171,10 +168,10 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         &self,
         trajectory: &LegTrajectory,
     ) -> Result<MonitorLimits, BackendError> {
-        trajectory.monitor.check().map_err(|e| BackendError {
-            backend: "execution monitor",
-            reason: format!("the leg's limits: {e}"),
-        })?;
+        trajectory
+            .monitor
+            .check()
+            .map_err(|cause| BackendError::Monitor { cause })?;
         Ok(trajectory.monitor.tightened(&MonitorCaps {
             goal_tolerance_rad: self.ros.goal_tolerance_rad,
             goal_time_tolerance_s: self.ros.goal_time_tolerance_s,
@@ -192,16 +189,13 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         path_rad: &[f64],
         limits: &MonitorLimits,
     ) -> Result<(), BackendError> {
-        let mut guard = self.monitor.lock().map_err(|_| BackendError {
-            backend: "execution monitor",
-            reason: "the monitor task failed".to_owned(),
-        })?;
+        let mut guard = self
+            .monitor
+            .lock()
+            .map_err(|_| BackendError::MonitorTaskFailed)?;
         guard
             .leg_sent(now_nanos, label, trajectory, path_rad, limits)
-            .map_err(|e| BackendError {
-                backend: "execution monitor",
-                reason: e.to_string(),
-            })
+            .map_err(|cause| BackendError::Monitor { cause })
     }
 
     fn with_monitor(&self, f: impl FnOnce(&mut ExecutionWatch)) {
@@ -242,10 +236,7 @@ pub fn radians_list(values: &[f64]) -> String {
 
 /// The FollowJointTrajectory task is gone: nothing can be sent to the controller.
 fn controller_task_stopped() -> BackendError {
-    BackendError {
-        backend: "ROS 2 FollowJointTrajectory",
-        reason: "the controller task has stopped".to_owned(),
-    }
+    BackendError::ControllerTaskStopped
 }
 
 /// A controller event of `kind` about `leg` with `text`.

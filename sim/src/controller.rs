@@ -26,7 +26,7 @@
 
 use ergocell_cell::session::dummy::DummyRobot;
 use ergocell_cell::session::{
-    BackendError, DriverEvent, DriverStop, ExecutionWatch, GoalAnswer, GoalStatus, Leg,
+    BackendError, DriverEvent, DriverStop, ExecutionWatch, GoalAnswer, GoalStatus, HoldReason, Leg,
     LegTrajectory, ResultCode, RobotCommand, RobotReport, RobotSink,
 };
 use serde::Deserialize;
@@ -488,10 +488,10 @@ impl TwinRobot {
             }
             let q = self.controller.positions_at(t);
             for report in self.watch.sample(t, Some(&q)) {
-                if matches!(report, RobotReport::Deviation(_)) {
+                if let RobotReport::Deviation(deviation) = &report {
                     // held at once, through the port, before the loop's next step
                     let hold = RobotCommand::Hold {
-                        reason: String::new(),
+                        reason: HoldReason::deviation(deviation.clone()),
                     };
                     self.controller.command(t, &hold);
                     self.monitor_holds += 1;
@@ -524,10 +524,7 @@ impl RobotSink for TwinRobot {
                     &trajectory.path_tolerance_rad,
                     &trajectory.monitor,
                 )
-                .map_err(|e| BackendError {
-                    backend: "execution monitor",
-                    reason: e.to_string(),
-                })?;
+                .map_err(|cause| BackendError::Monitor { cause })?;
         } else {
             self.watch.held(now_nanos);
         }

@@ -47,9 +47,8 @@ impl LandmarkSource for SimSource {
                         })
                     }
                     Err(e) => {
-                        return Err(BackendError {
-                            backend: "simulator",
-                            reason: e.to_string(),
+                        return Err(BackendError::Simulator {
+                            cause: std::sync::Arc::new(e),
                         })
                     }
                 },

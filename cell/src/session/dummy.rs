@@ -143,7 +143,9 @@ mod tests {
     #[test]
     fn keeping_last_bounds_the_history_and_keeps_the_newest() {
         let hold = |k: i64| RobotCommand::Hold {
-            reason: k.to_string(),
+            reason: crate::session::HoldReason::NoStereoPair {
+                cameras_fresh: usize::try_from(k).unwrap(),
+            },
         };
         let mut all = DummyRobot::new(vec!["j".into()], vec![0.0]);
         let mut last2 = DummyRobot::new(vec!["j".into()], vec![0.0]).keeping_last(2);
@@ -152,6 +154,7 @@ mod tests {
             last2.send(k, &hold(k)).unwrap();
         }
         assert_eq!(all.received.len(), 5);
-        assert_eq!(last2.received, all.received[3..]);
+        let debug = |r: &[(i64, RobotCommand)]| format!("{r:?}");
+        assert_eq!(debug(&last2.received), debug(&all.received[3..]));
     }
 }

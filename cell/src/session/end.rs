@@ -214,6 +214,18 @@ pub enum HoldReason {
 }
 
 impl HoldReason {
+    /// The execution monitor's hold, sent at once on a deviation: the session ends for it
+    /// ([`Interruption::RobotFailed`]).
+    pub fn deviation(deviation: ergocell_robot::monitor::Deviation) -> Self {
+        Self::Ended {
+            end: SessionEnd::Interrupted {
+                by: Interruption::RobotFailed {
+                    failure: RobotFailure::Deviation { deviation },
+                },
+            },
+        }
+    }
+
     /// What the operator is told on the display: what happened in their terms and what to do.
     /// The [`fmt::Display`] words are the integrator's (the hold command, the console, the
     /// recording).
@@ -252,7 +264,7 @@ impl fmt::Display for HoldReason {
             } => write!(f, "{reason}"),
             Self::Ended {
                 end: SessionEnd::Interrupted { by },
-            } => write!(f, "{by}"),
+            } => write!(f, "session interrupted: {by}"),
             Self::Ended { end } => write!(f, "{end}"),
             Self::LockChanged { locked, now } => write!(
                 f,

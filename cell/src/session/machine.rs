@@ -300,12 +300,12 @@ impl SessionMachine {
             return events;
         }
         let why = by.to_string();
+        let end = SessionEnd::Interrupted { by };
         let command = RobotCommand::Hold {
-            reason: format!("session interrupted: {why}"),
+            reason: HoldReason::Ended { end: end.clone() },
         };
         self.send(now_nanos, robot, command, &mut events);
         // Said by the caller (the signal, the failure): not logged again here.
-        let end = SessionEnd::Interrupted { by };
         self.hold_reason = Some((HoldReason::Ended { end: end.clone() }, why.clone()));
         self.summary.end_reason = end.to_string();
         self.summary.end = Some(end);
@@ -884,7 +884,7 @@ impl SessionMachine {
     ) {
         let why = reason.to_string();
         let command = RobotCommand::Hold {
-            reason: why.clone(),
+            reason: reason.clone(),
         };
         self.send(now_nanos, robot, command, events);
         self.summary.holds += 1;
@@ -1002,11 +1002,11 @@ impl SessionMachine {
     ) {
         let why = reason.to_string();
         tracing::error!(reason = %why, "session aborted");
+        let end = SessionEnd::Aborted { reason };
         let command = RobotCommand::Hold {
-            reason: why.clone(),
+            reason: HoldReason::Ended { end: end.clone() },
         };
         self.send(now_nanos, robot, command, events);
-        let end = SessionEnd::Aborted { reason };
         self.hold_reason = Some((HoldReason::Ended { end: end.clone() }, why.clone()));
         self.summary.end_reason = end.to_string();
         self.summary.end = Some(end);

@@ -141,7 +141,7 @@ impl LegTrajectory {
 }
 
 /// A command to the robot controller.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub enum RobotCommand {
     /// Follow this trajectory (the locked one, or its time reversal).
     Execute {
@@ -149,12 +149,13 @@ pub enum RobotCommand {
         lock_sha256: String,
         trajectory: LegTrajectory,
     },
-    /// Cancel the goal: the robot stops where it is. Not an emergency stop.
-    Hold { reason: String },
+    /// Cancel the goal: the robot stops where it is. Not an emergency stop. `reason` is why, typed
+    /// (its words are its `Display`).
+    Hold { reason: HoldReason },
 }
 
 /// What happened in a step: logged with `tracing`, recorded, shown.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub enum SessionEvent {
     StateChanged {
         stamp_nanos: i64,
