@@ -541,13 +541,15 @@ fn a_cell_with_a_fixed_lag_serves_the_operator_as_without_it() {
 #[test]
 fn demo_plays_the_robot_faults_as_run_meets_them() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    for (file, ends_at_once) in [
-        ("robot-path-deviation.toml", true),
-        ("robot-stall.toml", true),
-        ("robot-driver-stopped.toml", false),
-        ("robot-e-stop.toml", false),
+    // the typed reason each ends or holds with: the deviation's kind, or the driver stop's `by`
+    for (file, ends_at_once, why) in [
+        ("robot-path-deviation.toml", true, "path"),
+        ("robot-stall.toml", true, "stalled"),
+        ("robot-driver-stopped.toml", false, "by_user"),
+        ("robot-e-stop.toml", false, "by_error"),
     ] {
         let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-demo-{file}.mcap"));
+        let outcome = out.with_extension("json");
         let faults = root.join("sim/faults").join(file);
         let run = demo_in(
             root,
@@ -560,6 +562,8 @@ fn demo_plays_the_robot_faults_as_run_meets_them() {
                 faults.to_str().unwrap(),
                 "--out",
                 out.to_str().unwrap(),
+                "--outcome",
+                outcome.to_str().unwrap(),
             ],
         );
         assert_eq!(
@@ -568,6 +572,37 @@ fn demo_plays_the_robot_faults_as_run_meets_them() {
             "{file}: {}",
             String::from_utf8_lossy(&run.stderr)
         );
+        // The outcome, typed: how the session ended and every hold from the first goal on, as CI
+        // compares them with run's against the rclpy peer.
+        let o: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(&outcome).unwrap()).unwrap();
+        assert_eq!(o["exit_code"], 1, "{file}");
+        assert_eq!(o["monitor_held"], ends_at_once, "{file}");
+        let commands = o["commands"].as_array().unwrap();
+        assert_eq!(commands[0]["kind"], "goal", "{file}: {commands:?}");
+        assert_eq!(commands[0]["leg"], "to_handover", "{file}");
+        let holds: Vec<&serde_json::Value> = commands
+            .iter()
+            .filter(|c| c["kind"] == "hold")
+            .map(|c| &c["reason"])
+            .collect();
+        if ends_at_once {
+            let failure = &o["end"]["by"]["failure"];
+            assert_eq!(o["end"]["by"]["kind"], "robot_failed", "{file}: {o}");
+            assert_eq!(failure["deviation"]["kind"], why, "{file}: {o}");
+            assert_eq!(holds.len(), 1, "{file}: {holds:?}");
+            assert_eq!(holds[0]["end"], o["end"], "{file}: the hold is the end");
+        } else {
+            assert_eq!(o["end"]["by"]["kind"], "time_limit", "{file}: {o}");
+            assert_eq!(holds.len(), 2, "{file}: {holds:?}");
+            assert_eq!(holds[0]["kind"], "robot_not_ready", "{file}");
+            assert_eq!(holds[0]["unready"]["kind"], "driver_stopped", "{file}");
+            assert_eq!(holds[0]["unready"]["by"], why, "{file}");
+            assert_eq!(
+                holds[1]["end"], o["end"],
+                "{file}: the last hold is the end"
+            );
+        }
         let bytes = std::fs::read(&out).unwrap();
         let states: Vec<ergocell_bridge::msg::SessionState> = mcap::MessageStream::new(&bytes)
             .unwrap()

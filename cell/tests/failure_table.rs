@@ -27,8 +27,8 @@ use std::rc::Rc;
 use std::sync::OnceLock;
 
 use ergocell_cell::session::{
-    AbortReason, CellLoop, Driver, DriverError, DriverStop, ExitStatus, HoldReason, Input,
-    InputError, Interruption, Leg, Outcome, ProviderError, RobotCommand, RobotFailure,
+    AbortReason, CellLoop, CommandSent, Driver, DriverError, DriverStop, ExitStatus, HoldReason,
+    Input, InputError, Interruption, Leg, Outcome, ProviderError, RobotCommand, RobotFailure,
     RobotUnready, SessionEnd, SessionEvent, SessionMachine, SessionState, Station, Step,
     StopRequest, StopSignal, Timed, TrajectoryProvider,
 };
@@ -400,6 +400,32 @@ fn a_joint_drifting_off_the_path_ends_the_session_held() {
 #[test]
 fn a_stall_ends_the_session_held() {
     let ran = Row::fault(RobotFault::Stall { at_fraction: 0.4 }).run();
+    // the commands the outcome keeps: the first leg, then the one hold, for the stall
+    let commands = &ran.outcome.as_ref().unwrap().commands;
+    assert!(
+        matches!(
+            commands.as_slice(),
+            [
+                CommandSent::Goal {
+                    leg: Leg::ToHandover,
+                    ..
+                },
+                CommandSent::Hold {
+                    reason: HoldReason::Ended {
+                        end: SessionEnd::Interrupted {
+                            by: Interruption::RobotFailed {
+                                failure: RobotFailure::Deviation {
+                                    deviation: Deviation::Stalled { .. }
+                                }
+                            }
+                        }
+                    },
+                    ..
+                }
+            ]
+        ),
+        "{commands:?}"
+    );
     let f = ran.failure();
     assert!(
         matches!(

@@ -98,9 +98,13 @@ pub struct Args {
     /// `ergocell-demo.mcap`, or when it exists the next free `ergocell-demo-N.mcap` (printed).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Overwrite an existing recording (--out, or without it `ergocell-demo.mcap`).
+    /// Overwrite an existing recording (--out, or without it `ergocell-demo.mcap`) or --outcome file.
     #[arg(long)]
     pub force: bool,
+    /// How the session ended, as JSON for a program (CI, a script): the exit code, the typed end,
+    /// every command sent to the robot with its typed reason, the summary.
+    #[arg(long, value_name = "FILE")]
+    pub outcome: Option<PathBuf>,
     /// The operator's pseudonymous id written into the recording (letters, digits, '-', '_', '.';
     /// never a name). Default: `demo-<seed>`.
     #[arg(long, value_name = "ID", value_parser = parse_operator)]
@@ -391,6 +395,11 @@ fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
     )
     .input_files();
     inputs.extend(read.iter().map(|p| ("a file the cell reads:", p.as_path())));
+    if let Some(path) = &args.outcome {
+        let mut inputs = inputs.clone();
+        inputs.extend(args.out.iter().map(|p| ("--out", p.as_path())));
+        super::outcome::check(path, args.force, &inputs)?;
+    }
     if let Some(out) = &args.out {
         output::check("--out", out, args.force, &inputs)?;
         return Ok((out.clone(), false));
@@ -805,11 +814,21 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         soak.line(secs(now, start) / 3600.0);
     }
     let cell = driver.into_cell();
-    let (machine, _, outputs) = cell.into_parts();
+    let (machine, robot, outputs) = cell.into_parts();
     drop(outputs.display);
     let messages = outputs.recording.close()?;
     // A simulator that failed ended the session held; its error is the demo's.
-    let status = outcome.map_err(|e| e.error)?.status;
+    let outcome = outcome.map_err(|e| e.error)?;
+    if let Some(path) = &args.outcome {
+        super::outcome::write(
+            path,
+            args.force,
+            &outcome,
+            machine.summary(),
+            robot.monitor_holds > 0,
+        )?;
+    }
+    let status = outcome.status;
     drop(demo_dir);
     summary(&machine, args, true_class, secs(now, start));
     println!(

@@ -7,6 +7,7 @@ pub mod calibrate;
 pub mod demo;
 pub mod exposure;
 pub mod height;
+pub mod outcome;
 pub mod output;
 pub mod reba;
 pub mod replay;

@@ -83,9 +83,14 @@ pub struct Args {
     /// Record the session to this MCAP file (an existing file is refused unless --force).
     #[arg(long)]
     pub record: Option<PathBuf>,
-    /// Overwrite an existing --record file.
+    /// Overwrite an existing --record or --outcome file.
     #[arg(long)]
     pub force: bool,
+    /// How the sessions ended, as JSON for a program (CI, a supervisor's script): the exit code,
+    /// the last session's typed end, every command sent to the robot with its typed reason.
+    /// Written when the sessions are over, on a stop signal too.
+    #[arg(long, value_name = "FILE")]
+    pub outcome: Option<PathBuf>,
     /// The operator's pseudonymous id, written into the --record file (letters, digits, '-', '_',
     /// '.'; never a name: the plant keeps the mapping). `ergocell exposure` groups by it.
     #[arg(long, value_name = "ID", value_parser = parse_operator, requires = "record")]
@@ -191,6 +196,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let mut inputs = flagged.to_vec();
         inputs.extend(read.iter().map(|p| ("a file the cell reads:", p.as_path())));
         output::check("--record", record, args.force, &inputs)?;
+    }
+    if let Some(path) = &args.outcome {
+        let read = setup.provider().input_files();
+        let mut inputs = flagged.to_vec();
+        inputs.extend(args.record.iter().map(|p| ("--record", p.as_path())));
+        inputs.extend(read.iter().map(|p| ("a file the cell reads:", p.as_path())));
+        super::outcome::check(path, args.force, &inputs)?;
     }
     // The first session's machine before anything is started: a cell that cannot run is said now.
     let machine = setup.new_machine()?;
@@ -437,9 +449,13 @@ async fn serve(
     if args.latency_report {
         station.latency.print();
     }
+    let monitor_held = cell.robot().held_after_ms().is_some();
     let (machine, _, outputs) = cell.into_parts();
     *recording = Some(outputs.ros.recording);
     let outcome = outcome.map_err(|e| e.error)?;
+    if let Some(path) = &args.outcome {
+        super::outcome::write(path, args.force, &outcome, machine.summary(), monitor_held)?;
+    }
     match outcome.status {
         ExitStatus::Done => Ok(()),
         ExitStatus::Stopped(signal) => Err(Stopped {

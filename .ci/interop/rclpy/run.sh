@@ -17,6 +17,9 @@
 # and in the recording; and the execution monitor against the peer's faults at 250 Hz joint states
 # (lag, stall, drift, motion at rest, "stopped by error"): each ends held with its reason, the goal
 # cancelled, run exit 1; the latency from the judged sample to the stop at the peer is printed.
+# Last, the twin plays the stall, the drift and the e-stop (`demo --faults sim/faults/robot-*.toml`):
+# each `--outcome` must match run's against the peer — the same typed end, exit code, holds from the
+# first goal on (typed reasons) and execution-monitor hold.
 # Usage: .ci/interop/rclpy/run.sh target/release/ergocell [DIR for the venv, default target/rclpy]
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
@@ -58,7 +61,7 @@ ip route add 224.0.0.0/4 dev lo
 case_() {  # case_ <label> <cell file> [PEER_ACTION mode] [PEER_FAULT] [--max-secs]
   timeout -k 5 120 "$bin" --log "warn,rustdds=error" run --config "$2" --rig config/rig.toml \
     --trajectories "$tmp/traj" --sessions 1 --max-secs "${5:-100}" --record "$tmp/$1.mcap" \
-    > "$tmp/$1.run" 2> "$tmp/$1.err" &
+    --outcome "$tmp/$1.outcome.json" > "$tmp/$1.run" 2> "$tmp/$1.err" &
   local run=$!
   local driver=0 hz=50
   if [ -n "${3:-}" ]; then driver=1 hz=250; fi
@@ -79,6 +82,15 @@ for r in $(seq 1 "$rounds"); do
 done
 case_ stopped_by_error "$tmp/cell/action.toml" normal stopped_by_error 30
 NS
+
+# The twin plays the same robot faults (`demo --faults`, the twin's controller and KUKA driver under
+# the same rules): its outcome is compared with run's against the rclpy peer below.
+for pair in stall:robot-stall drift:robot-path-deviation stopped_by_error:robot-e-stop; do
+  name=${pair%%:*} file=${pair#*:}
+  "$bin" --log error demo --cycles 1 --fps 30 --faults "sim/faults/$file.toml" \
+    --out "$tmp/twin_$name.mcap" --outcome "$tmp/twin_$name.outcome.json" > "$tmp/twin_$name.log" \
+    || echo "demo exit $?" >> "$tmp/twin_$name.log"
+done
 
 "$venv/bin/python" - "$tmp" <<'PY'
 import json, sys
@@ -297,6 +309,34 @@ if transit:
     print(f"every joint state, its stamp → arrival in run (same host clock), per fault run: p50 "
           f"{min(t[0] for t in transit):.3f}–{max(t[0] for t in transit):.3f} ms, p99 "
           f"{min(t[1] for t in transit):.3f}–{max(t[1] for t in transit):.3f} ms")
+
+print("== the twin's robot faults (demo --faults) end as run's against the rclpy peer")
+def shape(v):
+    """A typed value without its measured numbers: its kinds, names, legs and joints."""
+    if isinstance(v, dict):
+        return {k: shape(x) for k, x in v.items() if isinstance(x, (str, bool, dict, list)) or x is None}
+    if isinstance(v, list):
+        return [shape(x) for x in v]
+    return v
+def from_first_goal(o):
+    """The commands from the first goal on, each a goal's leg or a hold's reason (its shape)."""
+    c = o["commands"]
+    first = next((i for i, x in enumerate(c) if x["kind"] == "goal"), len(c))
+    return [shape(x) for x in c[first:] if x["kind"] == "hold"]
+for name in ["stall", "drift", "stopped_by_error"]:
+    try:
+        ours = json.loads(read(f"{name}.outcome.json"))
+        twin = json.loads(read(f"twin_{name}.outcome.json"))
+    except Exception as e:
+        check(False, f"{name}: both outcomes written ({e}); twin log:\n{read('twin_' + name + '.log')[-1500:]}")
+        continue
+    print(f"{name}: run ends {json.dumps(shape(ours['end']))}, exit {ours['exit_code']}; holds from the first goal "
+          f"{json.dumps(from_first_goal(ours))}; twin {json.dumps(shape(twin['end']))}, exit {twin['exit_code']}, "
+          f"{json.dumps(from_first_goal(twin))}")
+    check(shape(ours["end"]) == shape(twin["end"]) and ours["exit_code"] == twin["exit_code"]
+          and from_first_goal(ours) == from_first_goal(twin) and ours["monitor_held"] == twin["monitor_held"],
+          f"{name}: the twin's session ends as run's on the rclpy peer: the same typed end, exit code, hold "
+          f"commands (typed reasons) and execution-monitor hold")
 
 if fail:
     for n in ["topic", "normal", "reject", "abort", *[c for c, _ in cases]]:

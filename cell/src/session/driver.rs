@@ -26,9 +26,9 @@ use std::future::Future;
 use ergocell_perception::View2;
 
 use super::cell_loop::{AfterSession, CellLoop, CellOutputs, Ending, ExitStatus, Step};
-use super::end::{Interruption, StopSignal};
+use super::end::{HoldReason, Interruption, StopSignal};
 use super::robot_side::{ReportEffect, RobotReport};
-use super::{RobotSink, SessionMachine};
+use super::{Leg, RobotCommand, RobotSink, SessionEvent, SessionMachine};
 
 /// What the station hands the driver next.
 #[derive(Debug, Clone)]
@@ -141,6 +141,46 @@ pub struct Outcome {
     pub sessions: u32,
     /// The last session's ending.
     pub ending: Ending,
+    /// Every command the sessions sent the robot, in order: what a safety engineer compares
+    /// between the twin and the cell.
+    pub commands: Vec<CommandSent>,
+}
+
+/// A command a session sent the robot, as the outcome keeps it: a goal's leg, a hold's reason.
+#[derive(Debug, Clone, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum CommandSent {
+    Goal {
+        stamp_nanos: i64,
+        leg: Leg,
+    },
+    Hold {
+        stamp_nanos: i64,
+        reason: HoldReason,
+    },
+}
+
+impl CommandSent {
+    /// The command of a step's event, if it is one.
+    pub fn of(event: &SessionEvent) -> Option<Self> {
+        let SessionEvent::RobotCommandSent {
+            stamp_nanos,
+            command,
+        } = event
+        else {
+            return None;
+        };
+        Some(match command {
+            RobotCommand::Execute { leg, .. } => Self::Goal {
+                stamp_nanos: *stamp_nanos,
+                leg: *leg,
+            },
+            RobotCommand::Hold { reason } => Self::Hold {
+                stamp_nanos: *stamp_nanos,
+                reason: reason.clone(),
+            },
+        })
+    }
 }
 
 /// The driver failed: the station's error, after the session was ended held for it.
@@ -188,6 +228,7 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
     ) -> Result<Outcome, DriverError<S::Error>> {
         let mut sessions = 0u32;
         let mut last_nanos = 0i64;
+        let mut commands = Vec::new();
         let (status, ending) = loop {
             let timed = match station.next(&mut self.cell).await {
                 Ok(Some(t)) => t,
@@ -210,6 +251,7 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
                 }
             };
             let step = self.cell.step(at, views);
+            commands.extend(step.events.iter().filter_map(CommandSent::of));
             if let Err(error) = station.stepped(&mut self.cell, at, &step) {
                 return Err(self.failed(station.name(), at, error));
             }
@@ -258,6 +300,7 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
             status,
             sessions,
             ending,
+            commands,
         })
     }
 

@@ -33,7 +33,9 @@ pub mod robot_side;
 pub mod watch;
 
 pub use cell_loop::{AfterSession, CellLoop, CellOutputs, Ending, ExitStatus, OutputError, Step};
-pub use driver::{Driver, DriverError, Input, InputError, Outcome, Station, StopRequest, Timed};
+pub use driver::{
+    CommandSent, Driver, DriverError, Input, InputError, Outcome, Station, StopRequest, Timed,
+};
 pub use end::{AbortReason, HoldReason, Interruption, SessionEnd, StopSignal};
 pub use machine::{PartTakenFacts, SessionMachine, SessionSummary};
 pub use robot_side::{
