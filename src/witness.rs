@@ -70,6 +70,7 @@ pub fn observe(
     class: TrajectoryClass,
     file: &ApprovalsFile,
     trusted: &TrustedSigners,
+    now_unix: i64,
 ) -> Result<Vec<String>, RobotError> {
     let path = witness_path(approvals_path.parent().unwrap_or_else(|| Path::new(".")));
     let mut notes = Vec::new();
@@ -93,8 +94,8 @@ pub fn observe(
     if let Some(resolved) = resolved_key(approvals_path).filter(|r| *r != key) {
         witness.check(&resolved, class, file)?;
     }
-    let now = ergocell_robot::signing::rfc3339_utc(crate::trust_anchor::now_unix())
-        .unwrap_or_else(|_| "unknown".to_owned());
+    let now =
+        ergocell_robot::signing::rfc3339_utc(now_unix).unwrap_or_else(|_| "unknown".to_owned());
     if let Some(line) = witness.sighting_line(&key, class, file, trusted, &now) {
         if let Err(e) = append(&path, &line) {
             notes.push(format!(
@@ -114,13 +115,14 @@ pub fn observe_text(
     class: TrajectoryClass,
     text: Option<&str>,
     trusted: &TrustedSigners,
+    now_unix: i64,
 ) -> Result<Vec<String>, RobotError> {
     let file = match text.map(ApprovalsFile::from_toml_str) {
         None => ApprovalsFile::default(),
         Some(Ok(file)) if file.check_chain().is_ok() => file,
         Some(_) => return Ok(Vec::new()),
     };
-    observe(approvals_path, class, &file, trusted)
+    observe(approvals_path, class, &file, trusted, now_unix)
 }
 
 /// Appends one line and syncs it. A new local witness folder gets a `.gitignore` first.

@@ -1311,3 +1311,29 @@ fn a_hand_lost_from_view_at_the_part_does_not_send_the_robot_home_for_the_next()
     assert_eq!(legs_sent(&robot), [Leg::ToHandover, Leg::ToHome]);
     assert!(machine.summary().ended, "{}", machine.summary().end_reason);
 }
+
+/// The approvals' time is checked against the provider's clock, injected: an approval dated
+/// 2026-01-01 is refused by a clock two days before it (more than the day of skew a signing
+/// machine's clock may have) and accepted by one the day after.
+#[test]
+fn an_approvals_time_is_checked_against_the_injected_clock() {
+    fn two_days_before() -> i64 {
+        1_767_052_800 // 2025-12-30T00:00:00Z
+    }
+    fn the_day_after() -> i64 {
+        1_767_312_000 // 2026-01-02T00:00:00Z
+    }
+    let mut early =
+        common::demo_provider("clock-early", Some(TrajectoryClass::C2)).with_clock(two_days_before);
+    let refused = early.verify(TrajectoryClass::C2);
+    assert!(
+        matches!(
+            &refused,
+            Err(ergocell::session::ProviderError::ApprovalTime { .. })
+        ),
+        "{refused:?}"
+    );
+    let mut late =
+        common::demo_provider("clock-late", Some(TrajectoryClass::C2)).with_clock(the_day_after);
+    assert!(late.verify(TrajectoryClass::C2).is_ok());
+}

@@ -574,7 +574,7 @@ fn witness(
     class: TrajectoryClass,
     file: &ApprovalsFile,
 ) -> anyhow::Result<()> {
-    ergocell::witness::observe(path, class, file, &ctx.trusted)
+    ergocell::witness::observe(path, class, file, &ctx.trusted, trust_anchor::now_unix())
         .map(print_notes)
         .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
@@ -782,6 +782,7 @@ fn verify(
             class,
             approvals_text.as_deref(),
             &ctx.trusted,
+            trust_anchor::now_unix(),
         )
         .map(print_notes);
         let inputs = VerifyInputs {

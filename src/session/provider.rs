@@ -29,6 +29,9 @@ pub struct FileTrajectories {
     demo: Option<DemoSigner>,
     /// The folder of the site's approvers authority ([`crate::trust_anchor`]).
     anchor_dir: PathBuf,
+    /// The clock an approval's time is checked against and the witness's sightings are stamped
+    /// with: seconds since the Unix epoch ([`crate::trust_anchor::now_unix`], or a test's).
+    now_unix: fn() -> i64,
 }
 
 /// The demo's throwaway approver: its key, the one-line trust list naming it, and the locks made
@@ -60,6 +63,7 @@ impl FileTrajectories {
             trajectories_shipped: crate::shipped::dir_falls_back(trajectories_dir),
             demo: None,
             anchor_dir: crate::trust_anchor::anchor_dir(),
+            now_unix: crate::trust_anchor::now_unix,
         }
     }
 
@@ -82,7 +86,15 @@ impl FileTrajectories {
             trajectories_shipped: trajectories_dir.is_none(),
             demo: None,
             anchor_dir: crate::trust_anchor::anchor_dir(),
+            now_unix: crate::trust_anchor::now_unix,
         }
+    }
+
+    /// Checks approvals against `now_unix` instead of the wall clock (a test's fixed time).
+    #[must_use]
+    pub fn with_clock(mut self, now_unix: fn() -> i64) -> Self {
+        self.now_unix = now_unix;
+        self
     }
 
     fn read_from(path: &Path, shipped: bool) -> Result<String, ProviderError> {
@@ -477,7 +489,13 @@ impl TrajectoryProvider for FileTrajectories {
         let approvals = crate::input::read_text(&approvals_path, crate::input::Kind::Config).ok();
         // The demo's approvals are its own, written afresh each run: no witness of them.
         let seen = match self.demo {
-            None => witness_check(&approvals_path, class, approvals.as_deref(), &trusted),
+            None => witness_check(
+                &approvals_path,
+                class,
+                approvals.as_deref(),
+                &trusted,
+                (self.now_unix)(),
+            ),
             Some(_) => Ok(()),
         };
         let inputs = VerifyInputs {
@@ -499,7 +517,7 @@ impl TrajectoryProvider for FileTrajectories {
                 })
             }
         };
-        check_approval_times(&approved, crate::trust_anchor::now_unix())?;
+        check_approval_times(&approved, (self.now_unix)())?;
         Ok(approved)
     }
 }
@@ -511,13 +529,15 @@ fn witness_check(
     class: TrajectoryClass,
     text: Option<&str>,
     trusted: &TrustedSigners,
+    now_unix: i64,
 ) -> Result<(), ProviderError> {
-    let notes = crate::witness::observe_text(path, class, text, trusted).map_err(|cause| {
-        ProviderError::Witness {
-            path: path.to_owned(),
-            cause: Box::new(cause),
-        }
-    })?;
+    let notes =
+        crate::witness::observe_text(path, class, text, trusted, now_unix).map_err(|cause| {
+            ProviderError::Witness {
+                path: path.to_owned(),
+                cause: Box::new(cause),
+            }
+        })?;
     for note in notes {
         tracing::warn!("{note}");
     }
