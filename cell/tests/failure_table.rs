@@ -189,6 +189,10 @@ impl Station<TwinRobot, ()> for Script {
         "scripted twin"
     }
 
+    fn now_nanos(&mut self) -> i64 {
+        self.now
+    }
+
     async fn next(
         &mut self,
         cell: &mut CellLoop<TwinRobot, ()>,
@@ -233,7 +237,7 @@ impl Station<TwinRobot, ()> for Script {
         self.timeline
             .states
             .push((at, m.state(), m.held_for().cloned()));
-        if self.frame_step {
+        if std::mem::take(&mut self.frame_step) {
             self.now += FRAME;
         }
         Ok(())
@@ -343,6 +347,7 @@ impl Row {
         )
         .unwrap();
         let cell = CellLoop::new(machine, robot, ())
+            .with_command_log()
             .with_driver_state()
             .with_deadline(60_000 * MS, 60.0);
         let mut station = Script {
@@ -633,6 +638,21 @@ fn an_input_that_fails_ends_the_session_held_and_returns_its_error() {
     .run();
     let error = ran.outcome.as_ref().expect_err("the station failed");
     assert_eq!(error.error.at_nanos, 12_000 * MS);
+    // the outcome as far as it went: ended held, at the station's time, the hold the last command
+    let outcome = error.outcome.as_ref().expect("the session had started");
+    assert_eq!(outcome.status, ExitStatus::NeedsAPerson);
+    assert_eq!(outcome.ending.stamp_nanos, 12_000 * MS);
+    assert!(matches!(
+        outcome.commands.last(),
+        Some(CommandSent::Hold {
+            reason: HoldReason::Ended {
+                end: SessionEnd::Interrupted {
+                    by: Interruption::InputFailed { .. }
+                }
+            },
+            ..
+        })
+    ));
     assert!(
         matches!(
             ran.interruption(),

@@ -34,7 +34,7 @@ use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
     trajectory_class, CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption,
-    LandmarkSource, Leg, OutputError, ReportEffect, RobotCommand, RobotReport, RobotSink,
+    LandmarkSource, Leg, Outcome, OutputError, ReportEffect, RobotCommand, RobotReport, RobotSink,
     SessionEnd, SessionEvent, SessionMachine, SessionState, Station, Step, Timed,
 };
 use ergocell::shipped;
@@ -395,22 +395,25 @@ fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
     )
     .input_files();
     inputs.extend(read.iter().map(|p| ("a file the cell reads:", p.as_path())));
-    if let Some(path) = &args.outcome {
-        let mut inputs = inputs.clone();
-        inputs.extend(args.out.iter().map(|p| ("--out", p.as_path())));
-        super::outcome::check(path, args.force, &inputs)?;
-    }
-    if let Some(out) = &args.out {
+    let (path, moved) = if let Some(out) = &args.out {
         output::check("--out", out, args.force, &inputs)?;
-        return Ok((out.clone(), false));
+        (out.clone(), false)
+    } else {
+        let default = PathBuf::from(DEFAULT_OUT);
+        output::check("--out", &default, true, &inputs)?;
+        if args.force {
+            (default, false)
+        } else {
+            let path = output::next_free(&default)?;
+            let moved = path != default;
+            (path, moved)
+        }
+    };
+    // The outcome is neither an input nor the recording chosen (named or the default).
+    if let Some(outcome) = &args.outcome {
+        inputs.push(("the recording", path.as_path()));
+        super::outcome::check(outcome, args.force, &inputs)?;
     }
-    let default = PathBuf::from(DEFAULT_OUT);
-    output::check("--out", &default, true, &inputs)?;
-    if args.force {
-        return Ok((default, false));
-    }
-    let path = output::next_free(&default)?;
-    let moved = path != default;
     Ok((path, moved))
 }
 
@@ -783,9 +786,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         start,
         rula: "RULA -".to_owned(),
     };
-    let cell = CellLoop::new(machine, robot, outputs)
+    let mut cell = CellLoop::new(machine, robot, outputs)
         .with_deadline(start + (limit_secs * 1e9).round() as i64, limit_secs)
         .with_driver_state();
+    if args.outcome.is_some() {
+        cell = cell.with_command_log();
+    }
     let mut twin = Twin {
         source: SimSource::new(sim),
         faults: FaultPlayer::new(schedule),
@@ -817,17 +823,28 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let (machine, robot, outputs) = cell.into_parts();
     drop(outputs.display);
     let messages = outputs.recording.close()?;
-    // A simulator that failed ended the session held; its error is the demo's.
-    let outcome = outcome.map_err(|e| e.error)?;
-    if let Some(path) = &args.outcome {
-        super::outcome::write(
+    let write_outcome = |o: &Outcome| match &args.outcome {
+        Some(path) => super::outcome::write(
             path,
             args.force,
-            &outcome,
+            o,
             machine.summary(),
             robot.monitor_holds > 0,
-        )?;
-    }
+        ),
+        None => Ok(()),
+    };
+    let outcome = match outcome {
+        Ok(o) => o,
+        // A simulator that failed ended the session held; its error is the demo's, and its
+        // outcome is written all the same.
+        Err(e) => {
+            if let Some(o) = &e.outcome {
+                write_outcome(o)?;
+            }
+            return Err(e.error);
+        }
+    };
+    write_outcome(&outcome)?;
     let status = outcome.status;
     drop(demo_dir);
     summary(&machine, args, true_class, secs(now, start));
@@ -919,6 +936,10 @@ impl Station<TwinRobot, DemoOutputs> for Twin<'_> {
         "simulator"
     }
 
+    fn now_nanos(&mut self) -> i64 {
+        self.now
+    }
+
     /// Per frame: the cameras polled, then the robot side's reports up to the frame's time (each
     /// batch at its own time, as `run` steps on every report it receives), then the frame's views
     /// with the fault schedule applied.
@@ -988,7 +1009,8 @@ impl Station<TwinRobot, DemoOutputs> for Twin<'_> {
 
     fn stepped(&mut self, cell: &mut DemoLoop, at: i64, step: &Step) -> anyhow::Result<()> {
         self.follow_decision(&step.events, at)?;
-        if !self.frame_step {
+        // the frame's own step (not a report batch's, nor the early-end rules' alone) ends it
+        if !std::mem::take(&mut self.frame_step) {
             return Ok(());
         }
         let now = self.now;

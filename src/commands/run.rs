@@ -17,8 +17,8 @@ use anyhow::Context as _;
 use ergocell::display::Display;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption, OutputError, ReportEffect,
-    RobotReport, SessionEvent, SessionMachine, Station, Step, Timed,
+    CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption, Outcome, OutputError,
+    ReportEffect, RobotReport, SessionEvent, SessionMachine, Station, Step, Timed,
 };
 use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
 use ergocell_bridge::controller::{run_controller, ControllerCommand, ControllerReport};
@@ -409,6 +409,9 @@ async fn serve(
         },
     };
     let mut cell = ergocell_ros_backend::robot::cell_loop(machine, robot, outputs);
+    if args.outcome.is_some() {
+        cell = cell.with_command_log();
+    }
     if let Some(limit) = args.max_secs {
         let at = clock.now() + (limit * 1e9).round() as i64;
         cell = cell.with_deadline(at, limit);
@@ -452,10 +455,21 @@ async fn serve(
     let monitor_held = cell.robot().held_after_ms().is_some();
     let (machine, _, outputs) = cell.into_parts();
     *recording = Some(outputs.ros.recording);
-    let outcome = outcome.map_err(|e| e.error)?;
-    if let Some(path) = &args.outcome {
-        super::outcome::write(path, args.force, &outcome, machine.summary(), monitor_held)?;
-    }
+    let write_outcome = |o: &Outcome| match &args.outcome {
+        Some(path) => super::outcome::write(path, args.force, o, machine.summary(), monitor_held),
+        None => Ok(()),
+    };
+    let outcome = match outcome {
+        Ok(o) => o,
+        // An input that failed ended the session held: its outcome is written all the same.
+        Err(e) => {
+            if let Some(o) = &e.outcome {
+                write_outcome(o)?;
+            }
+            return Err(e.error);
+        }
+    };
+    write_outcome(&outcome)?;
     match outcome.status {
         ExitStatus::Done => Ok(()),
         ExitStatus::Stopped(signal) => Err(Stopped {
@@ -554,6 +568,10 @@ impl Station<RosRobot, RunOutputs> for RunStation<'_> {
 
     fn name(&self) -> &'static str {
         "ROS 2 inputs"
+    }
+
+    fn now_nanos(&mut self) -> i64 {
+        self.clock.now()
     }
 
     /// One camera message, robot-side report or 20 ms tick.

@@ -22,7 +22,8 @@ A cancel request is accepted (canceled, the robot stops where it is).
 PEER_JOINT_STATE_HZ sets the joint-state rate (CI: 250 in the action cases). PEER_FAULT=<fault>
 makes the robot misbehave on the first leg: lag (runs at 80 % speed), stall (stops dead 40 % of the
 way), drift (joint_2 drifts at 0.05 rad/s), move_at_rest (joint_1 creeps 0.5 s after the first leg
-arrived), stopped_by_error (the driver's hardware event 6, 40 % of the way). PEER_DRIVER=1 publishes
+arrived), stopped_by_error (the driver's hardware event 6, 40 % of the way), stopped_by_user (event
+4, the operator's stop on the pendant, likewise). PEER_DRIVER=1 publishes
 the KUKA driver's state (kroshu/kuka_drivers: robot_manager/is_configured, then "control started"
 on event_broadcaster/hardware_event 1 s after the trajectory is locked). The report's "fault" has
 when the first goal came, the robot was stopped, and when the sample ergocell's monitor judged bad
@@ -298,14 +299,14 @@ def main():
                 report["fault"]["control_started_at"] = now
                 hardware_event(3)
             traj = active["traj"]
-            if (fault == "stopped_by_error" and not drv["error"] and traj is not None
+            if (fault in ("stopped_by_error", "stopped_by_user") and not drv["error"] and traj is not None
                     and active["legs_done"] == 0):
                 end = traj.points[-1].time_from_start.sec + traj.points[-1].time_from_start.nanosec * 1e-9
                 if now - active["t0"] > 0.4 * end:
                     drv["error"] = True
                     active["pos"], active["traj"] = positions_now(now), None
                     report["fault"]["bad_at"] = now
-                    hardware_event(6)
+                    hardware_event(6 if fault == "stopped_by_error" else 4)
 
         t_start, locked_at = [time.monotonic()], {}
         node.create_timer(0.1, driver_tick)

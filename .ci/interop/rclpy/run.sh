@@ -17,7 +17,8 @@
 # and in the recording; and the execution monitor against the peer's faults at 250 Hz joint states
 # (lag, stall, drift, motion at rest, "stopped by error"): each ends held with its reason, the goal
 # cancelled, run exit 1; the latency from the judged sample to the stop at the peer is printed.
-# Last, the twin plays the stall, the drift and the e-stop (`demo --faults sim/faults/robot-*.toml`):
+# Last, the twin plays the stall, the drift, the driver's error (an e-stop) and its stop by the user
+# (`demo --faults sim/faults/robot-*.toml`):
 # each `--outcome` must match run's against the peer — the same typed end, exit code, holds from the
 # first goal on (typed reasons) and execution-monitor hold.
 # Usage: .ci/interop/rclpy/run.sh target/release/ergocell [DIR for the venv, default target/rclpy]
@@ -81,11 +82,13 @@ for r in $(seq 1 "$rounds"); do
   done
 done
 case_ stopped_by_error "$tmp/cell/action.toml" normal stopped_by_error 30
+case_ stopped_by_user "$tmp/cell/action.toml" normal stopped_by_user 30
 NS
 
 # The twin plays the same robot faults (`demo --faults`, the twin's controller and KUKA driver under
 # the same rules): its outcome is compared with run's against the rclpy peer below.
-for pair in stall:robot-stall drift:robot-path-deviation stopped_by_error:robot-e-stop; do
+for pair in stall:robot-stall drift:robot-path-deviation stopped_by_error:robot-e-stop \
+    stopped_by_user:robot-driver-stopped; do
   name=${pair%%:*} file=${pair#*:}
   "$bin" --log error demo --cycles 1 --fps 30 --faults "sim/faults/$file.toml" \
     --out "$tmp/twin_$name.mcap" --outcome "$tmp/twin_$name.outcome.json" > "$tmp/twin_$name.log" \
@@ -160,7 +163,12 @@ check(len(r["warnings"]) == said and "trunk" in r["warnings"],
       f"{said}: {', '.join(r['warnings'])}; the floor pick's trunk warning among them)")
 late = r["late_joiner_session_state"]
 joined = r.get("late_joiner_joined_after", 0)
-check(bool(late) and late[0]["state"] in states[max(joined - 1, 0):] and late[0]["after_s"] < 3.0,
+# A step publishes its events before its state: a joiner woken by "working" on session_events may
+# still find the previous step's state latched (e.g. measuring_height before a step that decided,
+# locked and started working); anything older than the step before is a stale cache.
+step_before = max((i for i in range(max(joined - 1, 0)) if states[i] not in
+                   ("class_decided", "trajectory_locked", states[max(joined - 1, 0)])), default=0)
+check(bool(late) and late[0]["state"] in states[step_before:] and late[0]["after_s"] < 3.0,
       f"a late joiner on session_state (transient local, keep last 1) gets the current state at once: {late[:1]}")
 
 print("== FollowJointTrajectory (robot_interface = \"action\", control_msgs of kilted)")
@@ -260,12 +268,13 @@ expect = {
     "drift": "execution monitor: joint_2 +0.",
     "move_at_rest": "while the robot should be at rest",
     "stopped_by_error": "held: the KUKA driver reports: stopped by error (6)",
+    "stopped_by_user": "held: the KUKA driver reports: stopped by user (4)",
 }
 import os
 rounds = int(os.environ.get("RCLPY_FAULT_ROUNDS", "1"))
 cases = [(name, says) for name, says in expect.items()]
 cases += [(f"{name}_r{k}", says) for k in range(2, rounds + 1) for name, says in expect.items()
-          if name != "stopped_by_error"]
+          if not name.startswith("stopped_by_")]
 latencies = []
 transit = []
 for name, says in cases:
@@ -279,20 +288,20 @@ for name, says in cases:
     held = [l.strip() for l in run.splitlines() if "state " in l and says in l]
     # From the peer publishing the sample ergocell judged bad (or the driver's stopped-by-error event)
     # to the stop (cancel request or empty trajectory) arriving at the peer, on the peer's clock.
-    bad = f["bad_at"] if fault == "stopped_by_error" else f["judged_sample_sent_at"]
+    bad = f["bad_at"] if fault.startswith("stopped_by_") else f["judged_sample_sent_at"]
     e2e = (f["stop_at"] - bad) * 1e3 if f["stop_at"] and bad else None
     ours = [l for l in run.splitlines() if "ms after the sample arrived" in l]
-    if e2e is not None and fault != "stopped_by_error":
+    if e2e is not None and not fault.startswith("stopped_by_"):
         latencies.append(e2e)
     hop = re.search(r"sample stamp → arrival \([^)]*\) p50 ([0-9.]+) ms, p99 ([0-9.]+) ms", run)
     if hop:
         transit.append((float(hop.group(1)), float(hop.group(2))))
     own = f["bad_at"] and f["judged_sample_sent_at"] and (f["judged_sample_sent_at"] - f["bad_at"]) * 1e3
-    print(f"{name}: {held[:1]}; peer: {'driver event' if fault == 'stopped_by_error' else 'judged sample'} sent → "
+    print(f"{name}: {held[:1]}; peer: {'driver event' if fault.startswith('stopped_by_') else 'judged sample'} sent → "
           f"{f['stop_by']} arrived {'%.1f ms' % e2e if e2e is not None else 'n/a'}"
           f"{'' if own is None or own is False else '; the judged sample came %+.1f ms after the peer’s own first beyond the tolerance' % own}; "
           f"run: {ours[0].strip() if ours else '-'}; results {a.get('results')}")
-    monitor_then_cancel = fault == "stopped_by_error" or any(
+    monitor_then_cancel = fault.startswith("stopped_by_") or any(
         e["kind"] == "monitor" and e["text"] and says.split(":")[-1].strip()[:12] in e["text"] for e in ev)
     check(says in run and "run exit 1" in run and e2e is not None and e2e > 0
           and (fault == "move_at_rest" or "canceled" in a.get("results", []))
@@ -323,7 +332,7 @@ def from_first_goal(o):
     c = o["commands"]
     first = next((i for i, x in enumerate(c) if x["kind"] == "goal"), len(c))
     return [shape(x) for x in c[first:] if x["kind"] == "hold"]
-for name in ["stall", "drift", "stopped_by_error"]:
+for name in ["stall", "drift", "stopped_by_error", "stopped_by_user"]:
     try:
         ours = json.loads(read(f"{name}.outcome.json"))
         twin = json.loads(read(f"twin_{name}.outcome.json"))

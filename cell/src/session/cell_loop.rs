@@ -23,6 +23,7 @@
 use ergocell_perception::View2;
 use ergocell_robot::TrajectoryClass;
 
+use super::driver::CommandSent;
 use super::end::{Interruption, SessionEnd, StopSignal};
 use super::robot_side::{DriverState, ReportEffect, RobotFailure, RobotReport, RobotUnready};
 use super::{RobotSink, SessionEvent, SessionMachine, SessionState};
@@ -171,6 +172,8 @@ pub struct CellLoop<R, O> {
     stop: Option<StopSignal>,
     readiness: Readiness,
     ended: Option<Ending>,
+    /// Every command sent, when kept ([`CellLoop::with_command_log`]).
+    commands: Option<Vec<CommandSent>>,
 }
 
 impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
@@ -184,6 +187,30 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
             stop: None,
             readiness: Readiness::default(),
             ended: None,
+            commands: None,
+        }
+    }
+
+    /// Keeps every command the machine sends (from every step, a refused class change and the
+    /// shutdown alike), for [`CellLoop::take_commands`]: the outcome a program reads. Off by
+    /// default, so that a cell running for weeks keeps nothing it was not asked to.
+    #[must_use]
+    pub fn with_command_log(mut self) -> Self {
+        self.commands = Some(Vec::new());
+        self
+    }
+
+    /// The commands kept since the last call (none without [`CellLoop::with_command_log`]).
+    pub fn take_commands(&mut self) -> Vec<CommandSent> {
+        self.commands
+            .as_mut()
+            .map(std::mem::take)
+            .unwrap_or_default()
+    }
+
+    fn log_commands(&mut self, events: &[SessionEvent]) {
+        if let Some(log) = self.commands.as_mut() {
+            log.extend(events.iter().filter_map(CommandSent::of));
         }
     }
 
@@ -335,6 +362,7 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         let events = self
             .machine
             .shutdown(now_nanos, &mut self.robot, by.clone());
+        self.log_commands(&events);
         if let Err(e) = self.outputs.session_step(now_nanos, &self.machine, &events) {
             // Already ending: the failure is reported, the robot is held either way.
             tracing::error!(error = %e, "an output failed while the session was ending");
@@ -371,6 +399,7 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
 
     /// The outputs see `events`; an output that fails ends the session at once, held.
     fn deliver(&mut self, now_nanos: i64, events: Vec<SessionEvent>) -> Step {
+        self.log_commands(&events);
         if let Err(e) = self.outputs.session_step(now_nanos, &self.machine, &events) {
             let mut step = self.end(now_nanos, Interruption::OutputFailed { error: e });
             let mut all = events;

@@ -6,8 +6,11 @@
 //! call [`Driver::run`]. Neither has a loop of its own. The driver owns the order of things, so
 //! that no backend can get it wrong:
 //!
-//! 1. the station's next [`Input`]: camera views, the robot side's reports, or the clock's tick;
-//! 2. a stop asked for ([`StopRequest`]: Ctrl-C, SIGTERM) is handed to the loop;
+//! 1. a stop asked for ([`StopRequest`]: Ctrl-C, SIGTERM) is handed to the loop, and the loop's
+//!    early-end rules run at the station's clock ([`Station::now_nanos`]): a session that ends
+//!    there ends before the station gathers another input;
+//! 2. the station's next [`Input`]: camera views, the robot side's reports, or the clock's tick (a
+//!    stop that came meanwhile is handed over too);
 //! 3. each robot report is applied by the cell's rules ([`CellLoop::report`]), then the loop steps
 //!    at the input's time (the early-end rules first, then the machine);
 //! 4. at a session's end, the cell's rule ([`super::Ending::after`]) says whether the next operator
@@ -16,8 +19,9 @@
 //!    ([`Station::settle`]), so that its result is on record.
 //!
 //! A station that fails ends the session at once, held ([`Interruption::InputFailed`]), and its
-//! error is returned. The driver reads no clock: every input carries the time the station's clock
-//! gave it (the wall clock at `run`'s boundary, the simulator's in the twin, a test's). It is
+//! error is returned with the outcome so far. The driver reads no clock of its own: the station's
+//! clock stamps every input (the wall-anchored session clock in `run`, the simulator's in the
+//! twin, a test's). It is
 //! `async` so that a network station can await its inputs; a simulated one is ready at once and is
 //! driven by any executor's `block_on`.
 
@@ -88,6 +92,10 @@ pub trait Station<R, O> {
     /// The station's name in an [`InputError`] ("ROS 2 inputs", "simulator").
     fn name(&self) -> &'static str;
 
+    /// The station's clock now, nanoseconds (the wall-anchored session clock, the simulator's, a
+    /// test's): the time the early-end rules are checked at before the next input, and a failure's.
+    fn now_nanos(&mut self) -> i64;
+
     /// The next input, awaited (a network station) or at once (a simulated one); `Ok(None)`: an
     /// input that is not the cell's (a joint state the station only records), asked again.
     fn next(
@@ -106,7 +114,7 @@ pub trait Station<R, O> {
         Ok(())
     }
 
-    /// The loop stepped at `at_nanos` on `input`'s kind (views, reports or a tick).
+    /// The loop stepped at `at_nanos` (on an input, or on the early-end rules alone before one).
     fn stepped(
         &mut self,
         _cell: &mut CellLoop<R, O>,
@@ -141,8 +149,9 @@ pub struct Outcome {
     pub sessions: u32,
     /// The last session's ending.
     pub ending: Ending,
-    /// Every command the sessions sent the robot, in order: what a safety engineer compares
-    /// between the twin and the cell.
+    /// Every command the sessions sent the robot, in order, when the loop keeps them
+    /// ([`CellLoop::with_command_log`]): what a safety engineer compares between the twin and the
+    /// cell.
     pub commands: Vec<CommandSent>,
 }
 
@@ -183,13 +192,16 @@ impl CommandSent {
     }
 }
 
-/// The driver failed: the station's error, after the session was ended held for it.
+/// The driver failed: the station's error. A failure during a session ended it held
+/// ([`Interruption::InputFailed`]); one after a normal end (no machine for the next session) left
+/// the robot at home.
 #[derive(Debug, thiserror::Error)]
-#[error("{error} (the session was ended, robot held)")]
+#[error("{error}")]
 pub struct DriverError<E: std::fmt::Display + std::fmt::Debug> {
     pub error: E,
-    /// The ending the failure gave the session.
-    pub ending: Option<Ending>,
+    /// The sessions as they ended: the last session's ending and the commands sent (the status is
+    /// the cell's rule for that ending).
+    pub outcome: Option<Outcome>,
 }
 
 /// Runs sessions end to end on a [`CellLoop`].
@@ -227,33 +239,40 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
         stop: &dyn StopRequest,
     ) -> Result<Outcome, DriverError<S::Error>> {
         let mut sessions = 0u32;
-        let mut last_nanos = 0i64;
-        let mut commands = Vec::new();
         let (status, ending) = loop {
-            let timed = match station.next(&mut self.cell).await {
-                Ok(Some(t)) => t,
-                Ok(None) => continue,
-                Err(error) => return Err(self.failed(station.name(), last_nanos, error)),
-            };
-            let at = timed.at_nanos;
-            last_nanos = last_nanos.max(at);
+            // A stop asked for, the time limit, an output that failed: the session ends before the
+            // station gathers its next input.
             if let Some(signal) = stop.requested() {
                 self.cell.stop(signal);
             }
-            let views = match timed.input {
-                Input::Views(views) => views,
-                Input::Tick => Vec::new(),
-                Input::Reports(reports) => {
-                    if let Err(error) = self.apply(station, at, reports) {
-                        return Err(self.failed(station.name(), at, error));
-                    }
-                    Vec::new()
+            let now = station.now_nanos();
+            let (at, step) = if let Some(step) = self.cell.check(now) {
+                (now, step)
+            } else {
+                let timed = match station.next(&mut self.cell).await {
+                    Ok(Some(t)) => t,
+                    Ok(None) => continue,
+                    Err(error) => return Err(self.failed(station, sessions, error)),
+                };
+                let at = timed.at_nanos;
+                // a signal that came while the station waited
+                if let Some(signal) = stop.requested() {
+                    self.cell.stop(signal);
                 }
+                let views = match timed.input {
+                    Input::Views(views) => views,
+                    Input::Tick => Vec::new(),
+                    Input::Reports(reports) => {
+                        if let Err(error) = self.apply(station, at, reports) {
+                            return Err(self.failed(station, sessions, error));
+                        }
+                        Vec::new()
+                    }
+                };
+                (at, self.cell.step(at, views))
             };
-            let step = self.cell.step(at, views);
-            commands.extend(step.events.iter().filter_map(CommandSent::of));
             if let Err(error) = station.stepped(&mut self.cell, at, &step) {
-                return Err(self.failed(station.name(), at, error));
+                return Err(self.failed(station, sessions, error));
             }
             let Some(ending) = step.ended else {
                 continue;
@@ -269,7 +288,7 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
                     Err(error) => {
                         return Err(DriverError {
                             error,
-                            ending: Some(ending),
+                            outcome: Some(self.outcome(sessions, ending)),
                         })
                     }
                 },
@@ -298,10 +317,22 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
         }
         Ok(Outcome {
             status,
+            ..self.outcome(sessions, ending)
+        })
+    }
+
+    /// The outcome of `sessions` sessions, the last one ending with `ending`, by the cell's rule.
+    fn outcome(&mut self, sessions: u32, ending: Ending) -> Outcome {
+        let status = match ending.after(sessions, Some(sessions)) {
+            AfterSession::Stop(status) => status,
+            AfterSession::NextSession => ExitStatus::Done,
+        };
+        Outcome {
+            status,
             sessions,
             ending,
-            commands,
-        })
+            commands: self.cell.take_commands(),
+        }
     }
 
     /// Each report applied by the cell's rules, in order, and shown to the station.
@@ -318,25 +349,24 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
         Ok(())
     }
 
-    /// The station failed: the session ends now, held.
-    fn failed<E: std::fmt::Display + std::fmt::Debug>(
+    /// The station failed: the session ends now, held, at the station's time.
+    fn failed<S: Station<R, O>>(
         &mut self,
-        input: &'static str,
-        at_nanos: i64,
-        error: E,
-    ) -> DriverError<E> {
+        station: &mut S,
+        sessions: u32,
+        error: S::Error,
+    ) -> DriverError<S::Error> {
+        let at = station.now_nanos();
         let step = self.cell.interrupt(
-            at_nanos,
+            at,
             Interruption::InputFailed {
                 error: InputError {
-                    input,
+                    input: station.name(),
                     why: error.to_string(),
                 },
             },
         );
-        DriverError {
-            error,
-            ending: step.ended,
-        }
+        let outcome = step.ended.map(|ending| self.outcome(sessions + 1, ending));
+        DriverError { error, outcome }
     }
 }
