@@ -34,7 +34,7 @@ use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
     trajectory_class, CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption,
-    LandmarkSource, Leg, Outcome, OutputError, ReportEffect, RobotCommand, RobotReport, RobotSink,
+    LandmarkSource, Leg, OutputError, ReportEffect, RobotCommand, RobotReport, RobotSink,
     SessionEnd, SessionEvent, SessionMachine, SessionState, Station, Step, Timed,
 };
 use ergocell::shipped;
@@ -823,29 +823,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let (machine, robot, outputs) = cell.into_parts();
     drop(outputs.display);
     let messages = outputs.recording.close()?;
-    let write_outcome = |o: &Outcome| match &args.outcome {
-        Some(path) => super::outcome::write(
-            path,
-            args.force,
-            o,
-            machine.summary(),
-            robot.monitor_holds > 0,
-        ),
-        None => Ok(()),
-    };
-    let outcome = match outcome {
-        Ok(o) => o,
-        // A simulator that failed ended the session held; its error is the demo's, and its
-        // outcome is written all the same.
-        Err(e) => {
-            if let Some(o) = &e.outcome {
-                write_outcome(o)?;
-            }
-            return Err(e.error);
-        }
-    };
-    write_outcome(&outcome)?;
-    let status = outcome.status;
+    // A simulator that failed ended the session held; its error is the demo's.
+    let status = super::outcome::written(
+        outcome,
+        args.outcome.as_deref(),
+        args.force,
+        machine.summary(),
+        robot.monitor_holds > 0,
+    )?
+    .status;
     drop(demo_dir);
     summary(&machine, args, true_class, secs(now, start));
     println!(

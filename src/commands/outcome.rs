@@ -6,7 +6,7 @@
 
 use std::path::Path;
 
-use ergocell::session::{CommandSent, Outcome, SessionEnd, SessionSummary};
+use ergocell::session::{CommandSent, DriverError, Outcome, SessionEnd, SessionSummary};
 use serde::Serialize;
 
 use super::output;
@@ -47,6 +47,34 @@ pub fn write(
     let mut text = serde_json::to_string_pretty(&file)?;
     text.push('\n');
     output::write("--outcome", path, force, text.as_bytes())
+}
+
+/// The driver's result: the outcome, written to `path` when one is asked for. A station that
+/// failed ended the session held; its outcome so far is written all the same and its error
+/// returned.
+pub fn written(
+    result: Result<Outcome, DriverError<anyhow::Error>>,
+    path: Option<&Path>,
+    force: bool,
+    summary: &SessionSummary,
+    monitor_held: bool,
+) -> anyhow::Result<Outcome> {
+    let write_to = |o: &Outcome| match path {
+        Some(path) => write(path, force, o, summary, monitor_held),
+        None => Ok(()),
+    };
+    match result {
+        Ok(o) => {
+            write_to(&o)?;
+            Ok(o)
+        }
+        Err(e) => {
+            if let Some(o) = &e.outcome {
+                write_to(o)?;
+            }
+            Err(e.error)
+        }
+    }
 }
 
 /// Before the session: `path` is no input, and exists only with `force`.

@@ -17,8 +17,8 @@ use anyhow::Context as _;
 use ergocell::display::Display;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption, Outcome, OutputError,
-    ReportEffect, RobotReport, SessionEvent, SessionMachine, Station, Step, Timed,
+    CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption, OutputError, ReportEffect,
+    RobotReport, SessionEvent, SessionMachine, Station, Step, Timed,
 };
 use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
 use ergocell_bridge::controller::{run_controller, ControllerCommand, ControllerReport};
@@ -455,21 +455,14 @@ async fn serve(
     let monitor_held = cell.robot().held_after_ms().is_some();
     let (machine, _, outputs) = cell.into_parts();
     *recording = Some(outputs.ros.recording);
-    let write_outcome = |o: &Outcome| match &args.outcome {
-        Some(path) => super::outcome::write(path, args.force, o, machine.summary(), monitor_held),
-        None => Ok(()),
-    };
-    let outcome = match outcome {
-        Ok(o) => o,
-        // An input that failed ended the session held: its outcome is written all the same.
-        Err(e) => {
-            if let Some(o) = &e.outcome {
-                write_outcome(o)?;
-            }
-            return Err(e.error);
-        }
-    };
-    write_outcome(&outcome)?;
+    // An input that failed ended the session held: its error is run's.
+    let outcome = super::outcome::written(
+        outcome,
+        args.outcome.as_deref(),
+        args.force,
+        machine.summary(),
+        monitor_held,
+    )?;
     match outcome.status {
         ExitStatus::Done => Ok(()),
         ExitStatus::Stopped(signal) => Err(Stopped {
