@@ -159,15 +159,22 @@ unshare -n -- bash -c '
       --rig config/rig.toml --trajectories "$2/traj" --sessions 1 --max-secs 90 --latency-report \
       > "$2/storm-run.log" 2>&1 &
   run=$!
-  PEER_STORM=10 python3 .ci/interop/peer.py "$2/session.mcap" "$2/traj/locks/c2.lock.toml" 90 > "$2/storm-peer.json"
-  wait "$run"
+  PEER_STORM=10 python3 .ci/interop/peer.py "$2/session.mcap" "$2/traj/locks/c2.lock.toml" 90 \
+    > "$2/storm-peer.json" 2> "$2/storm-peer.err" || echo "peer exit $?" >> "$2/storm-peer.err"
+  wait "$run" || echo "run exit $?" >> "$2/storm-run.log"
 ' _ "$bin" "$tmp"
-python3 - "$tmp/storm-run.log" "$tmp/storm-peer.json" "$tmp/storm-rss" <<'PY'
+python3 - "$tmp/storm-run.log" "$tmp/storm-peer.json" "$tmp/storm-rss" "$tmp/storm-peer.err" <<'PY'
 import json, re, sys
 log = open(sys.argv[1]).read()
-peer = json.load(open(sys.argv[2]))
+try:
+    peer = json.load(open(sys.argv[2]))
+except Exception as e:
+    print(f"FAIL camera message storm: the peer wrote no report ({e})\n--- peer\n{open(sys.argv[4]).read()[-3000:]}"
+          f"\n--- run\n{log[-3000:]}")
+    sys.exit(1)
 rss_mb = int(open(sys.argv[3]).read().split()[-1]) / 1024
-rejected = int(re.search(r"(\d+) camera message\(s\) rejected", log).group(1))
+said = re.search(r"(\d+) camera message\(s\) rejected", log)
+rejected = int(said.group(1)) if said else -1
 lat = re.search(r"p50 = ([\d.]+) ms, p99 = ([\d.]+) ms, max = ([\d.]+) ms", log)
 if lat is None:
     print("FAIL camera message storm: run printed no latency report (no RULA state published?)")
@@ -176,10 +183,11 @@ if lat is None:
 p50, p99, mx = (float(x) for x in lat.groups())
 print(f"storm: {peer['camera_messages_sent']} + {peer.get('storm_messages_sent', 0)} camera messages sent, "
       f"{rejected} rejected; latency p50 {p50:.3f} ms, p99 {p99:.3f} ms, max {mx:.1f} ms; peak RSS {rss_mb:.0f} MB")
-ok = ("class c2" in log and "operator left" in log and rejected > 1000 and p99 < 50 and rss_mb < 300)
+ok = ("class c2" in log and "operator left" in log and "run exit" not in log and rejected > 1000
+      and p99 < 50 and rss_mb < 300)
 print(("ok   " if ok else "FAIL ") + "camera message storm (10x, malformed mixed in): classed, ended, rejected, latency and memory bounded")
 if not ok:
-    print(log[-3000:])
+    print(log[-3000:] + "\n--- peer\n" + open(sys.argv[4]).read()[-2000:])
 sys.exit(0 if ok else 1)
 PY
 

@@ -25,7 +25,8 @@
 //! moves (`Aborted { NotVerified }`); tracking lost holds (`CamerasLost`) and resumes at an end of the
 //! path; one camera lost is reported and the robot works on; the cameras' clock jumping back holds;
 //! a stop signal ends it held with exit status 130; an input that fails ends it held
-//! (`InputFailed`) and returns the station's error.
+//! (`InputFailed`) and returns the station's error; a next session that cannot start stops the
+//! program for a person (exit status 1).
 //!
 //! Dependencies: perception, ergonomics, robot, skeleton. Not ROS (`ergocell_bridge`), not the
 //! simulator; `.ci/deps` checks it.

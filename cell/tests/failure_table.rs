@@ -17,6 +17,7 @@
 //! | the cameras' clock jumps back | held: `CamerasLost` (frames too old to move the robot by) |
 //! | a stop signal (Ctrl-C) | ends held: `Stopped { Interrupt }`, exit status 130 |
 //! | an input fails (the simulator) | ends held: `InputFailed`, the station's error returned |
+//! | no machine for the next operator | the program stops for a person: exit status 1 after a normal end |
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 #[path = "../../robot/tests/common/mod.rs"]
@@ -271,6 +272,8 @@ struct Row {
     cameras: Cameras,
     fail_at: Option<i64>,
     stop_at: Option<i64>,
+    /// Sessions asked for (`None`: one after another).
+    sessions: Option<u32>,
 }
 
 /// How a row went: the driver's outcome (or its error), the timeline and the robot.
@@ -309,6 +312,7 @@ impl Row {
             cameras: as_simulated(),
             fail_at: None,
             stop_at: None,
+            sessions: Some(1),
         }
     }
 
@@ -360,7 +364,7 @@ impl Row {
             fail_at: self.fail_at,
             clock: Rc::default(),
         };
-        let mut driver = Driver::new(cell, Some(1));
+        let mut driver = Driver::new(cell, self.sessions);
         let stop = StopAt {
             at_nanos: self.stop_at.unwrap_or(i64::MAX),
             now: station.clock.clone(),
@@ -670,4 +674,26 @@ fn an_input_that_fails_ends_the_session_held_and_returns_its_error() {
         ran.robot.controller.received.last(),
         Some((_, RobotCommand::Hold { .. }))
     ));
+}
+
+#[test]
+fn no_machine_for_the_next_operator_stops_the_program_for_a_person() {
+    // One session after another: the operator leaves normally, and the station has no machine
+    // for the next one (the scripted station's error).
+    let ran = Row {
+        sessions: None,
+        ..Row::new()
+    }
+    .run();
+    let error = ran.outcome.as_ref().expect_err("no next machine");
+    let outcome = error.outcome.as_ref().expect("one session ended");
+    assert!(
+        matches!(outcome.ending.end, SessionEnd::OperatorLeft { .. }),
+        "{:?}",
+        outcome.ending
+    );
+    assert_eq!(
+        (outcome.sessions, outcome.status),
+        (1, ExitStatus::NeedsAPerson)
+    );
 }

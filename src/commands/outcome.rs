@@ -69,8 +69,9 @@ pub fn written(
             Ok(o)
         }
         Err(e) => {
-            if let Some(o) = &e.outcome {
-                write_to(o)?;
+            // the station's error is the one to report; a failed write is said beside it
+            if let Some(Err(w)) = e.outcome.as_ref().map(write_to) {
+                eprintln!("error: the outcome was not written: {w:#}");
             }
             Err(e.error)
         }

@@ -634,7 +634,7 @@ impl Station<RosRobot, RunOutputs> for RunStation<'_> {
 
     fn stepped(&mut self, cell: &mut RunLoop, _at: i64, _step: &Step) -> anyhow::Result<()> {
         if cell.outputs().ros.published_frame {
-            if let Some(woken) = self.woken {
+            if let Some(woken) = self.woken.take() {
                 self.latency.push(woken);
             }
         }

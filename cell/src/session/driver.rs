@@ -284,11 +284,12 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
                         self.cell.next_session(machine);
                         station.session_began(&mut self.cell);
                     }
-                    // The last session ended normally (the robot home): there is nothing to hold.
+                    // The last session ended normally (the robot home): there is nothing to hold,
+                    // and the program stops for a person all the same.
                     Err(error) => {
                         return Err(DriverError {
                             error,
-                            outcome: Some(self.outcome(sessions, ending)),
+                            outcome: Some(self.failed_outcome(sessions, ending)),
                         })
                     }
                 },
@@ -366,7 +367,19 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
                 },
             },
         );
-        let outcome = step.ended.map(|ending| self.outcome(sessions + 1, ending));
+        let outcome = step
+            .ended
+            .map(|ending| self.failed_outcome(sessions + 1, ending));
         DriverError { error, outcome }
+    }
+
+    /// The outcome when the driver fails: the program stops for a person, even after a normal end
+    /// (a stop signal keeps its own status).
+    fn failed_outcome(&mut self, sessions: u32, ending: Ending) -> Outcome {
+        let mut outcome = self.outcome(sessions, ending);
+        if outcome.status == ExitStatus::Done {
+            outcome.status = ExitStatus::NeedsAPerson;
+        }
+        outcome
     }
 }
