@@ -345,17 +345,13 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
             return Some(self.ended_step());
         }
         let by = self.early_end(now_nanos)?;
-        Some(self.end(now_nanos, by))
+        Some(self.interrupt(now_nanos, by))
     }
 
-    /// Ends the session now, holding the robot, for `by` (a caller's reason: an input that
-    /// failed); the shutdown's step. A session already ended keeps its ending.
+    /// Ends the session now, holding the robot, for `by` (the loop's own rules, or a caller's
+    /// reason: an input that failed); the shutdown's step. A session already ended keeps its
+    /// ending.
     pub fn interrupt(&mut self, now_nanos: i64, by: Interruption) -> Step {
-        self.end(now_nanos, by)
-    }
-
-    /// Ends the session now, holding the robot, for `by`.
-    fn end(&mut self, now_nanos: i64, by: Interruption) -> Step {
         if self.ended.is_some() {
             return self.ended_step();
         }
@@ -401,7 +397,7 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
     fn deliver(&mut self, now_nanos: i64, events: Vec<SessionEvent>) -> Step {
         self.log_commands(&events);
         if let Err(e) = self.outputs.session_step(now_nanos, &self.machine, &events) {
-            let mut step = self.end(now_nanos, Interruption::OutputFailed { error: e });
+            let mut step = self.interrupt(now_nanos, Interruption::OutputFailed { error: e });
             let mut all = events;
             all.append(&mut step.events);
             step.events = all;

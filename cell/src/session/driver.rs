@@ -199,8 +199,8 @@ impl CommandSent {
 #[error("{error}")]
 pub struct DriverError<E: std::fmt::Display + std::fmt::Debug> {
     pub error: E,
-    /// The sessions as they ended: the last session's ending and the commands sent (the status is
-    /// the cell's rule for that ending).
+    /// The sessions as they ended: the last session's ending and the commands sent; the status
+    /// is the program's (a person must look, unless a stop signal ended it).
     pub outcome: Option<Outcome>,
 }
 
@@ -218,14 +218,6 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
             cell,
             sessions_wanted,
         }
-    }
-
-    pub fn cell(&self) -> &CellLoop<R, O> {
-        &self.cell
-    }
-
-    pub fn cell_mut(&mut self) -> &mut CellLoop<R, O> {
-        &mut self.cell
     }
 
     pub fn into_cell(self) -> CellLoop<R, O> {
