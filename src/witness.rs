@@ -1,5 +1,6 @@
-//! Where the cell keeps its witness of the approvals files ([`ergocell_robot::witness`]), and the
-//! reading and appending of it.
+//! Where the cell keeps its witness of the approvals files ([`ergocell_robot::witness`]; checked
+//! and extended by [`ergocell_approvals::witness_store`], appended to by
+//! [`crate::session::provider::OsFiles`]).
 //!
 //! The witness is `witness.jsonl` in the folder the `ERGOCELL_STATE_DIR` environment variable names
 //! (an installed cell: its state folder, `/var/lib/ergocell` under systemd's `StateDirectory=`), or
@@ -16,9 +17,11 @@ use std::fs;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
+pub use ergocell_approvals::witness_store::WitnessNote;
 use ergocell_robot::lock::ApprovalsFile;
-use ergocell_robot::witness::Witness;
 use ergocell_robot::{RobotError, TrajectoryClass, TrustedSigners};
+
+use crate::session::provider::OsFiles;
 
 /// The environment variable naming the cell's state folder.
 pub const STATE_DIR_ENV: &str = "ERGOCELL_STATE_DIR";
@@ -37,96 +40,47 @@ pub fn witness_path(approvals_dir: &Path) -> PathBuf {
         .join(WITNESS_FILE)
 }
 
-/// The approvals file's name in the witness: its absolute path as the cell names it, symlinks
-/// **not** resolved. Keyed by the resolved path, a folder swapped for a symlink to another folder
-/// holding an older copy was a file the witness had never seen (a withdrawal revived).
-fn key(approvals_path: &Path) -> String {
-    std::path::absolute(approvals_path)
-        .unwrap_or_else(|_| approvals_path.to_owned())
-        .to_string_lossy()
-        .into_owned()
-}
-
-/// The key the witness used before, the folder's links resolved: its sightings still bind.
-fn resolved_key(approvals_path: &Path) -> Option<String> {
-    let (dir, name) = (approvals_path.parent()?, approvals_path.file_name()?);
-    let dir = if dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        dir
-    };
-    fs::canonicalize(dir)
-        .ok()
-        .map(|d| d.join(name).to_string_lossy().into_owned())
-}
-
-/// Checks the approvals file at `approvals_path` (parsed, its chain intact) against the witness,
-/// then records there what a `trusted` approver's signature vouches for of it, when that is more
-/// than the witness knew ([`Witness::sighting_line`]). `Err` is the refusal (the file
-/// was cut back); the notes are for the user (lines of the witness passed over, a record that could
-/// not be written): the check stays as strong as what was read.
+/// [`ergocell_approvals::witness_store::observe`] on this machine's witness for the approvals file
+/// at `approvals_path`.
 pub fn observe(
     approvals_path: &Path,
     class: TrajectoryClass,
     file: &ApprovalsFile,
     trusted: &TrustedSigners,
     now_unix: i64,
-) -> Result<Vec<String>, RobotError> {
-    let path = witness_path(approvals_path.parent().unwrap_or_else(|| Path::new(".")));
-    let mut notes = Vec::new();
-    // A witness that cannot be read refuses: it would otherwise be switched off by one bad byte.
-    let bytes = match crate::input::read(&path, crate::input::Kind::Config) {
-        Ok(bytes) => bytes,
-        Err(e) if e.is_not_found() => Vec::new(),
-        Err(e) => {
-            return Err(RobotError::WitnessUnreadable {
-                line: 0,
-                why: e.to_string(),
-            })
-        }
-    };
-    let witness = Witness::parse(&bytes)?;
-    for line in &witness.unreadable {
-        notes.push(format!("witness {}: {line} (passed over)", path.display()));
-    }
-    let key = key(approvals_path);
-    witness.check(&key, class, file)?;
-    if let Some(resolved) = resolved_key(approvals_path).filter(|r| *r != key) {
-        witness.check(&resolved, class, file)?;
-    }
-    let now =
-        ergocell_robot::signing::rfc3339_utc(now_unix).unwrap_or_else(|_| "unknown".to_owned());
-    if let Some(line) = witness.sighting_line(&key, class, file, trusted, &now) {
-        if let Err(e) = append(&path, &line) {
-            notes.push(format!(
-                "cannot record in the witness {}: {e} (a later rollback of this file is not caught)",
-                path.display()
-            ));
-        }
-    }
-    Ok(notes)
+) -> Result<Vec<WitnessNote>, RobotError> {
+    ergocell_approvals::witness_store::observe(
+        &OsFiles::disk(),
+        &witness_path(approvals_path.parent().unwrap_or_else(|| Path::new("."))),
+        approvals_path,
+        class,
+        file,
+        trusted,
+        now_unix,
+    )
 }
 
-/// [`observe`] for an approvals file as read: `None` (no file) is an empty chain, so one the witness
-/// saw entries of is caught as deleted; a text that does not parse or whose chain is broken is not
-/// checked here (`lock::verify` reports it).
+/// [`ergocell_approvals::witness_store::observe_text`] on this machine's witness.
 pub fn observe_text(
     approvals_path: &Path,
     class: TrajectoryClass,
     text: Option<&str>,
     trusted: &TrustedSigners,
     now_unix: i64,
-) -> Result<Vec<String>, RobotError> {
-    let file = match text.map(ApprovalsFile::from_toml_str) {
-        None => ApprovalsFile::default(),
-        Some(Ok(file)) if file.check_chain().is_ok() => file,
-        Some(_) => return Ok(Vec::new()),
-    };
-    observe(approvals_path, class, &file, trusted, now_unix)
+) -> Result<Vec<WitnessNote>, RobotError> {
+    ergocell_approvals::witness_store::observe_text(
+        &OsFiles::disk(),
+        &witness_path(approvals_path.parent().unwrap_or_else(|| Path::new("."))),
+        approvals_path,
+        class,
+        text,
+        trusted,
+        now_unix,
+    )
 }
 
 /// Appends one line and syncs it. A new local witness folder gets a `.gitignore` first.
-fn append(path: &Path, line: &str) -> std::io::Result<()> {
+pub(crate) fn append(path: &Path, line: &str) -> std::io::Result<()> {
     if let Some(dir) = path.parent() {
         if !dir.exists() {
             fs::create_dir_all(dir)?;

@@ -509,7 +509,6 @@ fn a_lock_write_cut_short_leaves_the_previous_lock_whole() {
 /// her own key, or pointing the cell at an anchor she controls.
 #[test]
 fn the_mallory_attack_is_refused_by_verify_and_by_run_naming_why() {
-    use ergocell::session::TrajectoryProvider as _;
     use ergocell_robot::TrajectoryClass;
     let Some(cell) = AnchoredCell::new("trajectories_mallory") else {
         return;
@@ -541,10 +540,10 @@ fn the_mallory_attack_is_refused_by_verify_and_by_run_naming_why() {
     };
     assert!(
         matches!(
-            cause.downcast_ref::<ergocell::trust_anchor::TrustListError>(),
-            Some(ergocell::trust_anchor::TrustListError::Authority(
+            cause.as_ref(),
+            ergocell::trust_anchor::TrustListError::Authority(
                 ergocell_robot::authority::AuthorityError::Edited
-            ))
+            )
         ),
         "{refused}"
     );
@@ -796,7 +795,6 @@ fn lock_approve_and_report_on_a_full_filesystem_leave_the_previous_files_intact(
 /// is refused by `verify` and by the provider `run` uses, naming the date.
 #[test]
 fn approvals_dated_1970_or_2099_are_refused() {
-    use ergocell::session::TrajectoryProvider as _;
     use ergocell_robot::lock::{ApprovalsFile, LockFile};
     use ergocell_robot::TrajectoryClass;
     let Some(cell) = AnchoredCell::new("trajectories_dates") else {
@@ -846,7 +844,6 @@ fn approvals_dated_1970_or_2099_are_refused() {
 /// provider `run` uses, naming why; a withdrawal stops the class until it is approved anew.
 #[test]
 fn a_rollback_a_restored_lock_and_a_deleted_withdrawal_are_refused() {
-    use ergocell::session::TrajectoryProvider as _;
     use ergocell_robot::TrajectoryClass;
     let Some(cell) = AnchoredCell::new("trajectories_rollback") else {
         return;

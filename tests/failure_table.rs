@@ -19,7 +19,7 @@ use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
     AfterSession, CellLoop, DriverStop, ExitStatus, GoalStatus, HoldReason, Interruption, Leg,
     ResultCode, RobotCommand, RobotFailure, RobotSink, RobotUnready, SessionEnd, SessionEvent,
-    SessionState, StopSignal, TrajectoryProvider,
+    SessionState, StopSignal,
 };
 use ergocell_bridge::controller::{ControllerCommand, ControllerReport, GoalStatusEnum};
 use ergocell_bridge::msg::{ControllerEvent, HardwareEvent, Header, JointState, JointTrajectory};
@@ -110,7 +110,7 @@ struct Harness {
 
 impl Harness {
     fn new(name: &str, interface: RobotInterface, driver_state: bool) -> Self {
-        let mut provider = provider(name);
+        let provider = provider(name);
         let approved = provider.verify(TrajectoryClass::C2).unwrap();
         let joints = approved.joint_names().to_vec();
         let home = approved.points()[0].positions_rad.clone();
@@ -751,7 +751,7 @@ impl ergocell::session::CellOutputs for FailingOutputs {
 #[test]
 fn a_failed_output_or_the_time_limit_ends_the_session_held() {
     for fail_at in [Some(120), None] {
-        let mut p = provider(&format!("outputs-{fail_at:?}"));
+        let p = provider(&format!("outputs-{fail_at:?}"));
         let approved = p.verify(TrajectoryClass::C2).unwrap();
         let robot = DummyRobot::new(
             approved.joint_names().to_vec(),
@@ -827,7 +827,7 @@ fn a_failed_output_or_the_time_limit_ends_the_session_held() {
 #[test]
 fn an_output_failing_as_the_operator_leaves_ends_the_program_not_the_session_only() {
     let run = |fail_at: usize| {
-        let mut p = provider(&format!("outputs-leaving-{fail_at}"));
+        let p = provider(&format!("outputs-leaving-{fail_at}"));
         let approved = p.verify(TrajectoryClass::C2).unwrap();
         let robot = DummyRobot::new(
             approved.joint_names().to_vec(),

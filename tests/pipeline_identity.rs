@@ -8,8 +8,7 @@
 use std::path::{Path, PathBuf};
 
 use ergocell::session::dummy::DummyRobot;
-use ergocell::session::provider::FileTrajectories;
-use ergocell::session::{SessionEvent, SessionMachine, SessionState, TrajectoryProvider};
+use ergocell::session::{SessionEvent, SessionMachine, SessionState};
 use ergocell_cell::CellSettings;
 use ergocell_ergonomics::{FrameAssessment, HeightStatus, WarningEvent};
 use ergocell_perception::rig_file::parse_rig;
@@ -49,16 +48,19 @@ fn the_session_and_the_experiments_run_one_pipeline() {
     // The session, on the cell file's defaults, with a demo approval of c2.
     let approvals = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("identity-approvals");
     let _ = std::fs::remove_dir_all(&approvals);
-    let provider = FileTrajectories::new(
+    let provider = ergocell::session::provider::on_disk(
         &root().join("config/cell.toml"),
         &root().join("trajectories"),
         &approvals,
     )
     .with_demo_key(&[7; 32])
     .unwrap();
-    provider
-        .approve_for_demo(TrajectoryClass::C2, "2026-01-01T00:00:00Z")
-        .unwrap();
+    ergocell::session::provider::approve_for_demo(
+        &provider,
+        TrajectoryClass::C2,
+        "2026-01-01T00:00:00Z",
+    )
+    .unwrap();
     let approved = provider.clone().verify(TrajectoryClass::C2).unwrap();
     let mut robot = DummyRobot::new(
         approved.joint_names().to_vec(),

@@ -518,10 +518,10 @@ fn the_mallory_attack_never_moves_the_robot() {
     };
     assert!(
         matches!(
-            cause.downcast_ref::<ergocell::trust_anchor::TrustListError>(),
-            Some(ergocell::trust_anchor::TrustListError::Authority(
+            cause.as_ref(),
+            ergocell::trust_anchor::TrustListError::Authority(
                 ergocell_robot::authority::AuthorityError::Edited
-            ))
+            )
         ),
         "{reason}"
     );
@@ -977,7 +977,7 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
     // exactly those keys. Approvals are still read from, and written to, the folder given.
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("session-shipped");
     let _ = std::fs::remove_dir_all(&dir);
-    let shipped = FileTrajectories::with_shipped_defaults(None, None, &dir);
+    let shipped = ergocell::session::provider::with_shipped_defaults(None, None, &dir);
     for class in TrajectoryClass::ALL {
         let key = format!("trajectories/locks/{class}.lock.toml");
         assert_eq!(
@@ -988,7 +988,7 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
     }
     // The shipped approvers trust no one: a demo trusts its own throwaway key (and re-locks under it,
     // after checking the shipped locks hold the same trajectories).
-    let mut shipped = shipped.with_demo_key(&[7; 32]).unwrap();
+    let shipped = shipped.with_demo_key(&[7; 32]).unwrap();
     for class in TrajectoryClass::ALL {
         assert!(
             shipped.stature_bounds_m(class).is_ok(),
@@ -1009,8 +1009,7 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
             }
             other => panic!("{class}: {other:?}"),
         }
-        shipped
-            .approve_for_demo(class, "2026-01-01T00:00:00Z")
+        ergocell::session::provider::approve_for_demo(&shipped, class, "2026-01-01T00:00:00Z")
             .unwrap();
         assert!(dir.join(format!("{class}.toml")).exists());
         assert_eq!(shipped.verify(class).unwrap().class(), class);
@@ -1323,7 +1322,7 @@ fn an_approvals_time_is_checked_against_the_injected_clock() {
     fn the_day_after() -> i64 {
         1_767_312_000 // 2026-01-02T00:00:00Z
     }
-    let mut early =
+    let early =
         common::demo_provider("clock-early", Some(TrajectoryClass::C2)).with_clock(two_days_before);
     let refused = early.verify(TrajectoryClass::C2);
     assert!(
@@ -1333,7 +1332,7 @@ fn an_approvals_time_is_checked_against_the_injected_clock() {
         ),
         "{refused:?}"
     );
-    let mut late =
+    let late =
         common::demo_provider("clock-late", Some(TrajectoryClass::C2)).with_clock(the_day_after);
     assert!(late.verify(TrajectoryClass::C2).is_ok());
 }

@@ -9,7 +9,7 @@ mod common;
 
 use ergocell::session::{
     CellLoop, DriverStop, GoalStatus, HoldReason, Interruption, Leg, ResultCode, RobotCommand,
-    RobotFailure, RobotUnready, SessionEnd, SessionState, TrajectoryProvider,
+    RobotFailure, RobotUnready, SessionEnd, SessionState,
 };
 use ergocell_cell::CellSettings;
 use ergocell_robot::monitor::Deviation;
@@ -32,8 +32,7 @@ struct Twin {
 impl Twin {
     /// A 1.75 m operator (class c2) with `fault` armed for the robot's first leg.
     fn new(name: &str, fault: Option<RobotFault>) -> Self {
-        let mut provider =
-            common::demo_provider(&format!("twin-{name}"), Some(TrajectoryClass::C2));
+        let provider = common::demo_provider(&format!("twin-{name}"), Some(TrajectoryClass::C2));
         let approved = provider.verify(TrajectoryClass::C2).unwrap();
         let mut controller = SimController::new(
             approved.joint_names().to_vec(),

@@ -1,11 +1,5 @@
-//! The cell crate's errors: the core's ([`CellError`]), a backend's ([`BackendError`]) and the
-//! trajectory provider's ([`ProviderError`]).
-
-use std::path::PathBuf;
-
-use ergocell_robot::lock::VerifyFailure;
-use ergocell_robot::signing::ApprovalError;
-use ergocell_robot::{RobotError, TrajectoryClass};
+//! The cell crate's errors: the core's ([`CellError`]) and a backend's ([`BackendError`]). The
+//! trajectory provider's ([`ProviderError`]) is the approvals crate's, re-exported.
 
 /// Everything that can go wrong in the cell's core: a bad configuration, a pipeline that cannot be
 /// built on the given rig, a backend or trajectory provider that failed.
@@ -65,110 +59,8 @@ pub enum BackendError {
     },
 }
 
-/// A cause from outside the cell's crates (the binary's file readers, a TOML parser), shared so
-/// that [`ProviderError`] stays `Clone`.
+/// A cause from outside the cell's crates (a transport, the simulator), shared so that errors stay
+/// `Clone`.
 pub type Cause = std::sync::Arc<dyn std::error::Error + Send + Sync>;
 
-/// Why the trajectory provider could not give a verified trajectory, with the file or the class and
-/// the check that failed as fields. The session turns any of them into "the robot does not move".
-#[derive(Debug, Clone, thiserror::Error)]
-#[non_exhaustive]
-pub enum ProviderError {
-    /// A file could not be read: missing, unreadable, too large, not text, or not among the files
-    /// shipped in the binary. The cause names the path.
-    #[error("{cause}")]
-    Unreadable {
-        path: PathBuf,
-        #[source]
-        cause: Cause,
-    },
-    /// A file of the robot's side (the cell, its URDF, a trajectory file, a lock) does not parse or
-    /// holds an impossible value.
-    #[error("{}: {cause}", path.display())]
-    Invalid {
-        path: PathBuf,
-        #[source]
-        cause: Box<RobotError>,
-    },
-    /// The classes' handover RULA curves do not parse or are not curves.
-    #[error("{}: {cause}", path.display())]
-    Curves {
-        path: PathBuf,
-        #[source]
-        cause: Cause,
-    },
-    /// The robot's geometry for the recording's markers could not be built for `class`.
-    #[error("robot geometry for the recording ({class}): {cause}")]
-    Geometry {
-        class: TrajectoryClass,
-        #[source]
-        cause: Box<RobotError>,
-    },
-    /// One of the cell's approvers' files could not be read. The cause names the path.
-    #[error("{cause} (the cell's trusted approvers: config/approvers/ in the repository shows the format)")]
-    ApproversUnreadable {
-        path: PathBuf,
-        #[source]
-        cause: Cause,
-    },
-    /// The cell's trusted approvers (allowed signers, revocations, the authority's signature, the
-    /// site's trust anchor) do not give a trust list.
-    #[error("trusted approvers: {cause}")]
-    TrustList {
-        #[source]
-        cause: Cause,
-    },
-    /// The class's lock or its approvals do not verify: every problem found, and the witness's
-    /// finding when that failed too (a forged entry is also one the witness never saw).
-    #[error("{failure}{}", witness.as_ref().map_or_else(String::new, |w| format!("\n  - {w}")))]
-    NotVerified {
-        failure: VerifyFailure,
-        witness: Option<Box<ProviderError>>,
-    },
-    /// The approvals file disagrees with the cell's witness of the approvals seen before (an entry
-    /// withdrawn or rolled back).
-    #[error("{}: {cause}", path.display())]
-    Witness {
-        path: PathBuf,
-        #[source]
-        cause: Box<RobotError>,
-    },
-    /// An approval bears a time no approval can bear now.
-    #[error("approval by {approver}: {cause}")]
-    ApprovalTime {
-        approver: String,
-        #[source]
-        cause: ApprovalError,
-    },
-    /// The demo could not lock `class` in memory, or the lock on disk is not what validation
-    /// produces now.
-    #[error("{class}: demo lock: {cause}")]
-    DemoLock {
-        class: TrajectoryClass,
-        #[source]
-        cause: Box<RobotError>,
-    },
-    /// The demo's throwaway key could not be made.
-    #[error("the demo key: {cause}")]
-    DemoKey {
-        #[source]
-        cause: Box<RobotError>,
-    },
-    /// The lock on disk was made from other inputs than the current trajectory file, URDF, cell or
-    /// version.
-    #[error("{class}: the lock on disk was made from other inputs than the current trajectory file, URDF, cell or version: re-lock it")]
-    LockInputsChanged { class: TrajectoryClass },
-    /// A demo approval would have been written into the repository's approvals folder.
-    #[error("refusing to write a demo approval into {}: demo approvals live in a temporary folder", dir.display())]
-    DemoApprovalsInRepository { dir: PathBuf },
-    /// A demo approval was asked of a provider without the demo key.
-    #[error("a demo approval needs the demo key")]
-    NoDemoKey,
-    /// A file the provider writes (a demo approval) could not be written.
-    #[error("cannot write {}: {cause}", path.display())]
-    Write {
-        path: PathBuf,
-        #[source]
-        cause: Cause,
-    },
-}
+pub use ergocell_approvals::ProviderError;

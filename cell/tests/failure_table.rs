@@ -2,8 +2,10 @@
 //! a scripted station: the twin's cameras (`ergocell_sim`), changed by each row's camera fault,
 //! and its robot side (`ergocell_sim::controller::TwinRobot`: a simulated joint
 //! trajectory controller and KUKA driver under the cell's `ExecutionWatch`), deterministic, on an
-//! injected clock, each row asserting the typed outcome. The trajectory is the shipped c2 one,
-//! planned, locked and approved in memory (the robot crate's test approvers).
+//! injected clock, each row asserting the typed outcome. The lock and its approvals are the
+//! approvals crate's in-memory cell (`ergocell_approvals::fixture`: the shipped c2 trajectory
+//! planned and locked in memory, approved by a test engineer under a test authority), verified by
+//! the same provider `run` uses.
 //!
 //! | row | the cell |
 //! |---|---|
@@ -11,7 +13,8 @@
 //! | the robot stalls | ends held: `RobotFailed { Deviation::Stalled }` |
 //! | the controller answers late | ends held: `RobotFailed { GoalUnanswered }` |
 //! | the driver stops (an error, an e-stop) | held: `RobotNotReady { DriverStopped }`, not ended |
-//! | the lock does not verify (unapproved, withdrawn, rolled back) | ends, the robot never moves: `Aborted { NotVerified }` |
+//! | the lock was never approved, or its approval withdrawn | ends, the robot never moves: `Aborted { NotVerified { NotVerified { NotApproved } } }` |
+//! | the approvals file rolled back (a withdrawal deleted) | ends, the robot never moves: `Aborted { NotVerified { Witness { RolledBack } } }` |
 //! | tracking lost (every camera silent) | held: `CamerasLost`, resumes at an end of the path when the cameras are back |
 //! | one camera lost | reported (`CameraDegraded`), not held |
 //! | the cameras' clock jumps back | held: `CamerasLost` (frames too old to move the robot by) |
@@ -20,26 +23,21 @@
 //! | no machine for the next operator | the program stops for a person: exit status 1 after a normal end |
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-#[path = "../../robot/tests/common/mod.rs"]
-mod robot_fixture;
-
 use std::cell::Cell;
 use std::rc::Rc;
 use std::sync::OnceLock;
 
+use ergocell_approvals::fixture::{self, Fixture};
 use ergocell_cell::session::{
     AbortReason, CellLoop, CommandSent, Driver, DriverError, DriverStop, ExitStatus, HoldReason,
     Input, InputError, Interruption, Leg, Outcome, ProviderError, RobotCommand, RobotFailure,
     RobotUnready, SessionEnd, SessionEvent, SessionMachine, SessionState, Station, Step,
-    StopRequest, StopSignal, Timed, TrajectoryProvider,
+    StopRequest, StopSignal, Timed,
 };
 use ergocell_cell::CellSettings;
 use ergocell_perception::{CameraRig, View2};
-use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyFailure, VerifyInputs};
 use ergocell_robot::monitor::Deviation;
-use ergocell_robot::{
-    plan_and_validate, ApprovedTrajectory, PlanInputs, RobotError, TrajectoryClass, TrajectorySpec,
-};
+use ergocell_robot::{ApprovedTrajectory, RobotError, TrajectoryClass};
 use ergocell_sim::controller::{RobotFault, SimController, TwinRobot};
 use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
@@ -49,79 +47,59 @@ const FRAME: i64 = 100 * MS;
 const SAMPLE: i64 = 4 * MS;
 const CLASS: TrajectoryClass = TrajectoryClass::C2;
 
-/// The shipped c2 trajectory, planned, locked, approved by a test approver and verified, once.
-fn approved() -> &'static (ApprovedTrajectory, (f64, f64)) {
-    static A: OnceLock<(ApprovedTrajectory, (f64, f64))> = OnceLock::new();
+/// The shipped c2 trajectory as the in-memory cell approves it (`ergocell_approvals::fixture`).
+fn approved() -> &'static ApprovedTrajectory {
+    static A: OnceLock<ApprovedTrajectory> = OnceLock::new();
     A.get_or_init(|| {
-        let s = robot_fixture::shipped();
-        let text = robot_fixture::spec_text(CLASS);
-        let spec = TrajectorySpec::from_toml_str(&text).unwrap();
-        let hashes = robot_fixture::hashes(&s, &text);
-        let locked = plan_and_validate(&PlanInputs {
-            model: &s.model,
-            cell: &s.cell,
-            spec: &spec,
-            hashes: &hashes,
-        })
-        .unwrap()
-        .into_locked()
-        .unwrap();
-        let lock = LockFile::from_locked(&locked);
-        let t = robot_fixture::signers();
-        let mut approvals = ApprovalsFile::default();
-        approvals
-            .approve(
-                &lock,
-                robot_fixture::ALICE,
-                "2026-01-01T00:00:00Z",
-                &t.trusted,
-                &t.alice,
-            )
-            .unwrap();
-        let approved = lock::verify(&VerifyInputs {
-            class: CLASS,
-            lock_toml: &lock.to_toml().unwrap(),
-            current_inputs: &hashes,
-            model: &s.model,
-            approvals_toml: Some(&approvals.to_toml().unwrap()),
-            trusted: &t.trusted,
-        })
-        .unwrap();
-        (approved, spec.stature.served_m())
+        Fixture::approved(CLASS)
+            .unwrap()
+            .provider(fixture::a_day_later)
+            .verify(CLASS)
+            .unwrap()
     })
 }
 
-/// c2's approved trajectory, or (`verifies = false`) a lock whose approval is gone.
-struct Provider {
-    verifies: bool,
+/// What the approvals file of c2 holds when the session starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Approvals {
+    /// Alice's approval of the current lock.
+    Approved,
+    /// None: the lock was never approved.
+    Unapproved,
+    /// Alice's approval, then bob's withdrawal.
+    Withdrawn,
+    /// The withdrawal deleted after the cell's witness saw it (the file rolled back).
+    RolledBack,
 }
 
-impl TrajectoryProvider for Provider {
-    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
-        if self.verifies && class == CLASS {
-            return Ok(approved().0.clone());
+/// The cell's files in memory, with c2 locked and its approvals as `approvals`, and the provider
+/// `run` would use on them.
+fn provider(approvals: Approvals) -> ergocell_approvals::FileTrajectories {
+    let f = match approvals {
+        Approvals::Unapproved => {
+            let f = Fixture::new().unwrap();
+            f.lock(CLASS).unwrap();
+            f
         }
-        Err(ProviderError::NotVerified {
-            failure: VerifyFailure {
-                class,
-                problems: vec![RobotError::NotApproved {
-                    class: class.to_string(),
-                    lock_sha256: approved().0.lock().lock_sha256.clone(),
-                    detail: "the approval was withdrawn".to_owned(),
-                }],
-            },
-            witness: None,
-        })
+        _ => Fixture::approved(CLASS).unwrap(),
+    };
+    let p = f.provider(fixture::a_day_later);
+    if approvals != Approvals::Approved && approvals != Approvals::Unapproved {
+        p.verify(CLASS).unwrap();
+        let approved_only = f.approvals(CLASS).unwrap();
+        f.withdraw(CLASS, fixture::BOB, &f.bob, "2026-01-01T02:00:00Z")
+            .unwrap();
+        assert!(p.verify(CLASS).is_err(), "withdrawn");
+        if approvals == Approvals::RolledBack {
+            f.put_approvals(CLASS, &approved_only).unwrap();
+        }
     }
-
-    fn stature_bounds_m(&mut self, _: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
-        Ok(approved().1)
-    }
+    p
 }
 
 fn rig() -> CameraRig {
-    let text = robot_fixture::read("config/rig.toml");
-    ergocell_perception::rig_file::parse_rig(&text, "config/rig.toml")
+    let text = include_str!("../../config/rig.toml");
+    ergocell_perception::rig_file::parse_rig(text, "config/rig.toml")
         .unwrap()
         .0
 }
@@ -267,7 +245,7 @@ impl StopRequest for StopAt {
 /// One row: the driver run to the end of one session (at most 60 s), on a 1.75 m operator (class
 /// c2) with `fault` armed for the robot's first leg.
 struct Row {
-    verifies: bool,
+    approvals: Approvals,
     fault: Option<RobotFault>,
     cameras: Cameras,
     fail_at: Option<i64>,
@@ -307,7 +285,7 @@ impl Ran {
 impl Row {
     fn new() -> Self {
         Self {
-            verifies: true,
+            approvals: Approvals::Approved,
             fault: None,
             cameras: as_simulated(),
             fail_at: None,
@@ -324,7 +302,7 @@ impl Row {
     }
 
     fn run(self) -> Ran {
-        let (a, _) = approved();
+        let a = approved();
         let mut controller = SimController::new(
             a.joint_names().to_vec(),
             a.points()[0].positions_rad.clone(),
@@ -335,9 +313,7 @@ impl Row {
         let machine = SessionMachine::from_settings(
             rig(),
             &CellSettings::default(),
-            Box::new(Provider {
-                verifies: self.verifies,
-            }),
+            Box::new(provider(self.approvals)),
         )
         .unwrap();
         let robot = TwinRobot::new(controller, SAMPLE, 0.1);
@@ -494,32 +470,59 @@ fn a_driver_error_or_an_e_stop_holds_the_robot_until_the_driver_is_back() {
 }
 
 #[test]
-fn a_lock_that_does_not_verify_ends_the_session_and_the_robot_never_moves() {
-    let ran = Row {
-        verifies: false,
-        ..Row::new()
-    }
-    .run();
-    assert!(
-        matches!(
-            &ran.end,
-            Some(SessionEnd::Aborted {
-                reason: AbortReason::NotVerified {
+fn a_lock_unapproved_withdrawn_or_rolled_back_ends_the_session_and_the_robot_never_moves() {
+    for approvals in [
+        Approvals::Unapproved,
+        Approvals::Withdrawn,
+        Approvals::RolledBack,
+    ] {
+        let ran = Row {
+            approvals,
+            ..Row::new()
+        }
+        .run();
+        let Some(SessionEnd::Aborted {
+            reason:
+                AbortReason::NotVerified {
                     class: TrajectoryClass::C2,
-                    ..
-                }
-            })
-        ),
-        "{:?}",
-        ran.end
-    );
-    assert!(ran
-        .robot
-        .controller
-        .received
-        .iter()
-        .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })));
-    assert_eq!(ran.status(), ExitStatus::NeedsAPerson);
+                    error,
+                },
+        }) = &ran.end
+        else {
+            panic!("{approvals:?}: {:?}", ran.end);
+        };
+        match (approvals, error) {
+            // Never approved, or its approval withdrawn: no standing approval of this lock.
+            (
+                Approvals::Unapproved | Approvals::Withdrawn,
+                ProviderError::NotVerified {
+                    failure,
+                    witness: None,
+                },
+            ) => assert!(
+                matches!(
+                    failure.problems.as_slice(),
+                    [RobotError::NotApproved { .. }]
+                ),
+                "{approvals:?}: {failure}"
+            ),
+            // The withdrawal deleted: the chain is intact, the witness saw more.
+            (Approvals::RolledBack, ProviderError::Witness { cause, .. }) => assert!(
+                matches!(**cause, RobotError::RolledBack { .. }),
+                "{cause:?}"
+            ),
+            (approvals, error) => panic!("{approvals:?}: {error:?}"),
+        }
+        assert!(
+            ran.robot
+                .controller
+                .received
+                .iter()
+                .all(|(_, c)| matches!(c, RobotCommand::Hold { .. })),
+            "{approvals:?}: the robot was sent a motion"
+        );
+        assert_eq!(ran.status(), ExitStatus::NeedsAPerson, "{approvals:?}");
+    }
 }
 
 #[test]

@@ -388,7 +388,7 @@ fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
             .as_deref()
             .unwrap_or(Path::new(ergocell_robot::TrajectoryLayout::DEFAULT_DIR)),
     );
-    let read = FileTrajectories::with_shipped_defaults(
+    let read = ergocell::session::provider::with_shipped_defaults(
         args.cell.as_deref(),
         args.trajectories.as_deref(),
         trajectories.approvals_dir(),
@@ -487,8 +487,7 @@ fn handovers(
                 .map_err(|e| anyhow::anyhow!("lock of {class}: {e}"))?;
             let point =
                 ergocell_robot::handover_world(T_world_station, lock.summary.handover_station_m);
-            let geometry = provider
-                .robot_geometry(class)
+            let geometry = ergocell::session::provider::robot_geometry(provider, class)
                 .map_err(|e| anyhow::anyhow!(e))?;
             Ok(Handover {
                 class,
@@ -568,7 +567,7 @@ fn demo_provider(
     // A throwaway Ed25519 key derived from the demo's seed (same seed, same demo locks); the run
     // trusts it alone.
     let seed = ergocell_robot::signing::derived_seed("ergocell demo approval key v1", args.seed);
-    let provider = FileTrajectories::with_shipped_defaults(
+    let provider = ergocell::session::provider::with_shipped_defaults(
         args.cell.as_deref(),
         args.trajectories.as_deref(),
         approvals_dir,
@@ -596,15 +595,17 @@ fn demo_provider(
         args.seed,
         ergocell::session::provider::DEMO_PRINCIPAL
     );
-    for (class, demo_sha, reviewed_sha) in provider.demo_locks() {
-        println!("  {class}: demo lock {demo_sha} = the {lock_kind} lock {reviewed_sha}, same samples, re-locked under the demo key");
+    for lock in provider.demo_locks() {
+        println!(
+            "  {}: demo lock {} = the {lock_kind} lock {}, same samples, re-locked under the demo key",
+            lock.class, lock.lock_sha256, lock.reviewed_sha256
+        );
     }
     println!("  (a simulator-only sign-off; a real cell trusts its engineers' keys in config/approvers/ and needs `ergocell trajectories approve`)");
     let stamp = ergocell_robot::signing::rfc3339_utc(start.div_euclid(1_000_000_000))
         .map_err(|e| anyhow::anyhow!(e))?;
     for class in TrajectoryClass::ALL {
-        provider
-            .approve_for_demo(class, &stamp)
+        ergocell::session::provider::approve_for_demo(&provider, class, &stamp)
             .map_err(|e| anyhow::anyhow!("{class}: {e}"))?;
     }
     Ok(provider)

@@ -163,7 +163,7 @@ impl Setup {
     }
 
     fn provider(&self) -> FileTrajectories {
-        FileTrajectories::new(&self.config, &self.trajectories, &self.approvals)
+        ergocell::session::provider::on_disk(&self.config, &self.trajectories, &self.approvals)
     }
 
     fn new_machine(&self) -> anyhow::Result<SessionMachine> {
@@ -806,11 +806,13 @@ impl Markers {
         }
         recording.with(|rec| rec.write(topics::JOINT_STATES, now, js));
         if self.geometry.as_ref().map(|(c, _)| *c) != class {
-            self.geometry = class.and_then(|c| match setup.provider().robot_geometry(c) {
-                Ok(g) => Some((c, g)),
-                Err(e) => {
-                    tracing::warn!(error = %e, "no robot markers in the recording");
-                    None
+            self.geometry = class.and_then(|c| {
+                match ergocell::session::provider::robot_geometry(&setup.provider(), c) {
+                    Ok(g) => Some((c, g)),
+                    Err(e) => {
+                        tracing::warn!(error = %e, "no robot markers in the recording");
+                        None
+                    }
                 }
             });
         }

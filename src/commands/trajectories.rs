@@ -560,7 +560,7 @@ fn load_approvals(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<Appro
 }
 
 /// The witness's notes on standard error.
-fn print_notes(notes: Vec<String>) {
+fn print_notes(notes: Vec<ergocell::witness::WitnessNote>) {
     for note in notes {
         eprintln!("note: {note}");
     }

@@ -173,7 +173,7 @@ pub fn demo_provider(
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("provider-{name}-{n}"));
     let _ = std::fs::remove_dir_all(&dir);
-    let p = ergocell::session::provider::FileTrajectories::new(
+    let p = ergocell::session::provider::on_disk(
         &root.join("config/cell.toml"),
         &root.join("trajectories"),
         &dir,
@@ -181,7 +181,7 @@ pub fn demo_provider(
     .with_demo_key(&[7; 32])
     .unwrap();
     if let Some(class) = approve {
-        p.approve_for_demo(class, "2026-01-01T00:00:00Z").unwrap();
+        ergocell::session::provider::approve_for_demo(&p, class, "2026-01-01T00:00:00Z").unwrap();
     }
     p
 }
@@ -347,7 +347,7 @@ impl AnchoredCell {
 
     /// The provider `ergocell run` uses, on this cell with its anchor.
     pub fn provider(&self) -> ergocell::session::provider::FileTrajectories {
-        ergocell::session::provider::FileTrajectories::new(
+        ergocell::session::provider::on_disk(
             &self.dir.join("config/cell.toml"),
             &self.dir.join("trajectories"),
             &self.dir.join("trajectories/approvals"),

@@ -316,6 +316,21 @@ pub trait TrajectoryProvider {
     }
 }
 
+/// The cell's own files, through the approvals crate's port ([`ergocell_approvals::provider`]).
+impl TrajectoryProvider for ergocell_approvals::FileTrajectories {
+    fn verify(&mut self, class: TrajectoryClass) -> Result<ApprovedTrajectory, ProviderError> {
+        ergocell_approvals::FileTrajectories::verify(self, class)
+    }
+
+    fn stature_bounds_m(&mut self, class: TrajectoryClass) -> Result<(f64, f64), ProviderError> {
+        ergocell_approvals::FileTrajectories::stature_bounds_m(self, class)
+    }
+
+    fn handover_rula(&mut self) -> Result<Option<HandoverRula>, ProviderError> {
+        ergocell_approvals::FileTrajectories::handover_rula(self)
+    }
+}
+
 /// The trajectory class a height class selects.
 pub fn trajectory_class(class: HeightClass) -> TrajectoryClass {
     match class {
