@@ -739,7 +739,7 @@ impl ergocell::session::CellOutputs for FailingOutputs {
         if self.steps == self.fail_at {
             return Err(ergocell::session::OutputError {
                 output: "recording",
-                why: "No space left on device (os error 28)".to_owned(),
+                cause: std::sync::Arc::new(std::io::Error::from_raw_os_error(28)),
             });
         }
         Ok(())
@@ -798,9 +798,14 @@ fn a_failed_output_or_the_time_limit_ends_the_session_held() {
             let Some(Interruption::OutputFailed { error }) = ending.interruption() else {
                 panic!("{ending:?}");
             };
+            assert_eq!(error.output, "recording");
             assert_eq!(
-                (error.output, error.why.as_str()),
-                ("recording", "No space left on device (os error 28)")
+                error
+                    .cause
+                    .downcast_ref::<std::io::Error>()
+                    .and_then(std::io::Error::raw_os_error),
+                Some(28),
+                "the disk full"
             );
             assert_eq!(ending.stamp_nanos, (n as i64 - 1) * FRAME, "at once");
             assert_eq!(

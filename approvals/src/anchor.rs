@@ -41,6 +41,10 @@ pub enum NotRootAlone {
     /// Writable by group or others (and not a sticky folder).
     #[error("is writable by group or others (mode {mode:o})")]
     Writable { mode: u32 },
+    /// The folders above it were not all reported (a chain that does not climb to `/` one parent
+    /// at a time): who could replace it is unknown.
+    #[error("has folders above it whose owners are unknown")]
+    UnknownFolders,
 }
 
 /// Why the anchor cannot be used.
@@ -56,19 +60,19 @@ pub enum AnchorError {
         path: PathBuf,
         problem: NotRootAlone,
     },
-    /// A file could not be read.
-    #[error("cannot read {}: {cause}", path.display())]
+    /// A file could not be read. The cause names the path.
+    #[error("{cause}")]
     Read {
         path: PathBuf,
         #[source]
         cause: Cause,
     },
-    /// Larger than an anchor file can be.
-    #[error("{} is larger than {limit} bytes", path.display())]
-    TooLarge { path: PathBuf, limit: u64 },
     /// Not UTF-8 text.
     #[error("{} is not UTF-8 text", path.display())]
     NotText { path: PathBuf },
+    /// Larger than an anchor file can be ([`MAX_BYTES`]).
+    #[error("{} is larger than {limit} bytes", path.display())]
+    TooLarge { path: PathBuf, limit: u64 },
     /// Not the authority's keys.
     #[error("{}: {cause}", path.display())]
     Keys {
@@ -78,17 +82,33 @@ pub enum AnchorError {
     },
 }
 
-/// The anchor's rule over the ownership of a file and the folders above it (the file first): each
-/// owned by root, none writable by group or others except a sticky folder.
+/// The anchor's rule over the ownership of a file and the folders above it (the file first, then
+/// each parent, `/` last): a regular file, each owned by root, none writable by group or others
+/// except a sticky folder.
 pub fn check_root_alone(chain: &[Ownership]) -> Result<(), AnchorError> {
     let unsafe_ = |o: &Ownership, problem| AnchorError::Unsafe {
         path: o.path.clone(),
         problem,
     };
+    let Some(file) = chain.first() else {
+        return Err(AnchorError::Unsafe {
+            path: PathBuf::new(),
+            problem: NotRootAlone::UnknownFolders,
+        });
+    };
+    if !file.regular_file {
+        return Err(unsafe_(file, NotRootAlone::NotRegularFile));
+    }
+    let climbs = chain
+        .windows(2)
+        .all(|w| w[0].path.parent() == Some(w[1].path.as_path()))
+        && chain
+            .last()
+            .is_some_and(|o| o.path.parent().is_none() && o.path.has_root());
+    if !climbs {
+        return Err(unsafe_(file, NotRootAlone::UnknownFolders));
+    }
     for (i, o) in chain.iter().enumerate() {
-        if i == 0 && !o.regular_file {
-            return Err(unsafe_(o, NotRootAlone::NotRegularFile));
-        }
         if o.uid != 0 {
             return Err(unsafe_(o, NotRootAlone::Owner { uid: o.uid }));
         }
@@ -108,17 +128,15 @@ pub fn check_root_alone(chain: &[Ownership]) -> Result<(), AnchorError> {
 
 /// An anchor file's text, when it and every folder above it are root's alone.
 pub fn read_root_owned(files: &dyn CellFiles, path: &Path) -> Result<String, AnchorError> {
-    let AnchorFile { bytes, chain } = files.read_anchor(path).map_err(|e| match e {
-        FileError::Missing { path } => AnchorError::Missing(path),
-        FileError::Unreadable { path, cause } => AnchorError::Read { path, cause },
-    })?;
-    if chain.is_empty() {
-        // The port must say who owns the file: a file of unknown owner is not root's alone.
-        return Err(AnchorError::Unsafe {
-            path: path.to_owned(),
-            problem: NotRootAlone::NotRegularFile,
-        });
-    }
+    let allowed = |chain: &[Ownership]| check_root_alone(chain).is_ok();
+    let AnchorFile { bytes, chain } =
+        files
+            .read_anchor(path, MAX_BYTES, &allowed)
+            .map_err(|e| match e {
+                FileError::Missing { path } => AnchorError::Missing(path),
+                FileError::Unreadable { path, cause } => AnchorError::Read { path, cause },
+                FileError::TooLarge { path, limit } => AnchorError::TooLarge { path, limit },
+            })?;
     check_root_alone(&chain)?;
     if bytes.len() as u64 > MAX_BYTES {
         return Err(AnchorError::TooLarge {
@@ -147,9 +165,15 @@ pub fn load_authority(files: &dyn CellFiles, dir: &Path) -> Result<Authority, An
     })
 }
 
-/// The authority's signature beside the approvers' files in `cell_dir`, if there is one.
+/// The authority's signature beside the approvers' files in `cell_dir`, if there is one (a few
+/// lines: at most [`MAX_BYTES`]).
 pub fn read_signature(files: &dyn CellFiles, cell_dir: &Path) -> Result<Option<String>, FileError> {
-    match files.read(FileKind::Cell, &cell_dir.join(APPROVERS_SIGNATURE)) {
+    let path = cell_dir.join(APPROVERS_SIGNATURE);
+    match files.read(FileKind::Cell, &path) {
+        Ok(text) if text.len() as u64 > MAX_BYTES => Err(FileError::TooLarge {
+            path,
+            limit: MAX_BYTES,
+        }),
         Ok(text) => Ok(Some(text)),
         Err(FileError::Missing { .. }) => Ok(None),
         Err(e) => Err(e),
@@ -270,6 +294,24 @@ mod tests {
         let mut sticky_file = key.clone();
         sticky_file.mode = 0o1666;
         assert!(check_root_alone(&chain(sticky_file)).is_err());
+    }
+
+    #[test]
+    fn a_chain_that_skips_a_folder_or_stops_short_of_the_root_is_refused() {
+        let key = owned("/etc/ergocell/approvers-authority.pub", 0, 0o644, true);
+        let mut skips = chain(key.clone());
+        skips.remove(1);
+        let mut short = chain(key);
+        short.pop();
+        for c in [skips, short] {
+            assert!(matches!(
+                check_root_alone(&c),
+                Err(AnchorError::Unsafe {
+                    problem: NotRootAlone::UnknownFolders,
+                    ..
+                })
+            ));
+        }
     }
 
     #[test]

@@ -30,20 +30,26 @@ pub enum FileError {
     /// There is no such file.
     #[error("{} does not exist", path.display())]
     Missing { path: PathBuf },
-    /// The file is there and cannot be read (not a file, too large, not text, an I/O error).
+    /// The file is there and cannot be read (not a file, too large, not text, an I/O error). The
+    /// cause names the path.
     #[error("{cause}")]
     Unreadable {
         path: PathBuf,
         #[source]
         cause: Cause,
     },
+    /// Larger than a file of its kind can be.
+    #[error("{} is larger than {limit} bytes", path.display())]
+    TooLarge { path: PathBuf, limit: u64 },
 }
 
 impl FileError {
     /// The file's path.
     pub fn path(&self) -> &Path {
         match self {
-            Self::Missing { path } | Self::Unreadable { path, .. } => path,
+            Self::Missing { path }
+            | Self::Unreadable { path, .. }
+            | Self::TooLarge { path, .. } => path,
         }
     }
 }
@@ -60,10 +66,11 @@ pub struct Ownership {
     pub regular_file: bool,
 }
 
-/// A trust-anchor file as read from **one** open file: its bytes (at most
-/// [`crate::anchor::MAX_BYTES`] + 1, none when it is not a regular file) and the ownership of it
-/// and of every folder above the path it was opened at, the file first. Checking one path and
-/// reading it again would let a symbolic link flip between the check and the read.
+/// A trust-anchor file as read from **one** open file: the ownership of it and of every folder above
+/// the path it was opened at, the file first and `/` last, and its bytes (at most `max_bytes` + 1),
+/// read only when the chain passed the caller's rule. Checking one path and reading it again would
+/// let a symbolic link flip between the check and the read; reading before the check would let a
+/// file nobody vouches for (on a file system that can block) hang the cell.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct AnchorFile {
     pub bytes: Vec<u8>,
@@ -75,8 +82,14 @@ pub trait CellFiles: std::fmt::Debug + Send + Sync {
     /// The text of a file of the cell.
     fn read(&self, kind: FileKind, path: &Path) -> Result<String, FileError>;
 
-    /// A trust-anchor file, with its ownership chain.
-    fn read_anchor(&self, path: &Path) -> Result<AnchorFile, FileError>;
+    /// A trust-anchor file, with its ownership chain; its bytes only if `allowed(chain)`. A path
+    /// that is not a regular file is not opened: its chain is its own entry alone.
+    fn read_anchor(
+        &self,
+        path: &Path,
+        max_bytes: u64,
+        allowed: &dyn Fn(&[Ownership]) -> bool,
+    ) -> Result<AnchorFile, FileError>;
 
     /// The witness's bytes; empty when there is no witness yet.
     fn read_witness(&self, path: &Path) -> Result<Vec<u8>, FileError>;
@@ -102,7 +115,14 @@ pub trait CellFiles: std::fmt::Debug + Send + Sync {
 pub struct MemoryFiles {
     files: Arc<Mutex<BTreeMap<PathBuf, Vec<u8>>>>,
     anchors: Arc<Mutex<BTreeMap<PathBuf, AnchorFile>>>,
+    /// The witness can be neither read nor appended to ([`MemoryFiles::fail_witness`]).
+    witness_fails: Arc<Mutex<bool>>,
 }
+
+/// A failure a test injected.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot read {}: injected I/O error", .0.display())]
+struct Injected(PathBuf);
 
 /// A memory file that is not text.
 #[derive(Debug, thiserror::Error)]
@@ -128,6 +148,14 @@ impl MemoryFiles {
     /// A file's bytes, if it is there.
     pub fn get(&self, path: &Path) -> Option<Vec<u8>> {
         self.lock_files().get(path).cloned()
+    }
+
+    /// From now on the witness can be neither read nor appended to (`true`), or can again.
+    pub fn fail_witness(&self, fails: bool) {
+        *self
+            .witness_fails
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner) = fails;
     }
 
     /// Puts a trust-anchor file with its ownership chain.
@@ -156,22 +184,55 @@ impl CellFiles for MemoryFiles {
         })
     }
 
-    fn read_anchor(&self, path: &Path) -> Result<AnchorFile, FileError> {
-        self.anchors
+    fn read_anchor(
+        &self,
+        path: &Path,
+        max_bytes: u64,
+        allowed: &dyn Fn(&[Ownership]) -> bool,
+    ) -> Result<AnchorFile, FileError> {
+        let mut file = self
+            .anchors
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner)
             .get(path)
             .cloned()
             .ok_or_else(|| FileError::Missing {
                 path: path.to_owned(),
-            })
+            })?;
+        if allowed(&file.chain) {
+            file.bytes
+                .truncate(usize::try_from(max_bytes.saturating_add(1)).unwrap_or(usize::MAX));
+        } else {
+            file.bytes.clear();
+        }
+        Ok(file)
     }
 
     fn read_witness(&self, path: &Path) -> Result<Vec<u8>, FileError> {
+        if *self
+            .witness_fails
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+        {
+            return Err(FileError::Unreadable {
+                path: path.to_owned(),
+                cause: Arc::new(Injected(path.to_owned())),
+            });
+        }
         Ok(self.get(path).unwrap_or_default())
     }
 
     fn append_witness(&self, path: &Path, line: &str) -> Result<(), FileError> {
+        if *self
+            .witness_fails
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+        {
+            return Err(FileError::Unreadable {
+                path: path.to_owned(),
+                cause: Arc::new(Injected(path.to_owned())),
+            });
+        }
         self.lock_files()
             .entry(path.to_owned())
             .or_default()

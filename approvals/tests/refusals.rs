@@ -1,6 +1,7 @@
 //! Every refusal of docs/safety.md ("What `verify` and `run` refuse", the trust anchor, the
 //! witness), staged on the in-memory cell: no disk, no root, no `ssh-keygen`. Each asserts the
-//! typed reason the provider gives.
+//! typed reason the provider gives. (How the binary reads the anchor from the disk, with root's
+//! ownership and a racing symlink, is tested beside it in `src/trust_anchor.rs`.)
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use ergocell_approvals::anchor::{NotRootAlone, TrustListError, AUTHORITY_FILE};
@@ -142,12 +143,12 @@ fn a_removed_entry_breaks_the_chain_and_is_refused() {
         .unwrap();
     let mut file = f.approvals(C2).unwrap();
     file.approval.remove(0);
+    assert!(file.check_chain().is_err(), "the chain is broken");
     f.put_approvals(C2, &file).unwrap();
     let p = problems(f.provider(now).verify(C2));
-    assert!(
-        p.iter().any(|e| matches!(e, RobotError::Config { .. })),
-        "the broken chain: {p:?}"
-    );
+    // The chain's own refusal (what `check_chain` says), and nothing approved by it.
+    let chain = file.check_chain().unwrap_err();
+    assert!(p.contains(&chain), "the broken chain: {p:?}");
 }
 
 #[test]
@@ -155,9 +156,17 @@ fn a_withdrawn_approval_is_refused() {
     let f = Fixture::approved(C2).unwrap();
     f.withdraw(C2, BOB, &f.bob.clone(), "2026-01-01T02:00:00Z")
         .unwrap();
+    let lock = f.current_lock(C2).unwrap();
+    // The chain's standing: this lock's approval, withdrawn by entry 1.
+    let standing = f.approvals(C2).unwrap().standing(C2);
+    assert_eq!(
+        standing.lock_sha256.as_deref(),
+        Some(lock.lock_sha256.as_str())
+    );
+    assert_eq!(standing.withdrawn, Some(1));
     let p = problems(f.provider(now).verify(C2));
     assert!(
-        matches!(p.as_slice(), [RobotError::NotApproved { .. }]),
+        matches!(p.as_slice(), [RobotError::NotApproved { lock_sha256, .. }] if *lock_sha256 == lock.lock_sha256),
         "{p:?}"
     );
 }
@@ -358,12 +367,220 @@ fn a_lock_older_than_the_chains_last_approval_is_refused() {
     f.approve(C2, BOB, &f.bob.clone(), "2026-01-01T03:00:00Z")
         .unwrap();
     assert!(f.provider(now).verify(C2).is_ok());
+    let new_hash = f.current_lock(C2).unwrap().lock_sha256;
     // The old lock and its inputs restored: approved once, superseded since.
     f.files.put(f.layout.spec(C2), old_spec);
     f.files.put(f.layout.lock(C2), old_lock);
+    let old_hash = f.current_lock(C2).unwrap().lock_sha256;
+    assert_ne!(old_hash, new_hash);
+    // The chain's standing approval is of the newer lock; the older one is refused by its hash.
+    let standing = f.approvals(C2).unwrap().standing(C2);
+    assert_eq!(standing.lock_sha256.as_deref(), Some(new_hash.as_str()));
     let p = problems(f.provider(now).verify(C2));
     assert!(
-        matches!(p.as_slice(), [RobotError::NotApproved { .. }]),
+        matches!(p.as_slice(), [RobotError::NotApproved { lock_sha256, .. }] if *lock_sha256 == old_hash),
         "{p:?}"
     );
+}
+
+/// Alice's approval of the current lock of c2 with `approved_by` and `at_utc` as given, signed over
+/// exactly its message in `namespace`, written as the file's one entry: what ergocell's own writer
+/// would refuse to make.
+fn signed_as_given(f: &Fixture, approved_by: &str, at_utc: &str, namespace: &str) {
+    use ergocell_robot::lock::{Approval, ApprovalsFile};
+    use ergocell_robot::signing::{Action, ApprovalClaim};
+    let lock = f.lock(C2).unwrap();
+    let previous = "0".repeat(64);
+    let claim = ApprovalClaim {
+        action: Action::Approve,
+        class: C2.as_str(),
+        lock_sha256: &lock.lock_sha256,
+        approved_by,
+        approved_at_utc: at_utc,
+        previous_sha256: &previous,
+    };
+    let message = signing::approval_message(&claim);
+    let signature = f
+        .alice
+        .sign(namespace, ssh_key::HashAlg::Sha512, message.as_bytes())
+        .unwrap()
+        .to_pem(ssh_key::LineEnding::LF)
+        .unwrap();
+    let mut file = ApprovalsFile::default();
+    file.approval.push(Approval {
+        class: C2,
+        action: Action::Approve,
+        lock_sha256: lock.lock_sha256.clone(),
+        approved_by: approved_by.to_owned(),
+        approved_at_utc: at_utc.to_owned(),
+        previous_sha256: previous,
+        signature,
+    });
+    f.put_approvals(C2, &file).unwrap();
+}
+
+#[test]
+fn a_signature_made_in_another_namespace_is_refused() {
+    let f = Fixture::new().unwrap();
+    // A git commit's signature over the same bytes.
+    signed_as_given(&f, ALICE, APPROVED_AT, "git");
+    let p = problems(f.provider(now).verify(C2));
+    assert!(
+        matches!(
+            approval_refused(&p).as_slice(),
+            [ApprovalError::WrongNamespace { namespace }] if namespace == "git"
+        ),
+        "{p:?}"
+    );
+}
+
+#[test]
+fn a_time_that_is_not_rfc3339_utc_or_a_name_with_control_characters_is_refused() {
+    let f = Fixture::new().unwrap();
+    signed_as_given(
+        &f,
+        ALICE,
+        "2026-01-01 00:00:00",
+        signing::APPROVAL_NAMESPACE,
+    );
+    let p = problems(f.provider(now).verify(C2));
+    assert!(
+        matches!(
+            approval_refused(&p).as_slice(),
+            [ApprovalError::BadTime { text, .. }] if text == "2026-01-01 00:00:00"
+        ),
+        "{p:?}"
+    );
+    let f = Fixture::new().unwrap();
+    signed_as_given(
+        &f,
+        "alice@plant.example\u{1b}[2K",
+        APPROVED_AT,
+        signing::APPROVAL_NAMESPACE,
+    );
+    let p = problems(f.provider(now).verify(C2));
+    assert!(
+        matches!(
+            approval_refused(&p).as_slice(),
+            [ApprovalError::BadApprover { .. }]
+        ),
+        "{p:?}"
+    );
+}
+
+#[test]
+fn an_anchor_in_a_folder_others_can_write_or_not_a_file_trusts_no_one() {
+    for (folder_mode, regular_file) in [(0o777, true), (0o755, false)] {
+        let f = Fixture::approved(C2).unwrap();
+        let path = Path::new(fixture::ANCHOR_DIR).join(AUTHORITY_FILE);
+        let chain: Vec<Ownership> = path
+            .ancestors()
+            .enumerate()
+            .map(|(i, p)| Ownership {
+                path: p.to_owned(),
+                uid: 0,
+                mode: match i {
+                    0 => 0o644,
+                    1 => folder_mode,
+                    _ => 0o755,
+                },
+                regular_file: i == 0 && regular_file,
+            })
+            .collect();
+        f.files.put_anchor(
+            &path,
+            AnchorFile {
+                bytes: signing::public_key_openssh(&f.authority)
+                    .unwrap()
+                    .into_bytes(),
+                chain,
+            },
+        );
+        let expected = if regular_file {
+            NotRootAlone::Writable { mode: 0o777 }
+        } else {
+            NotRootAlone::NotRegularFile
+        };
+        assert!(matches!(
+            ergocell_approvals::anchor::read_root_owned(&f.files, &path),
+            Err(ergocell_approvals::anchor::AnchorError::Unsafe { problem, .. }) if problem == expected
+        ));
+        assert!(
+            matches!(
+                f.provider(now).verify(C2),
+                Err(ProviderError::TrustList { cause })
+                    if matches!(*cause, TrustListError::Authority(AuthorityError::NoAuthority { .. }))
+            ),
+            "{expected:?}"
+        );
+    }
+}
+
+#[test]
+fn a_witness_that_cannot_be_read_refuses_and_one_that_cannot_be_written_is_said() {
+    let f = Fixture::approved(C2).unwrap();
+    f.files.fail_witness(true);
+    match f.provider(now).verify(C2) {
+        Err(ProviderError::Witness { cause, .. }) => assert!(
+            matches!(*cause, RobotError::WitnessUnreadable { line: 0, .. }),
+            "{cause:?}"
+        ),
+        other => panic!("{other:?}"),
+    }
+    // Readable but not writable: the check holds on what was read; the note says it.
+    f.files.fail_witness(false);
+    let notes = ergocell_approvals::witness_store::observe(
+        &FailingAppend(f.files.clone()),
+        Path::new(fixture::WITNESS_PATH),
+        &f.layout.approvals(C2),
+        C2,
+        &f.approvals(C2).unwrap(),
+        &f.trusted,
+        now(),
+    )
+    .unwrap();
+    assert!(
+        matches!(
+            notes.as_slice(),
+            [ergocell_approvals::witness_store::WitnessNote::NotRecorded { .. }]
+        ),
+        "{notes:?}"
+    );
+}
+
+/// Memory files whose witness can be read but never appended to.
+#[derive(Debug)]
+struct FailingAppend(ergocell_approvals::MemoryFiles);
+
+impl ergocell_approvals::CellFiles for FailingAppend {
+    fn read(
+        &self,
+        kind: ergocell_approvals::FileKind,
+        path: &Path,
+    ) -> Result<String, ergocell_approvals::FileError> {
+        self.0.read(kind, path)
+    }
+    fn read_anchor(
+        &self,
+        path: &Path,
+        max_bytes: u64,
+        allowed: &dyn Fn(&[Ownership]) -> bool,
+    ) -> Result<AnchorFile, ergocell_approvals::FileError> {
+        self.0.read_anchor(path, max_bytes, allowed)
+    }
+    fn read_witness(&self, path: &Path) -> Result<Vec<u8>, ergocell_approvals::FileError> {
+        self.0.read_witness(path)
+    }
+    fn append_witness(&self, path: &Path, _: &str) -> Result<(), ergocell_approvals::FileError> {
+        Err(ergocell_approvals::FileError::TooLarge {
+            path: path.to_owned(),
+            limit: 0,
+        })
+    }
+    fn absolute(&self, path: &Path) -> std::path::PathBuf {
+        self.0.absolute(path)
+    }
+    fn resolved(&self, path: &Path) -> Option<std::path::PathBuf> {
+        self.0.resolved(path)
+    }
 }

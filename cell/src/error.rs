@@ -64,3 +64,26 @@ pub enum BackendError {
 pub type Cause = std::sync::Arc<dyn std::error::Error + Send + Sync>;
 
 pub use ergocell_approvals::ProviderError;
+
+/// An error and its sources, joined as one line ("a: b: c"), a source already said by the one
+/// above it not repeated.
+pub fn chain(error: &(dyn std::error::Error + 'static)) -> String {
+    let mut text = error.to_string();
+    let mut source = error.source();
+    while let Some(s) = source {
+        let said = s.to_string();
+        if !text.contains(&said) {
+            text = format!("{text}: {said}");
+        }
+        source = s.source();
+    }
+    text
+}
+
+/// Serialises a [`Cause`] as its [`chain`] (the outcome file, the recording's end).
+pub(crate) fn serialize_cause<S: serde::Serializer>(
+    cause: &Cause,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    s.serialize_str(&chain(cause.as_ref()))
+}

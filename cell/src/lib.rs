@@ -32,7 +32,7 @@
 //! simulator; `.ci/deps` checks it.
 
 pub mod config;
-mod error;
+pub mod error;
 pub mod pipeline;
 pub mod session;
 

@@ -256,7 +256,7 @@ struct Row {
 
 /// How a row went: the driver's outcome (or its error), the timeline and the robot.
 struct Ran {
-    outcome: Result<Outcome, DriverError<ScriptFailed>>,
+    outcome: Result<Outcome, DriverError>,
     timeline: Timeline,
     robot: TwinRobot,
     end: Option<SessionEnd>,
@@ -644,7 +644,13 @@ fn an_input_that_fails_ends_the_session_held_and_returns_its_error() {
     }
     .run();
     let error = ran.outcome.as_ref().expect_err("the station failed");
-    assert_eq!(error.error.at_nanos, 12_000 * MS);
+    assert_eq!(
+        error
+            .error
+            .downcast_ref::<ScriptFailed>()
+            .map(|e| e.at_nanos),
+        Some(12_000 * MS)
+    );
     // the outcome as far as it went: ended held, at the station's time, the hold the last command
     let outcome = error.outcome.as_ref().expect("the session had started");
     assert_eq!(outcome.status, ExitStatus::NeedsAPerson);

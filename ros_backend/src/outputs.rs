@@ -11,13 +11,13 @@ use crate::messages::{self, Outgoing};
 use crate::recording::{self, topics, Recording};
 use crate::robot::EventQueue;
 
-fn published<M: serde::Serialize + std::fmt::Debug>(
+fn published<M: serde::Serialize + std::fmt::Debug + Send + Sync + 'static>(
     p: &Publisher<M>,
     message: M,
 ) -> Result<(), OutputError> {
     p.publish(message).map_err(|e| OutputError {
         output: "ROS 2 publisher",
-        why: format!("{e:?}"),
+        cause: std::sync::Arc::new(e),
     })
 }
 

@@ -321,7 +321,7 @@ pub const MAX_RECORD_BYTES: usize = 256 << 20;
 /// unrecorded.
 pub struct Recording {
     recorder: Option<McapRecorder>,
-    failure: Option<String>,
+    failure: Option<ergocell_cell::session::Cause>,
     reported: bool,
 }
 
@@ -348,17 +348,8 @@ impl Recording {
         if let Some(rec) = self.recorder.as_mut() {
             if let Err(e) = write(rec) {
                 // the whole chain: "MCAP: I/O error …: No space left on device (os error 28)"
-                let mut why = e.to_string();
-                let mut source = std::error::Error::source(&e);
-                while let Some(s) = source {
-                    let text = s.to_string();
-                    if !why.contains(&text) {
-                        why = format!("{why}: {text}");
-                    }
-                    source = s.source();
-                }
-                tracing::error!(error = %why, "the recording cannot be written");
-                self.failure = Some(why);
+                tracing::error!(error = %ergocell_cell::error::chain(&e), "the recording cannot be written");
+                self.failure = Some(std::sync::Arc::new(e));
             }
         }
     }
@@ -368,11 +359,11 @@ impl Recording {
         if self.reported {
             return None;
         }
-        let why = self.failure.clone()?;
+        let cause = self.failure.clone()?;
         self.reported = true;
         Some(ergocell_cell::session::OutputError {
             output: "recording",
-            why,
+            cause,
         })
     }
 

@@ -53,7 +53,7 @@ pub fn write(
 /// failed ended the session held; its outcome so far is written all the same and its error
 /// returned.
 pub fn written(
-    result: Result<Outcome, DriverError<anyhow::Error>>,
+    result: Result<Outcome, DriverError>,
     path: Option<&Path>,
     force: bool,
     summary: &SessionSummary,
@@ -73,8 +73,25 @@ pub fn written(
             if let Some(Err(w)) = e.outcome.as_ref().map(write_to) {
                 eprintln!("error: the outcome was not written: {w:#}");
             }
-            Err(e.error)
+            Err(anyhow::Error::new(StationFailed(e.error)))
         }
+    }
+}
+
+/// The station's error as the driver returns it (shared with the session's end), for `anyhow`:
+/// its message and its sources.
+#[derive(Debug)]
+struct StationFailed(ergocell::session::Cause);
+
+impl std::fmt::Display for StationFailed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl std::error::Error for StationFailed {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        self.0.source()
     }
 }
 

@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use ergocell_approvals::files::{AnchorFile, CellFiles, FileError, FileKind};
+use ergocell_approvals::files::{AnchorFile, CellFiles, FileError, FileKind, Ownership};
 pub use ergocell_approvals::provider::{
     check_approval_times, DemoLock, FileTrajectories, DEMO_PRINCIPAL, HANDOVER_RULA_FILE,
 };
@@ -71,8 +71,13 @@ impl CellFiles for OsFiles {
         }
     }
 
-    fn read_anchor(&self, path: &Path) -> Result<AnchorFile, FileError> {
-        crate::trust_anchor::read_anchor_file(path)
+    fn read_anchor(
+        &self,
+        path: &Path,
+        max_bytes: u64,
+        allowed: &dyn Fn(&[Ownership]) -> bool,
+    ) -> Result<AnchorFile, FileError> {
+        crate::trust_anchor::read_anchor_file(path, max_bytes, allowed)
     }
 
     fn read_witness(&self, path: &Path) -> Result<Vec<u8>, FileError> {

@@ -57,12 +57,14 @@ impl CellOutputs for () {
     }
 }
 
-/// An output that cannot go on: its name ("recording", "ROS 2 publisher") and why.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error, serde::Serialize)]
-#[error("{output} failed: {why}")]
+/// An output that cannot go on: its name ("recording", "ROS 2 publisher") and its error.
+#[derive(Debug, Clone, thiserror::Error, serde::Serialize)]
+#[error("{output} failed: {}", crate::error::chain(cause.as_ref()))]
 pub struct OutputError {
     pub output: &'static str,
-    pub why: String,
+    #[source]
+    #[serde(serialize_with = "crate::error::serialize_cause")]
+    pub cause: crate::error::Cause,
 }
 
 /// How and when the session ended: the machine's own end, or an [`Interruption`] of the loop's

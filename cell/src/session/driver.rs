@@ -26,6 +26,7 @@
 //! driven by any executor's `block_on`.
 
 use std::future::Future;
+use std::sync::Arc;
 
 use ergocell_perception::View2;
 
@@ -33,6 +34,7 @@ use super::cell_loop::{AfterSession, CellLoop, CellOutputs, Ending, ExitStatus, 
 use super::end::{HoldReason, Interruption, StopSignal};
 use super::robot_side::{ReportEffect, RobotReport};
 use super::{Leg, RobotCommand, RobotSink, SessionEvent, SessionMachine};
+use crate::error::Cause;
 
 /// What the station hands the driver next.
 #[derive(Debug, Clone)]
@@ -60,12 +62,14 @@ impl Timed {
 }
 
 /// A station that could not give its input (a simulator error, a lost network node): its name and
-/// why. The driver ends the session held for it.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error, serde::Serialize)]
-#[error("{input} failed: {why}")]
+/// its error. The driver ends the session held for it.
+#[derive(Debug, Clone, thiserror::Error, serde::Serialize)]
+#[error("{input} failed: {}", crate::error::chain(cause.as_ref()))]
 pub struct InputError {
     pub input: &'static str,
-    pub why: String,
+    #[source]
+    #[serde(serialize_with = "crate::error::serialize_cause")]
+    pub cause: Cause,
 }
 
 /// Whether a stop was asked for (a signal handler's flag, a test's).
@@ -86,8 +90,9 @@ impl StopRequest for () {
 /// so that a station can read the robot port (the twin's controller advances there) and the
 /// outputs.
 pub trait Station<R, O> {
-    /// The station's error (the binary's: any displayable error).
-    type Error: std::fmt::Display + std::fmt::Debug;
+    /// The station's error (the binary's `anyhow`, a test's own): kept in the session's end and
+    /// returned by the driver as a shared [`Cause`].
+    type Error: std::fmt::Display + Into<Box<dyn std::error::Error + Send + Sync>>;
 
     /// The station's name in an [`InputError`] ("ROS 2 inputs", "simulator").
     fn name(&self) -> &'static str;
@@ -196,9 +201,10 @@ impl CommandSent {
 /// ([`Interruption::InputFailed`]); one after a normal end (no machine for the next session) left
 /// the robot at home.
 #[derive(Debug, thiserror::Error)]
-#[error("{error}")]
-pub struct DriverError<E: std::fmt::Display + std::fmt::Debug> {
-    pub error: E,
+#[error("{}", crate::error::chain(error.as_ref()))]
+pub struct DriverError {
+    /// The station's error (downcast it to the station's type).
+    pub error: Cause,
     /// The sessions as they ended: the last session's ending and the commands sent; the status
     /// is the program's (a person must look, unless a stop signal ended it).
     pub outcome: Option<Outcome>,
@@ -229,7 +235,7 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
         &mut self,
         station: &mut S,
         stop: &dyn StopRequest,
-    ) -> Result<Outcome, DriverError<S::Error>> {
+    ) -> Result<Outcome, DriverError> {
         let mut sessions = 0u32;
         let (status, ending) = loop {
             // A stop asked for, the time limit, an output that failed: the session ends before the
@@ -280,7 +286,7 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
                     // and the program stops for a person all the same.
                     Err(error) => {
                         return Err(DriverError {
-                            error,
+                            error: Arc::from(error.into()),
                             outcome: Some(self.failed_outcome(sessions, ending)),
                         })
                     }
@@ -348,14 +354,15 @@ impl<R: RobotSink, O: CellOutputs> Driver<R, O> {
         station: &mut S,
         sessions: u32,
         error: S::Error,
-    ) -> DriverError<S::Error> {
+    ) -> DriverError {
         let at = station.now_nanos();
+        let error: Cause = Arc::from(error.into());
         let step = self.cell.interrupt(
             at,
             Interruption::InputFailed {
                 error: InputError {
                     input: station.name(),
-                    why: error.to_string(),
+                    cause: error.clone(),
                 },
             },
         );
