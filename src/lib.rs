@@ -1,7 +1,9 @@
 //! The `ergocell` binary's library half: the I/O around the cell's core that is not ROS (the session
 //! state machine and the cell loop live in `ergocell_cell` and are re-exported as [`session`], with
-//! the file-reading trajectory provider beside it), the operator display and review servers, the
-//! shipped reference cell; shared by the commands and by the integration tests. The ROS 2 backend
+//! the approvals crate's file port on this machine beside it: [`session::provider`], the trust
+//! anchor's place and read, [`trust_anchor`], the witness's place and append, [`witness`]), the
+//! operator display and review servers, the shipped reference cell; shared by the commands and by
+//! the integration tests. The ROS 2 backend
 //! (message conversions, the MCAP recorder, the robot sink and its monitor) is
 //! `ergocell_ros_backend`; three of its modules are re-exported here as [`messages`], [`recording`]
 //! and [`robot_markers`].

@@ -36,6 +36,35 @@ trap 'if [ -n "${KEEP_LOGS:-}" ]; then cp "$tmp"/*.run "$tmp"/*.peer "$tmp"/*.js
 who=rclpy@ci.invalid
 source .ci/interop/approved-cell.sh
 
+# The moved cell (tests/moved_cell.rs): the station and the robot's base turned 0.3 rad about the
+# vertical and shifted 0.2 m together, so every trajectory is the same relative to the station. Its
+# classes locked, c2 approved; the demo's operator recorded at the moved station is what the peer
+# plays to run below.
+mkdir -p "$tmp/moved" "$tmp/mtraj"
+cp -r "$tmp/cell/." "$tmp/moved/"
+cp "$tmp/traj"/c*.toml "$tmp/traj/handover_rula.toml" "$tmp/mtraj/"
+python3 - "$tmp/moved/cell.toml" <<'PY'
+import math, sys
+p = sys.argv[1]
+s = open(p).read()
+yaw, sx, sy = 0.3, 0.12, 0.16
+bx, by = 1.35 * math.cos(yaw) + sx, 1.35 * math.sin(yaw) + sy
+for old, new in [("base_xyz_m = [1.35, 0.0, 0.65]", f"base_xyz_m = [{bx!r}, {by!r}, 0.65]"),
+                 ("base_rpy_rad = [0.0, 0.0, 3.141592653589793]", f"base_rpy_rad = [0.0, 0.0, {math.pi + yaw!r}]"),
+                 ("xyz_m = [0.0, 0.0, 0.0]", f"xyz_m = [{sx!r}, {sy!r}, 0.0]"),
+                 ("yaw_rad = 0.0", f"yaw_rad = {yaw!r}")]:
+    assert s.count(old) == 1, old
+    s = s.replace(old, new)
+open(p, "w").write(s)
+PY
+for c in c1 c2 c3; do
+  "$bin" trajectories --cell "$tmp/moved/cell.toml" --trajectories-dir "$tmp/mtraj" lock --class "$c" > /dev/null
+done
+"$bin" trajectories --cell "$tmp/moved/cell.toml" --trajectories-dir "$tmp/mtraj" approve --class c2 \
+  --by "$who" --key "$tmp/key" > /dev/null
+"$bin" --log error demo --cycles 1 --fps 30 --no-faults --cell "$tmp/moved/cell.toml" \
+  --trajectories "$tmp/mtraj" --out "$tmp/moved_session.mcap" > "$tmp/moved_demo.log"
+
 # The action cell: the same cell, commanding through FollowJointTrajectory.
 python3 - "$tmp/cell/cell.toml" "$tmp/cell/action.toml" <<'PY'
 import sys
@@ -59,16 +88,17 @@ bin=$1 tmp=$2 venv=$3 rounds=$4
 ip link set lo up
 ip link set lo multicast on
 ip route add 224.0.0.0/4 dev lo
-case_() {  # case_ <label> <cell file> [PEER_ACTION mode] [PEER_FAULT] [--max-secs]
+case_() {  # case_ <label> <cell file> [PEER_ACTION mode] [PEER_FAULT] [--max-secs]; TRAJ, SESSION
+  local traj=${TRAJ:-$tmp/traj} session=${SESSION:-$tmp/session.mcap}
   timeout -k 5 120 "$bin" --log "warn,rustdds=error" run --config "$2" --rig config/rig.toml \
-    --trajectories "$tmp/traj" --sessions 1 --max-secs "${5:-100}" --record "$tmp/$1.mcap" \
+    --trajectories "$traj" --sessions 1 --max-secs "${5:-100}" --record "$tmp/$1.mcap" \
     --outcome "$tmp/$1.outcome.json" > "$tmp/$1.run" 2> "$tmp/$1.err" &
   local run=$!
   local driver=0 hz=50
   if [ -n "${3:-}" ]; then driver=1 hz=250; fi
   PEER_ACTION="${3:-}" PEER_FAULT="${4:-}" PEER_DRIVER=$driver PEER_JOINT_STATE_HZ=$hz \
-    timeout -k 5 110 "$venv/bin/python" .ci/interop/rclpy/peer.py "$tmp/session.mcap" \
-    "$tmp/traj/locks/c2.lock.toml" 95 > "$tmp/$1.json" 2> "$tmp/$1.peer" || echo "peer exit $?" >> "$tmp/$1.peer"
+    timeout -k 5 110 "$venv/bin/python" .ci/interop/rclpy/peer.py "$session" \
+    "$traj/locks/c2.lock.toml" 95 > "$tmp/$1.json" 2> "$tmp/$1.peer" || echo "peer exit $?" >> "$tmp/$1.peer"
   wait "$run" || echo "run exit $?" >> "$tmp/$1.run"
 }
 case_ topic "$tmp/cell/cell.toml"
@@ -83,6 +113,7 @@ for r in $(seq 1 "$rounds"); do
 done
 case_ stopped_by_error "$tmp/cell/action.toml" normal stopped_by_error 30
 case_ stopped_by_user "$tmp/cell/action.toml" normal stopped_by_user 30
+TRAJ="$tmp/mtraj" SESSION="$tmp/moved_session.mcap" case_ moved "$tmp/moved/cell.toml"
 NS
 
 # The twin plays the same robot faults (`demo --faults`, the twin's controller and KUKA driver under
@@ -171,6 +202,16 @@ step_before = max((i for i in range(max(joined - 1, 0)) if states[i] not in
 check(bool(late) and late[0]["state"] in states[step_before:] and late[0]["after_s"] < 3.0,
       f"a late joiner on session_state (transient local, keep last 1) gets the current state at once: {late[:1]}")
 
+print("== the moved cell: station and robot base turned 0.3 rad and shifted 0.2 m together")
+m, mrun = load("moved"), read("moved.run")
+mout = json.loads(read("moved.outcome.json"))
+mtaken = [e for e in m["events"] if e.get("parts_taken", 0) >= 1]
+mt = mtaken[0] if mtaken else {}
+check(mout["exit_code"] == 0 and "class c2" in mrun and mt.get("parts_taken") == 1
+      and 0 <= mt.get("last_part_closest_m", -1) < 0.1 and "part 1 taken" in read("moved_demo.log"),
+      f"run on the moved cell, fed the demo's operator at the moved station, puts c2's handover point where "
+      f"the demo does: part 1 taken, {mt.get('last_part_closest_m', float('nan')):.3f} m from it; exit "
+      f"{mout['exit_code']}")
 print("== FollowJointTrajectory (robot_interface = \"action\", control_msgs of kilted)")
 for n in ["normal", "reject", "abort"]:
     a = load(n).get("action", {})
