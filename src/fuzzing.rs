@@ -13,8 +13,9 @@
 //! [`trajectory_toml`], [`cell_toml`] (both crates' readers of `config/cell.toml`), [`lock_toml`],
 //! [`approvals_toml`], [`mcap_recording`] (the review's and `replay`'s readers), [`cdr_messages`]
 //! (every message `bridge` decodes), [`rula_json`] (`rula score` worksheets and tables),
-//! [`review_request`] (raw HTTP/1 bytes into the review server) and [`detector_model`] (the twin's
-//! fitted detector and the real measurement it is fitted to). Three more build inputs that nest as
+//! [`review_request`] (raw HTTP/1 bytes into the review server), [`detector_model`] (the twin's
+//! fitted detector and the real measurement it is fitted to) and [`place_points`] (`calibrate
+//! place`'s measured points). Three more build inputs that nest as
 //! deep as the fuzzer asks and hand them to every reader of one format: [`nesting_xml`],
 //! [`nesting_toml`], [`nesting_json`].
 #![allow(clippy::missing_panics_doc)]
@@ -63,6 +64,29 @@ pub fn rig(data: &[u8]) {
             );
         }
     }
+}
+
+/// A `calibrate place` points file, placed against the shipped rig taken as one group: every point
+/// read has finite coordinates and a unique name, and placing them never panics (an error, or a rig
+/// whose cameras are valid).
+pub fn place_points(data: &[u8]) {
+    let Some(text) = text(data) else { return };
+    let Ok(points) = ergocell_calibration::place::parse_points(text, "fuzz") else {
+        return;
+    };
+    for (i, p) in points.iter().enumerate() {
+        assert!(
+            p.cell_m.iter().all(|v| v.is_finite())
+                && p.seen.values().all(|px| px.x.is_finite() && px.y.is_finite()),
+            "a parsed point is not finite: {p:?}"
+        );
+        assert!(
+            points[..i].iter().all(|q| q.name != p.name),
+            "a name read twice: {}",
+            p.name
+        );
+    }
+    let _ = ergocell_calibration::place::place(std::slice::from_ref(shipped_rig()), &points);
 }
 
 /// One OpenPose JSON frame, read in each keypoint layout. Every person returned has only finite
@@ -478,6 +502,7 @@ pub fn nesting_toml(data: &[u8]) {
     lock_toml(bytes);
     approvals_toml(bytes);
     detector_model(bytes);
+    place_points(bytes);
     let _ = ergocell_bridge::transport::RosConfig::from_cell_toml(&text);
     let _ = ergocell_sim::tasks::TaskMix::from_toml_str(&text);
     let _ = ergocell_sim::faults::FaultSchedule::from_toml_str(&text, "fuzz", &["cam_0", "cam_1"]);

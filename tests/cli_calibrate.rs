@@ -191,3 +191,115 @@ fn mismatched_stereo_lists_and_bad_boards_are_usage_errors() {
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains("no images"), "{stderr}");
 }
+
+/// `calibrate place` end to end: the reference rig's pairs, each written in its own left camera's
+/// frame (as `calibrate stereo` writes it), and markers measured in the cell with the pixels each
+/// camera saw: the rig written is the reference rig, `up` included. A points file naming a camera in
+/// no pair, or with an unknown key, is a usage error naming it.
+#[test]
+fn place_puts_pairs_given_in_their_own_frames_back_in_the_cell() {
+    use ergocell_perception::{Camera, CameraRig};
+    use std::fmt::Write as _;
+    let truth = parse_rig(
+        &std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("config/rig.toml"))
+            .unwrap(),
+        "config/rig.toml",
+    )
+    .unwrap()
+    .0;
+    let mut args: Vec<String> = vec!["calibrate".into(), "place".into()];
+    for (k, pair) in truth.pairs().iter().enumerate() {
+        let T_left_world = truth.cameras()[pair.left].T_camera_world;
+        let cameras = [pair.left, pair.right]
+            .iter()
+            .map(|&i| {
+                let c = &truth.cameras()[i];
+                let t = c.T_camera_world * T_left_world.inverse();
+                Camera::new(
+                    c.id.clone(),
+                    c.intrinsics,
+                    c.distortion,
+                    t.rotation.to_rotation_matrix(),
+                    t.translation.vector,
+                )
+                .unwrap()
+            })
+            .collect();
+        let rig = CameraRig::new(cameras, &[], None).unwrap();
+        let path = tmp(&format!("place-pair{k}.toml"));
+        std::fs::write(&path, ergocell_perception::rig_file::to_ergocell_toml(&rig)).unwrap();
+        args.extend(["--pair".into(), path.display().to_string()]);
+    }
+    let mut points = String::new();
+    for (i, (x, y, z)) in [
+        (-0.6, -0.7, 0.0),
+        (0.6, -0.7, 0.0),
+        (-0.6, 0.7, 0.0),
+        (0.6, 0.7, 0.0),
+        (0.0, 0.0, 0.9),
+        (1.0, 0.0, 0.9),
+        (0.0, -0.7, 1.6),
+        (0.0, 0.7, 1.6),
+        (1.0, 0.7, 1.6),
+    ]
+    .iter()
+    .enumerate()
+    {
+        let p = nalgebra::Point3::new(*x, *y, *z);
+        writeln!(
+            points,
+            "[[point]]\nname = \"m{i}\"\ncell_m = [{x:?}, {y:?}, {z:?}]\n[point.seen]"
+        )
+        .unwrap();
+        for c in truth.cameras() {
+            let Ok(px) = c.project(&p) else { continue };
+            if (c.T_camera_world * p).z > 0.1 && c.in_image(&px) {
+                writeln!(points, "{} = [{:?}, {:?}]", c.id.as_str(), px.x, px.y).unwrap();
+            }
+        }
+    }
+    let points_path = tmp("place-points.toml");
+    std::fs::write(&points_path, &points).unwrap();
+    let out = tmp("place-rig.toml");
+    let _ = std::fs::remove_file(&out);
+    args.extend([
+        "--points".into(),
+        points_path.display().to_string(),
+        "--out".into(),
+        out.display().to_string(),
+    ]);
+    let argv: Vec<&str> = args.iter().map(String::as_str).collect();
+    let (code, stdout, stderr) = ergocell(&argv);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let placed = parse_rig(&std::fs::read_to_string(&out).unwrap(), "placed")
+        .unwrap()
+        .0;
+    assert_eq!(placed.up(), Some(nalgebra::Vector3::z()));
+    for c in truth.cameras() {
+        let got = placed.cameras().iter().find(|p| p.id == c.id).unwrap();
+        let d = c.T_camera_world.inverse() * got.T_camera_world;
+        assert!(
+            d.translation.vector.norm() < 1e-6,
+            "{}: {d:?}",
+            c.id.as_str()
+        );
+        assert!(d.rotation.angle() < 1e-6, "{}: {d:?}", c.id.as_str());
+    }
+    // Refused as bad input: a camera in no pair, an unknown key; nothing written.
+    for (bad, named) in [
+        (format!("{points}[[point]]\nname = \"x\"\ncell_m = [0.0, 0.0, 0.0]\n[point.seen]\nnobody = [1.0, 2.0]\n"), "nobody"),
+        (format!("{points}[[point]]\nname = \"y\"\ncell_mm = [0.0, 0.0, 0.0]\nseen = {{}}\n"), "cell_mm"),
+    ] {
+        std::fs::write(&points_path, bad).unwrap();
+        let refused = tmp("place-refused.toml");
+        let _ = std::fs::remove_file(&refused);
+        let mut argv = argv.clone();
+        let n = argv.len();
+        let refused_s = refused.display().to_string();
+        argv[n - 1] = &refused_s;
+        let (code, stdout, stderr) = ergocell(&argv);
+        assert_eq!(code, 2, "{stdout}{stderr}");
+        assert!(stderr.contains(named), "{stderr}");
+        assert!(!refused.exists());
+    }
+}

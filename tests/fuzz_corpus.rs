@@ -36,6 +36,7 @@ targets!(
     rula_json,
     review_request,
     detector_model,
+    place_points,
     nesting_xml,
     nesting_toml,
     nesting_json,
@@ -139,6 +140,7 @@ fn deep_nesting_is_refused_by_every_reader_without_overflowing_the_stack() {
         ("approvals_toml", ergocell::fuzzing::approvals_toml),
         ("rula_json", ergocell::fuzzing::rula_json),
         ("detector_model", ergocell::fuzzing::detector_model),
+        ("place_points", ergocell::fuzzing::place_points),
     ];
     let n = 50_000;
     let open_close = |open: &str, close: &str| format!("{}{}", open.repeat(n), close.repeat(n));

@@ -60,6 +60,22 @@ pub enum CalibrationError {
     /// Rig cameras cannot be put in one frame: a camera shares no frame with the others.
     #[error("camera `{0}` shares no checkerboard view with the rest of the rig")]
     Disconnected(String),
+    /// A points file for `calibrate place` does not parse or holds an impossible value.
+    #[error("{source_name}: {why}")]
+    BadPoints { source_name: String, why: String },
+    /// A camera a measured point names is in no group, or in more than one.
+    #[error(
+        "camera `{camera}` is in {groups} of the groups being placed (it must be in exactly one)"
+    )]
+    PlaceCamera { camera: String, groups: usize },
+    /// A group saw too few measured points with two of its cameras to start its pose, or they lie on
+    /// one line.
+    #[error("cameras {cameras}: {triangulated} measured points seen by two of them, at least {needed} not on one line needed")]
+    TooFewPoints {
+        cameras: String,
+        triangulated: usize,
+        needed: usize,
+    },
     /// The camera model rejected the estimate (non-finite or non-positive parameters).
     #[error(transparent)]
     Camera(#[from] PerceptionError),

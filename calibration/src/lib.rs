@@ -23,6 +23,7 @@ pub mod intrinsics;
 pub mod linalg;
 pub mod lm;
 pub mod model;
+pub mod place;
 pub mod rig;
 
 pub use board::BoardSpec;

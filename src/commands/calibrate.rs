@@ -5,6 +5,7 @@
 //! ergocell calibrate intrinsics --images <dir|glob> --board 9x6 --square-m 0.025 --out cam.toml
 //! ergocell calibrate stereo --left <dir|glob> --right <dir|glob> --board 9x6 --square-m 0.025 \
 //!                           --out rig.toml [--format anipose] [--refine-intrinsics]
+//! ergocell calibrate place --pair s1.toml --pair s2.toml --points measured.toml --out rig.toml
 //! ```
 //!
 //! Prints one row per image (or pair): used with its reprojection error, or rejected and why. Too
@@ -39,6 +40,28 @@ pub enum CalibrateCommand {
     Intrinsics(IntrinsicsArgs),
     /// A stereo pair: both cameras and the pose of the right one in the left one's frame.
     Stereo(StereoArgs),
+    /// Every pair in the cell's frame: each pair's file (in its own frame, as `stereo` writes it)
+    /// placed from points measured in the cell and seen by its cameras; writes the cell's rig file.
+    Place(PlaceArgs),
+}
+
+/// Arguments of `ergocell calibrate place`.
+#[derive(Debug, clap::Args)]
+pub struct PlaceArgs {
+    /// A rig file of cameras calibrated in one frame (a `calibrate stereo` output); once per pair.
+    #[arg(long = "pair", required = true)]
+    pub pairs: Vec<PathBuf>,
+    /// Points measured in the cell's frame and the pixels each camera saw them at (TOML:
+    /// `[[point]]` with `name`, `cell_m = [x, y, z]` and `[point.seen]` camera id = [u, v]).
+    #[arg(long)]
+    pub points: PathBuf,
+    /// Output rig file (every camera in the cell's frame, `up` = +z); refused if it exists unless
+    /// --force, and if it is an input.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Overwrite an existing --out file.
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// The board and the output, shared by both calibrations.
@@ -99,7 +122,61 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     match &args.command {
         CalibrateCommand::Intrinsics(a) => run_intrinsics(a),
         CalibrateCommand::Stereo(a) => run_stereo(a),
+        CalibrateCommand::Place(a) => run_place(a),
     }
+}
+
+/// `calibrate place`: reads the pairs and the points, places each pair, prints how well each fits,
+/// writes the cell's rig.
+fn run_place(args: &PlaceArgs) -> anyhow::Result<()> {
+    let mut inputs: Vec<(&str, &Path)> =
+        args.pairs.iter().map(|p| ("--pair", p.as_path())).collect();
+    inputs.push(("--points", args.points.as_path()));
+    output::check("--out", &args.out, args.force, &inputs)?;
+    let mut groups = Vec::new();
+    for path in &args.pairs {
+        let text = ergocell::input::read_text(path, ergocell::input::Kind::Config)?;
+        let (rig, _) = ergocell_perception::rig_file::parse_rig(&text, &path.display().to_string())
+            .map_err(|e| UsageError(e.to_string()))?;
+        groups.push(rig);
+    }
+    let text = ergocell::input::read_text(&args.points, ergocell::input::Kind::Config)?;
+    let points =
+        ergocell_calibration::place::parse_points(&text, &args.points.display().to_string())
+            .map_err(|e| UsageError(e.to_string()))?;
+    let placed = ergocell_calibration::place::place(&groups, &points).map_err(|e| match e {
+        CalibrationError::Camera(e) => anyhow::anyhow!(e),
+        other => UsageError(other.to_string()).into(),
+    })?;
+    for (g, path) in placed.groups.iter().zip(&args.pairs) {
+        let at = g.T_cell_group.translation.vector;
+        println!(
+            "{} ({}): at [{:.3}, {:.3}, {:.3}] m in the cell; {} points triangulated, {} sightings, \
+             reprojection RMS {:.2} px, worst {:.2} px (point `{}`)",
+            path.display(),
+            g.cameras.join(", "),
+            at.x,
+            at.y,
+            at.z,
+            g.triangulated,
+            g.sightings,
+            g.rms_px,
+            g.max_px,
+            g.worst_point
+        );
+    }
+    output::write(
+        "--out",
+        &args.out,
+        args.force,
+        to_ergocell_toml(&placed.rig).as_bytes(),
+    )?;
+    println!(
+        "wrote {}: {} cameras in the cell's frame, up = +z",
+        args.out.display(),
+        placed.rig.len()
+    );
+    Ok(())
 }
 
 fn board_of(common: &BoardArgs) -> anyhow::Result<BoardSpec> {
