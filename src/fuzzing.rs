@@ -77,7 +77,9 @@ pub fn place_points(data: &[u8]) {
     for (i, p) in points.iter().enumerate() {
         assert!(
             p.cell_m.iter().all(|v| v.is_finite())
-                && p.seen.values().all(|px| px.x.is_finite() && px.y.is_finite()),
+                && p.seen
+                    .values()
+                    .all(|px| px.x.is_finite() && px.y.is_finite()),
             "a parsed point is not finite: {p:?}"
         );
         assert!(

@@ -5,9 +5,10 @@
 #
 #   bash .ci/interop/console.sh [path/to/ergocell]
 #
-# Asserts, for 5 s of `run` at the default log level: the multicast note exactly once, no RustDDS
-# "No locators" or "leave_multicast_group" line, and the whole console (stdout + stderr) under 40
-# lines and 8 KB. Prints the counts.
+# Asserts, for 15 s of `run` at the default log level with no edge node running: the reference
+# cell's start-up says in its first 10 lines that no class can run and why; the multicast note
+# exactly once, no RustDDS "No locators" or "leave_multicast_group" line, and the whole console
+# (stdout + stderr) at most 12 lines and under 8 KB. Prints the counts.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=${1:-target/release/ergocell}
@@ -18,19 +19,21 @@ unshare -n -- bash -c '
   set -euo pipefail
   ip link set lo up
   cd "$2"
-  # SIGINT after 5 s, like Ctrl-C; `run` then holds the robot and exits 130.
-  timeout -s INT 5 "$1" run --config "$3/config/cell.toml" > out.txt 2> err.txt || true
+  # SIGINT after 15 s, like Ctrl-C; `run` then holds the robot and exits 130.
+  timeout -s INT 15 "$1" run --config "$3/config/cell.toml" > out.txt 2> err.txt || true
 ' _ "$bin" "$tmp" "$PWD"
 cat "$tmp/out.txt" "$tmp/err.txt" > "$tmp/console.txt"
 lines=$(wc -l < "$tmp/console.txt")
 bytes=$(wc -c < "$tmp/console.txt")
 notes=$(grep -c "DDS discovery: no multicast on this machine" "$tmp/console.txt" || true)
 noise=$(grep -c "No locators\|leave_multicast_group\|No multicast joins succeeded" "$tmp/console.txt" || true)
-echo "ergocell run, 5 s, loopback only: $lines lines, $bytes bytes; multicast note $notes time(s); RustDDS noise $noise line(s)"
+early=$(head -10 "$tmp/console.txt" | grep -c "robot: no class can run, the robot will not move for any operator: c1, c2, c3: not approved" || true)
+echo "ergocell run, 15 s, loopback only, no edge node: $lines lines, $bytes bytes; multicast note $notes time(s); RustDDS noise $noise line(s); no class can run said in the first 10 lines: $early"
 fail=0
+[ "$early" = 1 ] || { echo "the first 10 lines do not say that no class can run and why" >&2; fail=1; }
 [ "$notes" = 1 ] || { echo "expected the multicast note exactly once" >&2; fail=1; }
 [ "$noise" = 0 ] || { echo "RustDDS's per-message warnings reached the console" >&2; fail=1; }
-[ "$lines" -lt 40 ] || { echo "console too long: $lines lines" >&2; fail=1; }
+[ "$lines" -le 12 ] || { echo "console too long: $lines lines" >&2; fail=1; }
 [ "$bytes" -lt 8192 ] || { echo "console too long: $bytes bytes" >&2; fail=1; }
 grep -q "session: session_ended" "$tmp/console.txt" || { echo "run did not end its session" >&2; fail=1; }
 # A console that goes away (`ergocell run 2>&1 | head -3`): the cell goes on and Ctrl-C still holds

@@ -113,3 +113,75 @@ pub enum ProviderError {
         cause: Cause,
     },
 }
+
+/// Why a class cannot run, in a few words for the start-up summary (the full error says the rest).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Refusal {
+    /// The lock verifies, but no approval of it stands (none yet, or withdrawn).
+    NotApproved,
+    /// The lock or its approvals do not verify (edited, superseded, a bad signature, …).
+    NotVerified,
+    /// The cell's approvers are not trusted (the authority's signature or anchor).
+    ApproversNotTrusted,
+    /// The approvals file was cut back or restored from an older copy (the witness saw more).
+    RolledBack,
+    /// An approval bears a time no approval can bear now.
+    ApprovalTime,
+    /// A file the class needs cannot be read or does not parse.
+    Files,
+    /// The demo's own locks or keys.
+    Demo,
+}
+
+impl std::fmt::Display for Refusal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::NotApproved => {
+                "not approved (a safety engineer approves each class: docs/safety.md)"
+            }
+            Self::NotVerified => "its lock or approvals do not verify",
+            Self::ApproversNotTrusted => {
+                "the cell's approvers are not trusted (the site authority's signature or anchor)"
+            }
+            Self::RolledBack => "its approvals file was cut back (the witness saw more of it)",
+            Self::ApprovalTime => "an approval bears a time no approval can bear now",
+            Self::Files => "a file it needs cannot be read or is invalid",
+            Self::Demo => "the demo's lock or key",
+        })
+    }
+}
+
+impl ProviderError {
+    /// Why the class cannot run, in a few words.
+    pub fn refusal(&self) -> Refusal {
+        match self {
+            Self::NotVerified { failure, witness } => {
+                if witness.is_some() {
+                    Refusal::RolledBack
+                } else if failure
+                    .problems
+                    .iter()
+                    .all(|p| matches!(p, RobotError::NotApproved { .. }))
+                {
+                    Refusal::NotApproved
+                } else {
+                    Refusal::NotVerified
+                }
+            }
+            Self::Witness { .. } => Refusal::RolledBack,
+            Self::TrustList { .. } => Refusal::ApproversNotTrusted,
+            Self::ApprovalTime { .. } => Refusal::ApprovalTime,
+            Self::LockInputsChanged { .. } => Refusal::NotVerified,
+            Self::Unreadable { .. }
+            | Self::ApproversUnreadable { .. }
+            | Self::Invalid { .. }
+            | Self::Curves { .. }
+            | Self::Geometry { .. }
+            | Self::Write { .. } => Refusal::Files,
+            Self::DemoLock { .. }
+            | Self::DemoKey { .. }
+            | Self::DemoApprovalsInRepository { .. }
+            | Self::NoDemoKey => Refusal::Demo,
+        }
+    }
+}

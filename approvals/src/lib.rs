@@ -20,6 +20,6 @@ pub mod fixture;
 pub mod provider;
 pub mod witness_store;
 
-pub use error::ProviderError;
+pub use error::{ProviderError, Refusal};
 pub use files::{CellFiles, FileError, FileKind, MemoryFiles};
 pub use provider::FileTrajectories;

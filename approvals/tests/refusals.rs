@@ -55,7 +55,12 @@ fn a_lock_approved_by_a_trusted_engineer_verifies_and_the_witness_records_it() {
 fn a_lock_no_one_approved_is_refused() {
     let f = Fixture::new().unwrap();
     f.lock(C2).unwrap();
-    let p = problems(f.provider(now).verify(C2));
+    let refused = f.provider(now).verify(C2);
+    assert_eq!(
+        refused.as_ref().err().map(ProviderError::refusal),
+        Some(ergocell_approvals::Refusal::NotApproved)
+    );
+    let p = problems(refused);
     assert!(
         matches!(p.as_slice(), [RobotError::NotApproved { .. }]),
         "{p:?}"
@@ -220,6 +225,10 @@ fn approvers_edited_after_the_authority_signed_them_trust_no_one() {
     );
     f.files
         .put(dir.join(signing::ALLOWED_SIGNERS), allowed.as_str());
+    assert_eq!(
+        f.provider(now).verify(C2).err().map(|e| e.refusal()),
+        Some(ergocell_approvals::Refusal::ApproversNotTrusted)
+    );
     match f.provider(now).verify(C2) {
         Err(ProviderError::TrustList { cause }) => assert!(
             matches!(*cause, TrustListError::Authority(AuthorityError::Edited)),
@@ -318,6 +327,10 @@ fn a_withdrawal_deleted_from_the_approvals_file_is_caught_by_the_witness() {
     ));
     // The withdrawal deleted: the chain alone is intact again, the witness is not fooled.
     f.put_approvals(C2, &approved_only).unwrap();
+    assert_eq!(
+        provider.verify(C2).err().map(|e| e.refusal()),
+        Some(ergocell_approvals::Refusal::RolledBack)
+    );
     match provider.verify(C2) {
         Err(ProviderError::Witness { cause, .. }) => assert!(
             matches!(

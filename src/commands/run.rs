@@ -1027,7 +1027,8 @@ mod tests {
 #[derive(Debug, PartialEq)]
 struct ApprovalSummary {
     approved: Vec<(ergocell_robot::TrajectoryClass, Vec<String>)>,
-    refused: Vec<ergocell_robot::TrajectoryClass>,
+    /// The classes that cannot run, and why in a few words.
+    refused: Vec<(ergocell_robot::TrajectoryClass, ergocell_approvals::Refusal)>,
 }
 
 impl ApprovalSummary {
@@ -1045,7 +1046,7 @@ impl ApprovalSummary {
                         .map(|x| x.approved_by.clone())
                         .collect(),
                 )),
-                Err(_) => out.refused.push(class),
+                Err(e) => out.refused.push((class, e.refusal())),
             }
         }
         out
@@ -1059,26 +1060,31 @@ impl std::fmt::Display for ApprovalSummary {
             .iter()
             .map(|(class, by)| format!("{class} (approved by {})", by.join(", ")))
             .collect();
-        let refused: Vec<String> = self.refused.iter().map(ToString::to_string).collect();
-        match (approved.is_empty(), refused.is_empty()) {
+        // The refused classes grouped by why: "c1, c2, c3: not approved (…)".
+        let mut why: Vec<(ergocell_approvals::Refusal, Vec<String>)> = Vec::new();
+        for (class, refusal) in &self.refused {
+            match why.iter_mut().find(|(r, _)| r == refusal) {
+                Some((_, classes)) => classes.push(class.to_string()),
+                None => why.push((*refusal, vec![class.to_string()])),
+            }
+        }
+        let why = why
+            .iter()
+            .map(|(r, classes)| format!("{}: {r}", classes.join(", ")))
+            .collect::<Vec<_>>()
+            .join("; ");
+        match (approved.is_empty(), self.refused.is_empty()) {
             (_, true) => write!(f, "robot: every class is approved: {}", approved.join(", ")),
             (true, false) => write!(
                 f,
-                "robot: no class is approved: the robot will not move for any operator \
-                 (`ergocell trajectories verify` says why; a safety engineer approves each class, \
-                 docs/safety.md)"
+                "robot: no class can run, the robot will not move for any operator: {why} \
+                 (`ergocell trajectories verify` says more)"
             ),
             (false, false) => write!(
                 f,
-                "robot: {}; not approved: {} — the robot will not move for an operator of {} \
-                 (`ergocell trajectories verify` says why)",
+                "robot: {}; the robot will not move for an operator of {why} \
+                 (`ergocell trajectories verify` says more)",
                 approved.join(", "),
-                refused.join(", "),
-                if refused.len() == 1 {
-                    "that class"
-                } else {
-                    "those classes"
-                }
             ),
         }
     }
@@ -1122,7 +1128,10 @@ mod approval_summary_tests {
             summary,
             ApprovalSummary {
                 approved: Vec::new(),
-                refused: TrajectoryClass::ALL.to_vec(),
+                refused: TrajectoryClass::ALL
+                    .iter()
+                    .map(|&c| (c, ergocell_approvals::Refusal::NotApproved))
+                    .collect(),
             }
         );
     }
