@@ -166,6 +166,21 @@ impl MemoryFiles {
             .insert(path.into(), file);
     }
 
+    /// The injected failure of the witness, if one is set ([`MemoryFiles::fail_witness`]).
+    fn witness_usable(&self, path: &Path) -> Result<(), FileError> {
+        if *self
+            .witness_fails
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+        {
+            return Err(FileError::Unreadable {
+                path: path.to_owned(),
+                cause: Arc::new(Injected(path.to_owned())),
+            });
+        }
+        Ok(())
+    }
+
     fn lock_files(&self) -> std::sync::MutexGuard<'_, BTreeMap<PathBuf, Vec<u8>>> {
         self.files
             .lock()
@@ -209,30 +224,12 @@ impl CellFiles for MemoryFiles {
     }
 
     fn read_witness(&self, path: &Path) -> Result<Vec<u8>, FileError> {
-        if *self
-            .witness_fails
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)
-        {
-            return Err(FileError::Unreadable {
-                path: path.to_owned(),
-                cause: Arc::new(Injected(path.to_owned())),
-            });
-        }
+        self.witness_usable(path)?;
         Ok(self.get(path).unwrap_or_default())
     }
 
     fn append_witness(&self, path: &Path, line: &str) -> Result<(), FileError> {
-        if *self
-            .witness_fails
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)
-        {
-            return Err(FileError::Unreadable {
-                path: path.to_owned(),
-                cause: Arc::new(Injected(path.to_owned())),
-            });
-        }
+        self.witness_usable(path)?;
         self.lock_files()
             .entry(path.to_owned())
             .or_default()

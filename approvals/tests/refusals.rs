@@ -67,45 +67,40 @@ fn a_lock_no_one_approved_is_refused() {
     );
 }
 
-#[test]
-fn a_key_the_cell_does_not_trust_is_refused() {
+/// c2 locked and approved as alice, signed with `key` under a trust list that names `key` as alice's:
+/// the signer's own list, not the cell's. The reasons the cell's list refuses it.
+fn approved_as_alice_with(
+    key: impl Fn(&Fixture) -> ergocell_robot::signing::PrivateKey,
+) -> Vec<ApprovalError> {
     let f = Fixture::new().unwrap();
     let lock = f.lock(C2).unwrap();
-    // Mallory signs as alice, under a trust list of her own making.
-    let forged =
-        TrustedSigners::parse(&fixture::allowed_line(ALICE, &f.mallory).unwrap(), "").unwrap();
+    let key = key(&f);
+    let their_list =
+        TrustedSigners::parse(&fixture::allowed_line(ALICE, &key).unwrap(), "").unwrap();
     let mut file = f.approvals(C2).unwrap();
-    file.approve(&lock, ALICE, APPROVED_AT, &forged, &f.mallory)
+    file.approve(&lock, ALICE, APPROVED_AT, &their_list, &key)
         .unwrap();
     f.put_approvals(C2, &file).unwrap();
-    let p = problems(f.provider(now).verify(C2));
+    approval_refused(&problems(f.provider(now).verify(C2)))
+}
+
+#[test]
+fn a_key_the_cell_does_not_trust_is_refused() {
+    // Mallory, whom the cell does not list, signs as alice.
+    let refused = approved_as_alice_with(|f| f.mallory.clone());
     assert!(
-        matches!(
-            approval_refused(&p).as_slice(),
-            [ApprovalError::Untrusted { .. }]
-        ),
-        "{p:?}"
+        matches!(refused.as_slice(), [ApprovalError::Untrusted { .. }]),
+        "{refused:?}"
     );
 }
 
 #[test]
 fn a_trusted_key_under_another_engineers_name_is_refused() {
-    let f = Fixture::new().unwrap();
-    let lock = f.lock(C2).unwrap();
-    // Bob's key, signing as alice: a list that says so is bob's own, not the cell's.
-    let as_alice =
-        TrustedSigners::parse(&fixture::allowed_line(ALICE, &f.bob).unwrap(), "").unwrap();
-    let mut file = f.approvals(C2).unwrap();
-    file.approve(&lock, ALICE, APPROVED_AT, &as_alice, &f.bob)
-        .unwrap();
-    f.put_approvals(C2, &file).unwrap();
-    let p = problems(f.provider(now).verify(C2));
+    // Bob's key, which the cell trusts as bob's, signing as alice.
+    let refused = approved_as_alice_with(|f| f.bob.clone());
     assert!(
-        matches!(
-            approval_refused(&p).as_slice(),
-            [ApprovalError::WrongPrincipal { .. }]
-        ),
-        "{p:?}"
+        matches!(refused.as_slice(), [ApprovalError::WrongPrincipal { .. }]),
+        "{refused:?}"
     );
 }
 
