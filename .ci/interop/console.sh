@@ -20,9 +20,9 @@ unshare -n -- bash -c '
   ip link set lo up
   cd "$2"
   # SIGINT after 15 s, like Ctrl-C; `run` then holds the robot and exits 130.
-  timeout -s INT 15 "$1" run --config "$3/config/cell.toml" > out.txt 2> err.txt || true
+  # stdout and stderr as a terminal shows them, interleaved.
+  timeout -s INT 15 "$1" run --config "$3/config/cell.toml" > console.txt 2>&1 || true
 ' _ "$bin" "$tmp" "$PWD"
-cat "$tmp/out.txt" "$tmp/err.txt" > "$tmp/console.txt"
 lines=$(wc -l < "$tmp/console.txt")
 bytes=$(wc -c < "$tmp/console.txt")
 notes=$(grep -c "DDS discovery: no multicast on this machine" "$tmp/console.txt" || true)

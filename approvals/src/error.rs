@@ -125,6 +125,9 @@ pub enum Refusal {
     ApproversNotTrusted,
     /// The approvals file was cut back or restored from an older copy (the witness saw more).
     RolledBack,
+    /// The witness of the approvals cannot be read (a permissions fault, a line ergocell did not
+    /// write): no approval counts until it can.
+    WitnessUnreadable,
     /// An approval bears a time no approval can bear now.
     ApprovalTime,
     /// A file the class needs cannot be read or does not parse.
@@ -139,14 +142,15 @@ impl std::fmt::Display for Refusal {
             Self::NotApproved => {
                 "not approved (a safety engineer approves each class: docs/safety.md)"
             }
-            Self::NotVerified => "its lock or approvals do not verify",
+            Self::NotVerified => "the lock or its approvals do not verify",
             Self::ApproversNotTrusted => {
                 "the cell's approvers are not trusted (the site authority's signature or anchor)"
             }
-            Self::RolledBack => "its approvals file was cut back (the witness saw more of it)",
+            Self::RolledBack => "the approvals file was cut back (the witness saw more of it)",
+            Self::WitnessUnreadable => "the approvals' witness cannot be read",
             Self::ApprovalTime => "an approval bears a time no approval can bear now",
-            Self::Files => "a file it needs cannot be read or is invalid",
-            Self::Demo => "the demo's lock or key",
+            Self::Files => "a file the class needs cannot be read or is invalid",
+            Self::Demo => "the demo's lock or key could not be made",
         })
     }
 }
@@ -156,19 +160,23 @@ impl ProviderError {
     pub fn refusal(&self) -> Refusal {
         match self {
             Self::NotVerified { failure, witness } => {
-                if witness.is_some() {
-                    Refusal::RolledBack
-                } else if failure
-                    .problems
-                    .iter()
-                    .all(|p| matches!(p, RobotError::NotApproved { .. }))
-                {
-                    Refusal::NotApproved
-                } else {
-                    Refusal::NotVerified
+                let only_not_approved = !failure.problems.is_empty()
+                    && failure
+                        .problems
+                        .iter()
+                        .all(|p| matches!(p, RobotError::NotApproved { .. }));
+                match witness.as_deref().map(Self::refusal) {
+                    // The witness's finding names the cause (the file cut back, or the witness
+                    // unreadable) when the chain alone shows nothing but a missing approval.
+                    Some(w) if only_not_approved => w,
+                    _ if only_not_approved => Refusal::NotApproved,
+                    _ => Refusal::NotVerified,
                 }
             }
-            Self::Witness { .. } => Refusal::RolledBack,
+            Self::Witness { cause, .. } => match **cause {
+                RobotError::RolledBack { .. } => Refusal::RolledBack,
+                _ => Refusal::WitnessUnreadable,
+            },
             Self::TrustList { .. } => Refusal::ApproversNotTrusted,
             Self::ApprovalTime { .. } => Refusal::ApprovalTime,
             Self::LockInputsChanged { .. } => Refusal::NotVerified,

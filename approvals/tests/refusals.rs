@@ -353,6 +353,10 @@ fn a_withdrawal_deleted_from_the_approvals_file_is_caught_by_the_witness() {
 fn a_witness_with_a_line_ergocell_did_not_write_refuses_every_approval() {
     let f = Fixture::approved(C2).unwrap();
     f.files.put(fixture::WITNESS_PATH, "not a sighting\n{}\n");
+    assert_eq!(
+        f.provider(now).verify(C2).err().map(|e| e.refusal()),
+        Some(ergocell_approvals::Refusal::WitnessUnreadable)
+    );
     match f.provider(now).verify(C2) {
         Err(ProviderError::Witness { cause, .. }) => assert!(
             matches!(*cause, RobotError::WitnessUnreadable { .. }),

@@ -76,6 +76,22 @@ pub enum CalibrationError {
         triangulated: usize,
         needed: usize,
     },
+    /// A group of one camera: its pose needs points seen by two of its cameras.
+    #[error(
+        "camera `{camera}` is alone in its group: place a stereo pair (a group needs two cameras)"
+    )]
+    GroupOfOne { camera: String },
+    /// A measured point lies behind a camera that is said to see it.
+    #[error("point `{point}` would be behind camera `{camera}`, which is said to see it: a wrong camera id, point or sign")]
+    BehindCamera { camera: String, point: String },
+    /// The placed group does not fit its sightings.
+    #[error("cameras {cameras}: reprojection RMS {rms_px:.1} px after placing, more than {limit_px} px (worst point `{worst_point}`): a wrong camera id, measurement or click")]
+    PoorFit {
+        cameras: String,
+        rms_px: f64,
+        limit_px: f64,
+        worst_point: String,
+    },
     /// The camera model rejected the estimate (non-finite or non-positive parameters).
     #[error(transparent)]
     Camera(#[from] PerceptionError),

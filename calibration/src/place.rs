@@ -21,16 +21,20 @@ use std::collections::BTreeMap;
 use ergocell_perception::triangulation::dlt;
 use ergocell_perception::{Camera, CameraRig};
 use nalgebra::{
-    Isometry3, Matrix3, Point2, Point3, Rotation3, Translation3, UnitQuaternion, Vector3,
+    Isometry3, Matrix3, Point2, Point3, Rotation3, Translation3, UnitQuaternion, Vector2, Vector3,
 };
 use serde::Deserialize;
 
 use crate::error::{CalibrationError, Result};
 use crate::lm::BlockProblem as _;
-use crate::model::{params_of, pose_from_params, pose_to_params, project};
+use crate::model::{pose_from_params, pose_to_params};
 
 /// Points a group must have triangulated to start its pose (three, not on one line).
 pub const MIN_TRIANGULATED: usize = 3;
+
+/// The worst fit a placement may have: a reprojection RMS above this is a wrong camera id, a wrong
+/// measurement or a wrong click, not noise (clicked markers are about 1 px, board corners 0.2 px).
+pub const MAX_RMS_PX: f64 = 5.0;
 
 /// A point measured in the cell's frame and the pixels at which cameras saw it.
 #[derive(Debug, Clone, PartialEq)]
@@ -51,8 +55,10 @@ pub struct GroupPlacement {
     /// Points triangulated in the group's frame to start the pose, and sightings used to refine it.
     pub triangulated: usize,
     pub sightings: usize,
-    /// Reprojection error of the placed group over its sightings, pixels.
+    /// Reprojection error of the placed group over its sightings, pixels; and of the rigid fit it
+    /// started from (the refinement's gain).
     pub rms_px: f64,
+    pub start_rms_px: f64,
     pub max_px: f64,
     /// The point whose sighting was worst.
     pub worst_point: String,
@@ -178,6 +184,11 @@ fn place_group(group: &CameraRig, points: &[MeasuredPoint]) -> Result<GroupPlace
         .iter()
         .map(|c| c.id.as_str().to_owned())
         .collect();
+    if let [only] = names.as_slice() {
+        return Err(CalibrationError::GroupOfOne {
+            camera: only.clone(),
+        });
+    }
     let mut sightings = Vec::new();
     let mut pairs = Vec::new(); // (point in the group's frame, in the cell)
     for (i, p) in points.iter().enumerate() {
@@ -215,33 +226,60 @@ fn place_group(group: &CameraRig, points: &[MeasuredPoint]) -> Result<GroupPlace
         params: [0, 1, 2, 3, 4, 5],
     };
     let mut x = pose_to_params(&start.inverse()).to_vec();
+    let (start_rms_px, _, _) = fit(&problem, &sightings, &x);
     crate::lm::solve(&problem, &mut x, &[false; 6], 100);
     let T_cell_group = pose_from_params(&x).inverse();
-    let mut residual = Vec::new();
-    let (mut sum, mut max, mut worst) = (0.0, 0.0, 0);
-    for (b, s) in sightings.iter().enumerate() {
-        problem.block_residuals(b, &x, &mut residual);
-        let e2 = residual.iter().map(|r| r * r).sum::<f64>();
-        sum += e2;
-        if e2.sqrt() > max {
-            max = e2.sqrt();
-            worst = s.point;
+    let (rms_px, max_px, worst) = fit(&problem, &sightings, &x);
+    let name = |i: usize| points.get(i).map(|p| p.name.clone()).unwrap_or_default();
+    // Every sighting in front of its camera: a point behind one is a wrong id or a wrong sign.
+    for s in &sightings {
+        let c = &group.cameras()[s.camera];
+        if (c.T_camera_world * (T_cell_group.inverse() * s.cell_m)).z <= 0.0 {
+            return Err(CalibrationError::BehindCamera {
+                camera: c.id.as_str().to_owned(),
+                point: name(s.point),
+            });
         }
     }
-    let n = sightings.len().max(1);
+    if rms_px.is_nan() || rms_px > MAX_RMS_PX {
+        return Err(CalibrationError::PoorFit {
+            cameras: names.join(", "),
+            rms_px,
+            limit_px: MAX_RMS_PX,
+            worst_point: name(worst),
+        });
+    }
     Ok(GroupPlacement {
         cameras: names,
         T_cell_group,
         triangulated: pairs.len(),
         sightings: sightings.len(),
-        rms_px: (sum / n as f64).sqrt(),
-        max_px: max,
-        worst_point: points
-            .get(worst)
-            .map(|p| p.name.clone())
-            .unwrap_or_default(),
+        rms_px,
+        start_rms_px,
+        max_px,
+        worst_point: name(worst),
     })
 }
+
+/// The RMS and worst reprojection error (pixels) at `x`, and the worst sighting's point.
+fn fit(problem: &Reprojection<'_>, sightings: &[Sighting], x: &[f64]) -> (f64, f64, usize) {
+    let mut residual = Vec::new();
+    let (mut sum, mut max, mut worst) = (0.0, 0.0, 0);
+    for (b, s) in sightings.iter().enumerate() {
+        problem.block_residuals(b, x, &mut residual);
+        let e = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
+        sum += e * e;
+        if e > max {
+            max = e;
+            worst = s.point;
+        }
+    }
+    let n = sightings.len().max(1);
+    ((sum / n as f64).sqrt(), max, worst)
+}
+
+/// The residual of a point behind its camera, pixels.
+const BEHIND_PX: f64 = 1e4;
 
 /// Reprojection of the group's sightings with the group at `x` = `T_group_cell`'s parameters.
 struct Reprojection<'a> {
@@ -264,8 +302,16 @@ impl crate::lm::BlockProblem for Reprojection<'_> {
         let s = &self.sightings[b];
         let c = &self.group.cameras()[s.camera];
         let p_camera = c.T_camera_world * (pose_from_params(x) * s.cell_m);
-        let k = params_of(&c.intrinsics, &c.distortion);
-        let px = project(&k, &c.distortion, &p_camera);
+        if p_camera.z <= 1e-9 {
+            // Behind the camera: as far off as a pixel can be, so the solve turns away from it.
+            out.extend([BEHIND_PX, BEHIND_PX]);
+            return;
+        }
+        // The camera's own model (skew included), as triangulation uses it.
+        let px = c.normalized_to_pixel(Vector2::new(
+            p_camera.x / p_camera.z,
+            p_camera.y / p_camera.z,
+        ));
         out.push(px.x - s.pixel.x);
         out.push(px.y - s.pixel.y);
     }

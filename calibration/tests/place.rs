@@ -162,6 +162,72 @@ fn a_group_with_too_few_points_or_a_camera_in_no_group_is_refused() {
 }
 
 #[test]
+fn markers_all_on_the_floor_place_the_pairs_too_and_the_refinement_improves_on_the_rigid_fit() {
+    // One plane (a board laid on the floor, floor markers): the rigid fit's reflection case.
+    let truth = reference_rig();
+    let groups = pairs_in_their_own_frames(&truth);
+    let floor: Vec<MeasuredPoint> = measured(&truth, CORNER_NOISE_PX, 301)
+        .into_iter()
+        .filter(|p| p.cell_m.z == 0.0)
+        .collect();
+    let placed = place(&groups, &floor).unwrap();
+    for c in truth.cameras() {
+        let got = placed.rig.cameras().iter().find(|p| p.id == c.id).unwrap();
+        let (dm, drad) = error(&c.T_camera_world.inverse(), &got.T_camera_world.inverse());
+        assert!(
+            dm < 0.005 && drad < 0.2_f64.to_radians(),
+            "{}: {dm} m, {drad} rad",
+            c.id.as_str()
+        );
+    }
+    // Under noise the reprojection refinement lowers the error the rigid fit started from.
+    for g in &placed.groups {
+        assert!(g.rms_px < g.start_rms_px, "{g:?}");
+    }
+}
+
+#[test]
+fn a_swapped_camera_id_or_a_group_of_one_camera_is_refused() {
+    let truth = reference_rig();
+    let groups = pairs_in_their_own_frames(&truth);
+    // s1's left and right pixels swapped: no pose fits them.
+    let mut points = measured(&truth, 0.0, 1);
+    for p in &mut points {
+        if let (Some(l), Some(r)) = (
+            p.seen.get("s1_left").copied(),
+            p.seen.get("s1_right").copied(),
+        ) {
+            p.seen.insert("s1_left".to_owned(), r);
+            p.seen.insert("s1_right".to_owned(), l);
+        }
+    }
+    // Triangulated swapped, every point lands behind the pair: refused, naming the camera.
+    assert!(matches!(
+        place(&groups, &points),
+        Err(ergocell_calibration::CalibrationError::BehindCamera { camera, .. }) if camera.starts_with("s1_")
+    ));
+    // A wrong click on every sighting of one pair (20 px off): a pose fits, but far too badly.
+    let mut points = measured(&truth, 0.0, 1);
+    for (i, p) in points.iter_mut().enumerate() {
+        for (id, px) in &mut p.seen {
+            if id.starts_with("s2_") {
+                let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
+                px.x += 20.0 * sign;
+            }
+        }
+    }
+    assert!(matches!(
+        place(&groups, &points),
+        Err(ergocell_calibration::CalibrationError::PoorFit { rms_px, .. }) if rms_px > 5.0
+    ));
+    let one = CameraRig::new(vec![truth.cameras()[0].clone()], &[], None).unwrap();
+    assert!(matches!(
+        place(&[one], &measured(&truth, 0.0, 1)[..0]),
+        Err(ergocell_calibration::CalibrationError::GroupOfOne { .. })
+    ));
+}
+
+#[test]
 fn points_on_one_line_do_not_fix_a_rotation() {
     let line: Vec<_> = (0..5)
         .map(|i| {

@@ -144,10 +144,9 @@ fn run_place(args: &PlaceArgs) -> anyhow::Result<()> {
     let points =
         ergocell_calibration::place::parse_points(&text, &args.points.display().to_string())
             .map_err(|e| UsageError(e.to_string()))?;
-    let placed = ergocell_calibration::place::place(&groups, &points).map_err(|e| match e {
-        CalibrationError::Camera(e) => anyhow::anyhow!(e),
-        other => UsageError(other.to_string()).into(),
-    })?;
+    // Every failure here comes of the files given (a wrong id, a wrong measurement): bad input.
+    let placed = ergocell_calibration::place::place(&groups, &points)
+        .map_err(|e| UsageError(e.to_string()))?;
     for (g, path) in placed.groups.iter().zip(&args.pairs) {
         let at = g.T_cell_group.translation.vector;
         println!(

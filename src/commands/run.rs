@@ -1120,6 +1120,43 @@ mod approval_summary_tests {
     }
 
     #[test]
+    fn refused_classes_are_grouped_by_their_reason() {
+        use ergocell_approvals::Refusal;
+        let summary = ApprovalSummary {
+            approved: vec![(TrajectoryClass::C2, vec!["alice@plant.example".to_owned()])],
+            refused: vec![
+                (TrajectoryClass::C1, Refusal::NotApproved),
+                (TrajectoryClass::C3, Refusal::NotApproved),
+            ],
+        };
+        assert_eq!(
+            summary.to_string(),
+            format!(
+                "robot: c2 (approved by alice@plant.example); the robot will not move for an \
+                 operator of c1, c3: {} (`ergocell trajectories verify` says more)",
+                Refusal::NotApproved
+            )
+        );
+        let none = ApprovalSummary {
+            approved: Vec::new(),
+            refused: vec![
+                (TrajectoryClass::C1, Refusal::NotApproved),
+                (TrajectoryClass::C2, Refusal::RolledBack),
+                (TrajectoryClass::C3, Refusal::NotApproved),
+            ],
+        };
+        assert_eq!(
+            none.to_string(),
+            format!(
+                "robot: no class can run, the robot will not move for any operator: c1, c3: {}; \
+                 c2: {} (`ergocell trajectories verify` says more)",
+                Refusal::NotApproved,
+                Refusal::RolledBack
+            )
+        );
+    }
+
+    #[test]
     fn every_class_is_asked_and_the_unapproved_are_named() {
         let mut cell = Unapproved(Vec::new());
         let summary = ApprovalSummary::of(&mut cell);

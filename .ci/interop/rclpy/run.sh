@@ -203,8 +203,14 @@ check(bool(late) and late[0]["state"] in states[step_before:] and late[0]["after
       f"a late joiner on session_state (transient local, keep last 1) gets the current state at once: {late[:1]}")
 
 print("== the moved cell: station and robot base turned 0.3 rad and shifted 0.2 m together")
+# With tests/moved_cell.rs (the demo's operator stands at the moved station; the session, the twin and
+# the markers put the handover point at the moved place), run taking the part from that operator
+# means run puts it there too.
 m, mrun = load("moved"), read("moved.run")
-mout = json.loads(read("moved.outcome.json"))
+try:
+    mout = json.loads(read("moved.outcome.json"))
+except Exception as e:
+    mout = {"exit_code": f"no outcome ({e})"}
 mtaken = [e for e in m["events"] if e.get("parts_taken", 0) >= 1]
 mt = mtaken[0] if mtaken else {}
 check(mout["exit_code"] == 0 and "class c2" in mrun and mt.get("parts_taken") == 1

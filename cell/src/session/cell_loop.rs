@@ -62,8 +62,8 @@ impl CellOutputs for () {
 #[error("{output} failed: {}", crate::error::chain(cause.as_ref()))]
 pub struct OutputError {
     pub output: &'static str,
-    #[source]
-    #[serde(serialize_with = "crate::error::serialize_cause")]
+    /// The output's error (its chain is in this error's message; the outcome file's `why`).
+    #[serde(rename = "why", serialize_with = "crate::error::serialize_cause")]
     pub cause: crate::error::Cause,
 }
 

@@ -67,8 +67,8 @@ impl Timed {
 #[error("{input} failed: {}", crate::error::chain(cause.as_ref()))]
 pub struct InputError {
     pub input: &'static str,
-    #[source]
-    #[serde(serialize_with = "crate::error::serialize_cause")]
+    /// The station's error (its chain is in this error's message; the outcome file's `why`).
+    #[serde(rename = "why", serialize_with = "crate::error::serialize_cause")]
     pub cause: Cause,
 }
 
