@@ -666,18 +666,25 @@ fn an_input_that_fails_ends_the_session_held_and_returns_its_error() {
             ..
         })
     ));
-    assert!(
-        matches!(
-            ran.interruption(),
-            Some(Interruption::InputFailed {
-                error: InputError {
-                    input: "scripted twin",
-                    ..
-                }
-            })
-        ),
-        "{:?}",
-        ran.end
+    let Some(Interruption::InputFailed {
+        error: InputError {
+            input: "scripted twin",
+            cause,
+        },
+    }) = ran.interruption()
+    else {
+        panic!("{:?}", ran.end);
+    };
+    // The session's end holds the station's own error, the one the driver returned.
+    assert_eq!(
+        cause.downcast_ref::<ScriptFailed>().map(|e| e.at_nanos),
+        Some(12_000 * MS)
+    );
+    // The outcome file names it under `why`, as its chain.
+    let end = serde_json::to_value(&outcome.ending.end).unwrap();
+    assert_eq!(
+        end["by"]["error"]["why"],
+        serde_json::json!(format!("scripted simulator failure at {} ns", 12_000 * MS))
     );
     assert!(matches!(
         ran.robot.controller.received.last(),
