@@ -40,6 +40,11 @@ pub fn witness_path(approvals_dir: &Path) -> PathBuf {
         .join(WITNESS_FILE)
 }
 
+/// The witness of the approvals file at `approvals_path` (its folder's, or the state folder's).
+fn witness_beside(approvals_path: &Path) -> PathBuf {
+    witness_path(approvals_path.parent().unwrap_or_else(|| Path::new(".")))
+}
+
 /// [`ergocell_approvals::witness_store::observe`] on this machine's witness for the approvals file
 /// at `approvals_path`.
 pub fn observe(
@@ -51,7 +56,7 @@ pub fn observe(
 ) -> Result<Vec<WitnessNote>, RobotError> {
     ergocell_approvals::witness_store::observe(
         &OsFiles::disk(),
-        &witness_path(approvals_path.parent().unwrap_or_else(|| Path::new("."))),
+        &witness_beside(approvals_path),
         approvals_path,
         class,
         file,
@@ -70,7 +75,7 @@ pub fn observe_text(
 ) -> Result<Vec<WitnessNote>, RobotError> {
     ergocell_approvals::witness_store::observe_text(
         &OsFiles::disk(),
-        &witness_path(approvals_path.parent().unwrap_or_else(|| Path::new("."))),
+        &witness_beside(approvals_path),
         approvals_path,
         class,
         text,

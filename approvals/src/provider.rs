@@ -471,7 +471,13 @@ impl FileTrajectories {
         let now_unix = (self.now_unix)();
         // The demo's approvals are its own, written afresh each run: no witness of them.
         let seen = match self.demo {
-            None => self.witness_check(&approvals_path, class, approvals.as_deref(), &trusted),
+            None => self.witness_check(
+                &approvals_path,
+                class,
+                approvals.as_deref(),
+                &trusted,
+                now_unix,
+            ),
             Some(_) => Ok(()),
         };
         let inputs = VerifyInputs {
@@ -497,14 +503,15 @@ impl FileTrajectories {
         Ok(approved)
     }
 
-    /// Checks an approvals file against the cell's witness and records it there, its notes as
-    /// warnings.
+    /// Checks an approvals file against the cell's witness and records it there, stamped with the
+    /// verification's one reading of the clock, its notes as warnings.
     fn witness_check(
         &self,
         path: &Path,
         class: TrajectoryClass,
         text: Option<&str>,
         trusted: &TrustedSigners,
+        now_unix: i64,
     ) -> Result<(), ProviderError> {
         let notes = witness_store::observe_text(
             self.files.as_ref(),
@@ -513,7 +520,7 @@ impl FileTrajectories {
             class,
             text,
             trusted,
-            (self.now_unix)(),
+            now_unix,
         )
         .map_err(|cause| ProviderError::Witness {
             path: path.to_owned(),
