@@ -125,6 +125,40 @@ fn report_opens_offline_from_file_in_headless_chromium() {
 }
 
 #[test]
+fn report_prints_to_pdf_with_the_findings_on_page_one_in_headless_chromium() {
+    // The print stylesheet at an A4 page's width: the findings first and on page 1 (time at each
+    // action level, the worst moments with stills, a recommendation for each region that needs
+    // one), no panel wider than the page or clipped, then the session's pages (web/e2e/print.e2e.mjs).
+    if common::skip_browser_test() {
+        return;
+    }
+    let rec = tmp("browser-print.mcap");
+    demo(&rec);
+    let html = tmp("browser-print.html");
+    let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(root())
+        .args(["report", rec.to_str().unwrap(), "--force", "--out"])
+        .arg(&html)
+        .stdout(Stdio::null())
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let pdf = tmp("report.pdf");
+    let shot = tmp("report-page1.png");
+    let _ = std::fs::remove_file(&pdf);
+    node(
+        "web/e2e/print.e2e.mjs",
+        &[
+            html.to_str().unwrap(),
+            pdf.to_str().unwrap(),
+            shot.to_str().unwrap(),
+        ],
+    );
+    assert!(std::fs::read(&pdf).unwrap().starts_with(b"%PDF-"));
+    assert!(std::fs::read(&shot).unwrap().starts_with(b"\x89PNG"));
+}
+
+#[test]
 fn an_overview_report_plays_and_says_what_it_holds_in_headless_chromium() {
     if common::skip_browser_test() {
         return;

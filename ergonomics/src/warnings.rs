@@ -224,49 +224,123 @@ fn rise_score(region: BodyRegion, a: &SideAssessment, margin_rad: f64) -> u8 {
     }
 }
 
+/// What to change for a region's posture: the advice a warning gives, and the report's
+/// recommendation for the region (one wording for both).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Advice {
+    /// An upper arm reaching back.
+    BringInFront,
+    /// An upper arm raised.
+    LowerOrCloser,
+    /// An upper arm raised with the shoulder lifted.
+    LowerAndRelaxShoulder,
+    /// A forearm across the body or out to the side.
+    ForearmInFront,
+    /// An elbow outside 60–100°.
+    ElbowCloser,
+    /// A bent wrist.
+    StraightenWrist,
+    /// A neck bent forward.
+    RaiseWorkPiece,
+    /// A neck bent back.
+    NeckLowerOrInFront,
+    /// A trunk bent forward.
+    TrunkRaiseOrCloser,
+    /// A trunk twisted (and not bent sideways).
+    TurnFeet,
+    /// Weight on one leg or a foot off the floor.
+    BothFeet,
+}
+
+impl Advice {
+    /// The advice in the operator's words.
+    pub const fn text(self) -> &'static str {
+        match self {
+            Advice::BringInFront | Advice::ForearmInFront => "bring the work in front of you",
+            Advice::LowerOrCloser => "lower the work piece or bring it closer",
+            Advice::LowerAndRelaxShoulder => "lower the work piece and relax the shoulder",
+            Advice::ElbowCloser => "keep the elbow between 60° and 100°: bring the work closer",
+            Advice::StraightenWrist => "straighten the wrist: change the grip or the tool angle",
+            Advice::RaiseWorkPiece => "raise the work piece",
+            Advice::NeckLowerOrInFront => "lower the work piece or bring it in front of you",
+            Advice::TrunkRaiseOrCloser => "raise the work or bring it closer",
+            Advice::TurnFeet => "turn your feet towards the work",
+            Advice::BothFeet => "stand on both feet",
+        }
+    }
+
+    /// The advice for a region in a posture (what [`describe`] says).
+    pub fn for_posture(region: BodyRegion, i: &RulaInput) -> Self {
+        match region {
+            BodyRegion::UpperArm if i.upper_arm_flexion_deg < 0.0 => Advice::BringInFront,
+            BodyRegion::UpperArm if i.shoulder_raised => Advice::LowerAndRelaxShoulder,
+            BodyRegion::UpperArm => Advice::LowerOrCloser,
+            BodyRegion::LowerArm if i.lower_arm_across_midline_or_out_to_side => {
+                Advice::ForearmInFront
+            }
+            BodyRegion::LowerArm => Advice::ElbowCloser,
+            BodyRegion::Wrist => Advice::StraightenWrist,
+            BodyRegion::Neck if i.neck_flexion_deg < 0.0 => Advice::NeckLowerOrInFront,
+            BodyRegion::Neck => Advice::RaiseWorkPiece,
+            BodyRegion::Trunk if i.trunk_twisted && !i.trunk_side_bending => Advice::TurnFeet,
+            BodyRegion::Trunk => Advice::TrunkRaiseOrCloser,
+            BodyRegion::Legs => Advice::BothFeet,
+        }
+    }
+
+    /// The advice for a region from its main angle alone (degrees, the region's flexion as a
+    /// warning records it; `None` when not known): what a report recommends for a region whose
+    /// worst posture it knows only by that angle.
+    pub fn for_angle(region: BodyRegion, angle_deg: Option<f64>) -> Self {
+        let back = angle_deg.is_some_and(|a| a < 0.0);
+        match region {
+            BodyRegion::UpperArm if back => Advice::BringInFront,
+            BodyRegion::UpperArm => Advice::LowerOrCloser,
+            BodyRegion::LowerArm => Advice::ElbowCloser,
+            BodyRegion::Wrist => Advice::StraightenWrist,
+            BodyRegion::Neck if back => Advice::NeckLowerOrInFront,
+            BodyRegion::Neck => Advice::RaiseWorkPiece,
+            BodyRegion::Trunk => Advice::TrunkRaiseOrCloser,
+            BodyRegion::Legs => Advice::BothFeet,
+        }
+    }
+}
+
 /// Plain-words description and advice for a region in a posture.
 pub fn describe(region: BodyRegion, side: Option<Side>, i: &RulaInput) -> String {
     let who = |part: &str| match side {
         Some(s) => format!("{} {part}", capitalise(s.name())),
         None => capitalise(part),
     };
+    let advice = Advice::for_posture(region, i).text();
     match region {
         BodyRegion::UpperArm => {
             let a = i.upper_arm_flexion_deg;
             if a < 0.0 {
-                format!(
-                    "{} reaching back {:.0}° — bring the work in front of you",
-                    who("upper arm"),
-                    -a
-                )
+                format!("{} reaching back {:.0}° — {advice}", who("upper arm"), -a)
             } else if i.shoulder_raised {
                 format!(
-                    "{} raised {a:.0}° with the shoulder lifted — lower the work piece and relax the shoulder",
+                    "{} raised {a:.0}° with the shoulder lifted — {advice}",
                     who("upper arm")
                 )
             } else {
-                format!(
-                    "{} raised {a:.0}° — lower the work piece or bring it closer",
-                    who("upper arm")
-                )
+                format!("{} raised {a:.0}° — {advice}", who("upper arm"))
             }
         }
         BodyRegion::LowerArm => {
             let a = i.lower_arm_flexion_deg;
             if i.lower_arm_across_midline_or_out_to_side {
                 format!(
-                    "{} working across the body or out to the side (elbow {a:.0}°) — bring the work in front of you",
+                    "{} working across the body or out to the side (elbow {a:.0}°) — {advice}",
                     who("forearm")
                 )
             } else {
-                format!(
-                    "{} at {a:.0}° — keep the elbow between 60° and 100°: bring the work closer",
-                    who("elbow")
-                )
+                format!("{} at {a:.0}° — {advice}", who("elbow"))
             }
         }
         BodyRegion::Wrist => format!(
-            "{} bent {:.0}°{} — straighten the wrist: change the grip or the tool angle (wrist scores are the least reliable part of RULA)",
+            "{} bent {:.0}°{} — {advice} (wrist scores are the least reliable part of RULA)",
             who("wrist"),
             i.wrist_flexion_deg.abs(),
             if i.wrist_bent_from_midline {
@@ -284,27 +358,30 @@ pub fn describe(region: BodyRegion, side: Option<Side>, i: &RulaInput) -> String
                 (false, false) => "",
             };
             if a < 0.0 {
-                format!(
-                    "Neck bent back {:.0}°{extra} — lower the work piece or bring it in front of you",
-                    -a
-                )
+                format!("Neck bent back {:.0}°{extra} — {advice}", -a)
             } else {
-                format!("Neck bent forward {a:.0}°{extra} — raise the work piece")
+                format!("Neck bent forward {a:.0}°{extra} — {advice}")
             }
         }
         BodyRegion::Trunk => {
             let a = i.trunk_flexion_deg.max(0.0);
+            // A twist alone: the advice is to turn the feet (said after the twist, as before).
             let extra = match (i.trunk_twisted, i.trunk_side_bending) {
                 (true, true) => ", twisted and leaning sideways",
-                (true, false) => ", twisted — turn your feet towards the work",
+                (true, false) => ", twisted",
                 (false, true) => ", leaning sideways",
                 (false, false) => "",
             };
-            format!("Trunk bent forward {a:.0}°{extra} — raise the work or bring it closer")
+            if matches!(Advice::for_posture(region, i), Advice::TurnFeet) {
+                format!(
+                    "Trunk bent forward {a:.0}°{extra} — {advice}; {}",
+                    Advice::TrunkRaiseOrCloser.text()
+                )
+            } else {
+                format!("Trunk bent forward {a:.0}°{extra} — {advice}")
+            }
         }
-        BodyRegion::Legs => {
-            "Weight on one leg or a foot off the floor — stand on both feet".to_owned()
-        }
+        BodyRegion::Legs => format!("Weight on one leg or a foot off the floor — {advice}"),
     }
 }
 
@@ -466,5 +543,46 @@ fn step(state: &mut RegionState, stamp: i64, hi: u8, lo: u8, angle: Option<f64>,
             *d = None;
         }
         state.up = [None; MAX_LEVEL + 1];
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The warning's words and the report's recommendation come from one place: every description
+    /// carries its posture's advice, and the advice follows the posture's direction.
+    #[test]
+    fn each_warning_says_the_advice_its_posture_gets() {
+        let mut back = RulaInput::neutral();
+        back.upper_arm_flexion_deg = -30.0;
+        back.neck_flexion_deg = -15.0;
+        let mut forward = RulaInput::neutral();
+        forward.upper_arm_flexion_deg = 70.0;
+        forward.neck_flexion_deg = 25.0;
+        forward.trunk_flexion_deg = 40.0;
+        let mut twisted = forward;
+        twisted.trunk_twisted = true;
+        let cases = [
+            (BodyRegion::UpperArm, &back, Advice::BringInFront),
+            (BodyRegion::UpperArm, &forward, Advice::LowerOrCloser),
+            (BodyRegion::Neck, &back, Advice::NeckLowerOrInFront),
+            (BodyRegion::Neck, &forward, Advice::RaiseWorkPiece),
+            (BodyRegion::Trunk, &forward, Advice::TrunkRaiseOrCloser),
+            (BodyRegion::Trunk, &twisted, Advice::TurnFeet),
+            (BodyRegion::LowerArm, &forward, Advice::ElbowCloser),
+            (BodyRegion::Wrist, &forward, Advice::StraightenWrist),
+            (BodyRegion::Legs, &forward, Advice::BothFeet),
+        ];
+        for (region, input, advice) in cases {
+            assert_eq!(Advice::for_posture(region, input), advice, "{region:?}");
+            let words = describe(region, Some(Side::Right), input);
+            assert!(words.contains(advice.text()), "{words}");
+            // From the main angle alone the same, except what needs the adjustments (the twist).
+            if advice != Advice::TurnFeet {
+                let angle = region_angle(region, input);
+                assert_eq!(Advice::for_angle(region, angle), advice, "{region:?}");
+            }
+        }
     }
 }

@@ -2,9 +2,10 @@
 //!
 //! Frames are the recorded `OperatorPose` messages; each is joined with the `ErgonomicState` of the
 //! same capture stamp (the session records both from one fused frame). Strain per landmark is the
-//! RULA band of the body region the landmark stands for, on its own side
-//! ([`BodyRegion::of_landmark`]), scaled to 0..1 by that region's score range
-//! ([`BodyRegion::max_score`]). The lines drawn are the skeleton crate's [`DRAWN_BONES`]. The
+//! RULA score of the body region the landmark stands for, on its own side
+//! ([`BodyRegion::of_landmark`]), on one scale for every region: 0 for score 1 … 1 for score 7
+//! (RULA's highest, [`GRAND_SCORE_MAX`]), so one colour means one score everywhere (legs at 2 are
+//! not the red of an upper arm at 6). The lines drawn are the skeleton crate's [`DRAWN_BONES`]. The
 //! per-region rows are `ergocell rula track`'s summary ([`ergocell_ergonomics::summary`]) of the
 //! recorded scores: time-weighted, gaps not counted, so the two report the same numbers for one
 //! session. Angles are turned into degrees here, the report boundary.
@@ -31,7 +32,10 @@ use ergocell_ergonomics::UpVector;
 use ergocell_skeleton::{Landmark, Side, Skeleton3, DRAWN_BONES, LANDMARK_COUNT};
 use serde::Serialize;
 
+pub use crate::findings::Findings;
+use crate::findings::{findings, FrameBrief};
 use crate::read::{Recording, Stamped};
+use ergocell_ergonomics::warnings::WarningConfig;
 
 /// What the page renders: one session (`ergocell review`) or two side by side (`report --compare`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -69,6 +73,9 @@ pub struct SessionReview {
     /// The session summary the rows come from (`ergocell rula track`'s numbers for the same frames):
     /// action levels, regions, grand and REBA scores, exposure. `report --summary-csv` writes it.
     pub summary: SessionSummary,
+    /// The report's first page: time at each action level, the worst moments, per region what was
+    /// found and what to do ([`crate::findings`]).
+    pub findings: Findings,
     /// Present when `frames` holds not every recorded frame (a long recording,
     /// [`crate::overview`]): which ones it holds. The summary, rows and distributions are still
     /// over every frame.
@@ -151,7 +158,8 @@ pub struct Frames {
     pub t: Vec<f64>,
     /// 99 numbers per frame (x, y, z of each landmark, metres); `None` where not fused.
     pub positions: Vec<Vec<Option<f64>>>,
-    /// 33 numbers per frame in 0..1 (0 lowest strain); `None` where the region was not scored.
+    /// 33 numbers per frame in 0..1: the RULA score of the landmark's region, 0 for score 1 … 1 for
+    /// score 7, one scale for every region; `None` where the region was not scored.
     pub strain: Vec<Vec<Option<f64>>>,
     pub grand_left: Vec<Option<u8>>,
     pub grand_right: Vec<Option<u8>>,
@@ -249,6 +257,9 @@ pub struct Warning {
     pub region: String,
     pub side: String,
     pub score: u8,
+    /// The region's angle when the warning was raised, changed or cleared, degrees; `None` when not
+    /// finite (the legs have none).
+    pub angle_deg: Option<f64>,
     pub action_level: u8,
     pub message: String,
     /// The probability that the warning's band was right when it was raised, changed or cleared;
@@ -267,6 +278,9 @@ pub struct RegionStats {
     /// "left", "right", or "" for the neck, trunk and legs (scored once for the body).
     pub side: &'static str,
     pub max_score: u8,
+    /// Which scale the scores are on: the page colours RULA's on one scale for every row (score 1 …
+    /// 7), the others each on its own.
+    pub scale: ScoreScale,
     /// Time-weighted mean score; `None` when never scored.
     pub mean: Option<f64>,
     /// Share of the scored time at score 1..=max_score (time-weighted, gaps not counted).
@@ -276,6 +290,18 @@ pub struct RegionStats {
     /// Exposure over time: for each score from 2 to the highest that occurred, the stretches at or
     /// above it (episodes, longest, total; [`ergocell_ergonomics::summary::Exposure`]).
     pub exposure: Vec<Exposure>,
+}
+
+/// The scale a row's scores are on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ScoreScale {
+    /// A RULA region or grand score, 1..=7 at most.
+    Rula,
+    /// RULA's action level, 1..=4.
+    ActionLevel,
+    /// A REBA score, 1..=15.
+    Reba,
 }
 
 /// The distribution of one joint angle, degrees.
@@ -294,13 +320,14 @@ pub struct AngleStats {
     pub score_edges_deg: Vec<f64>,
 }
 
-/// The strain of a region score, 0 (score 1) .. 1 (the region's maximum).
-fn strain_of(region: BodyRegion, score: u8) -> Option<f64> {
+/// The strain of a RULA score on the page's one scale: 0 (score 1) .. 1 (score 7, RULA's highest),
+/// whatever the region; `None` for 0 (not scored).
+fn strain_of(score: u8) -> Option<f64> {
     if score == 0 {
         return None;
     }
-    let max = f64::from(region.max_score());
-    Some(((f64::from(score) - 1.0) / (max - 1.0)).clamp(0.0, 1.0))
+    let top = f64::from(GRAND_SCORE_MAX);
+    Some(((f64::from(score) - 1.0) / (top - 1.0)).clamp(0.0, 1.0))
 }
 
 fn scored(s: &RulaSide) -> Option<&RulaSide> {
@@ -344,8 +371,7 @@ fn frame_strain(e: Option<&ErgonomicState>) -> Vec<Option<f64>> {
         .iter()
         .map(|&lm| {
             let (region, side) = BodyRegion::of_landmark(lm);
-            let of =
-                |s: Option<ScoredSide>| s.and_then(|s| strain_of(region, region.score(&s.scores)));
+            let of = |s: Option<ScoredSide>| s.and_then(|s| strain_of(region.score(&s.scores)));
             match side {
                 Some(Side::Left) => of(left),
                 Some(Side::Right) => of(right),
@@ -446,6 +472,7 @@ pub(crate) fn analyse_with(
         (by_stamp, None)
     };
     let mut frames = Frames::default();
+    let mut briefs: Vec<FrameBrief> = Vec::new();
     let mut angle_samples = AngleSamples::default();
     for p in poses {
         let m = &p.message;
@@ -489,6 +516,14 @@ pub(crate) fn analyse_with(
             .action_right
             .push(side(e.map(|e| &e.right), |s| s.action_level));
         frames.action_level.push(e.map_or(0, |e| e.action_level));
+        briefs.push(FrameBrief {
+            t: secs(t, t0),
+            action_level: e.map_or(0, |e| e.action_level),
+            left: e.and_then(|e| scored_side(&e.left, None)).map(|s| s.scores),
+            right: e
+                .and_then(|e| scored_side(&e.right, None))
+                .map(|s| s.scores),
+        });
         let r = reba_at(t);
         let reba_score = |s: Option<&RebaSide>| s.filter(|s| s.scored).map(|s| s.reba_score);
         frames.reba_left.push(reba_score(r.map(|r| &r.left)));
@@ -536,6 +571,34 @@ pub(crate) fn analyse_with(
         (summary, angle_samples.stats(), None)
     };
     let regions = region_rows(&summary);
+    let warnings: Vec<Warning> = rec
+        .warnings
+        .iter()
+        .map(|w| Warning {
+            // The frame the warning was raised on (its header), on the frames' clock.
+            t: secs(header_or_log_time(&w.message.header, w.log_time_nanos), t0),
+            kind: w.message.kind.clone(),
+            region: w.message.region.clone(),
+            side: w.message.side.clone(),
+            score: w.message.region_score,
+            angle_deg: Some(w.message.angle_deg)
+                .filter(|a| a.is_finite())
+                .map(|a| round_to(a, 1)),
+            action_level: w.message.action_level,
+            message: w.message.message.clone(),
+            band_probability: Some(w.message.band_probability)
+                .filter(|p| p.is_finite() && (0.0..=1.0).contains(p))
+                .map(|p| round_to(p, 3)),
+            near_limit: w.message.near_limit,
+        })
+        .collect();
+    let findings = findings(
+        &summary,
+        &briefs,
+        &warnings,
+        &angles,
+        &WarningConfig::default(),
+    );
 
     SessionReview {
         label: label.to_owned(),
@@ -555,27 +618,11 @@ pub(crate) fn analyse_with(
         up: [0.0, 0.0, 1.0],
         frames,
         robot,
-        warnings: rec
-            .warnings
-            .iter()
-            .map(|w| Warning {
-                // The frame the warning was raised on (its header), on the frames' clock.
-                t: secs(header_or_log_time(&w.message.header, w.log_time_nanos), t0),
-                kind: w.message.kind.clone(),
-                region: w.message.region.clone(),
-                side: w.message.side.clone(),
-                score: w.message.region_score,
-                action_level: w.message.action_level,
-                message: w.message.message.clone(),
-                band_probability: Some(w.message.band_probability)
-                    .filter(|p| p.is_finite() && (0.0..=1.0).contains(p))
-                    .map(|p| round_to(p, 3)),
-                near_limit: w.message.near_limit,
-            })
-            .collect(),
+        warnings,
         regions,
         angles,
         summary,
+        findings,
         overview,
     }
 }
@@ -810,27 +857,33 @@ fn region_rows(summary: &SessionSummary) -> Vec<RegionStats> {
         .zip(summary.action_level_share)
         .filter(|(_, x)| *x > 0.0)
         .collect();
-    rows.push(region_stats(
-        "action level".to_owned(),
-        "",
-        4,
-        &levels,
-        summary.scored_frames,
-        ergocell_ergonomics::summary::mean_score(&levels),
-        summary.action_level_exposure.clone(),
-    ));
+    rows.push(RegionStats {
+        scale: ScoreScale::ActionLevel,
+        ..region_stats(
+            "action level".to_owned(),
+            "",
+            4,
+            &levels,
+            summary.scored_frames,
+            ergocell_ergonomics::summary::mean_score(&levels),
+            summary.action_level_exposure.clone(),
+        )
+    });
     // REBA beside RULA, per side (only when the recording has it).
     for side in Side::BOTH {
         if let Some(share) = summary.reba(side) {
-            rows.push(region_stats(
-                "REBA score".to_owned(),
-                side.name(),
-                ergocell_ergonomics::reba::REBA_SCORE_MAX,
-                &share.share_by_score,
-                share.frames,
-                share.mean_score(),
-                Vec::new(),
-            ));
+            rows.push(RegionStats {
+                scale: ScoreScale::Reba,
+                ..region_stats(
+                    "REBA score".to_owned(),
+                    side.name(),
+                    ergocell_ergonomics::reba::REBA_SCORE_MAX,
+                    &share.share_by_score,
+                    share.frames,
+                    share.mean_score(),
+                    Vec::new(),
+                )
+            });
         }
     }
     rows
@@ -855,6 +908,7 @@ fn region_stats(
         name,
         side,
         max_score: max,
+        scale: ScoreScale::Rula,
         mean,
         time_share,
         samples,
@@ -1255,22 +1309,17 @@ mod tests {
         ] {
             assert_eq!(at(lm), Some(0.0), "{lm}");
         }
-        for lm in [
-            Landmark::RightShoulder,
-            Landmark::RightElbow,
-            Landmark::RightThumb,
-        ] {
-            assert_eq!(at(lm), Some(1.0), "{lm}");
-        }
+        // One scale: score k is (k - 1) / 6 in every region, so each region's top shows its own
+        // colour (upper arm 6, forearm 3, wrist 4).
+        let of = |k: u8| Some((f64::from(k) - 1.0) / 6.0);
+        assert_eq!(at(Landmark::RightShoulder), of(6));
+        assert_eq!(at(Landmark::RightElbow), of(3));
+        assert_eq!(at(Landmark::RightThumb), of(4));
         // Face, hips and legs: scored once for the body, shown at the worse worksheet.
-        for lm in [
-            Landmark::MouthLeft,
-            Landmark::LeftEye,
-            Landmark::LeftHip,
-            Landmark::LeftHeel,
-        ] {
-            assert_eq!(at(lm), Some(1.0), "{lm}");
+        for lm in [Landmark::MouthLeft, Landmark::LeftEye, Landmark::LeftHip] {
+            assert_eq!(at(lm), of(6), "{lm}");
         }
+        assert_eq!(at(Landmark::LeftHeel), of(2));
         // An unscored side shows nothing; no ergonomics at all, nothing anywhere.
         let one_sided = ErgonomicState {
             left: RulaSide::default(),
@@ -1278,18 +1327,19 @@ mod tests {
         };
         let strain = frame_strain(Some(&one_sided));
         assert_eq!(strain[Landmark::LeftWrist.index()], None);
-        assert_eq!(strain[Landmark::Nose.index()], Some(1.0));
+        assert_eq!(strain[Landmark::Nose.index()], of(6));
         assert!(frame_strain(None).iter().all(Option::is_none));
     }
 
     #[test]
-    fn strain_spans_zero_to_one_over_each_regions_score_range() {
-        for r in BodyRegion::ALL {
-            assert_eq!(strain_of(r, 1), Some(0.0));
-            assert_eq!(strain_of(r, r.max_score()), Some(1.0));
-            assert_eq!(strain_of(r, 0), None);
-        }
-        assert_eq!(strain_of(BodyRegion::LowerArm, 2), Some(0.5));
+    fn strain_is_one_scale_from_score_1_to_rulas_highest() {
+        assert_eq!(strain_of(1), Some(0.0));
+        assert_eq!(strain_of(GRAND_SCORE_MAX), Some(1.0));
+        assert_eq!(strain_of(0), None);
+        // Legs at their top (2) are far from an upper arm at its top (6).
+        let legs = strain_of(BodyRegion::Legs.max_score()).unwrap();
+        let upper_arm = strain_of(BodyRegion::UpperArm.max_score()).unwrap();
+        assert!((legs - 1.0 / 6.0).abs() < 1e-12 && (upper_arm - 5.0 / 6.0).abs() < 1e-12);
     }
 
     #[test]

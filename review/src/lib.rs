@@ -10,6 +10,8 @@
 //!   Recordings made before a message carried a fact as a field are read in one module, `legacy`:
 //!   the older layouts, and the only facts read from words (a leg's, a part taken's).
 //! - [`analysis`]: the messages → [`ReviewData`], the JSON the page renders (`version` 1).
+//! - [`findings`]: the report's first page — time at each action level, the worst moments, and per
+//!   body region what was found and the warnings' advice for it.
 //! - [`overview`]: a long recording (a shift) in bounded memory: read twice, streamed; its numbers
 //!   over every frame, its page the overview and the worst moments.
 //! - [`exposure`]: many recordings, streamed, → exposure per operator, day and week, task segment
@@ -26,6 +28,7 @@
 pub mod analysis;
 pub mod export;
 pub mod exposure;
+pub mod findings;
 mod legacy;
 pub mod overview;
 pub mod page;

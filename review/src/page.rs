@@ -122,6 +122,12 @@ mod tests {
             regions: vec![],
             angles: vec![],
             summary: ergocell_ergonomics::summary::SummaryBuilder::new(1).finish(),
+            findings: crate::findings::Findings {
+                action_level_secs: [0.0; 4],
+                unscored_secs: 0.0,
+                worst_moments: vec![],
+                regions: vec![],
+            },
             overview: None,
         }
     }

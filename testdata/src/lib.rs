@@ -89,7 +89,11 @@ fn record_skip(relative: &str) {
 /// At the test binary's exit: its skips, and the run's so far.
 extern "C" fn report_skips() {
     let skipped = std::mem::take(&mut *SKIPPED.lock().unwrap_or_else(PoisonError::into_inner));
-    let _ = writeln!(std::io::stderr(), "{}", skip_summary(&skipped, run_tally(&skipped)));
+    let _ = writeln!(
+        std::io::stderr(),
+        "{}",
+        skip_summary(&skipped, run_tally(&skipped))
+    );
 }
 
 /// One line: `skipped` (one path per skipped test) counted per path, and the run's total so far.
@@ -141,7 +145,7 @@ fn append_and_count(file: &Path, skipped: &[String]) -> Option<usize> {
         .append(true)
         .open(file)
         .ok()?;
-    let lines: String = skipped.iter().map(|p| format!("{p}\n")).collect();
+    let lines: String = skipped.iter().flat_map(|p| [p.as_str(), "\n"]).collect();
     f.write_all(lines.as_bytes()).ok()?;
     drop(f);
     Some(std::fs::read_to_string(file).ok()?.lines().count())
@@ -165,7 +169,11 @@ mod tests {
 
     #[test]
     fn the_summary_counts_skips_per_path_and_names_the_run_total() {
-        let skipped = ["data/a".to_owned(), "data/b".to_owned(), "data/a".to_owned()];
+        let skipped = [
+            "data/a".to_owned(),
+            "data/b".to_owned(),
+            "data/a".to_owned(),
+        ];
         let line = skip_summary(&skipped, Some(7));
         let a = shared("data/a").display().to_string();
         let b = shared("data/b").display().to_string();
@@ -184,10 +192,8 @@ mod tests {
 
     #[test]
     fn the_run_tally_adds_up_across_binaries() {
-        let file = std::env::temp_dir().join(format!(
-            "ergocell-skip-tally-test-{}",
-            std::process::id()
-        ));
+        let file =
+            std::env::temp_dir().join(format!("ergocell-skip-tally-test-{}", std::process::id()));
         let _ = std::fs::remove_file(&file);
         assert_eq!(append_and_count(&file, &["x".to_owned()]), Some(1));
         assert_eq!(

@@ -141,14 +141,15 @@ function session(label, { frames = 300, seed = 1, reachScale = 1, robot = true, 
       ul.push(i % 47 >= 12 && i % 47 <= 17);
       ur.push(i >= 165 && i < 180);
       const st = new Array(33).fill(null);
-      const norm = (s, m) => (s - 1) / (m - 1);
-      st[11] = norm(uaL, 6); st[12] = norm(uaR, 6);
-      st[13] = norm(laL, 3); st[14] = norm(laR, 3);
-      for (const j of [15, 17, 19, 21]) st[j] = norm(wrL, 4);
-      for (const j of [16, 18, 20, 22]) st[j] = norm(wrR, 4);
-      st[0] = norm(nk, 6); st[7] = st[0]; st[8] = st[0];
-      st[23] = norm(tr, 6); st[24] = st[23];
-      for (const j of [25, 26, 27, 28, 29, 30, 31, 32]) st[j] = norm(lg, 2);
+      // One scale for every region, as the Rust side writes it: score 1 → 0 … score 7 → 1.
+      const norm = (s) => (s - 1) / 6;
+      st[11] = norm(uaL); st[12] = norm(uaR);
+      st[13] = norm(laL); st[14] = norm(laR);
+      for (const j of [15, 17, 19, 21]) st[j] = norm(wrL);
+      for (const j of [16, 18, 20, 22]) st[j] = norm(wrR);
+      st[0] = norm(nk); st[7] = st[0]; st[8] = st[0];
+      st[23] = norm(tr); st[24] = st[23];
+      for (const j of [25, 26, 27, 28, 29, 30, 31, 32]) st[j] = norm(lg);
       strain.push(st.map((v) => (v == null ? null : r2(v))));
       angleSamples['trunk flexion|'].push(trunk / deg);
       angleSamples['neck flexion|'].push(neck / deg);

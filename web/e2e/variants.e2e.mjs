@@ -38,8 +38,13 @@ async function newFields(b, name) {
     key: document.querySelector('#angles .angle-legend')?.textContent ?? null,
     titles: [...document.querySelectorAll('#angles .hist')].map((e) => e.title).filter(Boolean),
     ramp: document.querySelector('.legend .ramp-note')?.textContent ?? '',
+    swatches: [...document.querySelectorAll('.legend .score-ramp span')].map((e) => [e.textContent, getComputedStyle(e).backgroundColor]),
   }));
-  if (!/per region/i.test(r.ramp)) fail(`${name}: the strain legend does not say the scale is per region ("${r.ramp}")`);
+  // The legend: the seven RULA scores, each its own colour, and one scale for every region.
+  const labels = r.swatches.map(([k]) => k).join(' ');
+  const colours = new Set(r.swatches.map(([, c]) => c));
+  if (labels !== '1 2 3 4 5 6 7' || colours.size !== 7) fail(`${name}: the colour legend should show scores 1 … 7 in seven colours, shows "${labels}" in ${colours.size}`);
+  if (!/the same in every region/i.test(r.ramp)) fail(`${name}: the legend does not say one colour is one score in every region ("${r.ramp}")`);
   if (legacy) {
     if (r.unc.length || r.legend || r.key || r.titles.length) fail(`${name}: data without the new fields shows them: ${JSON.stringify(r)}`);
     pass(`${name}: no uncertain marks or score edges without the fields (readout "${r.readout}")`);

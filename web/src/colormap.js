@@ -1,4 +1,5 @@
-// Strain colormap: 0 = lowest strain (deep blue) … 1 = highest strain (deep red).
+// Strain colormap: 0 = RULA score 1 (deep blue) … 1 = score 7, RULA's highest (deep red): one
+// scale for every region, so one colour means one score everywhere.
 // Stops of ColorBrewer's RdYlBu, reversed (diverging, readable for most colour-vision deficiencies).
 const STOPS = [
   [0x31, 0x36, 0x95], [0x45, 0x75, 0xb4], [0x74, 0xad, 0xd1], [0xab, 0xd9, 0xe9], [0xe0, 0xf3, 0xf8],
@@ -24,13 +25,15 @@ export function strainCss(s) {
   return `rgb(${r},${g},${b})`;
 }
 
-/** CSS linear-gradient for the legend. */
-export function gradientCss() {
-  const parts = STOPS.map((c, i) => `rgb(${c[0]},${c[1]},${c[2]}) ${((i / (STOPS.length - 1)) * 100).toFixed(0)}%`);
-  return `linear-gradient(to right, ${parts.join(', ')})`;
+/** RULA's highest score (the grand score's top); a region's scores sit on the same scale. */
+export const RULA_TOP = 7;
+
+/** Colour of RULA score k (1-based): the same in every region (the 3D view's colours). */
+export function scoreCss(k) {
+  return strainCss((k - 1) / (RULA_TOP - 1));
 }
 
-/** Colour of RULA score k (1-based) in a region whose worst score is max. */
-export function scoreCss(k, max) {
-  return strainCss(max > 1 ? (k - 1) / (max - 1) : 0);
+/** Colour of level k (1-based) of a scale with `levels` levels that is not RULA's (REBA, action levels). */
+export function levelCss(k, levels) {
+  return strainCss(levels > 1 ? (k - 1) / (levels - 1) : 0);
 }

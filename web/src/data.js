@@ -225,6 +225,44 @@ export function normalizeSession(s, index) {
       .filter((a) => a && typeof a === 'object')
       .map((a) => ({ ...a, score_edges_deg: scoreEdges(a.score_edges_deg) })),
     overview: overview(s.overview),
+    // The report's first page (absent in data written before it: no findings page).
+    findings: findings(s.findings),
+  };
+}
+
+/** The first page's findings, every part checked (absent or malformed: null). */
+function findings(f) {
+  if (!f || typeof f !== 'object') return null;
+  const secs = arr(f.action_level_secs).map(num);
+  if (secs.length !== 4 || secs.some((v) => v === null)) return null;
+  return {
+    action_level_secs: secs,
+    unscored_secs: num(f.unscored_secs) ?? 0,
+    worst_moments: arr(f.worst_moments)
+      .filter((m) => m && num(m.t) !== null)
+      .map((m) => ({
+        t: m.t,
+        action_level: num(m.action_level) ?? 0,
+        grand_left: num(m.grand_left),
+        grand_right: num(m.grand_right),
+        regions: arr(m.regions).filter((r) => r && typeof r === 'object').map((r) => ({ region: str(r.region), side: str(r.side), score: num(r.score) })),
+      })),
+    regions: arr(f.regions)
+      .filter((r) => r && typeof r === 'object')
+      .map((r) => ({
+        region: str(r.region),
+        side: str(r.side),
+        verdict: str(r.verdict),
+        warn_at: num(r.warn_at),
+        highest: num(r.highest),
+        top: num(r.top),
+        share_at_warn: num(r.share_at_warn) ?? 0,
+        secs_at_warn: num(r.secs_at_warn) ?? 0,
+        episodes_at_warn: num(r.episodes_at_warn) ?? 0,
+        longest_at_warn_secs: num(r.longest_at_warn_secs) ?? 0,
+        warnings_raised: num(r.warnings_raised) ?? 0,
+        advice_text: r.advice_text == null ? null : String(r.advice_text),
+      })),
   };
 }
 

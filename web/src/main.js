@@ -6,7 +6,8 @@ import { loadData, normalizeSession, nearestFrame, frameAtOrBefore, legAt } from
 import { SkeletonView } from './view3d.js';
 import { createTimeline, SERIES_COLORS, legColor } from './timeline.js';
 import { renderFacts, renderStates, renderWarnings, renderRobot, renderRegions, renderSegments, renderAngles, esc, SESSION_COLORS } from './panels.js';
-import { gradientCss } from './colormap.js';
+import { scoreCss, strainRgb, RULA_TOP } from './colormap.js';
+import { renderFindings } from './findings.js';
 
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
 // Inline SVG icons: the system fonts may lack the media-control glyphs.
@@ -37,6 +38,17 @@ function showMessage(app, title, detail) {
   app.innerHTML = `<header class="topbar"><div class="brand">ergocell <span>review</span></div></header><div class="message-card"><h1>${esc(title)}</h1><p>${esc(detail)}</p></div>`;
 }
 
+/** The legend's swatches: RULA scores 1 … 7 in their colours, each labelled. */
+function scoreRampHtml() {
+  const cells = [];
+  for (let k = 1; k <= RULA_TOP; k++) {
+    const [r, g, b] = strainRgb((k - 1) / (RULA_TOP - 1));
+    const dark = 0.299 * r + 0.587 * g + 0.114 * b > 140;
+    cells.push(`<span style="background:${scoreCss(k)};color:${dark ? '#111' : '#fff'}">${k}</span>`);
+  }
+  return `<div class="score-ramp" aria-label="score 1 deep blue to score 7 deep red">${cells.join('')}</div>`;
+}
+
 function layout(sessions) {
   const cmp = sessions.length > 1;
   const problems = sessions.flatMap((s, i) => s.source.problems.map((p) => (cmp ? `${'AB'[i]} · ${s.label}: ${p}` : p)));
@@ -51,7 +63,10 @@ function layout(sessions) {
   <div class="brand">ergocell <span>review</span></div>
   <div class="title" title="${esc(sessions.map((s) => s.label).join(' vs '))}">${title}</div>
   ${selector}
+  <button class="tool" id="findings-toggle" aria-pressed="false" title="The findings: the printed report's first page">Findings</button>
+  <button class="tool" id="print" title="Print, or save as PDF: the findings first, then exposure, warnings and state changes">Print report</button>
 </header>
+<section class="card findings" id="findings"></section>
 ${sessions
   .filter((s) => s.overview)
   .map((s) => {
@@ -66,10 +81,9 @@ ${problems.length ? `<div class="banner" role="alert"><b>${problems.length === 1
     <div class="viewport" id="viewport">
       <div class="overlay top-left"><span class="session-badge" id="session-badge"></span></div>
       <div class="overlay legend" aria-label="Strain colour legend">
-        <div class="legend-title">Joint strain (RULA band)</div>
-        <div class="ramp" style="background:${gradientCss()}"></div>
-        <div class="ramp-labels"><span>0 · lowest</span><span>highest · 1</span></div>
-        <div class="ramp-note">Per region: each region's lowest score = deep blue, its highest = deep red; 2-level regions such as legs jump straight to red.</div>
+        <div class="legend-title">RULA score of each joint's region</div>
+        ${scoreRampHtml()}
+        <div class="ramp-note">One colour per score, the same in every region. A region's scale ends at its own top: legs 2, forearm 3, wrist 4, upper arm, neck and trunk 6 (7: the grand score only).</div>
         <div class="legend-keys"><span><i class="dot grey"></i>not scored</span><span><i class="dot tcp"></i>robot TCP</span><span><i class="dot handover"></i>handover point</span></div>
       </div>
       <div class="overlay bottom-left readout" id="readout"></div>
@@ -190,6 +204,12 @@ function start(app, raw) {
   });
 
   const onSeekList = (si, t) => seek(si, t);
+  renderFindings($('findings'), sessions);
+  $('findings-toggle').addEventListener('click', () => {
+    const on = document.body.classList.toggle('show-findings');
+    $('findings-toggle').setAttribute('aria-pressed', String(on));
+  });
+  $('print').addEventListener('click', () => window.print());
   renderFacts($('facts'), sessions);
   renderWarnings($('warnings'), sessions, onSeekList);
   renderRobot($('robot'), sessions, onSeekList);

@@ -1,6 +1,6 @@
 // Session facts, state changes, warnings list, per-region summary and joint-angle histograms.
 import uPlot from 'uplot';
-import { scoreCss } from './colormap.js';
+import { scoreCss, levelCss, RULA_TOP } from './colormap.js';
 import { legColor, outcomeClass, eventClass, eventText } from './timeline.js';
 
 export const SESSION_COLORS = ['#4ea1ff', '#ffa94d'];
@@ -40,7 +40,13 @@ function classText(f) {
   if (f.class_probability == null) return badge;
   const basis = BASIS[f.decision_basis] ?? f.decision_basis ?? '';
   const cost = f.expected_rula_cost != null ? `, expected RULA cost ${f.expected_rula_cost >= 0 ? '+' : ''}${f.expected_rula_cost.toFixed(2)}` : '';
-  return `${badge} <span class="small">probability ${f.class_probability.toFixed(2)}${cost}</span><br><span class="muted small">${esc(basis)}</span>`;
+  const c = f.expected_rula_cost;
+  const costNote = `<br><span class="muted small cost-note">Probability: the chance that the operator's stature lies in this class (measured height and its uncertainty).${c == null
+    ? ''
+    : ` Expected RULA cost: the handover's expected RULA grand score (points, 1–7) with this class's trajectory minus with the operator's own class's, over the stature's uncertainty (the twin's curves). ${
+        Math.abs(c) < 0.05 ? 'Near 0: no difference in practice.' : c < 0 ? 'Negative: this class is expected to suit the operator better.' : 'Positive: expected that much worse, the price of an uncertain class.'
+      }`}</span>`;
+  return `${badge} <span class="small">probability ${f.class_probability.toFixed(2)}${cost}</span><br><span class="muted small">${esc(basis)}</span>${costNote}`;
 }
 
 function hashText(h) {
@@ -174,9 +180,20 @@ function regionKey(r) {
   return `${r.name}|${r.side || ''}`;
 }
 
+/**
+ * A row's colour for score k: RULA's scores on the page's one scale (the 3D view's: 1 deep blue …
+ * 7 deep red, whatever the region), the action level and REBA each on their own. Data written before
+ * rows carried their `scale` is told apart by name.
+ */
+function rowColour(r, max) {
+  const scale = r.scale ?? (r.name === 'action level' ? 'action_level' : r.name === 'REBA score' || max > RULA_TOP ? 'reba' : 'rula');
+  return scale === 'rula' ? (k) => scoreCss(k) : (k) => levelCss(k, max);
+}
+
 function shareBar(r, tag) {
   if (!r) return '<div class="sharebar empty-bar"><span class="muted small">not scored</span></div>';
   const max = Math.max(1, Number(r.max_score) || (r.time_share || []).length || 1);
+  const colour = rowColour(r, max);
   const share = Array.isArray(r.time_share) ? r.time_share : [];
   if (!share.some((v) => Number(v) > 0)) return `<div class="sharebar">${tag ? `<span class="tag">${tag}</span>` : ''}<div class="bar"></div><span class="muted small">no scored frames</span></div>`;
   const segs = share
@@ -184,7 +201,7 @@ function shareBar(r, tag) {
       const pct = Math.max(0, Number(v) || 0) * 100;
       if (pct <= 0) return '';
       const label = pct >= 7 ? `${i + 1}` : '';
-      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${scoreCss(i + 1, max)}" title="score ${i + 1}: ${pct.toFixed(1)} % of scored time">${label}</span>`;
+      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${colour(i + 1)}" title="score ${i + 1}: ${pct.toFixed(1)} % of scored time">${label}</span>`;
     })
     .join('');
   return `<div class="sharebar">${tag ? `<span class="tag">${tag}</span>` : ''}<div class="bar">${segs}</div></div>`;
@@ -193,7 +210,7 @@ function shareBar(r, tag) {
 function meanChip(r) {
   if (!r || r.mean == null) return '<span class="muted">–</span>';
   const max = Math.max(1, Number(r.max_score) || 1);
-  return `<span class="chip" style="background:${scoreCss(Math.min(max, Math.max(1, r.mean)), max)}"></span>${fmt(r.mean, 2)}`;
+  return `<span class="chip" style="background:${rowColour(r, max)(Math.min(max, Math.max(1, r.mean)))}"></span>${fmt(r.mean, 2)}`;
 }
 
 // Exposure over time: for each score level reached (2 up), how many separate stretches and the
@@ -248,7 +265,7 @@ export function renderRegions(el, sessions) {
       return `<tr><th>${esc(titleCase(name))}</th><td class="num">${meanChip(a)}</td><td class="num">${meanChip(b)}</td><td class="num">${delta}</td><td class="num">${esc(peak(a))}, ${esc(peak(b))} / ${esc(max)}</td><td>${shareBar(a, 'A')}${shareBar(b, 'B')}</td></tr>`;
     })
     .join('');
-  el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region, grand score per side and the worse side's action level; REBA score per side below when recorded; bar segments from score 1 (deep blue) to the top of the row's scale (deep red)</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
+  el.innerHTML = `<h2>Body regions <span class="hint">RULA score per region, grand score per side and the worse side's action level; REBA score per side below when recorded; bar segments coloured by score, as in the 3D view: 1 deep blue … 7 deep red, the same colour for the same score in every row; "top" is the highest score the row's scale has</span></h2><table class="regions"><thead>${head}</thead><tbody>${body}</tbody></table>`;
 }
 
 /** A bar of shares over levels `first..`, coloured like a score out of `n` levels. */
@@ -260,7 +277,7 @@ function levelBar(shares, first, what) {
       const pct = v * 100;
       if (pct <= 0) return '';
       const level = i + first;
-      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${scoreCss(i + 1, xs.length)}" title="${what} ${level}: ${pct.toFixed(1)} %">${pct >= 9 ? level : ''}</span>`;
+      return `<span class="seg" style="width:${pct.toFixed(2)}%;background:${levelCss(i + 1, xs.length)}" title="${what} ${level}: ${pct.toFixed(1)} %">${pct >= 9 ? level : ''}</span>`;
     })
     .join('');
   return `<div class="sharebar"><div class="bar">${segs}</div></div>`;

@@ -1,0 +1,456 @@
+//! The report's first page: what an ergonomist reads before the details.
+//!
+//! - **Time at each action level**: RULA's action level of the worse side (1 acceptable … 4
+//!   investigate and change now), in seconds of scored time, from the session summary (every frame,
+//!   also in a long recording's overview).
+//! - **The worst moments**: up to three frames, the highest action level first, then the highest
+//!   grand score, each at least [`MOMENT_SPACING_S`] from the others (so one bad stretch is one
+//!   moment), with the regions at or above their warning score at that instant. The page draws the
+//!   skeleton of each.
+//! - **Per region** (per side for the arms), what was found and what to do, in the method's own
+//!   terms: the time at or above the region's warning score ([`WarningConfig::warn_at`], the score at
+//!   which the operator is warned), the longest stretch there, the warnings raised, and the advice the
+//!   warnings give ([`Advice`]) for the region's worst posture.
+//!
+//! A region's verdict: **change** when it was held at or above its warning score for at least the
+//! warnings' dwell time ([`WarningConfig::dwell_nanos`], 2 s) or raised a warning; **brief** when it
+//! reached that score only for shorter moments; **acceptable** when it never did.
+
+use ergocell_ergonomics::assess::BodyRegion;
+use ergocell_ergonomics::rula::RulaScores;
+use ergocell_ergonomics::summary::SessionSummary;
+use ergocell_ergonomics::warnings::{Advice, WarningConfig};
+use ergocell_skeleton::Side;
+use serde::Serialize;
+
+use crate::analysis::{AngleStats, Warning};
+
+/// Worst moments closer than this (seconds) are one moment.
+pub const MOMENT_SPACING_S: f64 = 10.0;
+
+/// How many worst moments the first page shows.
+pub const MOMENTS: usize = 3;
+
+/// The first page's numbers.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Findings {
+    /// Scored seconds at RULA action level 1, 2, 3 and 4 (the worse side).
+    pub action_level_secs: [f64; 4],
+    /// Seconds without a score (the operator out of view, a side unseen).
+    pub unscored_secs: f64,
+    /// The worst moments, the worst first; empty when no frame reached action level 2.
+    pub worst_moments: Vec<WorstMoment>,
+    /// Per region, in [`BodyRegion::ALL`] order, left before right: what was found, what to do.
+    pub regions: Vec<RegionFinding>,
+}
+
+/// One of the worst moments.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WorstMoment {
+    /// Seconds on the frames' clock (the page's `frames.t`).
+    pub t: f64,
+    pub action_level: u8,
+    pub grand_left: Option<u8>,
+    pub grand_right: Option<u8>,
+    /// The regions at or above their warning score at that instant, the highest score first.
+    pub regions: Vec<RegionScore>,
+}
+
+/// A region's score at one instant.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct RegionScore {
+    /// In words: "upper arm".
+    pub region: &'static str,
+    /// "left", "right", or "" for neck, trunk and legs.
+    pub side: &'static str,
+    pub score: u8,
+}
+
+/// What a region's time came to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// Never scored.
+    NotScored,
+    /// Never at its warning score.
+    Acceptable,
+    /// At its warning score only for moments shorter than the warnings' dwell time.
+    Brief,
+    /// Held at its warning score for the dwell time or longer, or warned: change the work.
+    Change,
+}
+
+/// One region's finding.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RegionFinding {
+    pub region: &'static str,
+    pub side: &'static str,
+    pub verdict: Verdict,
+    /// The score at which the operator is warned for this region.
+    pub warn_at: u8,
+    /// The highest score reached; `None` when never scored.
+    pub highest: Option<u8>,
+    /// The top of the region's scale.
+    pub top: u8,
+    /// Share of the region's scored time at or above `warn_at`.
+    pub share_at_warn: f64,
+    /// Seconds at or above `warn_at`, in how many stretches, the longest.
+    pub secs_at_warn: f64,
+    pub episodes_at_warn: usize,
+    pub longest_at_warn_secs: f64,
+    /// Warnings raised for this region in the session.
+    pub warnings_raised: usize,
+    /// What to do; `None` when the verdict is acceptable (or not scored).
+    pub advice: Option<Advice>,
+    /// `advice` in words.
+    pub advice_text: Option<&'static str>,
+}
+
+/// One page frame, as the worst moments are chosen from.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FrameBrief {
+    pub(crate) t: f64,
+    pub(crate) action_level: u8,
+    pub(crate) left: Option<RulaScores>,
+    pub(crate) right: Option<RulaScores>,
+}
+
+/// The findings of one session.
+pub(crate) fn findings(
+    summary: &SessionSummary,
+    frames: &[FrameBrief],
+    warnings: &[Warning],
+    angles: &[AngleStats],
+    config: &WarningConfig,
+) -> Findings {
+    let scored_secs = summary.duration_secs * (1.0 - summary.unscored_share).clamp(0.0, 1.0);
+    Findings {
+        action_level_secs: summary.action_level_share.map(|s| scored_secs * s),
+        unscored_secs: summary.duration_secs - scored_secs,
+        worst_moments: worst_moments(frames, config),
+        regions: region_findings(summary, warnings, angles, config),
+    }
+}
+
+fn sides(region: BodyRegion) -> &'static [Option<Side>] {
+    if region.is_sided() {
+        &[Some(Side::Left), Some(Side::Right)]
+    } else {
+        &[None]
+    }
+}
+
+fn region_words(region: BodyRegion) -> &'static str {
+    match region {
+        BodyRegion::UpperArm => "upper arm",
+        BodyRegion::LowerArm => "lower arm",
+        BodyRegion::Wrist => "wrist",
+        BodyRegion::Neck => "neck",
+        BodyRegion::Trunk => "trunk",
+        BodyRegion::Legs => "legs",
+    }
+}
+
+fn warn_at(region: BodyRegion, config: &WarningConfig) -> u8 {
+    let k = BodyRegion::ALL
+        .iter()
+        .position(|r| *r == region)
+        .unwrap_or(0);
+    config.warn_at.get(k).copied().unwrap_or(region.max_score())
+}
+
+/// Up to [`MOMENTS`] frames at action level 2 or more, the worst first, [`MOMENT_SPACING_S`] apart.
+fn worst_moments(frames: &[FrameBrief], config: &WarningConfig) -> Vec<WorstMoment> {
+    let grand = |f: &FrameBrief| {
+        [f.left, f.right]
+            .iter()
+            .flatten()
+            .map(|s| s.final_score)
+            .max()
+            .unwrap_or(0)
+    };
+    let mut order: Vec<&FrameBrief> = frames.iter().filter(|f| f.action_level >= 2).collect();
+    // Worst first; among equals the earliest (a stable sort keeps time order).
+    order.sort_by_key(|f| std::cmp::Reverse((f.action_level, grand(f))));
+    let mut chosen: Vec<&FrameBrief> = Vec::new();
+    for f in order {
+        if chosen.len() == MOMENTS {
+            break;
+        }
+        if chosen.iter().all(|c| (c.t - f.t).abs() >= MOMENT_SPACING_S) {
+            chosen.push(f);
+        }
+    }
+    chosen
+        .into_iter()
+        .map(|f| {
+            let mut regions = Vec::new();
+            for region in BodyRegion::ALL {
+                for &side in sides(region) {
+                    let scores = match side {
+                        Some(Side::Left) => f.left,
+                        Some(Side::Right) => f.right,
+                        // Scored once for the body: the worse worksheet.
+                        None => [f.left, f.right]
+                            .into_iter()
+                            .flatten()
+                            .max_by_key(|s| region.score(s)),
+                    };
+                    let Some(score) = scores.map(|s| region.score(&s)) else {
+                        continue;
+                    };
+                    if score >= warn_at(region, config) {
+                        regions.push(RegionScore {
+                            region: region_words(region),
+                            side: side.map_or("", Side::name),
+                            score,
+                        });
+                    }
+                }
+            }
+            regions.sort_by_key(|r| std::cmp::Reverse(r.score));
+            WorstMoment {
+                t: f.t,
+                action_level: f.action_level,
+                grand_left: f.left.map(|s| s.final_score),
+                grand_right: f.right.map(|s| s.final_score),
+                regions,
+            }
+        })
+        .collect()
+}
+
+/// The recorded angle that a region's advice turns on (its flexion), as the page names it.
+fn flexion_name(region: BodyRegion) -> Option<&'static str> {
+    match region {
+        BodyRegion::UpperArm => Some("upper arm flexion"),
+        BodyRegion::Neck => Some("neck flexion"),
+        BodyRegion::Trunk => Some("trunk flexion"),
+        BodyRegion::LowerArm | BodyRegion::Wrist | BodyRegion::Legs => None,
+    }
+}
+
+fn region_findings(
+    summary: &SessionSummary,
+    warnings: &[Warning],
+    angles: &[AngleStats],
+    config: &WarningConfig,
+) -> Vec<RegionFinding> {
+    let dwell_s = config.dwell_nanos as f64 * 1e-9;
+    let mut out = Vec::new();
+    for region in BodyRegion::ALL {
+        for &side in sides(region) {
+            let warn_at = warn_at(region, config);
+            let words = region_words(region);
+            let side_name = side.map_or("", Side::name);
+            let share = summary.region(region, side);
+            let highest = share.and_then(|r| r.share_by_score.iter().map(|(s, _)| *s).max());
+            let share_at_warn: f64 = share.map_or(0.0, |r| {
+                r.share_by_score
+                    .iter()
+                    .filter(|(s, _)| *s >= warn_at)
+                    .map(|(_, x)| x)
+                    .sum()
+            });
+            let exposure = share.and_then(|r| r.exposure.iter().find(|e| e.at_least == warn_at));
+            // The region's warnings, by the names the recorder writes (`upper_arm`, `left`).
+            let raised: Vec<&Warning> = warnings
+                .iter()
+                .filter(|w| {
+                    w.kind == "raised"
+                        && w.region.replace('_', " ") == words
+                        && (w.side == side_name || (side.is_none() && w.side.is_empty()))
+                })
+                .collect();
+            let longest = exposure.map_or(0.0, |e| e.longest_secs);
+            let verdict = match (share, highest) {
+                (None, _) | (_, None) => Verdict::NotScored,
+                _ if !raised.is_empty() || longest >= dwell_s => Verdict::Change,
+                _ if share_at_warn > 0.0 => Verdict::Brief,
+                _ => Verdict::Acceptable,
+            };
+            // The worst raised warning's angle, else the region's mean flexion, decides the advice's
+            // direction (an arm reaching back, a neck bent back).
+            let angle = raised
+                .iter()
+                .max_by_key(|w| w.score)
+                .and_then(|w| w.angle_deg)
+                .or_else(|| {
+                    let name = flexion_name(region)?;
+                    angles
+                        .iter()
+                        .find(|a| a.name == name && a.side == side_name)
+                        .and_then(|a| a.mean)
+                });
+            let advice = matches!(verdict, Verdict::Change | Verdict::Brief)
+                .then(|| Advice::for_angle(region, angle));
+            out.push(RegionFinding {
+                region: words,
+                side: side_name,
+                verdict,
+                warn_at,
+                highest,
+                top: region.max_score(),
+                share_at_warn,
+                secs_at_warn: exposure.map_or(0.0, |e| e.total_secs),
+                episodes_at_warn: exposure.map_or(0, |e| e.episodes),
+                longest_at_warn_secs: longest,
+                warnings_raised: raised.len(),
+                advice,
+                advice_text: advice.map(Advice::text),
+            });
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ergocell_ergonomics::summary::{ScoredSide, SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
+
+    /// A side with the given trunk, neck and upper-arm scores, the others at 1.
+    fn scores(trunk: u8, neck: u8, upper_arm: u8, grand: u8) -> RulaScores {
+        RulaScores {
+            upper_arm_score: upper_arm,
+            lower_arm_score: 1,
+            wrist_score: 1,
+            wrist_twist_score: 1,
+            posture_score_a: 1,
+            score_c_wrist_arm: 1,
+            neck_score: neck,
+            trunk_score: trunk,
+            legs_score: 1,
+            posture_score_b: 1,
+            score_d_neck_trunk_legs: 1,
+            final_score: grand,
+            action_level: ergocell_ergonomics::rula::action_level(grand),
+        }
+    }
+
+    fn warning(region: &str, side: &str, score: u8, angle_deg: f64) -> Warning {
+        Warning {
+            t: 1.0,
+            kind: "raised".to_owned(),
+            region: region.to_owned(),
+            side: side.to_owned(),
+            score,
+            angle_deg: Some(angle_deg),
+            action_level: 2,
+            message: String::new(),
+            band_probability: None,
+            near_limit: false,
+        }
+    }
+
+    #[test]
+    fn a_region_held_past_its_warning_score_is_changed_a_moment_is_brief_the_rest_acceptable() {
+        // 10 Hz, the left side only: trunk at 3 for 3 s (past the 2 s dwell), then the neck at 3
+        // for 0.5 s, the rest of 10 s at 1; the upper arm at 2 throughout (below its warning at 3).
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        for k in 0..100 {
+            let trunk = if k < 30 { 3 } else { 1 };
+            let neck = if (50..55).contains(&k) { 3 } else { 1 };
+            let side = ScoredSide {
+                scores: scores(trunk, neck, 2, 3),
+                uncertain: false,
+                reba: None,
+            };
+            b.add_scores(k * 100_000_000, Some(side), None);
+        }
+        let summary = b.finish();
+        // A warning raised for the left lower arm, though its score never reached 3 in the summary:
+        // the operator was warned, so the finding says change.
+        let warnings = [warning("lower_arm", "left", 3, 130.0)];
+        let f = findings(&summary, &[], &warnings, &[], &WarningConfig::default());
+        let of = |region: &str, side: &str| {
+            f.regions
+                .iter()
+                .find(|r| r.region == region && r.side == side)
+                .unwrap()
+        };
+        let trunk = of("trunk", "");
+        assert_eq!(trunk.verdict, Verdict::Change);
+        assert_eq!((trunk.highest, trunk.top, trunk.warn_at), (Some(3), 6, 3));
+        assert!(
+            (trunk.share_at_warn - 0.3).abs() < 1e-9,
+            "{}",
+            trunk.share_at_warn
+        );
+        assert!((trunk.longest_at_warn_secs - 3.0).abs() < 1e-9);
+        assert_eq!(trunk.advice, Some(Advice::TrunkRaiseOrCloser));
+        let neck = of("neck", "");
+        assert_eq!(neck.verdict, Verdict::Brief);
+        assert!((neck.longest_at_warn_secs - 0.5).abs() < 1e-9);
+        assert_eq!(neck.advice, Some(Advice::RaiseWorkPiece));
+        let arm = of("upper arm", "left");
+        assert_eq!((arm.verdict, arm.advice), (Verdict::Acceptable, None));
+        assert_eq!(of("upper arm", "right").verdict, Verdict::NotScored);
+        let forearm = of("lower arm", "left");
+        assert_eq!(
+            (forearm.verdict, forearm.warnings_raised, forearm.advice),
+            (Verdict::Change, 1, Some(Advice::ElbowCloser))
+        );
+        // Every region per side, in order.
+        assert_eq!(f.regions.len(), 9);
+        // The time at each action level adds up to the scored time (grand 3: level 2 throughout).
+        assert!((f.action_level_secs[1] - summary.duration_secs).abs() < 1e-9);
+        assert_eq!(f.unscored_secs, 0.0);
+    }
+
+    #[test]
+    fn a_warning_for_an_arm_reaching_back_advises_bringing_the_work_in_front() {
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        for k in 0..10 {
+            let side = ScoredSide {
+                scores: scores(1, 1, 2, 3),
+                uncertain: false,
+                reba: None,
+            };
+            b.add_scores(k * 100_000_000, None, Some(side));
+        }
+        let warnings = [warning("upper_arm", "right", 3, -35.0)];
+        let f = findings(&b.finish(), &[], &warnings, &[], &WarningConfig::default());
+        let arm = f
+            .regions
+            .iter()
+            .find(|r| r.region == "upper arm" && r.side == "right")
+            .unwrap();
+        assert_eq!(arm.advice, Some(Advice::BringInFront));
+        assert_eq!(arm.advice_text, Some(Advice::BringInFront.text()));
+    }
+
+    #[test]
+    fn worst_moments_are_the_worst_frames_ten_seconds_apart() {
+        let frame = |t: f64, grand: u8, trunk: u8| FrameBrief {
+            t,
+            action_level: ergocell_ergonomics::rula::action_level(grand),
+            left: Some(scores(trunk, 1, 1, grand)),
+            right: None,
+        };
+        let frames = [
+            frame(0.0, 2, 1),
+            frame(3.0, 6, 4),
+            frame(5.0, 7, 5),  // the worst
+            frame(12.0, 6, 4), // 7 s from it: the same moment
+            frame(16.0, 5, 3),
+            frame(40.0, 6, 2),
+            frame(60.0, 3, 1),
+        ];
+        let m = worst_moments(&frames, &WarningConfig::default());
+        let times: Vec<f64> = m.iter().map(|m| m.t).collect();
+        assert_eq!(times, [5.0, 40.0, 16.0]);
+        assert_eq!(m[0].action_level, 4);
+        assert_eq!(
+            m[0].regions,
+            [RegionScore {
+                region: "trunk",
+                side: "",
+                score: 5
+            }]
+        );
+        assert_eq!((m[0].grand_left, m[0].grand_right), (Some(7), None));
+        // Nothing past action level 1: no worst moment.
+        assert!(worst_moments(&frames[..1], &WarningConfig::default()).is_empty());
+    }
+}
