@@ -3,7 +3,11 @@
 //! display.e2e.mjs`) watches it: the state as it changes, a posture warning with its advice and
 //! colour, a reload that brings the picture back at once, and — the demo ended, a second one started
 //! on the same address with the shipped task mix — the page reconnecting by itself and showing a
-//! warning raised and then cleared. It prints the event-to-screen latency of
+//! warning raised and then cleared. Everything the page showed is checked against
+//! docs/operator.md, which the script reads: each top-bar text among the guide's (the hold reasons
+//! too), each posture band in the guide's words and colour for its action level, RULA's action level
+//! for its score, and no coloured band while the operator is asked to stand straight. It prints the
+//! event-to-screen latency of
 //! every update it rendered (measured, not asserted) and writes a screenshot (with
 //! `ERGOCELL_DISPLAY_SCREENSHOT=PATH`, there too: `docs/display.png` in the README).
 //!
