@@ -499,7 +499,7 @@ pub(crate) fn analyse_with(
         frames.strain.push(
             frame_strain(e)
                 .into_iter()
-                .map(|v| v.map(|v| round_to(v, 3)))
+                .map(|v| v.map(|v| round_to(v, 2)))
                 .collect(),
         );
         let side = |s: Option<&RulaSide>, f: fn(&RulaSide) -> u8| s.and_then(scored).map(f);
@@ -1140,11 +1140,13 @@ pub(crate) fn robot_legs(
             continue;
         };
         let planned_nanos = (last.time_from_start.as_secs_f64().max(0.0) * 1e9) as u64;
+        // The time first: this scans every event for every command (a shift: thousands of each),
+        // and comparing times is cheaper than reading the kind's name.
         let sent = events.iter().enumerate().position(|(i, e)| {
             !named[i]
+                && (e.log_time_nanos == t || event_time(e) == t)
                 && e.message.event_kind()
                     == Some(ergocell_bridge::msg::ControllerEventKind::GoalSent)
-                && (e.log_time_nanos == t || event_time(e) == t)
         });
         let leg_id = if let Some(i) = sent {
             named[i] = true;
