@@ -289,14 +289,17 @@ impl Advice {
         }
     }
 
-    /// The advice for a region from its main angle alone (degrees, the region's flexion as a
-    /// warning records it; `None` when not known): what a report recommends for a region whose
-    /// worst posture it knows only by that angle.
-    pub fn for_angle(region: BodyRegion, angle_deg: Option<f64>) -> Self {
+    /// The advice for a region known only by its main angle (degrees, the region's flexion as a
+    /// warning records it; `None` when not known) and its score: what a report recommends for a
+    /// region whose worst posture it knows that far. A forearm at 3 or more is across the body or
+    /// out to the side (RULA's elbow bands alone reach 2); a lifted shoulder or a twist cannot be
+    /// told from the score, and gets the region's main advice.
+    pub fn for_score(region: BodyRegion, angle_deg: Option<f64>, score: u8) -> Self {
         let back = angle_deg.is_some_and(|a| a < 0.0);
         match region {
             BodyRegion::UpperArm if back => Advice::BringInFront,
             BodyRegion::UpperArm => Advice::LowerOrCloser,
+            BodyRegion::LowerArm if score >= 3 => Advice::ForearmInFront,
             BodyRegion::LowerArm => Advice::ElbowCloser,
             BodyRegion::Wrist => Advice::StraightenWrist,
             BodyRegion::Neck if back => Advice::NeckLowerOrInFront,
@@ -563,14 +566,22 @@ mod tests {
         forward.trunk_flexion_deg = 40.0;
         let mut twisted = forward;
         twisted.trunk_twisted = true;
+        // Across the body with the elbow outside 60–100°: 3, where the forearm warns.
+        let mut across = forward;
+        across.lower_arm_across_midline_or_out_to_side = true;
+        across.lower_arm_flexion_deg = 130.0;
+        let mut lifted = forward;
+        lifted.shoulder_raised = true;
         let cases = [
             (BodyRegion::UpperArm, &back, Advice::BringInFront),
             (BodyRegion::UpperArm, &forward, Advice::LowerOrCloser),
+            (BodyRegion::UpperArm, &lifted, Advice::LowerAndRelaxShoulder),
             (BodyRegion::Neck, &back, Advice::NeckLowerOrInFront),
             (BodyRegion::Neck, &forward, Advice::RaiseWorkPiece),
             (BodyRegion::Trunk, &forward, Advice::TrunkRaiseOrCloser),
             (BodyRegion::Trunk, &twisted, Advice::TurnFeet),
             (BodyRegion::LowerArm, &forward, Advice::ElbowCloser),
+            (BodyRegion::LowerArm, &across, Advice::ForearmInFront),
             (BodyRegion::Wrist, &forward, Advice::StraightenWrist),
             (BodyRegion::Legs, &forward, Advice::BothFeet),
         ];
@@ -578,11 +589,20 @@ mod tests {
             assert_eq!(Advice::for_posture(region, input), advice, "{region:?}");
             let words = describe(region, Some(Side::Right), input);
             assert!(words.contains(advice.text()), "{words}");
-            // From the main angle alone the same, except what needs the adjustments (the twist).
-            if advice != Advice::TurnFeet {
-                let angle = region_angle(region, input);
-                assert_eq!(Advice::for_angle(region, angle), advice, "{region:?}");
-            }
+            // From the main angle and the score the same, except what needs an adjustment the
+            // score cannot show (the twist, the lifted shoulder): then the region's main advice.
+            let angle = region_angle(region, input);
+            let score = region_score_at(region, input, angle);
+            let expected = match advice {
+                Advice::TurnFeet => Advice::TrunkRaiseOrCloser,
+                Advice::LowerAndRelaxShoulder => Advice::LowerOrCloser,
+                a => a,
+            };
+            assert_eq!(
+                Advice::for_score(region, angle, score),
+                expected,
+                "{region:?}"
+            );
         }
     }
 }

@@ -33,7 +33,7 @@ use ergocell_skeleton::{Landmark, Side, Skeleton3, DRAWN_BONES, LANDMARK_COUNT};
 use serde::Serialize;
 
 pub use crate::findings::Findings;
-use crate::findings::{findings, FrameBrief};
+use crate::findings::{findings, Flexions, FrameBrief};
 use crate::read::{Recording, Stamped};
 use ergocell_ergonomics::warnings::WarningConfig;
 
@@ -523,6 +523,7 @@ pub(crate) fn analyse_with(
             right: e
                 .and_then(|e| scored_side(&e.right, None))
                 .map(|s| s.scores),
+            flexion_deg: Flexions::from_recorded(&m.angle_names, &m.angle_rad),
         });
         let r = reba_at(t);
         let reba_score = |s: Option<&RebaSide>| s.filter(|s| s.scored).map(|s| s.reba_score);
@@ -592,13 +593,7 @@ pub(crate) fn analyse_with(
             near_limit: w.message.near_limit,
         })
         .collect();
-    let findings = findings(
-        &summary,
-        &briefs,
-        &warnings,
-        &angles,
-        &WarningConfig::default(),
-    );
+    let findings = findings(&summary, &briefs, &warnings, &WarningConfig::default());
 
     SessionReview {
         label: label.to_owned(),

@@ -4,13 +4,20 @@
 //!   investigate and change now), in seconds of scored time, from the session summary (every frame,
 //!   also in a long recording's overview).
 //! - **The worst moments**: up to three frames, the highest action level first, then the highest
-//!   grand score, each at least [`MOMENT_SPACING_S`] from the others (so one bad stretch is one
-//!   moment), with the regions at or above their warning score at that instant. The page draws the
-//!   skeleton of each.
+//!   grand score. One stretch at a level is one moment: once a frame is chosen, the frames around it
+//!   at its action level or more (until a gap of more than [`STRETCH_GAP_S`]) and those within
+//!   [`MOMENT_SPACING_S`] of it are not chosen again. Each comes with the regions at or above their
+//!   warning score at that instant; the page draws the skeleton of each.
 //! - **Per region** (per side for the arms), what was found and what to do, in the method's own
 //!   terms: the time at or above the region's warning score ([`WarningConfig::warn_at`], the score at
 //!   which the operator is warned), the longest stretch there, the warnings raised, and the advice the
-//!   warnings give ([`Advice`]) for the region's worst posture.
+//!   warnings give ([`Advice`]) for the region's worst posture: the posture of its highest raised
+//!   warning, else of its frame with the highest score (the direction of its flexion decides: an
+//!   arm reaching back, a neck bent back; a forearm at 3 or more is across the body or out to the
+//!   side, as RULA's elbow bands alone reach 2).
+//!
+//! The warning scores and the dwell are the shipped warning settings ([`WarningConfig::default`]):
+//! a recording does not carry its cell's settings. The findings say which they used.
 //!
 //! A region's verdict: **change** when it was held at or above its warning score for at least the
 //! warnings' dwell time ([`WarningConfig::dwell_nanos`], 2 s) or raised a warning; **brief** when it
@@ -23,13 +30,17 @@ use ergocell_ergonomics::warnings::{Advice, WarningConfig};
 use ergocell_skeleton::Side;
 use serde::Serialize;
 
-use crate::analysis::{AngleStats, Warning};
+use crate::analysis::Warning;
 
 /// Worst moments closer than this (seconds) are one moment.
 pub const MOMENT_SPACING_S: f64 = 10.0;
 
 /// How many worst moments the first page shows.
 pub const MOMENTS: usize = 3;
+
+/// Frames further apart than this (seconds) are not one stretch (a gap in the recording, or an
+/// overview's frames between its worst moments).
+pub const STRETCH_GAP_S: f64 = 1.0;
 
 /// The first page's numbers.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -42,6 +53,8 @@ pub struct Findings {
     pub worst_moments: Vec<WorstMoment>,
     /// Per region, in [`BodyRegion::ALL`] order, left before right: what was found, what to do.
     pub regions: Vec<RegionFinding>,
+    /// How long a posture must hold before the operator is warned (the settings used), seconds.
+    pub dwell_s: f64,
 }
 
 /// One of the worst moments.
@@ -113,6 +126,58 @@ pub(crate) struct FrameBrief {
     pub(crate) action_level: u8,
     pub(crate) left: Option<RulaScores>,
     pub(crate) right: Option<RulaScores>,
+    /// The flexions the advice turns on, degrees, as recorded: upper arm left and right, neck,
+    /// trunk (`None`: not observed).
+    pub(crate) flexion_deg: Flexions,
+}
+
+/// A frame's flexion angles, degrees.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Flexions {
+    pub(crate) upper_arm: [Option<f64>; 2],
+    pub(crate) neck: Option<f64>,
+    pub(crate) trunk: Option<f64>,
+}
+
+impl Flexions {
+    /// From a recorded pose's angle names and values (radians).
+    pub(crate) fn from_recorded(names: &[String], rad: &[f64]) -> Self {
+        let mut f = Self::default();
+        for (name, &v) in names.iter().zip(rad) {
+            let deg = Some(v.to_degrees()).filter(|d| d.is_finite());
+            match name.as_str() {
+                "left_upper_arm_flexion" => f.upper_arm[0] = deg,
+                "right_upper_arm_flexion" => f.upper_arm[1] = deg,
+                "neck_flexion" => f.neck = deg,
+                "trunk_flexion" => f.trunk = deg,
+                _ => {}
+            }
+        }
+        f
+    }
+
+    fn of(&self, region: BodyRegion, side: Option<Side>) -> Option<f64> {
+        match (region, side) {
+            (BodyRegion::UpperArm, Some(Side::Left)) => self.upper_arm[0],
+            (BodyRegion::UpperArm, Some(Side::Right)) => self.upper_arm[1],
+            (BodyRegion::Neck, _) => self.neck,
+            (BodyRegion::Trunk, _) => self.trunk,
+            _ => None,
+        }
+    }
+}
+
+/// The region's score in a frame: its side's, or for neck, trunk and legs the worse worksheet's.
+fn score_in(f: &FrameBrief, region: BodyRegion, side: Option<Side>) -> Option<u8> {
+    match side {
+        Some(Side::Left) => f.left.map(|s| region.score(&s)),
+        Some(Side::Right) => f.right.map(|s| region.score(&s)),
+        None => [f.left, f.right]
+            .into_iter()
+            .flatten()
+            .map(|s| region.score(&s))
+            .max(),
+    }
 }
 
 /// The findings of one session.
@@ -120,7 +185,6 @@ pub(crate) fn findings(
     summary: &SessionSummary,
     frames: &[FrameBrief],
     warnings: &[Warning],
-    angles: &[AngleStats],
     config: &WarningConfig,
 ) -> Findings {
     let scored_secs = summary.duration_secs * (1.0 - summary.unscored_share).clamp(0.0, 1.0);
@@ -128,7 +192,8 @@ pub(crate) fn findings(
         action_level_secs: summary.action_level_share.map(|s| scored_secs * s),
         unscored_secs: summary.duration_secs - scored_secs,
         worst_moments: worst_moments(frames, config),
-        regions: region_findings(summary, warnings, angles, config),
+        regions: region_findings(summary, frames, warnings, config),
+        dwell_s: config.dwell_nanos as f64 * 1e-9,
     }
 }
 
@@ -159,7 +224,8 @@ fn warn_at(region: BodyRegion, config: &WarningConfig) -> u8 {
     config.warn_at.get(k).copied().unwrap_or(region.max_score())
 }
 
-/// Up to [`MOMENTS`] frames at action level 2 or more, the worst first, [`MOMENT_SPACING_S`] apart.
+/// Up to [`MOMENTS`] frames at action level 2 or more, the worst first, one per stretch and
+/// [`MOMENT_SPACING_S`] apart. `frames` are in time order.
 fn worst_moments(frames: &[FrameBrief], config: &WarningConfig) -> Vec<WorstMoment> {
     let grand = |f: &FrameBrief| {
         [f.left, f.right]
@@ -169,34 +235,52 @@ fn worst_moments(frames: &[FrameBrief], config: &WarningConfig) -> Vec<WorstMome
             .max()
             .unwrap_or(0)
     };
-    let mut order: Vec<&FrameBrief> = frames.iter().filter(|f| f.action_level >= 2).collect();
+    let mut order: Vec<usize> = (0..frames.len())
+        .filter(|&i| frames[i].action_level >= 2)
+        .collect();
     // Worst first; among equals the earliest (a stable sort keeps time order).
-    order.sort_by_key(|f| std::cmp::Reverse((f.action_level, grand(f))));
-    let mut chosen: Vec<&FrameBrief> = Vec::new();
-    for f in order {
+    order.sort_by_key(|&i| std::cmp::Reverse((frames[i].action_level, grand(&frames[i]))));
+    let mut taken = vec![false; frames.len()];
+    let mut chosen: Vec<usize> = Vec::new();
+    for i in order {
         if chosen.len() == MOMENTS {
             break;
         }
-        if chosen.iter().all(|c| (c.t - f.t).abs() >= MOMENT_SPACING_S) {
-            chosen.push(f);
+        if taken[i]
+            || chosen
+                .iter()
+                .any(|&c| (frames[c].t - frames[i].t).abs() < MOMENT_SPACING_S)
+        {
+            continue;
+        }
+        chosen.push(i);
+        // Its stretch at this level or more, both ways, is this moment.
+        let level = frames[i].action_level;
+        let mut k = i;
+        while k > 0
+            && frames[k - 1].action_level >= level
+            && frames[k].t - frames[k - 1].t <= STRETCH_GAP_S
+        {
+            k -= 1;
+            taken[k] = true;
+        }
+        let mut k = i;
+        while k + 1 < frames.len()
+            && frames[k + 1].action_level >= level
+            && frames[k + 1].t - frames[k].t <= STRETCH_GAP_S
+        {
+            k += 1;
+            taken[k] = true;
         }
     }
     chosen
         .into_iter()
-        .map(|f| {
+        .map(|i| {
+            let f = &frames[i];
             let mut regions = Vec::new();
             for region in BodyRegion::ALL {
                 for &side in sides(region) {
-                    let scores = match side {
-                        Some(Side::Left) => f.left,
-                        Some(Side::Right) => f.right,
-                        // Scored once for the body: the worse worksheet.
-                        None => [f.left, f.right]
-                            .into_iter()
-                            .flatten()
-                            .max_by_key(|s| region.score(s)),
-                    };
-                    let Some(score) = scores.map(|s| region.score(&s)) else {
+                    let Some(score) = score_in(f, region, side) else {
                         continue;
                     };
                     if score >= warn_at(region, config) {
@@ -220,20 +304,10 @@ fn worst_moments(frames: &[FrameBrief], config: &WarningConfig) -> Vec<WorstMome
         .collect()
 }
 
-/// The recorded angle that a region's advice turns on (its flexion), as the page names it.
-fn flexion_name(region: BodyRegion) -> Option<&'static str> {
-    match region {
-        BodyRegion::UpperArm => Some("upper arm flexion"),
-        BodyRegion::Neck => Some("neck flexion"),
-        BodyRegion::Trunk => Some("trunk flexion"),
-        BodyRegion::LowerArm | BodyRegion::Wrist | BodyRegion::Legs => None,
-    }
-}
-
 fn region_findings(
     summary: &SessionSummary,
+    frames: &[FrameBrief],
     warnings: &[Warning],
-    angles: &[AngleStats],
     config: &WarningConfig,
 ) -> Vec<RegionFinding> {
     let dwell_s = config.dwell_nanos as f64 * 1e-9;
@@ -269,21 +343,26 @@ fn region_findings(
                 _ if share_at_warn > 0.0 => Verdict::Brief,
                 _ => Verdict::Acceptable,
             };
-            // The worst raised warning's angle, else the region's mean flexion, decides the advice's
-            // direction (an arm reaching back, a neck bent back).
-            let angle = raised
-                .iter()
-                .max_by_key(|w| w.score)
+            // The worst posture: the highest raised warning's, else the first frame at the
+            // region's highest score on the page.
+            let worst_warning = raised.iter().max_by_key(|w| w.score);
+            let mut worst_frame: Option<(u8, &FrameBrief)> = None;
+            for f in frames {
+                if let Some(s) = score_in(f, region, side) {
+                    if worst_frame.is_none_or(|(w, _)| s > w) {
+                        worst_frame = Some((s, f));
+                    }
+                }
+            }
+            let angle = worst_warning
                 .and_then(|w| w.angle_deg)
-                .or_else(|| {
-                    let name = flexion_name(region)?;
-                    angles
-                        .iter()
-                        .find(|a| a.name == name && a.side == side_name)
-                        .and_then(|a| a.mean)
-                });
+                .or_else(|| worst_frame.and_then(|(_, f)| f.flexion_deg.of(region, side)));
+            let score = worst_warning
+                .map(|w| w.score)
+                .or(worst_frame.map(|(s, _)| s))
+                .or(highest);
             let advice = matches!(verdict, Verdict::Change | Verdict::Brief)
-                .then(|| Advice::for_angle(region, angle));
+                .then(|| Advice::for_score(region, angle, score.unwrap_or(0)));
             out.push(RegionFinding {
                 region: words,
                 side: side_name,
@@ -359,10 +438,11 @@ mod tests {
             b.add_scores(k * 100_000_000, Some(side), None);
         }
         let summary = b.finish();
-        // A warning raised for the left lower arm, though its score never reached 3 in the summary:
-        // the operator was warned, so the finding says change.
+        // A warning raised for the left lower arm at 3, though its score never reached 3 in the
+        // summary: the operator was warned, so the finding says change; a forearm at 3 is across
+        // the body or out to the side (the elbow bands alone reach 2).
         let warnings = [warning("lower_arm", "left", 3, 130.0)];
-        let f = findings(&summary, &[], &warnings, &[], &WarningConfig::default());
+        let f = findings(&summary, &[], &warnings, &WarningConfig::default());
         let of = |region: &str, side: &str| {
             f.regions
                 .iter()
@@ -389,7 +469,7 @@ mod tests {
         let forearm = of("lower arm", "left");
         assert_eq!(
             (forearm.verdict, forearm.warnings_raised, forearm.advice),
-            (Verdict::Change, 1, Some(Advice::ElbowCloser))
+            (Verdict::Change, 1, Some(Advice::ForearmInFront))
         );
         // Every region per side, in order.
         assert_eq!(f.regions.len(), 9);
@@ -410,7 +490,7 @@ mod tests {
             b.add_scores(k * 100_000_000, None, Some(side));
         }
         let warnings = [warning("upper_arm", "right", 3, -35.0)];
-        let f = findings(&b.finish(), &[], &warnings, &[], &WarningConfig::default());
+        let f = findings(&b.finish(), &[], &warnings, &WarningConfig::default());
         let arm = f
             .regions
             .iter()
@@ -427,6 +507,7 @@ mod tests {
             action_level: ergocell_ergonomics::rula::action_level(grand),
             left: Some(scores(trunk, 1, 1, grand)),
             right: None,
+            flexion_deg: Flexions::default(),
         };
         let frames = [
             frame(0.0, 2, 1),
@@ -452,5 +533,68 @@ mod tests {
         assert_eq!((m[0].grand_left, m[0].grand_right), (Some(7), None));
         // Nothing past action level 1: no worst moment.
         assert!(worst_moments(&frames[..1], &WarningConfig::default()).is_empty());
+    }
+
+    #[test]
+    fn one_stretch_is_one_moment_however_long() {
+        // 10 Hz: 40 s at action level 4 (grand 7), then 20 s at level 1, then 5 s at level 3.
+        let mut frames = Vec::new();
+        for k in 0..650 {
+            let t = f64::from(k) * 0.1;
+            let grand = if t < 40.0 {
+                7
+            } else if t < 60.0 {
+                2
+            } else {
+                5
+            };
+            frames.push(FrameBrief {
+                t,
+                action_level: ergocell_ergonomics::rula::action_level(grand),
+                left: Some(scores(4, 1, 1, grand)),
+                right: None,
+                flexion_deg: Flexions::default(),
+            });
+        }
+        let m = worst_moments(&frames, &WarningConfig::default());
+        let levels: Vec<(f64, u8)> = m.iter().map(|m| (m.t, m.action_level)).collect();
+        // The long stretch once (its first frame), the later one once.
+        assert_eq!(levels, [(0.0, 4), (60.0, 3)]);
+    }
+
+    #[test]
+    fn without_a_warning_the_advice_follows_the_worst_frames_direction() {
+        // The neck at 4 (bent back) for half a second, forward at 2 otherwise: brief, and the
+        // advice is for the neck bent back, whatever the rest of the session.
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        let mut frames = Vec::new();
+        for k in 0..100 {
+            let back = (40..45).contains(&k);
+            let s = scores(1, if back { 4 } else { 2 }, 1, 3);
+            b.add_scores(
+                i64::from(k) * 100_000_000,
+                Some(ScoredSide {
+                    scores: s,
+                    uncertain: false,
+                    reba: None,
+                }),
+                None,
+            );
+            frames.push(FrameBrief {
+                t: f64::from(k) * 0.1,
+                action_level: 2,
+                left: Some(s),
+                right: None,
+                flexion_deg: Flexions {
+                    neck: Some(if back { -12.0 } else { 15.0 }),
+                    ..Flexions::default()
+                },
+            });
+        }
+        let f = findings(&b.finish(), &frames, &[], &WarningConfig::default());
+        let neck = f.regions.iter().find(|r| r.region == "neck").unwrap();
+        assert_eq!(neck.verdict, Verdict::Brief);
+        assert_eq!(neck.advice, Some(Advice::NeckLowerOrInFront));
+        assert_eq!(f.dwell_s, 2.0);
     }
 }

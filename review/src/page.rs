@@ -127,6 +127,7 @@ mod tests {
                 unscored_secs: 0.0,
                 worst_moments: vec![],
                 regions: vec![],
+                dwell_s: 2.0,
             },
             overview: None,
         }

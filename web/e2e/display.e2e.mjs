@@ -58,6 +58,7 @@ function checkAgainstGuide(seen, guide) {
   const band = /^(.+) \(RULA score (\d) of 7, action level (\d)\)$/;
   const ex = band.exec(guide.example);
   if (!ex || guide.bands[COLOUR_OF_LEVEL[Number(ex[3])]] !== ex[1]) fail(`the guide's own example "${guide.example}" does not match its colours`);
+  if (!seen.length) fail('the page recorded no picture to check against the guide');
   const bandsSeen = new Set();
   const statesSeen = new Set();
   for (const o of seen) {
@@ -81,6 +82,7 @@ function checkAgainstGuide(seen, guide) {
     if (!looksLike(o.bandColour, colour)) fail(`action level ${level} is drawn in ${o.bandColour}, which is not ${colour.toLowerCase()} as the guide says`);
     bandsSeen.add(`${colour}: ${o.bandText}`);
   }
+  if (!bandsSeen.size) fail(`no posture band was shown in ${seen.length} pictures`);
   return { bandsSeen: [...bandsSeen], statesSeen: [...statesSeen] };
 }
 

@@ -2,8 +2,9 @@
 //   node web/e2e/print.e2e.mjs <report.html> <out.pdf> <page1.png>
 // Checks, with the print stylesheet applied at the width of an A4 page's text:
 // - the findings come first and fit on page 1: the time at each action level (adding up to the
-//   scored time), the worst moments each with a drawn still, and a row per body region with its
-//   verdict, a recommendation wherever the verdict asks for a change;
+//   scored time), the worst moments each with a drawn still (front and right side), and a row per
+//   body region with its verdict, a recommendation wherever the verdict asks for a change; every
+//   badge readable on paper (contrast 4.5:1 or more);
 // - the 3D view and the controls are left out, and no card, table or chart is wider than the page
 //   or clips its content;
 // - the PDF has a first page plus the session's pages (A4).
@@ -40,7 +41,21 @@ await main(async (b) => {
     const box = (el) => el.getBoundingClientRect();
     const shown = (el) => el && getComputedStyle(el).display !== 'none' && box(el).height > 0;
     const f = document.getElementById('findings');
-    const levels = [...document.querySelectorAll('#findings .f-levels tbody tr.al-row')].map((tr) => tr.querySelector('td.num')?.textContent ?? '');
+    const levels = [...document.querySelectorAll('#findings .f-levels tbody tr.al-row')].map((tr) => tr.querySelectorAll('td.num')[1]?.textContent ?? '');
+    // Print colours: each verdict and action-level badge readable on paper (WCAG contrast ratio).
+    const lum = (c) => {
+      const [r, g, b] = (c.match(/[\d.]+/g) || []).slice(0, 3).map((v) => {
+        const x = Number(v) / 255;
+        return x <= 0.03928 ? x / 12.92 : ((x + 0.055) / 1.055) ** 2.4;
+      });
+      return 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    };
+    const contrast = [...document.querySelectorAll('#findings .badge')].map((el) => {
+      const st = getComputedStyle(el);
+      const [a, b] = [lum(st.color), lum(st.backgroundColor)].sort((x, y) => y - x);
+      return { text: el.textContent, ratio: (a + 0.05) / (b + 0.05) };
+    });
+    const captions = [...document.querySelectorAll('#findings .still figcaption')].map((c) => c.textContent);
     const moments = [...document.querySelectorAll('#findings .moment')].map((m) => ({
       lines: m.querySelectorAll('.still svg line:not(.floor)').length,
       views: m.querySelectorAll('.still svg').length,
@@ -68,6 +83,8 @@ await main(async (b) => {
       layoutTop: first ? box(first).top : null,
       title: f?.querySelector('h1')?.textContent ?? '',
       levels,
+      contrast,
+      captions,
       moments,
       regions,
       viewerShown: shown(document.querySelector('.viewer')),
@@ -81,6 +98,13 @@ await main(async (b) => {
   if (!(seen.layoutTop >= seen.findingsBottom)) fail('the session is printed before the findings');
   if (seen.findingsBottom > TEXT_H) fail(`the findings do not fit on page 1: ${Math.round(seen.findingsBottom)} px of ${TEXT_H}`);
   if (seen.levels.length !== 4) fail(`the action-level table has ${seen.levels.length} rows, not 4`);
+  // The four levels' shares of the scored time add up to all of it.
+  const shares = seen.levels.map((x) => parseFloat(x));
+  const total = shares.reduce((a, b) => a + b, 0);
+  if (shares.some((x) => !Number.isFinite(x)) || Math.abs(total - 100) > 0.25) fail(`the action levels' shares add up to ${total.toFixed(2)} %, not 100 % (${seen.levels.join(', ')})`);
+  const faint = seen.contrast.filter((c) => c.ratio < 4.5);
+  if (!seen.contrast.length || faint.length) fail(`badges too faint to read on paper: ${JSON.stringify(faint)}`);
+  if (new Set(seen.captions).size !== 2 || !seen.captions.includes('front') || !seen.captions.includes('right side')) fail(`the stills are not labelled front and right side: ${JSON.stringify([...new Set(seen.captions)])}`);
   if (!seen.moments.length) fail('no worst moment (the demo reaches action level 3)');
   for (const [i, m] of seen.moments.entries()) {
     if (m.views !== 2 || m.lines < 10) fail(`worst moment ${i + 1}: ${m.views} view(s), ${m.lines} bone(s) drawn`);

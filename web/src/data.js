@@ -238,6 +238,7 @@ function findings(f) {
   return {
     action_level_secs: secs,
     unscored_secs: num(f.unscored_secs) ?? 0,
+    dwell_s: num(f.dwell_s) ?? 2,
     worst_moments: arr(f.worst_moments)
       .filter((m) => m && num(m.t) !== null)
       .map((m) => ({

@@ -1,28 +1,36 @@
 // The report's first page: the findings an ergonomist reads first (review/src/findings.rs computes
 // them): time at each RULA action level, the worst moments with a still of the posture (front and
-// side views of the fused skeleton, coloured by score), and per body region what was found and the
-// warnings' advice. Printed as page 1; on screen behind the "Findings" button.
+// right side views of the fused skeleton, coloured by score), and per body region what was found and
+// the warnings' advice. Printed as page 1; on screen behind the "Findings" button.
 import { esc } from './panels.js';
 import { strainCss } from './colormap.js';
 import { nearestFrame } from './data.js';
 
 const LEVEL_TEXT = ['', 'acceptable', 'investigate; change may be needed', 'investigate and change soon', 'investigate and change now'];
-const VERDICT = {
-  change: ['Change', 'danger', 'held at or past its warning score for 2 s or more, or the operator was warned'],
-  brief: ['Brief', 'warn', 'reached its warning score only for moments under 2 s'],
-  acceptable: ['Acceptable', 'ok', 'never at its warning score'],
-  not_scored: ['Not scored', '', 'never seen well enough to score'],
-};
+/** A verdict's word, badge class and meaning (`dwell`: the warnings' dwell, seconds). */
+function verdict(v, dwell) {
+  const d = `${fmt(dwell, 0)} s`;
+  const all = {
+    change: ['Change', 'danger', `held at or past its warning score for ${d} or more, or the operator was warned`],
+    brief: ['Brief', 'warn', `reached its warning score only for moments under ${d}`],
+    acceptable: ['Acceptable', 'ok', 'never at its warning score'],
+    not_scored: ['Not scored', '', 'never seen well enough to score'],
+  };
+  return Object.hasOwn(all, v) ? all[v] : [String(v), '', ''];
+}
 
 const fmt = (v, d = 1) => (v == null || !Number.isFinite(+v) ? '–' : (+v).toFixed(d));
 const cap = (s) => String(s || '').replace(/^./, (c) => c.toUpperCase());
 
-/** Seconds as "41 s", "3 min 12 s" or "2 h 05 min". */
+/** Seconds as "4.5 s", "41 s", "3 min 12 s" or "2 h 05 min" (rounded first, so 119.6 s is "2 min 00 s"). */
 export function duration(s) {
   if (!Number.isFinite(s)) return '–';
-  if (s < 60) return `${s < 10 ? s.toFixed(1) : Math.round(s)} s`;
-  if (s < 3600) return `${Math.floor(s / 60)} min ${String(Math.round(s % 60)).padStart(2, '0')} s`;
-  return `${Math.floor(s / 3600)} h ${String(Math.round((s % 3600) / 60)).padStart(2, '0')} min`;
+  if (s < 9.95) return `${s.toFixed(1)} s`;
+  const whole = Math.round(s);
+  if (whole < 60) return `${whole} s`;
+  if (whole < 3600) return `${Math.floor(whole / 60)} min ${String(whole % 60).padStart(2, '0')} s`;
+  const minutes = Math.round(s / 60);
+  return `${Math.floor(minutes / 60)} h ${String(minutes % 60).padStart(2, '0')} min`;
 }
 
 // BlazePose indices (review JSON `landmarks` order).
@@ -54,7 +62,7 @@ function bodyAxes(p, up) {
 
 /**
  * A still of frame f: the skeleton seen from the front (the operator facing the reader) and from
- * their left side (facing right), on one scale, bones coloured by score. Empty when the frame has no
+ * their right side (facing the picture's right), on one scale, bones coloured by score. Empty when the frame has no
  * body axes.
  */
 export function stillSvg(s, f) {
@@ -96,7 +104,7 @@ export function stillSvg(s, f) {
     const floor = `<line x1="4" y1="${(H - PAD / 2).toFixed(1)}" x2="${(w - 4).toFixed(1)}" y2="${(H - PAD / 2).toFixed(1)}" class="floor"/>`;
     return `<figure class="view"><svg viewBox="0 0 ${w.toFixed(0)} ${H}" width="${w.toFixed(0)}" height="${H}" role="img" aria-label="${esc(title)}">${floor}${lines}</svg><figcaption>${esc(title)}</figcaption></figure>`;
   };
-  return `<div class="still">${view('front', f0, f1, 'front')}${view('side', s0, s1, 'left side')}</div>`;
+  return `<div class="still">${view('front', f0, f1, 'front')}${view('side', s0, s1, 'right side')}</div>`;
 }
 
 function levelsTable(fi) {
@@ -129,7 +137,7 @@ function momentsHtml(s, fi) {
 function regionsHtml(fi) {
   const rows = fi.regions
     .map((r) => {
-      const [word, cls, why] = VERDICT[r.verdict] || [r.verdict, '', ''];
+      const [word, cls, why] = verdict(r.verdict, fi.dwell_s);
       const name = cap(`${r.side ? `${r.side} ` : ''}${r.region}`);
       let found;
       if (r.verdict === 'not_scored') found = '<span class="muted">not scored</span>';
@@ -151,10 +159,19 @@ function regionsHtml(fi) {
 export function renderFindings(el, sessions) {
   const s = sessions[0];
   const fi = s.findings;
+  el.classList.toggle('none', !fi);
   if (!fi) {
-    el.innerHTML = '<h1>Findings</h1><p class="muted">This review data holds no findings (written by an older ergocell): see the pages that follow.</p>';
+    el.innerHTML = '<h1>Findings</h1><p class="muted">This review data holds no findings (written by an older ergocell).</p>';
     return;
   }
+  // The warning scores used, in words: "3; legs 2" (the regions' own, from the data).
+  const by = new Map();
+  for (const r of fi.regions) if (r.warn_at != null && !by.has(r.region)) by.set(r.region, r.warn_at);
+  const counts = new Map();
+  for (const v of by.values()) counts.set(v, (counts.get(v) || 0) + 1);
+  const common = [...counts].sort((a, b) => b[1] - a[1])[0]?.[0];
+  const warnWords = [common, ...[...by].filter(([, v]) => v !== common).map(([k, v]) => `${k} ${v}`)].filter((x) => x != null).join('; ');
+  const dwell = `${fmt(fi.dwell_s, 0)} s`;
   const f = s.facts;
   const dur = s.n > 1 ? duration(s.t[s.n - 1] - s.t[0]) : '–';
   const who = [
@@ -167,8 +184,8 @@ export function renderFindings(el, sessions) {
 <p class="f-sub"><b>${esc(s.label)}</b> · ${dur} recorded${who ? ` · ${who}` : ''}</p>
 <h2>Time at each RULA action level <span class="hint">the worse side, every frame (McAtamney &amp; Corlett 1993)</span></h2>
 ${levelsTable(fi)}
-<h2>The worst moments <span class="hint">highest action level first, at least 10 s apart; the skeleton as fused, coloured by each region's RULA score (1 deep blue … 7 deep red)</span></h2>
+<h2>The worst moments <span class="hint">highest action level first, one per stretch, at least 10 s apart; the skeleton as fused, from the front and the operator's right, coloured by each region's RULA score (1 deep blue … 7 deep red)</span></h2>
 ${momentsHtml(s, fi)}
-<h2>Per body region <span class="hint">"warning score": the region score at which the operator is warned (3; legs 2). Change: held there 2 s or more, or warned. Brief: only for moments under 2 s. The recommendation is the advice the operator's warnings give.</span></h2>
+<h2>Per body region <span class="hint">"warning score": the region score at which ergocell's shipped settings warn the operator (${esc(warnWords)}). Change: held there ${dwell} or more, or warned. Brief: only for moments under ${dwell}. The recommendation is the advice the warnings give for the region's worst posture.</span></h2>
 ${regionsHtml(fi)}`;
 }

@@ -64,7 +64,7 @@ function layout(sessions) {
   <div class="title" title="${esc(sessions.map((s) => s.label).join(' vs '))}">${title}</div>
   ${selector}
   <button class="tool" id="findings-toggle" aria-pressed="false" title="The findings: the printed report's first page">Findings</button>
-  <button class="tool" id="print" title="Print, or save as PDF: the findings first, then exposure, warnings and state changes">Print report</button>
+  <button class="tool" id="print" title="Print, or save as PDF: the findings first, then the session facts, warnings, robot and state changes, the timeline, body regions and task segments, and the joint angles">Print report</button>
 </header>
 <section class="card findings" id="findings"></section>
 ${sessions
