@@ -85,7 +85,7 @@ export function stillSvg(s, f) {
   const [h0, h1] = span(hs);
   const [f0, f1] = span(fr);
   const [s0, s1] = span(sd);
-  const H = 140, PAD = 8;
+  const H = 118, PAD = 7;
   const scale = (H - 2 * PAD) / Math.max(0.5, h1 - h0);
   const viewW = (lo, hi) => Math.max(60, (hi - lo) * scale + 2 * PAD);
   const view = (key, lo, hi, title) => {
