@@ -37,6 +37,21 @@ fn demo(out: &Path) {
     assert!(status.success(), "demo failed");
 }
 
+/// `ergocell report <rec> <args…> --force --out <html>`, which must succeed.
+fn report(rec: &Path, args: &[&std::ffi::OsStr], html: &Path) {
+    let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
+        .current_dir(root())
+        .arg("report")
+        .arg(rec)
+        .args(args)
+        .args(["--force", "--out"])
+        .arg(html)
+        .stdout(Stdio::null())
+        .status()
+        .unwrap();
+    assert!(status.success(), "report failed");
+}
+
 /// Runs a node script, failing it after 3 minutes (a hung browser must not hang the test suite).
 fn node(script: &str, args: &[&str]) {
     let mut child = Command::new("node")
@@ -104,17 +119,7 @@ fn report_opens_offline_from_file_in_headless_chromium() {
     let rec = tmp("browser-report.mcap");
     demo(&rec);
     let html = tmp("browser-report.html");
-    let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(root())
-        .args(["report", rec.to_str().unwrap(), "--compare"])
-        .arg(&rec)
-        .arg("--out")
-        .arg(&html)
-        .arg("--force")
-        .stdout(Stdio::null())
-        .status()
-        .unwrap();
-    assert!(status.success());
+    report(&rec, &["--compare".as_ref(), rec.as_os_str()], &html);
     let shot = tmp("report.png");
     let _ = std::fs::remove_file(&shot);
     node(
@@ -135,14 +140,7 @@ fn report_prints_to_pdf_with_the_findings_on_page_one_in_headless_chromium() {
     let rec = tmp("browser-print.mcap");
     demo(&rec);
     let html = tmp("browser-print.html");
-    let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(root())
-        .args(["report", rec.to_str().unwrap(), "--force", "--out"])
-        .arg(&html)
-        .stdout(Stdio::null())
-        .status()
-        .unwrap();
-    assert!(status.success());
+    report(&rec, &[], &html);
     let pdf = tmp("report.pdf");
     let shot = tmp("report-page1.png");
     let _ = std::fs::remove_file(&pdf);
@@ -168,22 +166,16 @@ fn an_overview_report_plays_and_says_what_it_holds_in_headless_chromium() {
     let html = tmp("browser-overview.html");
     // A page of a few frames: a shift's overview at a small scale (sparse frames outside the worst
     // moment, every frame within it).
-    let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
-        .current_dir(root())
-        .args(["report", rec.to_str().unwrap(), "--page-frames", "overview"])
-        .args([
-            "--overview-frames",
-            "20",
-            "--window-frames",
-            "150",
-            "--force",
-            "--out",
-        ])
-        .arg(&html)
-        .stdout(Stdio::null())
-        .status()
-        .unwrap();
-    assert!(status.success());
+    let args = [
+        "--page-frames",
+        "overview",
+        "--overview-frames",
+        "20",
+        "--window-frames",
+        "150",
+    ]
+    .map(std::ffi::OsStr::new);
+    report(&rec, &args, &html);
     let shot = tmp("overview.png");
     let _ = std::fs::remove_file(&shot);
     node(

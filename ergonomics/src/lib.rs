@@ -2,6 +2,8 @@
 //!
 //! - [`rula`]: the complete RULA worksheet (McAtamney & Corlett 1993) for one side, with the lookup
 //!   tables kept as data ([`tables`]) and ergocell's written band-edge convention.
+//! - [`posture_cost`]: a continuous posture cost beside RULA: the grand score, and inside it how far
+//!   each angle lies into its band (ranks as RULA wherever RULA's scores differ).
 //! - [`reba`]: the complete REBA worksheet (Hignett & McAtamney 2000) for one side, whole body: the
 //!   legs and REBA's own trunk and neck bands, with the same band-edge convention as RULA.
 //! - [`angles`]: joint angles from BlazePose-33 landmarks in a body frame built from the hips and
@@ -37,6 +39,7 @@ pub mod confidence;
 pub mod export;
 pub mod height;
 pub mod pose;
+pub mod posture_cost;
 pub mod reba;
 pub mod rula;
 pub mod static_posture;
