@@ -1154,6 +1154,27 @@ impl BodyRegion {
         }
     }
 
+    /// The name in words: "upper arm".
+    pub const fn words(self) -> &'static str {
+        match self {
+            BodyRegion::UpperArm => "upper arm",
+            BodyRegion::LowerArm => "lower arm",
+            BodyRegion::Wrist => "wrist",
+            BodyRegion::Neck => "neck",
+            BodyRegion::Trunk => "trunk",
+            BodyRegion::Legs => "legs",
+        }
+    }
+
+    /// The sides it is scored on: left and right for the arm regions, `None` (the body) for the others.
+    pub const fn sides(self) -> &'static [Option<Side>] {
+        if self.is_sided() {
+            &[Some(Side::Left), Some(Side::Right)]
+        } else {
+            &[None]
+        }
+    }
+
     /// Whether the region is scored per side.
     pub const fn is_sided(self) -> bool {
         matches!(

@@ -67,6 +67,17 @@ pub struct WarningConfig {
     pub warn_at: [u8; 6],
 }
 
+impl WarningConfig {
+    /// The score at which `region` warns ([`WarningConfig::warn_at`]).
+    pub fn warn_at_of(&self, region: BodyRegion) -> u8 {
+        let k = BodyRegion::ALL
+            .iter()
+            .position(|r| *r == region)
+            .unwrap_or(0);
+        self.warn_at[k]
+    }
+}
+
 impl Default for WarningConfig {
     fn default() -> Self {
         Self {

@@ -817,15 +817,10 @@ fn region_rows(summary: &SessionSummary) -> Vec<RegionStats> {
     let side_name = |side: Option<Side>| side.map_or("", Side::name);
     let mut rows = Vec::new();
     for region in BodyRegion::ALL {
-        let sides: &[Option<Side>] = if region.is_sided() {
-            &[Some(Side::Left), Some(Side::Right)]
-        } else {
-            &[None]
-        };
-        for &side in sides {
+        for &side in region.sides() {
             let share = summary.region(region, side);
             rows.push(region_stats(
-                region.name().replace('_', " "),
+                region.words().to_owned(),
                 side_name(side),
                 region.max_score(),
                 share.map_or(&[][..], |r| &r.share_by_score),

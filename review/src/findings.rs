@@ -197,33 +197,6 @@ pub(crate) fn findings(
     }
 }
 
-fn sides(region: BodyRegion) -> &'static [Option<Side>] {
-    if region.is_sided() {
-        &[Some(Side::Left), Some(Side::Right)]
-    } else {
-        &[None]
-    }
-}
-
-fn region_words(region: BodyRegion) -> &'static str {
-    match region {
-        BodyRegion::UpperArm => "upper arm",
-        BodyRegion::LowerArm => "lower arm",
-        BodyRegion::Wrist => "wrist",
-        BodyRegion::Neck => "neck",
-        BodyRegion::Trunk => "trunk",
-        BodyRegion::Legs => "legs",
-    }
-}
-
-fn warn_at(region: BodyRegion, config: &WarningConfig) -> u8 {
-    let k = BodyRegion::ALL
-        .iter()
-        .position(|r| *r == region)
-        .unwrap_or(0);
-    config.warn_at.get(k).copied().unwrap_or(region.max_score())
-}
-
 /// Up to [`MOMENTS`] frames at action level 2 or more, the worst first, one per stretch and
 /// [`MOMENT_SPACING_S`] apart. `frames` are in time order.
 fn worst_moments(frames: &[FrameBrief], config: &WarningConfig) -> Vec<WorstMoment> {
@@ -279,13 +252,13 @@ fn worst_moments(frames: &[FrameBrief], config: &WarningConfig) -> Vec<WorstMome
             let f = &frames[i];
             let mut regions = Vec::new();
             for region in BodyRegion::ALL {
-                for &side in sides(region) {
+                for &side in region.sides() {
                     let Some(score) = score_in(f, region, side) else {
                         continue;
                     };
-                    if score >= warn_at(region, config) {
+                    if score >= config.warn_at_of(region) {
                         regions.push(RegionScore {
-                            region: region_words(region),
+                            region: region.words(),
                             side: side.map_or("", Side::name),
                             score,
                         });
@@ -313,9 +286,9 @@ fn region_findings(
     let dwell_s = config.dwell_nanos as f64 * 1e-9;
     let mut out = Vec::new();
     for region in BodyRegion::ALL {
-        for &side in sides(region) {
-            let warn_at = warn_at(region, config);
-            let words = region_words(region);
+        for &side in region.sides() {
+            let warn_at = config.warn_at_of(region);
+            let words = region.words();
             let side_name = side.map_or("", Side::name);
             let share = summary.region(region, side);
             let highest = share.and_then(|r| r.share_by_score.iter().map(|(s, _)| *s).max());
@@ -332,7 +305,7 @@ fn region_findings(
                 .iter()
                 .filter(|w| {
                     w.kind == "raised"
-                        && w.region.replace('_', " ") == words
+                        && w.region == region.name()
                         && (w.side == side_name || (side.is_none() && w.side.is_empty()))
                 })
                 .collect();
