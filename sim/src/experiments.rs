@@ -36,6 +36,7 @@ use ergocell_ergonomics::height::{
     calibrate_ear_offset, serves_interval, CalibrationSample, DecisionBasis, EarOffset,
     HandoverRula, ServedStatures,
 };
+use ergocell_ergonomics::posture_cost::posture_cost;
 use ergocell_ergonomics::rula::action_level;
 use ergocell_ergonomics::{
     AssessmentConfig, FrameAssessment, HeightClass, HeightConfig, HeightStatus, RulaAssessor, Side,
@@ -426,20 +427,26 @@ pub(crate) struct Scored {
     /// The assessor marked the score uncertain (a landmark it used is below its confidence floor, or
     /// an input was held or never observed).
     uncertain: bool,
+    /// The continuous posture cost of the same side's worksheet ([`posture_cost`]).
+    pub(crate) cost: f64,
 }
 
-pub(crate) fn scored(a: &FrameAssessment) -> Option<Scored> {
-    a.headline().map(|h| Scored {
+pub(crate) fn scored(a: &FrameAssessment) -> Result<Option<Scored>, SimError> {
+    let Some(h) = a.headline() else {
+        return Ok(None);
+    };
+    Ok(Some(Scored {
         grand: h.scores.final_score,
         regions: BodyRegion::ALL.map(|r| r.score(&h.scores)),
         uncertain: h.uncertain,
-    })
+        cost: posture_cost(&h.input)?.cost(),
+    }))
 }
 
 /// The pipeline's headline of a tracked frame.
 pub(crate) fn pipeline_headline(tracked: &TrackedFrame) -> Result<Option<Scored>, SimError> {
     match &tracked.assessment {
-        Ok(a) => Ok(scored(a)),
+        Ok(a) => scored(a),
         Err(e) => Err(e.clone().into()),
     }
 }
@@ -449,7 +456,7 @@ fn truth_headlines(ticks: &[Tick]) -> Result<Vec<Option<Scored>>, SimError> {
     let mut truth = RulaAssessor::new(truth_config(&AssessmentConfig::new(up()?)))?;
     ticks
         .iter()
-        .map(|t| Ok(scored(&truth.assess(&t.truth.skeleton)?)))
+        .map(|t| scored(&truth.assess(&t.truth.skeleton)?))
         .collect()
 }
 
@@ -531,6 +538,12 @@ pub struct Adaptation {
     /// The same on the ground-truth skeleton.
     pub true_mean_grand_score_before: Vec<f64>,
     pub true_mean_grand_score_after: Vec<f64>,
+    /// Mean continuous posture cost (worse side, [`posture_cost`]: the grand score plus how far
+    /// each region's angle lies into its band) over the same frames, pipeline and truth.
+    pub mean_posture_cost_before: Vec<f64>,
+    pub mean_posture_cost_after: Vec<f64>,
+    pub true_mean_posture_cost_before: Vec<f64>,
+    pub true_mean_posture_cost_after: Vec<f64>,
     /// Mean score per body region (upper_arm, lower_arm, wrist, neck, trunk, legs), per height.
     pub region_names: Vec<String>,
     pub mean_region_scores_before: Vec<Vec<f64>>,
@@ -560,6 +573,8 @@ fn mean(v: &[f64]) -> f64 {
 struct TaskRun {
     grand: Vec<f64>,
     true_grand: Vec<f64>,
+    cost: Vec<f64>,
+    true_cost: Vec<f64>,
     regions: Vec<[f64; 6]>,
     angles: Vec<[f64; 4]>,
 }
@@ -570,6 +585,8 @@ impl TaskRun {
         Self {
             grand: Vec::new(),
             true_grand: Vec::new(),
+            cost: Vec::new(),
+            true_cost: Vec::new(),
             regions: Vec::new(),
             angles: Vec::new(),
         }
@@ -587,12 +604,7 @@ fn run_task(
     script.cycles = cycles;
     let ticks = simulate(setup, session, stature_m, &script)?;
     let truth = truth_headlines(&ticks)?;
-    let mut out = TaskRun {
-        grand: Vec::new(),
-        true_grand: Vec::new(),
-        regions: Vec::new(),
-        angles: Vec::new(),
-    };
+    let mut out = TaskRun::empty();
     let holding = |t: &Tick| matches!(t.truth.phase, Phase::Hold { .. });
     // The truth and its angles over every holding tick; the pipeline over the frames it released
     // whose nearest tick is a holding one.
@@ -603,6 +615,7 @@ fn run_task(
         }
         if let Some(t) = t {
             out.true_grand.push(f64::from(t.grand));
+            out.true_cost.push(t.cost);
         }
         let q = &tick.truth.posture;
         let arm = q.working_arm(op.right_handed);
@@ -620,6 +633,7 @@ fn run_task(
         if holding(&ticks[k]) {
             if let Some(e) = pipeline_headline(tracked)? {
                 out.grand.push(f64::from(e.grand));
+                out.cost.push(e.cost);
                 out.regions.push(e.regions.map(f64::from));
             }
         }
@@ -650,6 +664,10 @@ pub fn adaptation(
         mean_grand_score_after: Vec::new(),
         true_mean_grand_score_before: Vec::new(),
         true_mean_grand_score_after: Vec::new(),
+        mean_posture_cost_before: Vec::new(),
+        mean_posture_cost_after: Vec::new(),
+        true_mean_posture_cost_before: Vec::new(),
+        true_mean_posture_cost_after: Vec::new(),
         region_names: BodyRegion::ALL
             .iter()
             .map(|b| b.name().to_owned())
@@ -701,15 +719,20 @@ pub fn adaptation(
                 .map(|j| round6(mean(&run.angles.iter().map(|x| x[j]).collect::<Vec<_>>())))
                 .collect();
             let (grand, true_grand) = (round6(mean(&run.grand)), round6(mean(&run.true_grand)));
+            let (cost, true_cost) = (round6(mean(&run.cost)), round6(mean(&run.true_cost)));
             let samples = if k == 0 {
                 r.mean_grand_score_before.push(grand);
                 r.true_mean_grand_score_before.push(true_grand);
+                r.mean_posture_cost_before.push(cost);
+                r.true_mean_posture_cost_before.push(true_cost);
                 r.mean_region_scores_before.push(regions);
                 r.mean_angles_deg_before.push(angles);
                 &mut r.angle_samples_deg_before
             } else {
                 r.mean_grand_score_after.push(grand);
                 r.true_mean_grand_score_after.push(true_grand);
+                r.mean_posture_cost_after.push(cost);
+                r.true_mean_posture_cost_after.push(true_cost);
                 r.mean_region_scores_after.push(regions);
                 r.mean_angles_deg_after.push(angles);
                 &mut r.angle_samples_deg_after

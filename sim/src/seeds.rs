@@ -190,11 +190,49 @@ pub struct AdaptationSeeds {
     pub after: Vec<Option<Spread>>,
     pub true_before: Vec<Option<Spread>>,
     pub true_after: Vec<Option<Spread>>,
+    /// Per height, the mean posture cost over seeds, the same four ways.
+    pub cost_before: Vec<Option<Spread>>,
+    pub cost_after: Vec<Option<Spread>>,
+    pub true_cost_before: Vec<Option<Spread>>,
+    pub true_cost_after: Vec<Option<Spread>>,
     pub goals: Vec<Goal>,
 }
 
 /// The grand-score goal after adaptation (RULA action level ≤ 2).
 pub const ADAPTATION_MAX_AFTER: f64 = 3.0;
+
+/// The statures the unadapted handover was set for: there the class's point is the "before" point
+/// itself, so the posture cost may only equal it; everywhere else adaptation must lower it.
+pub const ADAPTATION_SET_FOR_M: [f64; 2] = [1.70, 1.80];
+
+/// Why a run's true posture cost fails the goal: worse than before at any served height, or not
+/// lower outside [`ADAPTATION_SET_FOR_M`].
+fn cost_check(r: &Adaptation) -> Vec<String> {
+    let mut why = Vec::new();
+    let [lo, hi] = ADAPTATION_SET_FOR_M;
+    for (i, h) in r.heights_m.iter().enumerate() {
+        let a = r
+            .true_mean_posture_cost_after
+            .get(i)
+            .copied()
+            .unwrap_or(f64::NAN);
+        let b = r
+            .true_mean_posture_cost_before
+            .get(i)
+            .copied()
+            .unwrap_or(f64::NAN);
+        if !a.is_finite() {
+            continue;
+        }
+        let outside = *h < lo - 1e-9 || *h > hi + 1e-9;
+        if a > b {
+            why.push(format!("{h:.2} m cost worse after ({b:.3} → {a:.3})"));
+        } else if outside && a >= b {
+            why.push(format!("{h:.2} m cost not lower after ({b:.3} → {a:.3})"));
+        }
+    }
+    why
+}
 
 /// Summarises adaptation runs, one per seed.
 pub fn adaptation(seeds: &[u64], runs: &[Adaptation]) -> AdaptationSeeds {
@@ -261,9 +299,17 @@ pub fn adaptation(seeds: &[u64], runs: &[Adaptation]) -> AdaptationSeeds {
                 )
             },
         ),
+        goal(
+            "truth: posture cost never worse after adaptation, and lower outside 1.70–1.80 m",
+            &cost_check,
+        ),
     ];
     AdaptationSeeds {
         seeds: seeds.to_vec(),
+        cost_before: per_height(&|r| &r.mean_posture_cost_before),
+        cost_after: per_height(&|r| &r.mean_posture_cost_after),
+        true_cost_before: per_height(&|r| &r.true_mean_posture_cost_before),
+        true_cost_after: per_height(&|r| &r.true_mean_posture_cost_after),
         before: per_height(&|r| &r.mean_grand_score_before),
         after: per_height(&|r| &r.mean_grand_score_after),
         true_before: per_height(&|r| &r.true_mean_grand_score_before),

@@ -483,7 +483,8 @@ pub fn warning_trust(
             .iter()
             .map(|t| assessor.assess(&t.truth.skeleton))
             .collect::<Result<_, _>>()?;
-        let truth_scores: Vec<Option<Scored>> = truth.iter().map(scored).collect();
+        let truth_scores: Vec<Option<Scored>> =
+            truth.iter().map(scored).collect::<Result<_, _>>()?;
         let mut pipeline = Intervals::default();
         let mut scores: Vec<(usize, Option<Scored>)> = Vec::new();
         let mut sample_index = 0usize;

@@ -289,6 +289,36 @@ fn adaptation_reports_operators_outside_the_served_statures_as_not_served() {
     }
     let json = serde_json::to_value(&r).unwrap();
     assert!(json["mean_grand_score_after"][0].is_null());
+    // The posture cost is the grand score plus a mean fraction in [0, 1): its mean over the same
+    // frames lies in [mean grand, mean grand + 1).
+    for i in 0..r.heights_m.len() {
+        let pairs = [
+            (
+                r.true_mean_posture_cost_before[i],
+                r.true_mean_grand_score_before[i],
+            ),
+            (r.mean_posture_cost_before[i], r.mean_grand_score_before[i]),
+        ];
+        for (cost, grand) in pairs {
+            assert!(
+                cost >= grand && cost < grand + 1.0,
+                "{i}: {cost} vs {grand}"
+            );
+        }
+    }
+    // The goal judges each seed alone: a cost made worse after adaptation fails it.
+    let cost_goal = |r: &ergocell_sim::experiments::Adaptation| {
+        let s = ergocell_sim::seeds::adaptation(&[1], std::slice::from_ref(r));
+        s.goals.last().unwrap().holds_on
+    };
+    let mut worse = r.clone();
+    worse.true_mean_posture_cost_after[2] = worse.true_mean_posture_cost_before[2] + 0.01;
+    assert_eq!(cost_goal(&worse), 0);
+    let mut better = r.clone();
+    for i in [1, 2, 3] {
+        better.true_mean_posture_cost_after[i] = better.true_mean_posture_cost_before[i] - 0.01;
+    }
+    assert_eq!(cost_goal(&better), 1);
 }
 
 /// The cell may decide a neighbouring class near a boundary: the simulated operator then reaches

@@ -1016,6 +1016,14 @@ fn seeds_adaptation(
                 spread_text(sum.true_after[i].as_ref(), 1.0, 2)
             );
         }
+        println!("posture cost while holding the part, truth, mean ± s.d. (worst seed)");
+        for (i, h) in sum.heights_m.iter().enumerate() {
+            println!(
+                "  {h:.2} m  before {}  after {}",
+                spread_text(sum.true_cost_before[i].as_ref(), 1.0, 3),
+                spread_text(sum.true_cost_after[i].as_ref(), 1.0, 3),
+            );
+        }
         print_goals(&sum.goals);
     }
     let path = c.out_dir.join("adaptation_seeds.svg");
@@ -1061,7 +1069,39 @@ fn seeds_adaptation(
         ],
         (2.0, 4.5),
     )?;
-    Ok((serde_json::to_value(&sum)?, vec![path]))
+    let cost_path = c.out_dir.join("adaptation_seeds_cost.svg");
+    line_chart(
+        &cost_path,
+        &format!(
+            "Adaptation over {} seeds: posture cost while holding the part (truth)",
+            seeds.len()
+        ),
+        "operator stature, m",
+        "mean posture cost (RULA points)",
+        &sum.heights_m,
+        &[
+            (
+                "before, mean over seeds",
+                &col(&sum.true_cost_before, |s| s.mean),
+                COLORS[0],
+                false,
+            ),
+            (
+                "after, mean over seeds",
+                &col(&sum.true_cost_after, |s| s.mean),
+                COLORS[5],
+                false,
+            ),
+            (
+                "after, worst seed",
+                &col(&sum.true_cost_after, |s| s.max),
+                COLORS[4],
+                true,
+            ),
+        ],
+        (2.5, 4.5),
+    )?;
+    Ok((serde_json::to_value(&sum)?, vec![path, cost_path]))
 }
 
 /// The height experiment on every seed: the summary and its two figures.
@@ -1359,6 +1399,17 @@ fn print_adaptation(r: &Adaptation) {
         println!(
             "{:>6.2} m {:>8.2} [{:4.2}] {after}",
             r.heights_m[i], r.mean_grand_score_before[i], r.true_mean_grand_score_before[i],
+        );
+    }
+    println!("mean posture cost while holding the part (grand score + how far into the bands; truth in brackets)");
+    for i in 0..r.heights_m.len() {
+        println!(
+            "{:>6.2} m {:>8.3} [{:5.3}] {:>8.3} [{:5.3}]",
+            r.heights_m[i],
+            r.mean_posture_cost_before[i],
+            r.true_mean_posture_cost_before[i],
+            r.mean_posture_cost_after[i],
+            r.true_mean_posture_cost_after[i],
         );
     }
     println!("mean region scores over the heights served after adaptation (before → after):");
