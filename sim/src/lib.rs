@@ -63,6 +63,7 @@ pub mod band_reliability;
 pub mod body;
 pub mod cameras;
 pub mod controller;
+pub mod design;
 pub mod detector;
 pub mod detector_fit;
 pub mod experiments;

@@ -2,6 +2,8 @@
 //!
 //! ```text
 //! ergocell trajectories validate [--class c2] [--json]   plan + check, print the report; non-zero on rejection
+//! ergocell trajectories design --out-dir designed/       choose each class's handover point for the
+//!                                                        people it serves; write class files to review
 //! ergocell trajectories lock [--class c2]                write trajectories/locks/<class>.lock.toml
 //! ergocell trajectories approve --class c2 --by <principal> --key ~/.ssh/id_ed25519
 //!                                                        sign off the lock's hash (SSH signature) in
@@ -46,6 +48,8 @@ use ergocell_robot::{
 
 use super::UsageError;
 
+mod design;
+
 /// Arguments of `ergocell trajectories`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
@@ -69,6 +73,21 @@ pub enum Sub {
         /// Print the reports as JSON (SI units) instead of text.
         #[arg(long)]
         json: bool,
+    },
+    /// Choose each class's handover point for the people it serves (ANSUR II's fitting half,
+    /// the twin's body model, the posture cost) among the points `validate` accepts, and write the
+    /// class files, `design.json` and `design_cost.svg` to a new folder for review. Locks and
+    /// approvals follow as for any edited class file.
+    Design {
+        /// Where to write; existing files are never overwritten.
+        #[arg(long)]
+        out_dir: PathBuf,
+        /// Spacing of the candidate points in the class's grasp band, metres.
+        #[arg(long, default_value_t = 0.01)]
+        step: f64,
+        /// At most this many fitting people per class, evenly spread over the subject ids.
+        #[arg(long, default_value_t = 300)]
+        people: usize,
     },
     /// Validate and write the lock file of each accepted class.
     Lock {
@@ -162,6 +181,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     match &args.command {
         Sub::Validate { class, json } => validate(&ctx, *class, *json),
         Sub::Lock { class } => lock_classes(&ctx, *class),
+        Sub::Design {
+            out_dir,
+            step,
+            people,
+        } => design::design(&ctx, out_dir, *step, *people),
         Sub::Approve { class, signing } => approve(
             &ctx,
             *class,

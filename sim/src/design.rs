@@ -1,0 +1,439 @@
+//! Handover points designed for the people a class serves, on the twin's body model.
+//!
+//! A class's handover point was once set by hand; here it is chosen. For each candidate point (the
+//! caller's grid, station frame) every person of the class reaches it with the twin's reach solver
+//! ([`solve_reach`]: the same posture the twin's sessions hold the part in), looks at it
+//! ([`look_at`]), and the ground truth's RULA worksheet of that posture is scored with the
+//! continuous posture cost ([`posture_cost`]). The candidate's cost is the mean over the people
+//! (and over the head's habitual flexion, a three-point Gauss–Hermite rule over the twin's
+//! [`Habits::rest_neck_flexion_rad`]). [`rank`] orders the candidates by that expected cost;
+//! [`choose`] takes the cheapest one the caller's validator accepts — the robot's own kinematics
+//! and QP, which this crate does not know.
+//!
+//! The people come from the caller (ANSUR II's fitting half, [`Operator::measured`]); the figures
+//! reported on the other half are [`population`]'s. No randomness: the same people and candidates
+//! give the same numbers. Units: metres, the cost in RULA points.
+
+use ergocell_anthropometry::ansur::Sex;
+use ergocell_ergonomics::posture_cost::posture_cost;
+use ergocell_ergonomics::{AssessmentConfig, RulaAssessor};
+use ergocell_skeleton::Skeleton3;
+use nalgebra::Point3;
+use serde::Serialize;
+
+use crate::body::{Operator, Posture};
+use crate::experiments::{truth_config, up};
+use crate::reach::{look_at, solve_reach, ReachConfig};
+use crate::session::Habits;
+use crate::SimError;
+
+/// Nodes and weights of the three-point Gauss–Hermite rule for a normal variable, in σ: the exact
+/// mean of any polynomial of degree ≤ 5 in it.
+const GAUSS_HERMITE_3: [(f64, f64); 3] = [
+    (0.0, 2.0 / 3.0),
+    (-1.732_050_807_568_877_2, 1.0 / 6.0),
+    (1.732_050_807_568_877_2, 1.0 / 6.0),
+];
+
+/// One person holding the part at one point.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HoldCost {
+    /// Expected posture cost over the head's habitual flexion (RULA points).
+    pub cost: f64,
+    /// Expected RULA grand score over the same.
+    pub grand_score: f64,
+    /// How far the hand ends from the point, metres (the reach solver's miss).
+    pub miss_m: f64,
+}
+
+/// The twin's body model of the hold: what it costs `op` to hold the part at `target_m` (station
+/// frame: the operator stands at the origin facing +x), with the population's average habits,
+/// expected over where the part really arrives: the twin scatters each cycle's point by
+/// `placement_sigma_m` in each axis ([`crate::SessionScript::target_sigma_m`]), and a point chosen
+/// on a band's edge without it would put half the cycles past the edge. Stroud's degree-3 rule for
+/// a normal vector (the six points ±√3σ along each axis, equal weights) gives that expectation;
+/// `placement_sigma_m` = 0 evaluates the point alone.
+///
+/// # Errors
+/// A non-finite target, or a posture the assessor cannot score.
+pub fn hold_cost(
+    op: &Operator,
+    target_m: &Point3<f64>,
+    placement_sigma_m: f64,
+    habits: &Habits,
+    reach: &ReachConfig,
+) -> Result<HoldCost, SimError> {
+    if !(placement_sigma_m.is_finite() && placement_sigma_m >= 0.0) {
+        return Err(SimError::BadParameter {
+            name: "placement_sigma_m",
+            value: placement_sigma_m,
+            why: "must be finite and >= 0",
+        });
+    }
+    if placement_sigma_m == 0.0 {
+        return hold_cost_at(op, target_m, habits, reach);
+    }
+    let r = 3.0_f64.sqrt() * placement_sigma_m;
+    let mut out = HoldCost {
+        cost: 0.0,
+        grand_score: 0.0,
+        miss_m: 0.0,
+    };
+    for axis in 0..3 {
+        for sign in [-1.0, 1.0] {
+            let mut at = *target_m;
+            at[axis] += sign * r;
+            let h = hold_cost_at(op, &at, habits, reach)?;
+            out.cost += h.cost / 6.0;
+            out.grand_score += h.grand_score / 6.0;
+            out.miss_m = out.miss_m.max(h.miss_m);
+        }
+    }
+    Ok(out)
+}
+
+fn hold_cost_at(
+    op: &Operator,
+    target_m: &Point3<f64>,
+    habits: &Habits,
+    reach: &ReachConfig,
+) -> Result<HoldCost, SimError> {
+    let mut rest = Posture {
+        trunk_flexion_rad: habits.trunk_flexion_rad.0,
+        neck_flexion_rad: habits.rest_neck_flexion_rad.0,
+        ..Posture::default()
+    };
+    rest.left_arm.wrist_flexion_rad = habits.wrist_flexion_rad.0;
+    rest.right_arm.wrist_flexion_rad = habits.wrist_flexion_rad.0;
+    // The neck does not move the hand: one reach serves every habitual head flexion.
+    let solved = solve_reach(op, &rest, target_m, reach)?;
+    let config = truth_config(&AssessmentConfig::new(up()?));
+    let (mean, sigma) = habits.rest_neck_flexion_rad;
+    let mut out = HoldCost {
+        cost: 0.0,
+        grand_score: 0.0,
+        miss_m: solved.miss_m,
+    };
+    for (z, w) in GAUSS_HERMITE_3 {
+        let mut posture = solved.posture;
+        posture.neck_flexion_rad = mean + z * sigma;
+        look_at(op, &mut posture, target_m, reach);
+        let skeleton = Skeleton3::from_points(0, &op.landmarks(&posture))?;
+        let assessment = RulaAssessor::new(config)?.assess(&skeleton)?;
+        let Some(side) = assessment.headline() else {
+            return Err(SimError::BadParameter {
+                name: "target",
+                value: target_m.coords.norm(),
+                why: "the holding posture could not be scored",
+            });
+        };
+        out.cost += w * posture_cost(&side.input)?.cost();
+        out.grand_score += w * f64::from(side.scores.final_score);
+    }
+    Ok(out)
+}
+
+/// Why `point` does not improve on `before` for every stature of `statures_m` (operators of
+/// Drillis & Contini's proportions): where its posture cost is not lower by at least `margin`, or
+/// its expected RULA grand score is higher. `None` when it improves on it everywhere.
+///
+/// # Errors
+/// As [`hold_cost`]; a stature outside 0.5–2.5 m.
+pub fn worse_than_before(
+    point: [f64; 3],
+    before: [f64; 3],
+    statures_m: &[f64],
+    margin: f64,
+    placement_sigma_m: f64,
+    habits: &Habits,
+    reach: &ReachConfig,
+) -> Result<Option<String>, SimError> {
+    let mut why = Vec::new();
+    for &h in statures_m {
+        let op = Operator::new(h)?;
+        let after = hold_cost(&op, &point.into(), placement_sigma_m, habits, reach)?;
+        let was = hold_cost(&op, &before.into(), placement_sigma_m, habits, reach)?;
+        if after.cost > was.cost - margin {
+            why.push(format!(
+                "{h:.2} m: posture cost {:.3} not below {:.3} − {margin}",
+                after.cost, was.cost
+            ));
+        } else if after.grand_score > was.grand_score {
+            why.push(format!(
+                "{h:.2} m: RULA {:.2} above {:.2}",
+                after.grand_score, was.grand_score
+            ));
+        }
+    }
+    Ok((!why.is_empty()).then(|| why.join("; ")))
+}
+
+/// One candidate handover point and what it costs the class's people.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CandidateCost {
+    /// Station frame: forward, lateral, height, metres.
+    pub station_m: [f64; 3],
+    /// Mean posture cost over the people.
+    pub mean_cost: f64,
+    /// Mean RULA grand score over the people.
+    pub mean_grand_score: f64,
+    /// The largest reach miss over the people, metres (a point someone cannot reach costs them
+    /// the posture of their best try).
+    pub worst_miss_m: f64,
+}
+
+/// The costs of every candidate for `people`, cheapest first (ties: the earlier candidate).
+///
+/// # Errors
+/// As [`hold_cost`]; an empty set of people or candidates.
+pub fn rank(
+    people: &[Operator],
+    candidates: &[[f64; 3]],
+    placement_sigma_m: f64,
+    habits: &Habits,
+    reach: &ReachConfig,
+) -> Result<Vec<CandidateCost>, SimError> {
+    if people.is_empty() || candidates.is_empty() {
+        return Err(SimError::BadParameter {
+            name: if people.is_empty() {
+                "people"
+            } else {
+                "candidates"
+            },
+            value: 0.0,
+            why: "a design needs at least one person and one candidate point",
+        });
+    }
+    let one = |c: [f64; 3]| -> Result<CandidateCost, SimError> {
+        let point = Point3::from(c);
+        let (mut cost, mut grand, mut miss) = (0.0, 0.0, 0.0_f64);
+        for op in people {
+            let h = hold_cost(op, &point, placement_sigma_m, habits, reach)?;
+            cost += h.cost;
+            grand += h.grand_score;
+            miss = miss.max(h.miss_m);
+        }
+        let n = people.len() as f64;
+        Ok(CandidateCost {
+            station_m: c,
+            mean_cost: cost / n,
+            mean_grand_score: grand / n,
+            worst_miss_m: miss,
+        })
+    };
+    // Each candidate is independent: split them over the cores (the result does not depend on
+    // how, each is summed over the people in the same order).
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    let chunk = candidates.len().div_ceil(threads);
+    let parts: Vec<Result<Vec<CandidateCost>, SimError>> = std::thread::scope(|s| {
+        let handles: Vec<_> = candidates
+            .chunks(chunk)
+            .map(|part| s.spawn(move || part.iter().map(|&c| one(c)).collect()))
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| {
+                h.join().unwrap_or(Err(SimError::BadParameter {
+                    name: "candidates",
+                    value: 0.0,
+                    why: "a design thread panicked",
+                }))
+            })
+            .collect()
+    });
+    let mut out = Vec::with_capacity(candidates.len());
+    for p in parts {
+        out.extend(p?);
+    }
+    out.sort_by(|a, b| a.mean_cost.total_cmp(&b.mean_cost));
+    Ok(out)
+}
+
+/// The design of one class: the cheapest candidate the validator accepts, and why the cheaper ones
+/// were refused.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Choice {
+    pub chosen: Option<CandidateCost>,
+    /// Cheaper candidates the validator refused, with its reason, cheapest first.
+    pub refused: Vec<(CandidateCost, String)>,
+}
+
+/// Walks `ranked` cheapest first and returns the first candidate `validate` accepts (`Ok(None)`);
+/// `Ok(Some(reason))` refuses one. At most `max_refusals` are tried before giving up.
+///
+/// # Errors
+/// The validator's own error (an input it cannot judge) stops the walk.
+pub fn choose<E>(
+    ranked: &[CandidateCost],
+    max_refusals: usize,
+    mut validate: impl FnMut([f64; 3]) -> Result<Option<String>, E>,
+) -> Result<Choice, E> {
+    let mut refused = Vec::new();
+    for c in ranked {
+        match validate(c.station_m)? {
+            None => {
+                return Ok(Choice {
+                    chosen: Some(*c),
+                    refused,
+                })
+            }
+            Some(why) => {
+                refused.push((*c, why));
+                if refused.len() >= max_refusals {
+                    break;
+                }
+            }
+        }
+    }
+    Ok(Choice {
+        chosen: None,
+        refused,
+    })
+}
+
+/// The grid of candidate points: the multiples of `step_m` inside `forward_m` and `height_m`
+/// (round numbers a reviewer can read, never past an edge), at one lateral offset. Empty when a
+/// range holds no multiple or the step is not positive.
+pub fn grid(forward_m: [f64; 2], height_m: [f64; 2], lateral_m: f64, step_m: f64) -> Vec<[f64; 3]> {
+    let axis = |[lo, hi]: [f64; 2]| -> Vec<f64> {
+        if !(step_m > 0.0 && lo.is_finite() && hi.is_finite() && lo <= hi) {
+            return Vec::new();
+        }
+        let (first, last) = ((lo / step_m).ceil() as i64, (hi / step_m).floor() as i64);
+        (first..=last)
+            .map(|i| (i as f64 * step_m * 1e6).round() / 1e6)
+            .filter(|x| (lo..=hi).contains(x))
+            .collect()
+    };
+    let (f, h) = (axis(forward_m), axis(height_m));
+    f.iter()
+        .flat_map(|&x| h.iter().map(move |&z| [x, lateral_m, z]))
+        .collect()
+}
+
+/// Statures from `lo_m` up to (not including) `hi_m`, every `step_m`, rounded to the millimetre.
+pub fn statures(lo_m: f64, hi_m: f64, step_m: f64) -> Vec<f64> {
+    if !(step_m > 0.0 && lo_m.is_finite() && hi_m.is_finite()) {
+        return Vec::new();
+    }
+    let n = ((hi_m - lo_m) / step_m - 1e-9).ceil().max(0.0) as usize;
+    (0..n)
+        .map(|i| ((lo_m + step_m * i as f64) * 1e3).round() / 1e3)
+        .collect()
+}
+
+/// The posture costs of a population, one group apart.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PopulationCost {
+    pub people: usize,
+    pub mean: f64,
+    /// The 95th percentile (nearest rank).
+    pub p95: f64,
+}
+
+/// Mean and 95th percentile of each sex's costs; `None` for a sex with nobody.
+pub fn population(costs: &[(Sex, f64)]) -> [Option<PopulationCost>; 2] {
+    [Sex::Female, Sex::Male].map(|sex| {
+        let mut v: Vec<f64> = costs
+            .iter()
+            .filter(|(s, _)| *s == sex)
+            .map(|&(_, c)| c)
+            .collect();
+        if v.is_empty() {
+            return None;
+        }
+        v.sort_by(f64::total_cmp);
+        let rank = ((0.95 * v.len() as f64).ceil() as usize).clamp(1, v.len());
+        Some(PopulationCost {
+            people: v.len(),
+            mean: v.iter().sum::<f64>() / v.len() as f64,
+            p95: v[rank - 1],
+        })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn op(h: f64) -> Operator {
+        Operator::new(h).unwrap()
+    }
+
+    #[test]
+    fn a_point_far_below_the_hand_costs_more_than_one_at_elbow_height() {
+        let (habits, reach) = (Habits::default(), ReachConfig::default());
+        let o = op(1.75);
+        let elbow = hold_cost(&o, &Point3::new(0.40, -0.10, 1.08), 0.0, &habits, &reach).unwrap();
+        let low = hold_cost(&o, &Point3::new(0.40, -0.10, 0.75), 0.0, &habits, &reach).unwrap();
+        let scattered =
+            hold_cost(&o, &Point3::new(0.40, -0.10, 0.75), 0.01, &habits, &reach).unwrap();
+        assert!(
+            (scattered.cost - low.cost).abs() < 0.5,
+            "{scattered:?} vs {low:?}"
+        );
+        assert!(hold_cost(&o, &Point3::new(0.4, 0.0, 1.0), -0.01, &habits, &reach).is_err());
+        assert!(elbow.miss_m < 0.01, "reached: {elbow:?}");
+        assert!(
+            low.cost > elbow.cost + 0.2,
+            "bending to 0.75 m must cost: {low:?} vs {elbow:?}"
+        );
+    }
+
+    #[test]
+    fn rank_puts_the_cheapest_first_and_choose_skips_refusals() {
+        let (habits, reach) = (Habits::default(), ReachConfig::default());
+        let people = [op(1.60), op(1.75)];
+        let candidates = [
+            [0.40, -0.10, 0.70],
+            [0.40, -0.10, 1.00],
+            [0.40, -0.10, 1.40],
+        ];
+        let ranked = rank(&people, &candidates, 0.0, &habits, &reach).unwrap();
+        assert_eq!(ranked[0].station_m, candidates[1]);
+        assert!(ranked.windows(2).all(|w| w[0].mean_cost <= w[1].mean_cost));
+        let choice = choose::<()>(&ranked, 5, |p| {
+            Ok((p == candidates[1]).then(|| "refused".to_owned()))
+        })
+        .unwrap();
+        assert_eq!(choice.refused.len(), 1);
+        assert_eq!(
+            choice.chosen.map(|c| c.station_m),
+            Some(ranked[1].station_m)
+        );
+        let none = choose::<()>(&ranked, 2, |_| Ok(Some("no".to_owned()))).unwrap();
+        assert_eq!((none.chosen, none.refused.len()), (None, 2));
+        assert!(rank(&[], &candidates, 0.0, &habits, &reach).is_err());
+    }
+
+    #[test]
+    fn grid_holds_the_round_points_inside_the_ranges() {
+        let g = grid([0.295, 0.32], [0.9999, 1.0151], -0.1, 0.005);
+        let f: Vec<f64> = g.iter().map(|p| p[0]).step_by(4).collect();
+        assert_eq!(f, vec![0.295, 0.30, 0.305, 0.31, 0.315, 0.32]);
+        let z: Vec<f64> = g.iter().take(4).map(|p| p[2]).collect();
+        assert_eq!(z, vec![1.0, 1.005, 1.01, 1.015]);
+        assert!(g.iter().all(|p| p[1] == -0.1));
+        assert!(grid([0.3, 0.2], [1.0, 1.1], 0.0, 0.01).is_empty());
+        assert!(grid([0.2, 0.3], [1.0, 1.1], 0.0, 0.0).is_empty());
+    }
+
+    #[test]
+    fn statures_stop_before_the_upper_bound() {
+        assert_eq!(statures(1.50, 1.53, 0.01), vec![1.50, 1.51, 1.52]);
+        assert_eq!(statures(1.82, 1.845, 0.01), vec![1.82, 1.83, 1.84]);
+        assert!(statures(1.8, 1.7, 0.01).is_empty());
+        assert!(statures(1.7, 1.8, 0.0).is_empty());
+    }
+
+    #[test]
+    fn population_splits_by_sex_with_nearest_rank_p95() {
+        let mut costs: Vec<(Sex, f64)> = (1..=20).map(|i| (Sex::Female, f64::from(i))).collect();
+        costs.push((Sex::Male, 3.0));
+        let [f, m] = population(&costs);
+        let f = f.unwrap();
+        assert_eq!((f.people, f.mean, f.p95), (20, 10.5, 19.0));
+        assert_eq!(m.unwrap().p95, 3.0);
+        assert!(population(&[])[0].is_none());
+    }
+}

@@ -1,0 +1,369 @@
+//! `ergocell trajectories design --out-dir <dir>`: each class's handover point chosen for the people
+//! it serves, written as class files for the safety engineer's review.
+//!
+//! Composition only: the people are ANSUR II's ([`ergocell_anthropometry::ansur`]), split by
+//! subject id; the cost of a point is the twin's body model ([`ergocell_sim::design`]); a candidate
+//! is accepted only by the same [`plan_and_validate`] as `trajectories validate`. Nothing is locked
+//! or approved here: `lock` and `approve` follow as for any edited class file.
+
+use std::path::Path;
+
+use anyhow::Context as _;
+use ergocell_anthropometry::ansur::{self, Person, Sex, Split};
+use ergocell_ergonomics::height::ClassThresholds;
+use ergocell_ergonomics::HeightClass;
+use ergocell_robot::validate::grasp_band;
+use ergocell_robot::{plan_and_validate, PlanInputs, TrajectoryClass, TrajectorySpec};
+use ergocell_sim::design::{self, CandidateCost, Choice, PopulationCost};
+use ergocell_sim::session::Habits;
+use ergocell_sim::{Operator, ReachConfig};
+use serde::Serialize;
+
+use super::{write_new, Context};
+use crate::commands::sim::{line_chart, COLORS};
+
+/// How many of the cheapest candidates may be refused before a class gives up.
+const MAX_REFUSALS: usize = 400;
+
+/// How much lower than at the "before" point c1's and c3's point must put the posture cost of
+/// every stature they serve (RULA points): a margin for what the twin's sessions add to the body
+/// model (each person's habits, the robot's placement scatter).
+const MARGIN: f64 = 0.02;
+
+/// Where the part really arrives around the point, σ per axis (metres): the twin's
+/// placement scatter (`target_sigma_m` of [`ergocell_sim::SessionScript::new`]).
+fn scatter_m() -> f64 {
+    ergocell_sim::SessionScript::new(nalgebra::Point3::origin()).target_sigma_m
+}
+
+/// One class's design.
+#[derive(Debug, Serialize)]
+struct ClassDesign {
+    class: TrajectoryClass,
+    stature_m: [f64; 2],
+    /// ANSUR II fitting people of the class the point was chosen for.
+    fit_people: usize,
+    candidates: usize,
+    step_m: f64,
+    /// Today's point, on the same people.
+    hand_set: CandidateCost,
+    choice: Choice,
+}
+
+/// The figures on the people never fitted: the whole servable reporting half.
+#[derive(Debug, Serialize)]
+struct Population {
+    /// Every person at the single "before" point (c2's designed point).
+    before: [Option<PopulationCost>; 2],
+    /// Each person at their class's hand-set point.
+    hand_set: [Option<PopulationCost>; 2],
+    /// Each person at their class's designed point.
+    designed: [Option<PopulationCost>; 2],
+}
+
+#[derive(Debug, Serialize)]
+struct Report {
+    step_m: f64,
+    classes: Vec<ClassDesign>,
+    /// Women first, then men.
+    population: Population,
+    /// Cost against stature (Drillis & Contini's proportions), per class point.
+    statures_m: Vec<f64>,
+    curves: Vec<(String, Vec<f64>)>,
+}
+
+fn class_of(c: TrajectoryClass) -> HeightClass {
+    match c {
+        TrajectoryClass::C1 => HeightClass::C1,
+        TrajectoryClass::C2 => HeightClass::C2,
+        TrajectoryClass::C3 => HeightClass::C3,
+    }
+}
+
+/// Runs the design and writes `<out_dir>/c1.toml`…, `design.json` and `design_cost.svg`, none of
+/// them over an existing file.
+pub(super) fn design(
+    ctx: &Context,
+    out_dir: &Path,
+    step_m: f64,
+    sample: usize,
+) -> anyhow::Result<()> {
+    if !(step_m.is_finite() && (0.001..=0.05).contains(&step_m)) {
+        anyhow::bail!(super::UsageError(format!(
+            "--step {step_m}: expected 0.001 to 0.05 m"
+        )));
+    }
+    let people = ansur::people()?;
+    let thresholds = ClassThresholds::default();
+    let (habits, reach, scatter) = (Habits::default(), ReachConfig::default(), scatter_m());
+    let mut specs = Vec::new();
+    for class in TrajectoryClass::ALL {
+        let path = ctx.layout.spec(class);
+        let text = super::read(&path)?;
+        let (spec, hashes) = ctx.spec(class)?;
+        specs.push((class, text, spec, hashes));
+    }
+    // c2 first: its point is the unadapted cell's single point (the paper's "before", set for a
+    // 1.75 m operator), and c1's and c3's must improve on it for every stature they serve.
+    let mut designs: Vec<Option<ClassDesign>> = vec![None, None, None];
+    let mut before = None;
+    for i in [1, 0, 2] {
+        let (class, _, spec, hashes) = &specs[i];
+        let own = |p: &&Person| {
+            p.split() == Split::Fit && HeightClass::of(p.stature_m, &thresholds) == class_of(*class)
+        };
+        let all: Vec<&Person> = people.iter().filter(own).collect();
+        // At most `sample` of them, evenly spread over the subject ids (the cost of a point is a
+        // mean; a few hundred people fix it to a few thousandths).
+        let every = all.len().div_ceil(sample.max(1)).max(1);
+        let fit: Vec<Operator> = all
+            .iter()
+            .step_by(every)
+            .map(|p| Operator::measured(p))
+            .collect::<Result<_, _>>()?;
+        let band = grasp_band(spec.stature.min_m, spec.stature.max_m);
+        let h = &spec.handover;
+        let candidates = design::grid(band.forward_m, band.height_m, h.lateral_m, step_m);
+        let hand_set = design::rank(
+            &fit,
+            &[[h.forward_m, h.lateral_m, h.height_m]],
+            scatter,
+            &habits,
+            &reach,
+        )?;
+        let ranked = design::rank(&fit, &candidates, scatter, &habits, &reach)?;
+        // Where c1's and c3's points must improve on the single point: every centimetre of the
+        // class's statures, Drillis & Contini's proportions.
+        let statures = design::statures(spec.stature.min_m, spec.stature.max_m, 0.01);
+        let choice = design::choose::<anyhow::Error>(&ranked, MAX_REFUSALS, |point| {
+            if let Some(before) = before {
+                let worse = design::worse_than_before(
+                    point, before, &statures, MARGIN, scatter, &habits, &reach,
+                )?;
+                if worse.is_some() {
+                    return Ok(worse);
+                }
+            }
+            let [f, l, z] = point;
+            let mut candidate: TrajectorySpec = spec.clone();
+            candidate.handover.forward_m = f;
+            candidate.handover.lateral_m = l;
+            candidate.handover.height_m = z;
+            let inputs = PlanInputs {
+                model: &ctx.model,
+                cell: &ctx.cell,
+                spec: &candidate,
+                hashes,
+            };
+            Ok(match plan_and_validate(&inputs) {
+                Ok(v) if v.report.accepted => None,
+                Ok(v) => Some(v.report.reasons.join("; ")),
+                Err(e) => Some(e.to_string()),
+            })
+        })?;
+        eprintln!(
+            "{class}: {} fitting people, {} candidates, {} refused",
+            fit.len(),
+            candidates.len(),
+            choice.refused.len()
+        );
+        if before.is_none() {
+            before = Some(choice.chosen.map_or(hand_set[0].station_m, |c| c.station_m));
+        }
+        designs[i] = Some(ClassDesign {
+            class: *class,
+            stature_m: [spec.stature.min_m, spec.stature.max_m],
+            fit_people: fit.len(),
+            candidates: candidates.len(),
+            step_m,
+            hand_set: hand_set[0],
+            choice,
+        });
+    }
+    let classes: Vec<ClassDesign> = designs.into_iter().flatten().collect();
+    let point = |i: usize, designed: bool| -> [f64; 3] {
+        let c = &classes[i];
+        match (designed, &c.choice.chosen) {
+            (true, Some(chosen)) => chosen.station_m,
+            _ => c.hand_set.station_m,
+        }
+    };
+    // The people never fitted, each at the single before point, their class's hand-set point and
+    // their class's designed point.
+    let before = point(1, true);
+    let mut costs: [Vec<(Sex, f64)>; 3] = Default::default();
+    for p in people.iter().filter(|p| p.split() == Split::Report) {
+        let op = Operator::measured(p)?;
+        let class = HeightClass::of(p.stature_m, &thresholds);
+        let k = HeightClass::ALL
+            .iter()
+            .position(|c| *c == class)
+            .unwrap_or(1);
+        for (j, at) in [before, point(k, false), point(k, true)]
+            .into_iter()
+            .enumerate()
+        {
+            let c = design::hold_cost(&op, &at.into(), scatter, &habits, &reach)?;
+            costs[j].push((p.sex, c.cost));
+        }
+    }
+    let [b, hs, d] = costs.map(|c| design::population(&c));
+    let statures_m: Vec<f64> = (0..=50).map(|i| 1.50 + 0.01 * f64::from(i)).collect();
+    let mut curves = Vec::new();
+    let mut named = vec![(
+        "before: c2's designed point for everyone".to_owned(),
+        before,
+    )];
+    for (i, c) in classes.iter().enumerate() {
+        named.push((format!("{} hand-set", c.class), point(i, false)));
+        named.push((format!("{} designed", c.class), point(i, true)));
+    }
+    for (name, at) in named {
+        let curve = statures_m
+            .iter()
+            .map(|&h| {
+                let op = Operator::new(h)?;
+                Ok(design::hold_cost(&op, &at.into(), scatter, &habits, &reach)?.cost)
+            })
+            .collect::<Result<Vec<f64>, ergocell_sim::SimError>>()?;
+        curves.push((name, curve));
+    }
+    let report = Report {
+        step_m,
+        classes,
+        population: Population {
+            before: b,
+            hand_set: hs,
+            designed: d,
+        },
+        statures_m,
+        curves,
+    };
+    std::fs::create_dir_all(out_dir)
+        .with_context(|| format!("cannot create {}", out_dir.display()))?;
+    for (i, (class, text, _, _)) in specs.iter().enumerate() {
+        let c = &report.classes[i];
+        let Some(chosen) = &c.choice.chosen else {
+            eprintln!("{class}: no candidate validated; its file is not written");
+            continue;
+        };
+        let edited = with_handover(text, c, chosen)?;
+        let path = out_dir.join(format!("{class}.toml"));
+        write_new(&path, &edited)?;
+        println!("wrote {}", path.display());
+    }
+    print_report(&report);
+    let json = out_dir.join("design.json");
+    write_new(&json, &serde_json::to_string_pretty(&report)?)?;
+    println!("wrote {}", json.display());
+    let svg = out_dir.join("design_cost.svg");
+    if svg.exists() {
+        anyhow::bail!("{} exists: it is never overwritten", svg.display());
+    }
+    plot(&report, &svg)?;
+    println!("wrote {}", svg.display());
+    Ok(())
+}
+
+/// The class file with its `[handover]` point replaced, and the comment above it saying where it
+/// came from; everything else (comments included) as it was.
+fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow::Result<String> {
+    let mut doc: toml_edit::DocumentMut = text.parse().context("class file")?;
+    let handover = doc
+        .get_mut("handover")
+        .and_then(toml_edit::Item::as_table_mut)
+        .context("class file has no [handover] table")?;
+    let [f, l, z] = chosen.station_m;
+    let hs = c.hand_set.station_m;
+    let comment = format!(
+        "\n# Designed (`ergocell trajectories design`): of {n} candidate points {step:.0} mm apart in the class's\n\
+         # grasp band, the one with the lowest expected posture cost for the class's {p} ANSUR II people of\n\
+         # the fitting half (even subject ids, {lo:.2}–{hi:.2} m) that `trajectories validate` accepts:\n\
+         # mean posture cost {cost:.3} (RULA grand score {grand:.2}); the hand-set point ({hf:.3}, {hz:.3}) m\n\
+         # cost them {hcost:.3} ({hgrand:.2}). {refused} cheaper candidates were refused by validation.\n",
+        n = c.candidates,
+        step = c.step_m * 1e3,
+        p = c.fit_people,
+        lo = c.stature_m[0],
+        hi = c.stature_m[1],
+        cost = chosen.mean_cost,
+        grand = chosen.mean_grand_score,
+        hf = hs[0],
+        hz = hs[2],
+        hcost = c.hand_set.mean_cost,
+        hgrand = c.hand_set.mean_grand_score,
+        refused = c.choice.refused.len(),
+    );
+    let round = |x: f64| (x * 1e4).round() / 1e4;
+    handover["forward_m"] = toml_edit::value(round(f));
+    handover["lateral_m"] = toml_edit::value(round(l));
+    handover["height_m"] = toml_edit::value(round(z));
+    if let Some(mut key) = handover.key_mut("forward_m") {
+        key.leaf_decor_mut().set_prefix(comment);
+    }
+    let out = doc.to_string();
+    TrajectorySpec::from_toml_str(&out).context("the designed class file does not read back")?;
+    Ok(out)
+}
+
+fn population_text(p: &[Option<PopulationCost>; 2]) -> String {
+    let one = |x: &Option<PopulationCost>| {
+        x.map_or("—".to_owned(), |c| {
+            format!("mean {:.3}, p95 {:.3} ({} people)", c.mean, c.p95, c.people)
+        })
+    };
+    format!("women {}; men {}", one(&p[0]), one(&p[1]))
+}
+
+fn print_report(r: &Report) {
+    println!("posture cost of holding the part (RULA points), ANSUR II fitting half:");
+    for c in &r.classes {
+        let hs = &c.hand_set;
+        let Some(d) = &c.choice.chosen else {
+            println!("  {}: no candidate validated", c.class);
+            continue;
+        };
+        println!(
+            "  {}: hand-set ({:.3}, {:.3}, {:.3}) m {:.3} → designed ({:.3}, {:.3}, {:.3}) m {:.3} ({} people, {} refused)",
+            c.class,
+            hs.station_m[0], hs.station_m[1], hs.station_m[2], hs.mean_cost,
+            d.station_m[0], d.station_m[1], d.station_m[2], d.mean_cost,
+            c.fit_people, c.choice.refused.len()
+        );
+    }
+    println!("people never fitted (reporting half), posture cost:");
+    println!(
+        "  before (one point): {}",
+        population_text(&r.population.before)
+    );
+    println!(
+        "  hand-set classes:   {}",
+        population_text(&r.population.hand_set)
+    );
+    println!(
+        "  designed classes:   {}",
+        population_text(&r.population.designed)
+    );
+}
+
+fn plot(r: &Report, path: &Path) -> anyhow::Result<()> {
+    let series: Vec<(&str, &[f64], _, bool)> = r
+        .curves
+        .iter()
+        .enumerate()
+        .map(|(i, (name, v))| {
+            let colour = COLORS[i.div_ceil(2) % COLORS.len()];
+            // Hand-set dashed, designed solid; the before line solid in the first colour.
+            (name.as_str(), v.as_slice(), colour, i % 2 == 1)
+        })
+        .collect();
+    line_chart(
+        path,
+        "Posture cost of holding the part against stature, per class's point",
+        "operator stature, m",
+        "posture cost (RULA points)",
+        &r.statures_m,
+        &series,
+        (2.5, 4.5),
+    )
+}
