@@ -46,8 +46,15 @@ pub mod grasp_posture {
 /// Where one handover point may lie for a class: height and forward distance of the grasp point, and
 /// the largest lateral offset, in the station frame (metres).
 ///
-/// Each coordinate is within what some posture of the [`grasp_posture`] zone reaches for every
-/// stature of the class: a necessary condition, checked coordinate by coordinate. It is not
+/// Two bands are built from the [`grasp_posture`] zone. [`class_band`], the one validation
+/// checks: each coordinate within what the zone reaches for *some* stature of the class, so no
+/// operator the class serves is handed the part where none of them holds it in the zone. Which
+/// point inside it suits the class's people best is measured, not assumed: the posture cost on the
+/// digital twin (`ergocell trajectories design`). [`grasp_band`]: within what it reaches for
+/// *every* stature of the class (the bands' intersection), which for a class 14–18 cm wide is a
+/// box of 2–6 cm and on the twin costs the neck more than it spares the arm.
+///
+/// Either is a condition checked coordinate by coordinate. It is not
 /// sufficient: one operator's reachable set in the zone is not a box (its low-far and high-near
 /// corners are out of reach), so a point inside the band can need an elbow a little outside 60–100°
 /// or a forearm a little above level for some stature. [`ArmPosture::holding`] says which;
@@ -159,9 +166,22 @@ pub fn grasp_fractions() -> ([f64; 2], [f64; 2]) {
     (height, forward)
 }
 
-/// The band one handover point must lie in to suit every operator of stature `h_min..=h_max`: the
-/// intersection of each operator's [`grasp_fractions`] scaled by stature, so the highest low edge
-/// (the tallest operator's) and the lowest high edge (the shortest's).
+/// The band validation checks a class's handover against: the union of each operator's
+/// [`grasp_fractions`] scaled by stature over `h_min..=h_max`, so the shortest operator's low edge
+/// and the tallest's high edge. The lateral limit stays the narrowest operator's.
+pub fn class_band(h_min: f64, h_max: f64) -> GraspBand {
+    let (height, forward) = grasp_fractions();
+    GraspBand {
+        height_m: [height[0] * h_min, height[1] * h_max],
+        forward_m: [forward[0] * h_min, forward[1] * h_max],
+        lateral_max_m: 0.5 * anthropometry::SHOULDER_WIDTH * h_min,
+    }
+}
+
+/// The band one handover point would lie in to suit every operator of stature `h_min..=h_max` in
+/// the zone: the intersection of each operator's [`grasp_fractions`] scaled by stature, so the
+/// highest low edge (the tallest operator's) and the lowest high edge (the shortest's). For
+/// reference; validation checks [`class_band`].
 pub fn grasp_band(h_min: f64, h_max: f64) -> GraspBand {
     let (height, forward) = grasp_fractions();
     GraspBand {
@@ -1340,7 +1360,7 @@ fn check_singularity(samples: &[CartesianSample], cell: &CellConfig) -> Findings
     }
 }
 
-/// The handover point against the class's [`grasp_band`], the planar arm holding it at the class's
+/// The handover point against the class's [`class_band`], the planar arm holding it at the class's
 /// shortest, middle and tallest stature (for the reviewer), and the final knot's FK against the
 /// handover pose (within 1 mm and 0.01 rad).
 fn check_handover(
@@ -1351,15 +1371,15 @@ fn check_handover(
 ) -> HandoverFindings {
     let h = &spec.handover;
     let (h_min, h_max) = (spec.stature.min_m, spec.stature.max_m);
-    let band = grasp_band(h_min, h_max);
+    let band = class_band(h_min, h_max);
     let inside_band = band.contains(h.forward_m, h.lateral_m, h.height_m);
     let T_base_end =
         model.fk_flange_unchecked(&trajectory.q[trajectory.knots() - 1]) * frames.T_flange_tcp;
     let (fk_dp, fk_dr) = pose_error(&T_base_end, &frames.T_base_handover);
     let outside_band = (!inside_band).then(|| {
         format!(
-            "handover (forward {:.3}, lateral {:.3}, height {:.3}) m is outside the class band: height {:.3}–{:.3} m, \
-             forward {:.3}–{:.3} m, |lateral| ≤ {:.3} m",
+            "handover (forward {:.3}, lateral {:.3}, height {:.3}) m is outside the class band (where some operator of \
+             the class holds it in the arm's score-1 zone): height {:.3}–{:.3} m, forward {:.3}–{:.3} m, |lateral| ≤ {:.3} m",
             h.forward_m,
             h.lateral_m,
             h.height_m,
@@ -2125,15 +2145,21 @@ mod tests {
             .fk_miss
             .is_some_and(|r| r.starts_with("final point misses the handover target by")));
 
-        // c3's height is outside c2's band: an input check, whatever the trajectory.
-        spec.handover.height_m = 1.15;
+        // Above the tallest c2 operator's zone (0.643 × 1.82 m): an input check, whatever the
+        // trajectory.
+        spec.handover.height_m = 1.25;
         let f = check_handover(&model, &spec, &frames, &t);
         assert!(!f.check.inside_band);
         assert_eq!(
             f.outside_band.as_deref(),
             Some(
-                "handover (forward 0.425, lateral -0.100, height 1.150) m is outside the class band: \
-                 height 1.026–1.081 m, forward 0.342–0.443 m, |lateral| ≤ 0.218 m"
+                format!(
+                    "handover (forward {:.3}, lateral -0.100, height 1.250) m is outside the class band (where some \
+                     operator of the class holds it in the arm's score-1 zone): height 0.947–1.171 m, forward \
+                     0.316–0.480 m, |lateral| ≤ 0.218 m",
+                    spec.handover.forward_m
+                )
+                .as_str()
             )
         );
     }

@@ -174,11 +174,12 @@ fn editing_one_byte_of_the_trajectory_file_makes_verify_fail() {
         .unwrap();
     let approvals_text = approvals.to_toml().unwrap();
 
-    // Change one byte: `height_m = 1.080` → `height_m = 1.070` (still inside the class band, so only
-    // the hash can tell). Even a comment byte would do.
+    // Change one byte: the handover height's last digit (still inside the class band, so only the
+    // hash can tell). Even a comment byte would do.
     let mut bytes = text.clone().into_bytes();
-    let at = text.find("height_m = 1.080").unwrap() + "height_m = 1.0".len();
-    bytes[at] = b'7';
+    let line = text.find("\nheight_m = ").unwrap() + 1;
+    let at = line + text[line..].find('\n').unwrap() - 1;
+    bytes[at] = if bytes[at] == b'1' { b'2' } else { b'1' };
     let edited = String::from_utf8(bytes).unwrap();
     assert_eq!(edited.len(), text.len());
     let current = common::hashes(&s, &edited);

@@ -151,7 +151,7 @@ fn an_unreachable_handover_is_rejected_with_target_and_closest_pose() {
 fn a_handover_outside_the_class_band_is_rejected() {
     let s = common::shipped();
     let mut spec = common::spec(TrajectoryClass::C2);
-    spec.handover.height_m = 1.15; // c3's height, too high for c2
+    spec.handover.height_m = 1.25; // above the tallest c2 operator's zone (0.643 × 1.82 = 1.170 m)
     let v = plan(&s, &spec).unwrap();
     assert!(!v.report.accepted);
     assert!(
@@ -288,7 +288,7 @@ proptest! {
 
 #[test]
 fn the_grasp_band_is_the_arm_posture_zone_scaled_by_stature() {
-    use ergocell_robot::validate::{grasp_band, grasp_fractions};
+    use ergocell_robot::validate::{class_band, grasp_band, grasp_fractions};
     // Known answer, by hand: shoulder joint 0.818 H, upper arm 0.186 H, forearm + half hand 0.200 H.
     // Lowest: upper arm vertical, forearm 20° down; highest: upper arm 20°, forearm level.
     let (height, forward) = grasp_fractions();
@@ -311,7 +311,20 @@ fn the_grasp_band_is_the_arm_posture_zone_scaled_by_stature() {
         assert!((band.height_m[0] - height[0] * hi).abs() < 1e-12);
         assert!((band.height_m[1] - height[1] * lo).abs() < 1e-12);
     }
-    // A class too wide for one point has an empty band, which no handover is inside.
+    // The class band validation checks is the union: the shortest's low edge, the tallest's high
+    // edge, and it holds the intersection.
+    for (lo, hi) in [(1.50, 1.68), (1.68, 1.82), (1.82, 2.00)] {
+        let (class, every) = (class_band(lo, hi), grasp_band(lo, hi));
+        assert!((class.height_m[0] - height[0] * lo).abs() < 1e-12);
+        assert!((class.height_m[1] - height[1] * hi).abs() < 1e-12);
+        assert!((class.forward_m[0] - forward[0] * lo).abs() < 1e-12);
+        assert!((class.forward_m[1] - forward[1] * hi).abs() < 1e-12);
+        assert!(class.height_m[0] <= every.height_m[0] && every.height_m[1] <= class.height_m[1]);
+        assert!(
+            class.forward_m[0] <= every.forward_m[0] && every.forward_m[1] <= class.forward_m[1]
+        );
+    }
+    // A class too wide for one point has an empty intersection, which no handover is inside.
     let wide = grasp_band(1.40, 2.00);
     assert!(wide.height_m[0] > wide.height_m[1]);
     assert!(!wide.contains(0.3, 0.0, 0.5 * (wide.height_m[0] + wide.height_m[1])));

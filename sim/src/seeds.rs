@@ -201,8 +201,8 @@ pub struct AdaptationSeeds {
 /// The grand-score goal after adaptation (RULA action level ≤ 2).
 pub const ADAPTATION_MAX_AFTER: f64 = 3.0;
 
-/// The statures the unadapted handover was set for: there the class's point is the "before" point
-/// itself, so the posture cost may only equal it; everywhere else adaptation must lower it.
+/// The statures around the 1.75 m operator the unadapted handover was set for: there adaptation
+/// may leave the posture cost as it was; everywhere else it must lower it.
 pub const ADAPTATION_SET_FOR_M: [f64; 2] = [1.70, 1.80];
 
 /// Why a run's true posture cost fails the goal: worse than before at any served height, or not
@@ -225,7 +225,9 @@ fn cost_check(r: &Adaptation) -> Vec<String> {
             continue;
         }
         let outside = *h < lo - 1e-9 || *h > hi + 1e-9;
-        if a > b {
+        if !b.is_finite() {
+            why.push(format!("{h:.2} m has no cost before"));
+        } else if a > b {
             why.push(format!("{h:.2} m cost worse after ({b:.3} → {a:.3})"));
         } else if outside && a >= b {
             why.push(format!("{h:.2} m cost not lower after ({b:.3} → {a:.3})"));

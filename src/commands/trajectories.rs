@@ -86,7 +86,7 @@ pub enum Sub {
         #[arg(long, default_value_t = 0.01)]
         step: f64,
         /// At most this many fitting people per class, evenly spread over the subject ids.
-        #[arg(long, default_value_t = 300)]
+        #[arg(long, default_value_t = 150)]
         people: usize,
     },
     /// Validate and write the lock file of each accepted class.

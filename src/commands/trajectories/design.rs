@@ -12,9 +12,9 @@ use anyhow::Context as _;
 use ergocell_anthropometry::ansur::{self, Person, Sex, Split};
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
-use ergocell_robot::validate::grasp_band;
+use ergocell_robot::validate::class_band;
 use ergocell_robot::{plan_and_validate, PlanInputs, TrajectoryClass, TrajectorySpec};
-use ergocell_sim::design::{self, CandidateCost, Choice, PopulationCost};
+use ergocell_sim::design::{self, CandidateCost, Choice, PopulationCost, Requirements};
 use ergocell_sim::session::Habits;
 use ergocell_sim::{Operator, ReachConfig};
 use serde::Serialize;
@@ -25,10 +25,17 @@ use crate::commands::sim::{line_chart, COLORS};
 /// How many of the cheapest candidates may be refused before a class gives up.
 const MAX_REFUSALS: usize = 400;
 
+/// How many of the cheapest points of the coarse grid are refined ([`design::search`]).
+const KEEP: usize = 6;
+
 /// How much lower than at the "before" point c1's and c3's point must put the posture cost of
 /// every stature they serve (RULA points): a margin for what the twin's sessions add to the body
 /// model (each person's habits, the robot's placement scatter).
 const MARGIN: f64 = 0.02;
+
+/// The highest expected RULA grand score any stature of a class may hold its point at: action
+/// level 2 at most.
+const GRAND_CEILING: f64 = 3.0;
 
 /// Where the part really arrives around the point, σ per axis (metres): the twin's
 /// placement scatter (`target_sigma_m` of [`ergocell_sim::SessionScript::new`]).
@@ -50,7 +57,7 @@ struct ClassDesign {
     choice: Choice,
 }
 
-/// The figures on the people never fitted: the whole servable reporting half.
+/// The figures on the people never fitted: the whole reporting half, each at their class's point.
 #[derive(Debug, Serialize)]
 struct Population {
     /// Every person at the single "before" point (c2's designed point).
@@ -93,6 +100,18 @@ pub(super) fn design(
             "--step {step_m}: expected 0.001 to 0.05 m"
         )));
     }
+    let outputs: Vec<std::path::PathBuf> = TrajectoryClass::ALL
+        .iter()
+        .map(|c| out_dir.join(format!("{c}.toml")))
+        .chain(["design.json", "design_cost.svg"].map(|f| out_dir.join(f)))
+        .collect();
+    // Before three minutes of work, not after: nothing here is ever written over.
+    if let Some(taken) = outputs.iter().find(|p| p.exists()) {
+        anyhow::bail!(super::UsageError(format!(
+            "{} exists: design writes into a new folder and never over a file",
+            taken.display()
+        )));
+    }
     let people = ansur::people()?;
     let thresholds = ClassThresholds::default();
     let (habits, reach, scatter) = (Habits::default(), ReachConfig::default(), scatter_m());
@@ -109,9 +128,11 @@ pub(super) fn design(
     let mut before = None;
     for i in [1, 0, 2] {
         let (class, _, spec, hashes) = &specs[i];
-        let own = |p: &&Person| {
-            p.split() == Split::Fit && HeightClass::of(p.stature_m, &thresholds) == class_of(*class)
-        };
+        // The class's own people: its side of the thresholds, inside the file's [stature].
+        let bounds = spec.stature.min_m..=spec.stature.max_m;
+        let in_class =
+            |h: f64| HeightClass::of(h, &thresholds) == class_of(*class) && bounds.contains(&h);
+        let own = |p: &&Person| p.split() == Split::Fit && in_class(p.stature_m);
         let all: Vec<&Person> = people.iter().filter(own).collect();
         // At most `sample` of them, evenly spread over the subject ids (the cost of a point is a
         // mean; a few hundred people fix it to a few thousandths).
@@ -121,9 +142,8 @@ pub(super) fn design(
             .step_by(every)
             .map(|p| Operator::measured(p))
             .collect::<Result<_, _>>()?;
-        let band = grasp_band(spec.stature.min_m, spec.stature.max_m);
+        let band = class_band(spec.stature.min_m, spec.stature.max_m);
         let h = &spec.handover;
-        let candidates = design::grid(band.forward_m, band.height_m, h.lateral_m, step_m);
         let hand_set = design::rank(
             &fit,
             &[[h.forward_m, h.lateral_m, h.height_m]],
@@ -131,18 +151,33 @@ pub(super) fn design(
             &habits,
             &reach,
         )?;
-        let ranked = design::rank(&fit, &candidates, scatter, &habits, &reach)?;
+        let ranked = design::search(
+            &fit,
+            band.forward_m,
+            band.height_m,
+            h.lateral_m,
+            step_m,
+            KEEP,
+            scatter,
+            &habits,
+            &reach,
+        )?;
         // Where c1's and c3's points must improve on the single point: every centimetre of the
         // class's statures, Drillis & Contini's proportions.
-        let statures = design::statures(spec.stature.min_m, spec.stature.max_m, 0.01);
+        let statures: Vec<f64> =
+            design::statures(spec.stature.min_m, spec.stature.max_m + 0.005, 0.01)
+                .into_iter()
+                .filter(|h| in_class(*h))
+                .collect();
         let choice = design::choose::<anyhow::Error>(&ranked, MAX_REFUSALS, |point| {
-            if let Some(before) = before {
-                let worse = design::worse_than_before(
-                    point, before, &statures, MARGIN, scatter, &habits, &reach,
-                )?;
-                if worse.is_some() {
-                    return Ok(worse);
-                }
+            let req = Requirements {
+                before,
+                margin: MARGIN,
+                grand_ceiling: GRAND_CEILING,
+            };
+            let short = design::shortfalls(point, &req, &statures, scatter, &habits, &reach)?;
+            if short.is_some() {
+                return Ok(short);
             }
             let [f, l, z] = point;
             let mut candidate: TrajectorySpec = spec.clone();
@@ -164,7 +199,7 @@ pub(super) fn design(
         eprintln!(
             "{class}: {} fitting people, {} candidates, {} refused",
             fit.len(),
-            candidates.len(),
+            ranked.len(),
             choice.refused.len()
         );
         if before.is_none() {
@@ -174,7 +209,7 @@ pub(super) fn design(
             class: *class,
             stature_m: [spec.stature.min_m, spec.stature.max_m],
             fit_people: fit.len(),
-            candidates: candidates.len(),
+            candidates: ranked.len(),
             step_m,
             hand_set: hand_set[0],
             choice,
@@ -204,7 +239,7 @@ pub(super) fn design(
             .enumerate()
         {
             let c = design::hold_cost(&op, &at.into(), scatter, &habits, &reach)?;
-            costs[j].push((p.sex, c.cost));
+            costs[j].push((p.sex, c.first_cost));
         }
     }
     let [b, hs, d] = costs.map(|c| design::population(&c));
@@ -223,7 +258,7 @@ pub(super) fn design(
             .iter()
             .map(|&h| {
                 let op = Operator::new(h)?;
-                Ok(design::hold_cost(&op, &at.into(), scatter, &habits, &reach)?.cost)
+                Ok(design::hold_cost(&op, &at.into(), scatter, &habits, &reach)?.first_cost)
             })
             .collect::<Result<Vec<f64>, ergocell_sim::SimError>>()?;
         curves.push((name, curve));
@@ -256,11 +291,15 @@ pub(super) fn design(
     let json = out_dir.join("design.json");
     write_new(&json, &serde_json::to_string_pretty(&report)?)?;
     println!("wrote {}", json.display());
+    // The chart library writes to a path: draw beside it, then link it into place, which fails
+    // rather than replace a file that appeared meanwhile.
     let svg = out_dir.join("design_cost.svg");
-    if svg.exists() {
-        anyhow::bail!("{} exists: it is never overwritten", svg.display());
-    }
-    plot(&report, &svg)?;
+    let partial = out_dir.join(".design_cost.svg.partial");
+    plot(&report, &partial)?;
+    let linked = std::fs::hard_link(&partial, &svg)
+        .with_context(|| format!("cannot create {} (it must not exist yet)", svg.display()));
+    std::fs::remove_file(&partial).ok();
+    linked?;
     println!("wrote {}", svg.display());
     Ok(())
 }
@@ -276,11 +315,13 @@ fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow:
     let [f, l, z] = chosen.station_m;
     let hs = c.hand_set.station_m;
     let comment = format!(
-        "\n# Designed (`ergocell trajectories design`): of {n} candidate points {step:.0} mm apart in the class's\n\
-         # grasp band, the one with the lowest expected posture cost for the class's {p} ANSUR II people of\n\
-         # the fitting half (even subject ids, {lo:.2}–{hi:.2} m) that `trajectories validate` accepts:\n\
+        "\n# Designed (`ergocell trajectories design`): of {n} candidate points (down to {step:.1} mm apart) in the\n\
+         # class band, the one with the lowest expected posture cost for {p} ANSUR II people of the class from\n\
+         # the fitting half (even subject ids, {lo:.2}–{hi:.2} m), on the twin's body model, that meets the\n\
+         # design's requirements at every stature of the class (RULA at most 3; for c1 and c3 a lower cost\n\
+         # than c2's point, the one point of the unadapted cell) and that `trajectories validate` accepts:\n\
          # mean posture cost {cost:.3} (RULA grand score {grand:.2}); the hand-set point ({hf:.3}, {hz:.3}) m\n\
-         # cost them {hcost:.3} ({hgrand:.2}). {refused} cheaper candidates were refused by validation.\n",
+         # cost them {hcost:.3} ({hgrand:.2}). {refused} cheaper candidates were refused. See design.json.\n",
         n = c.candidates,
         step = c.step_m * 1e3,
         p = c.fit_people,
@@ -294,10 +335,10 @@ fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow:
         hgrand = c.hand_set.mean_grand_score,
         refused = c.choice.refused.len(),
     );
-    let round = |x: f64| (x * 1e4).round() / 1e4;
-    handover["forward_m"] = toml_edit::value(round(f));
-    handover["lateral_m"] = toml_edit::value(round(l));
-    handover["height_m"] = toml_edit::value(round(z));
+    // The validated point itself (the grid's points are round to the micrometre).
+    handover["forward_m"] = toml_edit::value(f);
+    handover["lateral_m"] = toml_edit::value(l);
+    handover["height_m"] = toml_edit::value(z);
     if let Some(mut key) = handover.key_mut("forward_m") {
         key.leaf_decor_mut().set_prefix(comment);
     }
