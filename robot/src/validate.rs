@@ -47,12 +47,13 @@ pub mod grasp_posture {
 /// the largest lateral offset, in the station frame (metres).
 ///
 /// Two bands are built from the [`grasp_posture`] zone. [`class_band`], the one validation
-/// checks: each coordinate within what the zone reaches for *some* stature of the class, so no
-/// operator the class serves is handed the part where none of them holds it in the zone. Which
+/// checks: each coordinate within what the zone reaches for *some* stature of the class, so a point
+/// outside it is, in some coordinate, out of every class operator's zone (a point inside may still
+/// be out of everyone's: the band holds each coordinate's range, not the zone). Which
 /// point inside it suits the class's people best is measured, not assumed: the posture cost on the
 /// digital twin (`ergocell trajectories design`). [`grasp_band`]: within what it reaches for
 /// *every* stature of the class (the bands' intersection), which for a class 14–18 cm wide is a
-/// box of 2–6 cm and on the twin costs the neck more than it spares the arm.
+/// box 2–6 cm high and 8–10 cm forward, and on the twin costs the neck more than it spares the arm.
 ///
 /// Either is a condition checked coordinate by coordinate. It is not
 /// sufficient: one operator's reachable set in the zone is not a box (its low-far and high-near

@@ -3,9 +3,10 @@
 //! A class's handover point was once set by hand; here it is chosen. For each candidate point (the
 //! caller's grid, station frame) every person of the class reaches it with the twin's reach solver
 //! ([`solve_reach`]: the same posture the twin's sessions hold the part in), looks at it
-//! ([`look_at`]), and the ground truth's RULA worksheet of that posture, with RULA's muscle use
-//! for a task repeated more than four times a minute, is scored with the continuous posture cost
-//! ([`posture_cost`]). The candidate's cost is the mean over the people
+//! ([`look_at`]), and the ground truth's RULA worksheet of that posture is scored with the
+//! continuous posture cost ([`posture_cost`]): as the hold's first repetitions score (what
+//! [`rank`] and [`shortfalls`] use), and with RULA's muscle use for a task repeated more than four
+//! times a minute (reported beside it). The candidate's cost is the mean over the people
 //! (and over the head's habitual flexion, a three-point Gauss–Hermite rule over the twin's
 //! [`Habits::rest_neck_flexion_rad`]). [`rank`] orders the candidates by that expected cost;
 //! [`choose`] takes the cheapest one the caller's validator accepts — the robot's own kinematics
@@ -57,6 +58,34 @@ pub struct HoldCost {
     pub miss_m: f64,
 }
 
+impl HoldCost {
+    /// Nothing accumulated yet, with the reach's miss.
+    fn zero(miss_m: f64) -> Self {
+        Self {
+            cost: 0.0,
+            grand_score: 0.0,
+            worst_grand_score: 0.0,
+            first_cost: 0.0,
+            first_grand_score: 0.0,
+            first_worst_grand_score: 0.0,
+            miss_m,
+        }
+    }
+
+    /// Adds `other` with weight `w` to the expectations and keeps the worst scores and miss.
+    fn add(&mut self, w: f64, other: &Self) {
+        self.cost += w * other.cost;
+        self.grand_score += w * other.grand_score;
+        self.worst_grand_score = self.worst_grand_score.max(other.worst_grand_score);
+        self.first_cost += w * other.first_cost;
+        self.first_grand_score += w * other.first_grand_score;
+        self.first_worst_grand_score = self
+            .first_worst_grand_score
+            .max(other.first_worst_grand_score);
+        self.miss_m = self.miss_m.max(other.miss_m);
+    }
+}
+
 /// The twin's body model of the hold: what it costs `op` to hold the part at `target_m` (station
 /// frame: the operator stands at the origin facing +x), with the population's average habits,
 /// expected over where the part really arrives: the twin scatters each cycle's point by
@@ -85,28 +114,12 @@ pub fn hold_cost(
         return hold_cost_at(op, target_m, habits, reach);
     }
     let r = 3.0_f64.sqrt() * placement_sigma_m;
-    let mut out = HoldCost {
-        cost: 0.0,
-        grand_score: 0.0,
-        worst_grand_score: 0.0,
-        first_cost: 0.0,
-        first_grand_score: 0.0,
-        first_worst_grand_score: 0.0,
-        miss_m: 0.0,
-    };
+    let mut out = HoldCost::zero(0.0);
     for axis in 0..3 {
         for sign in [-1.0, 1.0] {
             let mut at = *target_m;
             at[axis] += sign * r;
-            let h = hold_cost_at(op, &at, habits, reach)?;
-            out.cost += h.cost / 6.0;
-            out.grand_score += h.grand_score / 6.0;
-            out.worst_grand_score = out.worst_grand_score.max(h.worst_grand_score);
-            out.first_cost += h.first_cost / 6.0;
-            out.first_grand_score += h.first_grand_score / 6.0;
-            out.first_worst_grand_score =
-                out.first_worst_grand_score.max(h.first_worst_grand_score);
-            out.miss_m = out.miss_m.max(h.miss_m);
+            out.add(1.0 / 6.0, &hold_cost_at(op, &at, habits, reach)?);
         }
     }
     Ok(out)
@@ -129,15 +142,7 @@ fn hold_cost_at(
     let solved = solve_reach(op, &rest, target_m, reach)?;
     let config = truth_config(&AssessmentConfig::new(up()?));
     let (mean, sigma) = habits.rest_neck_flexion_rad;
-    let mut out = HoldCost {
-        cost: 0.0,
-        grand_score: 0.0,
-        worst_grand_score: 0.0,
-        first_cost: 0.0,
-        first_grand_score: 0.0,
-        first_worst_grand_score: 0.0,
-        miss_m: solved.miss_m,
-    };
+    let mut out = HoldCost::zero(solved.miss_m);
     for (z, w) in GAUSS_HERMITE_3 {
         let mut posture = solved.posture;
         posture.neck_flexion_rad = mean + z * sigma;
@@ -159,21 +164,24 @@ fn hold_cost_at(
             muscle_use_neck_trunk_legs: true,
             ..side.input
         };
-        let cost = posture_cost(&repeated)?;
-        let grand = f64::from(cost.grand_score);
-        out.cost += w * cost.cost();
-        out.grand_score += w * grand;
-        out.worst_grand_score = out.worst_grand_score.max(grand);
-        let first = posture_cost(&side.input)?;
-        let grand = f64::from(first.grand_score);
-        out.first_cost += w * first.cost();
-        out.first_grand_score += w * grand;
-        out.first_worst_grand_score = out.first_worst_grand_score.max(grand);
+        let (again, first) = (posture_cost(&repeated)?, posture_cost(&side.input)?);
+        let (again_grand, first_grand) =
+            (f64::from(again.grand_score), f64::from(first.grand_score));
+        let node = HoldCost {
+            cost: again.cost(),
+            grand_score: again_grand,
+            worst_grand_score: again_grand,
+            first_cost: first.cost(),
+            first_grand_score: first_grand,
+            first_worst_grand_score: first_grand,
+            miss_m: solved.miss_m,
+        };
+        out.add(w, &node);
     }
     Ok(out)
 }
 
-/// What a class's point must do for every stature it serves (operators of Drillis & Contini's
+/// What a class's point must do for every stature of its class (operators of Drillis & Contini's
 /// proportions, the body model of [`hold_cost`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Requirements {

@@ -319,6 +319,9 @@ fn adaptation_reports_operators_outside_the_served_statures_as_not_served() {
         better.true_mean_posture_cost_after[i] = better.true_mean_posture_cost_before[i] - 0.01;
     }
     assert_eq!(cost_goal(&better), 1);
+    // A served stature with no cost before cannot be judged: it fails.
+    better.true_mean_posture_cost_before[2] = f64::NAN;
+    assert_eq!(cost_goal(&better), 0);
 }
 
 /// The cell may decide a neighbouring class near a boundary: the simulated operator then reaches

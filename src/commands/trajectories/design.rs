@@ -33,8 +33,8 @@ const KEEP: usize = 6;
 /// model (each person's habits, the robot's placement scatter).
 const MARGIN: f64 = 0.02;
 
-/// The highest expected RULA grand score any stature of a class may hold its point at: action
-/// level 2 at most.
+/// The highest RULA grand score any stature of a class may hold its point at, at every node of the
+/// body model's averages (not only on average): action level 2 at most.
 const GRAND_CEILING: f64 = 3.0;
 
 /// Where the part really arrives around the point, σ per axis (metres): the twin's
@@ -295,9 +295,16 @@ pub(super) fn design(
     // rather than replace a file that appeared meanwhile.
     let svg = out_dir.join("design_cost.svg");
     let partial = out_dir.join(".design_cost.svg.partial");
-    plot(&report, &partial)?;
-    let linked = std::fs::hard_link(&partial, &svg)
-        .with_context(|| format!("cannot create {} (it must not exist yet)", svg.display()));
+    if let Err(e) = plot(&report, &partial) {
+        std::fs::remove_file(&partial).ok();
+        return Err(e);
+    }
+    let linked = std::fs::hard_link(&partial, &svg).with_context(|| {
+        format!(
+            "cannot link {} into place (it must not exist yet)",
+            svg.display()
+        )
+    });
     std::fs::remove_file(&partial).ok();
     linked?;
     println!("wrote {}", svg.display());
@@ -387,13 +394,31 @@ fn print_report(r: &Report) {
     );
 }
 
+/// The chart's cost axis: every curve's values with a tenth of a point to spare, on tenths.
+fn y_range(r: &Report) -> (f64, f64) {
+    let values = r.curves.iter().flat_map(|(_, v)| v.iter().copied());
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    if lo > hi {
+        return (1.0, 7.0);
+    }
+    (
+        (lo * 10.0).floor() / 10.0 - 0.1,
+        (hi * 10.0).ceil() / 10.0 + 0.1,
+    )
+}
+
 fn plot(r: &Report, path: &Path) -> anyhow::Result<()> {
     let series: Vec<(&str, &[f64], _, bool)> = r
         .curves
         .iter()
         .enumerate()
         .map(|(i, (name, v))| {
-            let colour = COLORS[i.div_ceil(2) % COLORS.len()];
+            // The before point, then c1, c2 and c3 in colours apart.
+            let colour = [COLORS[0], COLORS[4], COLORS[5], COLORS[3]][i.div_ceil(2).min(3)];
             // Hand-set dashed, designed solid; the before line solid in the first colour.
             (name.as_str(), v.as_slice(), colour, i % 2 == 1)
         })
@@ -405,6 +430,6 @@ fn plot(r: &Report, path: &Path) -> anyhow::Result<()> {
         "posture cost (RULA points)",
         &r.statures_m,
         &series,
-        (2.5, 4.5),
+        y_range(r),
     )
 }
