@@ -280,8 +280,17 @@ impl Context {
         })
     }
 
-    /// The class's trajectory file (its text and parsed spec) and the current input hashes.
+    /// The class's parsed trajectory file and the current input hashes.
     fn spec(&self, class: TrajectoryClass) -> anyhow::Result<(TrajectorySpec, InputHashes)> {
+        let (spec, hashes, _) = self.spec_with_text(class)?;
+        Ok((spec, hashes))
+    }
+
+    /// [`Context::spec`] and the file's text, read once.
+    fn spec_with_text(
+        &self,
+        class: TrajectoryClass,
+    ) -> anyhow::Result<(TrajectorySpec, InputHashes, String)> {
         let path = self.layout.spec(class);
         let text = read(&path)?;
         let spec = TrajectorySpec::from_toml_str(&text)
@@ -304,7 +313,7 @@ impl Context {
             },
             env!("CARGO_PKG_VERSION"),
         );
-        Ok((spec, hashes))
+        Ok((spec, hashes, text))
     }
 }
 

@@ -21,6 +21,7 @@ use serde::Serialize;
 
 use super::{write_new, Context};
 use crate::commands::sim::{line_chart, COLORS};
+use ergocell::session::trajectory_class;
 
 /// How many of the cheapest candidates may be refused before a class gives up.
 const MAX_REFUSALS: usize = 400;
@@ -79,14 +80,6 @@ struct Report {
     curves: Vec<(String, Vec<f64>)>,
 }
 
-fn class_of(c: TrajectoryClass) -> HeightClass {
-    match c {
-        TrajectoryClass::C1 => HeightClass::C1,
-        TrajectoryClass::C2 => HeightClass::C2,
-        TrajectoryClass::C3 => HeightClass::C3,
-    }
-}
-
 /// Runs the design and writes `<out_dir>/c1.toml`…, `design.json` and `design_cost.svg`, none of
 /// them over an existing file.
 pub(super) fn design(
@@ -117,9 +110,7 @@ pub(super) fn design(
     let (habits, reach, scatter) = (Habits::default(), ReachConfig::default(), scatter_m());
     let mut specs = Vec::new();
     for class in TrajectoryClass::ALL {
-        let path = ctx.layout.spec(class);
-        let text = super::read(&path)?;
-        let (spec, hashes) = ctx.spec(class)?;
+        let (spec, hashes, text) = ctx.spec_with_text(class)?;
         specs.push((class, text, spec, hashes));
     }
     // c2 first: its point is the unadapted cell's single point (the paper's "before", set for a
@@ -130,8 +121,9 @@ pub(super) fn design(
         let (class, _, spec, hashes) = &specs[i];
         // The class's own people: its side of the thresholds, inside the file's [stature].
         let bounds = spec.stature.min_m..=spec.stature.max_m;
-        let in_class =
-            |h: f64| HeightClass::of(h, &thresholds) == class_of(*class) && bounds.contains(&h);
+        let in_class = |h: f64| {
+            trajectory_class(HeightClass::of(h, &thresholds)) == *class && bounds.contains(&h)
+        };
         let own = |p: &&Person| p.split() == Split::Fit && in_class(p.stature_m);
         let all: Vec<&Person> = people.iter().filter(own).collect();
         // At most `sample` of them, evenly spread over the subject ids (the cost of a point is a
@@ -229,8 +221,8 @@ pub(super) fn design(
     let mut costs: [Vec<(Sex, f64)>; 3] = Default::default();
     for p in people.iter().filter(|p| p.split() == Split::Report) {
         let op = Operator::measured(p)?;
-        let class = HeightClass::of(p.stature_m, &thresholds);
-        let k = HeightClass::ALL
+        let class = trajectory_class(HeightClass::of(p.stature_m, &thresholds));
+        let k = TrajectoryClass::ALL
             .iter()
             .position(|c| *c == class)
             .unwrap_or(1);
