@@ -43,7 +43,7 @@ use crate::rula::{
     RulaInput, LOWER_ARM_EDGES_DEG, NECK_EDGES_DEG, TRUNK_EDGES_DEG, UPPER_ARM_EDGES_DEG,
     WRIST_EDGES_DEG,
 };
-use crate::warnings::{region_angle, region_score_at};
+use crate::warnings::{region_angle, region_score_at, with_region_angle};
 use crate::Side;
 
 /// The regions that have an angle, in [`BodyRegion::ALL`] order (the legs have none).
@@ -434,6 +434,50 @@ pub fn band_probability(region: BodyRegion, input: &RulaInput, angle_deg: f64, s
     p.clamp(0.0, 1.0)
 }
 
+/// The probability that a reading of `input` whose angles err with spread `sd_deg` (per region, in
+/// [`ANGLED_REGIONS`] order, degrees) gives another RULA grand score than `input` itself: how hard
+/// the posture is to measure, not how bad it is. A posture whose angles sit on band edges that
+/// move the grand score is misread half the time; one deep inside its bands, or whose neighbouring
+/// bands give the same grand score (RULA's tables saturate), is read right.
+///
+/// First order: each region is misread with its band's missing mass `1 −`
+/// [`band_probability`], independently of the others, and a misread counts when crossing the
+/// region's nearest band edge changes the grand score (the worksheet's adjustments held). A spread
+/// of 0 reads right.
+///
+/// # Errors
+/// A worksheet [`crate::rula::score_worksheet`] refuses.
+pub fn grand_misread_probability(
+    input: &RulaInput,
+    sd_deg: &[f64; 5],
+) -> Result<f64, crate::ErgonomicsError> {
+    let grand = crate::rula::score_worksheet(input)?.scores.final_score;
+    let mut read_right = 1.0;
+    for (region, &sd) in ANGLED_REGIONS.iter().zip(sd_deg) {
+        let Some(angle) = region_angle(*region, input) else {
+            continue;
+        };
+        let Some(edge) = edges_deg(*region)
+            .iter()
+            .copied()
+            .min_by(|a, b| (a - angle).abs().total_cmp(&(b - angle).abs()))
+        else {
+            continue;
+        };
+        // a hundredth of a degree across the nearest edge (bands differ in which side holds it)
+        let across = if angle < edge {
+            edge + 0.01
+        } else {
+            edge - 0.01
+        };
+        let moved = with_region_angle(*region, input, across);
+        if crate::rula::score_worksheet(&moved)?.scores.final_score != grand {
+            read_right *= band_probability(*region, input, angle, sd);
+        }
+    }
+    Ok((1.0 - read_right).clamp(0.0, 1.0))
+}
+
 /// Each angled region's confidence for one side's worksheet: the stated spread from the skeleton's
 /// propagated one through `model`, and the band's probability at the worksheet's angle. `None` for
 /// a region whose angle was not measured this frame ([`InputSource::Observed`] only) or whose
@@ -488,6 +532,56 @@ mod tests {
         assert!(band_probability(BodyRegion::UpperArm, &i, 32.5, 10.0) < deep);
         // no spread, sure
         assert_eq!(band_probability(BodyRegion::UpperArm, &i, 44.9, 0.0), 1.0);
+    }
+
+    #[test]
+    fn a_grand_score_is_misread_only_where_an_edge_that_moves_it_is_near() {
+        let sd = [2.0; 5];
+        // every angle at least 2.5 σ inside its band: upper arm 10°, elbow 80°, wrist 5°, neck 15°,
+        // trunk extended 10° (scored erect)
+        let mut deep = RulaInput::neutral();
+        deep.upper_arm_flexion_deg = 10.0;
+        deep.wrist_flexion_deg = 5.0;
+        deep.neck_flexion_deg = 15.0;
+        deep.trunk_flexion_deg = -10.0;
+        let inside = grand_misread_probability(&deep, &sd).unwrap();
+        assert!(inside < 0.05, "{inside}");
+        // the neck on its 20° edge, which moves this worksheet's grand score
+        let mut edge = deep;
+        edge.neck_flexion_deg = 20.0;
+        let g = |i: &RulaInput| crate::rula::score_worksheet(i).unwrap().scores.final_score;
+        assert_ne!(
+            g(&edge),
+            g(&with_region_angle(BodyRegion::Neck, &edge, 19.99))
+        );
+        let on_edge = grand_misread_probability(&edge, &sd).unwrap();
+        assert!(on_edge > 0.45, "{on_edge}");
+        // at least the neck's missing mass, and no more than it with the others' added
+        let p_neck = band_probability(BodyRegion::Neck, &edge, 20.0, 2.0);
+        assert!(on_edge >= 1.0 - p_neck - 1e-12, "{on_edge} vs {p_neck}");
+        assert!(
+            on_edge <= 1.0 - p_neck + inside + 1e-12,
+            "{on_edge} vs {p_neck}"
+        );
+        // on the neck's 10° edge the tables saturate (score A 2, score B 1 or 2: grand 2 either
+        // way): not a misreading
+        let mut saturated = deep;
+        saturated.neck_flexion_deg = 10.0;
+        assert_eq!(
+            g(&saturated),
+            g(&with_region_angle(BodyRegion::Neck, &saturated, 9.99))
+        );
+        let flat = grand_misread_probability(&saturated, &sd).unwrap();
+        assert!(flat < 0.05, "{flat}");
+        // no spread reads right; a narrower one misreads less
+        assert_eq!(grand_misread_probability(&edge, &[0.0; 5]).unwrap(), 0.0);
+        let mut near = edge;
+        near.neck_flexion_deg = 22.0;
+        let (wide, narrow) = (
+            grand_misread_probability(&near, &sd).unwrap(),
+            grand_misread_probability(&near, &[1.0; 5]).unwrap(),
+        );
+        assert!(narrow < wide && wide < on_edge, "{narrow} {wide} {on_edge}");
     }
 
     #[test]

@@ -189,6 +189,21 @@ pub fn region_angle(region: BodyRegion, i: &RulaInput) -> Option<f64> {
     }
 }
 
+/// The worksheet with the region's angle replaced by `angle_deg` (unchanged for the legs, which
+/// have none).
+pub fn with_region_angle(region: BodyRegion, i: &RulaInput, angle_deg: f64) -> RulaInput {
+    let mut out = *i;
+    match region {
+        BodyRegion::UpperArm => out.upper_arm_flexion_deg = angle_deg,
+        BodyRegion::LowerArm => out.lower_arm_flexion_deg = angle_deg,
+        BodyRegion::Wrist => out.wrist_flexion_deg = angle_deg,
+        BodyRegion::Neck => out.neck_flexion_deg = angle_deg,
+        BodyRegion::Trunk => out.trunk_flexion_deg = angle_deg,
+        BodyRegion::Legs => {}
+    }
+    out
+}
+
 /// The region's RULA score (with the worksheet's adjustments) with its angle replaced by `angle`.
 pub fn region_score_at(region: BodyRegion, i: &RulaInput, angle: Option<f64>) -> u8 {
     let a = angle.or_else(|| region_angle(region, i)).unwrap_or(0.0);

@@ -279,6 +279,23 @@ pub fn fit_recalibration(samples: &[(f64, bool)]) -> [[f64; 2]; RECALIBRATION_BI
     points
 }
 
+/// Each angled region's root-mean-square reading error (the controller's angle minus the truth's),
+/// degrees, in [`ANGLED_REGIONS`] order over `samples`; `None` for a region without samples. What a
+/// design that must keep its postures measurable ([`crate::design`]) takes as the reading's spread.
+pub fn read_error_rms_deg(samples: &[BandSample]) -> [Option<f64>; 5] {
+    let mut sum = [(0.0, 0usize); 5];
+    for s in samples {
+        if let Some(i) = ConfidenceModel::slot(s.region) {
+            let e = s.angle_deg - s.truth_deg;
+            if e.is_finite() {
+                sum[i].0 += e * e;
+                sum[i].1 += 1;
+            }
+        }
+    }
+    sum.map(|(sq, n)| (n > 0).then(|| (sq / n as f64).sqrt()))
+}
+
 /// The confidence model that minimises each region's log loss over `samples` (a grid of scales and
 /// floors; a region without samples keeps `start`'s values). Also returns each region's sample
 /// count.
@@ -389,6 +406,11 @@ mod tests {
             .collect();
         let (model, counts) = fit(&samples, &ConfidenceModel::default());
         assert_eq!(counts[3], 4000);
+        // the reading error's RMS is the drawn spread, and only the neck has one
+        let rms = read_error_rms_deg(&samples);
+        let neck = rms[3].unwrap();
+        assert!((neck - 6.0).abs() < 0.3, "RMS {neck}°");
+        assert!(rms.iter().enumerate().all(|(i, r)| (i == 3) == r.is_some()));
         let floor = model.floor_rad[3].to_degrees();
         assert!((5.0..=7.0).contains(&floor), "fitted floor {floor}°");
         // the other regions had no samples: unchanged

@@ -4,9 +4,12 @@
 //! caller's grid, station frame) every person of the class reaches it with the twin's reach solver
 //! ([`solve_reach`]: the same posture the twin's sessions hold the part in), looks at it
 //! ([`look_at`]), and the ground truth's RULA worksheet of that posture is scored with the
-//! continuous posture cost ([`posture_cost`]): as the hold's first repetitions score (what
-//! [`rank`] and [`shortfalls`] use), and with RULA's muscle use for a task repeated more than four
-//! times a minute (reported beside it). The candidate's cost is the mean over the people
+//! continuous posture cost ([`posture_cost`]): as the handover is repeated all shift (RULA's muscle
+//! use wherever the hold leaves the relaxed posture, as the cell's assessor scores a posture
+//! repeated more than four times a minute: what [`rank`] orders by), and as its first repetitions
+//! score, before any repetition is seen (both are required by [`shortfalls`]). How often the cell
+//! would misread the hold's grand score is measured beside the cost. The candidate's cost is the
+//! mean over the people
 //! (and over the head's habitual flexion, a three-point Gauss–Hermite rule over the twin's
 //! [`Habits::rest_neck_flexion_rad`]). [`rank`] orders the candidates by that expected cost;
 //! [`choose`] takes the cheapest one the caller's validator accepts — the robot's own kinematics
@@ -17,8 +20,9 @@
 //! give the same numbers. Units: metres, the cost in RULA points.
 
 use ergocell_anthropometry::ansur::Sex;
+use ergocell_ergonomics::confidence::grand_misread_probability;
 use ergocell_ergonomics::posture_cost::posture_cost;
-use ergocell_ergonomics::rula::RulaInput;
+use ergocell_ergonomics::rula::{neck_band, trunk_band, upper_arm_band, RulaInput};
 use ergocell_ergonomics::{AssessmentConfig, RulaAssessor};
 use ergocell_skeleton::Skeleton3;
 use nalgebra::Point3;
@@ -38,12 +42,32 @@ const GAUSS_HERMITE_3: [(f64, f64); 3] = [
     (1.732_050_807_568_877_2, 1.0 / 6.0),
 ];
 
-/// One person holding the part at one point: as the handover is repeated all shift (RULA's muscle
-/// use for a task repeated more than four times a minute), and as its first repetitions score,
-/// before there is any repetition to see.
+/// What the cost of a point assumes besides the person: where the part really arrives, the
+/// person's habits, the reach solver, and how well the cell reads the posture.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BodyModel {
+    /// σ per axis of where the part really arrives around the point, metres (see [`hold_cost`]);
+    /// 0 evaluates the point alone.
+    pub placement_sigma_m: f64,
+    pub habits: Habits,
+    pub reach: ReachConfig,
+    /// The cell's reading error of each angled region's angle, RMS degrees, in
+    /// [`ergocell_ergonomics::confidence::ANGLED_REGIONS`] order: what [`HoldCost::misread`]
+    /// assumes.
+    pub read_sd_deg: [f64; 5],
+}
+
+/// One person holding the part at one point: as the handover is repeated all shift, and as its
+/// first repetitions score, before there is any repetition to see.
+///
+/// Repeated, RULA's muscle use applies to a group whose posture the hold takes out of the relaxed
+/// one, as the cell's assessor decides it ([`ergocell_ergonomics::assess::MuscleUseTracker`]): group
+/// A when the upper arm leaves its 20° band, group B when the neck (either way) or the trunk passes
+/// 20°. A hold that keeps them relaxed is not loading them, however often it is repeated.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct HoldCost {
-    /// Expected posture cost over the head's habitual flexion (RULA points), repeated.
+    /// Expected posture cost over the head's habitual flexion and where the part arrives (RULA
+    /// points), repeated.
     pub cost: f64,
     /// Expected RULA grand score over the same, repeated.
     pub grand_score: f64,
@@ -54,6 +78,11 @@ pub struct HoldCost {
     pub first_cost: f64,
     pub first_grand_score: f64,
     pub first_worst_grand_score: f64,
+    /// The probability that the cell reads another grand score than the truth's, repeated,
+    /// expected like the cost ([`grand_misread_probability`] with [`BodyModel::read_sd_deg`]): how
+    /// hard the hold is to measure. A point whose angles sit on band edges that move the grand
+    /// score makes the cell's readings disagree with the truth however good the posture.
+    pub misread: f64,
     /// How far the hand ends from the point, metres (the reach solver's miss).
     pub miss_m: f64,
 }
@@ -68,6 +97,7 @@ impl HoldCost {
             first_cost: 0.0,
             first_grand_score: 0.0,
             first_worst_grand_score: 0.0,
+            misread: 0.0,
             miss_m,
         }
     }
@@ -82,27 +112,27 @@ impl HoldCost {
         self.first_worst_grand_score = self
             .first_worst_grand_score
             .max(other.first_worst_grand_score);
+        self.misread += w * other.misread;
         self.miss_m = self.miss_m.max(other.miss_m);
     }
 }
 
 /// The twin's body model of the hold: what it costs `op` to hold the part at `target_m` (station
-/// frame: the operator stands at the origin facing +x), with the population's average habits,
-/// expected over where the part really arrives: the twin scatters each cycle's point by
-/// `placement_sigma_m` in each axis ([`crate::SessionScript::target_sigma_m`]), and a point chosen
-/// on a band's edge without it would put half the cycles past the edge. Stroud's degree-3 rule for
-/// a normal vector (the six points ±√3σ along each axis, equal weights) gives that expectation;
-/// `placement_sigma_m` = 0 evaluates the point alone.
+/// frame: the operator stands at the origin facing +x), with the model's habits, expected over
+/// where the part really arrives: the twin scatters each cycle's point by
+/// [`BodyModel::placement_sigma_m`] in each axis ([`crate::SessionScript::target_sigma_m`]), and a
+/// point chosen on a band's edge without it would put half the cycles past the edge. Stroud's
+/// degree-3 rule for a normal vector (the six points ±√3σ along each axis, equal weights) gives
+/// that expectation; a σ of 0 evaluates the point alone.
 ///
 /// # Errors
 /// A non-finite target, or a posture the assessor cannot score.
 pub fn hold_cost(
     op: &Operator,
     target_m: &Point3<f64>,
-    placement_sigma_m: f64,
-    habits: &Habits,
-    reach: &ReachConfig,
+    model: &BodyModel,
 ) -> Result<HoldCost, SimError> {
+    let placement_sigma_m = model.placement_sigma_m;
     if !(placement_sigma_m.is_finite() && placement_sigma_m >= 0.0) {
         return Err(SimError::BadParameter {
             name: "placement_sigma_m",
@@ -111,7 +141,7 @@ pub fn hold_cost(
         });
     }
     if placement_sigma_m == 0.0 {
-        return hold_cost_at(op, target_m, habits, reach);
+        return hold_cost_at(op, target_m, model);
     }
     let r = 3.0_f64.sqrt() * placement_sigma_m;
     let mut out = HoldCost::zero(0.0);
@@ -119,7 +149,7 @@ pub fn hold_cost(
         for sign in [-1.0, 1.0] {
             let mut at = *target_m;
             at[axis] += sign * r;
-            out.add(1.0 / 6.0, &hold_cost_at(op, &at, habits, reach)?);
+            out.add(1.0 / 6.0, &hold_cost_at(op, &at, model)?);
         }
     }
     Ok(out)
@@ -128,9 +158,9 @@ pub fn hold_cost(
 fn hold_cost_at(
     op: &Operator,
     target_m: &Point3<f64>,
-    habits: &Habits,
-    reach: &ReachConfig,
+    model: &BodyModel,
 ) -> Result<HoldCost, SimError> {
+    let (habits, reach) = (&model.habits, &model.reach);
     let mut rest = Posture {
         trunk_flexion_rad: habits.trunk_flexion_rad.0,
         neck_flexion_rad: habits.rest_neck_flexion_rad.0,
@@ -156,12 +186,14 @@ fn hold_cost_at(
                 why: "the holding posture could not be scored",
             });
         };
-        // The handover is repeated all shift, more than four times a minute: RULA's muscle use,
-        // which one frame cannot show and the twin's assessor adds once it has seen the
-        // repetitions.
+        // The handover is repeated all shift, more than four times a minute: RULA's muscle use
+        // where the hold leaves the relaxed posture, which one frame cannot show and the twin's
+        // assessor adds once it has seen the repetitions.
+        let i = &side.input;
         let repeated = RulaInput {
-            muscle_use_arm_wrist: true,
-            muscle_use_neck_trunk_legs: true,
+            muscle_use_arm_wrist: upper_arm_band(i.upper_arm_flexion_deg) != 1,
+            muscle_use_neck_trunk_legs: neck_band(i.neck_flexion_deg.abs()) > 2
+                || trunk_band(i.trunk_flexion_deg, i.trunk_seated_well_supported) > 2,
             ..side.input
         };
         let (again, first) = (posture_cost(&repeated)?, posture_cost(&side.input)?);
@@ -174,6 +206,7 @@ fn hold_cost_at(
             first_cost: first.cost(),
             first_grand_score: first_grand,
             first_worst_grand_score: first_grand,
+            misread: grand_misread_probability(&repeated, &model.read_sd_deg)?,
             miss_m: solved.miss_m,
         };
         out.add(w, &node);
@@ -186,13 +219,14 @@ fn hold_cost_at(
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Requirements {
     /// The unadapted cell's single point: the class's point must lower the posture cost below it
-    /// by at least `margin` and never raise the expected RULA grand score. `None`: no comparison
-    /// (the class whose point is the single point).
+    /// by at least `margin` and never raise the expected RULA grand score, both repeated and as the
+    /// first repetitions score (so also any mix of the two, as a session has). `None`: no
+    /// comparison (the class whose point is the single point).
     pub before: Option<[f64; 3]>,
     pub margin: f64,
     /// The highest RULA grand score any stature may hold the part at, at every node of
-    /// [`hold_cost`]'s rules ([`HoldCost::first_worst_grand_score`]): not only on average. All
-    /// comparisons use the hold as its first repetitions score, as the twin's sessions mostly do.
+    /// [`hold_cost`]'s rules, as the first repetitions score
+    /// ([`HoldCost::first_worst_grand_score`]): not only on average.
     pub grand_ceiling: f64,
 }
 
@@ -204,22 +238,20 @@ pub fn shortfalls(
     point: [f64; 3],
     req: &Requirements,
     statures_m: &[f64],
-    placement_sigma_m: f64,
-    habits: &Habits,
-    reach: &ReachConfig,
+    model: &BodyModel,
 ) -> Result<Option<String>, SimError> {
     let mut why = Vec::new();
     for &h in statures_m {
         let op = Operator::new(h)?;
-        let after = hold_cost(&op, &point.into(), placement_sigma_m, habits, reach)?;
+        let after = hold_cost(&op, &point.into(), model)?;
         let was = match req.before {
-            Some(b) => Some(hold_cost(&op, &b.into(), placement_sigma_m, habits, reach)?),
+            Some(b) => Some(hold_cost(&op, &b.into(), model)?),
             None => None,
         };
-        // As the twin's sessions score the hold (muscle use only once repetitions are seen, late in
-        // a session): at most the ceiling at every node, and against the single point lower by the
-        // margin and no higher in RULA. As repeated all shift the tallest of c3 cannot keep 3 at
-        // any point of its band on this body model; that figure is reported, not required.
+        // At most the ceiling at every node before repetitions add muscle use (repeated, the
+        // tallest of c3 cannot keep 3 at any point of its band on this body model; that figure is
+        // reported, not required), and against the single point lower by the margin and no
+        // higher in RULA, repeated and first.
         if after.first_worst_grand_score > req.grand_ceiling + 1e-9 {
             why.push(format!(
                 "{h:.2} m: RULA up to {:.0} above {:.0}",
@@ -227,17 +259,36 @@ pub fn shortfalls(
             ));
             continue;
         }
-        if let Some(was) = was {
-            if after.first_cost > was.first_cost - req.margin {
+        let Some(was) = was else {
+            continue;
+        };
+        for (how, cost, grand, cost_was, grand_was) in [
+            (
+                "repeated",
+                after.cost,
+                after.grand_score,
+                was.cost,
+                was.grand_score,
+            ),
+            (
+                "first",
+                after.first_cost,
+                after.first_grand_score,
+                was.first_cost,
+                was.first_grand_score,
+            ),
+        ] {
+            if cost > cost_was - req.margin {
                 why.push(format!(
-                    "{h:.2} m: posture cost {:.3} not below {:.3} − {}",
-                    after.first_cost, was.first_cost, req.margin
+                    "{h:.2} m: posture cost ({how}) {cost:.3} not below {cost_was:.3} − {}",
+                    req.margin
                 ));
-            } else if after.first_grand_score > was.first_grand_score + 1e-9 {
+                break;
+            } else if grand > grand_was + 1e-9 {
                 why.push(format!(
-                    "{h:.2} m: RULA {:.2} above {:.2} before",
-                    after.first_grand_score, was.first_grand_score
+                    "{h:.2} m: RULA ({how}) {grand:.2} above {grand_was:.2} before"
                 ));
+                break;
             }
         }
     }
@@ -249,11 +300,15 @@ pub fn shortfalls(
 pub struct CandidateCost {
     /// Station frame: forward, lateral, height, metres.
     pub station_m: [f64; 3],
-    /// Mean posture cost over the people, as the first repetitions score
-    /// ([`HoldCost::first_cost`]).
+    /// Mean posture cost over the people, repeated ([`HoldCost::cost`]): what ranks candidates.
     pub mean_cost: f64,
     /// Mean RULA grand score over the people, the same way.
     pub mean_grand_score: f64,
+    /// The two as the first repetitions score.
+    pub mean_first_cost: f64,
+    pub mean_first_grand_score: f64,
+    /// Mean probability that the cell misreads the grand score ([`HoldCost::misread`]).
+    pub mean_misread: f64,
     /// The largest reach miss over the people, metres (a point someone cannot reach costs them
     /// the posture of their best try).
     pub worst_miss_m: f64,
@@ -266,9 +321,7 @@ pub struct CandidateCost {
 pub fn rank(
     people: &[Operator],
     candidates: &[[f64; 3]],
-    placement_sigma_m: f64,
-    habits: &Habits,
-    reach: &ReachConfig,
+    model: &BodyModel,
 ) -> Result<Vec<CandidateCost>, SimError> {
     if people.is_empty() || candidates.is_empty() {
         return Err(SimError::BadParameter {
@@ -283,19 +336,19 @@ pub fn rank(
     }
     let one = |c: [f64; 3]| -> Result<CandidateCost, SimError> {
         let point = Point3::from(c);
-        let (mut cost, mut grand, mut miss) = (0.0, 0.0, 0.0_f64);
+        let mut sum = HoldCost::zero(0.0);
         for op in people {
-            let h = hold_cost(op, &point, placement_sigma_m, habits, reach)?;
-            cost += h.first_cost;
-            grand += h.first_grand_score;
-            miss = miss.max(h.miss_m);
+            sum.add(1.0, &hold_cost(op, &point, model)?);
         }
         let n = people.len() as f64;
         Ok(CandidateCost {
             station_m: c,
-            mean_cost: cost / n,
-            mean_grand_score: grand / n,
-            worst_miss_m: miss,
+            mean_cost: sum.cost / n,
+            mean_grand_score: sum.grand_score / n,
+            mean_first_cost: sum.first_cost / n,
+            mean_first_grand_score: sum.first_grand_score / n,
+            mean_misread: sum.misread / n,
+            worst_miss_m: sum.miss_m,
         })
     };
     // Each candidate is independent: split them over the cores (the result does not depend on
@@ -333,7 +386,6 @@ pub fn rank(
 ///
 /// # Errors
 /// As [`rank`].
-#[allow(clippy::too_many_arguments)]
 pub fn search(
     people: &[Operator],
     forward_m: [f64; 2],
@@ -341,12 +393,10 @@ pub fn search(
     lateral_m: f64,
     step_m: f64,
     keep: usize,
-    placement_sigma_m: f64,
-    habits: &Habits,
-    reach: &ReachConfig,
+    model: &BodyModel,
 ) -> Result<Vec<CandidateCost>, SimError> {
     let coarse = grid(forward_m, height_m, lateral_m, 2.0 * step_m);
-    let mut ranked = rank(people, &coarse, placement_sigma_m, habits, reach)?;
+    let mut ranked = rank(people, &coarse, model)?;
     let fine = grid(forward_m, height_m, lateral_m, step_m);
     let near = |a: &[f64; 3], b: &[f64; 3]| {
         (a[0] - b[0]).abs() <= step_m * 1.001 && (a[2] - b[2]).abs() <= step_m * 1.001
@@ -357,7 +407,7 @@ pub fn search(
         .filter(|p| !seen(p) && ranked.iter().take(keep).any(|c| near(&c.station_m, p)))
         .collect();
     if !around.is_empty() {
-        ranked.extend(rank(people, &around, placement_sigma_m, habits, reach)?);
+        ranked.extend(rank(people, &around, model)?);
         ranked.sort_by(|a, b| a.mean_cost.total_cmp(&b.mean_cost));
     }
     Ok(ranked)
@@ -474,19 +524,26 @@ mod tests {
         Operator::new(h).unwrap()
     }
 
+    fn model(placement_sigma_m: f64) -> BodyModel {
+        BodyModel {
+            placement_sigma_m,
+            habits: Habits::default(),
+            reach: ReachConfig::default(),
+            read_sd_deg: [2.0; 5],
+        }
+    }
+
     #[test]
     fn a_point_far_below_the_hand_costs_more_than_one_at_elbow_height() {
-        let (habits, reach) = (Habits::default(), ReachConfig::default());
         let o = op(1.75);
-        let elbow = hold_cost(&o, &Point3::new(0.40, -0.10, 1.08), 0.0, &habits, &reach).unwrap();
-        let low = hold_cost(&o, &Point3::new(0.40, -0.10, 0.75), 0.0, &habits, &reach).unwrap();
-        let scattered =
-            hold_cost(&o, &Point3::new(0.40, -0.10, 0.75), 0.01, &habits, &reach).unwrap();
+        let elbow = hold_cost(&o, &Point3::new(0.40, -0.10, 1.08), &model(0.0)).unwrap();
+        let low = hold_cost(&o, &Point3::new(0.40, -0.10, 0.75), &model(0.0)).unwrap();
+        let scattered = hold_cost(&o, &Point3::new(0.40, -0.10, 0.75), &model(0.01)).unwrap();
         assert!(
             (scattered.cost - low.cost).abs() < 0.5,
             "{scattered:?} vs {low:?}"
         );
-        assert!(hold_cost(&o, &Point3::new(0.4, 0.0, 1.0), -0.01, &habits, &reach).is_err());
+        assert!(hold_cost(&o, &Point3::new(0.4, 0.0, 1.0), &model(-0.01)).is_err());
         assert!(elbow.miss_m < 0.01, "reached: {elbow:?}");
         assert!(
             low.cost > elbow.cost + 0.2,
@@ -495,10 +552,42 @@ mod tests {
     }
 
     #[test]
+    fn the_misreading_is_a_probability_that_needs_a_reading_error() {
+        let at = Point3::new(0.40, -0.10, 1.08);
+        let mut perfect = model(0.01);
+        perfect.read_sd_deg = [0.0; 5];
+        let exact = hold_cost(&op(1.75), &at, &perfect).unwrap();
+        assert_eq!(exact.misread, 0.0);
+        let (mut narrow, mut wide) = (model(0.01), model(0.01));
+        narrow.read_sd_deg = [1.0; 5];
+        wide.read_sd_deg = [4.0; 5];
+        let mut some = false;
+        for h in [1.55, 1.65, 1.75, 1.85, 1.95] {
+            let n = hold_cost(&op(h), &at, &narrow).unwrap().misread;
+            let w = hold_cost(&op(h), &at, &wide).unwrap().misread;
+            assert!(
+                (0.0..=1.0).contains(&n) && (0.0..=1.0).contains(&w),
+                "{n} {w}"
+            );
+            some |= w > 0.0;
+        }
+        // somewhere in five statures an angle lies within a few degrees of an edge that matters
+        assert!(some);
+        // the candidate's figure is the mean over its people
+        let people = [op(1.60), op(1.90)];
+        let ranked = rank(&people, &[[0.40, -0.10, 1.08]], &wide).unwrap();
+        let mean = people
+            .iter()
+            .map(|o| hold_cost(o, &at, &wide).unwrap().misread)
+            .sum::<f64>()
+            / 2.0;
+        assert!((ranked[0].mean_misread - mean).abs() < 1e-12);
+    }
+
+    #[test]
     fn the_repeated_hold_never_scores_below_its_first_repetitions() {
-        let (habits, reach) = (Habits::default(), ReachConfig::default());
         for (h, z) in [(1.55, 0.95), (1.75, 1.08), (1.95, 1.25)] {
-            let c = hold_cost(&op(h), &Point3::new(0.40, -0.10, z), 0.01, &habits, &reach).unwrap();
+            let c = hold_cost(&op(h), &Point3::new(0.40, -0.10, z), &model(0.01)).unwrap();
             assert!(
                 c.cost >= c.first_cost && c.grand_score >= c.first_grand_score,
                 "{c:?}"
@@ -509,11 +598,9 @@ mod tests {
 
     #[test]
     fn shortfalls_refuse_the_single_point_itself_and_a_score_above_the_ceiling() {
-        let (habits, reach) = (Habits::default(), ReachConfig::default());
         let p = [0.40, -0.10, 1.08];
         let statures = [1.70, 1.75];
-        let short =
-            |req: Requirements| shortfalls(p, &req, &statures, 0.0, &habits, &reach).unwrap();
+        let short = |req: Requirements| shortfalls(p, &req, &statures, &model(0.0)).unwrap();
         let against_itself = Requirements {
             before: Some(p),
             margin: 0.02,
@@ -536,14 +623,13 @@ mod tests {
 
     #[test]
     fn rank_puts_the_cheapest_first_and_choose_skips_refusals() {
-        let (habits, reach) = (Habits::default(), ReachConfig::default());
         let people = [op(1.60), op(1.75)];
         let candidates = [
             [0.40, -0.10, 0.70],
             [0.40, -0.10, 1.00],
             [0.40, -0.10, 1.40],
         ];
-        let ranked = rank(&people, &candidates, 0.0, &habits, &reach).unwrap();
+        let ranked = rank(&people, &candidates, &model(0.0)).unwrap();
         assert_eq!(ranked[0].station_m, candidates[1]);
         assert!(ranked.windows(2).all(|w| w[0].mean_cost <= w[1].mean_cost));
         let choice = choose::<()>(&ranked, 5, |p| {
@@ -557,19 +643,16 @@ mod tests {
         );
         let none = choose::<()>(&ranked, 2, |_| Ok(Some("no".to_owned()))).unwrap();
         assert_eq!((none.chosen, none.refused.len()), (None, 2));
-        assert!(rank(&[], &candidates, 0.0, &habits, &reach).is_err());
+        assert!(rank(&[], &candidates, &model(0.0)).is_err());
     }
 
     #[test]
     fn search_refines_around_the_cheapest_coarse_points() {
-        let (habits, reach) = (Habits::default(), ReachConfig::default());
         let people = [op(1.75)];
         let all = rank(
             &people,
             &grid([0.30, 0.40], [1.00, 1.10], -0.1, 0.025),
-            0.0,
-            &habits,
-            &reach,
+            &model(0.0),
         )
         .unwrap();
         let found = search(
@@ -579,9 +662,7 @@ mod tests {
             -0.1,
             0.025,
             3,
-            0.0,
-            &habits,
-            &reach,
+            &model(0.0),
         )
         .unwrap();
         // Fewer evaluations than the whole fine grid, each point once, cheapest first.
@@ -596,9 +677,7 @@ mod tests {
         let coarse = rank(
             &people,
             &grid([0.30, 0.40], [1.00, 1.10], -0.1, 0.05),
-            0.0,
-            &habits,
-            &reach,
+            &model(0.0),
         )
         .unwrap();
         for c in coarse.iter().take(3) {

@@ -152,7 +152,7 @@ pub struct Common {
     /// The handover point before adaptation, station frame `forward,lateral,height` (metres); also
     /// where the operators of `height` and `rula-agreement` stand and reach. Default: the point the
     /// cell used for everyone, set for a 1.75 m operator.
-    #[arg(long, global = true, value_parser = parse_point, default_value = "0.410,-0.100,1.055")]
+    #[arg(long, global = true, value_parser = parse_point, default_value = BEFORE_HANDOVER)]
     pub before_handover: [f64; 3],
     /// adaptation: also record an operator of this stature (metres) before and after as two session
     /// recordings, `adaptation_<h>m_before.mcap` / `_after.mcap` in `--out-dir`, for
@@ -443,8 +443,12 @@ fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
     write_result(c, "detector_fit", doc, setup, &[])
 }
 
+/// The unadapted cell's one handover point, station frame `forward,lateral,height` (metres): the
+/// twin's "before" and the point `trajectories design` asks c1's and c3's points to improve on.
+pub(crate) const BEFORE_HANDOVER: &str = "0.410,-0.100,1.055";
+
 /// `forward,lateral,height` in metres, three finite numbers.
-fn parse_point(text: &str) -> Result<[f64; 3], String> {
+pub(crate) fn parse_point(text: &str) -> Result<[f64; 3], String> {
     let values: Vec<f64> = text
         .split(',')
         .map(|v| v.trim().parse::<f64>().map_err(|e| format!("{v:?}: {e}")))

@@ -115,14 +115,19 @@ pub fn run(c: &Common) -> anyhow::Result<()> {
             .iter()
             .flat_map(|r| r.band_samples.iter().copied())
             .collect();
-        band_reliability::fit(&samples, &config.assessment.confidence)
+        let (model, counts) = band_reliability::fit(&samples, &config.assessment.confidence);
+        (
+            model,
+            counts,
+            band_reliability::read_error_rms_deg(&samples),
+        )
     });
     let sum = warning_trust::over_seeds(&seeds, runs);
     if !c.json {
         print_summary(c, &sum, &mix);
         print_reliability(&sum.reliability);
-        if let Some((model, counts)) = &fitted {
-            print_fit(model, counts);
+        if let Some((model, counts, read_error)) = &fitted {
+            print_fit(model, counts, read_error);
         }
     }
     let figure = plot_latency(c, &sum, &c.out_dir.join(format!("{file_stem}_latency.svg")))?;
@@ -225,7 +230,7 @@ fn print_reliability(r: &Reliability) {
 }
 
 /// The fitted confidence model, as `ConfidenceModel`'s default would hold it.
-fn print_fit(model: &ConfidenceModel, counts: &[usize]) {
+fn print_fit(model: &ConfidenceModel, counts: &[usize], read_error_deg: &[Option<f64>; 5]) {
     println!("  Confidence model fitted to these seeds (every {FIT_STRIDE}th sample):");
     for (i, region) in ANGLED_REGIONS.iter().enumerate() {
         let points: Vec<String> = model.recalibration[i]
@@ -233,11 +238,12 @@ fn print_fit(model: &ConfidenceModel, counts: &[usize]) {
             .map(|[m, s]| format!("[{m:.4}, {s:.4}]"))
             .collect();
         println!(
-            "    {:<10} scale {:.2}, floor {:.2}° ({} samples); recalibration [{}]",
+            "    {:<10} scale {:.2}, floor {:.2}° ({} samples, reading error RMS {}); recalibration [{}]",
             region.name(),
             model.scale[i],
             model.floor_rad[i].to_degrees(),
             counts[i],
+            read_error_deg[i].map_or("—".to_owned(), |e| format!("{e:.2}°")),
             points.join(", ")
         );
     }

@@ -88,6 +88,15 @@ pub enum Sub {
         /// At most this many fitting people per class, evenly spread over the subject ids.
         #[arg(long, default_value_t = 150)]
         people: usize,
+        /// The unadapted cell's one handover point (station frame: forward,lateral,height,
+        /// metres), which c1's and c3's points must improve on: the same default as the twin's
+        /// `sim adaptation --before-handover`.
+        #[arg(
+            long,
+            value_parser = crate::commands::sim::parse_point,
+            default_value = crate::commands::sim::BEFORE_HANDOVER
+        )]
+        before_handover: [f64; 3],
     },
     /// Validate and write the lock file of each accepted class.
     Lock {
@@ -185,7 +194,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             out_dir,
             step,
             people,
-        } => design::design(&ctx, out_dir, *step, *people),
+            before_handover,
+        } => design::design(&ctx, out_dir, *step, *people, *before_handover),
         Sub::Approve { class, signing } => approve(
             &ctx,
             *class,

@@ -14,7 +14,7 @@ use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
 use ergocell_robot::validate::class_band;
 use ergocell_robot::{plan_and_validate, PlanInputs, TrajectoryClass, TrajectorySpec};
-use ergocell_sim::design::{self, CandidateCost, Choice, PopulationCost, Requirements};
+use ergocell_sim::design::{self, BodyModel, CandidateCost, Choice, PopulationCost, Requirements};
 use ergocell_sim::session::Habits;
 use ergocell_sim::{Operator, ReachConfig};
 use serde::Serialize;
@@ -38,6 +38,12 @@ const MARGIN: f64 = 0.02;
 /// body model's averages (not only on average): action level 2 at most.
 const GRAND_CEILING: f64 = 3.0;
 
+/// The cell's reading error per angled region (upper arm, lower arm, wrist, neck, trunk), RMS
+/// degrees: the twin's pipeline under the detector fitted to real MediaPipe error on the reference
+/// rig, against its truth, over the tuning seeds' station frames (`ergocell sim warnings --detector
+/// sim/detectors/mediapipe-pose2sim.toml --seeds 1..20 --fit-confidence` prints it).
+const READ_ERROR_RMS_DEG: [f64; 5] = [2.14, 2.02, 3.31, 1.52, 1.18];
+
 /// Where the part really arrives around the point, σ per axis (metres): the twin's
 /// placement scatter (`target_sigma_m` of [`ergocell_sim::SessionScript::new`]).
 fn scatter_m() -> f64 {
@@ -55,13 +61,17 @@ struct ClassDesign {
     step_m: f64,
     /// Today's point, on the same people.
     hand_set: CandidateCost,
+    /// Candidates cheaper than the chosen one that were set aside because the cell would misread
+    /// their grand score more often than the hardest class's hand-set point
+    /// ([`CandidateCost::mean_misread`]).
+    harder_to_read: usize,
     choice: Choice,
 }
 
 /// The figures on the people never fitted: the whole reporting half, each at their class's point.
 #[derive(Debug, Serialize)]
 struct Population {
-    /// Every person at the single "before" point (c2's designed point).
+    /// Every person at the unadapted cell's one point (`--before-handover`).
     before: [Option<PopulationCost>; 2],
     /// Each person at their class's hand-set point.
     hand_set: [Option<PopulationCost>; 2],
@@ -87,6 +97,7 @@ pub(super) fn design(
     out_dir: &Path,
     step_m: f64,
     sample: usize,
+    before_handover: [f64; 3],
 ) -> anyhow::Result<()> {
     if !(step_m.is_finite() && (0.001..=0.05).contains(&step_m)) {
         anyhow::bail!(super::UsageError(format!(
@@ -107,42 +118,39 @@ pub(super) fn design(
     }
     let people = ansur::people()?;
     let thresholds = ClassThresholds::default();
-    let (habits, reach, scatter) = (Habits::default(), ReachConfig::default(), scatter_m());
+    let model = BodyModel {
+        placement_sigma_m: scatter_m(),
+        habits: Habits::default(),
+        reach: ReachConfig::default(),
+        read_sd_deg: READ_ERROR_RMS_DEG,
+    };
     let mut specs = Vec::new();
     for class in TrajectoryClass::ALL {
         let (spec, hashes, text) = ctx.spec_with_text(class)?;
         specs.push((class, text, spec, hashes));
     }
-    // c2 first: its point is the unadapted cell's single point (the paper's "before", set for a
-    // 1.75 m operator), and c1's and c3's must improve on it for every stature they serve.
-    let mut designs: Vec<Option<ClassDesign>> = vec![None, None, None];
-    let mut before = None;
-    for i in [1, 0, 2] {
-        let (class, _, spec, hashes) = &specs[i];
-        // The class's own people: its side of the thresholds, inside the file's [stature].
-        let bounds = spec.stature.min_m..=spec.stature.max_m;
-        let in_class = |h: f64| {
-            trajectory_class(HeightClass::of(h, &thresholds)) == *class && bounds.contains(&h)
-        };
-        let own = |p: &&Person| p.split() == Split::Fit && in_class(p.stature_m);
-        let all: Vec<&Person> = people.iter().filter(own).collect();
-        // At most `sample` of them, evenly spread over the subject ids (the cost of a point is a
-        // mean; a few hundred people fix it to a few thousandths).
-        let every = all.len().div_ceil(sample.max(1)).max(1);
-        let fit: Vec<Operator> = all
-            .iter()
-            .step_by(every)
-            .map(|p| Operator::measured(p))
-            .collect::<Result<_, _>>()?;
+    // How often the cell misreads the grand score at today's points, on each class's people: no
+    // designed point may be misread more often than the hardest of them (the cell's warnings and
+    // its agreement with the truth are judged on these readings, and a point on the band edges
+    // that move the grand score makes them disagree however good the posture).
+    let mut hand_set_misread: f64 = 0.0;
+    for (class, _, spec, _) in &specs {
+        let fit = fitting_people(&people, *class, spec, &thresholds, sample)?;
+        let h = &spec.handover;
+        let hand_set = design::rank(&fit, &[[h.forward_m, h.lateral_m, h.height_m]], &model)?;
+        hand_set_misread = hand_set_misread.max(hand_set[0].mean_misread);
+    }
+    let mut designs = Vec::new();
+    for (class, _, spec, hashes) in &specs {
+        // c1's and c3's points must improve on the unadapted cell's one point (the paper's
+        // "before", set for a 1.75 m operator: the twin's `--before-handover`) for every stature
+        // they serve; c2 is the class that point was set for, and its point is chosen freely.
+        let before = (*class != TrajectoryClass::C2).then_some(before_handover);
+        let in_class = |h: f64| serves(*class, spec, &thresholds, h);
+        let fit = fitting_people(&people, *class, spec, &thresholds, sample)?;
         let band = class_band(spec.stature.min_m, spec.stature.max_m);
         let h = &spec.handover;
-        let hand_set = design::rank(
-            &fit,
-            &[[h.forward_m, h.lateral_m, h.height_m]],
-            scatter,
-            &habits,
-            &reach,
-        )?;
+        let hand_set = design::rank(&fit, &[[h.forward_m, h.lateral_m, h.height_m]], &model)?;
         let ranked = design::search(
             &fit,
             band.forward_m,
@@ -150,10 +158,11 @@ pub(super) fn design(
             h.lateral_m,
             step_m,
             KEEP,
-            scatter,
-            &habits,
-            &reach,
+            &model,
         )?;
+        let readable = |c: &CandidateCost| c.mean_misread <= hand_set_misread + 1e-12;
+        let (ranked, unreadable): (Vec<CandidateCost>, Vec<CandidateCost>) =
+            ranked.into_iter().partition(readable);
         // Where c1's and c3's points must improve on the single point: every centimetre of the
         // class's statures, Drillis & Contini's proportions.
         let statures: Vec<f64> =
@@ -167,7 +176,7 @@ pub(super) fn design(
                 margin: MARGIN,
                 grand_ceiling: GRAND_CEILING,
             };
-            let short = design::shortfalls(point, &req, &statures, scatter, &habits, &reach)?;
+            let short = design::shortfalls(point, &req, &statures, &model)?;
             if short.is_some() {
                 return Ok(short);
             }
@@ -188,26 +197,31 @@ pub(super) fn design(
                 Err(e) => Some(e.to_string()),
             })
         })?;
+        let harder_to_read = choice.chosen.map_or(unreadable.len(), |chosen| {
+            unreadable
+                .iter()
+                .filter(|c| c.mean_cost < chosen.mean_cost)
+                .count()
+        });
         eprintln!(
-            "{class}: {} fitting people, {} candidates, {} refused",
+            "{class}: {} fitting people, {} candidates, {} cheaper ones harder to read, {} refused",
             fit.len(),
-            ranked.len(),
+            ranked.len() + unreadable.len(),
+            harder_to_read,
             choice.refused.len()
         );
-        if before.is_none() {
-            before = Some(choice.chosen.map_or(hand_set[0].station_m, |c| c.station_m));
-        }
-        designs[i] = Some(ClassDesign {
+        designs.push(ClassDesign {
             class: *class,
             stature_m: [spec.stature.min_m, spec.stature.max_m],
             fit_people: fit.len(),
-            candidates: ranked.len(),
+            candidates: ranked.len() + unreadable.len(),
             step_m,
             hand_set: hand_set[0],
+            harder_to_read,
             choice,
         });
     }
-    let classes: Vec<ClassDesign> = designs.into_iter().flatten().collect();
+    let classes = designs;
     let point = |i: usize, designed: bool| -> [f64; 3] {
         let c = &classes[i];
         match (designed, &c.choice.chosen) {
@@ -217,7 +231,7 @@ pub(super) fn design(
     };
     // The people never fitted, each at the single before point, their class's hand-set point and
     // their class's designed point.
-    let before = point(1, true);
+    let before = before_handover;
     let mut costs: [Vec<(Sex, f64)>; 3] = Default::default();
     for p in people.iter().filter(|p| p.split() == Split::Report) {
         let op = Operator::measured(p)?;
@@ -230,17 +244,14 @@ pub(super) fn design(
             .into_iter()
             .enumerate()
         {
-            let c = design::hold_cost(&op, &at.into(), scatter, &habits, &reach)?;
-            costs[j].push((p.sex, c.first_cost));
+            let c = design::hold_cost(&op, &at.into(), &model)?;
+            costs[j].push((p.sex, c.cost));
         }
     }
     let [b, hs, d] = costs.map(|c| design::population(&c));
     let statures_m: Vec<f64> = (0..=50).map(|i| 1.50 + 0.01 * f64::from(i)).collect();
     let mut curves = Vec::new();
-    let mut named = vec![(
-        "before: c2's designed point for everyone".to_owned(),
-        before,
-    )];
+    let mut named = vec![("before: the one point for everyone".to_owned(), before)];
     for (i, c) in classes.iter().enumerate() {
         named.push((format!("{} hand-set", c.class), point(i, false)));
         named.push((format!("{} designed", c.class), point(i, true)));
@@ -250,7 +261,7 @@ pub(super) fn design(
             .iter()
             .map(|&h| {
                 let op = Operator::new(h)?;
-                Ok(design::hold_cost(&op, &at.into(), scatter, &habits, &reach)?.first_cost)
+                Ok(design::hold_cost(&op, &at.into(), &model)?.cost)
             })
             .collect::<Result<Vec<f64>, ergocell_sim::SimError>>()?;
         curves.push((name, curve));
@@ -303,6 +314,34 @@ pub(super) fn design(
     Ok(())
 }
 
+/// Whether a person of stature `h` is one the class serves: its side of the thresholds, inside the
+/// class file's `[stature]`.
+fn serves(class: TrajectoryClass, spec: &TrajectorySpec, t: &ClassThresholds, h: f64) -> bool {
+    trajectory_class(HeightClass::of(h, t)) == class
+        && (spec.stature.min_m..=spec.stature.max_m).contains(&h)
+}
+
+/// The class's people of ANSUR II's fitting half, at most `sample` of them, evenly spread over the
+/// subject ids (the cost of a point is a mean; a few hundred people fix it to a few thousandths).
+fn fitting_people(
+    people: &[Person],
+    class: TrajectoryClass,
+    spec: &TrajectorySpec,
+    t: &ClassThresholds,
+    sample: usize,
+) -> anyhow::Result<Vec<Operator>> {
+    let all: Vec<&Person> = people
+        .iter()
+        .filter(|p| p.split() == Split::Fit && serves(class, spec, t, p.stature_m))
+        .collect();
+    let every = all.len().div_ceil(sample.max(1)).max(1);
+    Ok(all
+        .iter()
+        .step_by(every)
+        .map(|p| Operator::measured(p))
+        .collect::<Result<_, _>>()?)
+}
+
 /// The class file with its `[handover]` point replaced, and the comment above it saying where it
 /// came from; everything else (comments included) as it was.
 fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow::Result<String> {
@@ -313,14 +352,18 @@ fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow:
         .context("class file has no [handover] table")?;
     let [f, l, z] = chosen.station_m;
     let hs = c.hand_set.station_m;
-    let comment = format!(
-        "\n# Designed (`ergocell trajectories design`): of {n} candidate points (down to {step:.1} mm apart) in the\n\
-         # class band, the one with the lowest expected posture cost for {p} ANSUR II people of the class from\n\
-         # the fitting half (even subject ids, {lo:.2}–{hi:.2} m), on the twin's body model, that meets the\n\
-         # design's requirements at every stature of the class (RULA at most 3; for c1 and c3 a lower cost\n\
-         # than c2's point, the one point of the unadapted cell) and that `trajectories validate` accepts:\n\
-         # mean posture cost {cost:.3} (RULA grand score {grand:.2}); the hand-set point ({hf:.3}, {hz:.3}) m\n\
-         # cost them {hcost:.3} ({hgrand:.2}). {refused} cheaper candidates were refused. See design.json.\n",
+    let text = format!(
+        "Designed (`ergocell trajectories design`): of {n} candidate points (down to {step:.1} mm \
+         apart) in the class band, the one with the lowest expected posture cost for {p} ANSUR II \
+         people of the class from the fitting half (even subject ids, {lo:.2}–{hi:.2} m), on the \
+         twin's body model, with the hold repeated all shift (RULA's muscle use where it leaves the \
+         relaxed posture), that meets the design's requirements at every stature of the class (RULA \
+         at most 3 before repetitions; for c1 and c3 a lower cost and no higher RULA than at the \
+         unadapted cell's one point), that the cell misreads no more often than the hardest \
+         hand-set point, and that `trajectories validate` accepts: mean posture cost {cost:.3} (RULA \
+         grand score {grand:.2}, grand score misread {misread:.1} % of the time); the hand-set point \
+         ({hf:.3}, {hz:.3}) m cost them {hcost:.3} ({hgrand:.2}, {hmisread:.1} %). {harder} cheaper \
+         candidates were harder to read, {refused} were refused. See design.json.",
         n = c.candidates,
         step = c.step_m * 1e3,
         p = c.fit_people,
@@ -332,8 +375,12 @@ fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow:
         hz = hs[2],
         hcost = c.hand_set.mean_cost,
         hgrand = c.hand_set.mean_grand_score,
+        misread = 100.0 * chosen.mean_misread,
+        hmisread = 100.0 * c.hand_set.mean_misread,
+        harder = c.harder_to_read,
         refused = c.choice.refused.len(),
     );
+    let comment = format!("\n{}\n", comment_lines(&text, 104));
     // The validated point itself (the grid's points are round to the micrometre).
     handover["forward_m"] = toml_edit::value(f);
     handover["lateral_m"] = toml_edit::value(l);
@@ -344,6 +391,22 @@ fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow:
     let out = doc.to_string();
     TrajectorySpec::from_toml_str(&out).context("the designed class file does not read back")?;
     Ok(out)
+}
+
+/// `text` as TOML comment lines of at most `width` characters (a longer word gets a line of its
+/// own).
+fn comment_lines(text: &str, width: usize) -> String {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::from("#");
+    for word in text.split_whitespace() {
+        if line.len() > 1 && line.chars().count() + 1 + word.chars().count() > width {
+            lines.push(std::mem::replace(&mut line, String::from("#")));
+        }
+        line.push(' ');
+        line.push_str(word);
+    }
+    lines.push(line);
+    lines.join("\n")
 }
 
 fn population_text(p: &[Option<PopulationCost>; 2]) -> String {
@@ -364,11 +427,11 @@ fn print_report(r: &Report) {
             continue;
         };
         println!(
-            "  {}: hand-set ({:.3}, {:.3}, {:.3}) m {:.3} → designed ({:.3}, {:.3}, {:.3}) m {:.3} ({} people, {} refused)",
+            "  {}: hand-set ({:.3}, {:.3}, {:.3}) m {:.3} (misread {:.1} %) → designed ({:.3}, {:.3}, {:.3}) m {:.3} (misread {:.1} %) ({} people, {} cheaper harder to read, {} refused)",
             c.class,
-            hs.station_m[0], hs.station_m[1], hs.station_m[2], hs.mean_cost,
-            d.station_m[0], d.station_m[1], d.station_m[2], d.mean_cost,
-            c.fit_people, c.choice.refused.len()
+            hs.station_m[0], hs.station_m[1], hs.station_m[2], hs.mean_cost, 100.0 * hs.mean_misread,
+            d.station_m[0], d.station_m[1], d.station_m[2], d.mean_cost, 100.0 * d.mean_misread,
+            c.fit_people, c.harder_to_read, c.choice.refused.len()
         );
     }
     println!("people never fitted (reporting half), posture cost:");
@@ -424,4 +487,22 @@ fn plot(r: &Report, path: &Path) -> anyhow::Result<()> {
         &series,
         y_range(r),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn comment_lines_wrap_at_the_width_and_keep_every_word() {
+        let text = "one two three four five six seven eight nine ten eleven twelve";
+        let out = super::comment_lines(text, 20);
+        assert!(out
+            .lines()
+            .all(|l| l.starts_with("# ") && l.chars().count() <= 20));
+        let words: Vec<&str> = out.lines().flat_map(|l| l[2..].split(' ')).collect();
+        assert_eq!(words.join(" "), text);
+        assert_eq!(
+            super::comment_lines("averyveryverylongword", 5),
+            "# averyveryverylongword"
+        );
+    }
 }
