@@ -174,7 +174,7 @@ fn the_demo_on_a_moved_cell_serves_the_operator_at_the_moved_station() {
             last.parts_taken,
             last.height_class.as_str()
         ),
-        ("session_ended", cycles, "c2"),
+        ("session_ended", cycles, "c1"),
         "{stdout}"
     );
     // The operator was measured standing at the moved station: the fused skeleton (the landmarks'

@@ -33,7 +33,14 @@ fn the_session_and_the_experiments_run_one_pipeline() {
     let text = std::fs::read_to_string(root().join("config/rig.toml")).unwrap();
     let rig = parse_rig(&text, "config/rig.toml").unwrap().0;
     let seed = 5;
-    let mut script = SessionScript::new(Point3::new(0.41, -0.10, 1.08));
+    // The operator reaches where c2's robot brings the part (the reference cell's station is the
+    // world's origin).
+    let c2 = ergocell_robot::TrajectorySpec::from_toml_str(
+        &std::fs::read_to_string(root().join("trajectories/c2.toml")).unwrap(),
+    )
+    .unwrap()
+    .handover;
+    let mut script = SessionScript::new(Point3::new(c2.forward_m, c2.lateral_m, c2.height_m));
     script.cycles = 2;
     let ticks: Vec<Tick> = Simulation::new(
         rig.clone(),
