@@ -336,8 +336,8 @@ fn with_log_times(rec: &Path, out: &Path, log_time: impl Fn(u64, u64, u64) -> u6
 /// through the whole-file reader and the overview's streamed one alike.
 #[test]
 fn a_recording_whose_clock_disagrees_with_its_capture_stamps_is_read_by_the_stamps() {
-    /// The demo's fixed-lag smoother, seconds.
-    const FIXED_LAG_S: f64 = 0.55;
+    // The demo's fixed-lag smoother, seconds.
+    const FIXED_LAG_S: f64 = ergocell_cell::pipeline::DEFAULT_FIXED_LAG_S;
     let scratch = Scratch::new("exposure-clock");
     let rec = common::demo_recording("exposure-demo.mcap");
     // The honest recording's longest stretch without a camera frame (its log times are the

@@ -1021,11 +1021,18 @@ fn the_shipped_provider_finds_the_shipped_files_by_their_repository_paths() {
 /// the lower expected RULA there (the shipped curves: c1), saying how probable that class is.
 #[test]
 fn an_operator_whose_interval_straddles_a_boundary_is_served_at_once() {
+    // The operator reaches where c1's robot brings the part (the reference cell's station is the
+    // world's origin).
+    let c1 = ergocell_robot::TrajectorySpec::from_toml_str(
+        &std::fs::read_to_string(root().join("trajectories/c1.toml")).unwrap(),
+    )
+    .unwrap()
+    .handover;
     let (machine, robot, events) = operator_session(
         "near-boundary-operator",
         TrajectoryClass::C1,
         1.69,
-        Point3::new(0.38, -0.10, 1.08),
+        Point3::new(c1.forward_m, c1.lateral_m, c1.height_m),
         1,
         13,
         40_000_000_000,

@@ -411,27 +411,43 @@ fn edges_deg(region: BodyRegion) -> &'static [f64] {
 /// 0° has no width and no mass). A spread of 0 gives 1.
 pub fn band_probability(region: BodyRegion, input: &RulaInput, angle_deg: f64, sd_deg: f64) -> f64 {
     let stated = region_score_at(region, input, Some(angle_deg));
-    let edges = edges_deg(region);
-    if edges.is_empty() || sd_deg <= 0.0 || !sd_deg.is_finite() {
+    if edges_deg(region).is_empty() || sd_deg <= 0.0 || !sd_deg.is_finite() {
         return 1.0;
     }
+    let same = stretch_mass::<std::convert::Infallible>(region, angle_deg, sd_deg, |probe| {
+        Ok(region_score_at(region, input, Some(probe)) == stated)
+    });
+    match same {
+        Ok(p) => p.clamp(0.0, 1.0),
+        Err(never) => match never {},
+    }
+}
+
+/// The normal mass (around `angle_deg`, spread `sd_deg` > 0) of the stretches between `region`'s
+/// band edges whose inner point `keep` accepts. Each stretch is judged at one point inside it: a
+/// third of the way in (never the wrist's 0°), or 1° from the one finite end of an outer stretch;
+/// which side holds an edge does not matter to a mass.
+fn stretch_mass<E>(
+    region: BodyRegion,
+    angle_deg: f64,
+    sd_deg: f64,
+    mut keep: impl FnMut(f64) -> Result<bool, E>,
+) -> Result<f64, E> {
     let mut p = 0.0;
     let mut lo = f64::NEG_INFINITY;
-    for hi in edges.iter().copied().chain([f64::INFINITY]) {
-        // a point inside the stretch: a third of the way in (never the wrist's 0°), or 1° from
-        // the one finite end of an outer stretch
+    for hi in edges_deg(region).iter().copied().chain([f64::INFINITY]) {
         let probe = match (lo.is_finite(), hi.is_finite()) {
             (true, true) => lo + (hi - lo) / 3.0,
             (false, true) => hi - 1.0,
             (true, false) => lo + 1.0,
             (false, false) => angle_deg,
         };
-        if region_score_at(region, input, Some(probe)) == stated {
+        if keep(probe)? {
             p += normal_cdf((hi - angle_deg) / sd_deg) - normal_cdf((lo - angle_deg) / sd_deg);
         }
         lo = hi;
     }
-    p.clamp(0.0, 1.0)
+    Ok(p)
 }
 
 /// The probability that a reading of `input` whose angles err with spread `sd_deg` (per region, in
@@ -440,16 +456,18 @@ pub fn band_probability(region: BodyRegion, input: &RulaInput, angle_deg: f64, s
 /// move the grand score is misread half the time; one deep inside its bands, or whose neighbouring
 /// bands give the same grand score (RULA's tables saturate), is read right.
 ///
-/// First order: each region is misread with its band's missing mass `1 −`
-/// [`band_probability`], independently of the others, and a misread counts when crossing the
-/// region's nearest band edge changes the grand score (the worksheet's adjustments held). A spread
-/// of 0 reads right.
+/// First order: each region's angle errs on its own, the others held. Its misread mass is the
+/// normal mass of the stretches between its band edges where the worksheet, with the angle moved
+/// there and then `readjust`ed (what else follows from the angle, such as muscle use decided from
+/// the relaxed posture; the identity when nothing does), scores another grand score. The posture
+/// is read right when no region is misread. A spread of 0 reads right.
 ///
 /// # Errors
 /// A worksheet [`crate::rula::score_worksheet`] refuses.
 pub fn grand_misread_probability(
     input: &RulaInput,
     sd_deg: &[f64; 5],
+    readjust: impl Fn(RulaInput) -> RulaInput,
 ) -> Result<f64, crate::ErgonomicsError> {
     let grand = crate::rula::score_worksheet(input)?.scores.final_score;
     let mut read_right = 1.0;
@@ -457,23 +475,16 @@ pub fn grand_misread_probability(
         let Some(angle) = region_angle(*region, input) else {
             continue;
         };
-        let Some(edge) = edges_deg(*region)
-            .iter()
-            .copied()
-            .min_by(|a, b| (a - angle).abs().total_cmp(&(b - angle).abs()))
-        else {
+        if !(sd > 0.0 && sd.is_finite()) {
             continue;
-        };
-        // a hundredth of a degree across the nearest edge (bands differ in which side holds it)
-        let across = if angle < edge {
-            edge + 0.01
-        } else {
-            edge - 0.01
-        };
-        let moved = with_region_angle(*region, input, across);
-        if crate::rula::score_worksheet(&moved)?.scores.final_score != grand {
-            read_right *= band_probability(*region, input, angle, sd);
         }
+        let moved = stretch_mass(*region, angle, sd, |probe| {
+            let there = readjust(with_region_angle(*region, input, probe));
+            Ok::<_, crate::ErgonomicsError>(
+                crate::rula::score_worksheet(&there)?.scores.final_score != grand,
+            )
+        })?;
+        read_right *= (1.0 - moved).clamp(0.0, 1.0);
     }
     Ok((1.0 - read_right).clamp(0.0, 1.0))
 }
@@ -536,6 +547,7 @@ mod tests {
 
     #[test]
     fn a_grand_score_is_misread_only_where_an_edge_that_moves_it_is_near() {
+        let same = |i: RulaInput| i;
         let sd = [2.0; 5];
         // every angle at least 2.5 σ inside its band: upper arm 10°, elbow 80°, wrist 5°, neck 15°,
         // trunk extended 10° (scored erect)
@@ -544,7 +556,7 @@ mod tests {
         deep.wrist_flexion_deg = 5.0;
         deep.neck_flexion_deg = 15.0;
         deep.trunk_flexion_deg = -10.0;
-        let inside = grand_misread_probability(&deep, &sd).unwrap();
+        let inside = grand_misread_probability(&deep, &sd, same).unwrap();
         assert!(inside < 0.05, "{inside}");
         // the neck on its 20° edge, which moves this worksheet's grand score
         let mut edge = deep;
@@ -554,7 +566,7 @@ mod tests {
             g(&edge),
             g(&with_region_angle(BodyRegion::Neck, &edge, 19.99))
         );
-        let on_edge = grand_misread_probability(&edge, &sd).unwrap();
+        let on_edge = grand_misread_probability(&edge, &sd, same).unwrap();
         assert!(on_edge > 0.45, "{on_edge}");
         // at least the neck's missing mass, and no more than it with the others' added
         let p_neck = band_probability(BodyRegion::Neck, &edge, 20.0, 2.0);
@@ -571,17 +583,68 @@ mod tests {
             g(&saturated),
             g(&with_region_angle(BodyRegion::Neck, &saturated, 9.99))
         );
-        let flat = grand_misread_probability(&saturated, &sd).unwrap();
+        let flat = grand_misread_probability(&saturated, &sd, same).unwrap();
         assert!(flat < 0.05, "{flat}");
         // no spread reads right; a narrower one misreads less
-        assert_eq!(grand_misread_probability(&edge, &[0.0; 5]).unwrap(), 0.0);
+        assert_eq!(
+            grand_misread_probability(&edge, &[0.0; 5], same).unwrap(),
+            0.0
+        );
         let mut near = edge;
         near.neck_flexion_deg = 22.0;
         let (wide, narrow) = (
-            grand_misread_probability(&near, &sd).unwrap(),
-            grand_misread_probability(&near, &[1.0; 5]).unwrap(),
+            grand_misread_probability(&near, &sd, same).unwrap(),
+            grand_misread_probability(&near, &[1.0; 5], same).unwrap(),
         );
         assert!(narrow < wide && wide < on_edge, "{narrow} {wide} {on_edge}");
+    }
+
+    #[test]
+    fn a_misreading_counts_on_either_side_of_an_edge_and_follows_what_the_angle_decides() {
+        let same = |i: RulaInput| i;
+        let g = |i: &RulaInput| crate::rula::score_worksheet(i).unwrap().scores.final_score;
+        // the elbow on 100°, which the lower band holds (60..=100 scores 1): with the wrist past
+        // 15° the lower arm's score moves score A and the grand score
+        let mut elbow = RulaInput::neutral();
+        elbow.upper_arm_flexion_deg = 10.0;
+        elbow.lower_arm_flexion_deg = 100.0;
+        elbow.wrist_flexion_deg = 20.0;
+        elbow.trunk_flexion_deg = -10.0;
+        assert_ne!(
+            g(&elbow),
+            g(&with_region_angle(BodyRegion::LowerArm, &elbow, 100.01))
+        );
+        let p = grand_misread_probability(&elbow, &[2.0; 5], same).unwrap();
+        assert!((0.45..0.6).contains(&p), "{p}");
+        // a wrist read at exactly 0° (score 1, no width) next to a bent elbow: the wrist's
+        // neighbouring band (2) gives the same score A, and nothing is misread
+        let mut wrist = RulaInput::neutral();
+        wrist.upper_arm_flexion_deg = 10.0;
+        wrist.lower_arm_flexion_deg = 50.0;
+        wrist.trunk_flexion_deg = -10.0;
+        assert_eq!(
+            g(&wrist),
+            g(&with_region_angle(BodyRegion::Wrist, &wrist, 5.0))
+        );
+        let p = grand_misread_probability(&wrist, &[2.0; 5], same).unwrap();
+        assert!(p < 0.05, "{p}");
+        // what follows from the angle is decided again in each stretch: on the neck's 10° edge,
+        // where the tables saturate, a load that a neck below 10° would carry (an artificial rule)
+        // makes half the mass a misreading
+        let mut neck = RulaInput::neutral();
+        neck.upper_arm_flexion_deg = 10.0;
+        neck.wrist_flexion_deg = 5.0;
+        neck.neck_flexion_deg = 10.0;
+        neck.trunk_flexion_deg = -10.0;
+        let loaded_below_10 = |mut i: RulaInput| {
+            if i.neck_flexion_deg < 10.0 {
+                i.force_load_score_neck_trunk_legs = 3;
+            }
+            i
+        };
+        let held = grand_misread_probability(&neck, &[2.0; 5], same).unwrap();
+        let followed = grand_misread_probability(&neck, &[2.0; 5], loaded_below_10).unwrap();
+        assert!(held < 0.05 && followed > 0.45, "{followed} vs {held}");
     }
 
     #[test]

@@ -61,9 +61,9 @@ struct ClassDesign {
     step_m: f64,
     /// Today's point, on the same people.
     hand_set: CandidateCost,
-    /// Candidates cheaper than the chosen one that were set aside because the cell would misread
-    /// their grand score more often than the hardest class's hand-set point
-    /// ([`CandidateCost::mean_misread`]).
+    /// Candidates set aside because the cell would misread their grand score more often than the
+    /// hardest class's hand-set point ([`CandidateCost::mean_misread`]): those cheaper than the
+    /// chosen one, or all of them when none was chosen.
     harder_to_read: usize,
     choice: Choice,
 }
@@ -151,6 +151,7 @@ pub(super) fn design(
         let band = class_band(spec.stature.min_m, spec.stature.max_m);
         let h = &spec.handover;
         let hand_set = design::rank(&fit, &[[h.forward_m, h.lateral_m, h.height_m]], &model)?;
+        let readable = |c: &CandidateCost| c.mean_misread <= hand_set_misread + 1e-12;
         let ranked = design::search(
             &fit,
             band.forward_m,
@@ -158,9 +159,9 @@ pub(super) fn design(
             h.lateral_m,
             step_m,
             KEEP,
+            readable,
             &model,
         )?;
-        let readable = |c: &CandidateCost| c.mean_misread <= hand_set_misread + 1e-12;
         let (ranked, unreadable): (Vec<CandidateCost>, Vec<CandidateCost>) =
             ranked.into_iter().partition(readable);
         // Where c1's and c3's points must improve on the single point: every centimetre of the
