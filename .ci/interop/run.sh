@@ -26,7 +26,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # The session the cameras will replay: the simulator at 30 Hz, one handover cycle, with the faults.
-"$bin" --log error demo --cycles 1 --fps 30 --out "$tmp/session.mcap" > "$tmp/demo.log"
+"$bin" --log error demo --cycles 1 --fps 30 --stature-m 1.815 --out "$tmp/session.mcap" > "$tmp/demo.log"
 
 # A signed approval for this test only: c2 of a copy of the cell, approved under a throwaway
 # authority (.ci/interop/approved-cell.sh).
@@ -199,7 +199,7 @@ PY
 # controller, which restarts with the robot at home, as after homing it) and end the session
 # normally. The session it plays has no injected camera faults (`demo --no-faults`): a camera stall
 # while the robot moves would leave it held between knots, which needs the pendant, by design.
-"$bin" --log error demo --cycles 1 --fps 30 --no-faults --out "$tmp/clean.mcap" > /dev/null
+"$bin" --log error demo --cycles 1 --fps 30 --stature-m 1.815 --no-faults --out "$tmp/clean.mcap" > /dev/null
 unshare -n -- bash -c '
   set -euo pipefail
   ip link set lo up

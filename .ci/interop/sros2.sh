@@ -17,7 +17,7 @@ cd "$(dirname "$0")/../.."
 bin=$(realpath "${1:-target/release/ergocell}")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-"$bin" --log error demo --cycles 1 --fps 30 --no-faults --out "$tmp/session.mcap" > /dev/null
+"$bin" --log error demo --cycles 1 --fps 30 --stature-m 1.815 --no-faults --out "$tmp/session.mcap" > /dev/null
 "$bin" security create-keystore --keystore "$tmp/ks" > "$tmp/ks.log"
 "$bin" security create-keystore --keystore "$tmp/foreign" > /dev/null
 cp -r config "$tmp/required"

@@ -31,7 +31,7 @@ venv=$(realpath "${2:-target/rclpy}")/venv
 tmp=$(mktemp -d)
 trap 'if [ -n "${KEEP_LOGS:-}" ]; then cp "$tmp"/*.run "$tmp"/*.peer "$tmp"/*.json "$KEEP_LOGS"/ 2>/dev/null; fi; rm -rf "$tmp"' EXIT
 
-"$bin" --log error demo --cycles 1 --fps 30 --no-faults --out "$tmp/session.mcap" > "$tmp/demo.log"
+"$bin" --log error demo --cycles 1 --fps 30 --stature-m 1.815 --no-faults --out "$tmp/session.mcap" > "$tmp/demo.log"
 # A signed approval for this test only (.ci/interop/approved-cell.sh): c2 of a copy of the cell.
 who=rclpy@ci.invalid
 source .ci/interop/approved-cell.sh
@@ -62,7 +62,7 @@ for c in c1 c2 c3; do
 done
 "$bin" trajectories --cell "$tmp/moved/cell.toml" --trajectories-dir "$tmp/mtraj" approve --class c2 \
   --by "$who" --key "$tmp/key" > /dev/null
-"$bin" --log error demo --cycles 1 --fps 30 --no-faults --cell "$tmp/moved/cell.toml" \
+"$bin" --log error demo --cycles 1 --fps 30 --stature-m 1.815 --no-faults --cell "$tmp/moved/cell.toml" \
   --trajectories "$tmp/mtraj" --out "$tmp/moved_session.mcap" > "$tmp/moved_demo.log"
 
 # The action cell: the same cell, commanding through FollowJointTrajectory.
@@ -121,7 +121,7 @@ NS
 for pair in stall:robot-stall drift:robot-path-deviation stopped_by_error:robot-e-stop \
     stopped_by_user:robot-driver-stopped; do
   name=${pair%%:*} file=${pair#*:}
-  "$bin" --log error demo --cycles 1 --fps 30 --faults "sim/faults/$file.toml" \
+  "$bin" --log error demo --cycles 1 --fps 30 --stature-m 1.815 --faults "sim/faults/$file.toml" \
     --out "$tmp/twin_$name.mcap" --outcome "$tmp/twin_$name.outcome.json" > "$tmp/twin_$name.log" \
     || echo "demo exit $?" >> "$tmp/twin_$name.log"
 done
@@ -156,14 +156,14 @@ check("height measured" in run and "class c2" in run,
       "rclpy's CameraLandmarks were fused by run: height measured, class c2")
 check("class_decided" in states and "trajectory_locked" in states,
       "every session event reached the rclpy reader: class_decided and trajectory_locked included")
-# The demo's operator stands 1 cm above the c1/c2 boundary (1.69 m): served across it, the choice, its
+# The session's operator stands 5 mm below the c2/c3 boundary (1.815 m): served across it, the choice, its
 # probability and its expected RULA cost as fields of the session event.
 decided = [e for e in r["events"] if e["state"] == "class_decided"]
 d = decided[0] if decided else {}
 check(d.get("height_class") == "c2" and d.get("height_decision_basis") == "expected_rula"
       and 0.5 <= d.get("height_class_probability", -1) < 1.0
       and abs(d.get("height_expected_rula_cost", 9)) <= 0.2,
-      f"the near-boundary operator (1.69 m) was served: class {d.get('height_class')}, "
+      f"the near-boundary operator (1.815 m) was served: class {d.get('height_class')}, "
       f"{d.get('height_decision_basis')}, probability {d.get('height_class_probability', float('nan')):.2f}, "
       f"expected RULA cost {d.get('height_expected_rula_cost', float('nan')):+.2f} (fields of the class_decided event)")
 taken = [e for e in r["events"] if e.get("parts_taken", 0) >= 1]
