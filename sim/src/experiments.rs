@@ -152,17 +152,20 @@ fn simulate(
     stature_m: f64,
     script: &SessionScript,
 ) -> Result<Vec<Tick>, SimError> {
+    simulate_operator(setup, session, Operator::new(stature_m)?, script)
+}
+
+fn simulate_operator(
+    setup: &Setup,
+    session: usize,
+    operator: Operator,
+    script: &SessionScript,
+) -> Result<Vec<Tick>, SimError> {
     let config = SimConfig {
         noise: setup.noise,
         ..SimConfig::new(session_seed(setup.seed, session))
     };
-    Simulation::new(
-        setup.rig.clone(),
-        Operator::new(stature_m)?,
-        *script,
-        config,
-    )?
-    .collect()
+    Simulation::new(setup.rig.clone(), operator, *script, config)?.collect()
 }
 
 /// The assessor for the ground truth: the true angles of each instant, unsmoothed (the pipeline's
@@ -528,7 +531,13 @@ fn per_minute(n: usize, minutes: f64) -> f64 {
 /// Result of [`adaptation`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Adaptation {
+    /// The heights the experiment stands for.
     pub heights_m: Vec<f64>,
+    /// Each height's operator's true stature: the height itself for Drillis & Contini's
+    /// proportions, a measured person's own within 1 cm of it (unless none was near).
+    pub statures_m: Vec<f64>,
+    /// The measured person at each height (ANSUR II `subjectid`), `None` for the proportions.
+    pub subject_ids: Vec<Option<u32>>,
     /// Mean RULA grand score (worse side) over the handover frames, noisy pipeline. After
     /// adaptation, an operator outside the statures of their class's trajectory is not served (the
     /// session ends without moving the robot): every "after" value of that height is NaN (`null` in
@@ -596,19 +605,18 @@ impl TaskRun {
 fn run_task(
     setup: &Setup,
     session: usize,
-    stature_m: f64,
+    op: &Operator,
     handover: Point3<f64>,
     cycles: usize,
 ) -> Result<TaskRun, SimError> {
     let mut script = SessionScript::new(handover);
     script.cycles = cycles;
-    let ticks = simulate(setup, session, stature_m, &script)?;
+    let ticks = simulate_operator(setup, session, *op, &script)?;
     let truth = truth_headlines(&ticks)?;
     let mut out = TaskRun::empty();
     let holding = |t: &Tick| matches!(t.truth.phase, Phase::Hold { .. });
     // The truth and its angles over every holding tick; the pipeline over the frames it released
     // whose nearest tick is a holding one.
-    let op = Operator::new(stature_m)?;
     for (tick, t) in ticks.iter().zip(&truth) {
         if !holding(tick) {
             continue;
@@ -649,17 +657,55 @@ pub fn adaptation_heights() -> Vec<f64> {
         .collect()
 }
 
-/// The paper's Figs. 7–9: RULA before vs after the class-specific handover.
+/// Whose bodies the adaptation experiment's operators have.
+#[derive(Debug, Clone, Copy)]
+pub enum AdaptationBodies<'a> {
+    /// Drillis & Contini's proportions at exactly each height (the robot's planning model).
+    Proportions,
+    /// Measured people: at each height, one of these people within 1 cm of it (the nearest when
+    /// none is), drawn by the seed. The caller passes ANSUR II's reporting half, never fitted.
+    Measured(&'a [Person]),
+}
+
+/// The person of `people` standing in for `height_m` in session `session` of `seed`: one of those
+/// within 1 cm, drawn by the session's seed; the nearest when none is. `None` for no people.
+pub fn person_near(
+    people: &[Person],
+    height_m: f64,
+    seed: u64,
+    session: usize,
+) -> Option<&Person> {
+    let near: Vec<&Person> = people
+        .iter()
+        .filter(|p| (p.stature_m - height_m).abs() <= 0.01 + 1e-9)
+        .collect();
+    if near.is_empty() {
+        return people.iter().min_by(|a, b| {
+            (a.stature_m - height_m)
+                .abs()
+                .total_cmp(&(b.stature_m - height_m).abs())
+        });
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(session_seed(seed, session));
+    Some(near[rng.random_range(0..near.len())])
+}
+
+/// The paper's Figs. 7–9: RULA before vs after the class-specific handover. Each height's operator
+/// is served by the class of their own true stature (the paper's protocol), and holds the part in
+/// the same session (seed, habits, cameras) before and after: only the handover point differs.
 pub fn adaptation(
     setup: &Setup,
     handovers: &Handovers,
     heights_m: &[f64],
+    bodies: AdaptationBodies<'_>,
     cycles: usize,
     progress: Progress<'_>,
 ) -> Result<Adaptation, SimError> {
     let thresholds = HeightConfig::new(up()?).thresholds;
     let mut r = Adaptation {
         heights_m: heights_m.to_vec(),
+        statures_m: Vec::new(),
+        subject_ids: Vec::new(),
         mean_grand_score_before: Vec::new(),
         mean_grand_score_after: Vec::new(),
         true_mean_grand_score_before: Vec::new(),
@@ -690,7 +736,22 @@ pub fn adaptation(
         not_served_after: Vec::new(),
     };
     let total = 2 * heights_m.len();
-    for (i, &h) in heights_m.iter().enumerate() {
+    for (i, &nominal) in heights_m.iter().enumerate() {
+        let (op, subject_id) = match bodies {
+            AdaptationBodies::Proportions => (Operator::new(nominal)?, None),
+            AdaptationBodies::Measured(people) => {
+                let p =
+                    person_near(people, nominal, setup.seed, i).ok_or(SimError::BadParameter {
+                        name: "people",
+                        value: 0.0,
+                        why: "measured bodies need at least one person",
+                    })?;
+                (Operator::measured(p)?, Some(p.subject_id))
+            }
+        };
+        let h = op.stature_m();
+        r.statures_m.push(round6(h));
+        r.subject_ids.push(subject_id);
         let class = HeightClass::of(h, &thresholds);
         let after_point = handovers.for_class(class);
         r.handover_after_m
@@ -710,7 +771,7 @@ pub fn adaptation(
             let run = if k == 1 && !served {
                 TaskRun::empty()
             } else {
-                run_task(setup, i, h, point, cycles)?
+                run_task(setup, i, &op, point, cycles)?
             };
             let regions: Vec<f64> = (0..6)
                 .map(|j| round6(mean(&run.regions.iter().map(|x| x[j]).collect::<Vec<_>>())))
@@ -1428,5 +1489,41 @@ mod tests {
         assert_eq!(h[0], 1.5);
         assert_eq!(h[10], 2.0);
         assert_eq!(h[5], 1.75);
+    }
+
+    #[test]
+    fn the_person_near_a_height_is_within_a_centimetre_drawn_by_the_seed_or_the_nearest() {
+        let people: Vec<Person> = ergocell_anthropometry::ansur::people()
+            .unwrap()
+            .into_iter()
+            .filter(|p| p.split() == Split::Report)
+            .collect();
+        let near = |h: f64, seed: u64, session: usize| {
+            person_near(&people, h, seed, session).unwrap().subject_id
+        };
+        let within = people
+            .iter()
+            .filter(|p| (p.stature_m - 1.75).abs() <= 0.01)
+            .count();
+        assert!(within > 10, "{within}");
+        let mut drawn = std::collections::BTreeSet::new();
+        for seed in 301..=340 {
+            let id = near(1.75, seed, 5);
+            // the same seed and session draw the same person
+            assert_eq!(id, near(1.75, seed, 5));
+            let p = people.iter().find(|p| p.subject_id == id).unwrap();
+            assert!((p.stature_m - 1.75).abs() <= 0.01 + 1e-9, "{}", p.stature_m);
+            assert_eq!(p.split(), Split::Report);
+            drawn.insert(id);
+        }
+        // different seeds stand different people in
+        assert!(drawn.len() > 10, "{}", drawn.len());
+        // nobody within a centimetre of 2.30 m: the tallest person
+        let tallest = people
+            .iter()
+            .max_by(|a, b| a.stature_m.total_cmp(&b.stature_m))
+            .unwrap();
+        assert_eq!(near(2.30, 1, 0), tallest.subject_id);
+        assert!(person_near(&[], 1.75, 1, 0).is_none());
     }
 }

@@ -205,6 +205,15 @@ pub const ADAPTATION_MAX_AFTER: f64 = 3.0;
 /// may leave the posture cost as it was; everywhere else it must lower it.
 pub const ADAPTATION_SET_FOR_M: [f64; 2] = [1.70, 1.80];
 
+/// Names height `i` of a run in a failure: the height, and the measured person standing in for it.
+fn who(r: &Adaptation, i: usize) -> String {
+    let h = r.heights_m.get(i).copied().unwrap_or(f64::NAN);
+    match (r.subject_ids.get(i).copied().flatten(), r.statures_m.get(i)) {
+        (Some(id), Some(s)) => format!("{h:.2} m (subject {id}, {s:.3} m)"),
+        _ => format!("{h:.2} m"),
+    }
+}
+
 /// Why a run's true posture cost fails the goal: worse than before at any served height, or not
 /// lower outside [`ADAPTATION_SET_FOR_M`].
 fn cost_check(r: &Adaptation) -> Vec<String> {
@@ -225,12 +234,13 @@ fn cost_check(r: &Adaptation) -> Vec<String> {
             continue;
         }
         let outside = *h < lo - 1e-9 || *h > hi + 1e-9;
+        let at = who(r, i);
         if !b.is_finite() {
-            why.push(format!("{h:.2} m has no cost before"));
+            why.push(format!("{at} has no cost before"));
         } else if a > b {
-            why.push(format!("{h:.2} m cost worse after ({b:.3} → {a:.3})"));
+            why.push(format!("{at} cost worse after ({b:.3} → {a:.3})"));
         } else if outside && a >= b {
-            why.push(format!("{h:.2} m cost not lower after ({b:.3} → {a:.3})"));
+            why.push(format!("{at} cost not lower after ({b:.3} → {a:.3})"));
         }
     }
     why
@@ -256,18 +266,19 @@ pub fn adaptation(seeds: &[u64], runs: &[Adaptation]) -> AdaptationSeeds {
     // Served heights only (a height outside every class's validated statures is not handed over).
     let check = |r: &Adaptation, after: &[f64], before: &[f64], what: &str| -> Vec<String> {
         let mut why = Vec::new();
-        for (i, h) in r.heights_m.iter().enumerate() {
+        for i in 0..r.heights_m.len() {
             let (a, b) = (after[i], before[i]);
             if !a.is_finite() {
                 continue;
             }
+            let at = who(r, i);
             if a > ADAPTATION_MAX_AFTER {
                 why.push(format!(
-                    "{h:.2} m {what} after {a:.2} > {ADAPTATION_MAX_AFTER:.2}"
+                    "{at} {what} after {a:.2} > {ADAPTATION_MAX_AFTER:.2}"
                 ));
             }
             if a > b {
-                why.push(format!("{h:.2} m {what} worse after ({b:.2} → {a:.2})"));
+                why.push(format!("{at} {what} worse after ({b:.2} → {a:.2})"));
             }
         }
         why

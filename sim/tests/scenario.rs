@@ -264,6 +264,7 @@ fn adaptation_reports_operators_outside_the_served_statures_as_not_served() {
         &setup(1),
         &handovers(),
         &[1.40, 1.45, 1.60, 2.05, 2.10],
+        ergocell_sim::experiments::AdaptationBodies::Proportions,
         1,
         &mut none,
     )

@@ -84,6 +84,35 @@ impl Experiment {
     }
 }
 
+/// Whose bodies the adaptation experiment's operators have (`--bodies`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Bodies {
+    Proportions,
+    Measured,
+}
+
+/// The people `--bodies` stands the adaptation's operators for: ANSUR II's reporting half for
+/// `measured`, nobody for `proportions`.
+fn adaptation_people(bodies: Bodies) -> anyhow::Result<Vec<ergocell_anthropometry::ansur::Person>> {
+    Ok(match bodies {
+        Bodies::Measured => ergocell_anthropometry::ansur::people()?
+            .into_iter()
+            .filter(|p| p.split() == ergocell_anthropometry::ansur::Split::Report)
+            .collect(),
+        Bodies::Proportions => Vec::new(),
+    })
+}
+
+fn adaptation_bodies(
+    bodies: Bodies,
+    people: &[ergocell_anthropometry::ansur::Person],
+) -> experiments::AdaptationBodies<'_> {
+    match bodies {
+        Bodies::Measured => experiments::AdaptationBodies::Measured(people),
+        Bodies::Proportions => experiments::AdaptationBodies::Proportions,
+    }
+}
+
 /// Options every experiment takes.
 #[derive(Debug, clap::Args)]
 pub struct Common {
@@ -154,6 +183,12 @@ pub struct Common {
     /// cell used for everyone, set for a 1.75 m operator.
     #[arg(long, global = true, value_parser = parse_point, default_value = BEFORE_HANDOVER)]
     pub before_handover: [f64; 3],
+    /// adaptation: whose bodies the operators have: `proportions`, Drillis & Contini's proportions
+    /// at exactly the height (the robot's planning model and the paper's protocol); or `measured`,
+    /// at each height one of ANSUR II's reporting half (people never fitted) within 1 cm, drawn by
+    /// the seed: real bodies, which differ more than the seeds' habits.
+    #[arg(long, global = true, value_enum, default_value_t = Bodies::Proportions)]
+    pub bodies: Bodies,
     /// adaptation: also record an operator of this stature (metres) before and after as two session
     /// recordings, `adaptation_<h>m_before.mcap` / `_after.mcap` in `--out-dir`, for
     /// `ergocell report <before> --compare <after>`.
@@ -676,10 +711,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             (serde_json::to_value(&r)?, plot_table1(&r, &c.out_dir)?)
         }
         Experiment::Adaptation => {
+            let people = adaptation_people(c.bodies)?;
             let r = experiments::adaptation(
                 &setup,
                 &handovers,
                 &experiments::adaptation_heights(),
+                adaptation_bodies(c.bodies, &people),
                 c.cycles,
                 &mut tick,
             )?;
@@ -1005,8 +1042,16 @@ fn seeds_adaptation(
     pb: &ProgressBar,
 ) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
     let heights = experiments::adaptation_heights();
+    let people = adaptation_people(c.bodies)?;
     let runs = each(seeds, pb, |s| {
-        experiments::adaptation(&setup(s), handovers, &heights, c.cycles, &mut |_, _| {})
+        experiments::adaptation(
+            &setup(s),
+            handovers,
+            &heights,
+            adaptation_bodies(c.bodies, &people),
+            c.cycles,
+            &mut |_, _| {},
+        )
     })?;
     pb.finish_and_clear();
     let sum = seeds::adaptation(seeds, &runs);
