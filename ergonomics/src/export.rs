@@ -260,6 +260,23 @@ impl<W: Write> SummaryRows<W> {
             .map_err(|e| csv_error(&e))
     }
 
+    /// The worse side's continuous posture cost: its time-weighted mean, and the time it is known
+    /// over (no rows when it is known for no time).
+    fn posture_cost(&mut self, c: &crate::summary::PostureCostTime) -> Result<(), ErgonomicsError> {
+        let Some(mean) = c.mean() else {
+            return Ok(());
+        };
+        self.row(
+            "posture_cost_mean",
+            "worse",
+            "",
+            "",
+            &format!("{mean:.3}"),
+            "RULA points",
+        )?;
+        self.row("posture_cost_time", "worse", "", "", &secs(c.secs), "s")
+    }
+
     /// Per level: how often it started, its longest stretch, its total.
     fn exposure(
         &mut self,
@@ -363,6 +380,7 @@ pub fn write_summary<W: Write>(
         "percent of scored time",
     )?;
     r.exposure("worse", "action_level", &summary.action_level_exposure)?;
+    r.posture_cost(&summary.posture_cost)?;
     for g in &summary.grand_score {
         for (score, share) in &g.share_by_score {
             r.row(
@@ -460,6 +478,7 @@ pub fn write_summary<W: Write>(
     for p in &summary.phases {
         r.phase.clone_from(&p.phase);
         r.row("phase_duration", "", "", "", &secs(p.duration_secs), "s")?;
+        r.posture_cost(&p.posture_cost)?;
         r.row(
             "phase_time_share",
             "",

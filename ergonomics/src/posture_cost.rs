@@ -264,10 +264,101 @@ pub fn posture_cost(i: &RulaInput) -> Result<PostureCost, ErgonomicsError> {
     })
 }
 
+/// The angles of one side's five angled regions, degrees, as [`RulaInput`] holds them: what a
+/// recording keeps of a frame beside its scores.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SideAngles {
+    pub upper_arm_flexion_deg: f64,
+    pub lower_arm_flexion_deg: f64,
+    pub wrist_flexion_deg: f64,
+    pub neck_flexion_deg: f64,
+    pub trunk_flexion_deg: f64,
+}
+
+/// A side's cost from its RULA grand score and its regions' angles, where the worksheet itself is
+/// gone (a recording keeps the scores and the angles): the same value as [`PostureCost::cost`] of
+/// the worksheet they came from. `None` for a grand score outside 1..=7 or a non-finite angle.
+pub fn cost_from_angles(
+    grand_score: u8,
+    angles: &SideAngles,
+    trunk_seated_well_supported: bool,
+) -> Option<f64> {
+    if !(1..=7).contains(&grand_score) {
+        return None;
+    }
+    let fractions = [
+        (AngledRegion::UpperArm, angles.upper_arm_flexion_deg),
+        (AngledRegion::LowerArm, angles.lower_arm_flexion_deg),
+        (AngledRegion::Wrist, angles.wrist_flexion_deg),
+        (AngledRegion::Neck, angles.neck_flexion_deg),
+        (AngledRegion::Trunk, angles.trunk_flexion_deg),
+    ];
+    if fractions.iter().any(|(_, a)| !a.is_finite()) {
+        return None;
+    }
+    let sum: f64 = fractions
+        .iter()
+        .map(|&(region, a)| band_fraction(region, a, trunk_seated_well_supported))
+        .sum();
+    Some(f64::from(grand_score) + sum / fractions.len() as f64)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::rula::{lower_arm_band, neck_band, trunk_band, upper_arm_band, wrist_band};
+
+    /// What a recording keeps (the grand score and the five angles) gives the worksheet's cost.
+    #[test]
+    fn the_cost_from_recorded_angles_is_the_worksheets() {
+        let mut n = 0;
+        for ua in [-30.0, 0.0, 19.9, 20.0, 50.0, 95.0] {
+            for el in [30.0, 60.0, 85.0, 120.0] {
+                for wr in [-20.0, 0.0, 10.0, 15.0, 40.0] {
+                    for (ne, tr) in [(-5.0, 0.0), (8.0, 5.0), (25.0, 30.0), (12.0, 70.0)] {
+                        let i = RulaInput {
+                            upper_arm_flexion_deg: ua,
+                            lower_arm_flexion_deg: el,
+                            wrist_flexion_deg: wr,
+                            neck_flexion_deg: ne,
+                            trunk_flexion_deg: tr,
+                            ..RulaInput::neutral()
+                        };
+                        let c = posture_cost(&i).unwrap();
+                        let angles = SideAngles {
+                            upper_arm_flexion_deg: ua,
+                            lower_arm_flexion_deg: el,
+                            wrist_flexion_deg: wr,
+                            neck_flexion_deg: ne,
+                            trunk_flexion_deg: tr,
+                        };
+                        let again = cost_from_angles(c.grand_score, &angles, false).unwrap();
+                        assert!(
+                            (again - c.cost()).abs() < 1e-12,
+                            "{i:?}: {again} {}",
+                            c.cost()
+                        );
+                        n += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(n, 480);
+        let ok = SideAngles {
+            upper_arm_flexion_deg: 10.0,
+            lower_arm_flexion_deg: 80.0,
+            wrist_flexion_deg: 0.0,
+            neck_flexion_deg: 5.0,
+            trunk_flexion_deg: 0.0,
+        };
+        assert_eq!(cost_from_angles(0, &ok, false), None);
+        assert_eq!(cost_from_angles(8, &ok, false), None);
+        let unseen = SideAngles {
+            wrist_flexion_deg: f64::NAN,
+            ..ok
+        };
+        assert_eq!(cost_from_angles(3, &unseen, false), None);
+    }
 
     /// Every angle from −90° to 180° in tenths of a degree.
     fn sweep() -> impl Iterator<Item = f64> {

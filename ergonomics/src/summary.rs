@@ -31,13 +31,16 @@ use crate::Side;
 pub const DEFAULT_MAX_FRAME_NANOS: i64 = 1_000_000_000;
 
 /// One scored side of one frame, as the summary reads it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ScoredSide {
     pub scores: RulaScores,
     /// The score rests on low-confidence landmarks or held inputs.
     pub uncertain: bool,
     /// The side's REBA of the same frame, when there is one (a recording made before REBA has none).
     pub reba: Option<RebaBrief>,
+    /// The side's continuous posture cost ([`crate::posture_cost`]: the grand score plus how far
+    /// its angles lie into their bands), when its angles are known.
+    pub posture_cost: Option<f64>,
 }
 
 /// What the summary reads of one side's REBA.
@@ -60,6 +63,9 @@ impl From<&SideAssessment> for ScoredSide {
                 action_level: s.reba.scores.action_level,
                 uncertain: s.reba.uncertain,
             }),
+            posture_cost: crate::posture_cost::posture_cost(&s.input)
+                .ok()
+                .map(|c| c.cost()),
         }
     }
 }
@@ -163,6 +169,34 @@ pub struct SessionSummary {
     /// Trunk, neck and upper-arm postures held outside ISO 11226's acceptable zone
     /// ([`crate::static_posture`]); a part no frame observed is left out.
     pub static_postures: Vec<StaticPostureSummary>,
+    /// The headline side's continuous posture cost, time-weighted over the scored time whose
+    /// angles are known ([`PostureCostTime`]).
+    pub posture_cost: PostureCostTime,
+}
+
+/// A continuous posture cost over time: beside RULA's integer shares, how far into their bands
+/// the postures lay.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct PostureCostTime {
+    /// The time with a known cost, seconds.
+    pub secs: f64,
+    /// The cost integrated over that time, RULA points × seconds: sums over sessions divided by
+    /// the summed `secs` give their mean.
+    pub point_secs: f64,
+}
+
+impl PostureCostTime {
+    fn add(&mut self, cost: Option<f64>, dt_nanos: f64) {
+        if let Some(c) = cost {
+            self.secs += dt_nanos * 1e-9;
+            self.point_secs += c * dt_nanos * 1e-9;
+        }
+    }
+
+    /// The time-weighted mean cost; `None` without any time with a cost.
+    pub fn mean(&self) -> Option<f64> {
+        (self.secs > 0.0).then(|| self.point_secs / self.secs)
+    }
 }
 
 /// One task segment of a session: its time and its exposure.
@@ -188,6 +222,8 @@ pub struct PhaseSummary {
     pub reba_scored_secs: f64,
     /// The highest grand score (either side) in the phase; `None` when never scored.
     pub peak_grand_score: Option<u8>,
+    /// The headline side's posture cost over the segment's time with one.
+    pub posture_cost: PostureCostTime,
 }
 
 /// Everything the summary reads of one frame (see [`SummaryBuilder::push`]).
@@ -375,6 +411,7 @@ struct PhaseTally {
     reba_scored: f64,
     peak: Option<u8>,
     runs: Runs,
+    cost: PostureCostTime,
 }
 
 impl PhaseTally {
@@ -391,6 +428,7 @@ impl PhaseTally {
             Some(h) => self.level[usize::from(h.scores.action_level.clamp(1, 4) - 1)] += dt,
             None => self.unscored += dt,
         }
+        self.cost.add(head.and_then(|h| h.posture_cost), dt);
         for side in Side::BOTH {
             if let Some(s) = e.side(side) {
                 self.peak = Some(
@@ -419,6 +457,7 @@ impl PhaseTally {
             reba_action_level_share: self.reba_level.map(|x| share(x, self.reba_scored)),
             reba_scored_secs: self.reba_scored * 1e-9,
             peak_grand_score: self.peak,
+            posture_cost: self.cost,
         }
     }
 }
@@ -517,6 +556,7 @@ impl SummaryBuilder {
         let mut reba_level = [0.0; 5];
         let mut reba_scored = 0.0;
         let mut reba_runs = Runs::default();
+        let mut cost = PostureCostTime::default();
         let mut phases: Vec<(&'static str, PhaseTally)> = Vec::new();
         let mut previous_phase: Option<&'static str> = None;
         let mut previous: Option<i64> = None;
@@ -526,6 +566,7 @@ impl SummaryBuilder {
             previous = Some(e.stamp_nanos);
             let dt = dt as f64;
             let head = e.headline();
+            cost.add(head.and_then(|h| h.posture_cost), dt);
             level_runs.add(head.map(|h| h.scores.action_level.clamp(1, 4)), dt, broken);
             match head {
                 Some(h) => {
@@ -637,6 +678,7 @@ impl SummaryBuilder {
                     .collect();
                 static_postures(&angles, self.max_frame_nanos, self.trunk_supported)
             },
+            posture_cost: cost,
         }
     }
 }
@@ -658,7 +700,37 @@ mod tests {
             scores: score_worksheet(&input).unwrap().scores,
             uncertain: false,
             reba: None,
+            posture_cost: None,
         }
+    }
+
+    #[test]
+    fn the_posture_cost_is_time_weighted_over_the_frames_that_have_one() {
+        // 10 Hz: 1 s at cost 3.2, 1 s without a cost (not counted), 0.5 s at 3.8, in one phase
+        let at = |cost: Option<f64>| ScoredSide {
+            posture_cost: cost,
+            ..side(30.0, 5.0)
+        };
+        let mut b = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
+        let mut t = 0;
+        for (n, cost) in [(10, Some(3.2)), (10, None), (5, Some(3.8))] {
+            for _ in 0..n {
+                b.push(SummaryFrame {
+                    stamp_nanos: t * 100 * MS,
+                    left: Some(at(cost)),
+                    phase: Some("handover"),
+                    ..SummaryFrame::default()
+                });
+                t += 1;
+            }
+        }
+        let s = b.finish();
+        let expected = (3.2 * 1.0 + 3.8 * 0.5) / 1.5;
+        for c in [s.posture_cost, s.phases[0].posture_cost] {
+            assert!((c.secs - 1.5).abs() < 1e-9, "{c:?}");
+            assert!((c.mean().unwrap() - expected).abs() < 1e-9, "{c:?}");
+        }
+        assert_eq!(PostureCostTime::default().mean(), None);
     }
 
     #[test]

@@ -19,6 +19,7 @@ use ergocell_bridge::msg::{
     ControllerEvent, ErgonomicState, JointTrajectory, RebaSide, RebaState, RulaSide, SessionState,
 };
 use ergocell_ergonomics::assess::BodyRegion;
+use ergocell_ergonomics::posture_cost::{cost_from_angles, SideAngles};
 use ergocell_ergonomics::rula::{RulaScores, GRAND_SCORE_MAX};
 use ergocell_ergonomics::summary::{
     Exposure, GrandScoreShare, RebaBrief, RegionShare, ScoredSide, SessionSummary, SummaryBuilder,
@@ -359,6 +360,8 @@ pub(crate) fn scored_side(s: &RulaSide, reba: Option<&RebaSide>) -> Option<Score
         },
         uncertain: s.uncertain,
         reba,
+        // from the frame's pose, where [`summarise`] has it
+        posture_cost: None,
     })
 }
 
@@ -704,10 +707,20 @@ pub(crate) fn summarise(
     let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS);
     for (t, f) in frames {
         let facts = facts_at(t);
+        // The recording keeps each side's scores and the angles they were scored from: the cost
+        // of the worksheet they came from.
+        let with_cost = |side: Option<ScoredSide>, angles: Option<SideAngles>| {
+            side.map(|s| ScoredSide {
+                posture_cost: s.posture_cost.or_else(|| {
+                    angles.and_then(|a| cost_from_angles(s.scores.final_score, &a, false))
+                }),
+                ..s
+            })
+        };
         summary.push(SummaryFrame {
             stamp_nanos: f.stamp_nanos,
-            left: f.left,
-            right: f.right,
+            left: with_cost(f.left, facts.side_angles[0]),
+            right: with_cost(f.right, facts.side_angles[1]),
             phase: facts.phase,
             trunk_flexion_rad: facts.trunk_flexion_rad,
             neck_flexion_rad: facts.neck_flexion_rad,
@@ -737,6 +750,16 @@ pub(crate) fn frame_facts(
             angle("left_upper_arm_elevation"),
             angle("right_upper_arm_elevation"),
         ],
+        side_angles: ["left", "right"].map(|side| {
+            let deg = |name: &str| angle(name).map(f64::to_degrees);
+            Some(SideAngles {
+                upper_arm_flexion_deg: deg(&format!("{side}_upper_arm_flexion"))?,
+                lower_arm_flexion_deg: deg(&format!("{side}_elbow_flexion"))?,
+                wrist_flexion_deg: deg(&format!("{side}_wrist_flexion"))?,
+                neck_flexion_deg: deg("neck_flexion")?,
+                trunk_flexion_deg: deg("trunk_flexion")?,
+            })
+        }),
     }
 }
 
@@ -747,6 +770,9 @@ pub(crate) struct FrameFacts {
     pub(crate) trunk_flexion_rad: Option<f64>,
     pub(crate) neck_flexion_rad: Option<f64>,
     pub(crate) upper_arm_elevation_rad: [Option<f64>; 2],
+    /// Each side's five angled regions as RULA scored them (left, right), for the posture cost;
+    /// `None` where one of them was not observed.
+    pub(crate) side_angles: [Option<SideAngles>; 2],
 }
 
 /// The task segment names of the review, in precedence order: walking and floor pick from the
@@ -1282,6 +1308,74 @@ mod tests {
             action_level: ergocell_ergonomics::rula::action_level(final_score),
             ..RulaSide::default()
         }
+    }
+
+    #[test]
+    fn the_summary_costs_a_recorded_side_from_the_angles_it_was_scored_from() {
+        // 10 frames at 10 Hz: the right side (grand 3) has its angles recorded in the first five
+        // only; the left (grand 2) in all. The headline is the right side, so the cost is known
+        // for the first 0.5 s (its fifth interval ends at the sixth frame).
+        let angles = SideAngles {
+            upper_arm_flexion_deg: 30.0,
+            lower_arm_flexion_deg: 85.0,
+            wrist_flexion_deg: 10.0,
+            neck_flexion_deg: 12.0,
+            trunk_flexion_deg: 5.0,
+        };
+        let pose = |k: u64| ergocell_bridge::msg::OperatorPose {
+            angle_names: [
+                "left_upper_arm_flexion",
+                "left_elbow_flexion",
+                "left_wrist_flexion",
+                "right_upper_arm_flexion",
+                "right_elbow_flexion",
+                "right_wrist_flexion",
+                "neck_flexion",
+                "trunk_flexion",
+            ]
+            .map(str::to_owned)
+            .to_vec(),
+            angle_rad: [
+                30.0,
+                85.0,
+                10.0,
+                if k < 5 { 30.0 } else { f64::NAN },
+                85.0,
+                10.0,
+                12.0,
+                5.0,
+            ]
+            .map(f64::to_radians)
+            .to_vec(),
+            ..ergocell_bridge::msg::OperatorPose::default()
+        };
+        let facts: Vec<FrameFacts> = (0..10).map(|k| frame_facts(&pose(k), None)).collect();
+        for side in facts[0].side_angles {
+            let got = side.unwrap();
+            assert!((got.upper_arm_flexion_deg - 30.0).abs() < 1e-9, "{got:?}");
+            assert!((got.lower_arm_flexion_deg - 85.0).abs() < 1e-9, "{got:?}");
+            assert!((got.neck_flexion_deg - 12.0).abs() < 1e-9, "{got:?}");
+        }
+        assert_eq!(facts[7].side_angles[1], None);
+        let summary = summarise(
+            (0..10u64).map(|k| {
+                let stamp = i64::try_from(k).unwrap() * 100_000_000;
+                (
+                    k,
+                    ScoredFrame {
+                        stamp_nanos: stamp,
+                        left: scored_side(&side_at(2, 2), None),
+                        right: scored_side(&side_at(3, 3), None),
+                    },
+                )
+            }),
+            |t| facts[usize::try_from(t).unwrap()],
+        );
+        let expected = cost_from_angles(3, &angles, false).unwrap();
+        assert!(expected > 3.0 && expected < 4.0, "{expected}");
+        let c = summary.posture_cost;
+        assert!((c.mean().unwrap() - expected).abs() < 1e-9, "{c:?}");
+        assert!((c.secs - 0.5).abs() < 1e-9, "{c:?}");
     }
 
     #[test]

@@ -74,6 +74,11 @@ pub struct SegmentRow {
     pub rula_al3_longest_s: f64,
     /// The highest grand score (either side); 0 when never scored.
     pub peak_grand_score: u8,
+    /// RULA-scored time whose continuous posture cost is known (the worse side's angles recorded),
+    /// seconds, and the cost integrated over it (RULA points × seconds): summed over any group and
+    /// divided, their mean.
+    pub posture_cost_s: f64,
+    pub posture_cost_point_s: f64,
     /// ISO 11226 static holds (trunk, neck, upper arms) and of them those ISO 11226 does not accept;
     /// whole sessions only (0 in a segment's row).
     pub static_holds: u32,
@@ -115,7 +120,8 @@ fn rows_of(
                reba_scored_s: f64,
                reba: [f64; 5],
                longest: f64,
-               peak: u8| {
+               peak: u8,
+               cost: ergocell_ergonomics::summary::PostureCostTime| {
         let scored = duration_s * (1.0 - unscored_share);
         SegmentRow {
             operator: s.operator.clone(),
@@ -133,6 +139,8 @@ fn rows_of(
             reba_al_s: reba.map(|x| x * reba_scored_s),
             rula_al3_longest_s: longest,
             peak_grand_score: peak,
+            posture_cost_s: cost.secs,
+            posture_cost_point_s: cost.point_secs,
             static_holds: 0,
             static_holds_exceeded: 0,
             parts_taken: 0,
@@ -153,6 +161,7 @@ fn rows_of(
         summary.reba_action_level_share,
         al3_longest(&summary.action_level_exposure),
         peak,
+        summary.posture_cost,
     );
     let count = |f: fn(&ergocell_ergonomics::static_posture::StaticPostureSummary) -> usize| {
         u32::try_from(summary.static_postures.iter().map(f).sum::<usize>()).unwrap_or(u32::MAX)
@@ -171,6 +180,7 @@ fn rows_of(
             p.reba_action_level_share,
             al3_longest(&p.action_level_exposure),
             p.peak_grand_score.unwrap_or(0),
+            p.posture_cost,
         ));
     }
     rows
@@ -461,12 +471,19 @@ pub struct ExposureRow {
     pub reba_al_s: [f64; 5],
     pub rula_al3_longest_s: f64,
     pub peak_grand_score: u8,
+    pub posture_cost_s: f64,
+    pub posture_cost_point_s: f64,
     pub static_holds: u32,
     pub static_holds_exceeded: u32,
     pub parts_taken: u32,
 }
 
 impl ExposureRow {
+    /// The time-weighted mean posture cost of the worse side; `None` when never known.
+    pub fn mean_posture_cost(&self) -> Option<f64> {
+        (self.posture_cost_s > 0.0).then(|| self.posture_cost_point_s / self.posture_cost_s)
+    }
+
     fn add(&mut self, r: &SegmentRow) {
         self.sessions += 1;
         self.duration_s += r.duration_s;
@@ -480,6 +497,8 @@ impl ExposureRow {
         }
         self.rula_al3_longest_s = self.rula_al3_longest_s.max(r.rula_al3_longest_s);
         self.peak_grand_score = self.peak_grand_score.max(r.peak_grand_score);
+        self.posture_cost_s += r.posture_cost_s;
+        self.posture_cost_point_s += r.posture_cost_point_s;
         self.static_holds += r.static_holds;
         self.static_holds_exceeded += r.static_holds_exceeded;
         self.parts_taken += r.parts_taken;
@@ -560,7 +579,7 @@ pub fn page(table: &ExposureTable, sources: usize, sessions: u32) -> String {
     };
     let row = |g: &ExposureRow, first: &str| {
         format!(
-            "<tr><th>{}</th><td class=\"num\">{}</td><td class=\"num\">{:.2}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{:.0}</td><td class=\"num\">{}</td><td class=\"num\">{} ({})</td><td class=\"num\">{}</td></tr>",
+            "<tr><th>{}</th><td class=\"num\">{}</td><td class=\"num\">{:.2}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{:.0}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{} ({})</td><td class=\"num\">{}</td></tr>",
             esc(first),
             g.sessions,
             g.duration_s / 3600.0,
@@ -569,12 +588,13 @@ pub fn page(table: &ExposureTable, sources: usize, sessions: u32) -> String {
             pct(g.reba_share(3)),
             g.rula_al3_longest_s,
             g.peak_grand_score,
+            g.mean_posture_cost().map_or_else(|| "–".to_owned(), |c| format!("{c:.3}")),
             g.static_holds,
             g.static_holds_exceeded,
             g.parts_taken
         )
     };
-    let head = "<tr><th></th><th>sessions</th><th>hours</th><th>RULA action level 1 · 2 · 3 · 4</th><th>RULA AL ≥ 3</th><th>REBA AL ≥ 3</th><th>longest AL ≥ 3, s</th><th>peak grand score</th><th>static holds (exceeded)</th><th>parts</th></tr>";
+    let head = "<tr><th></th><th>sessions</th><th>hours</th><th>RULA action level 1 · 2 · 3 · 4</th><th>RULA AL ≥ 3</th><th>REBA AL ≥ 3</th><th>longest AL ≥ 3, s</th><th>peak grand score</th><th>mean posture cost</th><th>static holds (exceeded)</th><th>parts</th></tr>";
     let mut body = String::new();
     let operators: BTreeSet<&str> = table.groups.keys().map(|k| k.operator.as_str()).collect();
     for op in operators {
@@ -660,6 +680,9 @@ mod tests {
             reba_al_s: [0.0; 5],
             rula_al3_longest_s: al[2],
             peak_grand_score: 5,
+            // a cost of 3 plus the share at action level 3
+            posture_cost_s: scored,
+            posture_cost_point_s: 3.0 * scored + al[2],
             static_holds: 1,
             static_holds_exceeded: 0,
             parts_taken: 3,
@@ -713,5 +736,8 @@ mod tests {
         // op-1: two days and one week, each for c2 and all; op-2: one day and one week.
         assert_eq!(t.groups.len(), (2 + 1) * 2 + (1 + 1) * 2);
         assert_eq!(ExposureRow::default().rula_share(1), None);
+        // the mean cost is time-weighted: (4.0 × 10 s + 3.0 × 100 s) / 110 s, not (4 + 3) / 2
+        assert!((w.mean_posture_cost().unwrap() - 340.0 / 110.0).abs() < 1e-12);
+        assert_eq!(ExposureRow::default().mean_posture_cost(), None);
     }
 }

@@ -407,6 +407,7 @@ mod tests {
                 scores: scores(trunk, neck, 2, 3),
                 uncertain: false,
                 reba: None,
+                posture_cost: None,
             };
             b.add_scores(k * 100_000_000, Some(side), None);
         }
@@ -459,6 +460,7 @@ mod tests {
                 scores: scores(1, 1, 2, 3),
                 uncertain: false,
                 reba: None,
+                posture_cost: None,
             };
             b.add_scores(k * 100_000_000, None, Some(side));
         }
@@ -550,6 +552,7 @@ mod tests {
                     scores: s,
                     uncertain: false,
                     reba: None,
+                    posture_cost: None,
                 }),
                 None,
             );

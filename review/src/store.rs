@@ -47,6 +47,8 @@ pub const SCHEMA: &str = "message ergocell_exposure_segments {
   REQUIRED INT32 static_holds;
   REQUIRED INT32 static_holds_exceeded;
   REQUIRED INT32 parts_taken;
+  REQUIRED DOUBLE posture_cost_s;
+  REQUIRED DOUBLE posture_cost_point_s;
 }";
 
 /// The store could not be written.
@@ -126,6 +128,8 @@ fn columns(rows: &[SegmentRow]) -> Result<Vec<Column>, StoreError> {
         int32(&|r| int(r.static_holds)),
         int32(&|r| int(r.static_holds_exceeded)),
         int32(&|r| int(r.parts_taken)),
+        double(&|r| r.posture_cost_s),
+        double(&|r| r.posture_cost_point_s),
     ]);
     Ok(out)
 }
@@ -205,6 +209,8 @@ mod tests {
             reba_al_s: [0.0, scored, 0.0, 0.0, 0.0],
             rula_al3_longest_s: 2.5,
             peak_grand_score: 5,
+            posture_cost_s: 60.0,
+            posture_cost_point_s: 190.0,
             static_holds: 3,
             static_holds_exceeded: 1,
             parts_taken: 4,

@@ -669,12 +669,7 @@ pub enum AdaptationBodies<'a> {
 
 /// The person of `people` standing in for `height_m` in session `session` of `seed`: one of those
 /// within 1 cm, drawn by the session's seed; the nearest when none is. `None` for no people.
-pub fn person_near(
-    people: &[Person],
-    height_m: f64,
-    seed: u64,
-    session: usize,
-) -> Option<&Person> {
+pub fn person_near(people: &[Person], height_m: f64, seed: u64, session: usize) -> Option<&Person> {
     let near: Vec<&Person> = people
         .iter()
         .filter(|p| (p.stature_m - height_m).abs() <= 0.01 + 1e-9)

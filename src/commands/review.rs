@@ -384,7 +384,7 @@ fn summary(data: &ReviewData) -> String {
         .iter()
         .map(|s| {
             format!(
-                "{}: {} frames over {:.1} s{}, {} warnings, height {}, class {}{}{}",
+                "{}: {} frames over {:.1} s{}, {} warnings{}, height {}, class {}{}{}",
                 s.label,
                 s.overview
                     .as_ref()
@@ -398,6 +398,10 @@ fn summary(data: &ReviewData) -> String {
                     .iter()
                     .filter(|w| w.kind == ergocell_bridge::msg::PostureWarning::RAISED)
                     .count(),
+                s.summary
+                    .posture_cost
+                    .mean()
+                    .map_or(String::new(), |c| format!(", mean posture cost {c:.3}")),
                 s.facts
                     .height_m
                     .map_or("not measured".to_owned(), |h| format!("{h:.3} m")),

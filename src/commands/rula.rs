@@ -417,6 +417,13 @@ fn print_track_summary(
             share * 100.0
         );
     }
+    if let Some(cost) = s.posture_cost.mean() {
+        println!(
+            "posture cost beside RULA (worse side, the grand score plus how far the angles lie into \
+             their bands): mean {cost:.3} over {:.1} s",
+            s.posture_cost.secs
+        );
+    }
     if !s.reba_score.is_empty() {
         println!("REBA beside RULA: time share per REBA action level (worse side):");
         for (level, share) in s.reba_action_level_share.iter().enumerate() {
