@@ -2,7 +2,7 @@
 # The exposure store queried as an ergonomist would: DuckDB's Python wheel (PyPI; no server, no engine
 # compiled here) runs SQL over `ergocell exposure`'s sessions.parquet. Four demo shifts of two operators
 # over two ISO weeks; the SQL's weekly share of RULA-scored time at action level 3 or more per operator,
-# its daily hours and its parts taken must equal exposure.csv's own numbers, and the store's schema must
+# its mean posture cost, its daily hours and its parts taken must equal exposure.csv's own numbers, and the store's schema must
 # be what the docs promise (no landmark, angle or name column).
 # Usage: .ci/duckdb.sh target/release/ergocell [venv folder]
 set -euo pipefail
@@ -47,7 +47,8 @@ check(not any(w in c for c in cols for w in ("angle", "landmark", "name")),
 weekly = duckdb.sql(f"""
     SELECT operator, week, count(*) AS sessions,
            sum(rula_al3_s + rula_al4_s) / sum(rula_scored_s) AS al3plus,
-           sum(parts_taken) AS parts
+           sum(parts_taken) AS parts,
+           sum(posture_cost_point_s) / sum(posture_cost_s) AS cost
     FROM '{store}' WHERE segment = 'all'
     GROUP BY operator, week ORDER BY operator, week""").fetchall()
 print("SQL, weekly action level 3+ share per operator:")
@@ -55,12 +56,13 @@ for row in weekly:
     print("    ", row)
 mine = ours("week")
 check(len(weekly) == 3 and len(weekly) == len(mine), f"3 operator-weeks in both ({len(weekly)} in SQL, {len(mine)} in exposure.csv)")
-for op, week, n, share, parts in weekly:
+for op, week, n, share, parts, cost in weekly:
     g = mine.get((op, week))
     same = g is not None and int(g["sessions"]) == n and abs(float(g["rula_al3plus_share"]) - share) < 1e-12 \
-        and int(g["parts_taken"]) == parts
-    check(same, f"{op} {week}: {n} session(s), AL3+ {share:.6f}, {parts} parts — exposure.csv says "
-          + (f"{g['sessions']}, {float(g['rula_al3plus_share']):.6f}, {g['parts_taken']}" if g else "nothing"))
+        and int(g["parts_taken"]) == parts and 1.0 <= cost < 8.0 \
+        and abs(float(g["mean_posture_cost"]) - cost) < 1e-9
+    check(same, f"{op} {week}: {n} session(s), AL3+ {share:.6f}, {parts} parts, mean posture cost {cost:.4f} — exposure.csv says "
+          + (f"{g['sessions']}, {float(g['rula_al3plus_share']):.6f}, {g['parts_taken']}, {g['mean_posture_cost']}" if g else "nothing"))
 daily = duckdb.sql(f"""
     SELECT operator, strftime(day, '%Y-%m-%d'), sum(duration_s) / 3600
     FROM '{store}' WHERE segment = 'all' GROUP BY ALL""").fetchall()

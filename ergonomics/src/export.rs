@@ -343,9 +343,12 @@ fn secs(v: f64) -> String {
 /// (`reba_score_share`) when the frames carry REBA, ISO 11226's static postures per body part
 /// (`static_holds`, `static_holds_exceeding_iso11226`, `static_holds_limit_unknown`,
 /// `longest_static_hold`, `static_hold_time`; the upper arms by side),
-/// and the warnings raised per region ([`raised_per_region`]). Then per task segment (`phase` its
-/// name): `phase_duration`, `phase_time_share`, `phase_episodes`, `phase_unscored_share`,
-/// `phase_peak_grand_score`, its action level shares and exposure and its REBA action level shares.
+/// the worse side's mean posture cost and the time it is known over (`posture_cost_mean`,
+/// `posture_cost_time`, after the action levels' exposure; none when never known), and the warnings
+/// raised per region ([`raised_per_region`]). Then per task segment (`phase` its name):
+/// `phase_duration`, its `posture_cost_mean` and `posture_cost_time`, `phase_time_share`,
+/// `phase_episodes`, `phase_unscored_share`, `phase_peak_grand_score`, its action level shares and
+/// exposure and its REBA action level shares.
 pub fn write_summary<W: Write>(
     out: W,
     summary: &SessionSummary,
@@ -380,6 +383,7 @@ pub fn write_summary<W: Write>(
         "percent of scored time",
     )?;
     r.exposure("worse", "action_level", &summary.action_level_exposure)?;
+    // the worse side's posture cost beside RULA's levels
     r.posture_cost(&summary.posture_cost)?;
     for g in &summary.grand_score {
         for (score, share) in &g.share_by_score {

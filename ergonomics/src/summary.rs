@@ -63,11 +63,33 @@ impl From<&SideAssessment> for ScoredSide {
                 action_level: s.reba.scores.action_level,
                 uncertain: s.reba.uncertain,
             }),
-            posture_cost: crate::posture_cost::posture_cost(&s.input)
-                .ok()
-                .map(|c| c.cost()),
+            posture_cost: observed_cost(s),
         }
     }
+}
+
+/// The side's posture cost when its five angles were observed in this frame (not held, not the
+/// conservative wrist): the same frames a recording can cost from the angles it kept
+/// ([`crate::posture_cost::cost_from_angles`]), so `rula track` and the review agree.
+fn observed_cost(s: &SideAssessment) -> Option<f64> {
+    const ANGLES: [&str; 5] = [
+        "upper_arm_flexion_deg",
+        "lower_arm_flexion_deg",
+        "wrist_flexion_deg",
+        "neck_flexion_deg",
+        "trunk_flexion_deg",
+    ];
+    let observed = ANGLES.iter().all(|name| {
+        s.sources
+            .iter()
+            .any(|(n, src)| n == name && *src == crate::assess::InputSource::Observed)
+    });
+    if !observed {
+        return None;
+    }
+    crate::posture_cost::posture_cost(&s.input)
+        .ok()
+        .map(|c| c.cost())
 }
 
 /// How a score at or above a level was held over time: how often it started, its longest unbroken

@@ -712,6 +712,8 @@ pub(crate) fn summarise(
         let with_cost = |side: Option<ScoredSide>, angles: Option<SideAngles>| {
             side.map(|s| ScoredSide {
                 posture_cost: s.posture_cost.or_else(|| {
+                    // The cell has no seated task setting: the trunk is never "seated, well
+                    // supported" in a recording (record the flag if one is added).
                     angles.and_then(|a| cost_from_angles(s.scores.final_score, &a, false))
                 }),
                 ..s

@@ -250,6 +250,8 @@ mod tests {
         assert_eq!(get(0, "rula_al3_s"), Field::Double(25.0));
         assert_eq!(get(1, "reba_al1_s"), Field::Double(40.0));
         assert_eq!(get(0, "parts_taken"), Field::Int(4));
+        assert_eq!(get(0, "posture_cost_s"), Field::Double(60.0));
+        assert_eq!(get(0, "posture_cost_point_s"), Field::Double(190.0));
         let columns = reader
             .metadata()
             .file_metadata()

@@ -241,11 +241,14 @@ pub struct Requirements {
 }
 
 /// The habits a requirement is checked with: the model's own and the four corners of the trunk's
-/// lean and the wrists' flexion at ±2σ. The twin draws each session's habits within ±2σ
+/// lean and the wrists' flexion at ±1.99σ. The twin draws each session's habits within ±2σ
 /// ([`crate::SessionScript`]), and each seed is judged alone: a point that beats the single point
 /// only on average habits loses to it in some sessions. (The head's flexion is already expected
 /// over in [`hold_cost`].)
 pub fn habit_corners(h: &Habits) -> [Habits; 5] {
+    // Just inside ±2σ: the default habits' −2σ is exactly 0° for the trunk and the wrists, RULA's
+    // band edges, where a corner's band would come down to rounding.
+    const K: f64 = 1.99;
     let at = |(m, s): (f64, f64), k: f64| (m + k * s, s);
     let corner = |t: f64, w: f64| Habits {
         trunk_flexion_rad: at(h.trunk_flexion_rad, t),
@@ -254,10 +257,10 @@ pub fn habit_corners(h: &Habits) -> [Habits; 5] {
     };
     [
         *h,
-        corner(-2.0, -2.0),
-        corner(-2.0, 2.0),
-        corner(2.0, -2.0),
-        corner(2.0, 2.0),
+        corner(-K, -K),
+        corner(-K, K),
+        corner(K, -K),
+        corner(K, K),
     ]
 }
 
@@ -683,26 +686,38 @@ mod tests {
             assert_eq!((c.trunk_flexion_rad.1, c.wrist_flexion_rad.1), (t.1, w.1));
             let kt = ((c.trunk_flexion_rad.0 - t.0) / t.1).round() as i32;
             let kw = ((c.wrist_flexion_rad.0 - w.0) / w.1).round() as i32;
-            assert!((c.trunk_flexion_rad.0 - t.0 - f64::from(kt) * t.1).abs() < 1e-12);
+            for (x, (m, sd)) in [(c.trunk_flexion_rad.0, t), (c.wrist_flexion_rad.0, w)] {
+                assert!((((x - m) / sd).abs() - 1.99).abs() < 1e-9, "{x} {m} {sd}");
+            }
             seen.push((kt, kw));
         }
         seen.sort_unstable();
         assert_eq!(seen, vec![(-2, -2), (-2, 2), (2, -2), (2, 2)]);
+        // never exactly on the 0° edges the default habits' −2σ would reach
+        assert!(corners[1..]
+            .iter()
+            .all(|c| c.trunk_flexion_rad.0 > 0.0 && c.wrist_flexion_rad.0 > 0.0));
     }
 
     #[test]
-    fn the_single_point_meets_a_margin_of_zero_against_itself_at_every_corner() {
-        // what lets c2 keep the unadapted cell's point: equal is not worse
+    fn shortfalls_hold_equal_as_not_worse_and_name_the_first_failure() {
         let p = [0.41, -0.10, 1.055];
-        let req = Requirements {
+        let against_itself = |margin: f64| Requirements {
             before: Some(p),
-            margin: 0.0,
+            margin,
             grand_ceiling: 7.0,
         };
+        let statures = [1.82, 1.68];
+        // equal at every stature and corner is not worse
         assert_eq!(
-            shortfalls(p, &req, &[1.68, 1.75, 1.82], &model(0.01)).unwrap(),
+            shortfalls(p, &against_itself(0.0), &statures, &model(0.01)).unwrap(),
             None
         );
+        // any margin refuses it: at the first stature given, on the model's own habits first
+        let why = shortfalls(p, &against_itself(0.001), &statures, &model(0.01))
+            .unwrap()
+            .unwrap();
+        assert!(why.starts_with("1.82 m: posture cost (repeated)"), "{why}");
     }
 
     #[test]

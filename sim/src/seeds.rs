@@ -233,7 +233,9 @@ fn cost_check(r: &Adaptation) -> Vec<String> {
         if !a.is_finite() {
             continue;
         }
-        let outside = *h < lo - 1e-9 || *h > hi + 1e-9;
+        // The operator's own stature (a measured person's may lie up to 1 cm from the height).
+        let s = r.statures_m.get(i).copied().unwrap_or(*h);
+        let outside = s < lo - 1e-9 || s > hi + 1e-9;
         let at = who(r, i);
         if !b.is_finite() {
             why.push(format!("{at} has no cost before"));

@@ -128,11 +128,12 @@ struct SessionCsv<'a> {
     reba_al4_s: f64,
     rula_al3_longest_s: f64,
     peak_grand_score: u8,
-    posture_cost_s: f64,
-    posture_cost_point_s: f64,
     static_holds: u32,
     static_holds_exceeded: u32,
     parts_taken: u32,
+    // last, as in the Parquet store
+    posture_cost_s: f64,
+    posture_cost_point_s: f64,
 }
 
 impl<'a> From<&'a SegmentRow> for SessionCsv<'a> {

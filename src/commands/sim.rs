@@ -186,7 +186,8 @@ pub struct Common {
     /// adaptation: whose bodies the operators have: `proportions`, Drillis & Contini's proportions
     /// at exactly the height (the robot's planning model and the paper's protocol); or `measured`,
     /// at each height one of ANSUR II's reporting half (people never fitted) within 1 cm, drawn by
-    /// the seed: real bodies, which differ more than the seeds' habits.
+    /// the seed: real bodies, which differ more than the seeds' habits. Only `adaptation` reads it;
+    /// `--record-height` records an operator of the proportions.
     #[arg(long, global = true, value_enum, default_value_t = Bodies::Proportions)]
     pub bodies: Bodies,
     /// adaptation: also record an operator of this stature (metres) before and after as two session

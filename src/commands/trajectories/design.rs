@@ -134,27 +134,27 @@ pub(super) fn design(
     // its agreement with the truth are judged on these readings, and a point on the band edges
     // that move the grand score makes them disagree however good the posture).
     let mut hand_set_misread: f64 = 0.0;
+    let mut fitted = Vec::new();
     for (class, _, spec, _) in &specs {
         let fit = fitting_people(&people, *class, spec, &thresholds, sample)?;
         let h = &spec.handover;
-        let hand_set = design::rank(&fit, &[[h.forward_m, h.lateral_m, h.height_m]], &model)?;
-        hand_set_misread = hand_set_misread.max(hand_set[0].mean_misread);
+        let hand_set = design::rank(&fit, &[[h.forward_m, h.lateral_m, h.height_m]], &model)?[0];
+        hand_set_misread = hand_set_misread.max(hand_set.mean_misread);
+        fitted.push((fit, hand_set));
     }
     let mut designs = Vec::new();
-    for (class, _, spec, hashes) in &specs {
+    for ((class, _, spec, hashes), (fit, hand_set)) in specs.iter().zip(fitted) {
         // c1's and c3's points must improve on the unadapted cell's one point (the paper's
         // "before", set for a 1.75 m operator: the twin's `--before-handover`) for every stature
         // they serve, at every corner of the habits. c2 is the class that point was set for, and
         // its point is chosen freely: held to that requirement (Drillis & Contini's proportions
-        // at 1.68-1.69 m refuse every cheaper candidate) it keeps the single point itself, which
+        // at 1.68-1.75 m refuse every cheaper candidate) it keeps the single point itself, which
         // costs the class's measured people more than today's hand-set point and is misread
         // twice as often.
         let before = (*class != TrajectoryClass::C2).then_some(before_handover);
         let in_class = |h: f64| serves(*class, spec, &thresholds, h);
-        let fit = fitting_people(&people, *class, spec, &thresholds, sample)?;
         let band = class_band(spec.stature.min_m, spec.stature.max_m);
         let h = &spec.handover;
-        let hand_set = design::rank(&fit, &[[h.forward_m, h.lateral_m, h.height_m]], &model)?;
         let readable = |c: &CandidateCost| c.mean_misread <= hand_set_misread + 1e-12;
         let ranked = design::search(
             &fit,
@@ -221,7 +221,7 @@ pub(super) fn design(
             fit_people: fit.len(),
             candidates: ranked.len() + unreadable.len(),
             step_m,
-            hand_set: hand_set[0],
+            hand_set,
             harder_to_read,
             choice,
         });
@@ -358,7 +358,9 @@ fn with_handover(text: &str, c: &ClassDesign, chosen: &CandidateCost) -> anyhow:
     let [f, l, z] = chosen.station_m;
     let hs = c.hand_set.station_m;
     let requirement = if c.class == TrajectoryClass::C2 {
-        "the class the unadapted cell's one point was set for, compared with it only in the report"
+        "the class the unadapted cell's one point was set for, compared with it only in the report, \
+         so the twin's per-stature comparison may find it costlier than that point at some \
+         statures"
     } else {
         "a lower cost, by the margin, and no higher RULA than at the unadapted cell's one point"
     };
