@@ -69,9 +69,17 @@ await main(async (b) => {
   for (const want of ['walking', 'floor pick', 'handover']) {
     if (!phases.includes(want)) fail(`the task segments table has no "${want}" row: ${JSON.stringify(phases)}`);
   }
+  // the posture cost beside RULA: a number of RULA points per segment, the floor pick's above the
+  // handover's (a bent trunk against a hand at elbow height)
+  const costs = Object.fromEntries(await page.$$eval('#segments tr[data-phase]', (trs) =>
+    trs.map((t) => [t.getAttribute('data-phase'), Number(t.querySelector('td.posture-cost')?.textContent)])));
+  for (const want of ['walking', 'floor pick', 'handover']) {
+    if (!(costs[want] >= 1 && costs[want] < 8)) fail(`the ${want} row's posture cost is not a RULA-points number: ${JSON.stringify(costs)}`);
+  }
+  if (!(costs['floor pick'] > costs.handover)) fail(`the floor pick's posture cost is not above the handover's: ${JSON.stringify(costs)}`);
   const parts = await page.$$eval('#segments tr[data-part]', (trs) => trs.map((t) => t.getAttribute('data-part')));
   if (parts.join() !== 'trunk,neck,left_upper_arm,right_upper_arm') fail(`the static postures table lists ${JSON.stringify(parts)}, not trunk, neck and both upper arms`);
-  pass(`REBA and action level rows in the regions table; task segments ${phases.join(', ')}; static postures of ${parts.join(', ')}`);
+  pass(`REBA and action level rows in the regions table; task segments ${phases.join(', ')} (posture cost ${JSON.stringify(costs)}); static postures of ${parts.join(', ')}`);
 
   // 6. the height class with the decision's probability, expected RULA cost and basis (the demo's
   // operator stands 1 cm above the c1/c2 boundary).

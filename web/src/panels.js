@@ -291,6 +291,14 @@ function holdText(h) {
   return `${fmt(h.duration_secs, 1)} s, longer than the ${fmt(h.limit_secs, 0)} s allowed at its largest angle (up to ${fmt(h.peak_deg, 0)}°)`;
 }
 
+/** What the posture cost column holds, in words. */
+const COST_TITLE = "the worse side's RULA grand score plus how far its angles lie into their bands, time-weighted over the frames whose angles were all observed";
+
+/** A summary's time-weighted mean posture cost (`PostureCostTime`), or a dash when never known. */
+function meanCost(c) {
+  return c && c.secs > 0 ? fmt(c.point_secs / c.secs, 3) : '–';
+}
+
 /**
  * Exposure by task segment (walking, floor pick, handover, in place) and ISO 11226's static
  * postures, from the session summary (one session; a comparison shows the first).
@@ -310,10 +318,11 @@ export function renderSegments(el, sessions) {
       .map((p) => {
         const e3 = (p.action_level_exposure || []).find((x) => x.at_least === 3);
         const stretch = e3 && e3.episodes > 0 ? `${e3.episodes}× · longest ${fmt(e3.longest_secs, 1)} s` : '<span class="muted">–</span>';
-        return `<tr data-phase="${esc(p.phase)}"><th>${esc(titleCase(p.phase))}</th><td class="num">${fmt(p.duration_secs, 1)} s</td><td class="num">${fmt(p.time_share * 100, 1)} %</td><td class="num">${esc(p.episodes)}</td><td>${levelBar(p.action_level_share, 1, 'action level')}</td><td class="small">${stretch}</td>${hasReba ? `<td>${levelBar(p.reba_action_level_share, 0, 'REBA action level')}</td>` : ''}<td class="num">${p.peak_grand_score ?? '–'}</td></tr>`;
+        return `<tr data-phase="${esc(p.phase)}"><th>${esc(titleCase(p.phase))}</th><td class="num">${fmt(p.duration_secs, 1)} s</td><td class="num">${fmt(p.time_share * 100, 1)} %</td><td class="num">${esc(p.episodes)}</td><td>${levelBar(p.action_level_share, 1, 'action level')}</td><td class="small">${stretch}</td>${hasReba ? `<td>${levelBar(p.reba_action_level_share, 0, 'REBA action level')}</td>` : ''}<td class="num">${p.peak_grand_score ?? '–'}</td><td class="num posture-cost">${meanCost(p.posture_cost)}</td></tr>`;
       })
       .join('');
-    html += `<table class="regions segments"><thead><tr><th>Segment</th><th class="num">time</th><th class="num">share</th><th class="num">episodes</th><th>RULA action level 1–4</th><th>at level ≥ 3</th>${hasReba ? '<th>REBA action level 0–4</th>' : ''}<th class="num">peak grand</th></tr></thead><tbody>${rows}</tbody></table>`;
+    html += `<table class="regions segments"><thead><tr><th>Segment</th><th class="num">time</th><th class="num">share</th><th class="num">episodes</th><th>RULA action level 1–4</th><th>at level ≥ 3</th>${hasReba ? '<th>REBA action level 0–4</th>' : ''}<th class="num">peak grand</th><th class="num" title="${COST_TITLE}">posture cost</th></tr></thead><tbody>${rows}</tbody></table>`;
+    html += `<div class="hint session-cost">Posture cost over the session: <span class="num">${meanCost(summary.posture_cost)}</span> (${COST_TITLE})</div>`;
   }
   html += `<h2 class="sub">Static postures <span class="hint">ISO 11226: held &gt; 4 s outside the acceptable zone · trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°; beyond 60° or extended, and the neck outside 0°–25°, not acceptable · upper arm (from vertical) beyond 60° not acceptable; its 20°–60° holding-time curve has no readable source, so those holds are counted for you to judge · ergocell's: extension counts beyond 5°, a return to the zone shorter than 1 s does not end a hold</span></h2>`;
   if (!statics.length) {
