@@ -79,11 +79,9 @@ fn observed_cost(s: &SideAssessment) -> Option<f64> {
         "neck_flexion_deg",
         "trunk_flexion_deg",
     ];
-    let observed = ANGLES.iter().all(|name| {
-        s.sources
-            .iter()
-            .any(|(n, src)| n == name && *src == crate::assess::InputSource::Observed)
-    });
+    let observed = ANGLES
+        .iter()
+        .all(|name| s.source(name) == Some(crate::assess::InputSource::Observed));
     if !observed {
         return None;
     }
