@@ -69,6 +69,10 @@ impl TrajectoryTopic for FakeTopic {
         self.0.lock().unwrap().push(message);
         Ok(())
     }
+
+    fn delivered(&self, _: std::time::Duration) -> Result<bool, ergocell::session::BackendError> {
+        Ok(true)
+    }
 }
 
 impl FakeTopic {

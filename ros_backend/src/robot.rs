@@ -31,11 +31,24 @@ use crate::monitor::MonitorNote;
 /// empty trajectory of a hold too (it overrides any active goal), beside the cancel.
 pub trait TrajectoryTopic: Send + Sync {
     fn publish(&self, message: JointTrajectory) -> Result<(), BackendError>;
+
+    /// Blocks until every command published so far is acknowledged by every matched reliable
+    /// reader (the controller), or `max_wait` has passed: `true` when all were. A publish only
+    /// queues the sample; a process that exits right after its last hold must wait here, or the
+    /// hold may never leave the machine.
+    fn delivered(&self, max_wait: std::time::Duration) -> Result<bool, BackendError>;
 }
 
 impl TrajectoryTopic for Publisher<JointTrajectory> {
     fn publish(&self, message: JointTrajectory) -> Result<(), BackendError> {
         Publisher::publish(self, message).map_err(|e| BackendError::Transport {
+            channel: "ROS 2 joint trajectory",
+            detail: format!("{e:?}"),
+        })
+    }
+
+    fn delivered(&self, max_wait: std::time::Duration) -> Result<bool, BackendError> {
+        Publisher::wait_for_acknowledgments(self, max_wait).map_err(|e| BackendError::Transport {
             channel: "ROS 2 joint trajectory",
             detail: format!("{e:?}"),
         })
@@ -109,6 +122,13 @@ impl<T: TrajectoryTopic> RosRobot<T> {
             goal_outstanding: false,
             held_after_ms: None,
         }
+    }
+
+    /// Waits (at most `max_wait`) until the controller has acknowledged every command sent so far
+    /// ([`TrajectoryTopic::delivered`]): called before the program exits, so that its last hold
+    /// reaches the controller. In action mode the hold's empty trajectory is on the same topic.
+    pub fn commands_delivered(&self, max_wait: std::time::Duration) -> Result<bool, BackendError> {
+        self.topic.delivered(max_wait)
     }
 
     /// After the monitor's deviation: how long from the bad sample's arrival to the hold, ms.
@@ -551,6 +571,10 @@ mod tests {
     impl TrajectoryTopic for NoTopic {
         fn publish(&self, _: JointTrajectory) -> Result<(), BackendError> {
             Ok(())
+        }
+
+        fn delivered(&self, _: std::time::Duration) -> Result<bool, BackendError> {
+            Ok(true)
         }
     }
 

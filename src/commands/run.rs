@@ -372,6 +372,9 @@ fn controller_task(
     Ok((Some(tx), reports))
 }
 
+/// How long `run` waits, before it exits, for the controller to acknowledge the last command.
+const COMMAND_ACK_WAIT: Duration = Duration::from_secs(2);
+
 /// The sessions on the ROS 2 node: the cell loop fed by the camera topics, the monitor task, the
 /// controller's reports, the driver's state and a 20 ms tick, until the sessions are done or one
 /// ends early. The recording is taken from `recording` and put back.
@@ -445,6 +448,19 @@ async fn serve(
     let outcome = driver.run(&mut station, stop).await;
     monitor.abort();
     let cell = driver.into_cell();
+    // The last command (a hold, when the session ended early) only queued: wait until the
+    // controller has acknowledged it before the node and the process go.
+    let delivered =
+        tokio::task::block_in_place(|| cell.robot().commands_delivered(COMMAND_ACK_WAIT));
+    match delivered {
+        Ok(true) => {}
+        Ok(false) => say(Some(format!(
+            "warning: the controller has not acknowledged the robot's last command within {} s \
+             (is its node still running?)",
+            COMMAND_ACK_WAIT.as_secs_f64()
+        ))),
+        Err(e) => say(Some(format!("warning: the robot's last command: {e}"))),
+    }
     if let Ok(stats) = stats.lock() {
         print_monitor(cell.robot(), &stats);
     }
