@@ -19,6 +19,9 @@
 //!   (`ergocell_perception::detector_error`), at the real cameras, and the model file the twin reads.
 //! - [`experiments`]: the seed paper's Table 1 and Figs. 7–9, height estimation and RULA agreement,
 //!   run through the real perception and ergonomics crates.
+//! - [`seeds`]: each experiment summarised over many seeds, with its goals judged seed by seed.
+//! - [`report`]: what `ergocell sim` prints and draws of each result, text and SVG figures as
+//!   strings (the binary writes them).
 //! - [`controller`]: the twin's robot side: a simulated joint trajectory controller and KUKA driver
 //!   with its faults as data, run under the cell's own execution watch ([`controller::TwinRobot`]).
 //! - [`faults`]: the demo's faults (silent cameras, a class change request, the robot side's
@@ -30,7 +33,7 @@
 //! **Deterministic**: every random draw comes from `ChaCha8Rng` seeded by [`SimConfig::seed`] (motion
 //! and detector noise on separate streams); the same seed gives the same numbers, bit for bit. The
 //! simulator has its own clock (tick `k` at `k · frame_period_nanos`) and never reads wall time.
-//! **No I/O**: callers pass parsed rigs and values.
+//! **No I/O**: callers pass parsed rigs and values, and write the reports and figures themselves.
 //!
 //! **Ground truth** per tick: the 33 true landmarks ([`GroundTruth::skeleton`]), the stature, the true
 //! joint angles ([`Posture`]) and the phase; true RULA is `ergocell_ergonomics::RulaAssessor` run on
@@ -69,6 +72,7 @@ pub mod detector_fit;
 pub mod experiments;
 pub mod faults;
 pub mod reach;
+pub mod report;
 pub mod seeds;
 pub mod session;
 pub mod source;

@@ -9,10 +9,12 @@
 //!
 //! Each experiment prints a table (or, with `--json`, one JSON object on stdout) and writes
 //! `<experiment>.json` and its SVG figures into `--out-dir`. The same seed gives byte-identical JSON.
+//! The tables and figures are `ergocell_sim::report`'s; this module runs the experiments and writes
+//! what it returns.
 //! The handover points come from `trajectories/c1..c3.toml` (station frame) placed in the world with
 //! `config/cell.toml`'s `[station]`. "Before adaptation" is one point for everyone, set for a 1.75 m
 //! operator: (0.410, −0.100, 1.055) m, the middle of the Grandjean band (upper arm 10–15°) for c2's
-//! statures, which was c2's handover until c2 moved to its band's top edge (2026-11). It is
+//! statures, which was c2's handover until c2 moved to its band's top edge. It is
 //! fixed here so that moving a class's point does not move the baseline it is compared with.
 
 use std::io::Write;
@@ -25,14 +27,12 @@ use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySpec};
 use ergocell_sim::detector_fit::{self, DetectorModel, FitSettings};
-use ergocell_sim::experiments::{
-    self, Adaptation, Handovers, HeightOptions, HeightResult, RulaAgreement, Setup, Table1,
-};
-use ergocell_sim::seeds::{self, Goal, Spread};
+use ergocell_sim::experiments::{self, Handovers, HeightOptions, Setup};
+use ergocell_sim::report::{self, Figure, Report};
+use ergocell_sim::seeds::{self, Goal};
 use ergocell_sim::{ring_rig, DetectorNoise, RingRigConfig};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::Vector3;
-use plotters::prelude::*;
 
 use super::UsageError;
 
@@ -605,20 +605,7 @@ fn run_handover_rula(c: &Common) -> anyhow::Result<()> {
     let path = c.out_dir.join(HANDOVER_RULA_FILE);
     std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
     if !c.json {
-        let plot = c.out_dir.join("handover_rula.svg");
-        line_chart(
-            &plot,
-            "Each class's mean RULA grand score at its handover point, per stature (truth)",
-            "stature, m",
-            "mean RULA grand score while holding",
-            &rula.statures_m,
-            &[
-                ("c1", &rula.c1, COLORS[0], false),
-                ("c2", &rula.c2, COLORS[1], false),
-                ("c3", &rula.c3, COLORS[2], false),
-            ],
-            (1.0, 7.0),
-        )?;
+        let plot = write_figure(&c.out_dir, &report::handover_rula_figure(&rula)?)?;
         println!("wrote {}", path.display());
         println!("wrote {}", plot.display());
     }
@@ -694,7 +681,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     };
     std::fs::create_dir_all(&c.out_dir)
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
-    let (value, figures) = match args.experiment {
+    let (value, report) = match args.experiment {
         Experiment::HandoverRula => return run_handover_rula(c),
         Experiment::FitDetector => return run_fit_detector(c),
         Experiment::Table1 => {
@@ -706,10 +693,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 &mut tick,
             )?;
             pb.finish_and_clear();
-            if !c.json {
-                print_table1(&r);
-            }
-            (serde_json::to_value(&r)?, plot_table1(&r, &c.out_dir)?)
+            let report = Report {
+                text: report::table1_text(&r),
+                figures: report::table1_figures(&r)?,
+            };
+            (serde_json::to_value(&r)?, report)
         }
         Experiment::Adaptation => {
             let people = adaptation_people(c.bodies)?;
@@ -722,9 +710,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 &mut tick,
             )?;
             pb.finish_and_clear();
-            if !c.json {
-                print_adaptation(&r);
-            }
+            let report = Report {
+                text: report::adaptation_text(&r),
+                figures: report::adaptation_figures(&r)?,
+            };
             if let Some(h) = c.record_height {
                 if !(1.3..=2.2).contains(&h) {
                     return Err(
@@ -741,17 +730,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                     after.display()
                 );
             }
-            (serde_json::to_value(&r)?, plot_adaptation(&r, &c.out_dir)?)
+            (serde_json::to_value(&r)?, report)
         }
         Experiment::Height => {
             let people = ergocell_anthropometry::ansur::people()?;
             let r =
                 experiments::height(&setup, &handovers, &people, &height_options(c)?, &mut tick)?;
             pb.finish_and_clear();
-            if !c.json {
-                print_height(&r);
-            }
-            (serde_json::to_value(&r)?, plot_height(&r, &c.out_dir)?)
+            let report = Report {
+                text: report::height_text(&r),
+                figures: report::height_figures(&r)?,
+            };
+            (serde_json::to_value(&r)?, report)
         }
         Experiment::RulaAgreement => one_rula_agreement(c, &setup, &handovers, &mut tick, &pb)?,
         Experiment::Warnings => return super::sim_warnings::run(c),
@@ -764,6 +754,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         "cycles": c.cycles,
         "handovers_m": handovers,
     });
+    let figures = show(c, &report)?;
     write_result(c, name, value, setup_json, &figures)
 }
 
@@ -775,7 +766,7 @@ fn one_rula_agreement(
     handovers: &Handovers,
     tick: &mut dyn FnMut(usize, usize),
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+) -> anyhow::Result<(serde_json::Value, Report)> {
     let operators = statures(c.operators.unwrap_or(6));
     let lag = c.fixed_lag_s;
     let r = experiments::rula_agreement_with(setup, handovers, &operators, c.cycles, lag, tick)?;
@@ -800,11 +791,16 @@ fn one_rula_agreement(
         sweep.push((noise_px, a));
     }
     pb.finish_and_clear();
-    if !c.json {
-        print_agreement(&r);
-        println!("noise sweep (σ px: grand exact / κ, action level exact / κ):");
+    let mut text = report::agreement_text(&r);
+    {
+        use std::fmt::Write as _;
+        let _ = writeln!(
+            text,
+            "noise sweep (σ px: grand exact / κ, action level exact / κ):"
+        );
         for (n, a) in &sweep {
-            println!(
+            let _ = writeln!(
+                text,
                 "  {n:>4.1} px: {:.3} / {:.3}, {:.3} / {:.3}",
                 a.grand_score.exact,
                 a.grand_score.kappa,
@@ -827,9 +823,9 @@ fn one_rula_agreement(
             .collect();
         obj.insert("noise_sweep".into(), serde_json::Value::Array(rows));
     }
-    let mut figures = plot_agreement(&r, &c.out_dir)?;
-    figures.push(plot_noise_sweep(&sweep, &c.out_dir)?);
-    Ok((value, figures))
+    let mut figures = report::agreement_figures(&r)?;
+    figures.push(report::noise_sweep_figure(&sweep)?);
+    Ok((value, Report { text, figures }))
 }
 
 /// Adds `setup` to `doc`, writes `<file_stem>.json` into `--out-dir` and prints the JSON (`--json`)
@@ -872,32 +868,27 @@ pub(super) fn statures(n: usize) -> Vec<f64> {
         .collect()
 }
 
-fn spread_text(s: Option<&Spread>, scale: f64, digits: usize) -> String {
-    s.map_or_else(
-        || "—".to_owned(),
-        |s| {
-            format!(
-                "{:.d$} ± {:.d$} (worst {:.d$} on seed {})",
-                s.mean * scale,
-                s.sd * scale,
-                s.worst * scale,
-                s.worst_seed,
-                d = digits
-            )
-        },
-    )
+pub(super) fn print_goals(goals: &[Goal]) {
+    print!("{}", report::goals_text(goals));
 }
 
-pub(super) fn print_goals(goals: &[Goal]) {
-    for g in goals {
-        println!(
-            "goal: {} — holds on {} of {} seeds",
-            g.goal, g.holds_on, g.seeds
-        );
-        for (seed, why) in &g.fails {
-            println!("  seed {seed}: {why}");
-        }
+/// Prints `report`'s text (unless `--json`) and writes its figures into `--out-dir`: the paths.
+pub(super) fn show(c: &Common, report: &Report) -> anyhow::Result<Vec<PathBuf>> {
+    if !c.json {
+        print!("{}", report.text);
     }
+    report
+        .figures
+        .iter()
+        .map(|f| write_figure(&c.out_dir, f))
+        .collect()
+}
+
+/// Writes `figure` into `dir` under its own name: the path.
+pub(super) fn write_figure(dir: &Path, figure: &Figure) -> anyhow::Result<PathBuf> {
+    let path = dir.join(&figure.file_name);
+    std::fs::write(&path, &figure.svg).with_context(|| format!("writing {}", path.display()))?;
+    Ok(path)
 }
 
 /// One run per seed; each seed's sessions are independent of the others'.
@@ -935,7 +926,7 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
         noise,
         seed,
     };
-    let (value, figures) = match args.experiment {
+    let (value, report) = match args.experiment {
         Experiment::HandoverRula => return run_handover_rula(c),
         Experiment::FitDetector => return run_fit_detector(c),
         Experiment::Table1 => seeds_table1(c, seeds, &setup, &handovers, &pb)?,
@@ -952,6 +943,7 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
         "cycles": c.cycles,
         "handovers_m": handovers,
     });
+    let figures = show(c, &report)?;
     write_result(c, &format!("{name}_seeds"), value, setup_json, &figures)
 }
 
@@ -962,76 +954,15 @@ fn seeds_table1(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+) -> anyhow::Result<(serde_json::Value, Report)> {
     let operators = statures(c.operators.unwrap_or(5));
     let runs = each(seeds, pb, |s| {
         experiments::table1(&setup(s), handovers, &operators, c.cycles, &mut |_, _| {})
     })?;
     pb.finish_and_clear();
     let sum = seeds::table1(seeds, &runs);
-    if !c.json {
-        println!("Table 1 over seeds {seeds:?}: RMSE per landmark, cm, mean ± s.d. (worst seed)");
-        for (i, lm) in sum.landmarks.iter().enumerate() {
-            println!(
-                "  {lm:<16} default {}  best pair {}  paper {}",
-                spread_text(sum.default_rmse_m[i].as_ref(), 100.0, 2),
-                spread_text(sum.best_pair_rmse_m[i].as_ref(), 100.0, 1),
-                spread_text(sum.paper_rmse_m[i].as_ref(), 100.0, 1)
-            );
-        }
-        print_goals(&sum.goals);
-    }
-    let path = c.out_dir.join("table1_seeds.svg");
-    let worst = |v: &[Option<f64>], hi: bool| {
-        let it = v.iter().flatten().copied();
-        100.0
-            * if hi {
-                it.fold(f64::NAN, f64::max)
-            } else {
-                it.fold(f64::NAN, f64::min)
-            }
-    };
-    let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
-    let default_worst: Vec<f64> = runs
-        .iter()
-        .map(|r| worst(r.rmse_m.get("default_fusion").map_or(&[][..], |v| v), true))
-        .collect();
-    let pair_best: Vec<f64> = runs.iter().map(|r| worst(&r.best_pair(), false)).collect();
-    let paper_best: Vec<f64> = runs
-        .iter()
-        .map(|r| worst(r.rmse_m.get("paper_fusion").map_or(&[][..], |v| v), false))
-        .collect();
-    let top = pair_best
-        .iter()
-        .chain(&paper_best)
-        .chain(&default_worst)
-        .copied()
-        .filter(|v| v.is_finite())
-        .fold(1.0, f64::max);
-    line_chart(
-        &path,
-        "Table 1 per seed: the default fusion's worst landmark vs the others' best, cm",
-        "seed",
-        "RMSE, cm",
-        &x,
-        &[
-            (
-                "default fusion, worst landmark",
-                &default_worst,
-                COLORS[5],
-                false,
-            ),
-            (
-                "best single pair, best landmark",
-                &pair_best,
-                COLORS[3],
-                false,
-            ),
-            ("paper fusion, best landmark", &paper_best, COLORS[4], false),
-        ],
-        (0.0, top * 1.1),
-    )?;
-    Ok((serde_json::to_value(&sum)?, vec![path]))
+    let report = report::table1_seeds(seeds, &runs, &sum)?;
+    Ok((serde_json::to_value(&sum)?, report))
 }
 
 /// The adaptation experiment on every seed: the summary and its figure.
@@ -1041,7 +972,7 @@ fn seeds_adaptation(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+) -> anyhow::Result<(serde_json::Value, Report)> {
     let heights = experiments::adaptation_heights();
     let people = adaptation_people(c.bodies)?;
     let runs = each(seeds, pb, |s| {
@@ -1056,102 +987,8 @@ fn seeds_adaptation(
     })?;
     pb.finish_and_clear();
     let sum = seeds::adaptation(seeds, &runs);
-    if !c.json {
-        println!("adaptation over seeds {seeds:?}: mean grand score while holding the part, mean ± s.d. (worst seed)");
-        for (i, h) in sum.heights_m.iter().enumerate() {
-            println!(
-                "  {h:.2} m  before {}  after {}  truth after {}",
-                spread_text(sum.before[i].as_ref(), 1.0, 2),
-                spread_text(sum.after[i].as_ref(), 1.0, 2),
-                spread_text(sum.true_after[i].as_ref(), 1.0, 2)
-            );
-        }
-        println!("posture cost while holding the part, truth, mean ± s.d. (worst seed)");
-        for (i, h) in sum.heights_m.iter().enumerate() {
-            println!(
-                "  {h:.2} m  before {}  after {}",
-                spread_text(sum.true_cost_before[i].as_ref(), 1.0, 3),
-                spread_text(sum.true_cost_after[i].as_ref(), 1.0, 3),
-            );
-        }
-        print_goals(&sum.goals);
-    }
-    let path = c.out_dir.join("adaptation_seeds.svg");
-    let col = |v: &[Option<Spread>], f: fn(&Spread) -> f64| -> Vec<f64> {
-        v.iter().map(|s| s.as_ref().map_or(f64::NAN, f)).collect()
-    };
-    let goal = vec![seeds::ADAPTATION_MAX_AFTER; sum.heights_m.len()];
-    line_chart(
-        &path,
-        &format!(
-            "Adaptation over {} seeds: mean grand score while holding the part",
-            seeds.len()
-        ),
-        "operator stature, m",
-        "mean RULA grand score",
-        &sum.heights_m,
-        &[
-            (
-                "before, mean over seeds",
-                &col(&sum.before, |s| s.mean),
-                COLORS[0],
-                false,
-            ),
-            (
-                "after, mean over seeds",
-                &col(&sum.after, |s| s.mean),
-                COLORS[5],
-                false,
-            ),
-            (
-                "after, worst seed",
-                &col(&sum.after, |s| s.max),
-                COLORS[4],
-                false,
-            ),
-            (
-                "truth after, worst seed",
-                &col(&sum.true_after, |s| s.max),
-                COLORS[4],
-                true,
-            ),
-            ("goal ≤ 3.00", &goal, RED, true),
-        ],
-        (2.0, 4.5),
-    )?;
-    let cost_path = c.out_dir.join("adaptation_seeds_cost.svg");
-    line_chart(
-        &cost_path,
-        &format!(
-            "Adaptation over {} seeds: posture cost while holding the part (truth)",
-            seeds.len()
-        ),
-        "operator stature, m",
-        "mean posture cost (RULA points)",
-        &sum.heights_m,
-        &[
-            (
-                "before, mean over seeds",
-                &col(&sum.true_cost_before, |s| s.mean),
-                COLORS[0],
-                false,
-            ),
-            (
-                "after, mean over seeds",
-                &col(&sum.true_cost_after, |s| s.mean),
-                COLORS[5],
-                false,
-            ),
-            (
-                "after, worst seed",
-                &col(&sum.true_cost_after, |s| s.max),
-                COLORS[4],
-                true,
-            ),
-        ],
-        (2.5, 4.5),
-    )?;
-    Ok((serde_json::to_value(&sum)?, vec![path, cost_path]))
+    let report = report::adaptation_seeds(seeds, &sum)?;
+    Ok((serde_json::to_value(&sum)?, report))
 }
 
 /// The height experiment on every seed: the summary and its two figures.
@@ -1161,7 +998,7 @@ fn seeds_height(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+) -> anyhow::Result<(serde_json::Value, Report)> {
     let people = ergocell_anthropometry::ansur::people()?;
     let options = height_options(c)?;
     let runs = each(seeds, pb, |s| {
@@ -1169,103 +1006,8 @@ fn seeds_height(
     })?;
     pb.finish_and_clear();
     let sum = seeds::height(seeds, &runs);
-    if !c.json {
-        println!("height over seeds {seeds:?} (mean ± s.d., worst seed):");
-        println!(
-            "  MAE               {} cm",
-            spread_text(sum.mae_m.as_ref(), 100.0, 2)
-        );
-        println!(
-            "  right beyond 2 cm {}",
-            spread_text(sum.class_accuracy_beyond_2cm.as_ref(), 1.0, 3)
-        );
-        println!(
-            "  undecided         {}",
-            spread_text(sum.undecided.as_ref(), 1.0, 1)
-        );
-        println!(
-            "  coverage ±kσ      {}",
-            spread_text(sum.coverage.as_ref(), 1.0, 3)
-        );
-        println!(
-            "  coverage ±1σ      {}",
-            spread_text(sum.coverage_1sigma.as_ref(), 1.0, 3)
-        );
-        println!(
-            "  coverage pooled   ±kσ {:.3}, ±1σ {:.3} over all {} operators",
-            sum.coverage_pooled, sum.coverage_1sigma_pooled, sum.operators_total
-        );
-        println!(
-            "  decided after     median {} s, p95 {} s",
-            spread_text(sum.decision_time_median_s.as_ref(), 1.0, 2),
-            spread_text(sum.decision_time_p95_s.as_ref(), 1.0, 2)
-        );
-        println!(
-            "  RULA cost         mean {}, worst {}",
-            spread_text(sum.rula_cost_mean.as_ref(), 1.0, 3),
-            spread_text(sum.rula_cost_worst.as_ref(), 1.0, 3)
-        );
-        println!(
-            "  calibrated offset {} mm",
-            spread_text(sum.calibrated_offset_m.as_ref(), 1000.0, 1)
-        );
-        println!(
-            "  not servable      {} (no trajectory serves their stature)",
-            spread_text(sum.not_servable.as_ref(), 1.0, 1)
-        );
-        let [c1, c2, c3] = sum.decided_per_class_total;
-        println!(
-            "  confidently wrong {} of {} operators; the neighbouring class across a boundary: {} \
-             ({} within 2 cm of a boundary); decided c1 {c1}, c2 {c2}, c3 {c3}",
-            sum.confidently_wrong_total,
-            sum.operators_total,
-            sum.wrong_across_boundary_total,
-            sum.near_boundary_total
-        );
-        print_goals(&sum.goals);
-    }
-    let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
-    let per = |s: Option<&Spread>, scale: f64| -> Vec<f64> {
-        s.map_or_else(
-            || vec![f64::NAN; x.len()],
-            |s| s.per_seed.iter().map(|v| v * scale).collect(),
-        )
-    };
-    let mae = c.out_dir.join("height_seeds_mae.svg");
-    line_chart(
-        &mae,
-        "Stature per seed: mean absolute error and undecided operators",
-        "seed",
-        "MAE, cm  |  undecided operators / 10",
-        &x,
-        &[
-            ("MAE, cm", &per(sum.mae_m.as_ref(), 100.0), COLORS[5], false),
-            (
-                "undecided / 10",
-                &per(sum.undecided.as_ref(), 0.1),
-                COLORS[3],
-                false,
-            ),
-            ("goal MAE ≤ 1.5 cm", &vec![1.5; x.len()], RED, true),
-        ],
-        (0.0, 2.0),
-    )?;
-    let cov = c.out_dir.join("height_seeds_coverage.svg");
-    line_chart(
-        &cov,
-        "Coverage of the stated stature interval per seed (share of operators whose truth lies inside)",
-        "seed",
-        "coverage",
-        &x,
-        &[
-            ("±kσ (k = 2)", &per(sum.coverage.as_ref(), 1.0), COLORS[5], false),
-            ("±1σ", &per(sum.coverage_1sigma.as_ref(), 1.0), COLORS[3], false),
-            ("nominal 2σ 0.954", &vec![seeds::NOMINAL_2SIGMA; x.len()], RED, true),
-            ("nominal 1σ 0.683", &vec![0.6827; x.len()], COLORS[0], true),
-        ],
-        (0.0, 1.05),
-    )?;
-    Ok((serde_json::to_value(&sum)?, vec![mae, cov]))
+    let report = report::height_seeds(seeds, &sum)?;
+    Ok((serde_json::to_value(&sum)?, report))
 }
 
 /// RULA agreement on every seed: the summary and its figure.
@@ -1275,7 +1017,7 @@ fn seeds_rula_agreement(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Vec<PathBuf>)> {
+) -> anyhow::Result<(serde_json::Value, Report)> {
     let operators = statures(c.operators.unwrap_or(6));
     let lag = c.fixed_lag_s;
     let runs = each(seeds, pb, |s| {
@@ -1290,741 +1032,9 @@ fn seeds_rula_agreement(
     })?;
     pb.finish_and_clear();
     let sum = seeds::rula_agreement(seeds, &runs);
-    if !c.json {
-        println!(
-            "RULA agreement over seeds {seeds:?} with {} (mean ± s.d., worst seed):",
-            detector_label(c)
-        );
-        println!(
-            "  grand score exact  {}",
-            spread_text(sum.grand_exact.as_ref(), 1.0, 3)
-        );
-        println!(
-            "  grand score κ      {}",
-            spread_text(sum.grand_kappa.as_ref(), 1.0, 3)
-        );
-        println!(
-            "  action level exact {}",
-            spread_text(sum.action_level_exact.as_ref(), 1.0, 3)
-        );
-        println!(
-            "  action level κ     {}",
-            spread_text(sum.action_level_kappa.as_ref(), 1.0, 3)
-        );
-        for (j, r) in sum.region_names.iter().enumerate() {
-            println!(
-                "  {r:<10} exact  {}",
-                spread_text(sum.region_exact[j].as_ref(), 1.0, 3)
-            );
-        }
-        println!(
-            "  warnings raised per minute {}; on the truth {}",
-            spread_text(sum.warnings_per_min.as_ref(), 1.0, 2),
-            spread_text(sum.true_warnings_per_min.as_ref(), 1.0, 2)
-        );
-        let w = &sum.warnings_pooled;
-        println!(
-            "  warnings over all seeds: {} in {:.1} min ({:.2} per minute; the truth {}, {:.2} per minute: {}); \
-             the truth's also raised by the pipeline (same region and side, within the dwell time): {:.0} %; \
-             the pipeline's also raised by the truth: {:.0} %",
-            w.raised,
-            w.minutes,
-            w.per_min,
-            w.true_raised,
-            w.true_per_min,
-            if w.rate_goal_holds() {
-                "at most the truth's + 20 %"
-            } else {
-                "more than the truth's + 20 %"
-            },
-            100.0 * w.caught_share,
-            100.0 * w.confirmed_share
-        );
-        print_goals(&sum.goals);
-    }
-    let x: Vec<f64> = seeds.iter().map(|s| *s as f64).collect();
-    let per = |s: Option<&Spread>| -> Vec<f64> {
-        s.map_or_else(|| vec![f64::NAN; x.len()], |s| s.per_seed.clone())
-    };
-    let path = c.out_dir.join("rula_agreement_seeds.svg");
-    line_chart(
-        &path,
-        &format!(
-            "RULA agreement with ground truth per seed ({})",
-            detector_label(c)
-        ),
-        "seed",
-        "agreement",
-        &x,
-        &[
-            (
-                "grand score exact",
-                &per(sum.grand_exact.as_ref()),
-                COLORS[5],
-                false,
-            ),
-            (
-                "grand score κ",
-                &per(sum.grand_kappa.as_ref()),
-                COLORS[4],
-                false,
-            ),
-            (
-                "action level κ",
-                &per(sum.action_level_kappa.as_ref()),
-                COLORS[3],
-                false,
-            ),
-            (
-                "goal exact ≥ 0.90",
-                &vec![seeds::RULA_EXACT_GOAL; x.len()],
-                RED,
-                true,
-            ),
-            (
-                "goal κ > 0.84",
-                &vec![seeds::RULA_KAPPA_GOAL; x.len()],
-                COLORS[0],
-                true,
-            ),
-        ],
-        (0.5, 1.0),
-    )?;
-    Ok((serde_json::to_value(&sum)?, vec![path]))
+    let report = report::rula_agreement_seeds(seeds, &sum, &detector_label(c))?;
+    Ok((serde_json::to_value(&sum)?, report))
 }
 
 /// Pixel-noise levels of the RULA-agreement sweep, pixels.
 const NOISE_SWEEP_PX: [f64; 6] = [0.5, 1.0, 2.0, 3.0, 4.0, 6.0];
-
-fn cm(x: Option<f64>) -> String {
-    x.map_or_else(|| "   —  ".to_owned(), |v| format!("{:6.2}", v * 100.0))
-}
-
-fn print_table1(r: &Table1) {
-    println!(
-        "RMSE per landmark, cm ({} frames, operators {:?} m)",
-        r.frames, r.statures_m
-    );
-    let methods: Vec<&String> = r.rmse_m.keys().filter(|k| !k.ends_with("fusion")).collect();
-    print!("{:<16}", "landmark");
-    for m in &methods {
-        print!(" {m:>6}");
-    }
-    println!(" {:>6} {:>6}", "paper", "default");
-    for (i, lm) in r.landmarks.iter().enumerate() {
-        print!("{lm:<16}");
-        for m in &methods {
-            print!(" {}", cm(r.rmse_m[*m][i]));
-        }
-        println!(
-            " {} {}",
-            cm(r.rmse_m["paper_fusion"][i]),
-            cm(r.rmse_m["default_fusion"][i])
-        );
-    }
-    let best = r.best_pair();
-    let paper: Vec<Option<f64>> = r.rmse_m["paper_fusion"].clone();
-    println!(
-        "default fusion beats the best single pair on {}/12 landmarks and the paper fusion on {}/12; \
-         the paper fusion beats the best single pair on {}/12",
-        r.wins("default_fusion", &best),
-        r.wins("default_fusion", &paper),
-        r.wins("paper_fusion", &best)
-    );
-}
-
-fn print_adaptation(r: &Adaptation) {
-    println!(
-        "mean RULA grand score while holding the part (noisy pipeline; ground truth in brackets)"
-    );
-    println!("{:>8} {:>16} {:>16}", "height", "before", "after");
-    for i in 0..r.heights_m.len() {
-        let after = match r.not_served_after.get(i).and_then(Option::as_ref) {
-            Some(why) => format!("not served: {why}"),
-            None => format!(
-                "{:>8.2} [{:4.2}]",
-                r.mean_grand_score_after[i], r.true_mean_grand_score_after[i]
-            ),
-        };
-        println!(
-            "{:>6.2} m {:>8.2} [{:4.2}] {after}",
-            r.heights_m[i], r.mean_grand_score_before[i], r.true_mean_grand_score_before[i],
-        );
-    }
-    println!("mean posture cost while holding the part (grand score + how far into the bands; truth in brackets)");
-    for i in 0..r.heights_m.len() {
-        println!(
-            "{:>6.2} m {:>8.3} [{:5.3}] {:>8.3} [{:5.3}]",
-            r.heights_m[i],
-            r.mean_posture_cost_before[i],
-            r.true_mean_posture_cost_before[i],
-            r.mean_posture_cost_after[i],
-            r.true_mean_posture_cost_after[i],
-        );
-    }
-    println!("mean region scores over the heights served after adaptation (before → after):");
-    for (j, region) in r.region_names.iter().enumerate() {
-        let m = |v: &Vec<Vec<f64>>| {
-            let x: Vec<f64> = v
-                .iter()
-                .zip(&r.not_served_after)
-                .filter(|(_, why)| why.is_none())
-                .map(|(x, _)| x[j])
-                .collect();
-            x.iter().sum::<f64>() / x.len().max(1) as f64
-        };
-        println!(
-            "  {region:<10} {:.2} → {:.2}",
-            m(&r.mean_region_scores_before),
-            m(&r.mean_region_scores_after)
-        );
-    }
-}
-
-fn print_height(r: &HeightResult) {
-    let o = &r.calibration;
-    println!(
-        "ear offset: {:+.1} ± {:.1} mm ({}); the detector's true offset {:+.1} mm",
-        o.offset_m * 1e3,
-        o.sigma_m * 1e3,
-        o.calibrated_sessions
-            .map_or("uncalibrated".to_owned(), |n| format!(
-                "calibrated on {n} sessions"
-            )),
-        r.detector_ear_offset_m * 1e3
-    );
-    println!(
-        "decided after standing at the station: median {:.2} s, p95 {:.2} s; RULA cost of the decision: {}",
-        r.decision_time_median_s,
-        r.decision_time_p95_s,
-        match (r.rula_cost_mean, r.rula_cost_worst) {
-            (Some(m), Some(w)) => format!("mean {m:.3}, worst {w:.3}"),
-            _ => "no curves".to_owned(),
-        }
-    );
-    println!(
-        "{} operators: MAE {:.2} cm; class accuracy {:.1}% overall, {:.1}% beyond 2 cm of a boundary; \
-         {} undecided, {} confidently wrong, {} given the neighbouring class across a boundary",
-        r.operators.len(),
-        r.mae_m * 100.0,
-        r.class_accuracy * 100.0,
-        r.class_accuracy_beyond_2cm * 100.0,
-        r.undecided,
-        r.confidently_wrong,
-        r.wrong_across_boundary
-    );
-}
-
-fn print_agreement(r: &RulaAgreement) {
-    println!(
-        "{} frames: grand score exact {:.3}, κ {:.3}; action level exact {:.3}, κ {:.3} \
-         (Kinect anchor: Po 0.96, κ 0.84)",
-        r.frames,
-        r.grand_score.exact,
-        r.grand_score.kappa,
-        r.action_level.exact,
-        r.action_level.kappa
-    );
-    println!(
-        "per region: exact agreement, mean difference (pipeline − truth), \
-         confusion truth→pipeline (scores that occur)"
-    );
-    for (j, name) in r.region_names.iter().enumerate() {
-        let confusion: Vec<String> = r
-            .region_confusion
-            .get(j)
-            .into_iter()
-            .flat_map(|m| m.iter().enumerate())
-            .flat_map(|(t, row)| {
-                row.iter()
-                    .enumerate()
-                    .filter(|(_, n)| **n > 0)
-                    .map(move |(e, n)| format!("{}→{}: {n}", t + 1, e + 1))
-            })
-            .collect();
-        println!(
-            "  {name:<10} {:.3} {:+.3}  {}",
-            r.region_exact[j],
-            r.region_mean_difference[j],
-            confusion.join(", ")
-        );
-    }
-    println!(
-        "grand score differs with every region score equal (muscle use differs): {} frames",
-        r.grand_differs_with_regions_equal
-    );
-    println!(
-        "marked uncertain by the assessor: {} of {} frames; grand score exact {:.3} there, {:.3} elsewhere",
-        r.uncertain_frames, r.frames, r.grand_exact_uncertain, r.grand_exact_certain
-    );
-    println!(
-        "posture warnings raised: {:.2} per minute (on the truth's assessments {:.2}); of the truth's {}, {} also raised by the pipeline (same region and side, within the dwell time); of the pipeline's {}, {} also raised by the truth",
-        r.warnings_per_min,
-        r.true_warnings_per_min,
-        r.true_warnings_raised,
-        r.true_warnings_caught,
-        r.warnings_raised,
-        r.warnings_confirmed
-    );
-}
-
-// --------------------------------------------------------------------------------------------
-// Figures (SVG, plotters without system fonts)
-
-pub(super) const COLORS: [RGBColor; 6] = [
-    RGBColor(120, 144, 156),
-    RGBColor(158, 158, 158),
-    RGBColor(189, 189, 189),
-    RGBColor(239, 108, 0),
-    RGBColor(21, 101, 192),
-    RGBColor(46, 125, 50),
-];
-
-fn plot_err<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("drawing a figure: {e:?}")
-}
-
-fn plot_table1(r: &Table1, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
-    let path = dir.join("table1_rmse.svg");
-    let methods: Vec<String> = r
-        .rmse_m
-        .keys()
-        .filter(|k| !k.ends_with("fusion"))
-        .cloned()
-        .chain(["paper_fusion".to_owned(), "default_fusion".to_owned()])
-        .collect();
-    let file = path.clone();
-    let root = SVGBackend::new(&file, (1200, 900)).into_drawing_area();
-    root.fill(&WHITE).map_err(plot_err)?;
-    let panels = root.split_evenly((2, 1));
-    for (panel, (title, values)) in panels.iter().zip([
-        (
-            "Table 1 on the digital twin: RMSE per landmark, cm (log scale; lower is better)",
-            &r.rmse_m,
-        ),
-        ("Median error per landmark, cm (log scale)", &r.median_m),
-    ]) {
-        let max = values
-            .values()
-            .flatten()
-            .flatten()
-            .fold(0.0f64, |a, b| a.max(*b))
-            * 100.0
-            * 2.0;
-        let floor = 0.1;
-        let n = r.landmarks.len();
-        let mut chart = ChartBuilder::on(panel)
-            .caption(title, ("sans-serif", 18))
-            .margin(15)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
-            .build_cartesian_2d(0.0..n as f64, (floor..max.max(1.0)).log_scale())
-            .map_err(plot_err)?;
-        let names = r.landmarks.clone();
-        chart
-            .configure_mesh()
-            .disable_x_mesh()
-            .x_labels(2 * n + 1)
-            .x_label_formatter(&|x| {
-                let i = x.floor() as usize;
-                if (x - i as f64 - 0.5).abs() < 0.01 && i < names.len() {
-                    names[i].replace("left_", "L ").replace("right_", "R ")
-                } else {
-                    String::new()
-                }
-            })
-            .y_label_formatter(&|y| format!("{y}"))
-            .y_desc("cm")
-            .draw()
-            .map_err(plot_err)?;
-        let width = 0.85 / methods.len() as f64;
-        for (m, method) in methods.iter().enumerate() {
-            let color = COLORS[(m + COLORS.len() - methods.len().min(COLORS.len())) % COLORS.len()];
-            let Some(v) = values.get(method) else {
-                continue;
-            };
-            chart
-                .draw_series(v.iter().enumerate().filter_map(|(i, v)| {
-                    v.map(|v| {
-                        let x0 = i as f64 + 0.075 + m as f64 * width;
-                        Rectangle::new(
-                            [(x0, floor), (x0 + width * 0.9, (v * 100.0).max(floor))],
-                            color.filled(),
-                        )
-                    })
-                }))
-                .map_err(plot_err)?
-                .label(method.clone())
-                .legend(move |(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 12, y + 5)], color.filled())
-                });
-        }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(plot_err)?;
-    }
-    root.present().map_err(plot_err)?;
-    Ok(vec![path])
-}
-
-#[allow(clippy::too_many_arguments)]
-pub(super) fn line_chart(
-    path: &Path,
-    title: &str,
-    x_desc: &str,
-    y_desc: &str,
-    x: &[f64],
-    series: &[(&str, &[f64], RGBColor, bool)],
-    y_range: (f64, f64),
-) -> anyhow::Result<()> {
-    let root = SVGBackend::new(path, (900, 520)).into_drawing_area();
-    root.fill(&WHITE).map_err(plot_err)?;
-    let (x0, x1) = (
-        x.first().copied().unwrap_or(0.0),
-        x.last().copied().unwrap_or(1.0),
-    );
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(55)
-        .build_cartesian_2d(
-            x0 - 0.02 * (x1 - x0)..x1 + 0.02 * (x1 - x0),
-            y_range.0..y_range.1,
-        )
-        .map_err(plot_err)?;
-    chart
-        .configure_mesh()
-        .x_desc(x_desc)
-        .y_desc(y_desc)
-        .draw()
-        .map_err(plot_err)?;
-    for (name, ys, color, dashed) in series {
-        let color = *color;
-        let pts: Vec<(f64, f64)> = x
-            .iter()
-            .zip(ys.iter())
-            .filter(|(_, y)| y.is_finite())
-            .map(|(a, b)| (*a, *b))
-            .collect();
-        // Solid: the noisy pipeline; dashed: the ground truth (the legend draws the same).
-        if *dashed {
-            chart
-                .draw_series(DashedLineSeries::new(
-                    pts.clone(),
-                    7,
-                    5,
-                    color.stroke_width(2),
-                ))
-                .map_err(plot_err)?
-                .label(*name)
-                .legend(move |(x, y)| {
-                    EmptyElement::at((x, y))
-                        + PathElement::new(vec![(0, 0), (6, 0)], color.stroke_width(2))
-                        + PathElement::new(vec![(10, 0), (16, 0)], color.stroke_width(2))
-                });
-        } else {
-            chart
-                .draw_series(LineSeries::new(pts.clone(), color.stroke_width(3)))
-                .map_err(plot_err)?
-                .label(*name)
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(3))
-                });
-        }
-        chart
-            .draw_series(pts.iter().map(|p| Circle::new(*p, 3, color.filled())))
-            .map_err(plot_err)?;
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::LowerLeft)
-        .draw()
-        .map_err(plot_err)?;
-    root.present().map_err(plot_err)?;
-    Ok(())
-}
-
-fn plot_adaptation(r: &Adaptation, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
-    let grand = dir.join("adaptation_grand_score.svg");
-    line_chart(
-        &grand,
-        "Mean RULA grand score while holding the part: before vs after adaptation",
-        "operator stature, m",
-        "mean RULA grand score (worse side)",
-        &r.heights_m,
-        &[
-            (
-                "before (noisy pipeline)",
-                &r.mean_grand_score_before,
-                COLORS[3],
-                false,
-            ),
-            (
-                "after (noisy pipeline)",
-                &r.mean_grand_score_after,
-                COLORS[4],
-                false,
-            ),
-            (
-                "before (ground truth)",
-                &r.true_mean_grand_score_before,
-                COLORS[3],
-                true,
-            ),
-            (
-                "after (ground truth)",
-                &r.true_mean_grand_score_after,
-                COLORS[4],
-                true,
-            ),
-        ],
-        (1.0, 7.0),
-    )?;
-    let mut out = vec![grand];
-    // Region scores: one line chart per region would be many files; one chart, before dashed.
-    let regions = dir.join("adaptation_regions.svg");
-    let per_region = |v: &Vec<Vec<f64>>, j: usize| v.iter().map(|x| x[j]).collect::<Vec<f64>>();
-    let before: Vec<Vec<f64>> = (0..6)
-        .map(|j| per_region(&r.mean_region_scores_before, j))
-        .collect();
-    let after: Vec<Vec<f64>> = (0..6)
-        .map(|j| per_region(&r.mean_region_scores_after, j))
-        .collect();
-    let palette = [
-        RGBColor(239, 108, 0),
-        RGBColor(21, 101, 192),
-        RGBColor(46, 125, 50),
-        RGBColor(142, 36, 170),
-        RGBColor(198, 40, 40),
-        RGBColor(96, 125, 139),
-    ];
-    let labels_before: Vec<String> = r
-        .region_names
-        .iter()
-        .map(|n| format!("{n} before"))
-        .collect();
-    let labels_after: Vec<String> = r
-        .region_names
-        .iter()
-        .map(|n| format!("{n} after"))
-        .collect();
-    let mut series: Vec<(&str, &[f64], RGBColor, bool)> = Vec::new();
-    for j in 0..6 {
-        series.push((&labels_before[j], &before[j], palette[j], true));
-        series.push((&labels_after[j], &after[j], palette[j], false));
-    }
-    line_chart(
-        &regions,
-        "Mean RULA score per body region (thin: before, thick: after adaptation)",
-        "operator stature, m",
-        "mean region score",
-        &r.heights_m,
-        &series,
-        (0.5, 5.0),
-    )?;
-    out.push(regions);
-    let angles = dir.join("adaptation_angles.svg");
-    let before: Vec<Vec<f64>> = (0..4)
-        .map(|j| per_region(&r.mean_angles_deg_before, j))
-        .collect();
-    let after: Vec<Vec<f64>> = (0..4)
-        .map(|j| per_region(&r.mean_angles_deg_after, j))
-        .collect();
-    let labels_before: Vec<String> = r
-        .angle_names
-        .iter()
-        .map(|n| format!("{n} before"))
-        .collect();
-    let labels_after: Vec<String> = r.angle_names.iter().map(|n| format!("{n} after")).collect();
-    let mut series: Vec<(&str, &[f64], RGBColor, bool)> = Vec::new();
-    for j in 0..4 {
-        series.push((&labels_before[j], &before[j], palette[j], true));
-        series.push((&labels_after[j], &after[j], palette[j], false));
-    }
-    line_chart(
-        &angles,
-        "True joint angles while holding the part (thin: before, thick: after adaptation)",
-        "operator stature, m",
-        "angle, degrees",
-        &r.heights_m,
-        &series,
-        (-10.0, 90.0),
-    )?;
-    out.push(angles);
-    Ok(out)
-}
-
-fn plot_height(r: &HeightResult, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
-    let path = dir.join("height_estimates.svg");
-    let file = path.clone();
-    let root = SVGBackend::new(&file, (800, 640)).into_drawing_area();
-    root.fill(&WHITE).map_err(plot_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            format!(
-                "Stature from the noisy cameras: MAE {:.2} cm, {} undecided, {} wrong",
-                r.mae_m * 100.0,
-                r.undecided,
-                r.confidently_wrong
-            ),
-            ("sans-serif", 18),
-        )
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d(1.38..2.08, -4.0..4.0)
-        .map_err(plot_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("true stature, m")
-        .y_desc("estimate − truth, cm")
-        .draw()
-        .map_err(plot_err)?;
-    for b in [1.68, 1.82] {
-        chart
-            .draw_series(LineSeries::new(vec![(b, -4.0), (b, 4.0)], BLACK.mix(0.4)))
-            .map_err(plot_err)?;
-    }
-    for (label, color, pick) in [
-        ("class correct", COLORS[5], 0),
-        ("undecided", COLORS[3], 1),
-        ("class wrong", RED, 2),
-    ] {
-        let pts: Vec<(f64, f64)> = r
-            .operators
-            .iter()
-            .filter(|o| match pick {
-                0 => o.decided_class == Some(o.true_class),
-                1 => o.decided_class.is_none(),
-                _ => o.decided_class.is_some_and(|c| c != o.true_class),
-            })
-            .filter_map(|o| {
-                o.estimated_m
-                    .map(|e| (o.true_m, ((e - o.true_m) * 100.0).clamp(-3.9, 3.9)))
-            })
-            .collect();
-        chart
-            .draw_series(pts.iter().map(|p| Circle::new(*p, 4, color.filled())))
-            .map_err(plot_err)?
-            .label(label)
-            .legend(move |(x, y)| Circle::new((x + 6, y), 4, color.filled()));
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(plot_err)?;
-    root.present().map_err(plot_err)?;
-    Ok(vec![path])
-}
-
-fn plot_noise_sweep(sweep: &[(f64, RulaAgreement)], dir: &Path) -> anyhow::Result<PathBuf> {
-    let xs: Vec<f64> = sweep.iter().map(|(n, _)| *n).collect();
-    let pick =
-        |f: &dyn Fn(&RulaAgreement) -> f64| sweep.iter().map(|(_, a)| f(a)).collect::<Vec<f64>>();
-    let ge = pick(&|a| a.grand_score.exact);
-    let gk = pick(&|a| a.grand_score.kappa);
-    let le = pick(&|a| a.action_level.exact);
-    let lk = pick(&|a| a.action_level.kappa);
-    let anchor_po = vec![0.96; xs.len()];
-    let anchor_k = vec![0.84; xs.len()];
-    let path = dir.join("rula_agreement_noise.svg");
-    line_chart(
-        &path,
-        "RULA agreement with ground truth vs detector pixel noise",
-        "pixel noise σ, px",
-        "agreement",
-        &xs,
-        &[
-            ("grand score exact", &ge, COLORS[4], false),
-            ("grand score κ", &gk, COLORS[3], false),
-            ("action level exact", &le, COLORS[5], false),
-            ("action level κ", &lk, RGBColor(142, 36, 170), false),
-            ("Kinect anchor Po 0.96", &anchor_po, COLORS[0], true),
-            ("Kinect anchor κ 0.84", &anchor_k, COLORS[1], true),
-        ],
-        (0.0, 1.0),
-    )?;
-    Ok(path)
-}
-
-fn plot_agreement(r: &RulaAgreement, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
-    let path = dir.join("rula_agreement.svg");
-    let file = path.clone();
-    let root = SVGBackend::new(&file, (1100, 560)).into_drawing_area();
-    root.fill(&WHITE).map_err(plot_err)?;
-    let panels = root.split_evenly((1, 2));
-    for (panel, (title, a)) in panels.iter().zip([
-        ("grand score", &r.grand_score),
-        ("action level", &r.action_level),
-    ]) {
-        let k = a.confusion.len();
-        let max = a
-            .confusion
-            .iter()
-            .flatten()
-            .copied()
-            .max()
-            .unwrap_or(1)
-            .max(1) as f64;
-        let mut chart = ChartBuilder::on(panel)
-            .caption(
-                format!("{title}: exact {:.3}, κ {:.3}", a.exact, a.kappa),
-                ("sans-serif", 17),
-            )
-            .margin(15)
-            .x_label_area_size(45)
-            .y_label_area_size(45)
-            .build_cartesian_2d(0.5..k as f64 + 0.5, 0.5..k as f64 + 0.5)
-            .map_err(plot_err)?;
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_labels(k)
-            .y_labels(k)
-            .x_label_formatter(&|x| format!("{x:.0}"))
-            .y_label_formatter(&|y| format!("{y:.0}"))
-            .x_desc("noisy pipeline")
-            .y_desc("ground truth")
-            .draw()
-            .map_err(plot_err)?;
-        for (t, row) in a.confusion.iter().enumerate() {
-            for (e, count) in row.iter().enumerate() {
-                let (x, y) = (e as f64 + 1.0, t as f64 + 1.0);
-                let shade = *count as f64 / max;
-                let color = RGBColor(
-                    (255.0 - 234.0 * shade) as u8,
-                    (255.0 - 154.0 * shade) as u8,
-                    (255.0 - 63.0 * shade) as u8,
-                );
-                chart
-                    .draw_series(std::iter::once(Rectangle::new(
-                        [(x - 0.5, y - 0.5), (x + 0.5, y + 0.5)],
-                        color.filled(),
-                    )))
-                    .map_err(plot_err)?;
-                if *count > 0 {
-                    let text_color = if shade > 0.5 { WHITE } else { BLACK };
-                    chart
-                        .draw_series(std::iter::once(Text::new(
-                            count.to_string(),
-                            (x - 0.15, y + 0.1),
-                            ("sans-serif", 14).into_font().color(&text_color),
-                        )))
-                        .map_err(plot_err)?;
-                }
-            }
-        }
-    }
-    root.present().map_err(plot_err)?;
-    Ok(vec![path])
-}

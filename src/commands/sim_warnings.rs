@@ -10,15 +10,15 @@ use ergocell_ergonomics::confidence::{ConfidenceModel, ANGLED_REGIONS};
 use ergocell_ergonomics::UpVector;
 use ergocell_sim::band_reliability::{self, Reliability, FIT_STRIDE, MIN_BIN_SAMPLES};
 use ergocell_sim::experiments::Setup;
+use ergocell_sim::report;
 use ergocell_sim::tasks::{TaskMix, DEFAULT_MIX_NAME};
 use ergocell_sim::warning_trust::{self, RegionWarnings, WarningTrustSeeds};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::Vector3;
-use plotters::style::RED;
 
 use super::sim::{
-    detector_label, detector_noise, line_chart, load_handovers, load_rig, print_goals, statures,
-    write_result, Common, SeedRange, COLORS,
+    detector_label, detector_noise, load_handovers, load_rig, print_goals, statures, write_figure,
+    write_result, Common, SeedRange,
 };
 use super::UsageError;
 
@@ -130,7 +130,14 @@ pub fn run(c: &Common) -> anyhow::Result<()> {
             print_fit(model, counts, read_error);
         }
     }
-    let figure = plot_latency(c, &sum, &c.out_dir.join(format!("{file_stem}_latency.svg")))?;
+    let figure = write_figure(
+        &c.out_dir,
+        &report::warning_latency_figure(
+            &format!("{file_stem}_latency.svg"),
+            &sum,
+            &detector_label(c),
+        )?,
+    )?;
     let setup_json = serde_json::json!({
         "seeds": seeds,
         "cameras": c.cameras,
@@ -247,41 +254,4 @@ fn print_fit(model: &ConfidenceModel, counts: &[usize], read_error_deg: &[Option
             points.join(", ")
         );
     }
-}
-
-/// The latency's cumulative distribution, pooled over the seeds, against the goal.
-fn plot_latency(
-    c: &Common,
-    sum: &WarningTrustSeeds,
-    path: &std::path::Path,
-) -> anyhow::Result<PathBuf> {
-    let mut sorted = sum.all.latencies_s.clone();
-    sorted.sort_by(f64::total_cmp);
-    let x: Vec<f64> = (0..=60).map(|k| f64::from(k) * 0.1).collect();
-    let n = sorted.len().max(1) as f64;
-    let share: Vec<f64> = x
-        .iter()
-        .map(|t| sorted.partition_point(|v| v <= t) as f64 / n)
-        .collect();
-    let bound: Vec<f64> = x
-        .iter()
-        .map(|t| if *t >= sum.latency_bound_s { 1.0 } else { 0.0 })
-        .collect();
-    line_chart(
-        path,
-        &format!(
-            "Posture to warning, share of clear postures warned by then ({})",
-            detector_label(c)
-        ),
-        "seconds after the posture crossed the band edge",
-        "share warned",
-        &x,
-        &[
-            ("warned", &share, COLORS[4], false),
-            ("95 %", &vec![0.95; x.len()], COLORS[0], true),
-            ("dwell + lag + 0.5 s", &bound, RED, true),
-        ],
-        (0.0, 1.0),
-    )?;
-    Ok(path.to_path_buf())
 }

@@ -20,8 +20,8 @@ use ergocell_sim::{Operator, ReachConfig};
 use serde::Serialize;
 
 use super::{write_new, Context};
-use crate::commands::sim::{line_chart, COLORS};
 use ergocell::session::trajectory_class;
+use ergocell_sim::report::{line_chart, COLORS};
 
 /// How many of the cheapest candidates may be refused before a class gives up.
 const MAX_REFUSALS: usize = 400;
@@ -299,22 +299,8 @@ pub(super) fn design(
     let json = out_dir.join("design.json");
     write_new(&json, &serde_json::to_string_pretty(&report)?)?;
     println!("wrote {}", json.display());
-    // The chart library writes to a path: draw beside it, then link it into place, which fails
-    // rather than replace a file that appeared meanwhile.
     let svg = out_dir.join("design_cost.svg");
-    let partial = out_dir.join(".design_cost.svg.partial");
-    if let Err(e) = plot(&report, &partial) {
-        std::fs::remove_file(&partial).ok();
-        return Err(e);
-    }
-    let linked = std::fs::hard_link(&partial, &svg).with_context(|| {
-        format!(
-            "cannot link {} into place (it must not exist yet)",
-            svg.display()
-        )
-    });
-    std::fs::remove_file(&partial).ok();
-    linked?;
+    write_new(&svg, &plot(&report)?.svg)?;
     println!("wrote {}", svg.display());
     Ok(())
 }
@@ -478,7 +464,7 @@ fn y_range(r: &Report) -> (f64, f64) {
     )
 }
 
-fn plot(r: &Report, path: &Path) -> anyhow::Result<()> {
+fn plot(r: &Report) -> Result<ergocell_sim::report::Figure, ergocell_sim::report::FigureError> {
     let series: Vec<(&str, &[f64], _, bool)> = r
         .curves
         .iter()
@@ -491,7 +477,7 @@ fn plot(r: &Report, path: &Path) -> anyhow::Result<()> {
         })
         .collect();
     line_chart(
-        path,
+        "design_cost.svg",
         "Posture cost of holding the part against stature, per class's point",
         "operator stature, m",
         "posture cost (RULA points)",
