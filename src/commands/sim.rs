@@ -21,7 +21,6 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use ergocell_ergonomics::height::HandoverRula;
 use ergocell_perception::detector_error::DetectorErrorReport;
 use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
@@ -35,6 +34,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::Vector3;
 
 use super::UsageError;
+use ergocell::session::provider::HANDOVER_RULA_FILE;
 
 /// Arguments of `ergocell sim`.
 #[derive(Debug, clap::Args)]
@@ -531,29 +531,18 @@ pub(super) fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     })
 }
 
-/// The classes' RULA-versus-stature curves, `handover_rula.toml` in the trajectories folder (or the
-/// shipped one); `None` when there is none.
-pub fn load_handover_rula(trajectories: &Path) -> anyhow::Result<Option<HandoverRula>> {
-    let path = trajectories.join(HANDOVER_RULA_FILE);
-    if !path.exists() && !ergocell::shipped::falls_back(&path) {
-        return Ok(None);
-    }
-    let (text, label) = ergocell::shipped::read_or_shipped(&path)?;
-    let rula: HandoverRula =
-        toml::from_str(&text).map_err(|e| UsageError(format!("{label}: {e}")))?;
-    rula.check()
-        .map_err(|e| UsageError(format!("{label}: {e}")))?;
-    Ok(Some(rula))
-}
-
-use ergocell::session::provider::HANDOVER_RULA_FILE;
-
 fn height_options(c: &Common) -> anyhow::Result<HeightOptions> {
     Ok(HeightOptions {
         count: c.operators.unwrap_or(60),
         idle_secs: 12.0,
         calibration_sessions: c.calibration_sessions,
-        rula: load_handover_rula(&c.trajectories)?,
+        // The classes' curves as the cell reads them (the approvals crate's provider).
+        rula: ergocell::session::provider::on_disk(
+            &c.cell,
+            &c.trajectories,
+            &c.trajectories.join("approvals"),
+        )
+        .handover_rula()?,
         decision_sigmas: match c.decision_sigmas {
             Some(k) if !(k.is_finite() && (1.0..=4.0).contains(&k)) => {
                 anyhow::bail!(UsageError(format!(
