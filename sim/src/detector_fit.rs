@@ -484,6 +484,78 @@ pub fn compare_noise(
     })
 }
 
+/// How far the twin's worst measured group is from the real recording, as a share of the real
+/// figure ([`FitRow::worst_gap`] over the groups the recording measured).
+pub fn worst_measured_gap(rows: &[FitRow]) -> f64 {
+    rows.iter()
+        .filter(|r| r.real.total.count > 0)
+        .map(FitRow::worst_gap)
+        .fold(0.0, f64::max)
+}
+
+/// The gap a fitted model must stay within, per measured group: 20 % of the real figure.
+pub const FIT_GAP_GOAL: f64 = 0.2;
+
+/// A fitted model judged on reporting seeds it was not fitted on: seed by seed (one rig-worth of
+/// offsets each), pooled (the model's error, not one draw of its offsets), and the default
+/// independent pixel noise measured the same way on the first seed, for comparison.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Evaluation {
+    pub seeds: Vec<u64>,
+    /// Each reporting seed and its rows.
+    pub per_seed: Vec<(u64, Vec<FitRow>)>,
+    pub pooled: Comparison,
+    /// The independent pixel noise's rows (first reporting seed).
+    pub independent: Vec<FitRow>,
+    /// On how many seeds every measured group is within [`FIT_GAP_GOAL`].
+    pub seeds_within: usize,
+    pub pooled_gap: f64,
+    /// The seed with the largest gap, and the gap.
+    pub worst_seed: (u64, f64),
+}
+
+/// Judges `model` against `real` on `seeds` (not empty) as [`Evaluation`] describes; `independent`
+/// is the default noise it is compared with.
+pub fn evaluate(
+    real: &DetectorErrorReport,
+    rig: &CameraRig,
+    model: &DetectorModel,
+    settings: &FitSettings,
+    seeds: &[u64],
+    independent: &DetectorNoise,
+) -> Result<Evaluation, SimError> {
+    let Some(&first) = seeds.first() else {
+        return Err(SimError::BadParameter {
+            name: "seeds",
+            value: 0.0,
+            why: "a fit is judged on at least one reporting seed",
+        });
+    };
+    let mut per_seed = Vec::new();
+    for &seed in seeds {
+        per_seed.push((seed, compare(real, rig, model, settings, &[seed])?.rows));
+    }
+    let pooled = compare(real, rig, model, settings, seeds)?;
+    let independent = compare_noise(real, rig, independent, settings, &[first])?.rows;
+    let seeds_within = per_seed
+        .iter()
+        .filter(|(_, rows)| worst_measured_gap(rows) <= FIT_GAP_GOAL)
+        .count();
+    let worst_seed = per_seed
+        .iter()
+        .map(|(seed, rows)| (*seed, worst_measured_gap(rows)))
+        .fold((first, 0.0), |w, s| if s.1 > w.1 { s } else { w });
+    Ok(Evaluation {
+        seeds: seeds.to_vec(),
+        pooled_gap: worst_measured_gap(&pooled.rows),
+        per_seed,
+        pooled,
+        independent,
+        seeds_within,
+        worst_seed,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

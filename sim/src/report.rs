@@ -10,10 +10,12 @@ use std::fmt::Write as _;
 
 use plotters::prelude::*;
 
+use crate::detector_fit::{decay_time_s, Evaluation};
 use crate::experiments::{Adaptation, HeightResult, RulaAgreement, Table1};
 use crate::seeds::{self, Goal, Spread};
 use crate::warning_trust::WarningTrustSeeds;
 use ergocell_ergonomics::height::HandoverRula;
+use ergocell_perception::detector_error::DetectorErrorReport;
 
 /// One figure: its file name (for example `adaptation_grand_score.svg`) and the SVG document.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -1224,6 +1226,130 @@ pub fn handover_rula_figure(rula: &HandoverRula) -> Result<Figure, FigureError> 
         ],
         (1.0, 7.0),
     )
+}
+
+/// What `sim fit-detector` prints: the fitted model's error against the real recording's
+/// (`real_label` names it) group by group, seed by seed and pooled, the views' structure and how
+/// long an error lasts; `independent_px` is the default noise compared with, `fit_seed` the seed fitted on.
+pub fn detector_fit_text(
+    real_label: &str,
+    real: &DetectorErrorReport,
+    e: &Evaluation,
+    fit_seed: u64,
+    independent_px: f64,
+) -> String {
+    let mut out = String::new();
+    let pct = |q: &ergocell_perception::detector_error::Quantiles| {
+        format!("{:>5.2} {:>5.2}", 100.0 * q.p50, 100.0 * q.p90)
+    };
+    let _ = writeln!(out,
+        "detector fit to {} (% of the person's image height, median p90), twin over seeds {}..{} pooled:",
+        real_label,
+        e.seeds.first().copied().unwrap_or_default(),
+        e.seeds.last().copied().unwrap_or_default(),
+    );
+    let _ = writeln!(
+        out,
+        "  {:<16} {:>11} {:>11}   {:>11} {:>11}   {:>11} {:>11}   {:>11}",
+        "group",
+        "real total",
+        "twin total",
+        "real pers.",
+        "twin pers.",
+        "real jit.",
+        "twin jit.",
+        "independent"
+    );
+    for (row, ind) in e.pooled.rows.iter().zip(&e.independent) {
+        if row.real.total.count == 0 {
+            let _ = writeln!(
+                out,
+                "  {:<16} not measured in the real recording",
+                row.group
+            );
+            continue;
+        }
+        let _ = writeln!(
+            out,
+            "  {:<16} {} {}   {} {}   {} {}   {}",
+            row.group,
+            pct(&row.real.total),
+            pct(&row.twin.total),
+            pct(&row.real.persistent),
+            pct(&row.twin.persistent),
+            pct(&row.real.jitter),
+            pct(&row.twin.jitter),
+            pct(&ind.twin.total)
+        );
+    }
+    let _ =
+        writeln!(out,
+        "  pooled: every measured group's median and p90 within {:.0} % of the real (20 % asked)",
+        100.0 * e.pooled_gap
+    );
+    let _ = writeln!(out,
+        "  seed by seed (one rig-worth of offsets each): within 20 % on {} of {} seeds; worst {:.0} % on seed {}; fitted on seeds from {}",
+        e.seeds_within,
+        e.per_seed.len(),
+        100.0 * e.worst_seed.1,
+        e.worst_seed.0,
+        fit_seed
+    );
+    let (r, t) = (&real.view_structure, &e.pooled.twin_structure);
+    let _ = writeln!(
+        out,
+        "  the views' persistent offsets, real / twin (not fitted but the shift):"
+    );
+    let _ = writeln!(out,
+        "    shared shift {} / {}   scale error {} / {}   rotation {:.1} {:.1} / {:.1} {:.1}°   left per landmark {} / {}",
+        pct(&r.shift),
+        pct(&t.shift),
+        pct(&r.scale_error),
+        pct(&t.scale_error),
+        r.rotation_deg.p50,
+        r.rotation_deg.p90,
+        t.rotation_deg.p50,
+        t.rotation_deg.p90,
+        pct(&r.remainder),
+        pct(&t.remainder)
+    );
+    let lags = |rows: &[ergocell_perception::detector_error::LagRow]| {
+        rows.iter()
+            .map(|l| format!("{:.2}", l.correlation))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let _ = writeln!(
+        out,
+        "  how long a landmark's own error lasts, correlation at lags {} s, real / twin:",
+        real.persistence
+            .iter()
+            .map(|l| format!("{}", l.lag_s))
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    let _ = writeln!(
+        out,
+        "    {} / {}   (decay time {} / {} s)",
+        lags(&real.persistence),
+        lags(
+            &e.pooled
+                .twin_persistence
+                .iter()
+                .filter(|t| real.persistence.iter().any(|r| r.lag_s == t.lag_s))
+                .copied()
+                .collect::<Vec<_>>()
+        ),
+        decay_time_s(&real.persistence).map_or_else(|| "-".to_owned(), |t| format!("{t:.2}")),
+        decay_time_s(&e.pooled.twin_persistence)
+            .map_or_else(|| "-".to_owned(), |t| format!("{t:.2}"))
+    );
+    let _ = writeln!(out,
+        "  (independent: the default model, {} px per coordinate, measured the same way on seed {})",
+        independent_px,
+        e.seeds.first().copied().unwrap_or_default()
+    );
+    out
 }
 
 #[cfg(test)]

@@ -318,137 +318,28 @@ fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
         settings.frames,
         settings.iterations
     );
-    let mut per_seed = Vec::new();
-    for &seed in &report_seeds {
-        let rows = detector_fit::compare(&real, &rig, &fit.model, &settings, &[seed])?.rows;
-        per_seed.push((seed, rows));
-    }
-    // Every reporting seed at once: the model's error, not one rig-worth of its offsets.
-    let pooled = detector_fit::compare(&real, &rig, &fit.model, &settings, &report_seeds)?;
-    let independent = detector_fit::compare_noise(
+    let evaluation = detector_fit::evaluate(
         &real,
         &rig,
+        &fit.model,
+        &settings,
+        &report_seeds,
         &DetectorNoise {
             pixel_sigma_px: c.noise_px,
             ..DetectorNoise::default()
         },
-        &settings,
-        &report_seeds[..1],
-    )?
-    .rows;
+    )?;
     pb.finish_and_clear();
-    let measured = |rows: &[detector_fit::FitRow]| {
-        rows.iter()
-            .filter(|r| r.real.total.count > 0)
-            .map(detector_fit::FitRow::worst_gap)
-            .fold(0.0, f64::max)
-    };
-    let within = per_seed.iter().filter(|(_, r)| measured(r) <= 0.2).count();
-    let pooled_gap = measured(&pooled.rows);
-    let worst_seed = per_seed
-        .iter()
-        .map(|(seed, rows)| (*seed, measured(rows)))
-        .fold((report_seeds[0], 0.0), |w, s| if s.1 > w.1 { s } else { w });
-    let seed_range = format!(
-        "{}..{}",
-        report_seeds[0],
-        report_seeds[report_seeds.len() - 1]
-    );
     if !c.json {
-        let pct = |q: &ergocell_perception::detector_error::Quantiles| {
-            format!("{:>5.2} {:>5.2}", 100.0 * q.p50, 100.0 * q.p90)
-        };
-        println!(
-            "detector fit to {} (% of the person's image height, median p90), twin over seeds {seed_range} pooled:",
-            real_path.display(),
-        );
-        println!(
-            "  {:<16} {:>11} {:>11}   {:>11} {:>11}   {:>11} {:>11}   {:>11}",
-            "group",
-            "real total",
-            "twin total",
-            "real pers.",
-            "twin pers.",
-            "real jit.",
-            "twin jit.",
-            "independent"
-        );
-        for (row, ind) in pooled.rows.iter().zip(&independent) {
-            if row.real.total.count == 0 {
-                println!("  {:<16} not measured in the real recording", row.group);
-                continue;
-            }
-            println!(
-                "  {:<16} {} {}   {} {}   {} {}   {}",
-                row.group,
-                pct(&row.real.total),
-                pct(&row.twin.total),
-                pct(&row.real.persistent),
-                pct(&row.twin.persistent),
-                pct(&row.real.jitter),
-                pct(&row.twin.jitter),
-                pct(&ind.twin.total)
-            );
-        }
-        println!(
-            "  pooled: every measured group's median and p90 within {:.0} % of the real (20 % asked)",
-            100.0 * pooled_gap
-        );
-        println!(
-            "  seed by seed (one rig-worth of offsets each): within 20 % on {within} of {} seeds; worst {:.0} % on seed {}; fitted on seeds from {}",
-            per_seed.len(),
-            100.0 * worst_seed.1,
-            worst_seed.0,
-            c.seed
-        );
-        let (r, t) = (&real.view_structure, &pooled.twin_structure);
-        println!("  the views' persistent offsets, real / twin (not fitted but the shift):");
-        println!(
-            "    shared shift {} / {}   scale error {} / {}   rotation {:.1} {:.1} / {:.1} {:.1}°   left per landmark {} / {}",
-            pct(&r.shift),
-            pct(&t.shift),
-            pct(&r.scale_error),
-            pct(&t.scale_error),
-            r.rotation_deg.p50,
-            r.rotation_deg.p90,
-            t.rotation_deg.p50,
-            t.rotation_deg.p90,
-            pct(&r.remainder),
-            pct(&t.remainder)
-        );
-        let lags = |rows: &[ergocell_perception::detector_error::LagRow]| {
-            rows.iter()
-                .map(|l| format!("{:.2}", l.correlation))
-                .collect::<Vec<_>>()
-                .join(" ")
-        };
-        println!(
-            "  how long a landmark's own error lasts, correlation at lags {} s, real / twin:",
-            real.persistence
-                .iter()
-                .map(|l| format!("{}", l.lag_s))
-                .collect::<Vec<_>>()
-                .join(" ")
-        );
-        println!(
-            "    {} / {}   (decay time {} / {} s)",
-            lags(&real.persistence),
-            lags(
-                &pooled
-                    .twin_persistence
-                    .iter()
-                    .filter(|t| real.persistence.iter().any(|r| r.lag_s == t.lag_s))
-                    .copied()
-                    .collect::<Vec<_>>()
-            ),
-            detector_fit::decay_time_s(&real.persistence)
-                .map_or_else(|| "-".to_owned(), |t| format!("{t:.2}")),
-            detector_fit::decay_time_s(&pooled.twin_persistence)
-                .map_or_else(|| "-".to_owned(), |t| format!("{t:.2}"))
-        );
-        println!(
-            "  (independent: the default model, {} px per coordinate, measured the same way on seed {})",
-            c.noise_px, report_seeds[0]
+        print!(
+            "{}",
+            report::detector_fit_text(
+                &real_path.display().to_string(),
+                &real,
+                &evaluation,
+                c.seed,
+                c.noise_px
+            )
         );
     }
     std::fs::create_dir_all(&c.out_dir)
@@ -459,19 +350,19 @@ fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
         "model": fit.model,
         "fit_seed": c.seed,
         "fit_rows": fit.rows,
-        "report_seeds": per_seed.iter().map(|(seed, rows)| serde_json::json!({
+        "report_seeds": evaluation.per_seed.iter().map(|(seed, rows)| serde_json::json!({
             "seed": seed,
-            "worst_gap": measured(rows),
+            "worst_gap": detector_fit::worst_measured_gap(rows),
             "rows": rows,
         })).collect::<Vec<_>>(),
-        "seeds_within_20_percent": within,
-        "pooled_rows": pooled.rows,
-        "pooled_worst_gap": pooled_gap,
+        "seeds_within_20_percent": evaluation.seeds_within,
+        "pooled_rows": evaluation.pooled.rows,
+        "pooled_worst_gap": evaluation.pooled_gap,
         "real_structure": real.view_structure,
-        "twin_structure": pooled.twin_structure,
+        "twin_structure": evaluation.pooled.twin_structure,
         "real_persistence": real.persistence,
-        "twin_persistence": pooled.twin_persistence,
-        "independent_noise_rows": independent,
+        "twin_persistence": evaluation.pooled.twin_persistence,
+        "independent_noise_rows": evaluation.independent,
     });
     let setup =
         serde_json::json!({ "cameras": c.cameras, "real": real_path, "camera_count": rig.len() });
