@@ -44,6 +44,7 @@ pub mod reba;
 pub mod rula;
 pub mod static_posture;
 pub mod summary;
+pub mod summary_text;
 pub mod tables;
 pub mod warnings;
 

@@ -24,12 +24,11 @@ use std::path::{Path, PathBuf};
 use ergocell::input::{self, Kind};
 use ergocell_cell::{Assessment, PipelineConfig};
 use ergocell_ergonomics::activity::{ActivityConfig, ActivityTracker};
-use ergocell_ergonomics::assess::{BodyRegion, SideAssessment};
+use ergocell_ergonomics::assess::SideAssessment;
 use ergocell_ergonomics::export::{self, FrameCsv};
-use ergocell_ergonomics::rula::{action_level_meaning, parse_worksheets, score_worksheet};
-use ergocell_ergonomics::static_posture::STATIC_MIN_SECS;
+use ergocell_ergonomics::rula::{parse_worksheets, score_worksheet};
 use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
-use ergocell_ergonomics::{AssessmentConfig, RulaScores, Side, TaskConfig, UpVector};
+use ergocell_ergonomics::{AssessmentConfig, RulaScores, TaskConfig, UpVector};
 use ergocell_perception::fixed_lag::centered_mean;
 use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
 use ergocell_skeleton::Skeleton3;
@@ -347,7 +346,10 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         println!("{}", serde_json::to_string_pretty(&doc)?);
         return Ok(());
     }
-    print_track_summary(&s, &events, t0);
+    print!(
+        "{}",
+        ergocell_ergonomics::summary_text::session_text(&s, &events, t0)
+    );
     Ok(())
 }
 
@@ -390,161 +392,4 @@ fn print_frame_text(
             }
         );
     }
-}
-
-/// The summary of `rula track` as text: time shares, regions, exposure, static postures, task
-/// segments, warnings per region (`t0`: the first frame's stamp).
-fn print_track_summary(
-    s: &ergocell_ergonomics::summary::SessionSummary,
-    events: &[ergocell_ergonomics::WarningEvent],
-    t0: i64,
-) {
-    println!();
-    println!(
-        "summary: {} frames over {:.2} s, {} scored, {} uncertain, unscored {:.1}% of the time",
-        s.frames,
-        s.duration_secs,
-        s.scored_frames,
-        s.uncertain_frames,
-        s.unscored_share * 100.0
-    );
-    println!("time share per action level (worse side):");
-    for (k, share) in s.action_level_share.iter().enumerate() {
-        let level = k as u8 + 1;
-        println!(
-            "  level {level} ({:<34}) {:5.1}%",
-            action_level_meaning(level),
-            share * 100.0
-        );
-    }
-    if let Some(cost) = s.posture_cost.mean() {
-        println!(
-            "posture cost beside RULA (worse side, the grand score plus how far the angles lie into \
-             their bands): mean {cost:.3} over {:.1} s",
-            s.posture_cost.secs
-        );
-    }
-    if !s.reba_score.is_empty() {
-        println!("REBA beside RULA: time share per REBA action level (worse side):");
-        for (level, share) in s.reba_action_level_share.iter().enumerate() {
-            let (risk, action) = ergocell_ergonomics::reba::risk(level as u8);
-            println!(
-                "  level {level} ({risk}, action {action:<20}) {:5.1}%",
-                share * 100.0
-            );
-        }
-    }
-    println!("time share per body region score:");
-    for r in &s.regions {
-        let name = match r.side {
-            Some(Side::Left) => format!("left {}", r.region.name()),
-            Some(Side::Right) => format!("right {}", r.region.name()),
-            None => r.region.name().to_owned(),
-        };
-        let shares: Vec<String> = r
-            .share_by_score
-            .iter()
-            .map(|(score, share)| format!("{score}: {:.1}%", share * 100.0))
-            .collect();
-        println!("  {name:<16} {}", shares.join("  "));
-    }
-    println!(
-        "exposure over time (stretches at or above a level; a gap or an unscored frame ends one):"
-    );
-    let line = |name: &str, e: &[ergocell_ergonomics::summary::Exposure]| {
-        let parts: Vec<String> = e
-            .iter()
-            .filter(|x| x.episodes > 0)
-            .map(|x| {
-                format!(
-                    ">={}: {} episode(s), longest {:.1} s, {:.1} s in all",
-                    x.at_least, x.episodes, x.longest_secs, x.total_secs
-                )
-            })
-            .collect();
-        if !parts.is_empty() {
-            println!("  {name:<16} {}", parts.join("; "));
-        }
-    };
-    line("action level", &s.action_level_exposure);
-    line("REBA level", &s.reba_action_level_exposure);
-    for r in &s.regions {
-        let name = match r.side {
-            Some(Side::Left) => format!("left {}", r.region.name()),
-            Some(Side::Right) => format!("right {}", r.region.name()),
-            None => r.region.name().to_owned(),
-        };
-        line(&name, &r.exposure);
-    }
-    if !s.static_postures.is_empty() {
-        println!(
-            "static postures (ISO 11226: held > {STATIC_MIN_SECS} s outside the acceptable zone; trunk 20°–60° for at most 4 min at 20° down to 1 min at 60°, beyond 60° or extended (unless the task's trunk is supported) not acceptable; neck beyond 25° or extended not acceptable; upper arm beyond 60° not acceptable, 20°–60° time-limited by a curve no readable source gives):"
-        );
-        for p in &s.static_postures {
-            let worst = p
-                .holds
-                .iter()
-                .filter(|h| h.exceeded)
-                .max_by(|a, b| a.duration_secs.total_cmp(&b.duration_secs));
-            println!(
-                "  {:<15} {} static hold(s), {} not acceptable, {} with no known limit (for the ergonomist), longest {:.1} s{}",
-                p.part.name(),
-                p.static_holds,
-                p.exceeded,
-                p.limit_unknown,
-                p.longest_secs,
-                worst.map_or(String::new(), |h| {
-                    let why = match h.limit_secs {
-                        Some(l) if h.not_acceptable_secs <= STATIC_MIN_SECS => {
-                            format!("longer than the {l:.0} s allowed at its largest angle")
-                        }
-                        _ => format!(
-                            "{:.1} s of it in a zone not acceptable at any duration",
-                            h.not_acceptable_secs
-                        ),
-                    };
-                    format!(
-                        "; worst: {:.1} s from {:.1} s, up to {:.0}°: {why}",
-                        h.duration_secs,
-                        h.start_nanos.saturating_sub(t0) as f64 * 1e-9,
-                        h.peak_deg,
-                    )
-                })
-            );
-        }
-    }
-    if !s.phases.is_empty() {
-        println!("task segments (from the skeleton: walking, floor pick, in place):");
-        for p in &s.phases {
-            let levels: Vec<String> = p
-                .action_level_share
-                .iter()
-                .enumerate()
-                .map(|(k, x)| format!("AL{} {:.0}%", k + 1, x * 100.0))
-                .collect();
-            println!(
-                "  {:<10} {:6.1} s ({:4.1}% of the time, {} episode(s)); {}; peak grand score {}",
-                p.phase,
-                p.duration_secs,
-                p.time_share * 100.0,
-                p.episodes,
-                levels.join(" "),
-                p.peak_grand_score.map_or("-".to_owned(), |x| x.to_string())
-            );
-        }
-    }
-    let raised: Vec<String> = BodyRegion::ALL
-        .iter()
-        .map(|region| {
-            let n = events
-                .iter()
-                .filter(|e| {
-                    e.region == *region
-                        && e.kind == ergocell_ergonomics::warnings::WarningKind::Raised
-                })
-                .count();
-            format!("{} {n}", region.name())
-        })
-        .collect();
-    println!("warnings raised per region: {}", raised.join(", "));
 }
