@@ -12,7 +12,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::messages;
-use crate::recording::{topics, McapRecorder, RecordingError};
+use crate::recording::{self, topics, McapRecorder, RecordingError};
 use ergocell_bridge::msg::{Header, SessionState};
 use ergocell_cell::{CellError, Pipeline};
 use ergocell_ergonomics::height::ClassThresholds;
@@ -173,20 +173,15 @@ pub fn record(
         for output in pipeline.push_views(now, tick.frame.views) {
             for tracked in output?.tracked {
                 let assessment = tracked.assessment?;
-                rec.write(
-                    topics::OPERATOR_POSE,
-                    now,
-                    &messages::operator_pose_message(&tracked.skeleton, Some(&assessment)),
-                )?;
-                rec.write(
-                    topics::ERGONOMICS,
-                    now,
-                    &messages::ergonomic_message(&assessment),
-                )?;
-                rec.write(topics::REBA, now, &messages::reba_message(&assessment))?;
-                for w in &tracked.warnings {
-                    rec.write(topics::WARNINGS, now, &messages::warning_message(w))?;
-                }
+                // The messages a session sends for a frame and its warnings, recorded alike.
+                let mut out = messages::frame_messages(&tracked.skeleton, Some(&assessment));
+                out.extend(
+                    tracked
+                        .warnings
+                        .iter()
+                        .map(|w| messages::Outgoing::Warning(messages::warning_message(w))),
+                );
+                recording::record(&mut rec, now, &out)?;
             }
         }
         rec.write(

@@ -51,6 +51,28 @@ fn before_and_after_recordings_differ_in_the_handover_only_and_are_deterministic
         std::fs::read(&before2).unwrap(),
         "same seed, same bytes"
     );
+    // Each fused frame is recorded as a session records it (`messages::frame_messages`): its
+    // skeleton markers, operator pose, RULA and REBA state, one of each.
+    let bytes = std::fs::read(&before).unwrap();
+    let mut per_topic = std::collections::BTreeMap::<String, usize>::new();
+    for m in mcap::MessageStream::new(&bytes).unwrap() {
+        *per_topic
+            .entry(m.unwrap().channel.topic.clone())
+            .or_default() += 1;
+    }
+    let frames = per_topic[ergocell_bridge::topics::OPERATOR_POSE];
+    assert!(frames > 50, "{per_topic:?}");
+    for topic in [
+        ergocell_bridge::topics::SKELETON,
+        ergocell_bridge::topics::ERGONOMICS,
+        ergocell_bridge::topics::REBA,
+    ] {
+        assert_eq!(
+            per_topic.get(topic),
+            Some(&frames),
+            "{topic}: {per_topic:?}"
+        );
+    }
 
     let html = dir.join("compare.html");
     let out = Command::new(env!("CARGO_BIN_EXE_ergocell"))

@@ -65,22 +65,29 @@ pub fn step_messages(
                 skeleton,
                 assessment,
                 ..
-            } => {
-                let level = assessment
-                    .as_ref()
-                    .and_then(|a| a.headline().map(|h| h.scores.action_level))
-                    .unwrap_or(0);
-                out.push(Outgoing::Skeleton(skeleton_message(skeleton, level)));
-                out.push(Outgoing::OperatorPose(operator_pose_message(
-                    skeleton,
-                    assessment.as_deref(),
-                )));
-                if let Some(a) = assessment {
-                    out.push(Outgoing::Ergonomics(ergonomic_message(a)));
-                    out.push(Outgoing::Reba(reba_message(a)));
-                }
-            }
+            } => out.extend(frame_messages(skeleton, assessment.as_deref())),
         }
+    }
+    out
+}
+
+/// The messages of one fused frame: its skeleton markers (coloured by the headline action level),
+/// its operator pose and, when it was assessed, its RULA and REBA states. The session's frames
+/// ([`step_messages`]) and the twin's recordings (`sim adaptation --record-height`) both send these.
+pub fn frame_messages(
+    skeleton: &ergocell_skeleton::Skeleton3,
+    assessment: Option<&FrameAssessment>,
+) -> Vec<Outgoing> {
+    let level = assessment
+        .and_then(|a| a.headline().map(|h| h.scores.action_level))
+        .unwrap_or(0);
+    let mut out = vec![
+        Outgoing::Skeleton(skeleton_message(skeleton, level)),
+        Outgoing::OperatorPose(operator_pose_message(skeleton, assessment)),
+    ];
+    if let Some(a) = assessment {
+        out.push(Outgoing::Ergonomics(ergonomic_message(a)));
+        out.push(Outgoing::Reba(reba_message(a)));
     }
     out
 }
