@@ -32,7 +32,7 @@ use ergocell_perception::{import, rig_file, CameraRig, KeypointFormat};
 use ergocell_robot::lock::{ApprovalsFile, LockFile};
 use ergocell_robot::{CellConfig, RobotModel, TrajectoryClass, TrajectorySpec};
 
-use crate::review_server::{self, Limits, Served};
+use ergocell_web::review_server::{self, Limits, Served};
 
 fn text(data: &[u8]) -> Option<&str> {
     std::str::from_utf8(data).ok()

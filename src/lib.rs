@@ -2,8 +2,8 @@
 //! state machine and the cell loop live in `ergocell_cell` and are re-exported as [`session`], with
 //! the approvals crate's file port on this machine beside it: [`session::provider`], the trust
 //! anchor's place and read, [`trust_anchor`], the witness's place and append, [`witness`]), the
-//! operator display and review servers, the shipped reference cell; shared by the commands and by
-//! the integration tests. The ROS 2 backend
+//! shipped reference cell; shared by the commands and by the integration tests. The operator
+//! display and the review server are `ergocell_web`'s. The ROS 2 backend
 //! (message conversions, the MCAP recorder, the robot sink and its monitor) is
 //! `ergocell_ros_backend`; three of its modules are re-exported here as [`messages`], [`recording`]
 //! and [`robot_markers`].
@@ -11,10 +11,8 @@
 //! This half returns typed errors, except [`shipped::read_or_shipped`] (a file or its shipped copy,
 //! for the commands), which returns `anyhow`'s.
 
-pub mod display;
 pub mod fuzzing;
 pub mod input;
-pub mod review_server;
 pub mod session;
 pub mod shipped;
 pub mod sim_record;

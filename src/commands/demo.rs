@@ -193,9 +193,9 @@ fn instant() -> std::time::Instant {
 }
 
 /// The operator display's web server, on a thread of its own (the demo's loop is synchronous):
-/// [`ergocell::display`] behind the review server's limits, until the demo ends.
+/// [`ergocell_web::display`] behind the review server's limits, until the demo ends.
 struct DisplayServer {
-    display: std::sync::Arc<ergocell::display::Display>,
+    display: std::sync::Arc<ergocell_web::display::Display>,
     stop: Option<tokio::sync::oneshot::Sender<()>>,
     thread: Option<std::thread::JoinHandle<()>>,
 }
@@ -203,8 +203,8 @@ struct DisplayServer {
 impl DisplayServer {
     fn start(addr: std::net::SocketAddr) -> anyhow::Result<Self> {
         use anyhow::Context as _;
-        let display = ergocell::display::Display::new();
-        let (listener, bound) = ergocell::display::bind(addr)
+        let display = ergocell_web::display::Display::new();
+        let (listener, bound) = ergocell_web::display::bind(addr)
             .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
         let runtime = tokio::runtime::Builder::new_current_thread()
             .enable_all()
@@ -215,9 +215,10 @@ impl DisplayServer {
         let thread = std::thread::Builder::new()
             .name("display".to_owned())
             .spawn(move || {
-                let result = runtime.block_on(ergocell::display::serve(listener, served, async {
-                    let _ = stopped.await;
-                }));
+                let result =
+                    runtime.block_on(ergocell_web::display::serve(listener, served, async {
+                        let _ = stopped.await;
+                    }));
                 if let Err(e) = result {
                     tracing::error!("operator display: {e}");
                 }

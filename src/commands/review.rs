@@ -11,7 +11,7 @@
 //! writes over an existing file unless asked (`--force`), and never over one of its recordings.
 //!
 //! The server itself (its routes, Host rules and connection limits: 10 s header timeout, 30 s stall
-//! timeout, 64 connections) is `ergocell::review_server`. Ctrl-C (SIGINT) and SIGTERM stop it the
+//! timeout, 64 connections) is `ergocell_web::review_server`. Ctrl-C (SIGINT) and SIGTERM stop it the
 //! same way: no new connections, idle ones closed, responses under way get up to 1 s, exit 0.
 
 use std::io::Write as _;
@@ -22,9 +22,9 @@ use std::time::Duration;
 
 use anyhow::Context as _;
 use ergocell::input::{self, Kind};
-use ergocell::review_server::{self, Limits, Served, MAX_CONNECTIONS, SHUTDOWN_GRACE};
 use ergocell_review::read::split_sessions;
 use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
+use ergocell_web::review_server::{self, Limits, Served, MAX_CONNECTIONS, SHUTDOWN_GRACE};
 use tokio::net::TcpListener;
 
 use super::{output, signals, UsageError};

@@ -14,7 +14,6 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use anyhow::Context as _;
-use ergocell::display::Display;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
     CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption, OutputError, ReportEffect,
@@ -39,6 +38,7 @@ use ergocell_ros_backend::outputs::RosOutputs;
 use ergocell_ros_backend::recording::{self, topics, McapRecorder, Recording};
 use ergocell_ros_backend::robot::{announce_driver, radians_list, RobotInput, RosRobot};
 use ergocell_ros_backend::robot_markers::RobotGeometry;
+use ergocell_web::display::Display;
 use futures::StreamExt as _;
 
 use super::signals::{Signal, StopFlag, Stopped};
@@ -303,12 +303,13 @@ fn start_display(
     let Some(addr) = addr else {
         return Ok(None);
     };
-    let (listener, bound) = ergocell::display::bind(addr)
+    let (listener, bound) = ergocell_web::display::bind(addr)
         .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
     let display = Display::new();
     let served = display.clone();
     runtime.spawn(async move {
-        if let Err(e) = ergocell::display::serve(listener, served, std::future::pending()).await {
+        if let Err(e) = ergocell_web::display::serve(listener, served, std::future::pending()).await
+        {
             tracing::error!("operator display: {e}");
         }
     });

@@ -36,10 +36,10 @@ fn the_operator_display_keeps_answering_under_many_open_event_streams() {
         .enable_all()
         .build()
         .unwrap();
-    let (listener, bound) = ergocell::display::bind("127.0.0.1:0".parse().unwrap()).unwrap();
-    let display = ergocell::display::Display::new();
+    let (listener, bound) = ergocell_web::display::bind("127.0.0.1:0".parse().unwrap()).unwrap();
+    let display = ergocell_web::display::Display::new();
     let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
-    let server = runtime.spawn(ergocell::display::serve(listener, display, async {
+    let server = runtime.spawn(ergocell_web::display::serve(listener, display, async {
         let _ = stopped.await;
     }));
     // 80 pages on the event stream, more than the 64 connections the server holds at a time.
