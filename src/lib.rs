@@ -11,7 +11,6 @@
 //! This half returns typed errors, except [`shipped::read_or_shipped`] (a file or its shipped copy,
 //! for the commands), which returns `anyhow`'s.
 
-pub mod fuzzing;
 pub mod input;
 pub mod session;
 pub mod shipped;

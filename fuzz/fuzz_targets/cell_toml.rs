@@ -1,3 +1,3 @@
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell::fuzzing::cell_toml(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell_fuzzing::cell_toml(data));

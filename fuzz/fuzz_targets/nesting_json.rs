@@ -1,3 +1,3 @@
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell::fuzzing::nesting_json(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell_fuzzing::nesting_json(data));

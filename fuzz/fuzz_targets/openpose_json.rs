@@ -1,3 +1,3 @@
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell::fuzzing::openpose_json(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell_fuzzing::openpose_json(data));

@@ -1,3 +1,3 @@
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell::fuzzing::review_request(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell_fuzzing::review_request(data));

@@ -1,3 +1,3 @@
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell::fuzzing::rig(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| ergocell_fuzzing::rig(data));

@@ -1,6 +1,6 @@
 //! Replays the committed fuzz corpus (`fuzz/corpus/<target>/`) and every committed crash
 //! (`fuzz/artifacts/<target>/`) through the same entry points the fuzz targets call
-//! (`ergocell::fuzzing`), as ordinary tests: a parser change that brings back a crash, or breaks a
+//! (`ergocell_fuzzing`), as ordinary tests: a parser change that brings back a crash, or breaks a
 //! property an entry checks, fails CI without a fuzzer.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -15,7 +15,7 @@ macro_rules! targets {
         $(
             #[test]
             fn $name() {
-                assert!(replay(stringify!($name), ergocell::fuzzing::$name) > 0);
+                assert!(replay(stringify!($name), ergocell_fuzzing::$name) > 0);
             }
         )*
     };
@@ -43,7 +43,7 @@ targets!(
 );
 
 fn fuzz_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz")
 }
 
 fn files(dir: &Path) -> Vec<PathBuf> {
@@ -107,7 +107,7 @@ fn seeds_parse_and_broken_inputs_are_refused_without_panicking() {
     ] {
         let text = std::fs::read_to_string(fuzz_dir().join("corpus/rig").join(name)).unwrap();
         ergocell_perception::rig_file::parse_rig(&text, name).unwrap();
-        ergocell::fuzzing::rig(&text.as_bytes()[..text.len() / 2]);
+        ergocell_fuzzing::rig(&text.as_bytes()[..text.len() / 2]);
     }
     for class in ["c1", "c2", "c3"] {
         let path = fuzz_dir().join(format!("corpus/lock_toml/seed_{class}.lock.toml"));
@@ -116,10 +116,10 @@ fn seeds_parse_and_broken_inputs_are_refused_without_panicking() {
             serde_json::from_value(serde_json::json!(class)).unwrap();
         ergocell_robot::lock::LockFile::from_toml_str(class, &text).unwrap();
     }
-    ergocell::fuzzing::review_request(b"GET / HTTP/1.1\r\nHost: 127.0.0.1:8765\r\n\r\n");
-    ergocell::fuzzing::review_request(b"\x00\xff garbage");
-    ergocell::fuzzing::cdr_messages(&[0, 0, 1, 0, 0, 255, 255, 255, 255]);
-    ergocell::fuzzing::lock_toml(b"format = 3\n[[[");
+    ergocell_fuzzing::review_request(b"GET / HTTP/1.1\r\nHost: 127.0.0.1:8765\r\n\r\n");
+    ergocell_fuzzing::review_request(b"\x00\xff garbage");
+    ergocell_fuzzing::cdr_messages(&[0, 0, 1, 0, 0, 255, 255, 255, 255]);
+    ergocell_fuzzing::lock_toml(b"format = 3\n[[[");
 }
 
 /// Deep nesting in every syntax ergocell reads — XML (a URDF, a Qualisys calibration), TOML arrays
@@ -129,18 +129,18 @@ fn seeds_parse_and_broken_inputs_are_refused_without_panicking() {
 #[test]
 fn deep_nesting_is_refused_by_every_reader_without_overflowing_the_stack() {
     const ENTRIES: &[(&str, Entry)] = &[
-        ("rig", ergocell::fuzzing::rig),
-        ("openpose_json", ergocell::fuzzing::openpose_json),
-        ("caliscope_csv", ergocell::fuzzing::caliscope_csv),
-        ("landmarks_file", ergocell::fuzzing::landmarks_file),
-        ("urdf", ergocell::fuzzing::urdf),
-        ("trajectory_toml", ergocell::fuzzing::trajectory_toml),
-        ("cell_toml", ergocell::fuzzing::cell_toml),
-        ("lock_toml", ergocell::fuzzing::lock_toml),
-        ("approvals_toml", ergocell::fuzzing::approvals_toml),
-        ("rula_json", ergocell::fuzzing::rula_json),
-        ("detector_model", ergocell::fuzzing::detector_model),
-        ("place_points", ergocell::fuzzing::place_points),
+        ("rig", ergocell_fuzzing::rig),
+        ("openpose_json", ergocell_fuzzing::openpose_json),
+        ("caliscope_csv", ergocell_fuzzing::caliscope_csv),
+        ("landmarks_file", ergocell_fuzzing::landmarks_file),
+        ("urdf", ergocell_fuzzing::urdf),
+        ("trajectory_toml", ergocell_fuzzing::trajectory_toml),
+        ("cell_toml", ergocell_fuzzing::cell_toml),
+        ("lock_toml", ergocell_fuzzing::lock_toml),
+        ("approvals_toml", ergocell_fuzzing::approvals_toml),
+        ("rula_json", ergocell_fuzzing::rula_json),
+        ("detector_model", ergocell_fuzzing::detector_model),
+        ("place_points", ergocell_fuzzing::place_points),
     ];
     let n = 50_000;
     let open_close = |open: &str, close: &str| format!("{}{}", open.repeat(n), close.repeat(n));

@@ -1,5 +1,5 @@
 //! Entry points of the coverage-guided fuzz targets (`fuzz/`), one per parser that reads outside data,
-//! shared with the corpus replay test (`tests/fuzz_corpus.rs`) so that CI runs every committed corpus
+//! shared with the corpus replay test (`fuzzing/tests/corpus.rs`) so that CI runs every committed corpus
 //! input and every crash found through exactly the code the fuzzer ran.
 //!
 //! Each entry takes arbitrary bytes and must return: a parse error is a fine answer, a panic, a hang
@@ -38,18 +38,19 @@ fn text(data: &[u8]) -> Option<&str> {
     std::str::from_utf8(data).ok()
 }
 
-/// The shipped rig (four cameras `cam_0`…), which the CSV target reads against.
+/// The reference cell's rig (`config/rig.toml`, four cameras `cam_0`…), which the CSV and the
+/// placing targets read against.
 fn shipped_rig() -> &'static CameraRig {
     static RIG: OnceLock<CameraRig> = OnceLock::new();
-    RIG.get_or_init(|| {
-        let text =
-            crate::shipped::file(std::path::Path::new(crate::shipped::RIG)).unwrap_or_default();
-        match rig_file::parse_rig(text, "config/rig.toml") {
+    RIG.get_or_init(
+        || match rig_file::parse_rig(SHIPPED_RIG, "config/rig.toml") {
             Ok((rig, _)) => rig,
             Err(e) => panic!("the shipped rig does not parse: {e}"),
-        }
-    })
+        },
+    )
 }
+
+const SHIPPED_RIG: &str = include_str!("../../config/rig.toml");
 
 /// A rig file of any format `parse_rig` recognises. A rig that parses has finite, positive focal
 /// lengths on every camera (what the parser promises to check).
@@ -307,7 +308,7 @@ pub fn mcap_recording(data: &[u8]) {
     if let Ok(recording) = ergocell_review::read_recording(data) {
         let _ = ergocell_review::read::split_sessions(&recording);
     }
-    let _ = crate::recording::read_camera_landmarks(data);
+    let _ = ergocell_ros_backend::recording::read_camera_landmarks(data);
 }
 
 fn cdr_round_trip<M>(payload: &[u8])
