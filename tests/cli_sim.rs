@@ -115,6 +115,11 @@ fn bad_camera_arguments_are_usage_errors() {
         &["height", "--transport-delay-ms", "100"],
         &["warnings", "--transport-delay-ms", "nan"],
         &["warnings", "--transport-delay-ms", "10001"],
+        // the recording of one operator: adaptation on one seed only, 1.3 to 2.2 m, refused before
+        // the experiment runs
+        &["table1", "--record-height", "1.70"],
+        &["adaptation", "--seeds", "1..2", "--record-height", "1.70"],
+        &["adaptation", "--record-height", "2.5"],
     ] {
         let status = Command::new(env!("CARGO_BIN_EXE_ergocell"))
             .current_dir(&root)

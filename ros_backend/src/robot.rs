@@ -33,9 +33,9 @@ pub trait TrajectoryTopic: Send + Sync {
     fn publish(&self, message: JointTrajectory) -> Result<(), BackendError>;
 
     /// Blocks until every command published so far is acknowledged by every matched reliable
-    /// reader (the controller), or `max_wait` has passed: `true` when all were. A publish only
-    /// queues the sample; a process that exits right after its last hold must wait here, or the
-    /// hold may never leave the machine.
+    /// reader (the controller), or `max_wait` has passed: `true` when all were, and at once when no
+    /// reliable reader is matched. A publish only queues the sample; a process that exits right
+    /// after its last hold must wait here, or the hold may never leave the machine.
     fn delivered(&self, max_wait: std::time::Duration) -> Result<bool, BackendError>;
 }
 
@@ -124,9 +124,11 @@ impl<T: TrajectoryTopic> RosRobot<T> {
         }
     }
 
-    /// Waits (at most `max_wait`) until the controller has acknowledged every command sent so far
-    /// ([`TrajectoryTopic::delivered`]): called before the program exits, so that its last hold
-    /// reaches the controller. In action mode the hold's empty trajectory is on the same topic.
+    /// Waits (at most `max_wait`) until every matched reliable reader of the trajectory topic (the
+    /// controller) has acknowledged every command sent so far ([`TrajectoryTopic::delivered`]):
+    /// called before the program exits, so that its last hold reaches the controller. `true` at once
+    /// when no reliable reader is matched. In action mode the hold's empty trajectory is on the same
+    /// topic; the goal's cancel goes through the action client and is not waited for here.
     pub fn commands_delivered(&self, max_wait: std::time::Duration) -> Result<bool, BackendError> {
         self.topic.delivered(max_wait)
     }

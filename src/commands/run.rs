@@ -373,8 +373,33 @@ fn controller_task(
     Ok((Some(tx), reports))
 }
 
-/// How long `run` waits, before it exits, for the controller to acknowledge the last command.
+/// How long `run` waits, before it exits, for its last messages to be acknowledged.
 const COMMAND_ACK_WAIT: Duration = Duration::from_secs(2);
+
+/// Before the node and the process go: a publish only queues a sample, and the last step's messages
+/// (the hold, when a session ended early, then the session's final state and events) must not leave
+/// with the process. Waits, within one [`COMMAND_ACK_WAIT`], until every matched reliable reader
+/// has acknowledged them: the robot's commands first (said when the controller has not), then the
+/// session state, its events and the controller events. A topic nobody reads has nothing to wait
+/// for; a best-effort reader acknowledges nothing.
+fn wait_delivered(cell: &RunLoop) {
+    let deadline = instant() + COMMAND_ACK_WAIT;
+    let left = || deadline.saturating_duration_since(instant());
+    match cell.robot().commands_delivered(left()) {
+        Ok(true) => {}
+        Ok(false) => say(Some(format!(
+            "warning: the controller has not acknowledged the robot's last command within {} s \
+             (is its node still running?)",
+            COMMAND_ACK_WAIT.as_secs_f64()
+        ))),
+        Err(e) => say(Some(format!("warning: the robot's last command: {e}"))),
+    }
+    let p = &cell.outputs().ros.publishers;
+    // Best effort within what is left: these readers are told, not obeyed.
+    let _ = p.session_state.wait_for_acknowledgments(left());
+    let _ = p.session_events.wait_for_acknowledgments(left());
+    let _ = p.controller_events.wait_for_acknowledgments(left());
+}
 
 /// The sessions on the ROS 2 node: the cell loop fed by the camera topics, the monitor task, the
 /// controller's reports, the driver's state and a 20 ms tick, until the sessions are done or one
@@ -449,19 +474,7 @@ async fn serve(
     let outcome = driver.run(&mut station, stop).await;
     monitor.abort();
     let cell = driver.into_cell();
-    // The last command (a hold, when the session ended early) only queued: wait until the
-    // controller has acknowledged it before the node and the process go.
-    let delivered =
-        tokio::task::block_in_place(|| cell.robot().commands_delivered(COMMAND_ACK_WAIT));
-    match delivered {
-        Ok(true) => {}
-        Ok(false) => say(Some(format!(
-            "warning: the controller has not acknowledged the robot's last command within {} s \
-             (is its node still running?)",
-            COMMAND_ACK_WAIT.as_secs_f64()
-        ))),
-        Err(e) => say(Some(format!("warning: the robot's last command: {e}"))),
-    }
+    tokio::task::block_in_place(|| wait_delivered(&cell));
     if let Ok(stats) = stats.lock() {
         print_monitor(cell.robot(), &stats);
     }

@@ -433,7 +433,8 @@ fn height_options(c: &Common) -> anyhow::Result<HeightOptions> {
             &c.trajectories,
             &c.trajectories.join("approvals"),
         )
-        .handover_rula()?,
+        .handover_rula()
+        .map_err(|e| UsageError(e.to_string()))?,
         decision_sigmas: match c.decision_sigmas {
             Some(k) if !(k.is_finite() && (1.0..=4.0).contains(&k)) => {
                 anyhow::bail!(UsageError(format!(
@@ -531,6 +532,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 .map_err(|e| UsageError(format!("--fixed-lag-s: {e} (0: the causal filter)")))?;
         }
     }
+    // Checked before the experiment runs, which takes a while.
+    if let Some(h) = c.record_height {
+        if !matches!(args.experiment, Experiment::Adaptation) || c.seeds.is_some() {
+            return Err(UsageError(
+                "--record-height applies to adaptation on one seed only".to_owned(),
+            )
+            .into());
+        }
+        if !(1.3..=2.2).contains(&h) {
+            return Err(UsageError(format!("--record-height {h} is outside 1.3..=2.2 m")).into());
+        }
+    }
     if matches!(args.experiment, Experiment::HandoverRula) {
         return run_handover_rula(c);
     }
@@ -595,11 +608,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 figures: report::adaptation_figures(&r)?,
             };
             if let Some(h) = c.record_height {
-                if !(1.3..=2.2).contains(&h) {
-                    return Err(
-                        UsageError(format!("--record-height {h} is outside 1.3..=2.2 m")).into(),
-                    );
-                }
                 let [before, after] =
                     ergocell::sim_record::record_both(&setup, &handovers, h, c.cycles, &c.out_dir)?;
                 eprintln!(

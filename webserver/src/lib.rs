@@ -9,7 +9,8 @@
 //! the connection limits, and folding the session's events into the display's picture. What it must
 //! not do: decide anything about the session or the robot (it only shows what the cell did), read
 //! or write files (the pages come rendered from `ergocell_review`, the display's page is built in),
-//! or speak ROS. The binary binds the listeners and composes the servers with the commands.
+//! or speak ROS. The binary starts them from its commands: it binds the review's listener, the
+//! display binds its own ([`display::bind`]).
 
 pub mod display;
 pub mod review_server;
