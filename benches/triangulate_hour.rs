@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Instant;
 
-use ergocell_perception::rig_file::{to_anipose_toml, to_ergocell_toml};
+use ergocell_formats::rig_file::{to_anipose_toml, to_ergocell_toml};
 use ergocell_skeleton::Landmark;
 
 #[path = "../perception/benches/rig.rs"]

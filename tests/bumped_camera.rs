@@ -4,7 +4,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use ergocell_cell::pipeline::{Reconstruction, ReconstructionConfig};
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_sim::{CameraBump, Operator, SessionScript, SimConfig, Simulation};
 use nalgebra::Point3;
@@ -134,7 +134,7 @@ fn no_camera_of_a_real_calibrated_recording_is_flagged() {
     let xy = std::fs::read_to_string(dir.join("xy_pose33.csv")).unwrap();
     let mut stats = ergocell_perception::detections::ImportStats::default();
     let frames =
-        ergocell_perception::import::parse_caliscope_xy(&xy, "xy_pose33.csv", &rig, &mut stats)
+        ergocell_formats::import::parse_caliscope_xy(&xy, "xy_pose33.csv", &rig, &mut stats)
             .unwrap();
     assert!(frames.len() > 100);
     let mut r = Reconstruction::new(rig, ReconstructionConfig::default()).unwrap();

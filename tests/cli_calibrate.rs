@@ -8,7 +8,7 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use ergocell_perception::rig_file::{parse_rig, RigFormat};
+use ergocell_formats::rig_file::{parse_rig, RigFormat};
 
 fn sample(pattern: &str) -> String {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -227,7 +227,7 @@ fn place_puts_pairs_given_in_their_own_frames_back_in_the_cell() {
             .collect();
         let rig = CameraRig::new(cameras, &[], None).unwrap();
         let path = tmp(&format!("place-pair{k}.toml"));
-        std::fs::write(&path, ergocell_perception::rig_file::to_ergocell_toml(&rig)).unwrap();
+        std::fs::write(&path, ergocell_formats::rig_file::to_ergocell_toml(&rig)).unwrap();
         args.extend(["--pair".into(), path.display().to_string()]);
     }
     let mut points = String::new();

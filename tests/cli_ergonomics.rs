@@ -138,8 +138,8 @@ fn rula_track_and_height_on_a_synthetic_recording() {
 /// is scored, the wrist conservatively (RULA wrist score 3), uncertain, and the output says why.
 #[test]
 fn rula_track_scores_every_frame_of_a_detector_without_hand_points() {
+    use ergocell_formats::landmarks_file::{write_landmarks, LandmarksFormat};
     use ergocell_perception::detections::KeypointFormat;
-    use ergocell_perception::landmarks_file::{write_landmarks, LandmarksFormat};
     use ergocell_skeleton::Landmark;
 
     let kept: Vec<Landmark> = KeypointFormat::Body25B

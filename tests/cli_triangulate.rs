@@ -7,8 +7,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::landmarks_file::{read_landmarks, LandmarksFormat};
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, KeypointFormat};
 use ergocell_skeleton::{Landmark, LANDMARK_COUNT};
 use nalgebra::{Point3, Vector3};

@@ -11,7 +11,7 @@ use ergocell::session::dummy::DummyRobot;
 use ergocell::session::{SessionEvent, SessionMachine, SessionState};
 use ergocell_cell::CellSettings;
 use ergocell_ergonomics::{FrameAssessment, HeightStatus, WarningEvent};
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_robot::TrajectoryClass;
 use ergocell_sim::experiments::{run_pipeline, Setup};
 use ergocell_sim::{DetectorNoise, Operator, SessionScript, SimConfig, Simulation, Tick};

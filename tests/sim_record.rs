@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 use ergocell::sim_record::record_both;
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_sim::experiments::{Handovers, Setup};
 use ergocell_sim::DetectorNoise;
 use nalgebra::Point3;

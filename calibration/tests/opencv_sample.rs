@@ -274,7 +274,7 @@ fn triangulated_squares_measure_25_mm() {
 /// to the same cameras.
 #[test]
 fn calibrated_rig_round_trips_through_both_file_formats() {
-    use ergocell_perception::rig_file::{parse_rig, to_anipose_toml, to_ergocell_toml};
+    use ergocell_formats::rig_file::{parse_rig, to_anipose_toml, to_ergocell_toml};
     if ergocell_testdata::skip_without("data/opencv-stereo-sample") {
         return;
     }

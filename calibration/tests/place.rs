@@ -12,12 +12,9 @@ use rand::SeedableRng as _;
 use rand_distr::{Distribution as _, Normal};
 
 fn reference_rig() -> CameraRig {
-    ergocell_perception::rig_file::parse_rig(
-        include_str!("../../config/rig.toml"),
-        "config/rig.toml",
-    )
-    .unwrap()
-    .0
+    ergocell_formats::rig_file::parse_rig(include_str!("../../config/rig.toml"), "config/rig.toml")
+        .unwrap()
+        .0
 }
 
 /// Each pair of `rig` in its left camera's frame.

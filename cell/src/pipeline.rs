@@ -577,7 +577,7 @@ pub fn rig_up(rig: &CameraRig) -> Result<UpVector, CellError> {
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used)]
     use super::*;
-    use ergocell_perception::rig_file::parse_rig;
+    use ergocell_formats::rig_file::parse_rig;
 
     fn rig() -> CameraRig {
         parse_rig(include_str!("../../config/rig.toml"), "config/rig.toml")

@@ -99,7 +99,7 @@ fn provider(approvals: Approvals) -> ergocell_approvals::FileTrajectories {
 
 fn rig() -> CameraRig {
     let text = include_str!("../../config/rig.toml");
-    ergocell_perception::rig_file::parse_rig(text, "config/rig.toml")
+    ergocell_formats::rig_file::parse_rig(text, "config/rig.toml")
         .unwrap()
         .0
 }

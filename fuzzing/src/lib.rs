@@ -25,10 +25,11 @@ use std::sync::{Arc, OnceLock};
 use std::time::Duration;
 
 use ergocell_bridge::msg;
+use ergocell_formats::landmarks_file::{read_landmarks, LandmarksFormat};
+use ergocell_formats::{import, rig_file};
 use ergocell_perception::detections::ImportStats;
 use ergocell_perception::detections::Keypoint2;
-use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
-use ergocell_perception::{import, rig_file, CameraRig, KeypointFormat};
+use ergocell_perception::{CameraRig, KeypointFormat};
 use ergocell_robot::lock::{ApprovalsFile, LockFile};
 use ergocell_robot::{CellConfig, RobotModel, TrajectoryClass, TrajectorySpec};
 

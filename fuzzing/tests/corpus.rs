@@ -106,7 +106,7 @@ fn seeds_parse_and_broken_inputs_are_refused_without_panicking() {
         "seed_caliscope_config.toml",
     ] {
         let text = std::fs::read_to_string(fuzz_dir().join("corpus/rig").join(name)).unwrap();
-        ergocell_perception::rig_file::parse_rig(&text, name).unwrap();
+        ergocell_formats::rig_file::parse_rig(&text, name).unwrap();
         ergocell_fuzzing::rig(&text.as_bytes()[..text.len() / 2]);
     }
     for class in ["c1", "c2", "c3"] {

@@ -96,15 +96,3 @@ pub enum PerceptionError {
 
 /// Shorthand for results of this crate.
 pub type Result<T, E = PerceptionError> = std::result::Result<T, E>;
-
-pub(crate) fn parse_err(
-    source_name: &str,
-    field: impl Into<String>,
-    message: impl std::fmt::Display,
-) -> PerceptionError {
-    PerceptionError::Parse {
-        source_name: source_name.to_owned(),
-        field: field.into(),
-        message: message.to_string(),
-    }
-}

@@ -5,9 +5,7 @@
 //!
 //! - [`camera`]: pinhole + Brown–Conrady camera model, projection, iterative undistortion.
 //! - [`rig`]: M cameras in one world frame, grouped into stereo pairs.
-//! - [`rig_file`]: ergocell's rig TOML, Anipose/Pose2Sim and caliscope calibration import;
-//!   [`qualisys`]: Qualisys QTM's `.qca.txt` export.
-//! - [`detections`], [`import`]: 2D keypoints (BlazePose-33 order), OpenPose JSON and caliscope CSV;
+//! - [`detections`]: 2D keypoints (BlazePose-33 order) and what an import dropped;
 //!   [`video_geometry`]: a video that is not the calibrated image (scaled, letterboxed, cropped).
 //! - [`triangulation`]: the paper's DLT (SVD) and the robust N-view triangulator.
 //! - [`fusion`]: the paper's graph-Laplacian fusion (baseline) and ergocell's default fusion;
@@ -16,10 +14,12 @@
 //!   detector per camera, two people in the cell).
 //! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter;
 //!   [`fixed_lag`]: a centred moving mean (no lag, at the price of latency).
-//! - [`metrics`], [`landmarks_file`]: bone-length consistency and the 3D output formats;
+//! - [`metrics`]: bone-length consistency;
 //!   [`detector_error`]: the real detector's error, each view judged by the others.
 //!
-//! No I/O: callers pass file contents and get text back. Knows nothing of ROS or the robot.
+//! No I/O and no file formats: the outside world's files (rig and calibration files, OpenPose,
+//! caliscope, landmark CSV and TRC) are read and written by `ergocell_formats`, which sits on this
+//! crate. Knows nothing of ROS or the robot.
 
 pub mod body_prior;
 pub mod camera;
@@ -29,13 +29,9 @@ pub mod detector_error;
 pub mod error;
 pub mod fixed_lag;
 pub mod fusion;
-pub mod import;
-pub mod landmarks_file;
 pub mod metrics;
 pub mod operator_gate;
-pub mod qualisys;
 pub mod rig;
-pub mod rig_file;
 mod simd;
 pub mod temporal;
 pub mod triangulation;

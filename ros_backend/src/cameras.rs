@@ -96,7 +96,7 @@ mod tests {
     fn a_camera_that_keeps_sending_the_same_bad_message_is_said_once_and_counted_every_time() {
         let text = include_str!("../../config/rig.toml");
         let (rig, _) =
-            ergocell_perception::rig_file::parse_rig(text, "config/rig.toml").expect("shipped rig");
+            ergocell_formats::rig_file::parse_rig(text, "config/rig.toml").expect("shipped rig");
         let camera = rig.cameras()[0].id.as_str().to_owned();
         let mut inbox = CameraInbox::new(rig, Vec::new());
         for _ in 0..50 {

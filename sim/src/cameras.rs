@@ -1,7 +1,7 @@
 //! Simulated camera rigs.
 //!
 //! The reference cell's rig comes from `config/rig.toml`, parsed by the caller with
-//! `ergocell_perception::rig_file::parse_rig` (this crate does no file I/O). For "any number of
+//! `ergocell_formats::rig_file::parse_rig` (this crate does no file I/O). For "any number of
 //! cameras", [`ring_rig`] builds one: stereo pairs of 1280×720 cameras (intrinsics and lens distortion
 //! like the reference rig's, 12 cm baseline) spread on an arc around the operator's station, each
 //! looking at a point at chest height above the station. Projection is always the perception crate's

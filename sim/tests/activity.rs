@@ -9,7 +9,7 @@
 
 use ergocell_ergonomics::activity::{Activity, ActivityConfig, ActivityTracker};
 use ergocell_ergonomics::UpVector;
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_sim::experiments::{run_pipeline, Setup};
 use ergocell_sim::{
     DetectorNoise, FloorPick, Operator, Phase, PickStage, SessionScript, SimConfig, Simulation,

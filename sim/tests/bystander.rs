@@ -8,7 +8,7 @@
 use ergocell_cell::{CellSettings, Pipeline};
 use ergocell_ergonomics::UpVector;
 use ergocell_ergonomics::{HeightClass, HeightStatus};
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_sim::{Bystander, Operator, SessionScript, SimConfig, Simulation};
 use ergocell_skeleton::Landmark;

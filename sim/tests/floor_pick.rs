@@ -4,7 +4,7 @@
 
 use ergocell_ergonomics::angles::body_angles;
 use ergocell_ergonomics::UpVector;
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_sim::{
     DetectorNoise, FloorPick, Operator, Phase, PickStage, SessionScript, SimConfig, Simulation,

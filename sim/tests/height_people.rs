@@ -1,7 +1,7 @@
 //! The height experiment on measured people (ANSUR II): everyone served, the calibration round trip.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_sim::experiments::{height, Handovers, HeightOptions, Setup};
 use ergocell_sim::DetectorNoise;
 use nalgebra::Point3;

@@ -1,7 +1,7 @@
 //! The simulator against the perception crate's camera model, its determinism and its script.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, FusionEngine, FusionMethod};
 use ergocell_sim::{DetectorNoise, Operator, Phase, SessionScript, SimConfig, Simulation, Tick};
 use ergocell_skeleton::Landmark;

@@ -6,7 +6,7 @@
 use ergocell_cell::PipelineConfig;
 use ergocell_ergonomics::assess::BodyRegion;
 use ergocell_ergonomics::{AssessmentConfig, RulaAssessor, UpVector, WarningConfig};
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_sim::experiments::{Handovers, Setup};
 use ergocell_sim::tasks::{TaskKind, TaskMix};

@@ -19,7 +19,7 @@ use ergocell_calibration::{
     calibrate_camera, calibrate_stereo, detect_checkerboard, BoardSpec, CalibrationError,
     CameraViews, GrayImage, RigOptions, SolveOptions,
 };
-use ergocell_perception::rig_file::{to_anipose_toml, to_ergocell_toml};
+use ergocell_formats::rig_file::{to_anipose_toml, to_ergocell_toml};
 use ergocell_perception::{Camera, CameraId, CameraRig};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::{Point2, Rotation3, Vector3};
@@ -136,7 +136,7 @@ fn run_place(args: &PlaceArgs) -> anyhow::Result<()> {
     let mut groups = Vec::new();
     for path in &args.pairs {
         let text = ergocell::input::read_text(path, ergocell::input::Kind::Config)?;
-        let (rig, _) = ergocell_perception::rig_file::parse_rig(&text, &path.display().to_string())
+        let (rig, _) = ergocell_formats::rig_file::parse_rig(&text, &path.display().to_string())
             .map_err(|e| UsageError(e.to_string()))?;
         groups.push(rig);
     }

@@ -42,7 +42,7 @@ use ergocell_bridge::msg::{Header, JointState};
 use ergocell_cell::CellSettings;
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_sim::controller::{SimController, TwinRobot};

@@ -29,8 +29,8 @@ use ergocell_ergonomics::export::{self, FrameCsv};
 use ergocell_ergonomics::rula::{parse_worksheets, score_worksheet};
 use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
 use ergocell_ergonomics::{AssessmentConfig, RulaScores, TaskConfig, UpVector};
+use ergocell_formats::landmarks_file::{read_landmarks, LandmarksFormat};
 use ergocell_perception::fixed_lag::centered_mean;
-use ergocell_perception::landmarks_file::{read_landmarks, LandmarksFormat};
 use ergocell_skeleton::Skeleton3;
 use nalgebra::Vector3;
 
@@ -116,7 +116,7 @@ pub fn resolve_up(up: Option<UpVector>, rig: &Path) -> anyhow::Result<UpVector> 
             "the world's up direction is unknown: pass --up x,y,z or --rig <rig.toml> ({e:#})"
         ))
     })?;
-    let (rig, _) = ergocell_perception::rig_file::parse_rig(&text, &name)
+    let (rig, _) = ergocell_formats::rig_file::parse_rig(&text, &name)
         .map_err(|e| UsageError(e.to_string()))?;
     let up = rig.up().ok_or_else(|| {
         UsageError(format!(

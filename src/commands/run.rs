@@ -26,7 +26,7 @@ use ergocell_bridge::transport::{
     publish, CellTopics, RobotInterface, RosConfig, RosNode, Subscription,
 };
 use ergocell_cell::CellSettings;
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::video_geometry::VideoGeometry;
 use ergocell_perception::CameraRig;
 use ergocell_robot::TrajectoryClass;

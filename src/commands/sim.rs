@@ -21,8 +21,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::detector_error::DetectorErrorReport;
-use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::CameraRig;
 use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySpec};
 use ergocell_sim::detector_fit::{self, DetectorModel, FitSettings};

@@ -7,15 +7,15 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context as _};
 use ergocell::input::{self, Kind};
 use ergocell_cell::{Reconstruction, ReconstructionConfig};
-use ergocell_perception::detections::{Frame2, ImportStats};
-use ergocell_perception::detector_error;
-use ergocell_perception::import::{
+use ergocell_formats::import::{
     match_camera_folders, parse_caliscope_xy_bytes, scan_caliscope_xy, CaliscopeStream,
     OpenPosePlan,
 };
-use ergocell_perception::landmarks_file::{LandmarksEncoder, LandmarksFormat};
+use ergocell_formats::landmarks_file::{LandmarksEncoder, LandmarksFormat};
+use ergocell_formats::rig_file::parse_rig;
+use ergocell_perception::detections::{Frame2, ImportStats};
+use ergocell_perception::detector_error;
 use ergocell_perception::metrics::{PerCameraReprojection, StreamingStats};
-use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::temporal::OneEuroParams;
 use ergocell_perception::video_geometry::{parse_declarations, VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, FusionMethod, KeypointFormat};

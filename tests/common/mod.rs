@@ -156,7 +156,7 @@ pub fn skip_browser_test() -> bool {
 pub fn reference_rig() -> ergocell_perception::CameraRig {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(root.join("config/rig.toml")).unwrap();
-    ergocell_perception::rig_file::parse_rig(&text, "config/rig.toml")
+    ergocell_formats::rig_file::parse_rig(&text, "config/rig.toml")
         .unwrap()
         .0
 }

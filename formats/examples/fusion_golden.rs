@@ -12,13 +12,13 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use ergocell_formats::import::parse_caliscope_xy;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::detections::ImportStats;
-use ergocell_perception::import::parse_caliscope_xy;
-use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, Frame2, FusionEngine, FusionMethod};
 use ergocell_skeleton::Landmark;
 
-#[path = "../benches/rig.rs"]
+#[path = "../../perception/benches/rig.rs"]
 mod rig;
 
 /// One value per line: `name frame landmark axis value` (value NaN when not fused).

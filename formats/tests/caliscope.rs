@@ -6,11 +6,11 @@
 
 use std::path::PathBuf;
 
+use ergocell_formats::import::parse_caliscope_xy;
+use ergocell_formats::rig_file::{parse_rig, RigFormat};
 use ergocell_perception::detections::ImportStats;
 use ergocell_perception::fusion::{FusionEngine, FusionMethod};
-use ergocell_perception::import::parse_caliscope_xy;
 use ergocell_perception::metrics::{bone_length_variation_percent, common_bone_variation_percent};
-use ergocell_perception::rig_file::{parse_rig, RigFormat};
 use ergocell_perception::{CameraRig, Frame2};
 use ergocell_skeleton::Skeleton3;
 
@@ -164,16 +164,16 @@ fn the_streaming_reader_gives_the_frames_of_the_whole_file_parse() {
     let (rig, frames) = load();
     let text = read("xy_pose33.csv");
     let scan =
-        ergocell_perception::import::scan_caliscope_xy(text.as_bytes(), "xy_pose33.csv").unwrap();
+        ergocell_formats::import::scan_caliscope_xy(text.as_bytes(), "xy_pose33.csv").unwrap();
     assert_eq!(
         scan,
-        ergocell_perception::import::CaliscopeScan {
+        ergocell_formats::import::CaliscopeScan {
             frames: 267,
             sorted: true
         }
     );
     let mut stream =
-        ergocell_perception::import::CaliscopeStream::new(text.as_bytes(), "xy_pose33.csv", &rig)
+        ergocell_formats::import::CaliscopeStream::new(text.as_bytes(), "xy_pose33.csv", &rig)
             .unwrap();
     let streamed: Vec<Frame2> = stream.by_ref().collect();
     assert_eq!(streamed, frames);
@@ -188,12 +188,10 @@ fn the_streaming_reader_gives_the_frames_of_the_whole_file_parse() {
     let moved = lines.remove(1); // a row of sync 0, moved to the end
     lines.push(moved);
     let unsorted = lines.join("\n");
-    let scan =
-        ergocell_perception::import::scan_caliscope_xy(unsorted.as_bytes(), "u.csv").unwrap();
+    let scan = ergocell_formats::import::scan_caliscope_xy(unsorted.as_bytes(), "u.csv").unwrap();
     assert_eq!((scan.frames, scan.sorted), (267, false));
     let mut stream =
-        ergocell_perception::import::CaliscopeStream::new(unsorted.as_bytes(), "u.csv", &rig)
-            .unwrap();
+        ergocell_formats::import::CaliscopeStream::new(unsorted.as_bytes(), "u.csv", &rig).unwrap();
     assert_eq!(stream.by_ref().count(), 267);
     assert_eq!(stream.stats().skipped_records, 1);
 }

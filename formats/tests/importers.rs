@@ -10,11 +10,11 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use ergocell_perception::detections::ImportStats;
-use ergocell_perception::import::{
+use ergocell_formats::import::{
     assemble_openpose, parse_caliscope_xy, parse_caliscope_xy_bytes, CameraFiles, FramePairing,
 };
-use ergocell_perception::rig_file::parse_rig;
+use ergocell_formats::rig_file::parse_rig;
+use ergocell_perception::detections::ImportStats;
 use ergocell_perception::{
     CameraRig, Frame2, FusionEngine, FusionMethod, KeypointFormat, PerceptionError, View2,
 };

@@ -21,9 +21,9 @@
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 
-use crate::camera::{Camera, CameraId, Distortion, Intrinsics};
 use crate::error::{parse_err, Result};
-use crate::rig::CameraRig;
+use ergocell_perception::camera::{Camera, CameraId, Distortion, Intrinsics};
+use ergocell_perception::rig::CameraRig;
 
 /// QTM's sub-pixel unit: intrinsics (and, in its export, the distortion terms) are in 1/64 pixel.
 pub const SUBPIXELS_PER_PIXEL: f64 = 64.0;

@@ -8,10 +8,10 @@
 
 use std::path::PathBuf;
 
+use ergocell_formats::import::parse_caliscope_xy;
+use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::detections::ImportStats;
-use ergocell_perception::import::parse_caliscope_xy;
 use ergocell_perception::metrics::{bone_stats, common_bone_variation_percent};
-use ergocell_perception::rig_file::parse_rig;
 use ergocell_perception::temporal::{OneEuroFilter, OneEuroParams};
 use ergocell_perception::{FusionEngine, FusionMethod};
 use ergocell_skeleton::{Landmark, Skeleton3, BONES, LANDMARK_COUNT};

@@ -15,9 +15,9 @@ use nalgebra::{Matrix3, Rotation3, Vector3};
 use serde::{Deserialize, Serialize};
 use toml::Value;
 
-use crate::camera::{Camera, CameraId, Distortion, Intrinsics};
 use crate::error::{parse_err, PerceptionError, Result};
-use crate::rig::CameraRig;
+use ergocell_perception::camera::{Camera, CameraId, Distortion, Intrinsics};
+use ergocell_perception::rig::CameraRig;
 
 /// Which calibration format a file is in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

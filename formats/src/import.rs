@@ -20,9 +20,9 @@ use ergocell_skeleton::LANDMARK_COUNT;
 use nalgebra::Point2;
 use serde::Deserialize;
 
-use crate::detections::{Frame2, ImportStats, Keypoint2, KeypointFormat, View2};
 use crate::error::{parse_err, Result};
-use crate::rig::{CameraIndex, CameraRig};
+use ergocell_perception::detections::{Frame2, ImportStats, Keypoint2, KeypointFormat, View2};
+use ergocell_perception::rig::{CameraIndex, CameraRig};
 
 /// One person of an OpenPose frame, already mapped to BlazePose order.
 #[derive(Debug, Clone, PartialEq)]
