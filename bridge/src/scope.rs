@@ -17,8 +17,9 @@
 //!   interfaces) in the cell config. When the config and the environment both set a range and they
 //!   differ, the start is refused: the narrower intent is not guessed.
 //!
-//! This module only decides; [`crate::transport::RosNode`] applies it to the participant. It does no
-//! I/O: the binary reads the environment and passes the values in.
+//! This module decides; [`crate::transport::RosNode`] applies it to the participant. It reads no
+//! environment (the binary reads it and passes the values in); its one contact with the network is
+//! [`multicast_note`], which asks the kernel once whether discovery's multicast group can be joined.
 
 use std::fmt;
 use std::net::{IpAddr, Ipv4Addr};
@@ -169,6 +170,53 @@ impl fmt::Display for NetworkScope {
     }
 }
 
+/// DDS discovery's multicast group (SPDP, every domain: RTPS 2.x §9.6.1.4.1).
+const DISCOVERY_GROUP: std::net::Ipv4Addr = std::net::Ipv4Addr::new(239, 255, 0, 1);
+
+/// One line when this machine cannot join DDS discovery's multicast group on any interface the
+/// participant may use (a container or network namespace with loopback only, an interface without
+/// multicast): what it means for discovery, said once instead of RustDDS's per-message warnings.
+/// `None` when a join succeeds, or when the scope does not look beyond this machine.
+pub fn multicast_note(scope: &NetworkScope) -> Option<String> {
+    use std::net::UdpSocket;
+    let interfaces: Vec<Ipv4Addr> = match scope.participant_filter().0 {
+        // No list: the kernel picks the interface from its routes, as for any multicast join.
+        None => vec![Ipv4Addr::UNSPECIFIED],
+        Some(list) => list
+            .into_iter()
+            .filter_map(|a| match a {
+                IpAddr::V4(a) if !a.is_loopback() => Some(a),
+                _ => None,
+            })
+            .collect(),
+    };
+    if interfaces.is_empty() {
+        return None; // LOCALHOST or OFF: discovery is not meant to leave this machine
+    }
+    let socket = match UdpSocket::bind((Ipv4Addr::UNSPECIFIED, 0)) {
+        Ok(s) => s,
+        Err(e) => {
+            return Some(format!(
+                "DDS discovery: no UDP socket could be opened ({e})"
+            ))
+        }
+    };
+    let mut last_error = None;
+    for interface in &interfaces {
+        match socket.join_multicast_v4(&DISCOVERY_GROUP, interface) {
+            Ok(()) => return None,
+            Err(e) => last_error = Some(e),
+        }
+    }
+    let why = last_error.map_or_else(String::new, |e| format!(": {e}"));
+    Some(format!(
+        "DDS discovery: no multicast on this machine (joining {DISCOVERY_GROUP}{why}): ROS 2 nodes \
+         on other machines (edge cameras, the robot's driver) cannot discover this cell; nodes on this \
+         machine still can, over loopback. Give the cell-network interface multicast \
+         (docs/integrator.md, troubleshooting)."
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -244,5 +292,39 @@ mod tests {
             NetworkScope::resolve(None, Some(&[Ipv4Addr::UNSPECIFIED]), &ScopeEnv::default())
                 .is_err()
         );
+    }
+}
+
+#[cfg(test)]
+mod multicast_tests {
+    use super::*;
+    use std::net::Ipv4Addr;
+
+    fn scope(range: DiscoveryRange, interfaces: Option<&[Ipv4Addr]>) -> NetworkScope {
+        let env = ScopeEnv {
+            automatic_discovery_range: None,
+            static_peers: None,
+            localhost_only: None,
+        };
+        NetworkScope::resolve(Some(range), interfaces, &env).expect("a valid scope")
+    }
+
+    #[test]
+    fn multicast_note_only_where_discovery_should_leave_the_machine() {
+        // An interface this machine does not have (TEST-NET-1, RFC 5737): no join can succeed.
+        let absent = [Ipv4Addr::new(192, 0, 2, 1)];
+        let note = multicast_note(&scope(DiscoveryRange::Subnet, Some(&absent)))
+            .expect("a join on an absent interface fails");
+        assert!(note.starts_with("DDS discovery: no multicast"), "{note}");
+        assert!(
+            note.contains("239.255.0.1") && !note.contains('\n'),
+            "{note}"
+        );
+        // Discovery kept on this machine, or off: nothing to say.
+        assert_eq!(
+            multicast_note(&scope(DiscoveryRange::Localhost, None)),
+            None
+        );
+        assert_eq!(multicast_note(&scope(DiscoveryRange::Off, None)), None);
     }
 }

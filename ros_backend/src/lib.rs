@@ -13,15 +13,20 @@
 //! - [`outputs`]: the cell's publishers and recorder as one [`ergocell_cell::session::CellOutputs`].
 //! - [`clock`]: the wall clock at this boundary, advanced monotonically ([`clock::SessionClock`]).
 //! - [`robot_markers`]: the robot's TCP and handover point for the recording's markers.
+//! - [`station`]: `run`'s station, the cell's inputs on ROS 2 handed to the session driver one at a
+//!   time; [`console`]: what `run` says (its start, the sessions' summaries, the monitor's and the
+//!   steps' timings) as text.
 //!
 //! The binary's `run` composes these around [`ergocell_cell::session::CellLoop`]; the topics, QoS,
 //! node and security are `ergocell_bridge`'s.
 
 pub mod cameras;
 pub mod clock;
+pub mod console;
 pub mod messages;
 pub mod monitor;
 pub mod outputs;
 pub mod recording;
 pub mod robot;
 pub mod robot_markers;
+pub mod station;

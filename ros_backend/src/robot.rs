@@ -562,6 +562,42 @@ pub fn announce_readiness<T: TrajectoryTopic>(
     Some(format!("driver: {text}"))
 }
 
+/// The FollowJointTrajectory task's command channel, `None` with the topic interface.
+pub type ControllerCommands = Option<tokio::sync::mpsc::UnboundedSender<ControllerCommand>>;
+
+/// The FollowJointTrajectory task (with `robot_interface = "action"`), spawned on the current tokio
+/// runtime with the Feedback layout of `[ros] distro`: its command channel for [`RosRobot::new`] and
+/// its reports for the station. With the topic interface there is no task: no channel, and reports
+/// that never come.
+pub fn spawn_controller(
+    node: &mut ergocell_bridge::transport::RosNode,
+    ros: &RosConfig,
+) -> Result<
+    (
+        ControllerCommands,
+        tokio::sync::mpsc::UnboundedReceiver<ControllerReport>,
+    ),
+    ergocell_bridge::BridgeError,
+> {
+    use ergocell_bridge::action::{FeedbackLayout, FeedbackWithIndex, FeedbackWithoutIndex};
+    use ergocell_bridge::controller::run_controller;
+    let (reports_tx, reports) = tokio::sync::mpsc::unbounded_channel::<ControllerReport>();
+    if ros.robot_interface == ergocell_bridge::transport::RobotInterface::Topic {
+        return Ok((None, reports));
+    }
+    let (tx, rx) = tokio::sync::mpsc::unbounded_channel();
+    let timeout = std::time::Duration::from_secs(5);
+    let name = &ros.follow_joint_trajectory_action;
+    if ros.feedback_layout() == Some(FeedbackLayout::WithIndex) {
+        let client = node.follow_joint_trajectory_client::<FeedbackWithIndex>(name)?;
+        tokio::spawn(run_controller(client, rx, reports_tx, timeout));
+    } else {
+        let client = node.follow_joint_trajectory_client::<FeedbackWithoutIndex>(name)?;
+        tokio::spawn(run_controller(client, rx, reports_tx, timeout));
+    }
+    Ok((Some(tx), reports))
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used)]
@@ -694,3 +730,4 @@ mod tests {
         assert!(rx.try_recv().is_err(), "nothing sent");
     }
 }
+

@@ -26,7 +26,10 @@
 //!   with its faults as data, run under the cell's own execution watch ([`controller::TwinRobot`]).
 //! - [`faults`]: the demo's faults (silent cameras, a class change request, the robot side's
 //!   faults) as a schedule timed from the cell's cycle, a file a user or a test can change.
-//! - [`source`]: the simulator as the cell's landmark source ([`source::SimSource`]).
+//! - [`source`]: the simulator as the cell's landmark source ([`source::SimSource`]);
+//!   [`station`]: the twin around the cell loop as the session driver's station (`ergocell demo`:
+//!   the cameras with the fault schedule, the twin robot's reports, the operator following the
+//!   decided class, the status and soak lines).
 //! - [`session`]: the session script (walk in → idle → N handovers → walk out) and the simulation
 //!   clock; each [`Tick`] carries the ground truth and every camera's [`View2`](ergocell_perception::View2).
 //!
@@ -76,6 +79,7 @@ pub mod report;
 pub mod seeds;
 pub mod session;
 pub mod source;
+pub mod station;
 pub mod tasks;
 pub mod warning_trust;
 

@@ -33,9 +33,8 @@ use ergocell::recording::{self, topics, McapRecorder, Recording};
 use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    trajectory_class, CellLoop, CellOutputs, Driver, ExitStatus, Input, Interruption,
-    LandmarkSource, Leg, OutputError, ReportEffect, RobotCommand, RobotReport, RobotSink,
-    SessionEnd, SessionEvent, SessionMachine, SessionState, Station, Step, Timed,
+    trajectory_class, CellLoop, CellOutputs, Driver, ExitStatus, Interruption, OutputError,
+    ReportEffect, RobotReport, SessionEnd, SessionEvent, SessionMachine,
 };
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
@@ -46,10 +45,16 @@ use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_sim::controller::{SimController, TwinRobot};
-use ergocell_sim::faults::{FaultPlayer, FaultSchedule, Silenced};
+use ergocell_sim::faults::{FaultPlayer, FaultSchedule};
 use ergocell_sim::source::SimSource;
-use ergocell_sim::{CameraBump, FloorPick, Operator, Phase, SessionScript, SimConfig, Simulation};
+use ergocell_sim::station::{
+    ClassHandover, TwinHooks, TwinOutputs, TwinStation, JOINT_STATE_PERIOD_NANOS,
+    JOINT_STATE_TIMEOUT_S,
+};
+use ergocell_sim::{CameraBump, FloorPick, Operator, SessionScript, SimConfig, Simulation};
+use ergocell_web::display::DisplayThread;
 use nalgebra::Point3;
+use std::time::Duration;
 
 use super::signals::{StopFlag, Stopped};
 use super::{output, UsageError};
@@ -192,110 +197,6 @@ fn instant() -> std::time::Instant {
     std::time::Instant::now()
 }
 
-/// The operator display's web server, on a thread of its own (the demo's loop is synchronous):
-/// [`ergocell_web::display`] behind the review server's limits, until the demo ends.
-struct DisplayServer {
-    display: std::sync::Arc<ergocell_web::display::Display>,
-    stop: Option<tokio::sync::oneshot::Sender<()>>,
-    thread: Option<std::thread::JoinHandle<()>>,
-}
-
-impl DisplayServer {
-    fn start(addr: std::net::SocketAddr) -> anyhow::Result<Self> {
-        use anyhow::Context as _;
-        let display = ergocell_web::display::Display::new();
-        let (listener, bound) = ergocell_web::display::bind(addr)
-            .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
-        let runtime = tokio::runtime::Builder::new_current_thread()
-            .enable_all()
-            .build()
-            .context("tokio runtime for the display")?;
-        let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
-        let served = display.clone();
-        let thread = std::thread::Builder::new()
-            .name("display".to_owned())
-            .spawn(move || {
-                let result =
-                    runtime.block_on(ergocell_web::display::serve(listener, served, async {
-                        let _ = stopped.await;
-                    }));
-                if let Err(e) = result {
-                    tracing::error!("operator display: {e}");
-                }
-            })
-            .context("display thread")?;
-        println!("  operator display: http://{bound}/ (the session runs in real time)");
-        Ok(Self {
-            display,
-            stop: Some(stop),
-            thread: Some(thread),
-        })
-    }
-}
-
-impl Drop for DisplayServer {
-    fn drop(&mut self) {
-        if let Some(stop) = self.stop.take() {
-            let _ = stop.send(());
-        }
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
-        }
-    }
-}
-
-/// The soak report's accumulator: step wall times since the last line.
-struct Soak {
-    every_nanos: i64,
-    next_nanos: i64,
-    steps_us: Vec<f64>,
-}
-
-impl Soak {
-    /// A report every `minutes` of simulated time from `start`; prints the first line.
-    fn new(minutes: u64, start: i64) -> Self {
-        let every_nanos = i64::try_from(minutes).unwrap_or(1) * 60_000_000_000;
-        println!(
-            "  soak: t=  0.00 h  RSS {} MiB",
-            rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}"))
-        );
-        Self {
-            every_nanos,
-            next_nanos: start + every_nanos,
-            steps_us: Vec::new(),
-        }
-    }
-
-    /// One step's wall time; a line when one is due.
-    fn step(&mut self, now: i64, start: i64, step_started: std::time::Instant) {
-        self.steps_us
-            .push(step_started.elapsed().as_secs_f64() * 1e6);
-        if now >= self.next_nanos {
-            self.next_nanos += self.every_nanos;
-            self.line(secs(now, start) / 3600.0);
-        }
-    }
-
-    fn line(&mut self, elapsed_h: f64) {
-        self.steps_us.sort_by(f64::total_cmp);
-        let q = |p: f64| {
-            self.steps_us
-                .get(((self.steps_us.len() as f64 - 1.0) * p).round() as usize)
-                .copied()
-                .unwrap_or(f64::NAN)
-        };
-        println!(
-            "  soak: t={elapsed_h:6.2} h  RSS {} MiB  step p50 {:.0} µs  p99 {:.0} µs  max {:.0} µs  ({} steps)",
-            rss_mib().map_or("n/a".to_owned(), |m| format!("{m:.1}")),
-            q(0.5),
-            q(0.99),
-            q(1.0),
-            self.steps_us.len()
-        );
-        self.steps_us.clear();
-    }
-}
-
 /// The demo's temporary folder (its demo approvals), removed on every way out, a panic included.
 struct TempDir(PathBuf);
 
@@ -422,7 +323,9 @@ fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
 /// the recording, in that order for every step.
 struct DemoOutputs {
     recording: Recording,
-    display: Option<DisplayServer>,
+    display: Option<DisplayThread>,
+    /// Each class's robot geometry (the recording's TCP and handover markers).
+    geometries: Vec<(TrajectoryClass, RobotGeometry)>,
     start: i64,
     /// The newest frame's RULA, for the status line.
     rula: String,
@@ -437,7 +340,7 @@ impl CellOutputs for DemoOutputs {
     ) -> Result<(), OutputError> {
         report(events, now, self.start);
         if let Some(d) = &self.display {
-            d.display.update(machine, events);
+            d.display().update(machine, events);
         }
         for e in events {
             if let SessionEvent::Frame {
@@ -463,6 +366,61 @@ impl CellOutputs for DemoOutputs {
 
     fn take_failure(&mut self) -> Option<OutputError> {
         self.recording.new_failure()
+    }
+}
+
+/// The twin's frames, reports and joint states recorded as a real cell's: the cameras' messages,
+/// the controller's events and the driver's readiness, the joint states and the robot's markers.
+impl TwinOutputs for DemoOutputs {
+    fn views(&mut self, rig: &CameraRig, now: i64, views: &[View2]) {
+        self.recording.with(|rec| {
+            views.iter().try_for_each(|v| {
+                let m = messages::landmarks_message(rig, v);
+                rec.write(&topics::camera(&m.camera_id), now, &m)
+            })
+        });
+    }
+
+    fn robot_report(&mut self, t: i64, report: &RobotReport, effect: &ReportEffect) {
+        if let Some(e) = messages::robot_report_message(t, report) {
+            self.recording
+                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
+        }
+        if let Some(readiness) = &effect.driver_readiness {
+            let e = messages::driver_readiness_message(t, readiness.as_ref());
+            self.recording
+                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
+        }
+    }
+
+    fn robot_state(
+        &mut self,
+        now: i64,
+        class: TrajectoryClass,
+        joints: &[String],
+        positions: Vec<f64>,
+    ) {
+        let js = JointState {
+            header: Header::new(now, ""),
+            name: joints.to_vec(),
+            position: positions,
+            ..JointState::default()
+        };
+        let geometry = self.geometries.iter().find(|(c, _)| *c == class);
+        self.recording.with(|rec| {
+            rec.write(topics::JOINT_STATES, now, &js)?;
+            if let Some((_, g)) = geometry {
+                if let Some(p) = g.tcp_world(&js) {
+                    let m = messages::robot_markers_message(now, Some(p), Some(g.handover_world()));
+                    rec.write(topics::ROBOT_MARKERS, now, &m)?;
+                }
+            }
+            Ok(())
+        });
+    }
+
+    fn rula_status(&self) -> String {
+        self.rula.clone()
     }
 }
 
@@ -782,9 +740,26 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         );
     }
     println!();
+    let display = match args.display {
+        Some(addr) => {
+            let d = DisplayThread::start(addr)
+                .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
+            println!(
+                "  operator display: http://{}/ (the session runs in real time)",
+                d.bound()
+            );
+            Some(d)
+        }
+        None => None,
+    };
+    let real_time = display.is_some();
     let outputs = DemoOutputs {
         recording: Recording::new(Some(rec)),
-        display: args.display.map(DisplayServer::start).transpose()?,
+        display,
+        geometries: handovers
+            .iter()
+            .map(|h| (h.class, h.geometry.clone()))
+            .collect(),
         start,
         rula: "RULA -".to_owned(),
     };
@@ -794,32 +769,38 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     if args.outcome.is_some() {
         cell = cell.with_command_log();
     }
-    let mut twin = Twin {
-        source: SimSource::new(sim),
-        faults: FaultPlayer::new(schedule),
-        handovers: &handovers,
-        geometry: own.geometry.clone(),
+    let hooks = TwinHooks {
+        say: Box::new(|line| println!("{line}")),
+        wall: Box::new(instant),
+        sleep: real_time.then(|| Box::new(std::thread::sleep) as Box<dyn Fn(Duration)>),
+        soak: args.soak_report.map(|minutes| {
+            let every = Duration::from_secs(minutes.saturating_mul(60));
+            (every, Box::new(rss_mib) as Box<dyn Fn() -> Option<f64>>)
+        }),
+    };
+    let mut twin = TwinStation::new(
+        SimSource::new(sim),
+        FaultPlayer::new(schedule),
+        handovers
+            .iter()
+            .map(|h| ClassHandover {
+                class: h.class,
+                point: h.point,
+            })
+            .collect(),
         true_class,
         joints,
-        rig: &rig,
+        &rig,
         start,
-        period_nanos: (1e9 / args.fps).round() as i64,
-        now: start,
-        views: None,
-        frame_step: false,
-        class_change: false,
-        script: ScriptState::default(),
-        last_status: start,
-        soak: args.soak_report.map(|minutes| Soak::new(minutes, start)),
-        wall_start: instant(),
-        step_started: instant(),
-    };
+        (1e9 / args.fps).round() as i64,
+        hooks,
+    );
     // One session, by the cell's rules (the session driver's); the twin's station is ready at once.
     let mut driver = Driver::new(cell, Some(1));
     let outcome = futures::executor::block_on(driver.run(&mut twin, &stop));
-    let now = twin.now;
-    if let Some(soak) = twin.soak.as_mut() {
-        soak.line(secs(now, start) / 3600.0);
+    let now = twin.now();
+    if let Some(line) = twin.soak_last_line() {
+        println!("{line}");
     }
     let cell = driver.into_cell();
     let (machine, robot, outputs) = cell.into_parts();
@@ -869,302 +850,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             }
             anyhow::bail!("the session did not end normally: {}", s.end_reason)
         }
-    }
-}
-
-/// The digital twin around the cell loop, as the session driver's station: the simulated cameras
-/// with the fault schedule, the twin robot's reports, both on the simulator's clock, and the
-/// simulated robot's joint states and markers recorded as a real cell's would be.
-struct Twin<'a> {
-    source: SimSource,
-    faults: FaultPlayer,
-    handovers: &'a [Handover],
-    /// The served class's robot geometry (its TCP and handover point, for the recording's markers).
-    geometry: RobotGeometry,
-    true_class: TrajectoryClass,
-    joints: Vec<String>,
-    rig: &'a CameraRig,
-    start: i64,
-    period_nanos: i64,
-    /// The simulator's clock: the time of the frame now being played.
-    now: i64,
-    /// The frame's views, polled and waiting for the robot side's reports up to `now` to be
-    /// handed over first.
-    views: Option<Vec<View2>>,
-    /// The last input handed over was the frame's views (the frame is done once it is stepped).
-    frame_step: bool,
-    class_change: bool,
-    script: ScriptState,
-    last_status: i64,
-    soak: Option<Soak>,
-    wall_start: std::time::Instant,
-    step_started: std::time::Instant,
-}
-
-type DemoLoop = CellLoop<TwinRobot, DemoOutputs>;
-
-/// Where the simulated operator's script is.
-#[derive(Default)]
-struct ScriptState {
-    /// The script is over (the cell is empty).
-    done: bool,
-    /// The operator is down for the floor pick.
-    picking: bool,
-}
-
-/// The twin's joint states: a KUKA driver's 250 Hz.
-const JOINT_STATE_PERIOD_NANOS: i64 = 4_000_000;
-/// Joint states stale after this long (`[ros] joint_state_timeout_s`'s default).
-const JOINT_STATE_TIMEOUT_S: f64 = 0.1;
-
-impl Station<TwinRobot, DemoOutputs> for Twin<'_> {
-    type Error = anyhow::Error;
-
-    fn name(&self) -> &'static str {
-        "simulator"
-    }
-
-    fn now_nanos(&mut self) -> i64 {
-        self.now
-    }
-
-    /// Per frame: the cameras polled, then the robot side's reports up to the frame's time (each
-    /// batch at its own time, as `run` steps on every report it receives), then the frame's views
-    /// with the fault schedule applied.
-    async fn next(&mut self, cell: &mut DemoLoop) -> anyhow::Result<Option<Timed>> {
-        let now = self.now;
-        if self.views.is_none() {
-            if cell.outputs().display.is_some() {
-                // real time: the page shows the session as it happens
-                let due =
-                    std::time::Duration::from_nanos(u64::try_from(now - self.start).unwrap_or(0));
-                if let Some(wait) = due.checked_sub(self.wall_start.elapsed()) {
-                    std::thread::sleep(wait);
-                }
-            }
-            self.step_started = instant();
-            self.views = Some(self.poll(now)?);
-        }
-        if let Some((t, reports)) = cell.robot_mut().advance(now) {
-            self.frame_step = false;
-            return Ok(Some(Timed::new(t, Input::Reports(reports))));
-        }
-        let mut views = self.views.take().unwrap_or_default();
-        self.class_change = self.apply_faults(cell, now, &mut views);
-        let rig = self.rig;
-        cell.outputs_mut().recording.with(|rec| {
-            views.iter().try_for_each(|v| {
-                let m = messages::landmarks_message(rig, v);
-                rec.write(&topics::camera(&m.camera_id), now, &m)
-            })
-        });
-        self.frame_step = true;
-        Ok(Some(Timed::new(now, Input::Views(views))))
-    }
-
-    /// Recorded as a real cell records its controller's events, and said.
-    fn reported(
-        &mut self,
-        cell: &mut DemoLoop,
-        t: i64,
-        report: &RobotReport,
-        effect: &ReportEffect,
-    ) -> anyhow::Result<()> {
-        if let Some(e) = messages::robot_report_message(t, report) {
-            cell.outputs_mut()
-                .recording
-                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
-        }
-        if let Some(failure) = &effect.failure {
-            println!("  t={:5.1} s  robot: {failure}", secs(t, self.start));
-        }
-        if let Some(readiness) = &effect.driver_readiness {
-            let e = messages::driver_readiness_message(t, readiness.as_ref());
-            cell.outputs_mut()
-                .recording
-                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
-            println!(
-                "  t={:5.1} s  driver: {}",
-                secs(t, self.start),
-                readiness.as_ref().map_or_else(
-                    || "configured and controlling".to_owned(),
-                    ToString::to_string
-                )
-            );
-        }
-        Ok(())
-    }
-
-    fn stepped(&mut self, cell: &mut DemoLoop, at: i64, step: &Step) -> anyhow::Result<()> {
-        self.follow_decision(&step.events, at)?;
-        // the frame's own step (not a report batch's, nor the early-end rules' alone) ends it
-        if !std::mem::take(&mut self.frame_step) {
-            return Ok(());
-        }
-        let now = self.now;
-        if cell.machine().state() == SessionState::Working {
-            // The first call counts: the moment the faults are timed from.
-            self.faults.working(now);
-        }
-        // A supervisor asks for another class mid-session (the schedule's request): refused.
-        if std::mem::take(&mut self.class_change) {
-            let other = if cell.machine().summary().class == Some(TrajectoryClass::C3) {
-                TrajectoryClass::C1
-            } else {
-                TrajectoryClass::C3
-            };
-            cell.request_class(now, other);
-        }
-        self.record_robot(cell, now);
-        if now - self.last_status >= 5_000_000_000 {
-            self.last_status = now;
-            let m = cell.machine();
-            println!(
-                "  t={:5.1} s  {:<18} cameras {}/{}  pairs tracking {}  {}",
-                secs(now, self.start),
-                m.state().name(),
-                m.cameras_fresh(),
-                self.rig.len(),
-                m.pairs_tracking(),
-                cell.outputs().rula
-            );
-        }
-        if let Some(soak) = self.soak.as_mut() {
-            soak.step(now, self.start, self.step_started);
-        }
-        self.now += self.period_nanos;
-        Ok(())
-    }
-
-    fn next_machine(&mut self, _cell: &mut DemoLoop) -> anyhow::Result<SessionMachine> {
-        anyhow::bail!("the demo plays one session")
-    }
-}
-
-impl Twin<'_> {
-    /// The simulated cameras' views at `now`; once the script is over the cell is empty and the
-    /// cameras keep publishing "nobody".
-    fn poll(&mut self, now: i64) -> anyhow::Result<Vec<View2>> {
-        if !self.script.done {
-            match self.source.poll(now)? {
-                Some(views) => {
-                    // The simulator's ground truth: when the operator bends down and stands up.
-                    let picking = self
-                        .source
-                        .last_tick
-                        .as_ref()
-                        .is_some_and(|t| matches!(t.truth.phase, Phase::FloorPick { .. }));
-                    if picking != self.script.picking {
-                        self.script.picking = picking;
-                        println!(
-                            "  t={:5.1} s  (simulator) {}",
-                            secs(now, self.start),
-                            if picking {
-                                "operator bends down for the dropped part (floor pick)"
-                            } else {
-                                "operator stands back up with the part"
-                            }
-                        );
-                    }
-                    return Ok(views);
-                }
-                None => self.script.done = true,
-            }
-        }
-        Ok((0..self.rig.len()).map(|k| View2::empty(k, now)).collect())
-    }
-
-    /// The fault schedule at `now`: silenced cameras' views dropped; whether a class change request
-    /// is due; a robot fault due is armed on the twin's controller. The robot's arrival with each
-    /// part is a moment the schedule is timed from.
-    fn apply_faults(&mut self, cell: &mut DemoLoop, now: i64, views: &mut Vec<View2>) -> bool {
-        if let Some((
-            sent,
-            RobotCommand::Execute {
-                leg: Leg::ToHandover,
-                trajectory,
-                ..
-            },
-        )) = cell.robot().controller.received.last()
-        {
-            let arrived = sent + (trajectory.duration_s() * 1e9).round() as i64;
-            self.faults
-                .arrived_with_part(cell.machine().summary().parts_taken + 1, arrived);
-        }
-        let fault = self.faults.step(now);
-        for f in fault.robot {
-            println!(
-                "  t={:5.1} s  (simulator) robot fault armed: {f:?}",
-                secs(now, self.start)
-            );
-            // Each was checked against the robot before the session started.
-            if let Err(e) = cell.robot_mut().controller.arm(now, f) {
-                println!("  (simulator) robot fault not played: {e}");
-            }
-        }
-        if fault.silenced != Silenced::None {
-            views.retain(|v| {
-                self.rig
-                    .camera(v.camera)
-                    .is_none_or(|c| !fault.silenced.drops(c.id.as_str()))
-            });
-        }
-        fault.class_change_request
-    }
-
-    /// Once the cell decides a class other than the operator's own, the simulated operator reaches
-    /// where that class's robot brings the part.
-    fn follow_decision(&mut self, events: &[SessionEvent], now: i64) -> anyhow::Result<()> {
-        for e in events {
-            let SessionEvent::ClassDecided { class, .. } = e else {
-                continue;
-            };
-            let decided = trajectory_class(*class);
-            if decided == self.true_class {
-                continue;
-            }
-            if let Some(h) = self.handovers.iter().find(|h| h.class == decided) {
-                let moved = self
-                    .source
-                    .simulation_mut()
-                    .retarget_handover(h.point, now)
-                    .context(
-                        "the simulated operator cannot reach the decided class's handover point",
-                    )?;
-                self.geometry = h.geometry.clone();
-                println!(
-                    "  t={:5.1} s  (simulator) the operator (class {}) reaches for class {decided}'s handover point ({moved} cycle(s))",
-                    secs(now, self.start),
-                    self.true_class
-                );
-            }
-        }
-        Ok(())
-    }
-
-    /// The simulated robot's joint state and TCP marker, recorded as a real cell's.
-    fn record_robot(&self, cell: &mut DemoLoop, now: i64) {
-        let Some(position) = cell.robot_mut().joint_positions(now, &self.joints) else {
-            return;
-        };
-        let js = JointState {
-            header: Header::new(now, ""),
-            name: self.joints.clone(),
-            position,
-            ..JointState::default()
-        };
-        let g = &self.geometry;
-        cell.outputs_mut().recording.with(|rec| {
-            rec.write(topics::JOINT_STATES, now, &js)?;
-            if let Some(p) = g.tcp_world(&js) {
-                rec.write(
-                    topics::ROBOT_MARKERS,
-                    now,
-                    &messages::robot_markers_message(now, Some(p), Some(g.handover_world())),
-                )?;
-            }
-            Ok(())
-        });
     }
 }
 

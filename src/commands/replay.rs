@@ -12,8 +12,9 @@ use ergocell_bridge::transport::{publish, RosConfig, RosNode};
 use ergocell_ros_backend::clock::{instant, now_nanos};
 use ergocell_ros_backend::recording;
 
-use super::run::{multicast_note, network_scope, say, security_enclave};
+use super::run::{network_scope, say, security_enclave};
 use super::UsageError;
+use ergocell_bridge::scope::multicast_note;
 
 /// `replay --speed` bounds.
 const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.01..=100.0;

@@ -317,6 +317,65 @@ pub async fn serve(
     Ok(())
 }
 
+/// The display served on a thread of its own, for a caller whose loop is synchronous (`ergocell
+/// demo`): its own single-threaded runtime, stopped and joined when this is dropped.
+pub struct DisplayThread {
+    display: Arc<Display>,
+    bound: std::net::SocketAddr,
+    stop: Option<tokio::sync::oneshot::Sender<()>>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl DisplayThread {
+    /// Listens on `addr` and serves a new display there until dropped.
+    pub fn start(addr: std::net::SocketAddr) -> std::io::Result<Self> {
+        let display = Display::new();
+        let (listener, bound) = bind(addr)?;
+        let runtime = tokio::runtime::Builder::new_current_thread()
+            .enable_all()
+            .build()?;
+        let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+        let served = display.clone();
+        let thread = std::thread::Builder::new()
+            .name("display".to_owned())
+            .spawn(move || {
+                let result = runtime.block_on(serve(listener, served, async {
+                    let _ = stopped.await;
+                }));
+                if let Err(e) = result {
+                    tracing::error!("operator display: {e}");
+                }
+            })?;
+        Ok(Self {
+            display,
+            bound,
+            stop: Some(stop),
+            thread: Some(thread),
+        })
+    }
+
+    /// The display to update.
+    pub fn display(&self) -> &Display {
+        &self.display
+    }
+
+    /// The address it listens on (the port chosen when `addr`'s was 0).
+    pub fn bound(&self) -> std::net::SocketAddr {
+        self.bound
+    }
+}
+
+impl Drop for DisplayThread {
+    fn drop(&mut self) {
+        if let Some(stop) = self.stop.take() {
+            let _ = stop.send(());
+        }
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -24,6 +24,7 @@
 //! [`SessionConfig::max_frame_age_nanos`]. A hold is a software hold through the controller's normal
 //! interface, not an emergency stop.
 
+pub mod approval_summary;
 pub mod cell_loop;
 pub mod driver;
 pub mod dummy;
