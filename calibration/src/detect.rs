@@ -12,14 +12,21 @@
 //!    front), cell (0,0) dark (see [`crate::board`]), so left and right images of a pair agree.
 //! 5. Sub-pixel refinement as OpenCV's `cornerSubPix`: the corner `q` minimises
 //!    `Σ w (∇I(p) · (q − p))²` over an 11×11 window (Förstner's operator), iterated to 0.005 px.
+//!
+//! Per image of a calibration, [`ImageDetection`]: decoded from its bytes and detected, or why not,
+//! as `ergocell calibrate`'s tables report it; [`common_size`], [`usable_views`] and
+//! [`camera_views`] turn a camera's images into the views a calibration takes.
 
 use std::collections::HashMap;
 use std::fmt;
 
+use ergocell_perception::CameraId;
 use nalgebra::{Matrix2, Point2, Vector2};
 
 use crate::board::BoardSpec;
+use crate::error::CalibrationError;
 use crate::gray::GrayImage;
+use crate::rig::CameraViews;
 
 /// A validated checkerboard detection: one sub-pixel corner per board corner, row-major.
 #[derive(Debug, Clone, PartialEq)]
@@ -793,4 +800,186 @@ fn corner_subpix(image: &GrayImage, start: Point2<f64>, half: isize) -> Point2<f
         }
     }
     q
+}
+
+/// One calibration image's outcome, as `ergocell calibrate`'s tables report it: its name (the path
+/// as given), its size when it decoded, and its corners, or why not (it did not decode, or the
+/// board's [`Rejection`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImageDetection {
+    pub name: String,
+    pub size_px: Option<(u32, u32)>,
+    pub corners: Result<Vec<Point2<f64>>, String>,
+}
+
+impl ImageDetection {
+    /// Decodes the image `name` from `bytes` and detects `board` in it; with `for_rig`, a view whose
+    /// corner order the rig's other cameras might not share is rejected
+    /// ([`Detection::into_rig_corners`]).
+    pub fn detect(bytes: &[u8], name: &str, board: &BoardSpec, for_rig: bool) -> Self {
+        let (size_px, corners) = match GrayImage::decode(bytes, name) {
+            Ok(image) => {
+                let corners = detect_checkerboard(&image, board)
+                    .and_then(|d| {
+                        if for_rig {
+                            d.into_rig_corners(board)
+                        } else {
+                            Ok(d.corners)
+                        }
+                    })
+                    .map_err(|why| why.to_string());
+                (Some(image.size_px()), corners)
+            }
+            Err(e) => (None, Err(e.to_string())),
+        };
+        Self {
+            name: name.to_owned(),
+            size_px,
+            corners,
+        }
+    }
+
+    /// The image's file name without its folder (the tables' first column).
+    pub fn file_name(&self) -> String {
+        std::path::Path::new(&self.name)
+            .file_name()
+            .map_or_else(|| self.name.clone(), |n| n.to_string_lossy().into_owned())
+    }
+}
+
+/// The image size a camera's images share (the first decoded one's): an image of another size is an
+/// error naming it, as is a camera none of whose images decoded.
+pub fn common_size(
+    images: &[ImageDetection],
+    camera: &CameraId,
+) -> Result<(u32, u32), CalibrationError> {
+    let mut size = None;
+    for (view, image) in images.iter().enumerate() {
+        let Some(s) = image.size_px else { continue };
+        match size {
+            None => size = Some(s),
+            Some(want) if want != s => {
+                return Err(CalibrationError::ImageSizeMismatch {
+                    camera: camera.to_string(),
+                    view,
+                    got_w: s.0,
+                    got_h: s.1,
+                    want_w: want.0,
+                    want_h: want.1,
+                })
+            }
+            Some(_) => {}
+        }
+    }
+    size.ok_or_else(|| CalibrationError::NoImageDecoded {
+        camera: camera.to_string(),
+    })
+}
+
+/// The images whose board was found, for a single-camera calibration: their indices among
+/// `images`, and their corners.
+pub fn usable_views(images: &[ImageDetection]) -> (Vec<usize>, Vec<Vec<Point2<f64>>>) {
+    images
+        .iter()
+        .enumerate()
+        .filter_map(|(i, image)| Some((i, image.corners.clone().ok()?)))
+        .unzip()
+}
+
+/// One camera's views for a rig calibration: one per image (the same frames for every camera),
+/// `None` where the board was not found, at the size the images share ([`common_size`]).
+pub fn camera_views(
+    id: CameraId,
+    images: &[ImageDetection],
+) -> Result<CameraViews, CalibrationError> {
+    let image_size_px = common_size(images, &id)?;
+    Ok(CameraViews {
+        id,
+        image_size_px,
+        frames: images.iter().map(|r| r.corners.clone().ok()).collect(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn image(name: &str, size_px: Option<(u32, u32)>, found: bool) -> ImageDetection {
+        ImageDetection {
+            name: name.to_owned(),
+            size_px,
+            corners: if found {
+                Ok(vec![Point2::new(1.0, 2.0)])
+            } else {
+                Err("no board".to_owned())
+            },
+        }
+    }
+
+    #[test]
+    fn images_share_the_first_decoded_size_or_the_odd_one_is_named() {
+        let id = CameraId::new("left").unwrap();
+        let same = [
+            image("a.png", None, false),
+            image("b.png", Some((640, 480)), true),
+            image("c.png", Some((640, 480)), false),
+        ];
+        assert_eq!(common_size(&same, &id), Ok((640, 480)));
+        let odd = [
+            image("a.png", Some((640, 480)), true),
+            image("b.png", None, false),
+            image("c.png", Some((480, 640)), true),
+        ];
+        assert_eq!(
+            common_size(&odd, &id),
+            Err(CalibrationError::ImageSizeMismatch {
+                camera: "left".to_owned(),
+                view: 2,
+                got_w: 480,
+                got_h: 640,
+                want_w: 640,
+                want_h: 480,
+            })
+        );
+        assert_eq!(
+            common_size(&[image("a.png", None, false)], &id),
+            Err(CalibrationError::NoImageDecoded {
+                camera: "left".to_owned()
+            })
+        );
+    }
+
+    #[test]
+    fn the_views_are_the_images_whose_board_was_found() {
+        let images = [
+            image("a.png", Some((4, 4)), false),
+            image("b.png", Some((4, 4)), true),
+            image("c.png", Some((4, 4)), true),
+        ];
+        let (used, views) = usable_views(&images);
+        assert_eq!(used, [1, 2]);
+        assert_eq!(
+            views,
+            [vec![Point2::new(1.0, 2.0)], vec![Point2::new(1.0, 2.0)]]
+        );
+        let rig_views = camera_views(CameraId::new("cam").unwrap(), &images).unwrap();
+        assert_eq!(rig_views.image_size_px, (4, 4));
+        let found: Vec<bool> = rig_views.frames.iter().map(Option::is_some).collect();
+        assert_eq!(found, [false, true, true]);
+    }
+
+    #[test]
+    fn an_image_that_does_not_decode_is_rejected_naming_it() {
+        let board = BoardSpec::parse("9x6", 0.025).unwrap();
+        let d = ImageDetection::detect(b"not an image", "data/left01.jpg", &board, false);
+        assert_eq!(d.size_px, None);
+        assert!(
+            d.corners
+                .as_ref()
+                .is_err_and(|why| why.contains("data/left01.jpg")),
+            "{d:?}"
+        );
+        assert_eq!(d.file_name(), "left01.jpg");
+        assert_eq!(image("top.png", None, false).file_name(), "top.png");
+    }
 }

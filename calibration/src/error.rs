@@ -45,6 +45,9 @@ pub enum CalibrationError {
         want_w: u32,
         want_h: u32,
     },
+    /// None of a camera's images could be decoded.
+    #[error("camera `{camera}`: no image could be decoded")]
+    NoImageDecoded { camera: String },
     /// The closed-form initialisation found no physical camera (degenerate views: all boards parallel).
     #[error("closed-form initialisation failed: {0}")]
     Initialisation(String),

@@ -24,6 +24,7 @@ pub mod linalg;
 pub mod lm;
 pub mod model;
 pub mod place;
+pub mod report;
 pub mod rig;
 
 pub use board::BoardSpec;

@@ -230,6 +230,18 @@ impl EarOffset {
             calibrated_sessions: Some(sessions),
         })
     }
+
+    /// The offset and its σ rounded to the micrometre, as `ergocell height calibrate` writes them
+    /// into the cell configuration (the session count kept).
+    #[must_use]
+    pub fn rounded_to_micrometre(self) -> Self {
+        let round = |x: f64| (x * 1e6).round() / 1e6;
+        Self {
+            offset_m: round(self.offset_m),
+            sigma_m: round(self.sigma_m),
+            ..self
+        }
+    }
 }
 
 fn check_range(field: &'static str, value: f64, min: f64, max: f64) -> Result<(), ErgonomicsError> {
@@ -278,6 +290,44 @@ impl CalibrationSample {
             measured_m,
             slope: mean_of(&slopes).unwrap_or(FLOOR_TO_EAR.slope),
         }
+    }
+
+    /// How much taller than measured the estimate reads, metres (negative: shorter).
+    pub fn error_m(&self) -> f64 {
+        self.estimated_m - self.measured_m
+    }
+}
+
+/// One session of `ergocell height calibrate`, measured: its name, its sample and how many upright
+/// frames the estimate is over.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CalibrationSession {
+    /// The session as the user named it (its landmark file).
+    pub session: String,
+    pub sample: CalibrationSample,
+    pub upright_frames: usize,
+}
+
+impl CalibrationSession {
+    /// Measures one session of a person of stature `measured_m` (a stadiometer's): every frame
+    /// through an estimator of `config` as calibration measures ([`HeightConfig::for_calibration`]),
+    /// the estimate over its upright frames. `None` when no frame was upright.
+    pub fn measure(
+        session: String,
+        config: &HeightConfig,
+        frames: &[Skeleton3],
+        measured_m: f64,
+    ) -> Option<Self> {
+        let mut estimator = HeightEstimator::new(config.clone().for_calibration());
+        for f in frames {
+            estimator.push(f);
+        }
+        let estimate = estimator.estimate()?;
+        Some(Self {
+            session,
+            sample: CalibrationSample::from_estimate(&estimate, measured_m),
+            upright_frames: estimate.frames_used,
+        })
     }
 }
 
@@ -500,6 +550,17 @@ impl HeightConfig {
             handover_rula: None,
         }
     }
+
+    /// This configuration as `ergocell height calibrate` measures with it: no ear offset
+    /// subtracted, over every upright frame of the window, never deciding a class.
+    #[must_use]
+    pub fn for_calibration(self) -> Self {
+        Self {
+            ear_offset: EarOffset::default(),
+            min_frames: usize::MAX,
+            ..self
+        }
+    }
 }
 
 /// One estimator's result.
@@ -523,6 +584,52 @@ pub struct HeightEstimate {
     /// Upright frames used.
     pub frames_used: usize,
     pub estimators: Vec<EstimatorResult>,
+}
+
+/// A whole recording through one [`HeightEstimator`] (`ergocell height`): where it stands after the
+/// last frame, the frame the class was decided at, and the estimates after the last frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RecordingHeight {
+    /// Frames read.
+    pub frames: usize,
+    pub status: HeightStatus,
+    /// The frame (from 0) the class was decided at; `None` while undecided.
+    pub decided_at_frame: Option<usize>,
+    /// [`HeightEstimator::estimate`] after the last frame: over the window's upright frames.
+    pub final_estimate: Option<HeightEstimate>,
+    /// [`HeightEstimator::segment_estimate`]: any posture, never decides the class.
+    pub segments: Option<EstimatorResult>,
+}
+
+impl RecordingHeight {
+    /// Feeds every frame of a recording, in order, to an estimator of `config`.
+    pub fn of(config: HeightConfig, frames: &[Skeleton3]) -> Self {
+        let mut estimator = HeightEstimator::new(config);
+        let mut decided_at_frame = None;
+        for (i, f) in frames.iter().enumerate() {
+            if estimator.push(f).is_some() {
+                decided_at_frame = Some(i);
+            }
+        }
+        Self {
+            frames: frames.len(),
+            status: estimator.status(),
+            decided_at_frame,
+            final_estimate: estimator.estimate(),
+            segments: estimator.segment_estimate(),
+        }
+    }
+
+    /// The recording as `ergocell height --json` prints it.
+    pub fn json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "status": self.status,
+            "segment_lengths_any_posture": self.segments,
+            "decided_at_frame": self.decided_at_frame,
+            "final_estimate": self.final_estimate,
+            "frames": self.frames,
+        })
+    }
 }
 
 /// No class's trajectory is validated for the operator's whole stature interval: the session
@@ -1110,5 +1217,131 @@ impl HeightEstimator {
             estimate,
             why,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pose::PoseSpec;
+
+    fn standing(stature_m: f64, n: i64) -> (HeightConfig, Vec<Skeleton3>) {
+        let spec = PoseSpec {
+            stature_m,
+            ..PoseSpec::default()
+        };
+        let config = HeightConfig::new(UpVector::new(spec.up()).unwrap());
+        let frames = (0..n)
+            .map(|k| {
+                PoseSpec {
+                    stamp_nanos: k * 33_000_000,
+                    ..spec.clone()
+                }
+                .skeleton()
+            })
+            .collect();
+        (config, frames)
+    }
+
+    #[test]
+    fn an_offset_written_to_the_config_is_rounded_to_the_micrometre() {
+        let o = EarOffset {
+            offset_m: 0.012_345_67,
+            sigma_m: 0.001_000_4,
+            calibrated_sessions: Some(7),
+        }
+        .rounded_to_micrometre();
+        assert!((o.offset_m - 0.012_346).abs() < 1e-12, "{o:?}");
+        assert!((o.sigma_m - 0.001).abs() < 1e-12, "{o:?}");
+        assert_eq!(o.calibrated_sessions, Some(7));
+        let negative = EarOffset {
+            offset_m: -0.004_321_49,
+            ..o
+        }
+        .rounded_to_micrometre();
+        assert!(
+            (negative.offset_m + 0.004_321).abs() < 1e-12,
+            "{negative:?}"
+        );
+    }
+
+    #[test]
+    fn a_sample_reading_tall_has_a_positive_error() {
+        let s = CalibrationSample {
+            estimated_m: 1.712,
+            measured_m: 1.700,
+            slope: 1.05,
+        };
+        assert!((s.error_m() - 0.012).abs() < 1e-12);
+        let short = CalibrationSample {
+            estimated_m: 1.69,
+            ..s
+        };
+        assert!((short.error_m() + 0.01).abs() < 1e-12);
+    }
+
+    #[test]
+    fn calibration_measures_without_an_offset_and_never_decides() {
+        let (mut config, frames) = standing(1.75, 40);
+        config.ear_offset = EarOffset::calibrated(0.05, 0.002, 9).unwrap();
+        let c = config.clone().for_calibration();
+        assert_eq!(c.ear_offset, EarOffset::default());
+        assert_eq!(c.min_frames, usize::MAX);
+        assert_eq!(c.window_frames, config.window_frames);
+        let mut estimator = HeightEstimator::new(c);
+        assert!(frames.iter().all(|f| estimator.push(f).is_none()));
+
+        let session = CalibrationSession::measure("a".to_owned(), &config, &frames, 1.75).unwrap();
+        assert_eq!(session.upright_frames, 40);
+        assert_eq!(session.sample.measured_m, 1.75);
+        // The configured offset (5 cm) was not subtracted: the estimate is the uncalibrated one.
+        let uncalibrated = RecordingHeight::of(
+            HeightConfig {
+                ear_offset: EarOffset::default(),
+                ..config.clone()
+            },
+            &frames,
+        );
+        assert_eq!(
+            Some(session.sample.estimated_m),
+            uncalibrated.final_estimate.map(|e| e.height_m)
+        );
+        assert_eq!(
+            CalibrationSession::measure("b".to_owned(), &config, &[], 1.75),
+            None
+        );
+    }
+
+    #[test]
+    fn a_recording_is_decided_at_the_frame_that_completes_the_minimum() {
+        let (config, frames) = standing(1.75, 45);
+        let min_frames = config.min_frames;
+        let r = RecordingHeight::of(config, &frames);
+        assert_eq!(r.frames, 45);
+        assert_eq!(r.decided_at_frame, Some(min_frames - 1));
+        let HeightStatus::Decided(d) = &r.status else {
+            panic!("undecided: {:?}", r.status);
+        };
+        assert_eq!(d.class, HeightClass::C2);
+        assert_eq!(d.estimate.frames_used, min_frames);
+        assert_eq!(r.final_estimate.as_ref().map(|e| e.frames_used), Some(45));
+        let json = r.json();
+        assert_eq!(
+            json["decided_at_frame"].as_u64(),
+            Some(min_frames as u64 - 1)
+        );
+        assert_eq!(json["frames"].as_u64(), Some(45));
+        assert_eq!(json["status"]["status"].as_str(), Some("decided"));
+
+        let (config, few) = standing(1.75, 10);
+        let r = RecordingHeight::of(config, &few);
+        assert_eq!(r.decided_at_frame, None);
+        assert!(matches!(
+            r.status,
+            HeightStatus::Measuring {
+                upright_frames: 10,
+                ..
+            }
+        ));
     }
 }

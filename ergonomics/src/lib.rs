@@ -15,12 +15,13 @@
 //! - [`activity`]: what the operator is doing from the skeleton alone (walking, floor pick, in
 //!   place): the task segments exposure is reported by.
 //! - [`height`]: stature from upright frames with two anthropometric estimators, and the height class
-//!   decision at session start.
+//!   decision at session start; [`height_text`]: its estimate, decision and calibration as text.
 //! - [`static_posture`]: trunk, neck and upper-arm postures held outside ISO 11226's acceptable zone, against
 //!   its maximum holding times (the table used is cited there).
 //! - [`warnings`]: per-region posture warnings with hysteresis and minimum dwell time.
 //! - [`summary`]: a session's time-weighted shares per action level, body-region score and grand
-//!   score — the one computation behind `ergocell rula track`'s summary and the offline review.
+//!   score — the one computation behind `ergocell rula track`'s summary and the offline review;
+//!   [`summary_text`] lays it out as text, [`track_text`] each frame as text or JSON.
 //! - [`export`]: spreadsheet exports (CSV): a row per assessed frame and the session summary, units in
 //!   the column names.
 //! - [`pose`]: synthetic skeletons posed to known angles, for tests and benchmarks: postures of the
@@ -38,6 +39,7 @@ pub mod assess;
 pub mod confidence;
 pub mod export;
 pub mod height;
+pub mod height_text;
 pub mod pose;
 pub mod posture_cost;
 pub mod reba;
@@ -46,6 +48,7 @@ pub mod static_posture;
 pub mod summary;
 pub mod summary_text;
 pub mod tables;
+pub mod track_text;
 pub mod warnings;
 
 pub use angles::{BodyAngles, SideAngles, UpVector};

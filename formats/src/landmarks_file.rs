@@ -11,6 +11,7 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
+use ergocell_perception::metrics::frame_rate_hz;
 use ergocell_skeleton::{Landmark, LandmarkEstimate, Skeleton3};
 use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
@@ -162,6 +163,88 @@ impl LandmarksEncoder {
             LandmarksFormat::Json => "]".to_owned(),
             LandmarksFormat::Csv | LandmarksFormat::Trc => String::new(),
         }
+    }
+}
+
+/// A landmark file written as the frames of a recording arrive, when its frame rate is known only
+/// from their stamps (OpenPose frames carry none, a caliscope file has its own): the first
+/// [`StreamingEncoder::RATE_FRAMES`] frames (the whole recording when it is shorter) are held back to
+/// estimate the rate a TRC header states ([`frame_rate_hz`], else the given rate), then every frame
+/// is encoded into a text the caller takes and writes piece by piece. The pieces concatenated are
+/// exactly [`write_landmarks`]'s text at that rate.
+#[derive(Debug, Clone)]
+pub struct StreamingEncoder {
+    format: LandmarksFormat,
+    name: String,
+    fallback_rate_hz: f64,
+    frame_count: usize,
+    held: Vec<Skeleton3>,
+    encoder: Option<LandmarksEncoder>,
+    text: String,
+}
+
+impl StreamingEncoder {
+    /// Frames held back to estimate the frame rate.
+    pub const RATE_FRAMES: usize = 1000;
+
+    /// An encoder for `frame_count` frames named `name`, at `fallback_rate_hz` when the stamps give
+    /// no rate.
+    pub fn new(
+        format: LandmarksFormat,
+        name: &str,
+        fallback_rate_hz: f64,
+        frame_count: usize,
+    ) -> Self {
+        Self {
+            format,
+            name: name.to_owned(),
+            fallback_rate_hz,
+            frame_count,
+            held: Vec::new(),
+            encoder: None,
+            text: String::new(),
+        }
+    }
+
+    /// Adds the next frame: held back until the rate is known, encoded from then on.
+    pub fn push(&mut self, skeleton: Skeleton3) {
+        if let Some(e) = self.encoder.as_mut() {
+            e.frame_into(&skeleton, &mut self.text);
+        } else {
+            self.held.push(skeleton);
+            if self.held.len() == Self::RATE_FRAMES {
+                let e = self.start();
+                self.encoder = Some(e);
+            }
+        }
+    }
+
+    /// The text encoded and not taken yet, once it is longer than `min_bytes` (the caller writes it).
+    pub fn take_text_over(&mut self, min_bytes: usize) -> Option<String> {
+        (self.text.len() > min_bytes).then(|| std::mem::take(&mut self.text))
+    }
+
+    /// The rest of the file (the frames still held, the footer) and how many frames were encoded in
+    /// all.
+    pub fn finish(mut self) -> (String, usize) {
+        let e = match self.encoder.take() {
+            Some(e) => e,
+            None => self.start(),
+        };
+        let written = e.frames_written();
+        self.text.push_str(&e.footer());
+        (self.text, written)
+    }
+
+    /// The encoder at the rate of the held frames: the header and the held frames into the text.
+    fn start(&mut self) -> LandmarksEncoder {
+        let rate = frame_rate_hz(&self.held).unwrap_or(self.fallback_rate_hz);
+        let mut e = LandmarksEncoder::new(self.format, &self.name, rate, self.frame_count);
+        self.text.push_str(&e.header());
+        for s in self.held.drain(..) {
+            e.frame_into(&s, &mut self.text);
+        }
+        e
     }
 }
 
@@ -387,6 +470,67 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Streamed with every piece taken as soon as there is one, the file is the whole-recording
+    /// writer's at the rate of the stamps (10 Hz), not the fallback.
+    #[test]
+    fn a_streamed_file_is_the_whole_file_at_the_rate_of_its_stamps() {
+        let rec = recording();
+        for format in [
+            LandmarksFormat::Json,
+            LandmarksFormat::Csv,
+            LandmarksFormat::Trc,
+        ] {
+            let mut e = StreamingEncoder::new(format, "rec.trc", 30.0, rec.len());
+            for s in &rec {
+                e.push(s.clone());
+                // fewer frames than RATE_FRAMES: all held until the end
+                assert_eq!(e.take_text_over(0), None, "{format:?}");
+            }
+            let (text, written) = e.finish();
+            assert_eq!(written, rec.len(), "{format:?}");
+            assert_eq!(
+                text,
+                write_landmarks(&rec, format, "rec.trc", 10.0),
+                "{format:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_rate_comes_from_the_first_frames_or_the_fallback() {
+        let n = StreamingEncoder::RATE_FRAMES + 1;
+        let mut e = StreamingEncoder::new(LandmarksFormat::Trc, "r.trc", 30.0, n);
+        for k in 0..StreamingEncoder::RATE_FRAMES - 1 {
+            e.push(Skeleton3::empty(k as i64 * 50_000_000));
+            assert_eq!(e.take_text_over(0), None);
+        }
+        e.push(Skeleton3::empty(999 * 50_000_000));
+        let head = e.take_text_over(0).unwrap();
+        // the header (five lines and a blank one) states 20 Hz and the frames announced; the held
+        // frames follow it
+        assert_eq!(
+            head.lines().nth(2),
+            Some("20.00\t20.00\t1001\t33\tm\t20.00\t1\t1001")
+        );
+        assert_eq!(head.lines().count(), 6 + StreamingEncoder::RATE_FRAMES);
+        assert_eq!(e.take_text_over(0), None);
+        e.push(Skeleton3::empty(1000 * 50_000_000));
+        assert!(e
+            .take_text_over(0)
+            .unwrap()
+            .starts_with("1001\t50.000000\t"));
+        assert_eq!(e.finish(), (String::new(), n));
+        // one frame: no interval, the fallback rate
+        let mut one = StreamingEncoder::new(LandmarksFormat::Trc, "r.trc", 30.0, 1);
+        one.push(Skeleton3::empty(0));
+        let (text, written) = one.finish();
+        assert_eq!(written, 1);
+        assert_eq!(
+            text.lines().nth(2),
+            Some("30.00\t30.00\t1\t33\tm\t30.00\t1\t1")
+        );
     }
 
     #[test]

@@ -31,6 +31,7 @@ pub mod fixed_lag;
 pub mod fusion;
 pub mod metrics;
 pub mod operator_gate;
+pub mod report_text;
 pub mod rig;
 mod simd;
 pub mod temporal;

@@ -5,8 +5,14 @@
 //!   (standard deviation / mean, over the frames where both ends are observed) is computed; the
 //!   recording's figure is the mean over bones, in percent.
 //! - **Reprojection error**: the median over all fused landmarks of their RMS pixel error.
+//!
+//! Beside them, what a whole run accumulates for its summary ([`RunTally`]: landmarks, reprojection
+//! per camera, left/right swaps, rejected views), the frame rate the stamps imply
+//! ([`frame_rate_hz`]) and the throughput ([`throughput_fps`]); `report_text` lays them out.
 
-use ergocell_skeleton::{Landmark, Skeleton3, BONES};
+use ergocell_skeleton::{Landmark, Skeleton3, BONES, LANDMARK_COUNT};
+
+use crate::{CameraRig, Frame2, FusedFrame};
 
 /// Per-bone length statistics over a recording.
 #[derive(Debug, Clone, PartialEq)]
@@ -193,6 +199,17 @@ impl StreamingStats {
         self.landmarks
     }
 
+    /// Landmark slots over all frames: frames × [`LANDMARK_COUNT`].
+    pub fn landmark_slots(&self) -> usize {
+        self.frames * LANDMARK_COUNT
+    }
+
+    /// Landmarks observed, per cent of [`StreamingStats::landmark_slots`] (NaN before the first
+    /// frame).
+    pub fn landmark_percent(&self) -> f64 {
+        100.0 * self.landmarks as f64 / self.landmark_slots() as f64
+    }
+
     /// As [`bone_stats`].
     pub fn bone_stats(&self) -> Vec<BoneStats> {
         self.bones
@@ -314,6 +331,17 @@ impl PerCameraReprojection {
         self.views.get(camera).copied().unwrap_or((0, 0))
     }
 
+    /// The views of cameras `0..cameras` summed: views with anything observed, and of those, views
+    /// used mirrored.
+    pub fn swap_totals(&self, cameras: usize) -> SwapTotals {
+        (0..cameras)
+            .map(|k| self.views(k))
+            .fold(SwapTotals::default(), |t, (views, swapped)| SwapTotals {
+                views: t.views + views,
+                swapped: t.swapped + swapped,
+            })
+    }
+
     /// The median error of one camera (to ±0.005 px) and its sample count; `None` for a camera
     /// with no sample.
     pub fn median_px(&self, camera: usize) -> Option<(f64, u64)> {
@@ -336,6 +364,70 @@ impl PerCameraReprojection {
         };
         Some((m, n))
     }
+}
+
+/// Views with anything observed over a set of cameras ([`PerCameraReprojection::swap_totals`]), and
+/// how many of them had the person's left and right swapped and were used mirrored.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct SwapTotals {
+    pub views: usize,
+    pub swapped: usize,
+}
+
+impl SwapTotals {
+    /// Swapped views, per cent of the views (0 when there is no view).
+    pub fn percent(self) -> f64 {
+        100.0 * self.swapped as f64 / self.views.max(1) as f64
+    }
+}
+
+/// What a reconstruction run accumulates frame by frame for its summary (`ergocell triangulate`):
+/// landmarks, bone lengths and reprojection errors ([`StreamingStats`]), each camera's reprojection
+/// and swaps ([`PerCameraReprojection`]), and the views the fusion left out. Memory flat in the
+/// run's length.
+#[derive(Debug, Clone, Default)]
+pub struct RunTally {
+    pub stats: StreamingStats,
+    pub per_camera: PerCameraReprojection,
+    /// Views the fusion rejected (outliers, behind the camera), over all frames.
+    pub rejected_views: usize,
+    /// Keypoints the fusion could not undistort (outside the lens model), over all frames.
+    pub undistortion_failures: usize,
+}
+
+impl RunTally {
+    /// Adds one frame: `fused` is what the fusion made of `frame` (its counts and swapped views),
+    /// `skeleton` the frame's result as delivered (filtered, or the fused skeleton itself).
+    pub fn push(
+        &mut self,
+        rig: &CameraRig,
+        frame: &Frame2,
+        fused: &FusedFrame,
+        skeleton: &Skeleton3,
+    ) {
+        self.rejected_views += fused.rejected_views;
+        self.undistortion_failures += fused.undistortion_failures;
+        self.stats.push(skeleton);
+        self.per_camera
+            .push(rig, frame, skeleton, fused.swapped_views);
+    }
+}
+
+/// The frame rate the stamps imply: one over the median interval between consecutive frames,
+/// repeated stamps left out (`None` without a positive interval).
+pub fn frame_rate_hz(frames: &[Skeleton3]) -> Option<f64> {
+    let dts: Vec<f64> = frames
+        .windows(2)
+        .map(|w| (w[1].stamp_nanos - w[0].stamp_nanos) as f64 * 1e-9)
+        .filter(|dt| *dt > 0.0)
+        .collect();
+    median(&dts).map(|dt| 1.0 / dt)
+}
+
+/// Frames per second of wall time, `elapsed_s` floored at a nanosecond (a run too short to time is
+/// not infinitely fast).
+pub fn throughput_fps(frames: usize, elapsed_s: f64) -> f64 {
+    frames as f64 / elapsed_s.max(1e-9)
 }
 
 #[cfg(test)]
@@ -468,5 +560,108 @@ mod tests {
         let (m, n) = r.median_px(3).unwrap();
         assert!((m - 8.0).abs() < 0.01 && n == 2, "{m}");
         assert_eq!(r.median_px(9), None);
+    }
+
+    fn line_of_landmarks(stamp_nanos: i64) -> Skeleton3 {
+        let pts = std::array::from_fn(|i| Point3::new(0.1 * i as f64, 0.0, 1.0));
+        Skeleton3::from_points(stamp_nanos, &pts).unwrap()
+    }
+
+    #[test]
+    fn the_landmark_share_counts_observed_slots() {
+        let mut st = StreamingStats::default();
+        assert_eq!(st.landmark_slots(), 0);
+        assert!(st.landmark_percent().is_nan());
+        // a full frame and one with the even landmarks only (17 of 33)
+        let even: [Option<Point3<f64>>; LANDMARK_COUNT] = std::array::from_fn(|i| {
+            i.is_multiple_of(2)
+                .then(|| Point3::new(0.1 * i as f64, 0.0, 1.0))
+        });
+        st.push(&line_of_landmarks(0));
+        st.push(&Skeleton3::from_optional_points(1, &even).unwrap());
+        assert_eq!(st.landmark_slots(), 2 * LANDMARK_COUNT);
+        assert_eq!(st.landmarks(), LANDMARK_COUNT + 17);
+        let percent = st.landmark_percent();
+        assert!((percent - 100.0 * 50.0 / 66.0).abs() < 1e-12, "{percent}");
+    }
+
+    #[test]
+    fn swap_totals_sum_the_cameras_asked_for() {
+        let r = PerCameraReprojection {
+            views: vec![(10, 2), (0, 0), (5, 1)],
+            ..PerCameraReprojection::default()
+        };
+        let all = r.swap_totals(3);
+        assert_eq!(
+            all,
+            SwapTotals {
+                views: 15,
+                swapped: 3
+            }
+        );
+        assert_eq!(
+            r.swap_totals(1),
+            SwapTotals {
+                views: 10,
+                swapped: 2
+            }
+        );
+        // cameras never seen add nothing
+        assert_eq!(r.swap_totals(9), all);
+        assert!((all.percent() - 20.0).abs() < 1e-12);
+        // no view: no swap, not NaN
+        assert_eq!(SwapTotals::default().percent(), 0.0);
+    }
+
+    #[test]
+    fn the_frame_rate_is_one_over_the_median_interval() {
+        let at = |ms: &[i64]| -> Vec<Skeleton3> {
+            ms.iter()
+                .map(|&t| Skeleton3::empty(t * 1_000_000))
+                .collect()
+        };
+        // 25 Hz with a repeated stamp and a dropped frame: the median interval is still 40 ms
+        let rate = frame_rate_hz(&at(&[0, 40, 40, 80, 120, 200, 240])).unwrap();
+        assert!((rate - 25.0).abs() < 1e-9, "{rate}");
+        assert_eq!(frame_rate_hz(&at(&[0])), None);
+        assert_eq!(frame_rate_hz(&at(&[5, 5, 5])), None);
+    }
+
+    #[test]
+    fn throughput_is_frames_per_wall_second() {
+        assert!((throughput_fps(300, 2.0) - 150.0).abs() < 1e-12);
+        // a run too short to time: a nanosecond, not a division by zero
+        let instant = throughput_fps(3, 0.0);
+        assert!(
+            instant.is_finite() && (instant - 3e9).abs() < 1.0,
+            "{instant}"
+        );
+    }
+
+    #[test]
+    fn a_run_tally_adds_the_fusions_counts_and_the_delivered_skeleton() {
+        let rig = crate::fusion::tests::ring_rig(2);
+        let frame = Frame2 {
+            stamp_nanos: 0,
+            views: Vec::new(),
+        };
+        let fused = FusedFrame {
+            skeleton: Skeleton3::empty(0),
+            rejected_views: 3,
+            undistortion_failures: 1,
+            cameras_present: 0,
+            swapped_views: 0,
+        };
+        let delivered = line_of_landmarks(0);
+        let mut t = RunTally::default();
+        t.push(&rig, &frame, &fused, &delivered);
+        t.push(&rig, &frame, &fused, &delivered);
+        assert_eq!((t.rejected_views, t.undistortion_failures), (6, 2));
+        // the delivered skeleton is counted, not the fused one (empty here)
+        assert_eq!(
+            (t.stats.frames(), t.stats.landmarks()),
+            (2, 2 * LANDMARK_COUNT)
+        );
+        assert_eq!(t.per_camera.swap_totals(2), SwapTotals::default());
     }
 }

@@ -552,6 +552,64 @@ impl ExposureTable {
     }
 }
 
+/// The files `ergocell exposure` writes into its folder, in this order: the groups' CSV
+/// ([`crate::exposure_csv::groups_csv`]), the sessions' CSV ([`crate::exposure_csv::sessions_csv`]),
+/// the sessions as Parquet ([`crate::store`]) and the page ([`page`]).
+pub const FILES: [&str; 4] = [
+    "exposure.csv",
+    "sessions.csv",
+    "sessions.parquet",
+    "exposure.html",
+];
+
+/// Many recordings read one after another (`ergocell exposure`): the groups' sums, every session's
+/// rows, how many recordings were read and left out, and the sessions found in them.
+#[derive(Debug, Clone, Default)]
+pub struct ExposureSet {
+    pub table: ExposureTable,
+    pub rows: Vec<SegmentRow>,
+    /// Recordings read.
+    pub recordings: usize,
+    /// Operator sessions in them.
+    pub sessions: u32,
+    /// Recordings left out ([`ExposureSet::left_out`]).
+    pub failed: usize,
+}
+
+impl ExposureSet {
+    /// Streams one recording ([`stream_sessions`]; `label`: as the user named it), adding each
+    /// session's rows as the session completes: a recording that fails part-way keeps the sessions
+    /// read before, and is not counted as read (the caller says [`ExposureSet::left_out`]).
+    ///
+    /// # Errors
+    /// As [`stream_sessions`].
+    pub fn read<R: Read + Send>(
+        &mut self,
+        source: R,
+        label: &str,
+    ) -> Result<StreamedRecording, ReviewError> {
+        let (table, rows) = (&mut self.table, &mut self.rows);
+        let mut each = |row: SegmentRow| {
+            table.add(&row);
+            rows.push(row);
+        };
+        let read = stream_sessions(source, label, &mut each)?;
+        self.recordings += 1;
+        self.sessions = self.sessions.saturating_add(read.sessions);
+        Ok(read)
+    }
+
+    /// Counts a recording that could not be opened or read.
+    pub fn left_out(&mut self) {
+        self.failed += 1;
+    }
+
+    /// The page of what was read ([`page`]).
+    pub fn page(&self) -> String {
+        page(&self.table, self.recordings, self.sessions)
+    }
+}
+
 /// The page of an [`ExposureTable`]: one self-contained HTML file, no script and nothing fetched
 /// (the report's Content-Security-Policy). Per operator, a table of its weeks and days (whole
 /// sessions, all classes) with the RULA action-level shares as a bar, then each week's task segments.
@@ -642,6 +700,17 @@ summed over the sessions: a week's share is its seconds at a level over its scor
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_recording_that_cannot_be_read_adds_nothing_and_is_not_counted_as_read() {
+        let mut set = ExposureSet::default();
+        let err = set.read(&b"junk"[..], "x.mcap");
+        assert!(matches!(err, Err(ReviewError::NotMcap { .. })), "{err:?}");
+        assert_eq!((set.recordings, set.sessions, set.failed), (0, 0, 0));
+        assert!(set.rows.is_empty() && set.table.groups.is_empty());
+        set.left_out();
+        assert_eq!(set.failed, 1);
+    }
 
     #[test]
     fn days_and_iso_weeks_are_utc() {

@@ -16,9 +16,13 @@
 //!   over every frame, its page the overview and the worst moments.
 //! - [`exposure`]: many recordings, streamed, → exposure per operator, day and week, task segment
 //!   and robot class (seconds that add up across sessions).
+//! - [`exposure_csv`]: the exposure as CSV files — a row per group (shares, hours) and a row per
+//!   session and segment (seconds).
 //! - [`store`]: those sessions as Parquet, for SQL in DuckDB (or Spark, Trino) — no engine here.
 //! - [`export`]: the session as spreadsheet files — a row per frame, and the summary in `ergocell
 //!   rula track`'s layout.
+//! - [`text`]: what the commands say about the recordings on the console — a line per session
+//!   reviewed, the other sessions of a recording of several, each recording `exposure` read.
 //! - [`page`]: the page itself — the HTML shell around the browser bundle built from `web/`
 //!   (three.js + uPlot, vendored, so it works offline), linked for `ergocell review`'s server, or
 //!   everything inlined into one file for `ergocell report`.
@@ -28,12 +32,14 @@
 pub mod analysis;
 pub mod export;
 pub mod exposure;
+pub mod exposure_csv;
 pub mod findings;
 mod legacy;
 pub mod overview;
 pub mod page;
 pub mod read;
 pub mod store;
+pub mod text;
 
 pub use analysis::{analyse, ReviewData, SessionReview};
 pub use read::{read_recording, Recording};

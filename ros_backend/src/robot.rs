@@ -730,4 +730,3 @@ mod tests {
         assert!(rx.try_recv().is_err(), "nothing sent");
     }
 }
-

@@ -24,6 +24,8 @@
 //!   strings (the binary writes them).
 //! - [`controller`]: the twin's robot side: a simulated joint trajectory controller and KUKA driver
 //!   with its faults as data, run under the cell's own execution watch ([`controller::TwinRobot`]).
+//! - [`demo`]: the demo's session as data (the operator's script at the cell's pace, a camera
+//!   bumped out of calibration).
 //! - [`faults`]: the demo's faults (silent cameras, a class change request, the robot side's
 //!   faults) as a schedule timed from the cell's cycle, a file a user or a test can change.
 //! - [`source`]: the simulator as the cell's landmark source ([`source::SimSource`]);
@@ -69,6 +71,7 @@ pub mod band_reliability;
 pub mod body;
 pub mod cameras;
 pub mod controller;
+pub mod demo;
 pub mod design;
 pub mod detector;
 pub mod detector_fit;

@@ -68,6 +68,9 @@ pub struct ClassHandover {
     pub point: Point3<f64>,
 }
 
+/// The process's resident memory now, MiB (`None` where the system does not say).
+pub type MemoryMib<'a> = Box<dyn Fn() -> Option<f64> + 'a>;
+
 /// What the station asks its caller for.
 pub struct TwinHooks<'a> {
     /// Where the station's lines go.
@@ -79,7 +82,7 @@ pub struct TwinHooks<'a> {
     pub sleep: Option<Box<dyn Fn(Duration) + 'a>>,
     /// The soak report (`--soak-report`): its period in simulated time and the process's resident
     /// memory, MiB.
-    pub soak: Option<(Duration, Box<dyn Fn() -> Option<f64> + 'a>)>,
+    pub soak: Option<(Duration, MemoryMib<'a>)>,
 }
 
 /// The twin's joint states: a KUKA driver's 250 Hz.
@@ -483,7 +486,7 @@ mod tests {
 
     #[test]
     fn the_soak_line_states_the_quantiles_of_the_steps_since_the_last_line() {
-        let mut soak = Soak::new(Duration::from_secs(60), 0);
+        let mut soak = Soak::new(Duration::from_mins(1), 0);
         assert_eq!(soak.next_nanos, 60_000_000_000);
         soak.steps_us.extend([300.0, 100.0, 200.0]);
         assert_eq!(

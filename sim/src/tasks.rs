@@ -512,6 +512,11 @@ impl TaskOccurrence {
     }
 }
 
+/// The total duration of `tasks`, seconds.
+pub fn total_secs(tasks: &[TaskOccurrence]) -> f64 {
+    tasks.iter().map(TaskOccurrence::duration_secs).sum()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -15,14 +15,17 @@ use std::io::IsTerminal as _;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
+use ergocell::input::{self, Kind};
+use ergocell_calibration::detect::{camera_views, common_size, usable_views, ImageDetection};
+use ergocell_calibration::report::{self, StereoPose};
 use ergocell_calibration::{
-    calibrate_camera, calibrate_stereo, detect_checkerboard, BoardSpec, CalibrationError,
-    CameraViews, GrayImage, RigOptions, SolveOptions,
+    calibrate_camera, calibrate_stereo, place, BoardSpec, CalibrationError, RigOptions,
+    SolveOptions,
 };
-use ergocell_formats::rig_file::{to_anipose_toml, to_ergocell_toml};
+use ergocell_formats::rig_file::{parse_rig, to_anipose_toml, to_ergocell_toml};
 use ergocell_perception::{Camera, CameraId, CameraRig};
 use indicatif::{ProgressBar, ProgressStyle};
-use nalgebra::{Point2, Rotation3, Vector3};
+use nalgebra::{Rotation3, Vector3};
 
 use super::{output, UsageError};
 
@@ -135,35 +138,18 @@ fn run_place(args: &PlaceArgs) -> anyhow::Result<()> {
     output::check("--out", &args.out, args.force, &inputs)?;
     let mut groups = Vec::new();
     for path in &args.pairs {
-        let text = ergocell::input::read_text(path, ergocell::input::Kind::Config)?;
-        let (rig, _) = ergocell_formats::rig_file::parse_rig(&text, &path.display().to_string())
-            .map_err(|e| UsageError(e.to_string()))?;
+        let text = input::read_text(path, Kind::Config)?;
+        let (rig, _) =
+            parse_rig(&text, &path.display().to_string()).map_err(|e| UsageError(e.to_string()))?;
         groups.push(rig);
     }
-    let text = ergocell::input::read_text(&args.points, ergocell::input::Kind::Config)?;
-    let points =
-        ergocell_calibration::place::parse_points(&text, &args.points.display().to_string())
-            .map_err(|e| UsageError(e.to_string()))?;
-    // Every failure here comes of the files given (a wrong id, a wrong measurement): bad input.
-    let placed = ergocell_calibration::place::place(&groups, &points)
+    let text = input::read_text(&args.points, Kind::Config)?;
+    let points = place::parse_points(&text, &args.points.display().to_string())
         .map_err(|e| UsageError(e.to_string()))?;
-    for (g, path) in placed.groups.iter().zip(&args.pairs) {
-        let at = g.T_cell_group.translation.vector;
-        println!(
-            "{} ({}): at [{:.3}, {:.3}, {:.3}] m in the cell; {} points triangulated, {} sightings, \
-             reprojection RMS {:.2} px, worst {:.2} px (point `{}`)",
-            path.display(),
-            g.cameras.join(", "),
-            at.x,
-            at.y,
-            at.z,
-            g.triangulated,
-            g.sightings,
-            g.rms_px,
-            g.max_px,
-            g.worst_point
-        );
-    }
+    // Every failure here comes of the files given (a wrong id, a wrong measurement): bad input.
+    let placed = place::place(&groups, &points).map_err(|e| UsageError(e.to_string()))?;
+    let sources: Vec<String> = args.pairs.iter().map(|p| p.display().to_string()).collect();
+    print!("{}", report::placement_text(&placed.groups, &sources));
     output::write(
         "--out",
         &args.out,
@@ -186,50 +172,26 @@ fn camera_id(name: &str) -> anyhow::Result<CameraId> {
     CameraId::new(name).map_err(|e| UsageError(e.to_string()).into())
 }
 
-/// One image's detection: corners, or why not.
-struct ImageResult {
-    path: PathBuf,
-    size_px: Option<(u32, u32)>,
-    corners: Result<Vec<Point2<f64>>, String>,
-}
-
 fn run_intrinsics(args: &IntrinsicsArgs) -> anyhow::Result<()> {
     let board = board_of(&args.common)?;
     let id = camera_id(&args.id)?;
     let paths = list_images(&args.images)?;
     check_out(&args.common, &paths)?;
-    let results = detect_all(&paths, &board, false)?;
-    let size = common_size(&results, &id)?;
-    let used: Vec<usize> = (0..results.len())
-        .filter(|&i| results[i].corners.is_ok())
-        .collect();
-    let views: Vec<Vec<Point2<f64>>> = used
-        .iter()
-        .filter_map(|&i| results[i].corners.clone().ok())
-        .collect();
-    let calib = calibrate_camera(&views, &board, size, SolveOptions::default());
-    let calib = match calib {
+    let images = detect_all(&paths, &board, false)?;
+    let size = common_size(&images, &id).map_err(|e| UsageError(e.to_string()))?;
+    let (used, views) = usable_views(&images);
+    let calib = match calibrate_camera(&views, &board, size, SolveOptions::default()) {
         Ok(c) => c,
         Err(e) => {
-            print_intrinsics_table(&results, &[], &[]);
+            print!("{}", report::intrinsics_table(&images, &[], &[]));
             return Err(usage_if_bad_views(e));
         }
     };
-    print_intrinsics_table(&results, &used, &calib.view_rms_px);
-    let k = calib.intrinsics;
-    println!(
-        "\n{id}: fx {:.3} fy {:.3} cx {:.3} cy {:.3} px; distortion k1 k2 p1 p2 k3 = {:?}",
-        k.fx,
-        k.fy,
-        k.cx,
-        k.cy,
-        calib.distortion.to_array()
+    print!(
+        "{}",
+        report::intrinsics_table(&images, &used, &calib.view_rms_px)
     );
-    println!(
-        "RMS reprojection error {:.4} px over {} views",
-        calib.rms_px,
-        views.len()
-    );
+    print!("{}", report::intrinsics_text(&id, &calib));
     let camera = Camera::new(
         id,
         calib.intrinsics,
@@ -249,37 +211,9 @@ fn run_stereo(args: &StereoArgs) -> anyhow::Result<()> {
             "--left-id and --right-id are both `{left_id}`"
         )));
     }
-    let left_paths = list_images(&args.left)?;
-    let right_paths = list_images(&args.right)?;
-    check_out(
-        &args.common,
-        &left_paths
-            .iter()
-            .chain(&right_paths)
-            .cloned()
-            .collect::<Vec<_>>(),
-    )?;
-    if left_paths.len() != right_paths.len() {
-        anyhow::bail!(UsageError(format!(
-            "{} left images but {} right images: stereo images must pair up",
-            left_paths.len(),
-            right_paths.len()
-        )));
-    }
-    let mut all = left_paths.clone();
-    all.extend(right_paths.iter().cloned());
-    let mut results = detect_all(&all, &board, true)?;
-    let right_results = results.split_off(left_paths.len());
-    let left_results = results;
-    let views = |results: &[ImageResult], id: &CameraId| -> anyhow::Result<CameraViews> {
-        Ok(CameraViews {
-            id: id.clone(),
-            image_size_px: common_size(results, id)?,
-            frames: results.iter().map(|r| r.corners.clone().ok()).collect(),
-        })
-    };
-    let left = views(&left_results, &left_id)?;
-    let right = views(&right_results, &right_id)?;
+    let (left_images, right_images) = detect_pairs(args, &board)?;
+    let left = camera_views(left_id, &left_images).map_err(|e| UsageError(e.to_string()))?;
+    let right = camera_views(right_id, &right_images).map_err(|e| UsageError(e.to_string()))?;
     let options = RigOptions {
         refine_intrinsics: args.refine_intrinsics,
         ..RigOptions::default()
@@ -287,42 +221,46 @@ fn run_stereo(args: &StereoArgs) -> anyhow::Result<()> {
     let calib = match calibrate_stereo(left, right, &board, options) {
         Ok(c) => c,
         Err(e) => {
-            print_stereo_table(&left_results, &right_results, None);
+            print!(
+                "{}",
+                report::stereo_table(&left_images, &right_images, None)
+            );
             return Err(usage_if_bad_views(e));
         }
     };
-    print_stereo_table(&left_results, &right_results, Some(&calib.view_rms_px));
-    println!();
-    for (cam, single) in calib.rig.cameras().iter().zip(&calib.single) {
-        let k = cam.intrinsics;
-        println!(
-            "{}: fx {:.3} fy {:.3} cx {:.3} cy {:.3} px; distortion {:?}; alone: RMS {:.4} px",
-            cam.id,
-            k.fx,
-            k.fy,
-            k.cx,
-            k.cy,
-            cam.distortion.to_array(),
-            single.rms_px
-        );
-    }
-    let T = calib
-        .T_between(0, 1)
-        .context("the stereo rig lost a camera")?;
-    let t = T.translation.vector;
-    let r_deg = T.rotation.scaled_axis() * (180.0 / std::f64::consts::PI);
-    println!(
-        "stereo: RMS {:.4} px; baseline {:.2} mm; T_right_left: t = [{:.5}, {:.5}, {:.5}] m, rotation vector = [{:.3}, {:.3}, {:.3}] deg",
-        calib.rms_px,
-        calib.baseline_m(0, 1).unwrap_or(f64::NAN) * 1e3,
-        t.x,
-        t.y,
-        t.z,
-        r_deg.x,
-        r_deg.y,
-        r_deg.z
+    let errors = Some(calib.view_rms_px.as_slice());
+    print!(
+        "{}",
+        report::stereo_table(&left_images, &right_images, errors)
     );
+    println!();
+    print!("{}", report::rig_cameras_text(&calib));
+    let pose = StereoPose::of(&calib, 0, 1).context("the stereo rig lost a camera")?;
+    print!("{}", pose.text());
     write_rig(&calib.rig, &args.common)
+}
+
+/// The left and right images, listed (the output checked against them before any is decoded),
+/// paired in sorted order (the counts must agree), and detected.
+fn detect_pairs(
+    args: &StereoArgs,
+    board: &BoardSpec,
+) -> anyhow::Result<(Vec<ImageDetection>, Vec<ImageDetection>)> {
+    let left_paths = list_images(&args.left)?;
+    let right_paths = list_images(&args.right)?;
+    let mut all = left_paths.clone();
+    all.extend(right_paths.iter().cloned());
+    check_out(&args.common, &all)?;
+    if left_paths.len() != right_paths.len() {
+        anyhow::bail!(UsageError(format!(
+            "{} left images but {} right images: stereo images must pair up",
+            left_paths.len(),
+            right_paths.len()
+        )));
+    }
+    let mut left = detect_all(&all, board, true)?;
+    let right = left.split_off(left_paths.len());
+    Ok((left, right))
 }
 
 fn usage_if_bad_views(e: CalibrationError) -> anyhow::Error {
@@ -357,91 +295,31 @@ fn write_rig(rig: &CameraRig, common: &BoardArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The image size shared by a camera's images (the first decodable one's); a different size is an
-/// input error.
-fn common_size(results: &[ImageResult], id: &CameraId) -> anyhow::Result<(u32, u32)> {
-    let mut size = None;
-    for (view, r) in results.iter().enumerate() {
-        if let Some(s) = r.size_px {
-            match size {
-                None => size = Some(s),
-                Some(want) if want != s => {
-                    return Err(UsageError(
-                        CalibrationError::ImageSizeMismatch {
-                            camera: id.to_string(),
-                            view,
-                            got_w: s.0,
-                            got_h: s.1,
-                            want_w: want.0,
-                            want_h: want.1,
-                        }
-                        .to_string(),
-                    )
-                    .into())
-                }
-                Some(_) => {}
-            }
-        }
-    }
-    size.ok_or_else(|| UsageError(format!("camera `{id}`: no image could be decoded")).into())
-}
-
 /// Reads, decodes and detects every image, on all cores, with a progress bar on a terminal. With
 /// `for_rig`, views whose corner order cannot be matched across cameras are rejected.
 fn detect_all(
     paths: &[PathBuf],
     board: &BoardSpec,
     for_rig: bool,
-) -> anyhow::Result<Vec<ImageResult>> {
+) -> anyhow::Result<Vec<ImageDetection>> {
     let bytes: Vec<Vec<u8>> = paths
         .iter()
-        .map(|p| ergocell::input::read(p, ergocell::input::Kind::Image))
+        .map(|p| input::read(p, Kind::Image))
         .collect::<Result<_, _>>()?;
-    let bar = if std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new(paths.len() as u64);
-        if let Ok(style) =
-            ProgressStyle::with_template("detecting corners {bar:30} {pos}/{len} {wide_msg}")
-        {
-            bar.set_style(style);
-        }
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
+    let bar = progress_bar(paths.len());
     let workers = std::thread::available_parallelism()
         .map_or(1, std::num::NonZeroUsize::get)
         .min(paths.len().max(1));
-    let mut results: Vec<Option<ImageResult>> = (0..paths.len()).map(|_| None).collect();
+    let mut results: Vec<Option<ImageDetection>> = (0..paths.len()).map(|_| None).collect();
     std::thread::scope(|scope| {
         let chunk = paths.len().div_ceil(workers).max(1);
         for (k, slot) in results.chunks_mut(chunk).enumerate() {
-            let bar = &bar;
-            let bytes = &bytes;
+            let (bar, bytes) = (&bar, &bytes);
             scope.spawn(move || {
                 for (j, out) in slot.iter_mut().enumerate() {
                     let i = k * chunk + j;
-                    let path = &paths[i];
-                    let name = path.display().to_string();
-                    *out = Some(match GrayImage::decode(&bytes[i], &name) {
-                        Ok(img) => ImageResult {
-                            path: path.clone(),
-                            size_px: Some(img.size_px()),
-                            corners: detect_checkerboard(&img, board)
-                                .and_then(|d| {
-                                    if for_rig {
-                                        d.into_rig_corners(board)
-                                    } else {
-                                        Ok(d.corners)
-                                    }
-                                })
-                                .map_err(|why| why.to_string()),
-                        },
-                        Err(e) => ImageResult {
-                            path: path.clone(),
-                            size_px: None,
-                            corners: Err(e.to_string()),
-                        },
-                    });
+                    let name = paths[i].display().to_string();
+                    *out = Some(ImageDetection::detect(&bytes[i], &name, board, for_rig));
                     bar.inc(1);
                 }
             });
@@ -451,60 +329,25 @@ fn detect_all(
     Ok(results.into_iter().flatten().collect())
 }
 
+/// A progress bar on stderr when it is a terminal (hidden otherwise: no escape codes in logs).
+fn progress_bar(images: usize) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(images as u64);
+    if let Ok(style) =
+        ProgressStyle::with_template("detecting corners {bar:30} {pos}/{len} {wide_msg}")
+    {
+        bar.set_style(style);
+    }
+    bar
+}
+
 fn file_name(p: &Path) -> String {
     p.file_name().map_or_else(
         || p.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     )
-}
-
-fn print_intrinsics_table(results: &[ImageResult], used: &[usize], errors: &[f64]) {
-    println!("{:<28} {:<9} {:>9}  why", "image", "status", "error px");
-    for (i, r) in results.iter().enumerate() {
-        let name = file_name(&r.path);
-        match &r.corners {
-            Ok(_) => {
-                let err = used
-                    .iter()
-                    .position(|&u| u == i)
-                    .and_then(|k| errors.get(k))
-                    .map_or_else(|| "-".to_owned(), |e| format!("{e:.4}"));
-                println!("{name:<28} {:<9} {err:>9}", "used");
-            }
-            Err(why) => println!("{name:<28} {:<9} {:>9}  {why}", "rejected", "-"),
-        }
-    }
-}
-
-fn print_stereo_table(
-    left: &[ImageResult],
-    right: &[ImageResult],
-    errors: Option<&Vec<Vec<Option<f64>>>>,
-) {
-    println!(
-        "{:<22} {:<22} {:<9} {:>8} {:>8}  why",
-        "left", "right", "status", "left px", "right px"
-    );
-    for (f, (l, r)) in left.iter().zip(right).enumerate() {
-        let err = |cam: usize| {
-            errors
-                .and_then(|e| e.get(cam)?.get(f).copied().flatten())
-                .map_or_else(|| "-".to_owned(), |e| format!("{e:.4}"))
-        };
-        let why: Vec<String> = [("left", &l.corners), ("right", &r.corners)]
-            .iter()
-            .filter_map(|(side, c)| c.as_ref().err().map(|w| format!("{side}: {w}")))
-            .collect();
-        let status = if why.is_empty() { "used" } else { "rejected" };
-        println!(
-            "{:<22} {:<22} {status:<9} {:>8} {:>8}  {}",
-            file_name(&l.path),
-            file_name(&r.path),
-            err(0),
-            err(1),
-            why.join("; ")
-        );
-    }
 }
 
 /// The images of `spec`: a folder (its .jpg/.jpeg/.png files), a glob with `*`/`?` in the file

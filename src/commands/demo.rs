@@ -33,8 +33,8 @@ use ergocell::recording::{self, topics, McapRecorder, Recording};
 use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
-    trajectory_class, CellLoop, CellOutputs, Driver, ExitStatus, Interruption, OutputError,
-    ReportEffect, RobotReport, SessionEnd, SessionEvent, SessionMachine,
+    trajectory_class, CellLoop, CellOutputs, Driver, DriverError, ExitStatus, Interruption,
+    Outcome, OutputError, ReportEffect, RobotReport, SessionEnd, SessionEvent, SessionMachine,
 };
 use ergocell::shipped;
 use ergocell_bridge::msg::{Header, JointState};
@@ -45,13 +45,14 @@ use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_sim::controller::{SimController, TwinRobot};
+use ergocell_sim::demo;
 use ergocell_sim::faults::{FaultPlayer, FaultSchedule};
 use ergocell_sim::source::SimSource;
 use ergocell_sim::station::{
     ClassHandover, TwinHooks, TwinOutputs, TwinStation, JOINT_STATE_PERIOD_NANOS,
     JOINT_STATE_TIMEOUT_S,
 };
-use ergocell_sim::{CameraBump, FloorPick, Operator, SessionScript, SimConfig, Simulation};
+use ergocell_sim::{FloorPick, Operator, SimConfig, Simulation};
 use ergocell_web::display::DisplayThread;
 use nalgebra::Point3;
 use std::time::Duration;
@@ -164,15 +165,6 @@ pub struct Args {
     /// loopback `Host`s are answered unless the address is not a loopback one.
     #[arg(long, value_name = "ADDR")]
     pub display: Option<std::net::SocketAddr>,
-}
-
-/// How long the simulated operator works on a part between handovers: the robot's way home and back
-/// (twice the locked leg), its wait for the next part, and 3 s of slack, so that the robot stands at
-/// the handover point before the operator reaches for the next part (and the demo's camera blackout,
-/// 0.3 s after it arrives, is over).
-fn operator_rest_secs(lock: &LockFile, settings: &CellSettings) -> f64 {
-    let leg_s = lock.trajectory.point.last().map_or(0.0, |p| p.time_s);
-    2.0 * leg_s + settings.session.next_part_after_nanos as f64 * 1e-9 + 3.0
 }
 
 /// Wall-clock time at the binary's clock boundary (the session itself runs on the simulator's clock).
@@ -570,76 +562,48 @@ fn demo_provider(
     Ok(provider)
 }
 
-/// The simulated operator's session script: reaching for `own`'s handover point, cycling at the
-/// cell's pace.
-fn script(args: &Args, own: &Handover, settings: &CellSettings) -> SessionScript {
-    let mut script = SessionScript::new(own.point);
-    script.cycles = args.cycles;
-    // The class is decided after 30 upright frames at the station (1 s at 30 Hz) and the first leg
-    // takes 5 s: the operator stands a second longer before reaching, so the part is there, and at
-    // rest, before their hand is.
-    script.idle_secs += 1.0;
-    // The cell's cycle sets the operator's: after taking a part the operator works on it at the
-    // station (the script's rest) while the robot goes home, takes the next part and brings it.
-    script.rest_secs = operator_rest_secs(&own.lock, settings);
-    if !args.no_floor_pick {
-        script.floor_pick = Some(FloorPick::new(args.cycles.min(1)));
-    }
-    // The operator stands at the cell's station (`[station]`), not at the world's origin.
-    script.place_at_station(&settings.session.T_world_station);
-    script
-}
-
 fn sim_config(args: &Args, rig: &CameraRig, start: i64) -> anyhow::Result<SimConfig> {
     let mut sim_config = SimConfig::new(args.seed);
-    sim_config.frame_period_nanos = (1e9 / args.fps).round() as i64;
+    sim_config.frame_period_nanos = demo::frame_period_nanos(args.fps);
     sim_config.start_nanos = start;
     if let Some(name) = &args.bump_camera {
         let camera = rig.index_of_name(name).ok_or_else(|| {
             UsageError(format!("--bump-camera {name}: no such camera in the rig"))
         })?;
-        if !(args.bump_deg.is_finite() && args.bump_deg.abs() <= 45.0) {
-            anyhow::bail!(UsageError(format!(
-                "--bump-deg {}: expected a finite angle within ±45°",
-                args.bump_deg
-            )));
-        }
-        if !(args.bump_at_s.is_finite() && (0.0..=86_400.0).contains(&args.bump_at_s)) {
-            anyhow::bail!(UsageError(format!(
-                "--bump-at-s {}: expected 0..=86400 s",
-                args.bump_at_s
-            )));
-        }
-        sim_config.bump = Some(CameraBump {
-            camera,
-            from_nanos: start + (args.bump_at_s * 1e9) as i64,
-            rotation_rad: [0.0, args.bump_deg.to_radians(), 0.0],
-        });
+        let bump = demo::camera_bump(camera, start, args.bump_at_s, args.bump_deg);
+        sim_config.bump = Some(bump.map_err(|e| UsageError(format!("--bump-camera {name}: {e}")))?);
     }
     Ok(sim_config)
 }
 
-pub fn run(args: &Args) -> anyhow::Result<()> {
-    // First of all: a stop signal from here on holds the robot and closes the recording.
-    let stop = StopFlag::install()?;
-    check_args(args)?;
-    let (out, moved) = output_path(args)?;
+/// The demo's session before it is played: the cell, the twin and what the console says of them.
+struct Prepared {
+    rig: CameraRig,
+    schedule: FaultSchedule,
+    machine: SessionMachine,
+    robot: TwinRobot,
+    sim: Simulation,
+    handovers: Vec<Handover>,
+    true_class: TrajectoryClass,
+    joints: Vec<String>,
+    /// The session's time limit: the script and its tasks, then the robot's way home.
+    limit_secs: f64,
+    floor_pick: Option<FloorPick>,
+    tasks: Vec<&'static str>,
+    task_secs: f64,
+}
+
+/// The cell (its files, the demo approvals in `approvals_dir`), the simulated operator and the twin
+/// robot, from `args`.
+fn prepare(args: &Args, approvals_dir: &Path, start: i64) -> anyhow::Result<Prepared> {
     let rig = read_rig(args)?;
     let schedule = fault_schedule(args, &rig)?;
-
-    // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
-    remove_stale_demo_dirs(&std::env::temp_dir());
-    let demo_dir =
-        TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
-    private_dir(&demo_dir.0)?;
-    let start = args.start_time.unwrap_or_else(wall_clock_nanos);
-    let provider = demo_provider(args, &demo_dir.0.join("approvals"), start)?;
+    let provider = demo_provider(args, approvals_dir, start)?;
     let cell_text = provider
         .cell_text()
         .map_err(|e| UsageError(e.to_string()))?;
     let settings = CellSettings::from_toml_str(&cell_text, &provider.cell_label())
         .map_err(|e| UsageError(e.to_string()))?;
-
     // The simulated operator reaches for the handover point of their true class (the session itself
     // measures the height and decides the class from the cameras); near a boundary the cell may
     // serve them with the neighbouring class (validated for their stature), and they then reach
@@ -650,19 +614,23 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .iter()
         .find(|h| h.class == true_class)
         .context("no handover for the operator's class")?;
-    let script = script(args, own, &settings);
+    let leg_s = own.lock.trajectory.point.last().map_or(0.0, |p| p.time_s);
+    let script = demo::demo_script(
+        own.point,
+        args.cycles,
+        leg_s,
+        settings.session.next_part_after_nanos,
+        args.no_floor_pick,
+        &settings.session.T_world_station,
+    );
     let tasks = match &args.tasks {
         Some(spec) => super::sim_warnings::load_mix(spec)?.draw_between(args.seed, args.cycles),
         None => Vec::new(),
     };
-    let task_secs: f64 = tasks
-        .iter()
-        .map(ergocell_sim::tasks::TaskOccurrence::duration_secs)
-        .sum();
-    // The session's time limit: the script and its tasks, then the robot's way home.
+    let task_secs = ergocell_sim::tasks::total_secs(&tasks);
     let limit_secs = script.duration_secs() + task_secs + MARGIN_SECS;
     let floor_pick = script.floor_pick;
-    let task_names: Vec<&str> = tasks.iter().map(|t| t.kind.name()).collect();
+    let task_names = tasks.iter().map(|t| t.kind.name()).collect();
     let sim = Simulation::with_tasks(
         rig.clone(),
         Operator::new(args.stature_m)?,
@@ -671,27 +639,57 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         tasks,
     )?;
     let joints = own.lock.trajectory.joint_names.clone();
-    let home = own
-        .lock
+    let robot = twin_robot(&own.lock, &schedule)?;
+    let machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
+        .map_err(|e| UsageError(e.to_string()))?;
+    Ok(Prepared {
+        rig,
+        schedule,
+        machine,
+        robot,
+        sim,
+        handovers,
+        true_class,
+        joints,
+        limit_secs,
+        floor_pick,
+        tasks: task_names,
+        task_secs,
+    })
+}
+
+/// The twin's controller and KUKA driver under the cell's execution watch, its joint states at a
+/// KUKA driver's 250 Hz, starting at `lock`'s home. The newest command is all the demo reads back
+/// (the blackout waits for a leg's arrival). Each robot fault of `schedule` is checked against it.
+fn twin_robot(lock: &LockFile, schedule: &FaultSchedule) -> anyhow::Result<TwinRobot> {
+    let joints = lock.trajectory.joint_names.clone();
+    let home = lock
         .trajectory
         .point
         .first()
         .map(|p| p.positions_rad.clone())
         .context("lock file without points")?;
-    // The twin's controller and KUKA driver under the cell's execution watch, its joint states at a
-    // KUKA driver's 250 Hz. The newest command is all the demo reads back (the blackout waits for
-    // a leg's arrival).
-    let controller = SimController::new(joints.clone(), home).keeping_last(1);
+    let controller = SimController::new(joints, home).keeping_last(1);
     for f in schedule.faults.iter().filter_map(|f| f.robot.as_ref()) {
         controller
             .check(f)
             .map_err(|e| UsageError(format!("--faults: {e}")))?;
     }
-    let robot = TwinRobot::new(controller, JOINT_STATE_PERIOD_NANOS, JOINT_STATE_TIMEOUT_S);
-    let machine = SessionMachine::from_settings(rig.clone(), &settings, Box::new(provider))
-        .map_err(|e| UsageError(e.to_string()))?;
-    // The default name is taken when the file is created: a demo started meanwhile in this folder
-    // may have taken the one chosen at the start, and then this one moves on to the next.
+    Ok(TwinRobot::new(
+        controller,
+        JOINT_STATE_PERIOD_NANOS,
+        JOINT_STATE_TIMEOUT_S,
+    ))
+}
+
+/// The recording, created: `--out`, or the default name taken when the file is created (a demo
+/// started meanwhile in this folder may have taken the one chosen at the start, and then this one
+/// moves on to the next); and whether the default was moved on to a numbered name.
+fn open_recording(
+    args: &Args,
+    out: PathBuf,
+    moved: bool,
+) -> anyhow::Result<(McapRecorder, PathBuf, bool)> {
     let (file, out, moved) = if args.out.is_none() && !args.force {
         let (file, path) = output::create_next_free(Path::new(DEFAULT_OUT))?;
         let moved = path != Path::new(DEFAULT_OUT);
@@ -705,6 +703,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         None => OperatorId::new(&format!("demo-{}", args.seed))?,
     };
     rec.write_operator(&operator)?;
+    Ok((rec, out, moved))
+}
+
+/// What the demo is about to play.
+fn print_plan(args: &Args, p: &Prepared, out: &Path, moved: bool) {
     if moved {
         println!(
             "  {DEFAULT_OUT} exists (kept): recording into {} (--out names the file, --force overwrites)",
@@ -715,94 +718,63 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         "  operator {:.2} m, {} handover cycles, {} cameras, seed {}; recording {}",
         args.stature_m,
         args.cycles,
-        rig.len(),
+        p.rig.len(),
         args.seed,
         out.display()
     );
-    if schedule.faults.is_empty() {
+    if p.schedule.faults.is_empty() {
         println!("  faults: none");
     } else {
-        let list: Vec<String> = schedule.faults.iter().map(ToString::to_string).collect();
+        let list: Vec<String> = p.schedule.faults.iter().map(ToString::to_string).collect();
         println!("  faults: {}", list.join("; "));
     }
-    if !task_names.is_empty() {
+    if !p.tasks.is_empty() {
         println!(
             "  tasks between the handovers ({:.0} s): {}",
-            task_secs,
-            task_names.join(", ")
+            p.task_secs,
+            p.tasks.join(", ")
         );
     }
-    if let Some(p) = &floor_pick {
+    if let Some(pick) = &p.floor_pick {
         println!(
             "  floor pick after handover cycle {}: the operator bends down for a dropped part {:.2} m above the floor (robot not involved)",
-            p.after_cycle,
-            p.target_m.z
+            pick.after_cycle,
+            pick.target_m.z
         );
     }
     println!();
-    let display = match args.display {
-        Some(addr) => {
-            let d = DisplayThread::start(addr)
-                .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
-            println!(
-                "  operator display: http://{}/ (the session runs in real time)",
-                d.bound()
-            );
-            Some(d)
-        }
-        None => None,
+}
+
+/// The operator display on its own thread, said.
+fn start_display(addr: Option<std::net::SocketAddr>) -> anyhow::Result<Option<DisplayThread>> {
+    let Some(addr) = addr else {
+        return Ok(None);
     };
-    let real_time = display.is_some();
-    let outputs = DemoOutputs {
-        recording: Recording::new(Some(rec)),
-        display,
-        geometries: handovers
-            .iter()
-            .map(|h| (h.class, h.geometry.clone()))
-            .collect(),
-        start,
-        rula: "RULA -".to_owned(),
-    };
-    let mut cell = CellLoop::new(machine, robot, outputs)
-        .with_deadline(start + (limit_secs * 1e9).round() as i64, limit_secs)
-        .with_driver_state();
-    if args.outcome.is_some() {
-        cell = cell.with_command_log();
-    }
-    let hooks = TwinHooks {
-        say: Box::new(|line| println!("{line}")),
-        wall: Box::new(instant),
-        sleep: real_time.then(|| Box::new(std::thread::sleep) as Box<dyn Fn(Duration)>),
-        soak: args.soak_report.map(|minutes| {
-            let every = Duration::from_secs(minutes.saturating_mul(60));
-            (every, Box::new(rss_mib) as Box<dyn Fn() -> Option<f64>>)
-        }),
-    };
-    let mut twin = TwinStation::new(
-        SimSource::new(sim),
-        FaultPlayer::new(schedule),
-        handovers
-            .iter()
-            .map(|h| ClassHandover {
-                class: h.class,
-                point: h.point,
-            })
-            .collect(),
-        true_class,
-        joints,
-        &rig,
-        start,
-        (1e9 / args.fps).round() as i64,
-        hooks,
+    let d = DisplayThread::start(addr)
+        .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
+    println!(
+        "  operator display: http://{}/ (the session runs in real time)",
+        d.bound()
     );
-    // One session, by the cell's rules (the session driver's); the twin's station is ready at once.
-    let mut driver = Driver::new(cell, Some(1));
-    let outcome = futures::executor::block_on(driver.run(&mut twin, &stop));
-    let now = twin.now();
-    if let Some(line) = twin.soak_last_line() {
-        println!("{line}");
-    }
-    let cell = driver.into_cell();
+    Ok(Some(d))
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    // First of all: a stop signal from here on holds the robot and closes the recording.
+    let stop = StopFlag::install()?;
+    check_args(args)?;
+    let (out, moved) = output_path(args)?;
+    // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
+    remove_stale_demo_dirs(&std::env::temp_dir());
+    let demo_dir =
+        TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
+    private_dir(&demo_dir.0)?;
+    let start = args.start_time.unwrap_or_else(wall_clock_nanos);
+    let prepared = prepare(args, &demo_dir.0.join("approvals"), start)?;
+    let (rec, out, moved) = open_recording(args, out, moved)?;
+    print_plan(args, &prepared, &out, moved);
+    let true_class = prepared.true_class;
+    let (outcome, now, cell) = play(args, prepared, rec, start, &stop)?;
     let (machine, robot, outputs) = cell.into_parts();
     drop(outputs.display);
     let messages = outputs.recording.close()?;
@@ -828,6 +800,78 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     println!(
         "  report:         ergocell report {recording} --out {report}   (one HTML file to keep)"
     );
+    exit_of(status, &machine, &out)
+}
+
+type DemoLoop = CellLoop<TwinRobot, DemoOutputs>;
+
+/// The session played on the twin: the cell loop with the demo's outputs and deadline, the twin's
+/// station, one session by the cell's rules (the session driver's; the twin's station is ready at
+/// once). Returns the outcome, the simulator's clock at the end and the cell.
+fn play(
+    args: &Args,
+    p: Prepared,
+    rec: McapRecorder,
+    start: i64,
+    stop: &StopFlag,
+) -> anyhow::Result<(Result<Outcome, DriverError>, i64, DemoLoop)> {
+    let display = start_display(args.display)?;
+    let real_time = display.is_some();
+    let outputs = DemoOutputs {
+        recording: Recording::new(Some(rec)),
+        display,
+        geometries: p
+            .handovers
+            .iter()
+            .map(|h| (h.class, h.geometry.clone()))
+            .collect(),
+        start,
+        rula: "RULA -".to_owned(),
+    };
+    let mut cell = CellLoop::new(p.machine, p.robot, outputs)
+        .with_deadline(start + (p.limit_secs * 1e9).round() as i64, p.limit_secs)
+        .with_driver_state();
+    if args.outcome.is_some() {
+        cell = cell.with_command_log();
+    }
+    let hooks = TwinHooks {
+        say: Box::new(|line| println!("{line}")),
+        wall: Box::new(instant),
+        sleep: real_time.then(|| Box::new(std::thread::sleep) as Box<dyn Fn(Duration)>),
+        soak: args.soak_report.map(|minutes| {
+            let every = Duration::from_secs(minutes.saturating_mul(60));
+            (every, Box::new(rss_mib) as Box<dyn Fn() -> Option<f64>>)
+        }),
+    };
+    let handovers = p
+        .handovers
+        .iter()
+        .map(|h| ClassHandover {
+            class: h.class,
+            point: h.point,
+        })
+        .collect();
+    let mut twin = TwinStation::new(
+        SimSource::new(p.sim),
+        FaultPlayer::new(p.schedule),
+        handovers,
+        p.true_class,
+        p.joints,
+        &p.rig,
+        start,
+        demo::frame_period_nanos(args.fps),
+        hooks,
+    );
+    let mut driver = Driver::new(cell, Some(1));
+    let outcome = futures::executor::block_on(driver.run(&mut twin, stop));
+    if let Some(line) = twin.soak_last_line() {
+        println!("{line}");
+    }
+    Ok((outcome, twin.now(), driver.into_cell()))
+}
+
+/// The demo's result from the session's exit status by the cell's rule.
+fn exit_of(status: ExitStatus, machine: &SessionMachine, out: &Path) -> anyhow::Result<()> {
     let s = machine.summary();
     match status {
         ExitStatus::Done => Ok(()),

@@ -3,12 +3,11 @@
 //! ([`ergocell_review::store`]). Each recording is streamed from its file, one at a
 //! time, so a month of shifts needs no more memory than one.
 
-use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
-use ergocell_ergonomics::export::csv_text;
-use ergocell_review::exposure::{stream_sessions, ExposureTable, SegmentRow};
+use ergocell_review::exposure::{ExposureSet, FILES};
+use ergocell_review::{exposure_csv, text};
 
 use super::{output, UsageError};
 
@@ -69,109 +68,9 @@ fn recordings(inputs: &[PathBuf]) -> anyhow::Result<Vec<PathBuf>> {
     Ok(out)
 }
 
-fn csv_bytes<T: serde::Serialize>(rows: impl IntoIterator<Item = T>) -> anyhow::Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    for row in rows {
-        w.serialize(row)?;
-    }
-    w.into_inner().context("writing CSV")
-}
-
-/// One `exposure.csv` row (shares of scored time, hours).
-#[derive(serde::Serialize)]
-struct GroupCsv<'a> {
-    operator: Cow<'a, str>,
-    period: Cow<'a, str>,
-    period_start: Cow<'a, str>,
-    class: Cow<'a, str>,
-    segment: Cow<'a, str>,
-    sessions: u32,
-    hours: f64,
-    rula_scored_hours: f64,
-    rula_al1_share: Option<f64>,
-    rula_al2_share: Option<f64>,
-    rula_al3_share: Option<f64>,
-    rula_al4_share: Option<f64>,
-    rula_al3plus_share: Option<f64>,
-    reba_scored_hours: f64,
-    reba_al3plus_share: Option<f64>,
-    rula_al3_longest_s: f64,
-    peak_grand_score: u8,
-    mean_posture_cost: Option<f64>,
-    static_holds: u32,
-    static_holds_exceeded: u32,
-    parts_taken: u32,
-}
-
-/// One `sessions.csv` row (seconds).
-#[derive(serde::Serialize)]
-struct SessionCsv<'a> {
-    operator: Cow<'a, str>,
-    file: Cow<'a, str>,
-    session: u32,
-    start_unix_s: f64,
-    day: Cow<'a, str>,
-    week: Cow<'a, str>,
-    class: Cow<'a, str>,
-    segment: Cow<'a, str>,
-    duration_s: f64,
-    rula_scored_s: f64,
-    rula_al1_s: f64,
-    rula_al2_s: f64,
-    rula_al3_s: f64,
-    rula_al4_s: f64,
-    reba_scored_s: f64,
-    reba_al0_s: f64,
-    reba_al1_s: f64,
-    reba_al2_s: f64,
-    reba_al3_s: f64,
-    reba_al4_s: f64,
-    rula_al3_longest_s: f64,
-    peak_grand_score: u8,
-    static_holds: u32,
-    static_holds_exceeded: u32,
-    parts_taken: u32,
-    // last, as in the Parquet store
-    posture_cost_s: f64,
-    posture_cost_point_s: f64,
-}
-
-impl<'a> From<&'a SegmentRow> for SessionCsv<'a> {
-    fn from(r: &'a SegmentRow) -> Self {
-        Self {
-            operator: csv_text(r.operator.as_deref().unwrap_or("-")),
-            file: csv_text(&r.file),
-            session: r.session,
-            start_unix_s: r.start_unix_nanos as f64 * 1e-9,
-            day: csv_text(&r.day),
-            week: csv_text(&r.week),
-            class: csv_text(r.class.as_deref().unwrap_or("-")),
-            segment: csv_text(&r.segment),
-            duration_s: r.duration_s,
-            rula_scored_s: r.rula_scored_s,
-            rula_al1_s: r.rula_al_s[0],
-            rula_al2_s: r.rula_al_s[1],
-            rula_al3_s: r.rula_al_s[2],
-            rula_al4_s: r.rula_al_s[3],
-            reba_scored_s: r.reba_scored_s,
-            reba_al0_s: r.reba_al_s[0],
-            reba_al1_s: r.reba_al_s[1],
-            reba_al2_s: r.reba_al_s[2],
-            reba_al3_s: r.reba_al_s[3],
-            reba_al4_s: r.reba_al_s[4],
-            rula_al3_longest_s: r.rula_al3_longest_s,
-            peak_grand_score: r.peak_grand_score,
-            posture_cost_s: r.posture_cost_s,
-            posture_cost_point_s: r.posture_cost_point_s,
-            static_holds: r.static_holds,
-            static_holds_exceeded: r.static_holds_exceeded,
-            parts_taken: r.parts_taken,
-        }
-    }
-}
-
-pub fn run(args: &Args) -> anyhow::Result<()> {
-    let files = recordings(&args.inputs)?;
+/// The files to write into `--out`, checked before any work: `--out` a folder that does not exist yet
+/// (or, with `--force`, does), and none of its files a recording.
+fn check_outputs(args: &Args, files: &[PathBuf]) -> anyhow::Result<[PathBuf; 4]> {
     match std::fs::metadata(&args.out) {
         Ok(m) if !m.is_dir() => {
             return Err(UsageError(format!(
@@ -189,71 +88,47 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         _ => {}
     }
-    let outputs = [
-        "exposure.csv",
-        "sessions.csv",
-        "sessions.parquet",
-        "exposure.html",
-    ]
-    .map(|name| args.out.join(name));
+    let outputs = FILES.map(|name| args.out.join(name));
     let inputs: Vec<(&str, &Path)> = files.iter().map(|f| ("recording", f.as_path())).collect();
     for out in &outputs {
         output::check_in_new_folder("--out", out, true, &inputs)?;
     }
+    Ok(outputs)
+}
 
-    let mut table = ExposureTable::default();
-    let mut rows: Vec<SegmentRow> = Vec::new();
-    let (mut read, mut sessions, mut failed) = (0usize, 0u32, 0usize);
-    for path in &files {
+/// Reads every recording, one at a time, saying what each held; one that cannot be read is named and
+/// left out.
+fn read_all(files: &[PathBuf]) -> ExposureSet {
+    let mut set = ExposureSet::default();
+    for path in files {
         let label = path.display().to_string();
-        let file = match ergocell::input::open(path) {
-            Ok((f, _)) => f,
-            Err(e) => {
-                eprintln!("  {label}: left out: {e}");
-                failed += 1;
-                continue;
-            }
-        };
-        let mut each = |row: SegmentRow| {
-            table.add(&row);
-            rows.push(row);
-        };
-        match stream_sessions(
-            std::io::BufReader::with_capacity(1 << 20, file),
-            &label,
-            &mut each,
-        ) {
+        let read = ergocell::input::open(path)
+            .map_err(|e| e.to_string())
+            .and_then(|(file, _)| {
+                set.read(std::io::BufReader::with_capacity(1 << 20, file), &label)
+                    .map_err(|e| e.to_string())
+            });
+        match read {
             Ok(r) => {
-                read += 1;
-                sessions += r.sessions;
-                println!(
-                    "  {label}: {} session(s), {} messages{}",
-                    r.sessions,
-                    r.stats.messages,
-                    if r.stats.complete {
-                        ""
-                    } else {
-                        " (incomplete)"
-                    }
-                );
-                for p in &r.stats.problems {
-                    eprintln!("    {p}");
-                }
-                if r.late_poses > 0 {
-                    eprintln!(
-                        "    {} operator pose(s) arrived more than {} messages out of capture order and were not read for the task segments",
-                        r.late_poses,
-                        ergocell_review::exposure::REORDER_WINDOW
-                    );
+                println!("{}", text::recording_read_line(&label, &r));
+                for note in text::recording_notes(&r) {
+                    eprintln!("{note}");
                 }
             }
             Err(e) => {
                 eprintln!("  {label}: left out: {e}");
-                failed += 1;
+                set.left_out();
             }
         }
     }
-    if read == 0 {
+    set
+}
+
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let files = recordings(&args.inputs)?;
+    let outputs = check_outputs(args, &files)?;
+    let set = read_all(&files);
+    if set.recordings == 0 {
         return Err(UsageError(format!(
             "none of the {} recording(s) could be read",
             files.len()
@@ -262,54 +137,23 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
-    let groups = csv_bytes(table.groups.iter().map(|(k, g)| GroupCsv {
-        operator: csv_text(&k.operator),
-        period: csv_text(k.period),
-        period_start: csv_text(&k.period_start),
-        class: csv_text(&k.class),
-        segment: csv_text(&k.segment),
-        sessions: g.sessions,
-        hours: g.duration_s / 3600.0,
-        rula_scored_hours: g.rula_scored_s / 3600.0,
-        rula_al1_share: g.rula_level_share(1),
-        rula_al2_share: g.rula_level_share(2),
-        rula_al3_share: g.rula_level_share(3),
-        rula_al4_share: g.rula_level_share(4),
-        rula_al3plus_share: g.rula_share(3),
-        reba_scored_hours: g.reba_scored_s / 3600.0,
-        reba_al3plus_share: g.reba_share(3),
-        rula_al3_longest_s: g.rula_al3_longest_s,
-        peak_grand_score: g.peak_grand_score,
-        mean_posture_cost: g.mean_posture_cost(),
-        static_holds: g.static_holds,
-        static_holds_exceeded: g.static_holds_exceeded,
-        parts_taken: g.parts_taken,
-    }))?;
-    output::write("--out", &outputs[0], true, &groups)?;
+    output::write(
+        "--out",
+        &outputs[0],
+        true,
+        &exposure_csv::groups_csv(&set.table)?,
+    )?;
     output::write(
         "--out",
         &outputs[1],
         true,
-        &csv_bytes(rows.iter().map(SessionCsv::from))?,
+        &exposure_csv::sessions_csv(&set.rows)?,
     )?;
     let mut parquet = Vec::new();
-    ergocell_review::store::write_parquet(&rows, &mut parquet)?;
+    ergocell_review::store::write_parquet(&set.rows, &mut parquet)?;
     output::write("--out", &outputs[2], true, &parquet)?;
-    let html = ergocell_review::exposure::page(&table, read, sessions);
-    output::write("--out", &outputs[3], true, html.as_bytes())?;
-    println!(
-        "exposure: {read} recording(s), {sessions} session(s){}; {} groups → {} (and {}), {} session rows → {} and {}",
-        if failed > 0 {
-            format!(", {failed} left out")
-        } else {
-            String::new()
-        },
-        table.groups.len(),
-        outputs[0].display(),
-        outputs[3].display(),
-        rows.len(),
-        outputs[1].display(),
-        outputs[2].display()
-    );
+    output::write("--out", &outputs[3], true, set.page().as_bytes())?;
+    let shown = outputs.each_ref().map(|p| p.display().to_string());
+    println!("{}", text::exposure_done_line(&set, &shown));
     Ok(())
 }

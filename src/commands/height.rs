@@ -20,8 +20,11 @@
 
 use std::path::PathBuf;
 
-use ergocell_ergonomics::height::{ClassThresholds, DecisionBasis, HeightEstimate};
-use ergocell_ergonomics::{HeightConfig, HeightEstimator, HeightStatus, UpVector};
+use ergocell_ergonomics::height::{
+    calibrate_ear_offset, CalibrationSample, CalibrationSession, ClassThresholds, EarOffset,
+    RecordingHeight, HUMAN_STATURE_M,
+};
+use ergocell_ergonomics::{height_text, HeightConfig, UpVector};
 
 use super::rula::{parse_up, read_skeletons, resolve_up};
 use super::UsageError;
@@ -96,7 +99,7 @@ fn parse_session(s: &str) -> Result<(PathBuf, f64), String> {
         .trim()
         .parse()
         .map_err(|e| format!("{s:?}: the stature {stature:?} is not a number of metres: {e}"))?;
-    if !(stature_m.is_finite() && (0.5..=2.5).contains(&stature_m)) {
+    if !(stature_m.is_finite() && HUMAN_STATURE_M.contains(&stature_m)) {
         return Err(format!(
             "{s:?}: stature {stature_m} m is not a person's (0.5–2.5 m; centimetres given as metres?)"
         ));
@@ -107,26 +110,12 @@ fn parse_session(s: &str) -> Result<(PathBuf, f64), String> {
     Ok((PathBuf::from(file), stature_m))
 }
 
-fn calibrate(args: &CalibrateArgs) -> anyhow::Result<()> {
-    use anyhow::Context as _;
-    use ergocell_ergonomics::height::{calibrate_ear_offset, CalibrationSample, EarOffset};
-    let text = ergocell::input::read_text(&args.config, ergocell::input::Kind::Config)
-        .with_context(|| {
-            format!(
-            "cannot read {} (the calibration is written into the cell's own configuration: pass \
-             --config with an existing file)",
-            args.config.display()
-        )
-        })?;
-    let label = args.config.display().to_string();
-    let settings = ergocell_cell::CellSettings::from_toml_str(&text, &label)
-        .map_err(|e| UsageError(e.to_string()))?;
-    let up = resolve_up(args.up, &args.rig)?;
-    let mut config = settings.pipeline(up)?.height;
-    // Measured with no offset subtracted, over every upright frame, never deciding.
-    config.ear_offset = EarOffset::default();
-    config.min_frames = usize::MAX;
-    let mut samples = Vec::new();
+/// Each session measured: its upright frames' estimate with no ear offset subtracted, beside the
+/// stature measured. A session named twice or with no upright frame is a usage error.
+fn measure_sessions(
+    args: &CalibrateArgs,
+    config: &HeightConfig,
+) -> anyhow::Result<Vec<CalibrationSession>> {
     let mut rows = Vec::new();
     for (path, measured_m) in &args.sessions {
         for (other, _) in &args.sessions {
@@ -142,102 +131,91 @@ fn calibrate(args: &CalibrateArgs) -> anyhow::Result<()> {
             }
         }
         let frames = read_skeletons(path)?;
-        let mut estimator = HeightEstimator::new(config.clone());
-        for f in &frames {
-            estimator.push(f);
-        }
-        let estimate = estimator.estimate().ok_or_else(|| {
-            UsageError(format!(
-                "--session {}: no upright frame in {} frames (the person must stand straight at the \
-                 station, facing the cameras)",
-                path.display(),
-                frames.len()
-            ))
-        })?;
-        let sample = CalibrationSample::from_estimate(&estimate, *measured_m);
-        rows.push(serde_json::json!({
-            "session": path.display().to_string(),
-            "measured_m": measured_m,
-            "estimated_m": sample.estimated_m,
-            "upright_frames": estimate.frames_used,
-        }));
-        samples.push(sample);
+        let session = path.display().to_string();
+        let row = CalibrationSession::measure(session, config, &frames, *measured_m).ok_or_else(
+            || {
+                UsageError(format!(
+                    "--session {}: no upright frame in {} frames (the person must stand straight at the \
+                     station, facing the cameras)",
+                    path.display(),
+                    frames.len()
+                ))
+            },
+        )?;
+        rows.push(row);
     }
-    let offset = calibrate_ear_offset(&samples).map_err(|e| UsageError(e.to_string()))?;
-    let Some(sessions) = offset.calibrated_sessions else {
-        anyhow::bail!("the calibration returned no session count");
-    };
-    if args.json {
-        let doc =
-            serde_json::json!({ "ear_offset": offset, "sessions": rows, "written": !args.dry_run });
-        println!("{}", serde_json::to_string_pretty(&doc)?);
-    } else {
-        for (r, s) in rows.iter().zip(&samples) {
-            println!(
-                "  {}: measured {:.3} m, estimated {:.3} m uncalibrated ({:+.1} mm)",
-                r["session"].as_str().unwrap_or("?"),
-                s.measured_m,
-                s.estimated_m,
-                (s.estimated_m - s.measured_m) * 1e3
-            );
-        }
-        println!(
-            "ear landmark offset: {:+.1} ± {:.1} mm (1σ) from {sessions} sessions",
-            offset.offset_m * 1e3,
-            offset.sigma_m * 1e3
-        );
-    }
-    if args.dry_run {
-        return Ok(());
-    }
+    Ok(rows)
+}
+
+/// Writes the offset into the configuration's `[height]` (comments and layout kept), after checking
+/// that the result reads back; through a temporary file moved into place.
+fn write_offset(
+    args: &CalibrateArgs,
+    text: &str,
+    label: &str,
+    offset: &EarOffset,
+    sessions: usize,
+) -> anyhow::Result<()> {
     let mut doc: toml_edit::DocumentMut = text
         .parse()
         .map_err(|e| UsageError(format!("{label}: {e}")))?;
     if !doc.contains_table("height") {
         doc["height"] = toml_edit::table();
     }
-    let round = |x: f64| (x * 1e6).round() / 1e6;
-    doc["height"]["ear_offset_m"] = toml_edit::value(round(offset.offset_m));
-    doc["height"]["ear_offset_sigma_m"] = toml_edit::value(round(offset.sigma_m));
+    let rounded = offset.rounded_to_micrometre();
+    doc["height"]["ear_offset_m"] = toml_edit::value(rounded.offset_m);
+    doc["height"]["ear_offset_sigma_m"] = toml_edit::value(rounded.sigma_m);
     doc["height"]["ear_offset_sessions"] = toml_edit::value(i64::try_from(sessions)?);
     let new_text = doc.to_string();
     // What is written must read back as a valid configuration with this offset.
-    ergocell_cell::CellSettings::from_toml_str(&new_text, &label)
+    ergocell_cell::CellSettings::from_toml_str(&new_text, label)
         .map_err(|e| anyhow::anyhow!("the calibrated configuration does not read back: {e}"))?;
     let mut out = super::output::Partial::create("--config", &args.config, true)?;
     out.write(new_text.as_bytes())?;
     out.finish()?;
+    Ok(())
+}
+
+fn calibrate(args: &CalibrateArgs) -> anyhow::Result<()> {
+    use anyhow::Context as _;
+    let text = ergocell::input::read_text(&args.config, ergocell::input::Kind::Config)
+        .with_context(|| {
+            format!(
+            "cannot read {} (the calibration is written into the cell's own configuration: pass \
+             --config with an existing file)",
+            args.config.display()
+        )
+        })?;
+    let label = args.config.display().to_string();
+    let settings = ergocell_cell::CellSettings::from_toml_str(&text, &label)
+        .map_err(|e| UsageError(e.to_string()))?;
+    let up = resolve_up(args.up, &args.rig)?;
+    let config = settings.pipeline(up)?.height;
+    let rows = measure_sessions(args, &config)?;
+    let samples: Vec<CalibrationSample> = rows.iter().map(|r| r.sample).collect();
+    let offset = calibrate_ear_offset(&samples).map_err(|e| UsageError(e.to_string()))?;
+    let Some(sessions) = offset.calibrated_sessions else {
+        anyhow::bail!("the calibration returned no session count");
+    };
+    if args.json {
+        let doc = height_text::calibration_json(&rows, &offset, !args.dry_run);
+        println!("{}", serde_json::to_string_pretty(&doc)?);
+    } else {
+        print!(
+            "{}",
+            height_text::calibration_text(&rows, &offset, sessions)
+        );
+    }
+    if args.dry_run {
+        return Ok(());
+    }
+    write_offset(args, &text, &label, &offset, sessions)?;
     if !args.json {
         println!(
             "wrote [height] ear_offset_m, ear_offset_sigma_m, ear_offset_sessions into {label}"
         );
     }
     Ok(())
-}
-
-fn print_estimate(e: &HeightEstimate) {
-    println!(
-        "stature: {:.3} m ± {:.3} m (1σ), from {} upright frames",
-        e.height_m, e.uncertainty_m, e.frames_used
-    );
-    let o = &e.ear_offset;
-    if let Some(n) = o.calibrated_sessions {
-        println!(
-            "  ear landmark offset {:+.4} ± {:.4} m, calibrated on {n} sessions",
-            o.offset_m, o.sigma_m
-        );
-    } else {
-        println!(
-            "  ear landmark offset uncalibrated: {:+.4} ± {:.4} m assumed (`ergocell height calibrate` measures it)",
-            o.offset_m, o.sigma_m
-        );
-    }
-    for x in &e.estimators {
-        println!(
-            "  {:<14} {:.3} m ± {:.3} m ({} frames)",
-            x.name, x.height_m, x.sigma_m, x.frames
-        );
-    }
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
@@ -252,95 +230,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     config.floor_height_m = args.floor_height_m;
     config.thresholds = ClassThresholds::new(args.c1_below_m, args.c2_up_to_m)
         .map_err(|e| UsageError(e.to_string()))?;
-    let mut estimator = HeightEstimator::new(config);
-    let mut decided_at = None;
-    for (i, f) in frames.iter().enumerate() {
-        if estimator.push(f).is_some() {
-            decided_at = Some(i);
-        }
-    }
-    let status = estimator.status();
-    let segments = estimator.segment_estimate();
+    let recording = RecordingHeight::of(config, &frames);
     if args.json {
-        let doc = serde_json::json!({
-            "status": status,
-            "segment_lengths_any_posture": segments,
-            "decided_at_frame": decided_at,
-            "final_estimate": estimator.estimate(),
-            "frames": frames.len(),
-        });
-        println!("{}", serde_json::to_string_pretty(&doc)?);
+        println!("{}", serde_json::to_string_pretty(&recording.json())?);
         return Ok(());
     }
     println!("{} frames read from {}", frames.len(), landmarks.display());
-    match &status {
-        HeightStatus::Decided(d) => {
-            print_estimate(&d.estimate);
-            let [lo, hi] = d.interval_m;
-            let basis = match d.basis {
-                DecisionBasis::Interval => format!(
-                    "the ±{}σ interval {lo:.3}–{hi:.3} m lies inside the class",
-                    d.sigmas
-                ),
-                DecisionBasis::ExpectedRula => format!(
-                    "the ±{}σ interval {lo:.3}–{hi:.3} m straddles a boundary: the lowest expected RULA",
-                    d.sigmas
-                ),
-                DecisionBasis::MostProbable => format!(
-                    "the ±{}σ interval {lo:.3}–{hi:.3} m straddles a boundary: the most probable class",
-                    d.sigmas
-                ),
-            };
-            println!(
-                "class: {} (decided at frame {}: {basis})",
-                d.class.name(),
-                decided_at.map_or_else(|| "?".to_owned(), |i| i.to_string())
-            );
-            for o in &d.options {
-                println!(
-                    "  {}: probability {:.3}{}{}",
-                    o.class.name(),
-                    o.probability,
-                    o.expected_rula
-                        .map_or(String::new(), |r| format!(", expected RULA {r:.2}")),
-                    if o.served {
-                        ""
-                    } else {
-                        ", its trajectory does not serve this interval"
-                    }
-                );
-            }
-            if let Some(cost) = d.expected_rula_cost {
-                println!("expected cost against the true class: {cost:+.3} RULA grand score");
-            }
-            if let Some(now) = estimator.estimate() {
-                if now.frames_used > d.estimate.frames_used {
-                    println!(
-                        "over the whole recording: {:.3} m ± {:.3} m from {} upright frames",
-                        now.height_m, now.uncertainty_m, now.frames_used
-                    );
-                }
-            }
-        }
-        HeightStatus::Measuring {
-            estimate,
-            why,
-            frames_seen,
-            upright_frames,
-        } => {
-            if let Some(e) = estimate {
-                print_estimate(e);
-            }
-            println!(
-                "class: undecided — still measuring ({upright_frames} upright of {frames_seen} frames): {why}"
-            );
-        }
-    }
-    if let Some(seg) = segments {
-        println!(
-            "segment lengths (any posture, never decides the class): {:.3} m ± {:.3} m (1σ) over {} frames",
-            seg.height_m, seg.sigma_m, seg.frames
-        );
-    }
+    print!("{}", height_text::recording_text(&recording));
     Ok(())
 }

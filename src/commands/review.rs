@@ -23,7 +23,7 @@ use std::time::Duration;
 use anyhow::Context as _;
 use ergocell::input::{self, Kind};
 use ergocell_review::read::split_sessions;
-use ergocell_review::{analyse, page, read_recording, ReviewData, SessionReview};
+use ergocell_review::{analyse, page, read_recording, text, ReviewData, SessionReview};
 use ergocell_web::review_server::{self, Limits, Served, MAX_CONNECTIONS, SHUTDOWN_GRACE};
 use tokio::net::TcpListener;
 
@@ -164,6 +164,18 @@ pub struct ReportArgs {
     pub force: bool,
 }
 
+/// `--session`: a session the recording holds (a recording in which nobody was seen is one session).
+fn check_session(path: &Path, session: usize, count: usize) -> anyhow::Result<()> {
+    if session == 0 || session > count.max(1) {
+        return Err(UsageError(format!(
+            "{}: --session {session}: the recording holds {count} operator session(s)",
+            path.display()
+        ))
+        .into());
+    }
+    Ok(())
+}
+
 /// Reads one recording and analyses its operator session `session` (1-based); what is wrong with it
 /// goes to stderr and onto the page. The recording comes back when it was read whole (not for an
 /// overview).
@@ -182,25 +194,15 @@ fn load(
         read_recording(&bytes).map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
     let mut parts = split_sessions(&recording);
     let count = parts.len();
-    if session == 0 || session > count.max(1) {
-        return Err(UsageError(format!(
-            "{}: --session {session}: the recording holds {count} operator session(s)",
-            path.display()
-        ))
-        .into());
-    }
+    check_session(path, session, count)?;
     let name = file_name(path);
     let (label, mut recording) = if count > 1 {
-        let listing = parts
-            .iter()
-            .map(|p| format!("{}: {}", p.number, describe_part(&p.recording)))
-            .collect::<Vec<_>>()
-            .join("; ");
+        let listing = text::parts_listing(&parts);
         let mut chosen = parts.swap_remove(session - 1).recording;
         chosen
             .problems
-            .push(sessions_note(count, &listing, session));
-        (format!("{name} · session {session}/{count}"), chosen)
+            .push(text::sessions_note(count, &listing, session));
+        (text::session_label(&name, session, count), chosen)
     } else {
         (name, parts.pop().map_or(recording, |p| p.recording))
     };
@@ -223,17 +225,11 @@ fn file_name(path: &Path) -> String {
     )
 }
 
-/// The overview of a long recording's session `session` ([`ergocell_review::overview`]: read
-/// twice, streamed), when `frames` asks for it; `None` when the recording is to be read whole:
-/// `all`, a short recording or one that is not a regular file (a pipe cannot be read twice) under
-/// `auto`, or a recording in which nobody was seen.
-fn load_overview(
-    path: &Path,
-    session: usize,
-    frames: PageFrames,
-    budget: ergocell_review::overview::Budget,
-    windows: &[[f64; 2]],
-) -> anyhow::Result<Option<SessionReview>> {
+/// Whether `frames` asks for the overview of `path` (see [`load_overview`]): `all` never (and not
+/// with `--window`), `overview` always, `auto` with `--window` or from [`OVERVIEW_FROM_BYTES`] on.
+/// An overview of what is not a regular file is a usage error; one of a file over the recordings'
+/// size limit is left to the whole-file reader, which says so.
+fn overview_wanted(path: &Path, frames: PageFrames, windows: &[[f64; 2]]) -> anyhow::Result<bool> {
     let meta = std::fs::metadata(path)
         .ok()
         .filter(std::fs::Metadata::is_file);
@@ -255,7 +251,7 @@ fn load_overview(
         }
     };
     if !wanted {
-        return Ok(None);
+        return Ok(false);
     }
     let Some(meta) = meta else {
         return Err(UsageError(format!(
@@ -264,8 +260,21 @@ fn load_overview(
         ))
         .into());
     };
-    if meta.len() > Kind::Recording.limit_bytes() {
-        // Said by the whole-file reader, with its limit.
+    Ok(meta.len() <= Kind::Recording.limit_bytes())
+}
+
+/// The overview of a long recording's session `session` ([`ergocell_review::overview`]: read
+/// twice, streamed), when `frames` asks for it; `None` when the recording is to be read whole:
+/// `all`, a short recording or one that is not a regular file (a pipe cannot be read twice) under
+/// `auto`, or a recording in which nobody was seen.
+fn load_overview(
+    path: &Path,
+    session: usize,
+    frames: PageFrames,
+    budget: ergocell_review::overview::Budget,
+    windows: &[[f64; 2]],
+) -> anyhow::Result<Option<SessionReview>> {
+    if !overview_wanted(path, frames, windows)? {
         return Ok(None);
     }
     let open = || -> anyhow::Result<std::io::BufReader<std::fs::File>> {
@@ -279,28 +288,13 @@ fn load_overview(
         // Nobody was seen: nothing to thin, and the whole-file reader says what the file holds.
         return Ok(None);
     }
-    if session == 0 || session > count {
-        return Err(UsageError(format!(
-            "{}: --session {session}: the recording holds {count} operator session(s)",
-            path.display()
-        ))
-        .into());
-    }
+    check_session(path, session, count)?;
     let name = file_name(path);
     let (label, note) = if count > 1 {
-        let listing = plan
-            .briefs()
-            .iter()
-            .enumerate()
-            .map(|(k, b)| {
-                let class = b.class.as_ref().map(|(c, h)| (c.as_str(), *h));
-                format!("{}: {}", k + 1, describe(b.frames, class, b.secs))
-            })
-            .collect::<Vec<_>>()
-            .join("; ");
+        let listing = text::briefs_listing(plan.briefs());
         (
-            format!("{name} · session {session}/{count}"),
-            Some(sessions_note(count, &listing, session)),
+            text::session_label(&name, session, count),
+            Some(text::sessions_note(count, &listing, session)),
         )
     } else {
         (name, None)
@@ -317,37 +311,6 @@ fn load_overview(
     }
     warn_problems(path, &review);
     Ok(Some(review))
-}
-
-/// What a page of one of several sessions says about the others.
-fn sessions_note(count: usize, listing: &str, session: usize) -> String {
-    format!(
-        "this recording holds {count} operator sessions ({listing}); this page shows session {session} (--session N picks another)"
-    )
-}
-
-/// One line on an operator session: frames, class and height, duration.
-fn describe(frames: usize, class: Option<(&str, f64)>, secs: f64) -> String {
-    let class = class.map_or_else(
-        || "no class decided".to_owned(),
-        |(c, h)| format!("{c} at {h:.3} m"),
-    );
-    format!("{frames} frames, {class}, {secs:.0} s")
-}
-
-/// [`describe`] of a session read whole.
-fn describe_part(r: &ergocell_review::Recording) -> String {
-    let t0 = r.first_log_time_nanos.unwrap_or(0);
-    let secs = r
-        .last_log_time_nanos
-        .map_or(0.0, |t| t.saturating_sub(t0) as f64 * 1e-9);
-    let decided = r
-        .states
-        .iter()
-        .rev()
-        .find(|s| !s.message.height_class.is_empty())
-        .map(|s| (s.message.height_class.as_str(), s.message.height_m));
-    describe(r.poses.len(), decided, secs)
 }
 
 /// The page's data, and the first session's recording when it was read whole (for the frames CSV).
@@ -379,58 +342,13 @@ fn load_all(
     Ok((ReviewData::new(sessions), recording))
 }
 
-fn summary(data: &ReviewData) -> String {
-    data.sessions
-        .iter()
-        .map(|s| {
-            format!(
-                "{}: {} frames over {:.1} s{}, {} warnings{}, height {}, class {}{}{}",
-                s.label,
-                s.overview
-                    .as_ref()
-                    .map_or(s.frames.t.len(), |o| o.frames_recorded),
-                s.frames.t.last().copied().unwrap_or(0.0),
-                s.overview.as_ref().map_or(String::new(), |o| format!(
-                    " (the page holds {}: the overview)",
-                    o.frames_kept
-                )),
-                s.warnings
-                    .iter()
-                    .filter(|w| w.kind == ergocell_bridge::msg::PostureWarning::RAISED)
-                    .count(),
-                s.summary
-                    .posture_cost
-                    .mean()
-                    .map_or(String::new(), |c| format!(", mean posture cost {c:.3}")),
-                s.facts
-                    .height_m
-                    .map_or("not measured".to_owned(), |h| format!("{h:.3} m")),
-                s.facts.height_class.as_deref().unwrap_or("none"),
-                match (&s.facts.decision_basis, s.facts.class_probability) {
-                    (Some(b), Some(p)) => format!(
-                        " ({b}, probability {p:.2}{})",
-                        ergocell::messages::rula_cost_clause(s.facts.expected_rula_cost)
-                    ),
-                    _ => String::new(),
-                },
-                if s.source.complete {
-                    ""
-                } else {
-                    " (incomplete file)"
-                }
-            )
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
-}
-
-pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
+/// Every output of `report`, checked before any work: never an input, never another output, no
+/// overwrite without --force. Gives the first recording's frames: all of them for `--csv`.
+fn check_report_outputs(args: &ReportArgs) -> anyhow::Result<PageFrames> {
     let mut inputs = vec![("<recording>", args.input.recording.as_path())];
     if let Some(other) = &args.input.compare {
         inputs.push(("--compare", other.as_path()));
     }
-    // Every output checked before any work: never an input, never another output, no overwrite
-    // without --force.
     output::check("--out", &args.out, args.force, &inputs)?;
     inputs.push(("--out", args.out.as_path()));
     for (flag, path) in [("--csv", &args.csv), ("--summary-csv", &args.summary_csv)] {
@@ -449,16 +367,18 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
         }
     }
     // The frames CSV has a row per recorded frame: the first recording is then read whole.
-    let first_frames = match (args.csv.is_some(), args.input.page_frames) {
-        (false, frames) => frames,
-        (true, PageFrames::Overview) => {
-            return Err(UsageError(
-                "--csv writes every frame: it needs --page-frames all (or auto)".to_owned(),
-            )
-            .into())
-        }
-        (true, _) => PageFrames::All,
-    };
+    match (args.csv.is_some(), args.input.page_frames) {
+        (false, frames) => Ok(frames),
+        (true, PageFrames::Overview) => Err(UsageError(
+            "--csv writes every frame: it needs --page-frames all (or auto)".to_owned(),
+        )
+        .into()),
+        (true, _) => Ok(PageFrames::All),
+    }
+}
+
+pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
+    let first_frames = check_report_outputs(args)?;
     let (data, recording) = load_all(&args.input, first_frames)?;
     let html = page::report_page(&data).context("serialising the review")?;
     let first = &data.sessions[0];
@@ -487,11 +407,10 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
         output::write("--summary-csv", path, args.force, &bytes)?;
         println!("summary CSV: {}", path.display());
     }
-    println!("{}", summary(&data));
+    println!("{}", text::summary_text(&data));
     println!(
-        "report: {} ({:.1} MB, self-contained: opens offline in any browser)",
-        args.out.display(),
-        html.len() as f64 / 1e6
+        "{}",
+        text::report_line(&args.out.display().to_string(), html.len())
     );
     Ok(())
 }
@@ -524,7 +443,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         });
         let served = Arc::new(Served::new(page::served_page(&data), json, allowed_hosts));
         let app = review_server::router(served);
-        println!("{}", summary(&data));
+        println!("{}", text::summary_text(&data));
         let shown = if addr.ip().is_unspecified() {
             SocketAddr::new(IpAddr::V4(Ipv4Addr::LOCALHOST), addr.port())
         } else {

@@ -23,12 +23,14 @@ use std::path::{Path, PathBuf};
 
 use ergocell::input::{self, Kind};
 use ergocell_cell::{Assessment, PipelineConfig};
-use ergocell_ergonomics::activity::{ActivityConfig, ActivityTracker};
-use ergocell_ergonomics::assess::SideAssessment;
+use ergocell_ergonomics::activity::{Activity, ActivityConfig, ActivityTracker};
 use ergocell_ergonomics::export::{self, FrameCsv};
 use ergocell_ergonomics::rula::{parse_worksheets, score_worksheet};
-use ergocell_ergonomics::summary::{SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
-use ergocell_ergonomics::{AssessmentConfig, RulaScores, TaskConfig, UpVector};
+use ergocell_ergonomics::summary::{SessionSummary, SummaryBuilder, DEFAULT_MAX_FRAME_NANOS};
+use ergocell_ergonomics::track_text::{self, FrameText};
+use ergocell_ergonomics::{
+    summary_text, AssessmentConfig, RulaScores, TaskConfig, UpVector, WarningEvent,
+};
 use ergocell_formats::landmarks_file::{read_landmarks, LandmarksFormat};
 use ergocell_perception::fixed_lag::centered_mean;
 use ergocell_skeleton::Skeleton3;
@@ -175,66 +177,9 @@ fn score(input: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn side_text(s: Option<&SideAssessment>) -> String {
-    match s {
-        None => "not scored".to_owned(),
-        Some(a) => {
-            let c = &a.scores;
-            format!(
-                "{} AL{} (UA{} LA{} WR{} TW{} A{} C{} | N{} T{} L{} B{} D{}){} REBA {} AL{}{}",
-                c.final_score,
-                c.action_level,
-                c.upper_arm_score,
-                c.lower_arm_score,
-                c.wrist_score,
-                c.wrist_twist_score,
-                c.posture_score_a,
-                c.score_c_wrist_arm,
-                c.neck_score,
-                c.trunk_score,
-                c.legs_score,
-                c.posture_score_b,
-                c.score_d_neck_trunk_legs,
-                if a.uncertain { " uncertain" } else { "" },
-                a.reba.scores.reba_score,
-                a.reba.scores.action_level,
-                if a.reba.uncertain && !a.uncertain {
-                    " (REBA uncertain)"
-                } else {
-                    ""
-                }
-            )
-        }
-    }
-}
-
-/// The reasons a scored side is uncertain (none for an unscored or a certain side).
-fn why_uncertain(s: Option<&SideAssessment>) -> Vec<String> {
-    s.map(|a| a.uncertain_reasons.clone()).unwrap_or_default()
-}
-
-/// One side's breakdown as JSON: the scores, the worksheet that was scored, and where each input came
-/// from (observed, held, not observed, conservative, configured, time series) with the reasons a score
-/// is uncertain.
-fn side_json(s: &SideAssessment) -> serde_json::Value {
-    let sources: serde_json::Map<String, serde_json::Value> = s
-        .sources
-        .iter()
-        .map(|(name, source)| ((*name).to_owned(), serde_json::json!(source)))
-        .collect();
-    serde_json::json!({
-        "scores": s.scores,
-        "uncertain": s.uncertain,
-        "uncertain_reasons": s.uncertain_reasons,
-        "notes": s.notes,
-        "input": s.input,
-        "sources": sources,
-        "reba": s.reba,
-    })
-}
-
-fn track(args: &TrackArgs) -> anyhow::Result<()> {
-    // The outputs: never an input, never each other, no overwrite without --force — before any work.
+/// The outputs, checked before any work: never an input, never each other, no overwrite without
+/// --force.
+fn check_outputs(args: &TrackArgs) -> anyhow::Result<()> {
     let mut inputs: Vec<(&str, &Path)> =
         vec![("--landmarks", &args.landmarks), ("--rig", &args.rig)];
     if let Some(task) = &args.task {
@@ -254,12 +199,12 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
             .into());
         }
     }
-    let frames = read_skeletons(&args.landmarks)?;
-    let frames = match args.fixed_lag_s {
-        Some(seconds) => centered_mean(&frames, seconds)
-            .map_err(|e| UsageError(format!("--fixed-lag-s: {e}")))?,
-        None => frames,
-    };
+    Ok(())
+}
+
+/// The assessment's configuration: the task file's (or the defaults), the world's up, the floor and
+/// the confidence threshold.
+fn assessment_config(args: &TrackArgs) -> anyhow::Result<AssessmentConfig> {
     let task: TaskConfig = match &args.task {
         Some(path) => {
             let text = input::read_text(path, Kind::Config)?;
@@ -272,31 +217,41 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
     config.floor_height_m = args.floor_height_m;
     config.min_confidence = args.min_confidence;
     config.task = task;
-    // The cell controller's assessment stage (RULA → warnings) with its defaults, on the file's
-    // skeletons as they are (a file from `triangulate --filter causal` was filtered there).
+    Ok(config)
+}
+
+/// What scoring every frame gave: the summary, the warning events, the frames as JSON (`--json`)
+/// and the frame CSV's bytes (`--csv`).
+struct Scored {
+    summary: SessionSummary,
+    events: Vec<WarningEvent>,
+    frame_docs: Vec<serde_json::Value>,
+    frame_csv: Option<Vec<u8>>,
+}
+
+/// Scores every frame with the cell controller's assessment stage (RULA → warnings) and its
+/// defaults, on the file's skeletons as they are (a file from `triangulate --filter causal` was
+/// filtered there); prints each frame's text unless `--json`.
+fn score_frames(
+    args: &TrackArgs,
+    frames: &[Skeleton3],
+    config: &AssessmentConfig,
+) -> anyhow::Result<Scored> {
     let mut pipeline_config = PipelineConfig::new(config.up);
-    pipeline_config.assessment = config;
+    pipeline_config.assessment = *config;
     let mut stage = Assessment::new(&pipeline_config).map_err(|e| UsageError(e.to_string()))?;
     // The one summary (time-weighted, gaps not counted), as `ergocell review` shows it.
-    let mut summary =
-        SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS).trunk_supported(task.seated_well_supported);
+    let mut summary = SummaryBuilder::new(DEFAULT_MAX_FRAME_NANOS)
+        .trunk_supported(config.task.seated_well_supported);
     // Task segments from the skeleton alone (walking, floor pick, in place).
     let mut activity = ActivityTracker::new(ActivityConfig::default(), &config.up)
         .map_err(|e| UsageError(e.to_string()))?;
-    let t0 = frames[0].stamp_nanos;
+    let mut text = FrameText::new(frames[0].stamp_nanos);
+    if !args.json {
+        print!("{}", track_text::header_text(args.fixed_lag_s));
+    }
     let mut frame_docs = Vec::new();
     let mut events = Vec::new();
-    if !args.json {
-        println!("# time_s  left: final AL (regions) REBA score AL | right: ... ; UA upper arm, LA lower arm, WR wrist, TW twist, N neck, T trunk, L legs; REBA (Hignett & McAtamney 2000) from the same angles plus the knees");
-        if let Some(seconds) = args.fixed_lag_s {
-            println!(
-                "# scored on a fixed-lag mean of the landmarks over ±{seconds} s of each frame (a gap in the file ends the window), the legs below the hips as recorded"
-            );
-        }
-        println!("# configured (task config): force/load, wrist twist, arm supported, seated; muscle use: from the time series; the rest observed (\"uncertain\": an input held, not observed, scored conservatively or of low confidence; the reasons follow on a \"why\" line when they change; --json lists each input's source)");
-    }
-    // The reasons last printed (text output): a side's uncertain reasons, the frame's unscored ones.
-    let mut last_why: [Vec<String>; 3] = Default::default();
     let mut frame_csv = match &args.csv {
         Some(_) => Some(FrameCsv::new(Vec::new())?),
         None => None,
@@ -306,90 +261,50 @@ fn track(args: &TrackArgs) -> anyhow::Result<()> {
         let frame = tracked
             .assessment
             .map_err(|e| UsageError(format!("{}: frame {i}: {e}", args.landmarks.display())))?;
-        summary.add(
-            &frame,
-            activity
-                .update(skeleton)
-                .map(ergocell_ergonomics::activity::Activity::name),
-        );
+        summary.add(&frame, activity.update(skeleton).map(Activity::name));
         let new_events = tracked.warnings;
         if let Some(csv) = frame_csv.as_mut() {
             csv.write(&frame, &new_events)?;
         }
-        let t = (frame.stamp_nanos - t0) as f64 * 1e-9;
         if args.json {
-            frame_docs.push(serde_json::json!({
-                "stamp_nanos": frame.stamp_nanos,
-                "left": frame.left.as_ref().map(side_json),
-                "right": frame.right.as_ref().map(side_json),
-                "unscored_reasons": frame.unscored_reasons,
-                "headline": frame.headline().map(|h| h.side),
-            }));
+            frame_docs.push(track_text::frame_json(&frame));
         } else {
-            print_frame_text(t, &frame, &new_events, &mut last_why);
+            print!("{}", text.frame(&frame, &new_events));
         }
         events.extend(new_events);
     }
-    let s = summary.finish();
-    if let (Some(path), Some(csv)) = (&args.csv, frame_csv) {
-        super::output::write("--csv", path, args.force, &csv.finish()?)?;
+    Ok(Scored {
+        summary: summary.finish(),
+        events,
+        frame_docs,
+        frame_csv: frame_csv.map(FrameCsv::finish).transpose()?,
+    })
+}
+
+fn track(args: &TrackArgs) -> anyhow::Result<()> {
+    check_outputs(args)?;
+    let frames = read_skeletons(&args.landmarks)?;
+    let frames = match args.fixed_lag_s {
+        Some(seconds) => centered_mean(&frames, seconds)
+            .map_err(|e| UsageError(format!("--fixed-lag-s: {e}")))?,
+        None => frames,
+    };
+    let config = assessment_config(args)?;
+    let t0 = frames[0].stamp_nanos;
+    let scored = score_frames(args, &frames, &config)?;
+    let (s, events) = (&scored.summary, &scored.events);
+    if let (Some(path), Some(bytes)) = (&args.csv, &scored.frame_csv) {
+        super::output::write("--csv", path, args.force, bytes)?;
     }
     if let Some(path) = &args.summary_csv {
-        let bytes = export::write_summary(Vec::new(), &s, &export::raised_per_region(&events))?;
+        let bytes = export::write_summary(Vec::new(), s, &export::raised_per_region(events))?;
         super::output::write("--summary-csv", path, args.force, &bytes)?;
     }
     if args.json {
-        let fixed_lag = args
-            .fixed_lag_s
-            .map(|s| serde_json::json!({ "half_window_s": s }));
-        let doc = serde_json::json!({ "frames": frame_docs, "warnings": events, "summary": s, "fixed_lag": fixed_lag });
+        let doc = track_text::document_json(&scored.frame_docs, events, s, args.fixed_lag_s);
         println!("{}", serde_json::to_string_pretty(&doc)?);
         return Ok(());
     }
-    print!(
-        "{}",
-        ergocell_ergonomics::summary_text::session_text(&s, &events, t0)
-    );
+    print!("{}", summary_text::session_text(s, events, t0));
     Ok(())
-}
-
-/// One frame as text: the scores per side, the reasons when they change (`last_why`: those last
-/// printed), the warnings.
-fn print_frame_text(
-    t: f64,
-    frame: &ergocell_ergonomics::FrameAssessment,
-    new_events: &[ergocell_ergonomics::WarningEvent],
-    last_why: &mut [Vec<String>; 3],
-) {
-    let head = frame.headline().map_or("-", |h| h.side.name());
-    println!(
-        "{t:8.3}  left: {}  right: {}  worse: {head}",
-        side_text(frame.left.as_ref()),
-        side_text(frame.right.as_ref())
-    );
-    let why = [
-        ("left uncertain", why_uncertain(frame.left.as_ref())),
-        ("right uncertain", why_uncertain(frame.right.as_ref())),
-        ("not scored", frame.unscored_reasons.clone()),
-    ];
-    for ((label, reasons), last) in why.into_iter().zip(last_why.iter_mut()) {
-        if reasons != *last {
-            if !reasons.is_empty() {
-                println!("{t:8.3}  why {label}: {}", reasons.join("; "));
-            }
-            *last = reasons;
-        }
-    }
-    for e in new_events {
-        println!(
-            "{t:8.3}  WARNING {:?}: {}{}",
-            e.kind,
-            e.message,
-            if e.uncertain {
-                " [uncertain tracking]"
-            } else {
-                ""
-            }
-        );
-    }
 }

@@ -11,21 +11,24 @@ use ergocell_formats::import::{
     match_camera_folders, parse_caliscope_xy_bytes, scan_caliscope_xy, CaliscopeStream,
     OpenPosePlan,
 };
-use ergocell_formats::landmarks_file::{LandmarksEncoder, LandmarksFormat};
+use ergocell_formats::landmarks_file::{LandmarksFormat, StreamingEncoder};
 use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::detections::{Frame2, ImportStats};
 use ergocell_perception::detector_error;
-use ergocell_perception::metrics::{PerCameraReprojection, StreamingStats};
+use ergocell_perception::metrics::RunTally;
+use ergocell_perception::report_text;
 use ergocell_perception::temporal::OneEuroParams;
 use ergocell_perception::video_geometry::{parse_declarations, VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, FusionMethod, KeypointFormat};
-use ergocell_skeleton::{Skeleton3, LANDMARK_COUNT};
 
 use super::signals::{StopFlag, Stopped};
 use super::{output, UsageError};
 
 /// Frames read ahead of the fusion by the reading thread (a few hundred kB: memory stays flat).
 const READ_AHEAD: usize = 64;
+
+/// The output is written out whenever this much of it is encoded.
+const FLUSH_BYTES: usize = 1 << 20;
 
 /// Arguments of `ergocell triangulate`.
 #[derive(Debug, clap::Args)]
@@ -76,28 +79,83 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> anyhow::Result<()> {
+    let out_format = check_args(args)?;
+    let rig = read_rig(&args.calibration)?;
+    let (source, maps, frame_count) = open_detections(args, &rig)?;
+    let reconstruction = Reconstruction::new(rig.clone(), reconstruction_config(args))?;
+    let name = args
+        .out
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    // Streamed: frames are read, fused and written one at a time into a temporary file beside
+    // --out, renamed onto it at the end (a failed or stopped run leaves no half-written --out). The
+    // TRC header states the rate: estimated from the first fused frames, which are held back until
+    // then (`StreamingEncoder`).
+    let out = output::Partial::create("--out", &args.out, args.force)?;
+    let stop = StopFlag::install()?;
+    // the binary's wall clock, for the throughput figure only
+    #[allow(clippy::disallowed_methods)]
+    let started = std::time::Instant::now();
+    let mut fusing = Fusing {
+        args,
+        rig: &rig,
+        reconstruction,
+        tally: RunTally::default(),
+        encoder: StreamingEncoder::new(out_format, &name, args.rate_hz, frame_count),
+        out,
+        kept_frames: Vec::new(),
+        progress: progress_bar(frame_count),
+        frame_count,
+    };
+    let source = fusing.fuse_all(source, &maps, &stop)?;
+    let done = fusing.finish(&source, started)?;
+    print_source_warnings(&source);
+    let learnt_offsets: Vec<_> = (0..rig.len())
+        .map(|k| done.reconstruction.view_offset(k))
+        .collect();
+    print!(
+        "{}",
+        report_text::triangulation_summary(
+            &rig,
+            &done.tally,
+            &learnt_offsets,
+            &args.fusion,
+            &args.filter,
+            done.elapsed_s
+        )
+    );
+    println!("wrote {}", args.out.display());
+    if let Some(path) = &args.detector_error {
+        write_detector_error(args, path, &rig, &done.kept_frames)?;
+    }
+    Ok(())
+}
+
+/// The cell controller's reconstruction stage with its defaults, but every frame written (no
+/// tracked gate: a file keeps what was seen) and the filter only when asked for.
+fn reconstruction_config(args: &Args) -> ReconstructionConfig {
+    ReconstructionConfig {
+        fusion: FusionMethod::from_name(&args.fusion).unwrap_or_default(),
+        filter: (args.filter == "causal").then(OneEuroParams::default),
+        min_tracked_landmarks: 0,
+        ..ReconstructionConfig::default()
+    }
+}
+
+/// The flags checked before anything is read: --out's format, the outputs (not an existing file
+/// unless --force, never an input), --persistent-window-s and --rate-hz.
+fn check_args(args: &Args) -> anyhow::Result<LandmarksFormat> {
     let out_format =
         LandmarksFormat::from_path(&args.out).map_err(|e| UsageError(e.to_string()))?;
-    output::check(
-        "--out",
-        &args.out,
-        args.force,
-        &[
-            ("--calibration", args.calibration.as_path()),
-            ("--detections", args.detections.as_path()),
-        ],
-    )?;
+    let inputs = [
+        ("--calibration", args.calibration.as_path()),
+        ("--detections", args.detections.as_path()),
+    ];
+    output::check("--out", &args.out, args.force, &inputs)?;
     if let Some(path) = &args.detector_error {
-        output::check(
-            "--detector-error",
-            path,
-            args.force,
-            &[
-                ("--calibration", args.calibration.as_path()),
-                ("--detections", args.detections.as_path()),
-                ("--out", args.out.as_path()),
-            ],
-        )?;
+        let others = [inputs[0], inputs[1], ("--out", args.out.as_path())];
+        output::check("--detector-error", path, args.force, &others)?;
         if !(args.persistent_window_s.is_finite() && args.persistent_window_s > 0.0) {
             bail!(UsageError(format!(
                 "--persistent-window-s must be positive, got {}",
@@ -111,162 +169,178 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             args.rate_hz
         )));
     }
-    let calibration_name = args.calibration.display().to_string();
-    let text = input::read_text(&args.calibration, Kind::Config)?;
-    let (rig, rig_format) =
-        parse_rig(&text, &calibration_name).map_err(|e| UsageError(e.to_string()))?;
+    Ok(out_format)
+}
+
+/// The calibration (ergocell, Anipose/Pose2Sim or caliscope; a file that does not parse is a usage
+/// error), announced on stderr.
+fn read_rig(path: &Path) -> anyhow::Result<CameraRig> {
+    let name = path.display().to_string();
+    let text = input::read_text(path, Kind::Config)?;
+    let (rig, rig_format) = parse_rig(&text, &name).map_err(|e| UsageError(e.to_string()))?;
     eprintln!(
         "calibration: {} cameras ({rig_format:?} format), {} stereo pairs",
         rig.len(),
         rig.pairs().len()
     );
+    Ok(rig)
+}
 
-    let (mut source, maps, frame_count) = open_detections(args, &rig)?;
+/// What the fusion loop updates frame by frame: the reconstruction, the run's tallies, the output
+/// being encoded and written, and the frames kept for --detector-error.
+struct Fusing<'a> {
+    args: &'a Args,
+    rig: &'a CameraRig,
+    reconstruction: Reconstruction,
+    tally: RunTally,
+    encoder: StreamingEncoder,
+    out: output::Partial,
+    kept_frames: Vec<Frame2>,
+    progress: indicatif::ProgressBar,
+    frame_count: usize,
+}
 
-    // The cell controller's reconstruction stage with its defaults, but every frame written (no
-    // tracked gate: a file keeps what was seen) and the filter only when asked for.
-    let config = ReconstructionConfig {
-        fusion: FusionMethod::from_name(&args.fusion).unwrap_or_default(),
-        filter: (args.filter == "causal").then(OneEuroParams::default),
-        min_tracked_landmarks: 0,
-        ..ReconstructionConfig::default()
-    };
-    let mut reconstruction = Reconstruction::new(rig.clone(), config)?;
-    let name = args
-        .out
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    // Streamed: frames are read, fused and written one at a time into a temporary file beside
-    // --out, renamed onto it at the end (a failed or stopped run leaves no half-written --out). The
-    // TRC header states the rate: estimated from the first RATE_FRAMES fused frames, which are
-    // held back until then.
-    let mut out = output::Partial::create("--out", &args.out, args.force)?;
-    let stop = StopFlag::install()?;
-    // the binary's wall clock, for the throughput figure only
-    #[allow(clippy::disallowed_methods)]
-    let started = std::time::Instant::now();
-    let mut stats = StreamingStats::default();
-    let mut per_camera = PerCameraReprojection::default();
-    let mut held: Vec<Skeleton3> = Vec::new();
-    let mut encoder: Option<LandmarksEncoder> = None;
-    let mut text = String::new();
-    // the encoder, once the frame rate is known: the header and the held frames into `text`
-    let start = |held: &mut Vec<Skeleton3>, text: &mut String| {
-        let rate = estimate_rate_hz(held).unwrap_or(args.rate_hz);
-        let mut e = LandmarksEncoder::new(out_format, &name, rate, frame_count);
-        text.push_str(&e.header());
-        for s in held.drain(..) {
-            e.frame_into(&s, text);
-        }
-        e
-    };
-    let (mut rejected, mut undistortion_failures) = (0, 0);
-    let mut kept_frames: Vec<Frame2> = Vec::new();
-    let progress = progress_bar(frame_count);
-    // The detections are read and parsed on a second thread, up to READ_AHEAD frames ahead of the
-    // fusion (one producer, one FIFO channel: the order is kept): reading was a third of the time.
-    // The reader hands `source` back for its statistics; it stops when the fusion does (a closed
-    // channel).
-    let source = std::thread::scope(|scope| -> anyhow::Result<FrameSource<'_>> {
-        let (frames, received) = std::sync::mpsc::sync_channel::<Frame2>(READ_AHEAD);
-        let maps = &maps;
-        let reader = scope.spawn(move || {
-            for mut frame in source.by_ref() {
-                for view in &mut frame.views {
-                    if let Some(m) = maps.get(view.camera) {
-                        m.apply_view(view);
+/// A finished run: the reconstruction (with the image offsets it learnt), the tallies, the frames
+/// kept for --detector-error, and the wall time reading, fusion and writing took.
+struct Fused {
+    reconstruction: Reconstruction,
+    tally: RunTally,
+    kept_frames: Vec<Frame2>,
+    elapsed_s: f64,
+}
+
+impl Fusing<'_> {
+    /// The detections are read and parsed on a second thread, up to READ_AHEAD frames ahead of the
+    /// fusion (one producer, one FIFO channel: the order is kept): reading was a third of the time.
+    /// Each view is mapped into its calibrated image there. The reader hands `source` back for its
+    /// statistics; it stops when the fusion does (a closed channel).
+    fn fuse_all<'s>(
+        &mut self,
+        mut source: FrameSource<'s>,
+        maps: &[VideoMap],
+        stop: &StopFlag,
+    ) -> anyhow::Result<FrameSource<'s>> {
+        std::thread::scope(|scope| -> anyhow::Result<FrameSource<'s>> {
+            let (frames, received) = std::sync::mpsc::sync_channel::<Frame2>(READ_AHEAD);
+            let reader = scope.spawn(move || {
+                for mut frame in source.by_ref() {
+                    for view in &mut frame.views {
+                        if let Some(m) = maps.get(view.camera) {
+                            m.apply_view(view);
+                        }
+                    }
+                    if frames.send(frame).is_err() {
+                        break;
                     }
                 }
-                if frames.send(frame).is_err() {
-                    break;
-                }
+                source
+            });
+            for frame in received {
+                self.stop_if_asked(stop)?;
+                self.fuse(frame)?;
             }
-            source
-        });
-        for frame in received {
-            if let Some(signal) = stop.get() {
-                out.discard();
-                return Err(Stopped {
-                    signal,
-                    what: format!(
-                        "{} of {frame_count} frames triangulated, {} not written",
-                        stats.frames(),
-                        args.out.display()
-                    ),
-                }
-                .into());
-            }
-            let r = reconstruction.process_frame(&frame)?;
-            if args.detector_error.is_some() {
-                kept_frames.push(frame.clone());
-            }
-            rejected += r.fused.rejected_views;
-            undistortion_failures += r.fused.undistortion_failures;
-            let swapped = r.fused.swapped_views;
-            let skeleton = r.tracked.unwrap_or(r.fused.skeleton);
-            stats.push(&skeleton);
-            per_camera.push(&rig, &frame, &skeleton, swapped);
-            progress.inc(1);
-            if let Some(e) = encoder.as_mut() {
-                e.frame_into(&skeleton, &mut text);
-                if text.len() > 1 << 20 {
-                    out.write(text.as_bytes())?;
-                    text.clear();
-                }
-            } else {
-                held.push(skeleton);
-            }
-            if held.len() == RATE_FRAMES {
-                encoder = Some(start(&mut held, &mut text));
-            }
+            reader
+                .join()
+                .map_err(|_| anyhow::anyhow!("the thread reading the detections failed"))
+        })
+    }
+
+    /// A stop signal (SIGINT, SIGTERM) ends the run: the output discarded, what was done said.
+    fn stop_if_asked(&mut self, stop: &StopFlag) -> anyhow::Result<()> {
+        let Some(signal) = stop.get() else {
+            return Ok(());
+        };
+        self.out.discard();
+        Err(Stopped {
+            signal,
+            what: format!(
+                "{} of {} frames triangulated, {} not written",
+                self.tally.stats.frames(),
+                self.frame_count,
+                self.args.out.display()
+            ),
         }
-        reader
-            .join()
-            .map_err(|_| anyhow::anyhow!("the thread reading the detections failed"))
-    })?;
-    let e = encoder.get_or_insert_with(|| start(&mut held, &mut text));
-    let written = e.frames_written();
-    text.push_str(&e.footer());
-    out.write(text.as_bytes())?;
-    progress.finish_and_clear();
-    let elapsed = started.elapsed().as_secs_f64();
-    if written != frame_count {
-        out.discard();
-        if let Some(w) = source.stats().warning() {
+        .into())
+    }
+
+    /// One frame: fused, tallied, kept for --detector-error if asked, encoded (written out by the
+    /// [`FLUSH_BYTES`]).
+    fn fuse(&mut self, frame: Frame2) -> anyhow::Result<()> {
+        let r = self.reconstruction.process_frame(&frame)?;
+        let (fused, tracked) = (r.fused, r.tracked);
+        let delivered = tracked.as_ref().unwrap_or(&fused.skeleton);
+        self.tally.push(self.rig, &frame, &fused, delivered);
+        if self.args.detector_error.is_some() {
+            self.kept_frames.push(frame);
+        }
+        self.progress.inc(1);
+        self.encoder.push(tracked.unwrap_or(fused.skeleton));
+        if let Some(text) = self.encoder.take_text_over(FLUSH_BYTES) {
+            self.out.write(text.as_bytes())?;
+        }
+        Ok(())
+    }
+
+    /// Ends the output (the frames still held, the footer) and moves it onto --out when every frame
+    /// announced came out; otherwise discards it and says why. The wall time is taken before the
+    /// move.
+    fn finish(
+        self,
+        source: &FrameSource<'_>,
+        started: std::time::Instant,
+    ) -> anyhow::Result<Fused> {
+        let Self {
+            args,
+            reconstruction,
+            tally,
+            encoder,
+            mut out,
+            kept_frames,
+            progress,
+            frame_count,
+            ..
+        } = self;
+        let (text, written) = encoder.finish();
+        out.write(text.as_bytes())?;
+        progress.finish_and_clear();
+        let elapsed_s = started.elapsed().as_secs_f64();
+        if written != frame_count {
+            out.discard();
+            let detections = args.detections.display();
+            if let Some(w) = source.stats().warning() {
+                bail!("{detections}: {frame_count} frames found, {written} usable: {w}");
+            }
             bail!(
-                "{}: {frame_count} frames found, {written} usable: {w}",
-                args.detections.display()
+                "{detections}: {frame_count} frames announced, {written} read (the detections changed while being read?)"
             );
         }
-        bail!(
-            "{}: {frame_count} frames announced, {written} read (the detections changed while being read?)",
-            args.detections.display()
-        );
+        out.finish()?;
+        Ok(Fused {
+            reconstruction,
+            tally,
+            kept_frames,
+            elapsed_s,
+        })
     }
-    out.finish()?;
-    print_source_warnings(&source);
-    let counts = ViewCounts {
-        rejected,
-        undistortion_failures,
-        learnt_offsets: (0..rig.len())
-            .map(|k| reconstruction.view_offset(k))
-            .collect(),
+}
+
+/// --detector-error: each view measured against the other views over the kept frames
+/// (`ergocell_perception::detector_error`), the tables printed and written as JSON.
+fn write_detector_error(
+    args: &Args,
+    path: &Path,
+    rig: &CameraRig,
+    frames: &[Frame2],
+) -> anyhow::Result<()> {
+    let config = detector_error::MeasureConfig {
+        window_s: args.persistent_window_s,
+        ..detector_error::MeasureConfig::default()
     };
-    print_report(args, &rig, &stats, &per_camera, counts, elapsed);
-    println!("wrote {}", args.out.display());
-    if let Some(path) = &args.detector_error {
-        let config = detector_error::MeasureConfig {
-            window_s: args.persistent_window_s,
-            ..detector_error::MeasureConfig::default()
-        };
-        let report =
-            detector_error::measure(&rig, &kept_frames, &config).report(&rig, config.window_s);
-        print_detector_error(&report);
-        let json = serde_json::to_string_pretty(&report)?;
-        output::write("--detector-error", path, args.force, json.as_bytes())?;
-        println!("wrote {}", path.display());
-    }
+    let report = detector_error::measure(rig, frames, &config).report(rig, config.window_s);
+    print!("{}", report_text::detector_error_tables(&report));
+    let json = serde_json::to_string_pretty(&report)?;
+    output::write("--detector-error", path, args.force, json.as_bytes())?;
+    println!("wrote {}", path.display());
     Ok(())
 }
 
@@ -315,179 +389,6 @@ fn print_source_warnings(source: &FrameSource<'_>) {
         eprintln!("warning: {w}");
     }
 }
-
-/// Views the fusion left out: rejected (outliers, behind the camera) and keypoints outside the
-/// lens model.
-#[derive(Debug, Clone)]
-struct ViewCounts {
-    rejected: usize,
-    undistortion_failures: usize,
-    /// Per camera, the image offset the fusion learnt and took out of its views at the end.
-    learnt_offsets: Vec<Option<nalgebra::Vector2<f64>>>,
-}
-
-/// What the run found: landmarks triangulated, reprojection per camera, left/right swaps, rejected
-/// views, bone-length variation, throughput.
-fn print_report(
-    args: &Args,
-    rig: &CameraRig,
-    stats: &StreamingStats,
-    per_camera: &PerCameraReprojection,
-    counts: ViewCounts,
-    elapsed: f64,
-) {
-    let ViewCounts {
-        rejected,
-        undistortion_failures,
-        learnt_offsets,
-    } = counts;
-    let frames = stats.frames();
-    let triangulated = stats.landmarks();
-    println!("frames:                   {frames}");
-    println!(
-        "landmarks triangulated:   {triangulated} of {} ({:.1}%)",
-        frames * LANDMARK_COUNT,
-        100.0 * triangulated as f64 / (frames * LANDMARK_COUNT) as f64
-    );
-    println!(
-        "fusion:                   {} (filter: {})",
-        args.fusion, args.filter
-    );
-    if let Some(m) = stats.median_reprojection_px() {
-        println!("median reprojection err:  {m:.2} px");
-    }
-    let (mut seen, mut swapped) = (0, 0);
-    for (i, c) in rig.cameras().iter().enumerate() {
-        let (views, mirrored) = per_camera.views(i);
-        seen += views;
-        swapped += mirrored;
-        if let Some((m, n)) = per_camera.median_px(i) {
-            let learnt = learnt_offsets
-                .get(i)
-                .copied()
-                .flatten()
-                .map(|o| format!("; image offset learnt ({:+.1}, {:+.1}) px", o.x, o.y))
-                .unwrap_or_default();
-            println!(
-                "  camera {:<12} median reprojection {m:.2} px over {n} keypoints as delivered; {mirrored} of {views} views left/right-swapped, corrected{learnt}",
-                c.id.as_str(),
-            );
-        }
-    }
-    println!(
-        "left/right swaps:         {swapped} of {seen} views ({:.1}%) had the person's left and right swapped and were used mirrored",
-        100.0 * swapped as f64 / seen.max(1) as f64
-    );
-    println!("views rejected:           {rejected} (outliers or behind the camera), {undistortion_failures} keypoints outside the lens model");
-    if let Some(cv) = stats.bone_length_variation_percent() {
-        println!("bone-length variation:    {cv:.2}% (mean coefficient of variation over bones)");
-        for b in stats.bone_stats() {
-            println!(
-                "  {:>15} – {:<15} {:>6.3} m  ±{:>5.2}%  ({} frames)",
-                b.bone.0.name(),
-                b.bone.1.name(),
-                b.mean_m,
-                b.cv_percent,
-                b.frames
-            );
-        }
-    }
-    println!(
-        "throughput:               {:.0} frames/s ({frames} frames in {elapsed:.2} s: reading, fusion and writing)",
-        frames as f64 / elapsed.max(1e-9)
-    );
-}
-
-/// The detector-error tables ([`detector_error::DetectorErrorReport`]) on stdout, relative errors in
-/// per cent of the person's image height.
-fn print_detector_error(r: &detector_error::DetectorErrorReport) {
-    let pct =
-        |q: &detector_error::Quantiles| format!("{:>5.2} {:>5.2}", 100.0 * q.p50, 100.0 * q.p90);
-    println!(
-        "\ndetector error, each view against the other views ({} frames; % of the person's image height, median p90; persistent = mean over {} s):",
-        r.frames, r.window_s
-    );
-    println!(
-        "  {:<16} {:>7} {:>11} {:>11} {:>11} {:>13}",
-        "", "n", "total", "persistent", "jitter", "total px"
-    );
-    let row = |name: &str, s: &detector_error::ErrorStats| {
-        println!(
-            "  {name:<16} {:>7} {:>11} {:>11} {:>11} {:>6.1} {:>6.1}",
-            s.total.count,
-            pct(&s.total),
-            pct(&s.persistent),
-            pct(&s.jitter),
-            s.total_px.p50,
-            s.total_px.p90
-        );
-    };
-    row("all", &r.all);
-    println!(
-        "  {:<16} persistent part shared by the view's landmarks {}, each landmark's own {}",
-        "",
-        pct(&r.all.persistent_shared),
-        pct(&r.all.persistent_own)
-    );
-    let v = &r.view_structure;
-    println!(
-        "  {:<16} per view and frame: shift {}, scale error {}, rotation {:.1} {:.1}°; left per landmark {}",
-        "",
-        pct(&v.shift),
-        pct(&v.scale_error),
-        v.rotation_deg.p50,
-        v.rotation_deg.p90,
-        pct(&v.remainder)
-    );
-    for (name, s) in &r.groups {
-        row(name, s);
-    }
-    for c in &r.cameras {
-        row(&format!("camera {}", c.camera), &c.error);
-        println!(
-            "  {:<16} seen in {} frames, missing in {}, {:.1}% of landmarks dropped, {} frames left/right-swapped, {} someone else",
-            "", c.frames_seen, c.frames_missing, 100.0 * c.landmark_dropout, c.swapped_frames, c.identity_switches
-        );
-    }
-    println!("  by confidence:");
-    for b in &r.by_confidence {
-        println!(
-            "    {:.2}–{:.2}  n {:>6}  {}",
-            b.from,
-            b.to,
-            b.total.count,
-            pct(&b.total)
-        );
-    }
-    if let Some(rho) = r.confidence_error_spearman {
-        println!("    Spearman(confidence, error) = {rho:.2}");
-    } else {
-        println!("    (the detections carry no confidence)");
-    }
-    println!("  by viewing angle (0° = camera in front of the person):");
-    for b in &r.by_view_angle_deg {
-        println!(
-            "    {:>3.0}–{:<3.0}°  n {:>6}  {}",
-            b.from,
-            b.to,
-            b.total.count,
-            pct(&b.total)
-        );
-    }
-    if !r.persistence.is_empty() {
-        println!("  how long a landmark's own error lasts (its correlation with itself a lag later, the view's shift taken out):");
-        let row: Vec<String> = r
-            .persistence
-            .iter()
-            .map(|l| format!("{:.2} s {:.2}", l.lag_s, l.correlation))
-            .collect();
-        println!("    {}", row.join("   "));
-    }
-}
-
-/// Fused frames held back to estimate the frame rate a TRC header states (the whole recording when
-/// it is shorter; the old, in-memory command used them all).
-const RATE_FRAMES: usize = 1000;
 
 /// A progress bar on stderr when it is a terminal (hidden otherwise: no escape codes in logs).
 fn progress_bar(frames: usize) -> indicatif::ProgressBar {
@@ -660,16 +561,6 @@ impl Iterator for FrameSource<'_> {
             }
         }
     }
-}
-
-/// The frame rate implied by the stamps (median frame interval).
-fn estimate_rate_hz(skeletons: &[Skeleton3]) -> Option<f64> {
-    let dts: Vec<f64> = skeletons
-        .windows(2)
-        .map(|w| (w[1].stamp_nanos - w[0].stamp_nanos) as f64 * 1e-9)
-        .filter(|dt| *dt > 0.0)
-        .collect();
-    ergocell_perception::metrics::median(&dts).map(|dt| 1.0 / dt)
 }
 
 /// The file `ergocell-edge detect` writes beside a camera's frames: the video's source, size, rate
