@@ -6,6 +6,8 @@
 //! ros2_control joint trajectory controller then drops its goal and stops). It is not an emergency
 //! stop; that stays with the robot's safety controller.
 
+/// The DDS participant a [`RosNode`] lives in (dropped last: [`RosNode::participant`]).
+pub use ros2_client::dds::rustdds::DomainParticipant;
 use ros2_client::{Context, MessageTypeName, Name, Node, NodeName, NodeOptions, QosProfile};
 pub use ros2_client::{Publisher, Subscription};
 use serde::Deserialize;

@@ -13,6 +13,7 @@
 //! - [`outputs`]: the cell's publishers and recorder as one [`ergocell_cell::session::CellOutputs`].
 //! - [`clock`]: the wall clock at this boundary, advanced monotonically ([`clock::SessionClock`]).
 //! - [`robot_markers`]: the robot's TCP and handover point for the recording's markers.
+//! - [`replay`]: a recording's camera landmarks published again, paced as recorded.
 //! - [`station`]: `run`'s station, the cell's inputs on ROS 2 handed to the session driver one at a
 //!   time; [`console`]: what `run` says (its start, the sessions' summaries, the monitor's and the
 //!   steps' timings) as text.
@@ -27,6 +28,7 @@ pub mod messages;
 pub mod monitor;
 pub mod outputs;
 pub mod recording;
+pub mod replay;
 pub mod robot;
 pub mod robot_markers;
 pub mod station;

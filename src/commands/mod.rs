@@ -12,6 +12,7 @@ pub mod output;
 pub mod reba;
 pub mod replay;
 pub mod review;
+pub mod ros_node;
 pub mod rula;
 pub mod run;
 pub mod security;

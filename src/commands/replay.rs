@@ -3,16 +3,12 @@
 //! `run`'s (the same `[ros]`, network scope and SROS2 enclave rules).
 
 use std::path::PathBuf;
-use std::time::Duration;
 
-use anyhow::Context as _;
-use ergocell_bridge::msg::CameraLandmarks;
-use ergocell_bridge::qos;
-use ergocell_bridge::transport::{publish, RosConfig, RosNode};
-use ergocell_ros_backend::clock::{instant, now_nanos};
+use ergocell_bridge::transport::RosConfig;
 use ergocell_ros_backend::recording;
+use ergocell_ros_backend::replay::publish_paced;
 
-use super::run::{network_scope, say, security_enclave};
+use super::ros_node::{network_scope, runtime, say, StartedNode};
 use super::UsageError;
 use ergocell_bridge::scope::multicast_note;
 
@@ -86,68 +82,24 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         ))
         .into());
     }
-    let runtime = tokio::runtime::Builder::new_multi_thread()
-        .worker_threads(2)
-        .enable_all()
-        .build()
-        .context("tokio runtime")?;
-    let scope = network_scope(&ros)?;
-    let enclave = security_enclave(
+    let mut node = StartedNode::start(
+        runtime()?,
         &ros,
+        "replay",
         &args.config,
         args.keystore.as_deref(),
         "/ergocell/replay",
     )?;
-    let mut node = RosNode::new(
-        ros.domain_id,
-        &ros.namespace,
-        "replay",
-        &scope,
-        enclave.as_deref(),
-    )?;
-    let participant = node.participant();
-    runtime.spawn(node.spinner()?);
-    say(multicast_note(&scope));
-    let result = runtime.block_on(async {
-        let mut publishers = std::collections::BTreeMap::new();
-        for id in &ros.cameras {
-            let p =
-                node.publisher::<CameraLandmarks>(&ros.camera_topic_of(id), qos::CAMERA_LANDMARKS)?;
-            publishers.insert(id.clone(), p);
-        }
-        // Give discovery a moment before the first frame.
-        tokio::time::sleep(Duration::from_millis(1500)).await;
-        let t0_log = frames[0].0;
-        let t0 = instant();
-        let start = now_nanos();
-        let mut sent = 0usize;
-        for (log_time, mut m) in frames {
-            let offset_secs = log_time.saturating_sub(t0_log) as f64 * 1e-9 / args.speed;
-            // Never a panic on a huge offset (a recording spanning centuries at a slow speed).
-            let due = Duration::try_from_secs_f64(offset_secs).unwrap_or(Duration::MAX);
-            if let Some(wait) = due.checked_sub(t0.elapsed()) {
-                tokio::time::sleep(wait).await;
-            }
-            // Re-stamp as a live camera would: capture time now.
-            m.header.stamp =
-                ergocell_bridge::msg::Time::from_nanos(start + (offset_secs * 1e9) as i64);
-            if let Some(p) = publishers.get(&m.camera_id) {
-                publish(p, m).await?;
-                sent += 1;
-            }
-        }
+    say(multicast_note(&network_scope(&ros)?));
+    let result = node
+        .runtime
+        .block_on(publish_paced(&mut node.node, &ros, frames, args.speed));
+    if let Ok(sent) = &result {
         println!(
             "replayed {sent} camera messages from {}",
             args.recording.display()
         );
-        anyhow::Ok(())
-    });
-    // The node first (it tells the spinner to stop), then a moment for the spinner to finish while
-    // the runtime still runs: every reader and writer says goodbye before the DDS participant goes.
-    drop(node);
-    runtime.block_on(async { tokio::time::sleep(Duration::from_millis(100)).await });
-    drop(runtime);
-    // the participant last: every entity has been removed from it (RosNode::participant)
-    drop(participant);
-    result
+    }
+    node.shut_down();
+    result.map(drop).map_err(Into::into)
 }

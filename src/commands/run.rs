@@ -13,7 +13,6 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Duration;
 
-use anyhow::Context as _;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
     CellLoop, CellOutputs, Driver, ExitStatus, Interruption, Outcome, OutputError, SessionEvent,
@@ -35,6 +34,7 @@ use ergocell_ros_backend::robot::{announce_driver, spawn_controller, RosRobot};
 use ergocell_ros_backend::station::{RosCellOutputs, RosStation, StationHooks, StationInputs};
 use ergocell_web::display::Display;
 
+use super::ros_node::{network_scope, runtime, say, StartedNode};
 use super::signals::{Signal, StopFlag, Stopped};
 use super::{output, UsageError};
 
@@ -196,11 +196,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         "{}",
         ergocell_cell::session::approval_summary::ApprovalSummary::of(&mut setup.provider())
     );
-    let runtime = tokio::runtime::Builder::new_multi_thread()
-        .worker_threads(2)
-        .enable_all()
-        .build()
-        .context("tokio runtime")?;
+    let runtime = runtime()?;
     // From here on SIGINT and SIGTERM hold the robot and close the recording (before the recording
     // and the DDS participant exist, so neither is left half made).
     let (stop, stop_task) = {
@@ -219,41 +215,26 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         })
         .transpose()?;
     let mut recording = Some(Recording::new(recorder));
-    let ros = &setup.ros;
-    let scope = network_scope(ros)?;
-    let enclave = security_enclave(
-        ros,
+    let mut node = StartedNode::start(
+        runtime,
+        &setup.ros,
+        &setup.ros.node_name,
         &args.config,
         args.keystore.as_deref(),
         "/ergocell/cell",
     )?;
-    let mut node = RosNode::new(
-        ros.domain_id,
-        &ros.namespace,
-        &ros.node_name,
-        &scope,
-        enclave.as_deref(),
-    )?;
-    let participant = node.participant();
-    runtime.spawn(node.spinner()?);
-    let display = start_display(args.display, &runtime)?;
-    let result = runtime.block_on(serve(
+    let display = start_display(args.display, &node.runtime)?;
+    let result = node.runtime.block_on(serve(
         args,
         &setup,
         machine,
-        &mut node,
+        &mut node.node,
         &mut recording,
         display,
         &stop,
     ));
     stop_task.abort();
-    // The node first (it tells the spinner to stop), then a moment for the spinner to finish while
-    // the runtime still runs: every reader and writer says goodbye before the DDS participant goes.
-    drop(node);
-    runtime.block_on(async { tokio::time::sleep(Duration::from_millis(100)).await });
-    drop(runtime);
-    // the participant last: every entity has been removed from it (RosNode::participant)
-    drop(participant);
+    node.shut_down();
     close_recording(recording, args, result)
 }
 
@@ -556,80 +537,4 @@ fn cpu_secs() -> Option<f64> {
     let utime: f64 = fields.get(11)?.parse().ok()?;
     let stime: f64 = fields.get(12)?.parse().ok()?;
     Some((utime + stime) / 100.0)
-}
-
-/// Prints a line about the robot side, if there is one.
-pub(super) fn say(line: Option<String>) {
-    if let Some(line) = line {
-        println!("  {line}");
-    }
-}
-
-/// The SROS2 enclave folder for this node, or `None` without DDS Security (said on stdout either way),
-/// from `--keystore`, the ROS_SECURITY_* variables and `[ros]` (`security_required`, `keystore`
-/// relative to the cell file's folder).
-pub(super) fn security_enclave(
-    ros: &RosConfig,
-    config: &std::path::Path,
-    cli: Option<&std::path::Path>,
-    default_enclave: &str,
-) -> anyhow::Result<Option<PathBuf>> {
-    use ergocell_bridge::security::{resolve_security, SecurityDecision, SecurityEnv};
-    let var = |name: &str| std::env::var(name).ok();
-    let env = SecurityEnv {
-        enable: var("ROS_SECURITY_ENABLE"),
-        strategy: var("ROS_SECURITY_STRATEGY"),
-        keystore: var("ROS_SECURITY_KEYSTORE"),
-        enclave_override: var("ROS_SECURITY_ENCLAVE_OVERRIDE"),
-    };
-    let config_keystore = ros.keystore.as_ref().map(|k| {
-        config
-            .parent()
-            .unwrap_or_else(|| std::path::Path::new("."))
-            .join(k)
-    });
-    let decision = resolve_security(
-        ros.security_required,
-        config_keystore.as_deref(),
-        cli,
-        default_enclave,
-        &env,
-        |dir| {
-            ergocell_bridge::transport::ENCLAVE_FILES
-                .iter()
-                .all(|f| dir.join(f).is_file())
-        },
-    )
-    .map_err(|e| UsageError(e.to_string()))?;
-    Ok(match decision {
-        SecurityDecision::Off(why) => {
-            println!("{why}");
-            None
-        }
-        SecurityDecision::Enclave { name, dir } => {
-            println!(
-                "DDS Security on: enclave {name} ({}): authenticated, access-controlled, encrypted",
-                dir.display()
-            );
-            Some(dir)
-        }
-    })
-}
-
-/// The DDS participant's network scope from `[ros]` and the ROS 2 environment variables
-/// (`ROS_AUTOMATIC_DISCOVERY_RANGE`, `ROS_STATIC_PEERS`, `ROS_LOCALHOST_ONLY`).
-pub(super) fn network_scope(
-    ros: &RosConfig,
-) -> anyhow::Result<ergocell_bridge::scope::NetworkScope> {
-    let var = |name: &str| std::env::var(name).ok();
-    let env = ergocell_bridge::scope::ScopeEnv {
-        automatic_discovery_range: var("ROS_AUTOMATIC_DISCOVERY_RANGE"),
-        static_peers: var("ROS_STATIC_PEERS"),
-        localhost_only: var("ROS_LOCALHOST_ONLY"),
-    };
-    Ok(ergocell_bridge::scope::NetworkScope::resolve(
-        ros.discovery_range,
-        ros.interfaces.as_deref(),
-        &env,
-    )?)
 }
