@@ -1,7 +1,7 @@
 //! Every refusal of docs/safety.md ("What `verify` and `run` refuse", the trust anchor, the
 //! witness), staged on the in-memory cell: no disk, no root, no `ssh-keygen`. Each asserts the
 //! typed reason the provider gives. (How the binary reads the anchor from the disk, with root's
-//! ownership and a racing symlink, is tested beside it in `src/trust_anchor.rs`.)
+//! ownership and a racing symlink, is tested beside it in `host/src/trust_anchor.rs`.)
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use ergocell_approvals::anchor::{NotRootAlone, TrustListError, AUTHORITY_FILE};

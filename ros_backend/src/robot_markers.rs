@@ -57,6 +57,20 @@ impl RobotGeometry {
     }
 }
 
+/// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
+pub fn robot_geometry(
+    provider: &ergocell_approvals::FileTrajectories,
+    class: ergocell_robot::TrajectoryClass,
+) -> Result<RobotGeometry, ergocell_cell::session::ProviderError> {
+    let texts = provider.geometry_texts(class)?;
+    RobotGeometry::from_texts(&texts.cell, &texts.urdf, &texts.spec).map_err(|cause| {
+        ergocell_cell::session::ProviderError::Geometry {
+            class,
+            cause: Box::new(cause),
+        }
+    })
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]

@@ -438,7 +438,7 @@ fn handovers(
                 .map_err(|e| anyhow::anyhow!("lock of {class}: {e}"))?;
             let point =
                 ergocell_robot::handover_world(T_world_station, lock.summary.handover_station_m);
-            let geometry = ergocell::session::provider::robot_geometry(provider, class)
+            let geometry = ergocell_ros_backend::robot_markers::robot_geometry(provider, class)
                 .map_err(|e| anyhow::anyhow!(e))?;
             Ok(Handover {
                 class,

@@ -171,7 +171,7 @@ impl Setup {
         StationHooks {
             next_machine: Box::new(|| self.new_machine().map_err(Into::into)),
             geometry: Box::new(|class| {
-                ergocell::session::provider::robot_geometry(&self.provider(), class)
+                ergocell_ros_backend::robot_markers::robot_geometry(&self.provider(), class)
                     .map_err(Into::into)
             }),
             say: Box::new(|line| println!("{line}")),

@@ -2,6 +2,6 @@
 //! so `ergocell::session::SessionMachine` is the one machine): trajectories read and verified from
 //! the files ([`provider`]). The simulator's landmark source is `ergocell_sim::source::SimSource`.
 
-pub mod provider;
+pub use ergocell_host::provider;
 
 pub use ergocell_cell::session::*;

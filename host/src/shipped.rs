@@ -11,47 +11,47 @@
 
 /// `(path relative to the repository root, contents)`.
 pub const FILES: &[(&str, &str)] = &[
-    ("config/rig.toml", include_str!("../config/rig.toml")),
-    ("config/cell.toml", include_str!("../config/cell.toml")),
+    ("config/rig.toml", include_str!("../../config/rig.toml")),
+    ("config/cell.toml", include_str!("../../config/cell.toml")),
     (
         "config/robots/iiwa14_r820.urdf",
-        include_str!("../config/robots/iiwa14_r820.urdf"),
+        include_str!("../../config/robots/iiwa14_r820.urdf"),
     ),
     (
         "config/approvers/allowed_signers",
-        include_str!("../config/approvers/allowed_signers"),
+        include_str!("../../config/approvers/allowed_signers"),
     ),
     (
         "config/approvers/revoked_keys",
-        include_str!("../config/approvers/revoked_keys"),
+        include_str!("../../config/approvers/revoked_keys"),
     ),
     (
         "trajectories/c1.toml",
-        include_str!("../trajectories/c1.toml"),
+        include_str!("../../trajectories/c1.toml"),
     ),
     (
         "trajectories/c2.toml",
-        include_str!("../trajectories/c2.toml"),
+        include_str!("../../trajectories/c2.toml"),
     ),
     (
         "trajectories/c3.toml",
-        include_str!("../trajectories/c3.toml"),
+        include_str!("../../trajectories/c3.toml"),
     ),
     (
         "trajectories/handover_rula.toml",
-        include_str!("../trajectories/handover_rula.toml"),
+        include_str!("../../trajectories/handover_rula.toml"),
     ),
     (
         "trajectories/locks/c1.lock.toml",
-        include_str!("../trajectories/locks/c1.lock.toml"),
+        include_str!("../../trajectories/locks/c1.lock.toml"),
     ),
     (
         "trajectories/locks/c2.lock.toml",
-        include_str!("../trajectories/locks/c2.lock.toml"),
+        include_str!("../../trajectories/locks/c2.lock.toml"),
     ),
     (
         "trajectories/locks/c3.lock.toml",
-        include_str!("../trajectories/locks/c3.lock.toml"),
+        include_str!("../../trajectories/locks/c3.lock.toml"),
     ),
 ];
 
@@ -90,7 +90,9 @@ pub fn dir_falls_back(dir: &std::path::Path) -> bool {
 
 /// A command's input file: the file at `path`, or when [`falls_back`] the shipped one (and a note on
 /// stderr says so). Returns the text and the name to use in messages.
-pub fn read_or_shipped(path: &std::path::Path) -> anyhow::Result<(String, String)> {
+pub fn read_or_shipped(
+    path: &std::path::Path,
+) -> Result<(String, String), crate::input::InputError> {
     if let Some(text) = file(path).filter(|_| falls_back(path)) {
         eprintln!(
             "note: {} is not in {}: using the one shipped in the binary",

@@ -1,6 +1,6 @@
 //! Where the cell keeps its witness of the approvals files ([`ergocell_robot::witness`]; checked
 //! and extended by [`ergocell_approvals::witness_store`], appended to by
-//! [`crate::session::provider::OsFiles`]).
+//! [`crate::provider::OsFiles`]).
 //!
 //! The witness is `witness.jsonl` in the folder the `ERGOCELL_STATE_DIR` environment variable names
 //! (an installed cell: its state folder, `/var/lib/ergocell` under systemd's `StateDirectory=`), or
@@ -21,7 +21,7 @@ pub use ergocell_approvals::witness_store::WitnessNote;
 use ergocell_robot::lock::ApprovalsFile;
 use ergocell_robot::{RobotError, TrajectoryClass, TrustedSigners};
 
-use crate::session::provider::OsFiles;
+use crate::provider::OsFiles;
 
 /// The environment variable naming the cell's state folder.
 pub const STATE_DIR_ENV: &str = "ERGOCELL_STATE_DIR";

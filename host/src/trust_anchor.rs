@@ -111,7 +111,7 @@ pub fn read_anchor_file(
 
 /// Loads the site's approvers authority from the anchor folder `dir` on this machine.
 pub fn load_authority(dir: &Path) -> Result<Authority, AnchorError> {
-    ergocell_approvals::anchor::load_authority(&crate::session::provider::OsFiles::disk(), dir)
+    ergocell_approvals::anchor::load_authority(&crate::provider::OsFiles::disk(), dir)
 }
 
 /// The approvers the cell trusts ([`ergocell_approvals::anchor::trusted_signers`]) on this
@@ -123,7 +123,7 @@ pub fn trusted_signers(
     anchor_dir: &Path,
 ) -> Result<TrustedSigners, TrustListError> {
     ergocell_approvals::anchor::trusted_signers(
-        &crate::session::provider::OsFiles::disk(),
+        &crate::provider::OsFiles::disk(),
         cell_dir,
         allowed,
         revoked,

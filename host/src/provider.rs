@@ -12,8 +12,7 @@ pub use ergocell_approvals::provider::{
 };
 use ergocell_robot::{TrajectoryClass, TrajectoryLayout};
 
-use super::ProviderError;
-use crate::robot_markers::RobotGeometry;
+use ergocell_cell::session::ProviderError;
 
 /// The cell's files on this machine's file system; the cell folder or the trajectories folder may
 /// be served from the files shipped in the binary ([`crate::shipped`]).
@@ -163,20 +162,6 @@ fn provider(
         &crate::witness::witness_path(approvals_dir),
         crate::trust_anchor::now_unix,
     )
-}
-
-/// The robot's geometry for the recording's markers (TCP and handover point) of `class`.
-pub fn robot_geometry(
-    provider: &FileTrajectories,
-    class: TrajectoryClass,
-) -> Result<RobotGeometry, ProviderError> {
-    let texts = provider.geometry_texts(class)?;
-    RobotGeometry::from_texts(&texts.cell, &texts.urdf, &texts.spec).map_err(|cause| {
-        ProviderError::Geometry {
-            class,
-            cause: Box::new(cause),
-        }
-    })
 }
 
 /// Writes a **demo** approval of the class's current lock into the provider's approvals folder
