@@ -4,6 +4,10 @@
 //!
 //! - [`input`]: every input file read one way: bounded by kind, folders, devices and pipes refused
 //!   or read without hanging, named in every error.
+//! - [`output`]: every output file written one way: never over an existing file unless asked
+//!   (`--force`), never onto one of the command's inputs or a device, pipe or socket, written
+//!   atomically (a temporary file beside it, synced, then moved), a refusal told apart from a
+//!   failure ([`output::OutputError`]).
 //! - [`shipped`]: the reference cell embedded in the binary (rig, cell file, URDF, approvers'
 //!   files, trajectories, locks, RULA curves), the defaults that make the binary work from any
 //!   directory; a file that exists is always the one read.
@@ -19,6 +23,7 @@
 //! twin. Like the ROS backend and the web servers it does I/O: this machine's files and clock.
 
 pub mod input;
+pub mod output;
 pub mod provider;
 pub mod shipped;
 pub mod trust_anchor;

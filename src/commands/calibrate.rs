@@ -281,7 +281,7 @@ fn usage_if_bad_views(e: CalibrationError) -> anyhow::Error {
 /// one of the images.
 fn check_out(common: &BoardArgs, images: &[PathBuf]) -> anyhow::Result<()> {
     let inputs: Vec<(&str, &Path)> = images.iter().map(|p| ("image", p.as_path())).collect();
-    output::check("--out", &common.out, common.force, &inputs)
+    Ok(output::check("--out", &common.out, common.force, &inputs)?)
 }
 
 fn write_rig(rig: &CameraRig, common: &BoardArgs) -> anyhow::Result<()> {

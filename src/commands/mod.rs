@@ -8,7 +8,7 @@ pub mod demo;
 pub mod exposure;
 pub mod height;
 pub mod outcome;
-pub mod output;
+pub use ergocell::output;
 pub mod reba;
 pub mod replay;
 pub mod review;
@@ -28,18 +28,21 @@ pub mod triangulate;
 pub struct UsageError(pub String);
 
 /// Exit code for an error: 130 / 143 for a command stopped by SIGINT / SIGTERM (robot held,
-/// recording closed: [`signals::Stopped`]), 2 for bad input (a [`UsageError`], or an input file
-/// that cannot be read: [`ergocell::input::InputError`]), 1 for everything else.
+/// recording closed: [`signals::Stopped`]), 2 for bad input (a [`UsageError`], an input file
+/// that cannot be read: [`ergocell::input::InputError`], an output refused:
+/// [`ergocell::output::OutputError::Refused`]), 1 for everything else.
 pub fn exit_code(err: &anyhow::Error) -> u8 {
     if let Some(stopped) = err
         .chain()
         .find_map(<dyn std::error::Error>::downcast_ref::<signals::Stopped>)
     {
         stopped.signal.exit_code()
-    } else if err
-        .chain()
-        .any(|e| e.is::<UsageError>() || e.is::<ergocell::input::InputError>())
-    {
+    } else if err.chain().any(|e| {
+        e.is::<UsageError>()
+            || e.is::<ergocell::input::InputError>()
+            || e.downcast_ref::<ergocell::output::OutputError>()
+                .is_some_and(ergocell::output::OutputError::is_refusal)
+    }) {
         2
     } else {
         1

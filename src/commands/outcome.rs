@@ -46,7 +46,7 @@ pub fn write(
     };
     let mut text = serde_json::to_string_pretty(&file)?;
     text.push('\n');
-    output::write("--outcome", path, force, text.as_bytes())
+    Ok(output::write("--outcome", path, force, text.as_bytes())?)
 }
 
 /// The driver's result: the outcome, written to `path` when one is asked for. A station that
@@ -97,5 +97,5 @@ impl std::error::Error for StationFailed {
 
 /// Before the session: `path` is no input, and exists only with `force`.
 pub fn check(path: &Path, force: bool, inputs: &[(&str, &Path)]) -> anyhow::Result<()> {
-    output::check("--outcome", path, force, inputs)
+    Ok(output::check("--outcome", path, force, inputs)?)
 }

@@ -979,7 +979,7 @@ fn write(path: &Path, text: &str) -> anyhow::Result<()> {
     if let Some(dir) = path.parent() {
         fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
-    super::output::replace(path, text.as_bytes())
+    Ok(super::output::replace(path, text.as_bytes())?)
 }
 
 /// Writes `text` to a file that must not exist yet (never overwrites: the user's data is kept).

@@ -11,13 +11,39 @@ use std::fs::File;
 use std::io::Write as _;
 use std::path::Path;
 
-use anyhow::Context as _;
+/// Why an output cannot be written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// The output is refused (it exists, it is an input, a device, a folder, …): the user's to
+    /// change, as bad input is (the binary's exit code 2).
+    #[error("{0}")]
+    Refused(String),
+    /// The file system failed while `what` was being done.
+    #[error("{what}")]
+    Io {
+        what: String,
+        #[source]
+        source: std::io::Error,
+    },
+}
 
-use super::UsageError;
+impl OutputError {
+    fn io(what: String, source: std::io::Error) -> Self {
+        Self::Io { what, source }
+    }
+
+    /// The output was refused (bad input), not failed.
+    pub fn is_refusal(&self) -> bool {
+        matches!(self, Self::Refused(_))
+    }
+}
+
+/// Shorthand for this module's results.
+pub type Result<T, E = OutputError> = std::result::Result<T, E>;
 
 /// Checks the output `out` (given with `flag`, e.g. `--out`) against `inputs` (`(flag, path)`) and,
 /// unless `force`, against an existing file.
-pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> anyhow::Result<()> {
+pub fn check(flag: &str, out: &Path, force: bool, inputs: &[(&str, &Path)]) -> Result<()> {
     check_file(flag, out, force, inputs, true)
 }
 
@@ -28,7 +54,7 @@ pub fn check_in_new_folder(
     out: &Path,
     force: bool,
     inputs: &[(&str, &Path)],
-) -> anyhow::Result<()> {
+) -> Result<()> {
     check_file(flag, out, force, inputs, false)
 }
 
@@ -38,15 +64,14 @@ fn check_file(
     force: bool,
     inputs: &[(&str, &Path)],
     folder_must_exist: bool,
-) -> anyhow::Result<()> {
+) -> Result<()> {
     for (input_flag, input) in inputs {
         if same_file(out, input) {
-            return Err(UsageError(format!(
+            return Err(OutputError::Refused(format!(
                 "{flag} {} is also an input ({input_flag} {}): writing it would destroy the input, --force or not; choose another output file",
                 out.display(),
                 input.display()
-            ))
-            .into());
+            )));
         }
     }
     not_a_regular_file(flag, out)?;
@@ -56,33 +81,30 @@ fn check_file(
         .filter(|p| folder_must_exist && !p.as_os_str().is_empty())
     {
         if std::fs::metadata(out).is_err() && !parent.is_dir() {
-            return Err(UsageError(format!(
+            return Err(OutputError::Refused(format!(
                 "{flag} {}: the folder {} does not exist; create it first (mkdir -p {})",
                 out.display(),
                 parent.display(),
                 parent.display()
-            ))
-            .into());
+            )));
         }
     }
     match std::fs::metadata(out) {
-        Ok(m) if m.is_dir() => Err(UsageError(format!(
+        Ok(m) if m.is_dir() => Err(OutputError::Refused(format!(
             "{flag} {} is a folder, not a file",
             out.display()
-        ))
-        .into()),
-        Ok(_) if !force => Err(UsageError(format!(
+        ))),
+        Ok(_) if !force => Err(OutputError::Refused(format!(
             "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
             out.display()
-        ))
-        .into()),
+        ))),
         _ => Ok(()),
     }
 }
 
 /// Refuses an existing output that is not a regular file (or a folder, which [`check`] names):
 /// a device, a named pipe, a socket — through a symlink too.
-fn not_a_regular_file(flag: &str, out: &Path) -> anyhow::Result<()> {
+fn not_a_regular_file(flag: &str, out: &Path) -> Result<()> {
     use std::os::unix::fs::FileTypeExt as _;
     let Ok(meta) = std::fs::metadata(out) else {
         return Ok(());
@@ -97,11 +119,10 @@ fn not_a_regular_file(flag: &str, out: &Path) -> anyhow::Result<()> {
     } else {
         return Ok(());
     };
-    Err(UsageError(format!(
+    Err(OutputError::Refused(format!(
         "{flag} {} is {what}, not a file: only a regular file or a new path is an output, --force or not",
         out.display()
-    ))
-    .into())
+    )))
 }
 
 /// True if `a` and `b` name the same file, existing or not: the same existing file
@@ -145,14 +166,14 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 
 /// Creates the output file: truncates an existing one only with `force`, and otherwise refuses a
 /// file that exists now (created since [`check`]).
-pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
+pub fn create(flag: &str, out: &Path, force: bool) -> Result<File> {
     use std::os::unix::fs::OpenOptionsExt as _;
     not_a_regular_file(flag, out)?;
     let mut options = std::fs::OpenOptions::new();
     // Non-blocking: a named pipe put there since the check is not waited on (and refused below).
     options
         .write(true)
-        .custom_flags(ergocell::input::nonblocking_flag());
+        .custom_flags(crate::input::nonblocking_flag());
     if force {
         options.create(true).truncate(true);
     } else {
@@ -160,27 +181,25 @@ pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<File> {
     }
     let file = options.open(out).map_err(|e| {
         if e.kind() == std::io::ErrorKind::AlreadyExists {
-            UsageError(format!(
+            OutputError::Refused(format!(
                 "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
                 out.display()
             ))
-            .into()
         } else {
-            anyhow::Error::new(e).context(format!("cannot create {}", out.display()))
+            OutputError::io(format!("cannot create {}", out.display()), e)
         }
     })?;
     let meta = file
         .metadata()
-        .with_context(|| format!("cannot create {}", out.display()))?;
+        .map_err(|e| OutputError::io(format!("cannot create {}", out.display()), e))?;
     if !meta.is_file() {
-        return Err(UsageError(format!(
+        return Err(OutputError::Refused(format!(
             "{flag} {} is not a regular file: only a regular file or a new path is an output",
             out.display()
-        ))
-        .into());
+        )));
     }
-    ergocell::input::set_blocking(&file)
-        .with_context(|| format!("cannot create {}", out.display()))?;
+    crate::input::set_blocking(&file)
+        .map_err(|e| OutputError::io(format!("cannot create {}", out.display()), e))?;
     Ok(file)
 }
 
@@ -200,14 +219,13 @@ pub struct Partial {
 impl Partial {
     /// Creates the temporary file (and checks, as [`create`] does, that without `force` the output
     /// does not exist yet).
-    pub fn create(flag: &str, out: &Path, force: bool) -> anyhow::Result<Self> {
+    pub fn create(flag: &str, out: &Path, force: bool) -> Result<Self> {
         not_a_regular_file(flag, out)?;
         if !force && std::fs::symlink_metadata(out).is_ok() {
-            return Err(UsageError(format!(
+            return Err(OutputError::Refused(format!(
                 "{flag} {}: the file already exists; pass --force to overwrite it, or choose another file",
                 out.display()
-            ))
-            .into());
+            )));
         }
         let name = out
             .file_name()
@@ -217,7 +235,7 @@ impl Partial {
             .write(true)
             .create_new(true)
             .open(&temp)
-            .with_context(|| format!("cannot create {}", temp.display()))?;
+            .map_err(|e| OutputError::io(format!("cannot create {}", temp.display()), e))?;
         Ok(Self {
             flag: flag.to_owned(),
             out: out.to_owned(),
@@ -228,25 +246,28 @@ impl Partial {
     }
 
     /// Appends bytes.
-    pub fn write(&mut self, bytes: &[u8]) -> anyhow::Result<()> {
+    pub fn write(&mut self, bytes: &[u8]) -> Result<()> {
         match self.file.as_mut() {
             Some(f) => f
                 .write_all(bytes)
-                .with_context(|| format!("cannot write {}", self.temp.display())),
+                .map_err(|e| OutputError::io(format!("cannot write {}", self.temp.display()), e)),
             None => Ok(()),
         }
     }
 
     /// Flushes and moves the temporary file onto the output.
-    pub fn finish(mut self) -> anyhow::Result<()> {
+    pub fn finish(mut self) -> Result<()> {
         let Some(file) = self.file.take() else {
             return Ok(());
         };
-        let file = file
-            .into_inner()
-            .map_err(|e| anyhow::anyhow!("cannot write {}: {}", self.temp.display(), e.error()))?;
+        let file = file.into_inner().map_err(|e| {
+            OutputError::io(
+                format!("cannot write {}", self.temp.display()),
+                e.into_error(),
+            )
+        })?;
         file.sync_all()
-            .with_context(|| format!("cannot write {}", self.temp.display()))?;
+            .map_err(|e| OutputError::io(format!("cannot write {}", self.temp.display()), e))?;
         drop(file);
         if self.force {
             // A device or pipe put at the output meantime is not replaced by the rename.
@@ -254,23 +275,27 @@ impl Partial {
                 let _ = std::fs::remove_file(&self.temp);
                 return Err(e);
             }
-            std::fs::rename(&self.temp, &self.out)
-                .with_context(|| format!("cannot move the output to {}", self.out.display()))?;
+            std::fs::rename(&self.temp, &self.out).map_err(|e| {
+                OutputError::io(
+                    format!("cannot move the output to {}", self.out.display()),
+                    e,
+                )
+            })?;
         } else {
             // a hard link fails if the output appeared meanwhile: never replaced unasked
             if let Err(e) = std::fs::hard_link(&self.temp, &self.out) {
                 let _ = std::fs::remove_file(&self.temp);
                 if e.kind() == std::io::ErrorKind::AlreadyExists {
-                    return Err(UsageError(format!(
+                    return Err(OutputError::Refused(format!(
                         "{} {}: the file appeared while it was being written; pass --force to overwrite it, or choose another file",
                         self.flag,
                         self.out.display()
-                    ))
-                    .into());
+                    )));
                 }
-                return Err(
-                    anyhow::Error::new(e).context(format!("cannot create {}", self.out.display()))
-                );
+                return Err(OutputError::io(
+                    format!("cannot create {}", self.out.display()),
+                    e,
+                ));
             }
             let _ = std::fs::remove_file(&self.temp);
         }
@@ -294,7 +319,7 @@ impl Drop for Partial {
 /// Writes `bytes` to the output file atomically ([`Partial`]: a temporary file beside it, synced,
 /// then moved onto it, and the folder synced): a full disk, a kill or a power cut leaves the previous
 /// file as it was, never a cut one.
-pub fn write(flag: &str, out: &Path, force: bool, bytes: &[u8]) -> anyhow::Result<()> {
+pub fn write(flag: &str, out: &Path, force: bool, bytes: &[u8]) -> Result<()> {
     let mut partial = Partial::create(flag, out, force)?;
     partial.write(bytes)?;
     partial.finish()
@@ -302,25 +327,25 @@ pub fn write(flag: &str, out: &Path, force: bool, bytes: &[u8]) -> anyhow::Resul
 
 /// Replaces the project file `path` (a lock, an approvals file) with `bytes` atomically, as
 /// [`write`] does with `--force`: the previous file stays whole until the new one is complete.
-pub fn replace(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
+pub fn replace(path: &Path, bytes: &[u8]) -> Result<()> {
     write("", path, true, bytes)
 }
 
 /// Syncs the folder of `path`, so that a rename into it survives a power cut.
-fn sync_parent(path: &Path) -> anyhow::Result<()> {
+fn sync_parent(path: &Path) -> Result<()> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
     File::open(dir)
         .and_then(|d| d.sync_all())
-        .with_context(|| format!("cannot sync the folder {}", dir.display()))
+        .map_err(|e| OutputError::io(format!("cannot sync the folder {}", dir.display()), e))
 }
 
 /// Creates the first free name of `default_name` in its folder — itself, then `<stem>-2.<ext>`, … —
 /// with `create_new`, so that two commands started together never take the same name (one that
 /// appears between the look and the creation is passed over): the file and its path.
-pub fn create_next_free(default_name: &Path) -> anyhow::Result<(File, std::path::PathBuf)> {
+pub fn create_next_free(default_name: &Path) -> Result<(File, std::path::PathBuf)> {
     let stem = default_name
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
@@ -342,22 +367,22 @@ pub fn create_next_free(default_name: &Path) -> anyhow::Result<(File, std::path:
             Ok(file) => return Ok((file, candidate)),
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {}
             Err(e) => {
-                return Err(
-                    anyhow::Error::new(e).context(format!("cannot create {}", candidate.display()))
-                )
+                return Err(OutputError::io(
+                    format!("cannot create {}", candidate.display()),
+                    e,
+                ))
             }
         }
     }
-    Err(UsageError(format!(
+    Err(OutputError::Refused(format!(
         "{} and {stem}-2{ext} … {stem}-9999{ext} all exist: name the file with --out",
         default_name.display()
-    ))
-    .into())
+    )))
 }
 
 /// The first free name of `default_name` in its folder: itself, then `<stem>-2.<ext>`, `-3`, … (the
 /// demo's default recording, so running the README's first command twice keeps the first session).
-pub fn next_free(default_name: &Path) -> anyhow::Result<std::path::PathBuf> {
+pub fn next_free(default_name: &Path) -> Result<std::path::PathBuf> {
     if std::fs::symlink_metadata(default_name).is_err() {
         return Ok(default_name.to_owned());
     }
@@ -374,11 +399,10 @@ pub fn next_free(default_name: &Path) -> anyhow::Result<std::path::PathBuf> {
             return Ok(candidate);
         }
     }
-    Err(UsageError(format!(
+    Err(OutputError::Refused(format!(
         "{} and {stem}-2{ext} … {stem}-9999{ext} all exist: name the recording with --out",
         default_name.display()
-    ))
-    .into())
+    )))
 }
 
 #[cfg(test)]
