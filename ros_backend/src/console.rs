@@ -1,5 +1,6 @@
-//! What `run` says on its console, as text: the start line, each session's summary, the execution
-//! monitor's figures and the steps' latency. The binary prints them; the figures (percentiles of
+//! What `run` and `demo` say on their consoles, as text: `run`'s start line, each session's
+//! summary, the execution monitor's figures and the steps' latency; the demo's event lines, status
+//! RULA and summary. The binary prints them; the figures (percentiles of
 //! the monitor's and the steps' timings) are computed here.
 
 use std::fmt::Write as _;
@@ -7,8 +8,12 @@ use std::time::Duration;
 
 use ergocell_bridge::scope::NetworkScope;
 use ergocell_bridge::transport::{RobotInterface, RosConfig};
-use ergocell_cell::session::SessionMachine;
+use ergocell_cell::session::{SessionEvent, SessionMachine};
+use ergocell_ergonomics::warnings::WarningKind;
+use ergocell_ergonomics::{FrameAssessment, SideAssessment};
+use ergocell_robot::TrajectoryClass;
 
+use crate::messages;
 use crate::monitor::MonitorStats;
 use crate::robot::{radians_list, RosRobot, TrajectoryTopic};
 
@@ -182,6 +187,103 @@ impl StepLatency {
             ))
         )
     }
+}
+
+/// The demo's summary at the end (each line ending in a newline, the first one empty): the
+/// session, the height measured against the operator's `true_stature_m`, the decision against the
+/// `true_class`, the trajectory, the frames, RULA, the faults and the robot's commands.
+pub fn demo_summary(
+    machine: &SessionMachine,
+    true_stature_m: f64,
+    true_class: TrajectoryClass,
+    elapsed_s: f64,
+) -> String {
+    let s = machine.summary();
+    let mut out = String::new();
+    let _ = writeln!(out);
+    let _ = writeln!(out, "summary");
+    let _ = writeln!(
+        out,
+        "  session:        {} after {elapsed_s:.1} s of simulated time",
+        machine.state()
+    );
+    let _ = writeln!(
+        out,
+        "  height:         {} (true {true_stature_m:.3} m) → class {}",
+        s.height_m.map_or("not measured".to_owned(), |h| format!(
+            "{h:.3} ± {:.3} m",
+            s.height_uncertainty_m.unwrap_or(f64::NAN)
+        )),
+        s.class.map_or_else(|| "none".to_owned(), |c| c.to_string())
+    );
+    if let Some(d) = machine.decision() {
+        let _ = writeln!(
+            out,
+            "  decision:       {} (probability {:.2}{}); true class {true_class}",
+            d.basis.name(),
+            d.probability,
+            messages::rula_cost_clause(d.expected_rula_cost)
+        );
+    }
+    let _ = writeln!(
+        out,
+        "  trajectory:     {}",
+        s.lock_sha256.as_deref().unwrap_or("not locked")
+    );
+    let _ = writeln!(
+        out,
+        "  frames:         {} fused, {} with the operator tracked",
+        s.frames_fused, s.frames_tracked
+    );
+    let _ = writeln!(
+        out,
+        "  RULA:           {} warnings raised, worst action level {}",
+        s.warnings_raised, s.max_action_level
+    );
+    let _ = writeln!(
+        out,
+        "  faults:         {} camera degradation(s), {} hold(s), {} change request(s) refused",
+        s.camera_degradations, s.holds, s.changes_refused
+    );
+    if !s.cameras_out_of_calibration.is_empty() {
+        let _ = writeln!(
+            out,
+            "  recalibrate:    {} (out of calibration, left out of fusion)",
+            s.cameras_out_of_calibration.join(", ")
+        );
+    }
+    let _ = writeln!(
+        out,
+        "  robot commands: {} ({} part(s) taken at the handover point)",
+        s.robot_commands, s.parts_taken
+    );
+    let _ = writeln!(out, "  ended:          {}", s.end_reason);
+    out
+}
+
+/// The demo's lines for a step's events, `elapsed_s` into the session: every event as
+/// [`messages::describe`] says it, but frames and a warning's changes (its raise and clear are
+/// said).
+pub fn demo_event_lines(events: &[SessionEvent], elapsed_s: f64) -> Vec<String> {
+    events
+        .iter()
+        .filter(|e| !matches!(e, SessionEvent::Frame { .. }))
+        .filter(|e| !matches!(e, SessionEvent::Warning(w) if w.kind == WarningKind::Changed))
+        .map(|e| format!("  t={elapsed_s:5.1} s  {}", messages::describe(e)))
+        .collect()
+}
+
+/// The demo's status line's RULA: both sides' grand scores and the action level of the worse.
+pub fn rula_status(a: &FrameAssessment) -> String {
+    let score = |side: Option<&SideAssessment>| {
+        side.map_or("-".to_owned(), |s| s.scores.final_score.to_string())
+    };
+    format!(
+        "RULA left {} right {} (action level {})",
+        score(a.left.as_ref()),
+        score(a.right.as_ref()),
+        a.headline().map_or(0, |h| h.scores.action_level)
+    )
 }
 
 #[cfg(test)]

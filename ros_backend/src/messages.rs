@@ -777,9 +777,7 @@ pub fn leg_message(leg: &ergocell_cell::session::LegTrajectory) -> JointTrajecto
 }
 
 /// ", expected RULA cost +0.02" for a class decision's expected cost, or nothing without one.
-pub fn rula_cost_clause(cost: Option<f64>) -> String {
-    cost.map_or(String::new(), |c| format!(", expected RULA cost {c:+.2}"))
-}
+pub use ergocell_ergonomics::height_text::rula_cost_clause;
 
 /// The console's lines for one step's events (frames left out): each event as [`describe`] says
 /// it, except that cameras degraded in the same step for the same reason share one line (a cell

@@ -44,6 +44,7 @@ use ergocell_ergonomics::HeightClass;
 use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
+use ergocell_ros_backend::console;
 use ergocell_sim::controller::{SimController, TwinRobot};
 use ergocell_sim::demo;
 use ergocell_sim::faults::{FaultPlayer, FaultSchedule};
@@ -330,7 +331,9 @@ impl CellOutputs for DemoOutputs {
         machine: &SessionMachine,
         events: &[SessionEvent],
     ) -> Result<(), OutputError> {
-        report(events, now, self.start);
+        for line in console::demo_event_lines(events, secs(now, self.start)) {
+            println!("{line}");
+        }
         if let Some(d) = &self.display {
             d.display().update(machine, events);
         }
@@ -340,15 +343,7 @@ impl CellOutputs for DemoOutputs {
                 ..
             } = e
             {
-                let score = |side: Option<&ergocell_ergonomics::SideAssessment>| {
-                    side.map_or("-".to_owned(), |s| s.scores.final_score.to_string())
-                };
-                self.rula = format!(
-                    "RULA left {} right {} (action level {})",
-                    score(a.left.as_ref()),
-                    score(a.right.as_ref()),
-                    a.headline().map_or(0, |h| h.scores.action_level)
-                );
+                self.rula = console::rula_status(a);
             }
         }
         self.recording
@@ -788,7 +783,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     )?
     .status;
     drop(demo_dir);
-    summary(&machine, args, true_class, secs(now, start));
+    print!(
+        "{}",
+        console::demo_summary(&machine, args.stature_m, true_class, secs(now, start))
+    );
     println!(
         "  recording:      {} ({} messages, {}-compressed chunks; open in Foxglove or `ros2 bag info`)",
         out.display(),
@@ -894,74 +892,6 @@ fn exit_of(status: ExitStatus, machine: &SessionMachine, out: &Path) -> anyhow::
             }
             anyhow::bail!("the session did not end normally: {}", s.end_reason)
         }
-    }
-}
-
-fn summary(machine: &SessionMachine, args: &Args, true_class: TrajectoryClass, elapsed_s: f64) {
-    let s = machine.summary();
-    println!();
-    println!("summary");
-    println!(
-        "  session:        {} after {elapsed_s:.1} s of simulated time",
-        machine.state()
-    );
-    println!(
-        "  height:         {} (true {:.3} m) → class {}",
-        s.height_m.map_or("not measured".to_owned(), |h| format!(
-            "{h:.3} ± {:.3} m",
-            s.height_uncertainty_m.unwrap_or(f64::NAN)
-        )),
-        args.stature_m,
-        s.class.map_or_else(|| "none".to_owned(), |c| c.to_string())
-    );
-    if let Some(d) = machine.decision() {
-        println!(
-            "  decision:       {} (probability {:.2}{}); true class {true_class}",
-            d.basis.name(),
-            d.probability,
-            messages::rula_cost_clause(d.expected_rula_cost)
-        );
-    }
-    println!(
-        "  trajectory:     {}",
-        s.lock_sha256.as_deref().unwrap_or("not locked")
-    );
-    println!(
-        "  frames:         {} fused, {} with the operator tracked",
-        s.frames_fused, s.frames_tracked
-    );
-    println!(
-        "  RULA:           {} warnings raised, worst action level {}",
-        s.warnings_raised, s.max_action_level
-    );
-    println!(
-        "  faults:         {} camera degradation(s), {} hold(s), {} change request(s) refused",
-        s.camera_degradations, s.holds, s.changes_refused
-    );
-    if !s.cameras_out_of_calibration.is_empty() {
-        println!(
-            "  recalibrate:    {} (out of calibration, left out of fusion)",
-            s.cameras_out_of_calibration.join(", ")
-        );
-    }
-    println!(
-        "  robot commands: {} ({} part(s) taken at the handover point)",
-        s.robot_commands, s.parts_taken
-    );
-    println!("  ended:          {}", s.end_reason);
-}
-
-fn report(events: &[SessionEvent], now: i64, start: i64) {
-    for e in events {
-        if matches!(e, SessionEvent::Frame { .. }) {
-            continue;
-        }
-        if let SessionEvent::Warning(w) = e {
-            if w.kind == ergocell_ergonomics::warnings::WarningKind::Changed {
-                continue;
-            }
-        }
-        println!("  t={:5.1} s  {}", secs(now, start), messages::describe(e));
     }
 }
 
