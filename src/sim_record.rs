@@ -7,18 +7,20 @@
 //! ([`ergocell_cell::Pipeline`], the defaults a session runs: fusion, tracked gate, filter, RULA,
 //! warnings); "before" reaches for the unadapted robot's handover point
 //! (set for a 1.75 m operator), "after" for the class-specific one. There is no robot motion in the
-//! simulator's task, so the recording holds the handover point and no TCP track.
+//! simulator's task, so the recording holds the handover point and no TCP track. The messages are
+//! a session's (`ergocell_ros_backend::twin_recording`); this runs the twin and writes them.
 
 use std::path::{Path, PathBuf};
 
 use crate::messages;
 use crate::recording::{self, topics, McapRecorder, RecordingError};
-use ergocell_bridge::msg::{Header, SessionState};
-use ergocell_cell::{CellError, Pipeline};
+use ergocell_cell::{CellError, Pipeline, TrackedFrame};
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
+use ergocell_ros_backend::twin_recording;
 use ergocell_sim::experiments::{Handovers, Setup};
 use ergocell_sim::{Operator, SessionScript, SimConfig, Simulation};
+use nalgebra::Point3;
 
 /// A simulated session could not be recorded.
 #[derive(Debug, thiserror::Error)]
@@ -69,26 +71,14 @@ pub fn record_both(
     cycles: usize,
     out_dir: &Path,
 ) -> Result<[PathBuf; 2], SimRecordError> {
-    let path = |c: Condition| out_dir.join(format!("adaptation_{stature_m:.2}m_{}.mcap", c.name()));
-    let paths = [path(Condition::Before), path(Condition::After)];
+    let conditions = [Condition::Before, Condition::After];
+    let paths =
+        conditions.map(|c| out_dir.join(format!("adaptation_{stature_m:.2}m_{}.mcap", c.name())));
     // Refuse before writing anything when "after" cannot exist.
     check_served(handovers, stature_m)?;
-    record(
-        setup,
-        handovers,
-        stature_m,
-        cycles,
-        Condition::Before,
-        &paths[0],
-    )?;
-    record(
-        setup,
-        handovers,
-        stature_m,
-        cycles,
-        Condition::After,
-        &paths[1],
-    )?;
+    for (condition, path) in conditions.into_iter().zip(&paths) {
+        record(setup, handovers, stature_m, cycles, condition, path)?;
+    }
     Ok(paths)
 }
 
@@ -108,6 +98,27 @@ fn check_served(handovers: &Handovers, stature_m: f64) -> Result<(), SimRecordEr
     }
 }
 
+/// The point the operator reaches for under `condition`, and what it is, in words.
+fn reach_target(
+    handovers: &Handovers,
+    class: HeightClass,
+    condition: Condition,
+) -> (Point3<f64>, String) {
+    match condition {
+        Condition::Before => (
+            handovers.before_m,
+            "the unadapted robot's handover point (set for a 1.75 m operator)".to_owned(),
+        ),
+        Condition::After => (
+            handovers.for_class(class),
+            format!(
+                "the class-specific handover point of class {}",
+                class.name()
+            ),
+        ),
+    }
+}
+
 /// Records one condition into `path`.
 pub fn record(
     setup: &Setup,
@@ -121,19 +132,13 @@ pub fn record(
     if condition == Condition::After {
         check_served(handovers, stature_m)?;
     }
-    let (handover, what) = match condition {
-        Condition::Before => (
-            handovers.before_m,
-            "the unadapted robot's handover point (set for a 1.75 m operator)".to_owned(),
-        ),
-        Condition::After => (
-            handovers.for_class(class),
-            format!(
-                "the class-specific handover point of class {}",
-                class.name()
-            ),
-        ),
-    };
+    let (handover, what) = reach_target(handovers, class, condition);
+    let reason = format!(
+        "digital twin, seed {}: a {stature_m:.2} m operator ({}) reaching for {what}, {cycles} cycles; {}",
+        setup.seed,
+        class.name(),
+        condition.name()
+    );
     let mut script = SessionScript::new(handover);
     script.cycles = cycles;
     let config = SimConfig {
@@ -143,46 +148,16 @@ pub fn record(
     let sim = Simulation::new(setup.rig.clone(), Operator::new(stature_m)?, script, config)?;
     let mut pipeline = Pipeline::with_defaults(setup.rig.clone())?;
     let mut rec = McapRecorder::create(path)?;
-    let mut first = true;
+    let mut opening = Some(reason);
     for tick in sim {
         let tick = tick?;
         let now = tick.truth.stamp_nanos;
-        if first {
-            first = false;
-            let state = SessionState {
-                header: Header::new(now, "world"),
-                state: "simulated".to_owned(),
-                reason: format!(
-                    "digital twin, seed {}: a {stature_m:.2} m operator ({}) reaching for {what}, {cycles} cycles; {}",
-                    setup.seed,
-                    class.name(),
-                    condition.name()
-                ),
-                height_m: stature_m,
-                // The true stature (the simulator knows it), not a measurement: no uncertainty.
-                height_uncertainty_m: f64::NAN,
-                height_class: class.name().to_owned(),
-                // The class is the truth's, not a decision: no basis, probability or cost.
-                height_class_probability: f64::NAN,
-                height_expected_rula_cost: f64::NAN,
-                last_part_closest_m: f64::NAN,
-                ..SessionState::default()
-            };
+        if let Some(reason) = opening.take() {
+            let state = twin_recording::simulated_state(now, reason, stature_m, class);
             rec.write(topics::SESSION_STATE, now, &state)?;
         }
         for output in pipeline.push_views(now, tick.frame.views) {
-            for tracked in output?.tracked {
-                let assessment = tracked.assessment?;
-                // The messages a session sends for a frame and its warnings, recorded alike.
-                let mut out = messages::frame_messages(&tracked.skeleton, Some(&assessment));
-                out.extend(
-                    tracked
-                        .warnings
-                        .iter()
-                        .map(|w| messages::Outgoing::Warning(messages::warning_message(w))),
-                );
-                recording::record(&mut rec, now, &out)?;
-            }
+            record_tracked(&mut rec, now, output?.tracked)?;
         }
         rec.write(
             topics::ROBOT_MARKERS,
@@ -191,5 +166,19 @@ pub fn record(
         )?;
     }
     rec.finish()?;
+    Ok(())
+}
+
+/// The tracked frames a pipeline output scored, each recorded as a session records it.
+fn record_tracked(
+    rec: &mut McapRecorder,
+    now: i64,
+    tracked: Vec<TrackedFrame>,
+) -> Result<(), SimRecordError> {
+    for t in tracked {
+        let assessment = t.assessment?;
+        let out = twin_recording::tracked_messages(&t.skeleton, &assessment, &t.warnings);
+        recording::record(rec, now, &out)?;
+    }
     Ok(())
 }

@@ -32,3 +32,4 @@ pub mod replay;
 pub mod robot;
 pub mod robot_markers;
 pub mod station;
+pub mod twin_recording;

@@ -348,6 +348,26 @@ pub fn fit(samples: &[BandSample], start: &ConfidenceModel) -> (ConfidenceModel,
     (model, counts)
 }
 
+/// The confidence model fitted to a set of samples ([`fit`]), with what the report says of it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConfidenceFit {
+    pub model: ConfidenceModel,
+    /// Samples per angled region, [`ANGLED_REGIONS`] order.
+    pub counts: Vec<usize>,
+    /// Each angled region's reading error RMS, degrees ([`read_error_rms_deg`]).
+    pub read_error_rms_deg: [Option<f64>; 5],
+}
+
+/// [`fit`] of `samples` from `start`, with the samples' reading errors.
+pub fn fit_confidence(samples: &[BandSample], start: &ConfidenceModel) -> ConfidenceFit {
+    let (model, counts) = fit(samples, start);
+    ConfidenceFit {
+        model,
+        counts,
+        read_error_rms_deg: read_error_rms_deg(samples),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -441,5 +461,28 @@ mod tests {
         let mut model = ConfidenceModel::default();
         model.recalibration[0] = points;
         assert!(model.validate().is_ok());
+    }
+
+    #[test]
+    fn without_samples_the_fit_keeps_its_start_and_states_no_reading_error() {
+        let start = ConfidenceModel::default();
+        let f = fit_confidence(&[], &start);
+        assert_eq!(f.model, start);
+        assert_eq!(f.counts, vec![0; ANGLED_REGIONS.len()]);
+        assert_eq!(f.read_error_rms_deg, [None; 5]);
+        // one trunk sample 3° off: the trunk's count and error, nobody else's
+        let trunk = BandSample {
+            region: BodyRegion::Trunk,
+            input: RulaInput::neutral(),
+            angle_deg: 13.0,
+            propagated_sd_deg: 1.0,
+            truth_deg: 10.0,
+        };
+        let f = fit_confidence(&[trunk], &start);
+        let i = ConfidenceModel::slot(BodyRegion::Trunk).unwrap();
+        assert_eq!(f.counts[i], 1);
+        assert_eq!(f.counts.iter().sum::<usize>(), 1);
+        assert!((f.read_error_rms_deg[i].unwrap() - 3.0).abs() < 1e-12);
+        assert_eq!(f.read_error_rms_deg.iter().flatten().count(), 1);
     }
 }

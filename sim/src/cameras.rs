@@ -136,6 +136,23 @@ pub fn ring_rig(count: usize, cfg: &RingRigConfig) -> Result<CameraRig, SimError
     Ok(CameraRig::new(cameras, &pairs, Some(Vector3::z()))?)
 }
 
+/// A rig whose world is not the simulator's: its calibration states an up other than +z.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("the simulator's world is z-up with the floor at z = 0; this rig's up is {up:?}")]
+pub struct NotZUp {
+    /// The up direction the rig's calibration states.
+    pub up: Vector3<f64>,
+}
+
+/// Checks that `rig`'s world is the simulator's (z up, the floor at z = 0): its stated up within
+/// 1e-6 of +z, or no up stated.
+pub fn check_z_up(rig: &CameraRig) -> Result<(), NotZUp> {
+    match rig.up() {
+        Some(up) if (up - Vector3::z()).norm() > 1e-6 => Err(NotZUp { up }),
+        _ => Ok(()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -155,5 +172,17 @@ mod tests {
             }
         }
         assert!(ring_rig(0, &RingRigConfig::default()).is_err());
+    }
+
+    #[test]
+    fn only_a_rig_with_another_up_is_refused() {
+        let ring = ring_rig(2, &RingRigConfig::default()).unwrap();
+        assert_eq!(check_z_up(&ring), Ok(()));
+        let rig = |up| CameraRig::new(ring.cameras().to_vec(), &[], up).unwrap();
+        assert_eq!(check_z_up(&rig(None)), Ok(()));
+        let y_up = check_z_up(&rig(Some(Vector3::y()))).unwrap_err();
+        assert_eq!(y_up.up, Vector3::y());
+        assert!(y_up.to_string().contains("z-up"), "{y_up}");
+        assert!(check_z_up(&rig(Some(-Vector3::z()))).is_err());
     }
 }

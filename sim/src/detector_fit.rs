@@ -556,6 +556,88 @@ pub fn evaluate(
     })
 }
 
+/// What a fitted model says it was fitted to (its `fitted_to`): the real recording (`real_label`
+/// names it), its frames and rate, the cameras (`cameras` as the user named them, `camera_count` of
+/// them), the seed fitted on and the fit's frames and rounds.
+pub fn fitted_to(
+    real_label: &str,
+    real: &DetectorErrorReport,
+    cameras: &str,
+    camera_count: usize,
+    seed: u64,
+    settings: &FitSettings,
+) -> String {
+    format!(
+        "{}: {} frames at {:.0} Hz on {} ({} cameras); fitted on seed {}, {} frames, {} rounds",
+        real_label,
+        real.frames,
+        real.frame_rate_hz.unwrap_or(0.0),
+        cameras,
+        camera_count,
+        seed,
+        settings.frames,
+        settings.iterations
+    )
+}
+
+/// One reporting seed of a [`FitRecord`]: its rows and their worst measured gap.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SeedRows<'a> {
+    pub seed: u64,
+    pub worst_gap: f64,
+    pub rows: &'a [FitRow],
+}
+
+/// What `sim fit-detector` keeps of a fit (`detector_fit.json`, beside its setup): the model, the
+/// seed fitted on and its rows, each reporting seed's rows, the pooled rows and their worst gap,
+/// the views' structure and the error's persistence real and twin, and the independent noise's rows.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FitRecord<'a> {
+    pub model: &'a DetectorModel,
+    pub fit_seed: u64,
+    pub fit_rows: &'a [FitRow],
+    pub report_seeds: Vec<SeedRows<'a>>,
+    pub seeds_within_20_percent: usize,
+    pub pooled_rows: &'a [FitRow],
+    pub pooled_worst_gap: f64,
+    pub real_structure: &'a detector_error::ViewStructure,
+    pub twin_structure: &'a detector_error::ViewStructure,
+    pub real_persistence: &'a [detector_error::LagRow],
+    pub twin_persistence: &'a [detector_error::LagRow],
+    pub independent_noise_rows: &'a [FitRow],
+}
+
+/// `fit` (made on `fit_seed`) against `real`, judged by `evaluation`, as [`FitRecord`] keeps it.
+pub fn record<'a>(
+    fit: &'a Fit,
+    fit_seed: u64,
+    real: &'a DetectorErrorReport,
+    evaluation: &'a Evaluation,
+) -> FitRecord<'a> {
+    FitRecord {
+        model: &fit.model,
+        fit_seed,
+        fit_rows: &fit.rows,
+        report_seeds: evaluation
+            .per_seed
+            .iter()
+            .map(|(seed, rows)| SeedRows {
+                seed: *seed,
+                worst_gap: worst_measured_gap(rows),
+                rows,
+            })
+            .collect(),
+        seeds_within_20_percent: evaluation.seeds_within,
+        pooled_rows: &evaluation.pooled.rows,
+        pooled_worst_gap: evaluation.pooled_gap,
+        real_structure: &real.view_structure,
+        twin_structure: &evaluation.pooled.twin_structure,
+        real_persistence: &real.persistence,
+        twin_persistence: &evaluation.pooled.twin_persistence,
+        independent_noise_rows: &evaluation.independent,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -600,18 +682,13 @@ mod tests {
         }
     }
 
-    /// A "real" report made by the twin itself with a known model, on seeds the fit never sees.
-    fn real_from_twin(rig: &CameraRig, relative: RelativeNoise) -> DetectorErrorReport {
-        let place = PersonPlace {
-            mid_hip_m: [0.0, 0.0, 0.9],
-            facing: [1.0, 0.0, 0.0],
-            up: [0.0, 0.0, 1.0],
-        };
-        let skeleton = DetectorErrorReport {
+    /// A report of no frames at 30 Hz, nothing measured.
+    fn empty_report() -> DetectorErrorReport {
+        DetectorErrorReport {
             frames: 0,
             frame_rate_hz: Some(30.0),
             window_s: 1.0,
-            person: Some(place),
+            person: None,
             all: ErrorStats::default(),
             groups: Vec::new(),
             landmarks: Vec::new(),
@@ -622,6 +699,19 @@ mod tests {
             gross_error_share: 0.0,
             view_structure: detector_error::ViewStructure::default(),
             persistence: Vec::new(),
+        }
+    }
+
+    /// A "real" report made by the twin itself with a known model, on seeds the fit never sees.
+    fn real_from_twin(rig: &CameraRig, relative: RelativeNoise) -> DetectorErrorReport {
+        let place = PersonPlace {
+            mid_hip_m: [0.0, 0.0, 0.9],
+            facing: [1.0, 0.0, 0.0],
+            up: [0.0, 0.0, 1.0],
+        };
+        let skeleton = DetectorErrorReport {
+            person: Some(place),
+            ..empty_report()
         };
         let model = DetectorModel {
             format: DETECTOR_FORMAT.to_owned(),
@@ -797,5 +887,96 @@ mod tests {
             .collect();
         let sd = (face.iter().map(|x| x * x).sum::<f64>() / face.len() as f64).sqrt();
         assert!((sd / 0.02 - 1.0).abs() < 0.08, "{sd}");
+    }
+
+    #[test]
+    fn fitted_to_names_the_recording_the_cameras_and_the_fit() {
+        let real = DetectorErrorReport {
+            frames: 1234,
+            frame_rate_hz: Some(29.97),
+            ..empty_report()
+        };
+        assert_eq!(
+            fitted_to("real.json", &real, "calib.toml", 4, 7, &small()),
+            "real.json: 1234 frames at 30 Hz on calib.toml (4 cameras); fitted on seed 7, 240 frames, 5 rounds"
+        );
+        let unknown_rate = DetectorErrorReport {
+            frame_rate_hz: None,
+            ..real
+        };
+        assert!(fitted_to("r", &unknown_rate, "6", 6, 1, &small()).contains(" at 0 Hz on 6 "));
+    }
+
+    #[test]
+    fn a_record_keeps_each_reporting_seed_with_its_own_worst_gap() {
+        let stats = |p50: f64| {
+            let mut s = ErrorStats::default();
+            s.total.count = 10;
+            s.total.p50 = p50;
+            s.total.p90 = 2.0 * p50;
+            s
+        };
+        let row = |real: f64, twin: f64| FitRow {
+            group: "face".to_owned(),
+            real: stats(real),
+            twin: stats(twin),
+        };
+        let fit = Fit {
+            model: DetectorModel {
+                format: DETECTOR_FORMAT.to_owned(),
+                fitted_to: String::new(),
+                pixel_sigma_px: 1.0,
+                occluded_noise_scale: 1.0,
+                occluded_report_probability: 1.0,
+                outlier_probability: 0.0,
+                drop_probability: 0.0,
+                relative: known(),
+            },
+            rows: vec![row(0.02, 0.021)],
+        };
+        let (near, far) = (vec![row(0.02, 0.022)], vec![row(0.02, 0.03)]);
+        let comparison = Comparison {
+            rows: vec![row(0.02, 0.025)],
+            twin_structure: detector_error::ViewStructure::default(),
+            twin_persistence: Vec::new(),
+        };
+        let evaluation = Evaluation {
+            seeds: vec![101, 102],
+            per_seed: vec![(101, near), (102, far)],
+            pooled: comparison,
+            independent: vec![row(0.02, 0.01)],
+            seeds_within: 1,
+            pooled_gap: 0.25,
+            worst_seed: (102, 0.5),
+        };
+        let real = empty_report();
+        let r = record(&fit, 5, &real, &evaluation);
+        assert_eq!(r.fit_seed, 5);
+        assert_eq!(r.report_seeds.len(), 2);
+        assert_eq!(r.report_seeds[1].seed, 102);
+        assert!((r.report_seeds[0].worst_gap - 0.1).abs() < 1e-12);
+        assert!((r.report_seeds[1].worst_gap - 0.5).abs() < 1e-12);
+        assert_eq!(r.report_seeds[1].rows, &evaluation.per_seed[1].1[..]);
+        assert_eq!(r.independent_noise_rows, &evaluation.independent[..]);
+        // the file's keys, as `detector_fit.json` has always held them
+        let v = serde_json::to_value(&r).unwrap();
+        let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
+        assert_eq!(
+            keys,
+            [
+                "fit_rows",
+                "fit_seed",
+                "independent_noise_rows",
+                "model",
+                "pooled_rows",
+                "pooled_worst_gap",
+                "real_persistence",
+                "real_structure",
+                "report_seeds",
+                "seeds_within_20_percent",
+                "twin_persistence",
+                "twin_structure"
+            ]
+        );
     }
 }

@@ -13,7 +13,8 @@
 //! - [`height`]: a population uniform in 1.50–2.00 m; stature and class from the noisy pipeline with
 //!   the ergonomics height estimator during a long idle phase.
 //! - [`rula_agreement`]: per-frame RULA grand score and action level from the noisy pipeline vs from
-//!   ground truth: exact agreement `Po` and Cohen's κ.
+//!   ground truth: exact agreement `Po` and Cohen's κ; [`noise_sweep`]: the same at other
+//!   pixel-noise levels.
 //!
 //! The noisy side of every experiment but Table 1 is the cell controller's own per-frame pipeline,
 //! [`ergocell_cell::Pipeline`] with its defaults: views pushed as they arrive at their tick
@@ -53,6 +54,8 @@ use crate::body::Operator;
 use crate::detector::DetectorNoise;
 use crate::session::{Phase, SessionScript, SimConfig, Simulation, Tick};
 use crate::SimError;
+
+pub mod noise_sweep;
 
 /// The 12 landmarks of the paper's Table 1.
 pub const TABLE1_LANDMARKS: [Landmark; 12] = [
@@ -132,6 +135,38 @@ impl Handovers {
     /// statures the class's trajectory is served for).
     pub fn serves(&self, class: HeightClass, interval_m: [f64; 2]) -> bool {
         serves_interval(self.served_m(class), interval_m)
+    }
+
+    /// A cell's handover points: each class's trajectory file's point (`specs` in class order c1,
+    /// c2, c3; station frame) and `before_station_m`, the unadapted point (station frame), placed in
+    /// the world by `cell`'s station; each class's statures and served statures from its file.
+    pub fn from_cell(
+        cell: &ergocell_robot::CellConfig,
+        specs: &[ergocell_robot::TrajectorySpec; 3],
+        before_station_m: [f64; 3],
+    ) -> Self {
+        let point = |s: &ergocell_robot::TrajectorySpec| {
+            let h = &s.handover;
+            cell.handover_world([h.forward_m, h.lateral_m, h.height_m])
+        };
+        let stature = |s: &ergocell_robot::TrajectorySpec| [s.stature.min_m, s.stature.max_m];
+        let served = |s: &ergocell_robot::TrajectorySpec| {
+            let (lo, hi) = s.stature.served_m();
+            [lo, hi]
+        };
+        let [c1, c2, c3] = specs;
+        Self {
+            before_m: cell.handover_world(before_station_m),
+            c1_m: point(c1),
+            c2_m: point(c2),
+            c3_m: point(c3),
+            c1_stature_m: stature(c1),
+            c2_stature_m: stature(c2),
+            c3_stature_m: stature(c3),
+            c1_served_m: served(c1),
+            c2_served_m: served(c2),
+            c3_served_m: served(c3),
+        }
     }
 }
 
@@ -654,6 +689,14 @@ fn run_task(
 pub fn adaptation_heights() -> Vec<f64> {
     (0..=10)
         .map(|i| round6(1.50 + 0.05 * f64::from(i)))
+        .collect()
+}
+
+/// `n` operators' statures, evenly from 1.55 to 1.95 m, to the micrometre (one operator: 1.55 m):
+/// the operators of `table1`, `rula_agreement` and the warnings.
+pub fn operator_statures(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| round6(1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64))
         .collect()
 }
 
@@ -1520,5 +1563,47 @@ mod tests {
             .unwrap();
         assert_eq!(near(2.30, 1, 0), tallest.subject_id);
         assert!(person_near(&[], 1.75, 1, 0).is_none());
+    }
+
+    #[test]
+    fn operator_statures_run_evenly_from_1_55_to_1_95_m() {
+        assert_eq!(operator_statures(5), vec![1.55, 1.65, 1.75, 1.85, 1.95]);
+        assert_eq!(operator_statures(2), vec![1.55, 1.95]);
+        assert_eq!(operator_statures(1), vec![1.55]);
+        assert!(operator_statures(0).is_empty());
+        let many = operator_statures(7);
+        assert_eq!((many[0], many[6]), (1.55, 1.95));
+        assert!(many.windows(2).all(|w| w[0] < w[1]));
+        // to the micrometre: a third of 0.40 m is not carried further
+        assert_eq!(operator_statures(4)[1], 1.683_333);
+    }
+
+    #[test]
+    fn a_cells_handovers_are_its_class_files_placed_by_its_station() {
+        let cell_text = include_str!("../../config/cell.toml");
+        let moved = cell_text.replacen("xyz_m = [0.0, 0.0, 0.0]", "xyz_m = [1.0, 2.0, 0.0]", 1);
+        assert_ne!(moved, cell_text, "the shipped station is at the origin");
+        let cell = ergocell_robot::CellConfig::from_toml_str(&moved).unwrap();
+        let specs = [
+            include_str!("../../trajectories/c1.toml"),
+            include_str!("../../trajectories/c2.toml"),
+            include_str!("../../trajectories/c3.toml"),
+        ]
+        .map(|t| ergocell_robot::TrajectorySpec::from_toml_str(t).unwrap());
+        let h = Handovers::from_cell(&cell, &specs, [0.41, -0.10, 1.055]);
+        assert!((h.before_m - Point3::new(1.41, 1.90, 1.055)).norm() < 1e-12);
+        for (class, spec) in HeightClass::ALL.into_iter().zip(&specs) {
+            let p = &spec.handover;
+            let want = Point3::new(p.forward_m + 1.0, p.lateral_m + 2.0, p.height_m);
+            assert!((h.for_class(class) - want).norm() < 1e-12, "{class:?}");
+            let (lo, hi) = spec.stature.served_m();
+            assert_eq!(h.served_m(class), [lo, hi]);
+        }
+        assert_eq!(
+            h.c3_stature_m,
+            [specs[2].stature.min_m, specs[2].stature.max_m]
+        );
+        // the served statures are the files' wider ones, not the classes'
+        assert!(h.c1_served_m[0] < h.c1_stature_m[0] && h.c3_served_m[1] > h.c3_stature_m[1]);
     }
 }

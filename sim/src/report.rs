@@ -17,6 +17,8 @@ use crate::warning_trust::WarningTrustSeeds;
 use ergocell_ergonomics::height::HandoverRula;
 use ergocell_perception::detector_error::DetectorErrorReport;
 
+pub mod warnings;
+
 /// One figure: its file name (for example `adaptation_grand_score.svg`) and the SVG document.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Figure {
@@ -266,6 +268,46 @@ pub fn agreement_text(r: &RulaAgreement) -> String {
         r.warnings_confirmed
     );
     out
+}
+
+/// The RULA agreement's noise sweep ([`crate::experiments::noise_sweep`]): a line per pixel-noise
+/// level, the grand score's and the action level's exact agreement and κ.
+pub fn noise_sweep_text(sweep: &[(f64, RulaAgreement)]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "noise sweep (σ px: grand exact / κ, action level exact / κ):"
+    );
+    for (n, a) in sweep {
+        let _ = writeln!(
+            out,
+            "  {n:>4.1} px: {:.3} / {:.3}, {:.3} / {:.3}",
+            a.grand_score.exact, a.grand_score.kappa, a.action_level.exact, a.action_level.kappa
+        );
+    }
+    out
+}
+
+/// The simulated detector in words, for titles: `detector <file name>` for a fitted model's file
+/// (`detector_file`), else `<noise_px> px`; then the filter RULA ran on: the causal one
+/// (`fixed_lag_s` 0), a fixed-lag smoother of `fixed_lag_s`, or the controller's default lag.
+pub fn detector_label(
+    detector_file: Option<&str>,
+    noise_px: f64,
+    fixed_lag_s: Option<f64>,
+) -> String {
+    let detector = match detector_file {
+        Some(name) => format!("detector {name}"),
+        None => format!("{noise_px} px"),
+    };
+    match fixed_lag_s {
+        Some(0.0) => format!("{detector}, the causal filter (no fixed lag)"),
+        Some(w) => format!("{detector}, a fixed-lag smoother of ±{w} s"),
+        None => format!(
+            "{detector}, the controller's fixed lag of ±{} s",
+            ergocell_cell::pipeline::DEFAULT_FIXED_LAG_S
+        ),
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1232,6 +1274,35 @@ pub fn handover_rula_figure(rula: &HandoverRula) -> Result<Figure, FigureError> 
     )
 }
 
+/// The RULA curves could not be written as TOML (the TOML writer's own error).
+#[derive(Debug, thiserror::Error)]
+#[error("writing the RULA curves as TOML: {0}")]
+pub struct CurvesTomlError(#[from] pub toml::ser::Error);
+
+/// `handover_rula.toml` as `sim handover-rula` writes it: a header saying what the curves are, how
+/// they were measured (`cycles` handover cycles, `seeds`) and how to regenerate them, then the
+/// curves.
+pub fn handover_rula_file(
+    rula: &HandoverRula,
+    cycles: usize,
+    seeds: &[u64],
+) -> Result<String, CurvesTomlError> {
+    let seeds_text: Vec<String> = seeds.iter().map(u64::to_string).collect();
+    Ok(format!(
+        "# Each class's RULA-versus-stature curve at its handover point: the mean true RULA grand score\n\
+         # (worse side) of an operator of each stature (Drillis & Contini's proportions) holding the part at\n\
+         # the class's handover point, over {} handover cycles and seeds {}. The height decision reads it:\n\
+         # across a class boundary it chooses the class with the lowest expected score. Regenerate after\n\
+         # changing a handover point (review the diff):\n\
+         #   ergocell sim handover-rula --seeds {}..{} --out-dir trajectories\n{}",
+        cycles,
+        seeds_text.join(", "),
+        seeds.first().copied().unwrap_or(1),
+        seeds.last().copied().unwrap_or(1),
+        toml::to_string(rula)?
+    ))
+}
+
 /// What `sim fit-detector` prints: the fitted model's error against the real recording's
 /// (`real_label` names it) group by group, seed by seed and pooled, the views' structure and how
 /// long an error lasts; `independent_px` is the default noise compared with, `fit_seed` the seed fitted on.
@@ -1417,5 +1488,63 @@ mod tests {
         // One marker per finite point: the NaN (a seed without the quantity) is left out.
         assert_eq!(figure.svg.matches("<circle").count(), 3);
         assert_eq!(draw().unwrap(), figure);
+    }
+
+    #[test]
+    fn the_noise_sweep_has_a_line_per_level_in_order() {
+        use crate::experiments::noise_sweep::tests::agreement;
+        let sweep = [
+            (0.5, agreement([0.9123, 0.8], [0.95, 0.85])),
+            (6.0, agreement([0.5, 0.4], [0.7, 0.6])),
+        ];
+        assert_eq!(
+            noise_sweep_text(&sweep),
+            "noise sweep (σ px: grand exact / κ, action level exact / κ):\n\
+             \x20  0.5 px: 0.912 / 0.800, 0.950 / 0.850\n\
+             \x20  6.0 px: 0.500 / 0.400, 0.700 / 0.600\n"
+        );
+    }
+
+    #[test]
+    fn the_detector_label_names_the_model_file_or_the_noise_and_the_filter() {
+        assert_eq!(
+            detector_label(None, 3.0, None),
+            format!(
+                "3 px, the controller's fixed lag of ±{} s",
+                ergocell_cell::pipeline::DEFAULT_FIXED_LAG_S
+            )
+        );
+        assert_eq!(
+            detector_label(Some("mediapipe.toml"), 3.0, Some(0.0)),
+            "detector mediapipe.toml, the causal filter (no fixed lag)"
+        );
+        assert_eq!(
+            detector_label(None, 1.5, Some(0.25)),
+            "1.5 px, a fixed-lag smoother of ±0.25 s"
+        );
+    }
+
+    #[test]
+    fn the_curves_file_is_commented_then_the_curves_read_back() {
+        let rula = HandoverRula {
+            statures_m: vec![1.5, 1.6],
+            c1: vec![3.0, 3.25],
+            c2: vec![3.5, 3.0],
+            c3: vec![4.0, 3.5],
+        };
+        let text = handover_rula_file(&rula, 5, &[1, 2, 3, 4]).unwrap();
+        let (header, body): (Vec<&str>, Vec<&str>) = text.lines().partition(|l| l.starts_with('#'));
+        assert_eq!(header.len(), 6);
+        assert!(
+            text.starts_with(&header.join("\n")),
+            "the header comes first"
+        );
+        assert!(header[2].contains("over 5 handover cycles and seeds 1, 2, 3, 4."));
+        assert_eq!(
+            header[5],
+            "#   ergocell sim handover-rula --seeds 1..4 --out-dir trajectories"
+        );
+        let back: HandoverRula = toml::from_str(&body.join("\n")).unwrap();
+        assert_eq!(back, rula);
     }
 }

@@ -721,6 +721,40 @@ pub fn task_names(mix: &TaskMix) -> Vec<&'static str> {
     mix.tasks.iter().map(|(k, _)| TaskKind::name(*k)).collect()
 }
 
+/// The controller's pipeline the warnings are measured on: its defaults (the twin's world, z up),
+/// with a fixed lag of `fixed_lag_s` seconds either side when given; `Some(0.0)`: the causal filter
+/// instead; `None`: the controller's default lag.
+pub fn pipeline_config(fixed_lag_s: Option<f64>) -> Result<PipelineConfig, SimError> {
+    let mut config = PipelineConfig::new(up()?);
+    match fixed_lag_s {
+        Some(0.0) => config.fixed_lag_s = None,
+        Some(w) => config.fixed_lag_s = Some(w),
+        None => {}
+    }
+    Ok(config)
+}
+
+/// The longest the views may take to reach the cell, milliseconds.
+pub const MAX_TRANSPORT_DELAY_MS: f64 = 10_000.0;
+
+/// A transport delay that is not a time of 0 to [`MAX_TRANSPORT_DELAY_MS`].
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[error("{ms}: must be a time of 0 to 10000 ms")]
+pub struct BadTransportDelay {
+    /// The delay given, milliseconds.
+    pub ms: f64,
+}
+
+/// How long after its capture each frame's views reach the cell: `ms` milliseconds (0 to
+/// [`MAX_TRANSPORT_DELAY_MS`]) in nanoseconds, to the nearest nanosecond.
+pub fn transport_delay_nanos(ms: f64) -> Result<i64, BadTransportDelay> {
+    if ms.is_finite() && (0.0..=MAX_TRANSPORT_DELAY_MS).contains(&ms) {
+        Ok((ms * 1e6).round() as i64)
+    } else {
+        Err(BadTransportDelay { ms })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -765,5 +799,33 @@ mod tests {
         assert_eq!(quantile(&v, 0.5), 10.0);
         assert_eq!(quantile(&v, 0.95), 19.0);
         assert!(quantile(&[], 0.5).is_nan());
+    }
+
+    #[test]
+    fn the_fixed_lag_is_the_controllers_unless_given_and_zero_is_the_causal_filter() {
+        let default = pipeline_config(None).unwrap().fixed_lag_s;
+        assert_eq!(default, Some(ergocell_cell::pipeline::DEFAULT_FIXED_LAG_S));
+        assert_eq!(pipeline_config(Some(0.0)).unwrap().fixed_lag_s, None);
+        assert_eq!(pipeline_config(Some(0.3)).unwrap().fixed_lag_s, Some(0.3));
+    }
+
+    #[test]
+    fn a_transport_delay_is_0_to_10_s_in_whole_nanoseconds() {
+        assert_eq!(transport_delay_nanos(0.0), Ok(0));
+        assert_eq!(transport_delay_nanos(100.0), Ok(100_000_000));
+        assert_eq!(transport_delay_nanos(0.000_000_4), Ok(0));
+        assert_eq!(transport_delay_nanos(0.000_000_6), Ok(1));
+        assert_eq!(transport_delay_nanos(10_000.0), Ok(10_000_000_000));
+        for bad in [-1.0, 10_000.5, f64::NAN, f64::INFINITY] {
+            let e = transport_delay_nanos(bad).unwrap_err();
+            assert!(
+                e.to_string().ends_with(": must be a time of 0 to 10000 ms"),
+                "{e}"
+            );
+        }
+        assert_eq!(
+            transport_delay_nanos(-1.0).unwrap_err().to_string(),
+            "-1: must be a time of 0 to 10000 ms"
+        );
     }
 }

@@ -25,13 +25,15 @@ use ergocell_formats::rig_file::parse_rig;
 use ergocell_perception::detector_error::DetectorErrorReport;
 use ergocell_perception::CameraRig;
 use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySpec};
+use ergocell_sim::cameras::check_z_up;
 use ergocell_sim::detector_fit::{self, DetectorModel, FitSettings};
-use ergocell_sim::experiments::{self, Handovers, HeightOptions, Setup};
+use ergocell_sim::experiments::{
+    self, noise_sweep, operator_statures, Handovers, HeightOptions, Setup,
+};
 use ergocell_sim::report::{self, Figure, Report};
-use ergocell_sim::seeds::{self, Goal};
+use ergocell_sim::seeds;
 use ergocell_sim::{ring_rig, DetectorNoise, RingRigConfig};
 use indicatif::{ProgressBar, ProgressStyle};
-use nalgebra::Vector3;
 
 use super::UsageError;
 use ergocell::session::provider::HANDOVER_RULA_FILE;
@@ -229,14 +231,7 @@ pub(super) fn load_rig(spec: &str) -> anyhow::Result<CameraRig> {
     let path = PathBuf::from(spec);
     let (text, label) = ergocell::shipped::read_or_shipped(&path)?;
     let (rig, _) = parse_rig(&text, &label).map_err(|e| UsageError(e.to_string()))?;
-    if let Some(up) = rig.up() {
-        if (up - Vector3::z()).norm() > 1e-6 {
-            return Err(UsageError(format!(
-                "{spec}: the simulator's world is z-up with the floor at z = 0; this rig's up is {up:?}"
-            ))
-            .into());
-        }
-    }
+    check_z_up(&rig).map_err(|e| UsageError(format!("{spec}: {e}")))?;
     Ok(rig)
 }
 
@@ -257,31 +252,20 @@ pub(super) fn detector_noise(c: &Common) -> anyhow::Result<DetectorNoise> {
     Ok(model.apply(base))
 }
 
-/// The simulated detector in words, for titles: `3 px` or the model file's name.
+/// The simulated detector in words, for titles (`ergocell_sim::report::detector_label`): `3 px` or
+/// the model file's name, and the filter.
 pub(super) fn detector_label(c: &Common) -> String {
-    let detector = match &c.detector {
-        Some(path) => format!(
-            "detector {}",
-            path.file_name().map_or_else(
-                || path.display().to_string(),
-                |n| n.to_string_lossy().into_owned()
-            )
-        ),
-        None => format!("{} px", c.noise_px),
-    };
-    match c.fixed_lag_s {
-        Some(0.0) => format!("{detector}, the causal filter (no fixed lag)"),
-        Some(w) => format!("{detector}, a fixed-lag smoother of ±{w} s"),
-        None => format!(
-            "{detector}, the controller's fixed lag of ±{} s",
-            ergocell_cell::pipeline::DEFAULT_FIXED_LAG_S
-        ),
-    }
+    let file = c.detector.as_ref().map(|path| {
+        path.file_name().map_or_else(
+            || path.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        )
+    });
+    report::detector_label(file.as_deref(), c.noise_px, c.fixed_lag_s)
 }
 
-/// `sim fit-detector`: the twin's detector fitted to `--real` on `--cameras` (see
-/// `ergocell_sim::detector_fit`), reported on other seeds beside the default independent noise.
-fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
+/// `--real`: the real detector's error, as `triangulate --detector-error` measured it.
+fn read_real(c: &Common) -> anyhow::Result<(&Path, DetectorErrorReport)> {
     let Some(real_path) = &c.real else {
         return Err(UsageError(
             "fit-detector needs --real <detector-error.json> (from `triangulate --detector-error` on the same cameras)"
@@ -289,11 +273,16 @@ fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
         )
         .into());
     };
-    let real: DetectorErrorReport = serde_json::from_str(&ergocell::input::read_text(
-        real_path,
-        ergocell::input::Kind::Data,
-    )?)
-    .map_err(|e| UsageError(format!("{}: {e}", real_path.display())))?;
+    let text = ergocell::input::read_text(real_path, ergocell::input::Kind::Data)?;
+    let real = serde_json::from_str(&text)
+        .map_err(|e| UsageError(format!("{}: {e}", real_path.display())))?;
+    Ok((real_path.as_path(), real))
+}
+
+/// `sim fit-detector`: the twin's detector fitted to `--real` on `--cameras` (see
+/// `ergocell_sim::detector_fit`), reported on other seeds beside the default independent noise.
+fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
+    let (real_path, real) = read_real(c)?;
     let rig = load_rig(&c.cameras)?;
     let settings = FitSettings {
         view_shift: !c.independent_offsets,
@@ -307,63 +296,31 @@ fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
     let pb = progress_bar("fit-detector");
     let mut fit =
         detector_fit::fit(&real, &rig, &settings, c.seed).map_err(|e| UsageError(e.to_string()))?;
-    fit.model.fitted_to = format!(
-        "{}: {} frames at {:.0} Hz on {} ({} cameras); fitted on seed {}, {} frames, {} rounds",
-        real_path.display(),
-        real.frames,
-        real.frame_rate_hz.unwrap_or(0.0),
-        c.cameras,
-        rig.len(),
-        c.seed,
-        settings.frames,
-        settings.iterations
-    );
+    let real_label = real_path.display().to_string();
+    fit.model.fitted_to =
+        detector_fit::fitted_to(&real_label, &real, &c.cameras, rig.len(), c.seed, &settings);
+    let independent = DetectorNoise {
+        pixel_sigma_px: c.noise_px,
+        ..DetectorNoise::default()
+    };
     let evaluation = detector_fit::evaluate(
         &real,
         &rig,
         &fit.model,
         &settings,
         &report_seeds,
-        &DetectorNoise {
-            pixel_sigma_px: c.noise_px,
-            ..DetectorNoise::default()
-        },
+        &independent,
     )?;
     pb.finish_and_clear();
     if !c.json {
-        print!(
-            "{}",
-            report::detector_fit_text(
-                &real_path.display().to_string(),
-                &real,
-                &evaluation,
-                c.seed,
-                c.noise_px
-            )
-        );
+        let text = report::detector_fit_text(&real_label, &real, &evaluation, c.seed, c.noise_px);
+        print!("{text}");
     }
     std::fs::create_dir_all(&c.out_dir)
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
     let model_path = c.out_dir.join("detector.toml");
     super::output::replace(&model_path, fit.model.to_toml()?.as_bytes())?;
-    let doc = serde_json::json!({
-        "model": fit.model,
-        "fit_seed": c.seed,
-        "fit_rows": fit.rows,
-        "report_seeds": evaluation.per_seed.iter().map(|(seed, rows)| serde_json::json!({
-            "seed": seed,
-            "worst_gap": detector_fit::worst_measured_gap(rows),
-            "rows": rows,
-        })).collect::<Vec<_>>(),
-        "seeds_within_20_percent": evaluation.seeds_within,
-        "pooled_rows": evaluation.pooled.rows,
-        "pooled_worst_gap": evaluation.pooled_gap,
-        "real_structure": real.view_structure,
-        "twin_structure": evaluation.pooled.twin_structure,
-        "real_persistence": real.persistence,
-        "twin_persistence": evaluation.pooled.twin_persistence,
-        "independent_noise_rows": evaluation.independent,
-    });
+    let doc = serde_json::to_value(detector_fit::record(&fit, c.seed, &real, &evaluation))?;
     let setup =
         serde_json::json!({ "cameras": c.cameras, "real": real_path, "camera_count": rig.len() });
     println!("wrote {}", model_path.display());
@@ -388,38 +345,23 @@ pub(crate) fn parse_point(text: &str) -> Result<[f64; 3], String> {
     }
 }
 
+/// The handover points of `--cell`'s station and `--trajectories`' classes, with
+/// `--before-handover` (see `Handovers::from_cell`).
 pub(super) fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     let (cell_text, cell_label) = ergocell::shipped::read_or_shipped(&common.cell)?;
     let cell = CellConfig::from_toml_str(&cell_text)
         .map_err(|e| UsageError(format!("{cell_label}: {e}")))?;
-    let mut points = Vec::new();
-    let mut statures = Vec::new();
-    let mut served = Vec::new();
     let layout = TrajectoryLayout::new(&common.trajectories);
-    for class in TrajectoryClass::ALL {
-        let path = layout.spec(class);
-        let (spec_text, spec_label) = ergocell::shipped::read_or_shipped(&path)?;
-        let spec = TrajectorySpec::from_toml_str(&spec_text)
-            .map_err(|e| UsageError(format!("{spec_label}: {e}")))?;
-        let h = &spec.handover;
-        points.push(cell.handover_world([h.forward_m, h.lateral_m, h.height_m]));
-        statures.push([spec.stature.min_m, spec.stature.max_m]);
-        let (lo, hi) = spec.stature.served_m();
-        served.push([lo, hi]);
-    }
-    let [forward, lateral, height] = common.before_handover;
-    Ok(Handovers {
-        before_m: cell.handover_world([forward, lateral, height]),
-        c1_m: points[0],
-        c2_m: points[1],
-        c3_m: points[2],
-        c1_stature_m: statures[0],
-        c2_stature_m: statures[1],
-        c3_stature_m: statures[2],
-        c1_served_m: served[0],
-        c2_served_m: served[1],
-        c3_served_m: served[2],
-    })
+    let spec =
+        |class: TrajectoryClass| -> anyhow::Result<TrajectorySpec> {
+            let (text, label) = ergocell::shipped::read_or_shipped(&layout.spec(class))?;
+            Ok(TrajectorySpec::from_toml_str(&text)
+                .map_err(|e| UsageError(format!("{label}: {e}")))?)
+        };
+    // One file after the other, in class order: the first that fails is the one reported.
+    let [c1, c2, c3] = TrajectoryClass::ALL;
+    let specs = [spec(c1)?, spec(c2)?, spec(c3)?];
+    Ok(Handovers::from_cell(&cell, &specs, common.before_handover))
 }
 
 fn height_options(c: &Common) -> anyhow::Result<HeightOptions> {
@@ -446,6 +388,8 @@ fn height_options(c: &Common) -> anyhow::Result<HeightOptions> {
     })
 }
 
+/// `sim handover-rula`: each class's RULA curve over `--seeds` (default 1..4), written as
+/// `handover_rula.toml` (and its figure, unless `--json`) into `--out-dir`.
 fn run_handover_rula(c: &Common) -> anyhow::Result<()> {
     let seeds = c
         .seeds
@@ -469,20 +413,7 @@ fn run_handover_rula(c: &Common) -> anyhow::Result<()> {
     pb.finish_and_clear();
     std::fs::create_dir_all(&c.out_dir)
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
-    let seeds_text: Vec<String> = seeds.iter().map(u64::to_string).collect();
-    let text = format!(
-        "# Each class's RULA-versus-stature curve at its handover point: the mean true RULA grand score\n\
-         # (worse side) of an operator of each stature (Drillis & Contini's proportions) holding the part at\n\
-         # the class's handover point, over {} handover cycles and seeds {}. The height decision reads it:\n\
-         # across a class boundary it chooses the class with the lowest expected score. Regenerate after\n\
-         # changing a handover point (review the diff):\n\
-         #   ergocell sim handover-rula --seeds {}..{} --out-dir trajectories\n{}",
-        c.cycles,
-        seeds_text.join(", "),
-        seeds.first().copied().unwrap_or(1),
-        seeds.last().copied().unwrap_or(1),
-        toml::to_string(&rula)?
-    );
+    let text = report::handover_rula_file(&rula, c.cycles, &seeds)?;
     let path = c.out_dir.join(HANDOVER_RULA_FILE);
     std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
     if !c.json {
@@ -504,24 +435,52 @@ pub(super) fn progress_bar(what: &str) -> ProgressBar {
     pb
 }
 
+/// A progress bar of `what` over `n` seeds.
+pub(super) fn seeds_bar(what: &str, n: usize) -> ProgressBar {
+    let pb = ProgressBar::new(n as u64);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} seeds {elapsed}")
+    {
+        pb.set_style(style);
+    }
+    pb.set_message(what.to_owned());
+    pb
+}
+
 pub fn run(args: &Args) -> anyhow::Result<()> {
+    check(args)?;
     let c = &args.common;
+    match args.experiment {
+        Experiment::HandoverRula => run_handover_rula(c),
+        Experiment::FitDetector => run_fit_detector(c),
+        Experiment::Warnings => super::sim_warnings::run(c),
+        Experiment::Table1
+        | Experiment::Adaptation
+        | Experiment::Height
+        | Experiment::RulaAgreement => match &c.seeds {
+            Some(SeedRange(seeds)) => run_seeds(args, seeds),
+            None => run_one(args),
+        },
+    }
+}
+
+/// The options that apply to some experiments only, and their ranges: usage errors, found before
+/// anything runs (an experiment takes a while).
+fn check(args: &Args) -> anyhow::Result<()> {
+    let c = &args.common;
+    let warnings = matches!(args.experiment, Experiment::Warnings);
     if !(c.noise_px.is_finite() && c.noise_px >= 0.0) {
         return Err(
             UsageError(format!("--noise-px {} must be finite and >= 0", c.noise_px)).into(),
         );
     }
-    if c.transport_delay_ms != 0.0 && !matches!(args.experiment, Experiment::Warnings) {
+    if c.transport_delay_ms != 0.0 && !warnings {
         return Err(UsageError("--transport-delay-ms applies to warnings only".to_owned()).into());
     }
-    if c.fit_confidence && !matches!(args.experiment, Experiment::Warnings) {
+    if c.fit_confidence && !warnings {
         return Err(UsageError("--fit-confidence applies to warnings only".to_owned()).into());
     }
     if let Some(w) = c.fixed_lag_s {
-        if !matches!(
-            args.experiment,
-            Experiment::RulaAgreement | Experiment::Warnings
-        ) {
+        if !(warnings || matches!(args.experiment, Experiment::RulaAgreement)) {
             return Err(UsageError(
                 "--fixed-lag-s applies to rula-agreement and warnings only".to_owned(),
             )
@@ -532,7 +491,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 .map_err(|e| UsageError(format!("--fixed-lag-s: {e} (0: the causal filter)")))?;
         }
     }
-    // Checked before the experiment runs, which takes a while.
     if let Some(h) = c.record_height {
         if !matches!(args.experiment, Experiment::Adaptation) || c.seeds.is_some() {
             return Err(UsageError(
@@ -544,18 +502,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             return Err(UsageError(format!("--record-height {h} is outside 1.3..=2.2 m")).into());
         }
     }
-    if matches!(args.experiment, Experiment::HandoverRula) {
-        return run_handover_rula(c);
-    }
-    if matches!(args.experiment, Experiment::FitDetector) {
-        return run_fit_detector(c);
-    }
-    if matches!(args.experiment, Experiment::Warnings) {
-        return super::sim_warnings::run(c);
-    }
-    if let Some(SeedRange(seeds)) = &c.seeds {
-        return run_seeds(args, seeds);
-    }
+    Ok(())
+}
+
+/// What an experiment returns: its result (or its summary over seeds) as JSON, and its report.
+type Outcome = (serde_json::Value, Report);
+
+/// The experiment on `--seed`: its table and figures, `<experiment>.json`.
+fn run_one(args: &Args) -> anyhow::Result<()> {
+    let c = &args.common;
     let setup = Setup {
         rig: load_rig(&c.cameras)?,
         noise: detector_noise(c)?,
@@ -577,62 +532,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let (value, report) = match args.experiment {
         Experiment::HandoverRula => return run_handover_rula(c),
         Experiment::FitDetector => return run_fit_detector(c),
-        Experiment::Table1 => {
-            let r = experiments::table1(
-                &setup,
-                &handovers,
-                &statures(c.operators.unwrap_or(5)),
-                c.cycles,
-                &mut tick,
-            )?;
-            pb.finish_and_clear();
-            let report = Report {
-                text: report::table1_text(&r),
-                figures: report::table1_figures(&r)?,
-            };
-            (serde_json::to_value(&r)?, report)
-        }
-        Experiment::Adaptation => {
-            let people = adaptation_people(c.bodies)?;
-            let r = experiments::adaptation(
-                &setup,
-                &handovers,
-                &experiments::adaptation_heights(),
-                adaptation_bodies(c.bodies, &people),
-                c.cycles,
-                &mut tick,
-            )?;
-            pb.finish_and_clear();
-            let report = Report {
-                text: report::adaptation_text(&r),
-                figures: report::adaptation_figures(&r)?,
-            };
-            if let Some(h) = c.record_height {
-                let [before, after] =
-                    ergocell::sim_record::record_both(&setup, &handovers, h, c.cycles, &c.out_dir)?;
-                eprintln!(
-                    "recorded {} and {}: ergocell report {} --compare {}",
-                    before.display(),
-                    after.display(),
-                    before.display(),
-                    after.display()
-                );
-            }
-            (serde_json::to_value(&r)?, report)
-        }
-        Experiment::Height => {
-            let people = ergocell_anthropometry::ansur::people()?;
-            let r =
-                experiments::height(&setup, &handovers, &people, &height_options(c)?, &mut tick)?;
-            pb.finish_and_clear();
-            let report = Report {
-                text: report::height_text(&r),
-                figures: report::height_figures(&r)?,
-            };
-            (serde_json::to_value(&r)?, report)
-        }
-        Experiment::RulaAgreement => one_rula_agreement(c, &setup, &handovers, &mut tick, &pb)?,
         Experiment::Warnings => return super::sim_warnings::run(c),
+        Experiment::Table1 => one_table1(c, &setup, &handovers, &mut tick, &pb)?,
+        Experiment::Adaptation => one_adaptation(c, &setup, &handovers, &mut tick, &pb)?,
+        Experiment::Height => one_height(c, &setup, &handovers, &mut tick, &pb)?,
+        Experiment::RulaAgreement => one_rula_agreement(c, &setup, &handovers, &mut tick, &pb)?,
     };
     let setup_json = serde_json::json!({
         "seed": c.seed,
@@ -646,70 +550,99 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     write_result(c, name, value, setup_json, &figures)
 }
 
+/// Table 1 on one seed: the result and its table and figure.
+fn one_table1(
+    c: &Common,
+    setup: &Setup,
+    handovers: &Handovers,
+    tick: &mut dyn FnMut(usize, usize),
+    pb: &ProgressBar,
+) -> anyhow::Result<Outcome> {
+    let operators = operator_statures(c.operators.unwrap_or(5));
+    let r = experiments::table1(setup, handovers, &operators, c.cycles, tick)?;
+    pb.finish_and_clear();
+    let report = Report {
+        text: report::table1_text(&r),
+        figures: report::table1_figures(&r)?,
+    };
+    Ok((serde_json::to_value(&r)?, report))
+}
+
+/// The adaptation on one seed: the result and its table and figures; with `--record-height`, that
+/// operator's two recordings.
+fn one_adaptation(
+    c: &Common,
+    setup: &Setup,
+    handovers: &Handovers,
+    tick: &mut dyn FnMut(usize, usize),
+    pb: &ProgressBar,
+) -> anyhow::Result<Outcome> {
+    let people = adaptation_people(c.bodies)?;
+    let r = experiments::adaptation(
+        setup,
+        handovers,
+        &experiments::adaptation_heights(),
+        adaptation_bodies(c.bodies, &people),
+        c.cycles,
+        tick,
+    )?;
+    pb.finish_and_clear();
+    let report = Report {
+        text: report::adaptation_text(&r),
+        figures: report::adaptation_figures(&r)?,
+    };
+    if let Some(h) = c.record_height {
+        let [before, after] =
+            ergocell::sim_record::record_both(setup, handovers, h, c.cycles, &c.out_dir)?;
+        eprintln!(
+            "recorded {} and {}: ergocell report {} --compare {}",
+            before.display(),
+            after.display(),
+            before.display(),
+            after.display()
+        );
+    }
+    Ok((serde_json::to_value(&r)?, report))
+}
+
+/// The height experiment on one seed: the result and its table and figure.
+fn one_height(
+    c: &Common,
+    setup: &Setup,
+    handovers: &Handovers,
+    tick: &mut dyn FnMut(usize, usize),
+    pb: &ProgressBar,
+) -> anyhow::Result<Outcome> {
+    let people = ergocell_anthropometry::ansur::people()?;
+    let r = experiments::height(setup, handovers, &people, &height_options(c)?, tick)?;
+    pb.finish_and_clear();
+    let report = Report {
+        text: report::height_text(&r),
+        figures: report::height_figures(&r)?,
+    };
+    Ok((serde_json::to_value(&r)?, report))
+}
+
 /// RULA agreement on one seed, and the same sessions at other pixel-noise levels (how agreement
-/// depends on the detector): the result with its sweep, and the figures.
+/// depends on the detector, `ergocell_sim::experiments::noise_sweep`): the result with its sweep,
+/// and the figures.
 fn one_rula_agreement(
     c: &Common,
     setup: &Setup,
     handovers: &Handovers,
     tick: &mut dyn FnMut(usize, usize),
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Report)> {
-    let operators = statures(c.operators.unwrap_or(6));
+) -> anyhow::Result<Outcome> {
+    let operators = operator_statures(c.operators.unwrap_or(6));
     let lag = c.fixed_lag_s;
     let r = experiments::rula_agreement_with(setup, handovers, &operators, c.cycles, lag, tick)?;
-    // The same sessions at other pixel-noise levels: how agreement depends on the detector.
-    let mut sweep = Vec::new();
-    for noise_px in NOISE_SWEEP_PX {
-        let s = Setup {
-            noise: DetectorNoise {
-                pixel_sigma_px: noise_px,
-                ..setup.noise
-            },
-            ..setup.clone()
-        };
-        let a = experiments::rula_agreement_with(
-            &s,
-            handovers,
-            &operators,
-            c.cycles,
-            lag,
-            &mut |_, _| {},
-        )?;
-        sweep.push((noise_px, a));
-    }
+    let sweep = noise_sweep::sweep(setup, handovers, &operators, c.cycles, lag)?;
     pb.finish_and_clear();
-    let mut text = report::agreement_text(&r);
-    {
-        use std::fmt::Write as _;
-        let _ = writeln!(
-            text,
-            "noise sweep (σ px: grand exact / κ, action level exact / κ):"
-        );
-        for (n, a) in &sweep {
-            let _ = writeln!(
-                text,
-                "  {n:>4.1} px: {:.3} / {:.3}, {:.3} / {:.3}",
-                a.grand_score.exact,
-                a.grand_score.kappa,
-                a.action_level.exact,
-                a.action_level.kappa
-            );
-        }
-    }
+    let text = report::agreement_text(&r) + &report::noise_sweep_text(&sweep);
     let mut value = serde_json::to_value(&r)?;
     if let Some(obj) = value.as_object_mut() {
-        let rows = sweep
-            .iter()
-            .map(|(n, a)| {
-                serde_json::json!({
-                    "noise_px": n,
-                    "grand_score": {"exact": a.grand_score.exact, "kappa": a.grand_score.kappa},
-                    "action_level": {"exact": a.action_level.exact, "kappa": a.action_level.kappa},
-                })
-            })
-            .collect();
-        obj.insert("noise_sweep".into(), serde_json::Value::Array(rows));
+        let rows = serde_json::to_value(noise_sweep::rows(&sweep))?;
+        obj.insert("noise_sweep".into(), rows);
     }
     let mut figures = report::agreement_figures(&r)?;
     figures.push(report::noise_sweep_figure(&sweep)?);
@@ -747,17 +680,6 @@ pub(super) fn write_result(
         }
     }
     Ok(())
-}
-
-/// `n` operators' statures, evenly from 1.55 to 1.95 m (table1 and rula-agreement).
-pub(super) fn statures(n: usize) -> Vec<f64> {
-    (0..n)
-        .map(|i| ((1.55 + 0.40 * i as f64 / (n.max(2) - 1) as f64) * 1e6).round() / 1e6)
-        .collect()
-}
-
-pub(super) fn print_goals(goals: &[Goal]) {
-    print!("{}", report::goals_text(goals));
 }
 
 /// Prints `report`'s text (unless `--json`) and writes its figures into `--out-dir`: the paths.
@@ -803,12 +725,7 @@ fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
     let name = args.experiment.name();
     std::fs::create_dir_all(&c.out_dir)
         .with_context(|| format!("creating {}", c.out_dir.display()))?;
-    let pb = ProgressBar::new(seeds.len() as u64);
-    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:30}] {pos}/{len} seeds {elapsed}")
-    {
-        pb.set_style(style);
-    }
-    pb.set_message(name.to_owned());
+    let pb = seeds_bar(name, seeds.len());
     let setup = |seed: u64| Setup {
         rig: rig.clone(),
         noise,
@@ -842,8 +759,8 @@ fn seeds_table1(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Report)> {
-    let operators = statures(c.operators.unwrap_or(5));
+) -> anyhow::Result<Outcome> {
+    let operators = operator_statures(c.operators.unwrap_or(5));
     let runs = each(seeds, pb, |s| {
         experiments::table1(&setup(s), handovers, &operators, c.cycles, &mut |_, _| {})
     })?;
@@ -860,7 +777,7 @@ fn seeds_adaptation(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Report)> {
+) -> anyhow::Result<Outcome> {
     let heights = experiments::adaptation_heights();
     let people = adaptation_people(c.bodies)?;
     let runs = each(seeds, pb, |s| {
@@ -886,7 +803,7 @@ fn seeds_height(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Report)> {
+) -> anyhow::Result<Outcome> {
     let people = ergocell_anthropometry::ansur::people()?;
     let options = height_options(c)?;
     let runs = each(seeds, pb, |s| {
@@ -905,8 +822,8 @@ fn seeds_rula_agreement(
     setup: &dyn Fn(u64) -> Setup,
     handovers: &Handovers,
     pb: &ProgressBar,
-) -> anyhow::Result<(serde_json::Value, Report)> {
-    let operators = statures(c.operators.unwrap_or(6));
+) -> anyhow::Result<Outcome> {
+    let operators = operator_statures(c.operators.unwrap_or(6));
     let lag = c.fixed_lag_s;
     let runs = each(seeds, pb, |s| {
         experiments::rula_agreement_with(
@@ -923,6 +840,3 @@ fn seeds_rula_agreement(
     let report = report::rula_agreement_seeds(seeds, &sum, &detector_label(c))?;
     Ok((serde_json::to_value(&sum)?, report))
 }
-
-/// Pixel-noise levels of the RULA-agreement sweep, pixels.
-const NOISE_SWEEP_PX: [f64; 6] = [0.5, 1.0, 2.0, 3.0, 4.0, 6.0];
