@@ -8,6 +8,9 @@
 //!   a file cut back (a deleted withdrawal, a rollback from a backup) is refused.
 //! * [`provider`]: [`FileTrajectories`], which re-reads and re-verifies a class's lock, its
 //!   approvals and their times on every call, on an injected clock.
+//! * [`review`]: `trajectories verify`'s verdict on a class (the same rules, with the lock re-planned
+//!   and every problem listed) and `sign-approvers`' check of the authority's signature, with
+//!   their texts.
 //!
 //! The lock file, the SSH signatures and the approvals chain themselves are
 //! [`ergocell_robot::lock`], [`ergocell_robot::signing`] and [`ergocell_robot::authority`].
@@ -18,6 +21,7 @@ pub mod files;
 #[cfg(feature = "fixtures")]
 pub mod fixture;
 pub mod provider;
+pub mod review;
 pub mod witness_store;
 
 pub use error::{ProviderError, Refusal};

@@ -15,6 +15,8 @@
 //!   the path tolerances derived from the lock.
 //! * [`signing`]: who may approve (OpenSSH allowed signers, revoked keys) and the exact bytes an
 //!   approval's SSH signature covers.
+//! * [`review`]: what the review commands decide and say: the re-validation of a lock, the
+//!   sign-off an approve or a withdraw appends, and their report lines.
 //! * [`authority`]: the site's approvers authority, whose signature makes the approvers' files count
 //!   (the trust anchor outside the project folder).
 //! * [`witness`]: what the cell has seen of each approvals file, so that one cut back (a deleted
@@ -40,6 +42,7 @@ pub mod model;
 pub mod monitor;
 pub mod pose;
 pub mod qp;
+pub mod review;
 pub mod signing;
 pub mod validate;
 pub mod witness;

@@ -73,6 +73,7 @@ pub mod cameras;
 pub mod controller;
 pub mod demo;
 pub mod design;
+pub mod design_report;
 pub mod detector;
 pub mod detector_fit;
 pub mod experiments;

@@ -38,12 +38,14 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context as _};
 use ergocell::trust_anchor;
+use ergocell_approvals::review::{untrusted_approvers_text, ApproversSigned, ClassCheck, Verdict};
 use ergocell_robot::authority;
 use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
-use ergocell_robot::signing::{self, printable, TrustedSigners};
+use ergocell_robot::review::{self, ClassValidation, Refused, SignOff};
+use ergocell_robot::signing::{self, TrustedSigners};
 use ergocell_robot::{
     plan_and_validate, CellConfig, InputHashes, PlanInputs, RobotModel, TrajectoryClass,
-    TrajectoryLayout, TrajectorySpec, TrustFiles,
+    TrajectoryLayout, TrajectorySpec, TrustFiles, Validation,
 };
 
 use super::UsageError;
@@ -251,16 +253,12 @@ impl Context {
         let cell_text = read(&args.cell)?;
         let cell = CellConfig::from_toml_str(&cell_text)
             .map_err(|e| UsageError(format!("{}: {e}", args.cell.display())))?;
-        let urdf_path = args
-            .cell
-            .parent()
-            .unwrap_or_else(|| Path::new("."))
-            .join(&cell.robot.urdf);
+        let dir = args.cell.parent().unwrap_or_else(|| Path::new("."));
+        let urdf_path = dir.join(&cell.robot.urdf);
         let urdf_text = read(&urdf_path)?;
         let model =
             RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
                 .map_err(|e| UsageError(format!("{}: {e}", urdf_path.display())))?;
-        let dir = args.cell.parent().unwrap_or_else(|| Path::new("."));
         let allowed_path = dir.join(signing::ALLOWED_SIGNERS);
         let revoked_path = dir.join(signing::REVOKED_KEYS);
         let allowed = read(&allowed_path)?;
@@ -325,6 +323,49 @@ impl Context {
         );
         Ok((spec, hashes, text))
     }
+
+    /// What planning `spec` needs: the robot, the cell and the inputs' hashes.
+    fn plan_inputs<'a>(
+        &'a self,
+        spec: &'a TrajectorySpec,
+        hashes: &'a InputHashes,
+    ) -> PlanInputs<'a> {
+        PlanInputs {
+            model: &self.model,
+            cell: &self.cell,
+            spec,
+            hashes,
+        }
+    }
+
+    /// What verifying the class's lock (and its approvals, if read) needs.
+    fn verify_inputs<'a>(
+        &'a self,
+        class: TrajectoryClass,
+        lock_toml: &'a str,
+        current_inputs: &'a InputHashes,
+        approvals_toml: Option<&'a str>,
+    ) -> VerifyInputs<'a> {
+        VerifyInputs {
+            class,
+            lock_toml,
+            current_inputs,
+            model: &self.model,
+            approvals_toml,
+            trusted: &self.trusted,
+        }
+    }
+
+    /// Refuses to `verb` (approve, withdraw) while the approvers' files are not trusted.
+    fn refuse_untrusted(&self, verb: &'static str) -> Result<(), Refused> {
+        match &self.trust_problem {
+            Some(why) => Err(Refused::ApproversNotTrusted {
+                why: why.clone(),
+                verb,
+            }),
+            None => Ok(()),
+        }
+    }
 }
 
 /// Reads a file of the cell or the trajectories folder. `trajectories` works on the files on disk
@@ -343,40 +384,25 @@ fn read(path: &Path) -> anyhow::Result<String> {
     })
 }
 
-fn classes(class: Option<TrajectoryClass>) -> Vec<TrajectoryClass> {
-    class.map_or_else(|| TrajectoryClass::ALL.to_vec(), |c| vec![c])
+/// An OpenSSH private key file (a usage error when it is not one).
+fn private_key(path: &Path) -> anyhow::Result<signing::PrivateKey> {
+    signing::private_key_from_openssh(&read(path)?)
+        .map_err(|e| anyhow::Error::from(UsageError(format!("{}: {e}", path.display()))))
 }
 
 fn validate(ctx: &Context, class: Option<TrajectoryClass>, json: bool) -> anyhow::Result<()> {
     let mut failed = Vec::new();
     let mut json_out = Vec::new();
-    for class in classes(class) {
+    for class in review::selected(class) {
         let (spec, hashes) = ctx.spec(class)?;
-        let inputs = PlanInputs {
-            model: &ctx.model,
-            cell: &ctx.cell,
-            spec: &spec,
-            hashes: &hashes,
-        };
-        match plan_and_validate(&inputs) {
-            Ok(v) => {
-                if !v.report.accepted {
-                    failed.push(class);
-                }
-                if json {
-                    json_out.push(serde_json::json!({ "class": class, "report": v.report }));
-                } else {
-                    println!("{}", v.report);
-                }
-            }
-            Err(e) => {
-                failed.push(class);
-                if json {
-                    json_out.push(serde_json::json!({ "class": class, "error": e.to_string() }));
-                } else {
-                    println!("Trajectory validation — class {class} — REJECTED\n  {e}\n");
-                }
-            }
+        let validation = ClassValidation::plan(class, &ctx.plan_inputs(&spec, &hashes));
+        if !validation.accepted() {
+            failed.push(class);
+        }
+        if json {
+            json_out.push(validation.json()?);
+        } else {
+            println!("{}", validation.text());
         }
     }
     if json {
@@ -385,7 +411,7 @@ fn validate(ctx: &Context, class: Option<TrajectoryClass>, json: bool) -> anyhow
     if failed.is_empty() {
         Ok(())
     } else {
-        bail!("rejected: {}", list(&failed))
+        bail!("rejected: {}", review::class_list(&failed))
     }
 }
 
@@ -396,20 +422,9 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
     let mut failed = Vec::new();
     let mut bad_input = false;
     let mut locks = Vec::new();
-    for class in classes(class) {
-        let locked = ctx.spec(class).and_then(|(spec, hashes)| {
-            let inputs = PlanInputs {
-                model: &ctx.model,
-                cell: &ctx.cell,
-                spec: &spec,
-                hashes: &hashes,
-            };
-            plan_and_validate(&inputs)
-                .and_then(ergocell_robot::Validation::into_locked)
-                .map_err(anyhow::Error::from)
-        });
-        match locked {
-            Ok(l) => locks.push((class, LockFile::from_locked(&l))),
+    for class in review::selected(class) {
+        match locked(ctx, class) {
+            Ok(lock) => locks.push((class, lock)),
             Err(e) => {
                 eprintln!("{class}: not locked: {e:#}");
                 bad_input |= e.chain().any(<dyn std::error::Error>::is::<UsageError>);
@@ -418,10 +433,7 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
         }
     }
     if !failed.is_empty() {
-        let why = format!(
-            "not locked: {} — no lock file was written (every lock is as it was)",
-            list(&failed)
-        );
+        let why = review::not_locked_text(&failed);
         // A malformed file is bad input (exit 2); a class that does not validate is a rejection (1).
         return Err(if bad_input {
             UsageError(why).into()
@@ -432,37 +444,20 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
     for (class, lock) in locks {
         let path = ctx.layout.lock(class);
         write(&path, &lock.to_toml()?)?;
-        println!(
-            "{class}: locked {} (lock_sha256 {})",
-            path.display(),
-            lock.lock_sha256
-        );
-        println!("    review it, then: ergocell trajectories approve --class {class} --by <principal> --key <ssh key>");
+        println!("{}", review::locked_text(&lock, &path));
     }
     if let Some(why) = &ctx.trust_problem {
-        eprintln!("note: the approvers' files are not trusted, so no approval of these locks will count until they are: {why}");
+        eprintln!("{}", review::untrusted_lock_note(why));
     }
     Ok(())
 }
 
-/// Re-plan the class from the current inputs and check that the lock holds exactly that trajectory:
-/// a lock edited by hand (and re-hashed) is refused even though its hashes agree.
-fn matches_validation(
-    ctx: &Context,
-    spec: &TrajectorySpec,
-    current: &InputHashes,
-    lock: &LockFile,
-) -> Result<(), String> {
-    let inputs = PlanInputs {
-        model: &ctx.model,
-        cell: &ctx.cell,
-        spec,
-        hashes: current,
-    };
-    let validated = plan_and_validate(&inputs)
-        .and_then(ergocell_robot::Validation::into_locked)
-        .map_err(|e| format!("validation of the current inputs fails: {e}"))?;
-    lock::check_matches_validation(lock, &validated).map_err(|e| e.to_string())
+/// The class planned, validated and locked from the current files.
+fn locked(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<LockFile> {
+    let (spec, hashes) = ctx.spec(class)?;
+    let locked =
+        plan_and_validate(&ctx.plan_inputs(&spec, &hashes)).and_then(Validation::into_locked)?;
+    Ok(LockFile::from_locked(&locked))
 }
 
 /// How `approve` gets its signature.
@@ -579,13 +574,6 @@ fn remove_stale_partials(dir: &Path) {
     }
 }
 
-/// Refuses an entry whose time `verify` would refuse, before it is written (it would otherwise be
-/// announced as recorded and then block the class until withdrawn).
-fn check_entry_time(at_utc: &str, what: &str) -> anyhow::Result<()> {
-    signing::check_approval_time(at_utc, trust_anchor::now_unix())
-        .map_err(|e| anyhow::anyhow!("{e}\nrefusing to {what}: nothing was written"))
-}
-
 /// The class's approvals file (empty if there is none yet), its chain checked and checked against
 /// the cell's witness ([`ergocell::witness`]): a file cut back is refused before anything is added.
 fn load_approvals(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<ApprovalsFile> {
@@ -622,102 +610,39 @@ fn witness(
         .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
-/// The two-step flow's first step: `message` written to the new file `out`, and what to do next.
-fn message_written(
-    class: TrajectoryClass,
-    out: &Path,
-    message: &str,
-    what: &str,
-    command: &str,
-) -> anyhow::Result<()> {
-    write_new(out, message)?;
-    println!(
-        "{class}: wrote the {what} message to {} — sign it with\n  ssh-keygen -Y sign -f <your key> -n {} {}\nthen: ergocell trajectories {command} --class {class} --signed {}",
-        out.display(),
-        signing::APPROVAL_NAMESPACE,
-        out.display(),
-        out.display()
-    );
-    Ok(())
-}
-
 fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
     let mut s = path.as_os_str().to_owned();
     s.push(suffix);
     PathBuf::from(s)
 }
 
+/// Approves the class's lock, after checking its integrity and that it holds what validation
+/// produces now.
 fn approve(
     ctx: &Context,
     class: TrajectoryClass,
     by: Option<&str>,
     how: ApproveHow<'_>,
 ) -> anyhow::Result<()> {
-    if let Some(why) = &ctx.trust_problem {
-        bail!("the approvers' files are not trusted: {why}\nrefusing to approve");
-    }
+    ctx.refuse_untrusted("approve")?;
     let (spec, current) = ctx.spec(class)?;
-    let lock_path = ctx.layout.lock(class);
-    let lock_text = read(&lock_path)
+    let lock_text = read(&ctx.layout.lock(class))
         .with_context(|| format!("run `ergocell trajectories lock --class {class}` first"))?;
-    let inputs = VerifyInputs {
-        class,
-        lock_toml: &lock_text,
-        current_inputs: &current,
-        model: &ctx.model,
-        approvals_toml: None,
-        trusted: &ctx.trusted,
-    };
-    let lock =
-        lock::verify_integrity(&inputs).map_err(|f| anyhow::anyhow!("{f}\nrefusing to approve"))?;
-    matches_validation(ctx, &spec, &current, &lock)
-        .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?;
-    let approvals_path = ctx.layout.approvals(class);
-    let _lock = ApprovalsLock::for_writing(ctx, class, &how)?;
-    let mut file = load_approvals(ctx, class)?;
-    let approval = match how {
-        ApproveHow::Key(key_path) => {
-            let by = by.unwrap_or_default();
-            let key = signing::private_key_from_openssh(&read(key_path)?)
-                .map_err(|e| UsageError(format!("{}: {e}", key_path.display())))?;
-            file.approve(&lock, by, &now_rfc3339()?, &ctx.trusted, &key)
-                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?
-                .clone()
-        }
-        ApproveHow::MessageOut(out) => {
-            let message = file.next_message(&lock, by.unwrap_or_default(), &now_rfc3339()?)?;
-            return message_written(class, out, &message, "approval", "approve");
-        }
-        ApproveHow::Signed { message, signature } => {
-            let text = read(message)?;
-            let sig = read(&signature)?;
-            file.append_signed(&lock, &text, &sig, &ctx.trusted)
-                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to approve"))?
-                .clone()
-        }
-    };
-    check_entry_time(&approval.approved_at_utc, "approve")?;
-    write(&approvals_path, &file.to_toml()?)?;
-    witness(ctx, &approvals_path, class, &file)?;
-    println!(
-        "{class}: approved by {} at {} (signature verified) — lock_sha256 {} — recorded in {}",
-        printable(&approval.approved_by),
-        approval.approved_at_utc,
-        approval.lock_sha256,
-        approvals_path.display()
-    );
-    Ok(())
+    let lock = lock::verify_integrity(&ctx.verify_inputs(class, &lock_text, &current, None))
+        .map_err(|failure| Refused::Integrity { failure })?;
+    review::revalidate(&ctx.plan_inputs(&spec, &current), &lock)
+        .map_err(|cause| Refused::NotValidated { cause })?;
+    sign_off(ctx, SignOff::Approve(&lock), by, how)
 }
 
+/// Withdraws the class's standing approval.
 fn withdraw(
     ctx: &Context,
     class: TrajectoryClass,
     by: Option<&str>,
     how: ApproveHow<'_>,
 ) -> anyhow::Result<()> {
-    if let Some(why) = &ctx.trust_problem {
-        bail!("the approvers' files are not trusted: {why}\nrefusing to withdraw");
-    }
+    ctx.refuse_untrusted("withdraw")?;
     let approvals_path = ctx.layout.approvals(class);
     if !approvals_path.exists() {
         return Err(UsageError(format!(
@@ -726,46 +651,44 @@ fn withdraw(
         ))
         .into());
     }
+    sign_off(ctx, SignOff::Withdraw(class), by, how)
+}
+
+/// Appends the approval or withdrawal `what` to the class's approvals file, signed as `how` says,
+/// under the approvals folder's lock; or, with `--message-out`, writes the message to sign.
+fn sign_off(
+    ctx: &Context,
+    what: SignOff<'_>,
+    by: Option<&str>,
+    how: ApproveHow<'_>,
+) -> anyhow::Result<()> {
+    let class = what.class();
+    let approvals_path = ctx.layout.approvals(class);
     let _lock = ApprovalsLock::for_writing(ctx, class, &how)?;
     let mut file = load_approvals(ctx, class)?;
+    let by = by.unwrap_or_default();
     let entry = match how {
         ApproveHow::Key(key_path) => {
-            let key = signing::private_key_from_openssh(&read(key_path)?)
-                .map_err(|e| UsageError(format!("{}: {e}", key_path.display())))?;
-            file.withdraw(
-                class,
-                by.unwrap_or_default(),
-                &now_rfc3339()?,
-                &ctx.trusted,
-                &key,
-            )
-            .map_err(|e| anyhow::anyhow!("{e}\nrefusing to withdraw"))?
-            .clone()
+            let key = private_key(key_path)?;
+            what.sign(&mut file, by, &now_rfc3339()?, &ctx.trusted, &key)?
+                .clone()
         }
         ApproveHow::MessageOut(out) => {
-            let message =
-                file.next_withdrawal_message(class, by.unwrap_or_default(), &now_rfc3339()?)?;
-            return message_written(class, out, &message, "withdrawal", "withdraw");
+            write_new(out, &what.message(&file, by, &now_rfc3339()?)?)?;
+            println!("{}", what.message_written_text(out));
+            return Ok(());
         }
         ApproveHow::Signed { message, signature } => {
             let text = read(message)?;
             let sig = read(&signature)?;
-            file.append_signed_withdrawal(class, &text, &sig, &ctx.trusted)
-                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to withdraw"))?
+            what.append_signed(&mut file, &text, &sig, &ctx.trusted)?
                 .clone()
         }
     };
-    check_entry_time(&entry.approved_at_utc, "withdraw")?;
+    review::check_entry_time(&entry, trust_anchor::now_unix())?;
     write(&approvals_path, &file.to_toml()?)?;
     witness(ctx, &approvals_path, class, &file)?;
-    println!(
-        "{class}: approval of lock_sha256 {} WITHDRAWN by {} at {} (signature verified) — recorded in {}; \
-         the lock does not run until it is approved again",
-        entry.lock_sha256,
-        printable(&entry.approved_by),
-        entry.approved_at_utc,
-        approvals_path.display()
-    );
+    println!("{}", review::recorded_text(class, &entry, &approvals_path));
     Ok(())
 }
 
@@ -803,113 +726,54 @@ fn verify(
 ) -> anyhow::Result<()> {
     let mut failed = Vec::new();
     if let Some(why) = &ctx.trust_problem {
-        println!("approvers: NOT TRUSTED — {why}\n  (no approval counts until the site's approvers authority signs these files)");
+        println!("{}", untrusted_approvers_text(why));
     }
-    for class in classes(class) {
-        let (spec, current) = ctx.spec(class)?;
-        let lock_path = ctx.layout.lock(class);
-        let Ok(lock_text) = ergocell::input::read_text(&lock_path, ergocell::input::Kind::Config)
-        else {
-            println!(
-                "{class}: FAIL\n  - no lock file {} (run `ergocell trajectories lock --class {class}`)",
-                lock_path.display()
-            );
+    for class in review::selected(class) {
+        let verdict = verdict(ctx, class, allow_unapproved)?;
+        println!("{}", verdict.text());
+        if !verdict.passes() {
             failed.push(class);
-            continue;
-        };
-        let approvals_path = ctx.layout.approvals(class);
-        let approvals_text =
-            ergocell::input::read_text(&approvals_path, ergocell::input::Kind::Config).ok();
-        let seen = ergocell::witness::observe_text(
-            &approvals_path,
-            class,
-            approvals_text.as_deref(),
-            &ctx.trusted,
-            trust_anchor::now_unix(),
-        )
-        .map(print_notes);
-        let inputs = VerifyInputs {
-            class,
-            lock_toml: &lock_text,
-            current_inputs: &current,
-            model: &ctx.model,
-            approvals_toml: approvals_text.as_deref(),
-            trusted: &ctx.trusted,
-        };
-        // Integrity holds: the samples must also be what validation produces from these inputs.
-        if let Ok(lock) = lock::verify_integrity(&inputs) {
-            if let Err(e) = matches_validation(ctx, &spec, &current, &lock) {
-                println!("{class}: FAIL\n  - {e}");
-                failed.push(class);
-                continue;
-            }
-        }
-        let verified = lock::verify(&inputs).and_then(|approved| {
-            ergocell::session::provider::check_approval_times(&approved, trust_anchor::now_unix())
-                .map(|()| approved)
-                .map_err(|why| lock::VerifyFailure {
-                    class,
-                    problems: vec![ergocell_robot::RobotError::Config {
-                        reason: why.to_string(),
-                    }],
-                })
-        });
-        // The witness's refusal joins the others (a forged entry is also one it did not see).
-        let verified = match (verified, seen) {
-            (verified, Ok(())) => verified,
-            (Ok(_), Err(e)) => Err(lock::VerifyFailure {
-                class,
-                problems: vec![e],
-            }),
-            (Err(mut failure), Err(e)) => {
-                failure.problems.push(e);
-                Err(failure)
-            }
-        };
-        match verified {
-            Ok(approved) => {
-                let names: Vec<String> = approved
-                    .approvals()
-                    .iter()
-                    .map(|a| {
-                        format!(
-                            "{} at {} (signature verified)",
-                            printable(&a.approved_by),
-                            printable(&a.approved_at_utc)
-                        )
-                    })
-                    .collect();
-                println!(
-                    "{class}: OK — lock_sha256 {} — approved by {}",
-                    approved.lock().lock_sha256,
-                    names.join(", ")
-                );
-            }
-            Err(failure) => {
-                let only_unapproved = failure
-                    .problems
-                    .iter()
-                    .all(|p| matches!(p, ergocell_robot::RobotError::NotApproved { .. }));
-                if allow_unapproved && only_unapproved {
-                    println!("{class}: INTEGRITY OK, NOT APPROVED — the controller will refuse to run it");
-                    for p in &failure.problems {
-                        println!("  - {p}");
-                    }
-                } else {
-                    println!("{class}: FAIL");
-                    for p in &failure.problems {
-                        println!("  - {p}");
-                    }
-                    failed.push(class);
-                }
-            }
         }
     }
     if failed.is_empty() {
         Ok(())
     } else {
-        bail!("verification failed: {}", list(&failed))
+        bail!("verification failed: {}", review::class_list(&failed))
     }
+}
+
+/// One class's lock and approvals as they are on disk, after the witness has seen the approvals
+/// (its notes on standard error).
+fn verdict(
+    ctx: &Context,
+    class: TrajectoryClass,
+    allow_unapproved: bool,
+) -> anyhow::Result<Verdict> {
+    use ergocell::input::{read_text, Kind};
+    let (spec, current) = ctx.spec(class)?;
+    let lock_path = ctx.layout.lock(class);
+    let Ok(lock_text) = read_text(&lock_path, Kind::Config) else {
+        return Ok(Verdict::no_lock(class, &lock_path));
+    };
+    let approvals_path = ctx.layout.approvals(class);
+    let approvals_text = read_text(&approvals_path, Kind::Config).ok();
+    let approvals_text = approvals_text.as_deref();
+    let witness = ergocell::witness::observe_text(
+        &approvals_path,
+        class,
+        approvals_text,
+        &ctx.trusted,
+        trust_anchor::now_unix(),
+    )
+    .map(print_notes);
+    let check = ClassCheck {
+        inputs: ctx.verify_inputs(class, &lock_text, &current, approvals_text),
+        cell: &ctx.cell,
+        spec: &spec,
+        witness,
+        now_unix: trust_anchor::now_unix(),
+    };
+    Ok(Verdict::of(check, allow_unapproved))
 }
 
 /// The site's approvers authority signs the approvers' files (see [`Sub::SignApprovers`]). When the
@@ -919,9 +783,7 @@ fn sign_approvers(ctx: &Context, key: Option<&Path>, signed: Option<&Path>) -> a
     let (allowed, revoked) = &ctx.trust_texts;
     let signature = match (key, signed) {
         (Some(key_path), None) => {
-            let key = signing::private_key_from_openssh(&read(key_path)?)
-                .map_err(|e| UsageError(format!("{}: {e}", key_path.display())))?;
-            authority::sign_approvers(allowed, revoked, &key)?
+            authority::sign_approvers(allowed, revoked, &private_key(key_path)?)?
         }
         (None, Some(sig_path)) => read(sig_path)?,
         _ => {
@@ -931,46 +793,12 @@ fn sign_approvers(ctx: &Context, key: Option<&Path>, signed: Option<&Path>) -> a
         }
     };
     let anchor = trust_anchor::anchor_dir();
-    let (checked, usable) = match trust_anchor::load_authority(&anchor) {
-        Ok(authority) => {
-            let trusted = authority
-                .verify(allowed, revoked, &signature)
-                .map_err(|e| anyhow::anyhow!("{e}\nrefusing to write the signature"))?;
-            (
-                format!(
-                    "checked against the site's approvers authority in {} ({})",
-                    anchor.display(),
-                    authority.fingerprints()
-                ),
-                trusted.usable_keys(),
-            )
-        }
-        Err(trust_anchor::AnchorError::Missing(path)) => (
-            format!(
-                "NOT checked: no approvers authority is installed here ({} does not exist); the \
-                 cell trusts these approvers only if its authority holds the signing key",
-                path.display()
-            ),
-            TrustedSigners::parse(allowed, revoked)?.usable_keys(),
-        ),
-        Err(e) => bail!("{e}\nrefusing to write the signature"),
-    };
+    let installed = trust_anchor::load_authority(&anchor);
+    let checked = ApproversSigned::check(installed, &anchor, allowed, revoked, &signature)?;
     let path = ctx.cell_dir.join(authority::APPROVERS_SIGNATURE);
     write(&path, &signature)?;
-    println!(
-        "approvers signed: {} ({usable} key(s) trusted, revoked ones not counted; {})",
-        path.display(),
-        checked
-    );
+    println!("{}", checked.text(&path));
     Ok(())
-}
-
-fn list(classes: &[TrajectoryClass]) -> String {
-    classes
-        .iter()
-        .map(ToString::to_string)
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 /// Writes a lock or an approvals file atomically (`output::replace`): a full disk or a kill leaves
