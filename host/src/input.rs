@@ -75,6 +75,9 @@ pub enum InputError {
     /// Text that is not UTF-8.
     #[error("{} is not UTF-8 text (byte {at})", path.display())]
     NotUtf8 { path: PathBuf, at: usize },
+    /// A list of files (`--images`) that names none, or cannot be one.
+    #[error("`{spec}`: {why}")]
+    NoFiles { spec: String, why: &'static str },
 }
 
 impl InputError {
@@ -174,6 +177,60 @@ pub fn read_text(path: &Path, kind: Kind) -> Result<String, InputError> {
     })
 }
 
+/// The images of `spec`: a folder (its .jpg/.jpeg/.png files), a pattern with `*`/`?` in the file
+/// name (`data/left*.jpg`, matched as a shell does), or one file; sorted by name. A spec that names
+/// nothing, no image, or has wildcards in its folder is an [`InputError::NoFiles`].
+pub fn list_images(spec: &str) -> Result<Vec<PathBuf>, InputError> {
+    let path = Path::new(spec);
+    let none = |why| InputError::NoFiles {
+        spec: spec.to_owned(),
+        why,
+    };
+    let listing = |dir: &Path| {
+        fs::read_dir(dir).map_err(|error| InputError::Io {
+            path: dir.to_owned(),
+            error,
+        })
+    };
+    let is_image = |p: &Path| {
+        p.extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "jpg" | "jpeg" | "png"))
+    };
+    let mut out: Vec<PathBuf> = if path.is_dir() {
+        listing(path)?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.is_file() && is_image(p))
+            .collect()
+    } else if spec.contains(['*', '?']) {
+        let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
+        let dir = dir.unwrap_or_else(|| Path::new("."));
+        if dir.to_string_lossy().contains(['*', '?']) {
+            return Err(none("wildcards are supported in the file name only"));
+        }
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+        let pattern = glob::Pattern::new(&name.unwrap_or_default())
+            .map_err(|_| none("not a valid wildcard pattern"))?;
+        listing(dir)?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| {
+                p.is_file()
+                    && p.file_name()
+                        .is_some_and(|n| pattern.matches(&n.to_string_lossy()))
+            })
+            .collect()
+    } else if path.is_file() {
+        vec![path.to_path_buf()]
+    } else {
+        return Err(none("no such folder or file"));
+    };
+    out.sort();
+    if out.is_empty() {
+        return Err(none("no images found"));
+    }
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -249,5 +306,50 @@ mod tests {
         assert!(e.to_string().contains("larger than 64 MiB"), "{e}");
         drop(reader);
         writing.join().unwrap();
+    }
+
+    /// A pattern matches file names as a shell does; a folder with wildcards, or a pattern that
+    /// matches nothing, is refused by name.
+    #[test]
+    fn images_are_listed_by_folder_pattern_or_name() {
+        let dir = std::env::temp_dir().join(format!("ergocell-images-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        fs::create_dir_all(&dir).unwrap();
+        for name in ["left01.jpg", "left02.png", "right01.jpg", "notes.txt"] {
+            fs::write(dir.join(name), b"x").unwrap();
+        }
+        let spec = |s: &str| format!("{}/{s}", dir.display());
+        let names = |v: Vec<PathBuf>| -> Vec<String> {
+            v.iter()
+                .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+                .collect()
+        };
+        assert_eq!(
+            names(list_images(&spec("left*")).unwrap()),
+            ["left01.jpg", "left02.png"]
+        );
+        assert_eq!(
+            names(list_images(&spec("l?ft0*.jpg")).unwrap()),
+            ["left01.jpg"]
+        );
+        assert_eq!(
+            names(list_images(&dir.display().to_string()).unwrap()),
+            ["left01.jpg", "left02.png", "right01.jpg"]
+        );
+        for (bad, why) in [
+            ("left?.jpg", "no images found"),
+            (
+                "*/left01.jpg",
+                "wildcards are supported in the file name only",
+            ),
+            ("missing.jpg", "no such folder or file"),
+        ] {
+            let e = list_images(&spec(bad)).unwrap_err();
+            assert!(
+                matches!(e, InputError::NoFiles { why: w, .. } if w == why),
+                "{e}"
+            );
+        }
+        let _ = fs::remove_dir_all(&dir);
     }
 }

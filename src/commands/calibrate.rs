@@ -175,7 +175,7 @@ fn camera_id(name: &str) -> anyhow::Result<CameraId> {
 fn run_intrinsics(args: &IntrinsicsArgs) -> anyhow::Result<()> {
     let board = board_of(&args.common)?;
     let id = camera_id(&args.id)?;
-    let paths = list_images(&args.images)?;
+    let paths = ergocell::input::list_images(&args.images)?;
     check_out(&args.common, &paths)?;
     let images = detect_all(&paths, &board, false)?;
     let size = common_size(&images, &id).map_err(|e| UsageError(e.to_string()))?;
@@ -246,8 +246,8 @@ fn detect_pairs(
     args: &StereoArgs,
     board: &BoardSpec,
 ) -> anyhow::Result<(Vec<ImageDetection>, Vec<ImageDetection>)> {
-    let left_paths = list_images(&args.left)?;
-    let right_paths = list_images(&args.right)?;
+    let left_paths = ergocell::input::list_images(&args.left)?;
+    let right_paths = ergocell::input::list_images(&args.right)?;
     let mut all = left_paths.clone();
     all.extend(right_paths.iter().cloned());
     check_out(&args.common, &all)?;
@@ -341,94 +341,4 @@ fn progress_bar(images: usize) -> ProgressBar {
         bar.set_style(style);
     }
     bar
-}
-
-fn file_name(p: &Path) -> String {
-    p.file_name().map_or_else(
-        || p.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    )
-}
-
-/// The images of `spec`: a folder (its .jpg/.jpeg/.png files), a glob with `*`/`?` in the file
-/// name (`data/left*.jpg`), or one file; sorted by name.
-fn list_images(spec: &str) -> anyhow::Result<Vec<PathBuf>> {
-    let path = Path::new(spec);
-    let is_image = |p: &Path| {
-        p.extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "jpg" | "jpeg" | "png"))
-    };
-    let mut out: Vec<PathBuf> = if path.is_dir() {
-        std::fs::read_dir(path)
-            .with_context(|| format!("listing {spec}"))?
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.is_file() && is_image(p))
-            .collect()
-    } else if spec.contains(['*', '?']) {
-        let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
-        let dir = dir.unwrap_or_else(|| Path::new("."));
-        let pattern = file_name(path);
-        if dir.to_string_lossy().contains(['*', '?']) {
-            anyhow::bail!(UsageError(format!(
-                "`{spec}`: wildcards are supported in the file name only"
-            )));
-        }
-        std::fs::read_dir(dir)
-            .with_context(|| format!("listing {}", dir.display()))?
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.is_file() && wildcard_match(&pattern, &file_name(p)))
-            .collect()
-    } else if path.is_file() {
-        vec![path.to_path_buf()]
-    } else {
-        anyhow::bail!(UsageError(format!("`{spec}`: no such folder or file")));
-    };
-    out.sort();
-    if out.is_empty() {
-        anyhow::bail!(UsageError(format!("`{spec}`: no images found")));
-    }
-    Ok(out)
-}
-
-/// Shell-style match of `*` (any run) and `?` (one character).
-fn wildcard_match(pattern: &str, name: &str) -> bool {
-    let p: Vec<char> = pattern.chars().collect();
-    let n: Vec<char> = name.chars().collect();
-    let (mut pi, mut ni) = (0, 0);
-    let (mut star, mut mark) = (None, 0);
-    while ni < n.len() {
-        if pi < p.len() && (p[pi] == '?' || p[pi] == n[ni]) {
-            pi += 1;
-            ni += 1;
-        } else if pi < p.len() && p[pi] == '*' {
-            star = Some(pi);
-            mark = ni;
-            pi += 1;
-        } else if let Some(s) = star {
-            pi = s + 1;
-            mark += 1;
-            ni = mark;
-        } else {
-            return false;
-        }
-    }
-    while pi < p.len() && p[pi] == '*' {
-        pi += 1;
-    }
-    pi == p.len()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::wildcard_match;
-
-    #[test]
-    fn wildcards_match_like_a_shell() {
-        assert!(wildcard_match("left*.jpg", "left01.jpg"));
-        assert!(!wildcard_match("left*.jpg", "right01.jpg"));
-        assert!(wildcard_match("l?ft0*", "left01.jpg"));
-        assert!(!wildcard_match("left?.jpg", "left01.jpg"));
-        assert!(wildcard_match("*", "anything"));
-    }
 }
