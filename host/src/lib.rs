@@ -8,6 +8,8 @@
 //!   (`--force`), never onto one of the command's inputs or a device, pipe or socket, written
 //!   atomically (a temporary file beside it, synced, then moved), a refusal told apart from a
 //!   failure ([`output::OutputError`]).
+//! - [`scratch`]: a command's private scratch folder in the temporary folder (the demo's own
+//!   approvals), removed on every way out, and those of runs killed outright removed by the next.
 //! - [`shipped`]: the reference cell embedded in the binary (rig, cell file, URDF, approvers'
 //!   files, trajectories, locks, RULA curves), the defaults that make the binary work from any
 //!   directory; a file that exists is always the one read.
@@ -25,6 +27,7 @@
 pub mod input;
 pub mod output;
 pub mod provider;
+pub mod scratch;
 pub mod shipped;
 pub mod trust_anchor;
 pub mod witness;

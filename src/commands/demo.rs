@@ -42,6 +42,7 @@ use ergocell_cell::CellSettings;
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
 use ergocell_formats::rig_file::parse_rig;
+use ergocell_host::scratch::ScratchDir;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_ros_backend::console;
@@ -188,76 +189,6 @@ fn rss_mib() -> Option<f64> {
 #[allow(clippy::disallowed_methods)]
 fn instant() -> std::time::Instant {
     std::time::Instant::now()
-}
-
-/// The demo's temporary folder (its demo approvals), removed on every way out, a panic included.
-struct TempDir(PathBuf);
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-/// Creates `path` as a new directory only this user can enter (0700). One left by an earlier process
-/// with this pid is replaced; a symlink or a file there (another user's trap) is refused.
-fn private_dir(path: &std::path::Path) -> anyhow::Result<()> {
-    let mut builder = std::fs::DirBuilder::new();
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::DirBuilderExt;
-        builder.mode(0o700);
-    }
-    match builder.create(path) {
-        Ok(()) => Ok(()),
-        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-            let meta = std::fs::symlink_metadata(path)
-                .with_context(|| format!("inspecting {}", path.display()))?;
-            if meta.file_type().is_symlink() || !meta.is_dir() {
-                anyhow::bail!(
-                    "{} exists and is not a directory of ours: refusing to use it",
-                    path.display()
-                );
-            }
-            std::fs::remove_dir_all(path)
-                .with_context(|| format!("removing the stale {}", path.display()))?;
-            builder
-                .create(path)
-                .with_context(|| format!("creating {}", path.display()))
-        }
-        Err(e) => Err(e).with_context(|| format!("creating {}", path.display())),
-    }
-}
-
-/// The folders of demo runs that were killed outright (kill -9 leaves no chance to clean up) are
-/// removed by the next demo: `ergocell-demo-<pid>` in the temporary folder whose process is gone and
-/// which holds nothing but the demo's `approvals/`. Only where `/proc` tells which processes live.
-fn remove_stale_demo_dirs(tmp: &std::path::Path) {
-    if !std::path::Path::new("/proc/self").exists() {
-        return;
-    }
-    let Ok(entries) = std::fs::read_dir(tmp) else {
-        return;
-    };
-    for entry in entries.flatten() {
-        let name = entry.file_name();
-        let Some(pid) = name
-            .to_str()
-            .and_then(|n| n.strip_prefix("ergocell-demo-"))
-            .and_then(|p| p.parse::<u32>().ok())
-        else {
-            continue;
-        };
-        if pid == std::process::id() || std::path::Path::new(&format!("/proc/{pid}")).exists() {
-            continue;
-        }
-        let path = entry.path();
-        let only_approvals = std::fs::read_dir(&path)
-            .is_ok_and(|mut it| it.all(|f| f.is_ok_and(|f| f.file_name() == "approvals")));
-        if only_approvals {
-            let _ = std::fs::remove_dir_all(&path);
-        }
-    }
 }
 
 fn secs(t: i64, start: i64) -> f64 {
@@ -760,12 +691,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     check_args(args)?;
     let (out, moved) = output_path(args)?;
     // Demo approvals in a temporary folder, clearly labelled; never trajectories/approvals/.
-    remove_stale_demo_dirs(&std::env::temp_dir());
-    let demo_dir =
-        TempDir(std::env::temp_dir().join(format!("ergocell-demo-{}", std::process::id())));
-    private_dir(&demo_dir.0)?;
+    let demo_dir = ScratchDir::create(&std::env::temp_dir(), "ergocell-demo", "approvals")?;
     let start = args.start_time.unwrap_or_else(wall_clock_nanos);
-    let prepared = prepare(args, &demo_dir.0.join("approvals"), start)?;
+    let prepared = prepare(args, &demo_dir.path().join("approvals"), start)?;
     let (rec, out, moved) = open_recording(args, out, moved)?;
     print_plan(args, &prepared, &out, moved);
     let true_class = prepared.true_class;
