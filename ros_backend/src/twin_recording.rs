@@ -1,17 +1,25 @@
 //! The digital twin's sessions as recordings (`ergocell sim adaptation --record-height`): the
 //! messages a simulated session is recorded with, the same a session of the cell records.
 //!
+//! The demo's twin records its cameras' views, its robot's reports and its joint states with the
+//! TCP markers as a real cell records them ([`record_views`], [`record_robot_report`],
+//! [`record_robot_state`]).
+//!
 //! A twin's recording opens with a session state saying it is simulated, with the operator's true
 //! stature and class ([`simulated_state`]); each tracked frame is recorded as a session records
 //! it, its frame's messages then its warnings' ([`tracked_messages`]). ROS-message work, so it is
 //! here beside [`crate::messages`] and [`crate::recording`]; the simulation is the caller's (this
 //! crate does not depend on the twin, nor the twin on ROS).
 
-use ergocell_bridge::msg::{Header, SessionState};
+use ergocell_bridge::msg::{Header, JointState, SessionState};
+use ergocell_cell::session::{ReportEffect, RobotReport};
 use ergocell_ergonomics::{FrameAssessment, HeightClass, WarningEvent};
+use ergocell_perception::{CameraRig, View2};
 use ergocell_skeleton::Skeleton3;
 
-use crate::messages::{frame_messages, warning_message, Outgoing};
+use crate::messages::{self, frame_messages, warning_message, Outgoing};
+use crate::recording::{topics, Recording};
+use crate::robot_markers::RobotGeometry;
 
 /// The state a twin's recording opens with, at `now_nanos`: `simulated`, why (`reason`), and the
 /// operator's true stature and class. The simulator knows them: the stature has no uncertainty and
@@ -51,6 +59,60 @@ pub fn tracked_messages(
             .map(|w| Outgoing::Warning(warning_message(w))),
     );
     out
+}
+
+/// The twin's camera views at `now`, recorded as the cameras' messages.
+pub fn record_views(recording: &mut Recording, rig: &CameraRig, now: i64, views: &[View2]) {
+    recording.with(|rec| {
+        views.iter().try_for_each(|v| {
+            let m = messages::landmarks_message(rig, v);
+            rec.write(&topics::camera(&m.camera_id), now, &m)
+        })
+    });
+}
+
+/// A robot report applied at `t`, recorded as a real cell records its controller's events, and
+/// the driver's readiness when the report changed it.
+pub fn record_robot_report(
+    recording: &mut Recording,
+    t: i64,
+    report: &RobotReport,
+    effect: &ReportEffect,
+) {
+    if let Some(e) = messages::robot_report_message(t, report) {
+        recording.with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
+    }
+    if let Some(readiness) = &effect.driver_readiness {
+        let e = messages::driver_readiness_message(t, readiness.as_ref());
+        recording.with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
+    }
+}
+
+/// The twin robot's joint state at `now` (its `joints` at `positions`) and, with the served
+/// class's `geometry`, its TCP and handover markers.
+pub fn record_robot_state(
+    recording: &mut Recording,
+    now: i64,
+    geometry: Option<&RobotGeometry>,
+    joints: &[String],
+    positions: Vec<f64>,
+) {
+    let js = JointState {
+        header: Header::new(now, ""),
+        name: joints.to_vec(),
+        position: positions,
+        ..JointState::default()
+    };
+    recording.with(|rec| {
+        rec.write(topics::JOINT_STATES, now, &js)?;
+        if let Some(g) = geometry {
+            if let Some(p) = g.tcp_world(&js) {
+                let m = messages::robot_markers_message(now, Some(p), Some(g.handover_world()));
+                rec.write(topics::ROBOT_MARKERS, now, &m)?;
+            }
+        }
+        Ok(())
+    });
 }
 
 #[cfg(test)]

@@ -28,8 +28,7 @@ use ergocell_bridge::session_info::OperatorId;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
-use ergocell::messages;
-use ergocell::recording::{self, topics, McapRecorder, Recording};
+use ergocell::recording::{self, McapRecorder, Recording};
 use ergocell::robot_markers::RobotGeometry;
 use ergocell::session::provider::FileTrajectories;
 use ergocell::session::{
@@ -37,7 +36,6 @@ use ergocell::session::{
     Outcome, OutputError, ReportEffect, RobotReport, SessionEnd, SessionEvent, SessionMachine,
 };
 use ergocell::shipped;
-use ergocell_bridge::msg::{Header, JointState};
 use ergocell_cell::CellSettings;
 use ergocell_ergonomics::height::ClassThresholds;
 use ergocell_ergonomics::HeightClass;
@@ -46,6 +44,7 @@ use ergocell_host::scratch::ScratchDir;
 use ergocell_perception::{CameraRig, View2};
 use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_ros_backend::console;
+use ergocell_ros_backend::twin_recording;
 use ergocell_sim::controller::{SimController, TwinRobot};
 use ergocell_sim::demo;
 use ergocell_sim::faults::{FaultPlayer, FaultSchedule};
@@ -291,50 +290,17 @@ impl CellOutputs for DemoOutputs {
 /// the controller's events and the driver's readiness, the joint states and the robot's markers.
 impl TwinOutputs for DemoOutputs {
     fn views(&mut self, rig: &CameraRig, now: i64, views: &[View2]) {
-        self.recording.with(|rec| {
-            views.iter().try_for_each(|v| {
-                let m = messages::landmarks_message(rig, v);
-                rec.write(&topics::camera(&m.camera_id), now, &m)
-            })
-        });
+        twin_recording::record_views(&mut self.recording, rig, now, views);
     }
 
     fn robot_report(&mut self, t: i64, report: &RobotReport, effect: &ReportEffect) {
-        if let Some(e) = messages::robot_report_message(t, report) {
-            self.recording
-                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
-        }
-        if let Some(readiness) = &effect.driver_readiness {
-            let e = messages::driver_readiness_message(t, readiness.as_ref());
-            self.recording
-                .with(|rec| rec.write(topics::CONTROLLER_EVENTS, t, &e));
-        }
+        twin_recording::record_robot_report(&mut self.recording, t, report, effect);
     }
 
-    fn robot_state(
-        &mut self,
-        now: i64,
-        class: TrajectoryClass,
-        joints: &[String],
-        positions: Vec<f64>,
-    ) {
-        let js = JointState {
-            header: Header::new(now, ""),
-            name: joints.to_vec(),
-            position: positions,
-            ..JointState::default()
-        };
+    fn robot_state(&mut self, now: i64, class: TrajectoryClass, joints: &[String], at: Vec<f64>) {
         let geometry = self.geometries.iter().find(|(c, _)| *c == class);
-        self.recording.with(|rec| {
-            rec.write(topics::JOINT_STATES, now, &js)?;
-            if let Some((_, g)) = geometry {
-                if let Some(p) = g.tcp_world(&js) {
-                    let m = messages::robot_markers_message(now, Some(p), Some(g.handover_world()));
-                    rec.write(topics::ROBOT_MARKERS, now, &m)?;
-                }
-            }
-            Ok(())
-        });
+        let geometry = geometry.map(|(_, g)| g);
+        twin_recording::record_robot_state(&mut self.recording, now, geometry, joints, at);
     }
 
     fn rula_status(&self) -> String {
