@@ -3,6 +3,8 @@
 //! kinematics to the 33 BlazePose landmarks ([`kinematics`]). The digital twin's operators
 //! (`ergocell_sim`) and the ergonomics crate's synthetic test poses (`ergocell_ergonomics::pose`)
 //! are both this model, in this one axis convention.
+//! It must not know cameras, assessment, the robot or ROS: it depends on anthropometry and the
+//! skeleton alone, and does no I/O.
 //!
 //! # Anthropometry
 //! Every segment is the body's ([`ergocell_anthropometry::body::Body`]); for the average body a

@@ -1,4 +1,5 @@
 //! How deeply an XML text nests, found without recursion, before a recursive reader sees it.
+//! It must not parse or judge the XML beyond its depth, and depends on nothing.
 //!
 //! Both of ergocell's XML readers recurse: `urdf-rs` (the robot's URDF) skips every element it does
 //! not know by a call inside a call, and `roxmltree` (a Qualisys calibration) builds its tree the

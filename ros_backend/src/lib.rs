@@ -15,11 +15,15 @@
 //! - [`robot_markers`]: the robot's TCP and handover point for the recording's markers.
 //! - [`replay`]: a recording's camera landmarks published again, paced as recorded.
 //! - [`station`]: `run`'s station, the cell's inputs on ROS 2 handed to the session driver one at a
-//!   time; [`console`]: what `run` says (its start, the sessions' summaries, the monitor's and the
-//!   steps' timings) as text.
+//!   time; [`console`]: what `run` and `demo` say (`run`'s start, the sessions' summaries, the
+//!   monitor's and the steps' timings; the demo's events and summary) as text.
+//! - [`twin_recording`]: the twin's sessions recorded as a cell records its own.
 //!
 //! The binary's `run` composes these around [`ergocell_cell::session::CellLoop`]; the topics, QoS,
-//! node and security are `ergocell_bridge`'s.
+//! node and security are `ergocell_bridge`'s. What it must not do: decide (what a robot report
+//! means, when the robot is held, which class serves an operator are the cell's rules), run the
+//! twin, calibrate, or serve web pages. Its I/O is the network, the wall clock and the recording
+//! file.
 
 pub mod cameras;
 pub mod clock;
