@@ -8,6 +8,6 @@
 pub mod session;
 pub mod sim_record;
 
-pub use ergocell_host::{input, output, shipped, trust_anchor, witness};
+pub use ergocell_host::{detections, input, output, recordings, shipped, trust_anchor, witness};
 
 pub use ergocell_ros_backend::{messages, recording, robot_markers};

@@ -78,6 +78,12 @@ pub enum InputError {
     /// A list of files (`--images`) that names none, or cannot be one.
     #[error("`{spec}`: {why}")]
     NoFiles { spec: String, why: &'static str },
+    /// Detections that cannot be used ([`crate::detections`]).
+    #[error(transparent)]
+    Detections(Box<crate::detections::DetectionsError>),
+    /// A recording that cannot be reviewed as asked ([`crate::recordings`]).
+    #[error(transparent)]
+    Recording(Box<crate::recordings::RecordingError>),
 }
 
 impl InputError {

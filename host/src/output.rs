@@ -326,7 +326,7 @@ pub fn write(flag: &str, out: &Path, force: bool, bytes: &[u8]) -> Result<()> {
 }
 
 /// Replaces the project file `path` (a lock, an approvals file) with `bytes` atomically, as
-/// [`write`] does with `--force`: the previous file stays whole until the new one is complete.
+/// [`write()`] does with `--force`: the previous file stays whole until the new one is complete.
 pub fn replace(path: &Path, bytes: &[u8]) -> Result<()> {
     write("", path, true, bytes)
 }

@@ -954,6 +954,38 @@ fn part<M: Clone>(v: &[Stamped<M>], f: &dyn Fn(u64) -> bool) -> Vec<Stamped<M>> 
     v.iter().filter(|m| f(m.log_time_nanos)).cloned().collect()
 }
 
+/// Whether a recording of `count` operator sessions holds session `session` (1-based): a
+/// recording in which nobody was seen is one session.
+pub fn holds_session(count: usize, session: usize) -> bool {
+    session != 0 && session <= count.max(1)
+}
+
+/// Session `session` (1-based) of a recording read whole ([`split_sessions`]), ready for its page:
+/// its label (`name`, or for one of several sessions [`crate::text::session_label`]) and its
+/// messages, with a note on the other sessions among its problems. `Err(count)` when the recording
+/// holds no such session, only `count`.
+pub fn pick_session(
+    recording: Recording,
+    session: usize,
+    name: &str,
+) -> Result<(String, Recording), usize> {
+    let mut parts = split_sessions(&recording);
+    let count = parts.len();
+    if !holds_session(count, session) {
+        return Err(count);
+    }
+    let (label, note) =
+        crate::text::session_page(name, session, count, || crate::text::parts_listing(&parts));
+    let mut chosen = if note.is_some() {
+        parts.swap_remove(session - 1).recording
+    } else {
+        parts.pop().map_or(recording, |p| p.recording)
+    };
+    chosen.problems.extend(note);
+    chosen.problems.dedup();
+    Ok((label, chosen))
+}
+
 /// One operator session of a recording: its number (1-based) and its messages.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SessionPart {
@@ -1299,6 +1331,47 @@ mod tests {
             ..Recording::default()
         };
         assert_eq!(split_sessions(&one).len(), 1);
+    }
+
+    /// The session asked for is picked, labelled and told about the others; one that is not
+    /// there is refused with how many there are.
+    #[test]
+    fn a_session_is_picked_labelled_and_noted_or_refused() {
+        let s = 1_000_000_000;
+        let rec = Recording {
+            states: vec![
+                stamped(0, state("measuring_height")),
+                stamped(10 * s, state("session_ended")),
+                stamped(12 * s, state("measuring_height")),
+                stamped(20 * s, state("session_ended")),
+            ],
+            poses: [1, 5, 13]
+                .iter()
+                .map(|&k| stamped(k * s, OperatorPose::default()))
+                .collect(),
+            ..Recording::default()
+        };
+        let (label, second) = pick_session(rec.clone(), 2, "a.mcap").unwrap();
+        assert_eq!(label, "a.mcap · session 2/2");
+        assert_eq!(second.poses.len(), 1);
+        assert_eq!(second.problems.len(), 1);
+        assert!(
+            second.problems[0].contains("2 operator sessions"),
+            "{:?}",
+            second.problems
+        );
+        assert_eq!(pick_session(rec.clone(), 3, "a.mcap"), Err(2));
+        assert_eq!(pick_session(rec.clone(), 0, "a.mcap"), Err(2));
+        let one = Recording {
+            poses: rec.poses.clone(),
+            ..Recording::default()
+        };
+        let (label, whole) = pick_session(one.clone(), 1, "a.mcap").unwrap();
+        assert_eq!((label.as_str(), &whole), ("a.mcap", &one));
+        // Nobody seen: the recording itself is its one session.
+        let (_, empty) = pick_session(Recording::default(), 1, "a.mcap").unwrap();
+        assert_eq!(empty, Recording::default());
+        assert_eq!(pick_session(Recording::default(), 2, "a.mcap"), Err(1));
     }
 
     /// An event about the leg named `leg` (its constant as `ergocell run` sets it).

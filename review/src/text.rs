@@ -27,6 +27,24 @@ pub fn sessions_note(count: usize, listing: &str, session: usize) -> String {
     )
 }
 
+/// The label and the note of the page of session `session` of a recording of `count` sessions,
+/// the file called `name`: the name alone for a recording of one session, else [`session_label`]
+/// and [`sessions_note`] (`listing` describes the sessions: [`parts_listing`] or
+/// [`briefs_listing`]).
+pub fn session_page(
+    name: &str,
+    session: usize,
+    count: usize,
+    listing: impl FnOnce() -> String,
+) -> (String, Option<String>) {
+    if count > 1 {
+        let note = sessions_note(count, &listing(), session);
+        (session_label(name, session, count), Some(note))
+    } else {
+        (name.to_owned(), None)
+    }
+}
+
 /// One line on an operator session: frames, class and height (metres), duration (seconds).
 pub fn describe_session(frames: usize, class: Option<(&str, f64)>, secs: f64) -> String {
     let class = class.map_or_else(

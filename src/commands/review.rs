@@ -14,16 +14,14 @@
 //! timeout, 64 connections) is `ergocell_web::review_server`. Ctrl-C (SIGINT) and SIGTERM stop it the
 //! same way: no new connections, idle ones closed, responses under way get up to 1 s, exit 0.
 
-use std::io::Write as _;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Duration;
 
 use anyhow::Context as _;
-use ergocell::input::{self, Kind};
-use ergocell_review::read::split_sessions;
-use ergocell_review::{analyse, page, read_recording, text, ReviewData, SessionReview};
+use ergocell::recordings::{self, Loaded};
+use ergocell_review::{page, text, ReviewData};
 use ergocell_web::review_server::{self, Limits, Served, MAX_CONNECTIONS, SHUTDOWN_GRACE};
 use tokio::net::TcpListener;
 
@@ -92,7 +90,7 @@ impl Input {
     }
 }
 
-/// See [`Input::page_frames`].
+/// See [`Input::page_frames`] ([`recordings::PageFrames`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum PageFrames {
     Auto,
@@ -100,8 +98,15 @@ pub enum PageFrames {
     Overview,
 }
 
-/// `--page-frames auto` shows the overview from this size of recording on.
-pub const OVERVIEW_FROM_BYTES: u64 = 256 << 20;
+impl From<PageFrames> for recordings::PageFrames {
+    fn from(frames: PageFrames) -> Self {
+        match frames {
+            PageFrames::Auto => Self::Auto,
+            PageFrames::All => Self::All,
+            PageFrames::Overview => Self::Overview,
+        }
+    }
+}
 
 #[derive(Debug, clap::Args)]
 #[command(
@@ -164,153 +169,29 @@ pub struct ReportArgs {
     pub force: bool,
 }
 
-/// `--session`: a session the recording holds (a recording in which nobody was seen is one session).
-fn check_session(path: &Path, session: usize, count: usize) -> anyhow::Result<()> {
-    if session == 0 || session > count.max(1) {
-        return Err(UsageError(format!(
-            "{}: --session {session}: the recording holds {count} operator session(s)",
-            path.display()
-        ))
-        .into());
-    }
-    Ok(())
-}
-
-/// Reads one recording and analyses its operator session `session` (1-based); what is wrong with it
-/// goes to stderr and onto the page. The recording comes back when it was read whole (not for an
-/// overview).
-fn load(
-    path: &Path,
-    session: usize,
-    frames: PageFrames,
-    budget: ergocell_review::overview::Budget,
-    windows: &[[f64; 2]],
-) -> anyhow::Result<(SessionReview, Option<ergocell_review::Recording>)> {
-    if let Some(review) = load_overview(path, session, frames, budget, windows)? {
-        return Ok((review, None));
-    }
-    let bytes = input::read(path, Kind::Recording)?;
-    let recording =
-        read_recording(&bytes).map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
-    let mut parts = split_sessions(&recording);
-    let count = parts.len();
-    check_session(path, session, count)?;
-    let name = file_name(path);
-    let (label, mut recording) = if count > 1 {
-        let listing = text::parts_listing(&parts);
-        let mut chosen = parts.swap_remove(session - 1).recording;
-        chosen
-            .problems
-            .push(text::sessions_note(count, &listing, session));
-        (text::session_label(&name, session, count), chosen)
-    } else {
-        (name, parts.pop().map_or(recording, |p| p.recording))
-    };
-    recording.problems.dedup();
-    let review = analyse(&recording, &label);
-    warn_problems(path, &review);
-    Ok((review, Some(recording)))
-}
-
-fn warn_problems(path: &Path, review: &SessionReview) {
-    for p in &review.source.problems {
-        let _ = writeln!(std::io::stderr(), "warning: {}: {p}", path.display());
-    }
-}
-
-fn file_name(path: &Path) -> String {
-    path.file_name().map_or_else(
-        || path.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    )
-}
-
-/// Whether `frames` asks for the overview of `path` (see [`load_overview`]): `all` never (and not
-/// with `--window`), `overview` always, `auto` with `--window` or from [`OVERVIEW_FROM_BYTES`] on.
-/// An overview of what is not a regular file is a usage error; one of a file over the recordings'
-/// size limit is left to the whole-file reader, which says so.
-fn overview_wanted(path: &Path, frames: PageFrames, windows: &[[f64; 2]]) -> anyhow::Result<bool> {
-    let meta = std::fs::metadata(path)
-        .ok()
-        .filter(std::fs::Metadata::is_file);
-    let wanted = match frames {
-        PageFrames::All if !windows.is_empty() => {
-            return Err(UsageError(
-                "--window keeps a span of an overview whole: not with --page-frames all (which keeps every frame)"
-                    .to_owned(),
-            )
-            .into())
-        }
-        PageFrames::All => false,
-        PageFrames::Overview => true,
-        PageFrames::Auto => {
-            !windows.is_empty()
-                || meta
-                    .as_ref()
-                    .is_some_and(|m| m.len() >= OVERVIEW_FROM_BYTES)
-        }
-    };
-    if !wanted {
-        return Ok(false);
-    }
-    let Some(meta) = meta else {
-        return Err(UsageError(format!(
-            "{}: --page-frames overview reads the recording twice: it must be a regular file",
-            path.display()
-        ))
-        .into());
-    };
-    Ok(meta.len() <= Kind::Recording.limit_bytes())
-}
-
-/// The overview of a long recording's session `session` ([`ergocell_review::overview`]: read
-/// twice, streamed), when `frames` asks for it; `None` when the recording is to be read whole:
-/// `all`, a short recording or one that is not a regular file (a pipe cannot be read twice) under
-/// `auto`, or a recording in which nobody was seen.
-fn load_overview(
-    path: &Path,
-    session: usize,
-    frames: PageFrames,
-    budget: ergocell_review::overview::Budget,
-    windows: &[[f64; 2]],
-) -> anyhow::Result<Option<SessionReview>> {
-    if !overview_wanted(path, frames, windows)? {
-        return Ok(None);
-    }
-    let open = || -> anyhow::Result<std::io::BufReader<std::fs::File>> {
-        let (file, _) = ergocell::input::open(path).map_err(|e| UsageError(e.to_string()))?;
-        Ok(std::io::BufReader::with_capacity(1 << 20, file))
-    };
-    let plan = ergocell_review::overview::plan(open()?, session, budget, windows)
-        .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
-    let count = plan.sessions();
-    if count == 0 {
-        // Nobody was seen: nothing to thin, and the whole-file reader says what the file holds.
-        return Ok(None);
-    }
-    check_session(path, session, count)?;
-    let name = file_name(path);
-    let (label, note) = if count > 1 {
-        let listing = text::briefs_listing(plan.briefs());
-        (
-            text::session_label(&name, session, count),
-            Some(text::sessions_note(count, &listing, session)),
-        )
-    } else {
-        (name, None)
-    };
-    let (recorded, kept) = (plan.frames_recorded(), plan.frames_kept());
-    let review = ergocell_review::overview::analyse_planned(open()?, plan, &label, note)
-        .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
-    if review.overview.is_some() {
-        let _ = writeln!(
-            std::io::stderr(),
-            "note: {}: the page holds {kept} of {recorded} frames (the worst moments at the recorded rate, the worst frame of each few seconds elsewhere); the numbers are over every frame",
-            path.display()
+/// Reads one recording and analyses its operator session `session` (1-based,
+/// [`recordings::load`]); what is wrong with it goes to stderr (and onto the page), as does how an
+/// overview thinned the page.
+fn load(input: &Input, path: &Path, session: usize, frames: PageFrames) -> anyhow::Result<Loaded> {
+    let loaded = recordings::load(&recordings::Request {
+        path,
+        session,
+        frames: frames.into(),
+        budget: input.budget(),
+        windows: &input.windows,
+    })?;
+    if let Some(t) = &loaded.thinned {
+        eprintln!(
+            "note: {}: the page holds {} of {} frames (the worst moments at the recorded rate, the worst frame of each few seconds elsewhere); the numbers are over every frame",
+            path.display(),
+            t.kept,
+            t.recorded
         );
     }
-    warn_problems(path, &review);
-    Ok(Some(review))
+    for p in &loaded.review.source.problems {
+        eprintln!("warning: {}: {p}", path.display());
+    }
+    Ok(loaded)
 }
 
 /// The page's data, and the first session's recording when it was read whole (for the frames CSV).
@@ -318,28 +199,12 @@ fn load_all(
     input: &Input,
     first_frames: PageFrames,
 ) -> anyhow::Result<(ReviewData, Option<ergocell_review::Recording>)> {
-    let budget = input.budget();
-    let (first, recording) = load(
-        &input.recording,
-        input.session,
-        first_frames,
-        budget,
-        &input.windows,
-    )?;
-    let mut sessions = vec![first];
+    let first = load(input, &input.recording, input.session, first_frames)?;
+    let mut sessions = vec![first.review];
     if let Some(other) = &input.compare {
-        sessions.push(
-            load(
-                other,
-                input.compare_session,
-                input.page_frames,
-                budget,
-                &input.windows,
-            )?
-            .0,
-        );
+        sessions.push(load(input, other, input.compare_session, input.page_frames)?.review);
     }
-    Ok((ReviewData::new(sessions), recording))
+    Ok((ReviewData::new(sessions), first.recording))
 }
 
 /// Every output of `report`, checked before any work: never an input, never another output, no

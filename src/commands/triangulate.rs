@@ -4,21 +4,17 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context as _};
+use anyhow::bail;
+use ergocell::detections::{self, Detections, Found};
 use ergocell::input::{self, Kind};
 use ergocell_cell::{Reconstruction, ReconstructionConfig};
-use ergocell_formats::import::{
-    match_camera_folders, parse_caliscope_xy_bytes, scan_caliscope_xy, CaliscopeStream,
-    OpenPosePlan,
-};
 use ergocell_formats::landmarks_file::{LandmarksFormat, StreamingEncoder};
 use ergocell_formats::rig_file::parse_rig;
-use ergocell_perception::detections::{Frame2, ImportStats};
+use ergocell_perception::detections::Frame2;
 use ergocell_perception::detector_error;
 use ergocell_perception::metrics::RunTally;
 use ergocell_perception::report_text;
 use ergocell_perception::temporal::OneEuroParams;
-use ergocell_perception::video_geometry::{parse_declarations, VideoGeometry, VideoMap};
 use ergocell_perception::{CameraRig, FusionMethod, KeypointFormat};
 
 use super::signals::{StopFlag, Stopped};
@@ -81,7 +77,8 @@ pub struct Args {
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let out_format = check_args(args)?;
     let rig = read_rig(&args.calibration)?;
-    let (source, maps, frame_count) = open_detections(args, &rig)?;
+    let source = open_detections(args, &rig)?;
+    let frame_count = source.frame_count();
     let reconstruction = Reconstruction::new(rig.clone(), reconstruction_config(args))?;
     let name = args
         .out
@@ -108,7 +105,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         progress: progress_bar(frame_count),
         frame_count,
     };
-    let source = fusing.fuse_all(source, &maps, &stop)?;
+    let source = fusing.fuse_all(source, &stop)?;
     let done = fusing.finish(&source, started)?;
     print_source_warnings(&source);
     let learnt_offsets: Vec<_> = (0..rig.len())
@@ -212,23 +209,17 @@ struct Fused {
 impl Fusing<'_> {
     /// The detections are read and parsed on a second thread, up to READ_AHEAD frames ahead of the
     /// fusion (one producer, one FIFO channel: the order is kept): reading was a third of the time.
-    /// Each view is mapped into its calibrated image there. The reader hands `source` back for its
-    /// statistics; it stops when the fusion does (a closed channel).
+    /// Each view is mapped into its calibrated image there ([`Detections`]). The reader hands
+    /// `source` back for its statistics; it stops when the fusion does (a closed channel).
     fn fuse_all<'s>(
         &mut self,
-        mut source: FrameSource<'s>,
-        maps: &[VideoMap],
+        mut source: Detections<'s>,
         stop: &StopFlag,
-    ) -> anyhow::Result<FrameSource<'s>> {
-        std::thread::scope(|scope| -> anyhow::Result<FrameSource<'s>> {
+    ) -> anyhow::Result<Detections<'s>> {
+        std::thread::scope(|scope| -> anyhow::Result<Detections<'s>> {
             let (frames, received) = std::sync::mpsc::sync_channel::<Frame2>(READ_AHEAD);
             let reader = scope.spawn(move || {
-                for mut frame in source.by_ref() {
-                    for view in &mut frame.views {
-                        if let Some(m) = maps.get(view.camera) {
-                            m.apply_view(view);
-                        }
-                    }
+                for frame in source.by_ref() {
                     if frames.send(frame).is_err() {
                         break;
                     }
@@ -284,11 +275,7 @@ impl Fusing<'_> {
     /// Ends the output (the frames still held, the footer) and moves it onto --out when every frame
     /// announced came out; otherwise discards it and says why. The wall time is taken before the
     /// move.
-    fn finish(
-        self,
-        source: &FrameSource<'_>,
-        started: std::time::Instant,
-    ) -> anyhow::Result<Fused> {
+    fn finish(self, source: &Detections<'_>, started: std::time::Instant) -> anyhow::Result<Fused> {
         let Self {
             args,
             reconstruction,
@@ -345,37 +332,49 @@ fn write_detector_error(
 }
 
 /// The detections (`--format`, or by what `--detections` is: a folder of OpenPose JSON, else a
-/// caliscope file) with each camera's video geometry, and how many frames they hold (none: a usage
-/// error).
-fn open_detections<'a>(
-    args: &'a Args,
-    rig: &'a CameraRig,
-) -> anyhow::Result<(FrameSource<'a>, Vec<VideoMap>, usize)> {
-    let format = match args.format.as_deref() {
-        Some(f) => f.to_owned(),
-        None if args.detections.is_dir() => "openpose".to_owned(),
-        None => "caliscope".to_owned(),
+/// caliscope file), each view mapped into its camera's calibrated image
+/// ([`ergocell::detections`]), saying what was found on the way.
+fn open_detections<'a>(args: &'a Args, rig: &'a CameraRig) -> anyhow::Result<Detections<'a>> {
+    let keypoints = KeypointFormat::from_name(&args.keypoints)
+        .ok_or_else(|| UsageError(format!("unknown keypoint layout {}", args.keypoints)))?;
+    let format = args.format.as_deref().map(|f| match f {
+        "caliscope" => detections::Format::Caliscope,
+        _ => detections::Format::OpenPose,
+    });
+    let request = detections::Request {
+        path: &args.detections,
+        format,
+        keypoints,
+        rate_hz: args.rate_hz,
+        video_geometry: &args.video_geometry,
     };
-    let source = if format == "caliscope" {
-        FrameSource::caliscope(&args.detections, rig)?
-    } else {
-        let keypoints = KeypointFormat::from_name(&args.keypoints)
-            .ok_or_else(|| UsageError(format!("unknown keypoint layout {}", args.keypoints)))?;
-        FrameSource::openpose(&args.detections, rig, keypoints, args.rate_hz)?
-    };
-    let maps = video_maps(rig, &args.video_geometry, source.video_sizes())?;
-    let frame_count = source.frame_count();
-    if frame_count == 0 {
-        bail!(UsageError(format!(
-            "{}: no frames found",
-            args.detections.display()
-        )));
+    Ok(detections::open(&request, rig, &mut say_found)?)
+}
+
+/// What opening the detections found, on stderr.
+fn say_found(found: Found<'_>) {
+    match found {
+        Found::CameraFolder {
+            camera,
+            folder,
+            files,
+        } => eprintln!("camera {camera} ← {folder}/ ({files} files)"),
+        Found::Unsorted { name } => eprintln!(
+            "note: {name}: rows not in sync_index order, so the whole file is read first"
+        ),
+        Found::VideoMap {
+            camera,
+            geometry,
+            map,
+        } => eprintln!(
+            "camera {camera}: video geometry {geometry}: x_cal = {:.6}·(x − {:.3}), y_cal = {:.6}·(y − {:.3})",
+            map.scale[0], map.offset_px[0], map.scale[1], map.offset_px[1]
+        ),
     }
-    Ok((source, maps, frame_count))
 }
 
 /// The reader's warnings (the first [`MAX_WARNINGS`]) and its statistics' warning.
-fn print_source_warnings(source: &FrameSource<'_>) {
+fn print_source_warnings(source: &Detections<'_>) {
     for w in source.warnings().iter().take(MAX_WARNINGS) {
         eprintln!("warning: {w}");
     }
@@ -403,231 +402,6 @@ fn progress_bar(frames: usize) -> indicatif::ProgressBar {
         bar.set_style(style);
     }
     bar
-}
-
-/// Where the frames come from: read one at a time (caliscope CSV in `sync_index` order, OpenPose
-/// folders), or, for a CSV whose rows are not in order, the whole file parsed first.
-enum FrameSource<'r> {
-    Stream {
-        frames: CaliscopeStream<'r, std::io::BufReader<std::fs::File>>,
-        count: usize,
-    },
-    Memory {
-        frames: std::vec::IntoIter<Frame2>,
-        count: usize,
-        stats: ImportStats,
-    },
-    OpenPose {
-        plan: OpenPosePlan,
-        next: usize,
-        stats: ImportStats,
-        /// Per rig camera, the video size `ergocell-edge detect` recorded in the folder's
-        /// `video.json`, when there is one.
-        video_sizes: Vec<Option<VideoSize>>,
-    },
-}
-
-impl<'r> FrameSource<'r> {
-    fn caliscope(path: &Path, rig: &'r CameraRig) -> anyhow::Result<Self> {
-        let name = path.display().to_string();
-        let open = || {
-            ergocell::input::open(path)
-                .map(|(f, _)| std::io::BufReader::new(f))
-                .with_context(|| format!("reading {name}"))
-        };
-        let scan = scan_caliscope_xy(open()?, &name).map_err(|e| UsageError(e.to_string()))?;
-        if scan.sorted {
-            let frames =
-                CaliscopeStream::new(open()?, &name, rig).map_err(|e| UsageError(e.to_string()))?;
-            return Ok(Self::Stream {
-                frames,
-                count: scan.frames,
-            });
-        }
-        eprintln!("note: {name}: rows not in sync_index order, so the whole file is read first");
-        let bytes = input::read(path, Kind::Data)?;
-        let mut stats = ImportStats::default();
-        let frames = parse_caliscope_xy_bytes(&bytes, &name, rig, &mut stats)
-            .map_err(|e| UsageError(e.to_string()))?;
-        Ok(Self::Memory {
-            count: frames.len(),
-            frames: frames.into_iter(),
-            stats,
-        })
-    }
-
-    /// Lists the camera folders and their files (names only; each file is read when its frame
-    /// is).
-    fn openpose(
-        dir: &Path,
-        rig: &CameraRig,
-        format: KeypointFormat,
-        rate_hz: f64,
-    ) -> anyhow::Result<Self> {
-        let mut folders = Vec::new();
-        for entry in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
-            let entry = entry?;
-            if entry.file_type()?.is_dir() {
-                folders.push(entry.file_name().to_string_lossy().into_owned());
-            }
-        }
-        if folders.is_empty() {
-            bail!(UsageError(format!(
-                "{}: no camera folders inside",
-                dir.display()
-            )));
-        }
-        let matched = match_camera_folders(&folders, rig).map_err(|e| UsageError(e.to_string()))?;
-        // Frames are paired by the frame number in each file name (perception::import::
-        // OpenPosePlan): a missing file is a missing view of that frame only, never a shift of
-        // every later frame.
-        let mut cameras = Vec::new();
-        let mut video_sizes = vec![None; rig.len()];
-        for (folder, camera) in matched {
-            let mut files = Vec::new();
-            for entry in std::fs::read_dir(dir.join(&folder))?.filter_map(Result::ok) {
-                let path = entry.path();
-                if path.file_name().is_some_and(|n| n == VIDEO_SIDECAR) {
-                    video_sizes[camera] = Some(read_video_sidecar(&path)?);
-                } else if path
-                    .extension()
-                    .is_some_and(|e| e.eq_ignore_ascii_case("json"))
-                {
-                    files.push(path.display().to_string());
-                }
-            }
-            eprintln!(
-                "camera {} ← {folder}/ ({} files)",
-                rig.cameras()[camera].id,
-                files.len()
-            );
-            cameras.push((camera, files));
-        }
-        let mut stats = ImportStats::default();
-        let plan = OpenPosePlan::new(&cameras, format, rate_hz, &mut stats)
-            .map_err(|e| UsageError(e.to_string()))?;
-        Ok(Self::OpenPose {
-            plan,
-            next: 0,
-            stats,
-            video_sizes,
-        })
-    }
-
-    /// Per rig camera, the video size the detections were made in, where known.
-    fn video_sizes(&self) -> Option<&[Option<VideoSize>]> {
-        match self {
-            Self::OpenPose { video_sizes, .. } => Some(video_sizes),
-            _ => None,
-        }
-    }
-
-    fn frame_count(&self) -> usize {
-        match self {
-            Self::Stream { count, .. } | Self::Memory { count, .. } => *count,
-            Self::OpenPose { plan, .. } => plan.frame_count(),
-        }
-    }
-
-    fn stats(&self) -> ImportStats {
-        match self {
-            Self::Stream { frames, .. } => frames.stats(),
-            Self::Memory { stats, .. } | Self::OpenPose { stats, .. } => *stats,
-        }
-    }
-
-    fn warnings(&self) -> &[String] {
-        match self {
-            Self::OpenPose { plan, .. } => &plan.warnings,
-            _ => &[],
-        }
-    }
-}
-
-impl Iterator for FrameSource<'_> {
-    type Item = Frame2;
-
-    fn next(&mut self) -> Option<Frame2> {
-        match self {
-            Self::Stream { frames, .. } => frames.next(),
-            Self::Memory { frames, .. } => frames.next(),
-            Self::OpenPose {
-                plan, next, stats, ..
-            } => {
-                let k = *next;
-                *next += 1;
-                // the file names are full paths (as listed)
-                plan.frame(k, |_, name| input::read(Path::new(name), Kind::Data), stats)
-            }
-        }
-    }
-}
-
-/// The file `ergocell-edge detect` writes beside a camera's frames: the video's source, size, rate
-/// and the detector's figures. Only the size is read here.
-const VIDEO_SIDECAR: &str = "video.json";
-
-/// A video frame's size in pixels, from [`VIDEO_SIDECAR`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize)]
-struct VideoSize {
-    width: u32,
-    height: u32,
-}
-
-fn read_video_sidecar(path: &Path) -> anyhow::Result<VideoSize> {
-    let text = input::read_text(path, Kind::Config)?;
-    serde_json::from_str(&text).map_err(|e| {
-        UsageError(format!(
-            "{}: not a video description (width and height in pixels): {e}",
-            path.display()
-        ))
-        .into()
-    })
-}
-
-/// Each camera's map from its video's pixels into its calibrated image: the declared
-/// `--video-geometry`, checked against the video sizes the detector recorded. A camera whose
-/// recorded video size is not its calibrated size and that has no declaration is an error, as is a
-/// declaration for an unknown camera or a `fit` with no known video size.
-fn video_maps(
-    rig: &CameraRig,
-    entries: &[String],
-    sizes: Option<&[Option<VideoSize>]>,
-) -> anyhow::Result<Vec<VideoMap>> {
-    let declared = parse_declarations(rig, entries).map_err(|e| UsageError(e.to_string()))?;
-    let mut maps = Vec::with_capacity(rig.len());
-    for (index, camera) in rig.cameras().iter().enumerate() {
-        let calibrated = (camera.intrinsics.width_px, camera.intrinsics.height_px);
-        let video = sizes
-            .and_then(|s| s.get(index).copied().flatten())
-            .map(|s| (s.width, s.height));
-        let id = &camera.id;
-        let map = match (declared[index], video) {
-            (None, Some(v)) if v != calibrated => bail!(UsageError(format!(
-                "camera {id}: its video is {}x{} (its folder's {VIDEO_SIDECAR}) but it was calibrated at {}x{}: \
-                 declare how they relate, e.g. --video-geometry {id}=fit (the calibrated image scaled to fit \
-                 the video, centred) or {id}=affine:SX,SY,OX,OY",
-                v.0, v.1, calibrated.0, calibrated.1
-            ))),
-            (None, _) => VideoMap::IDENTITY,
-            (Some(VideoGeometry::Fit), None) => bail!(UsageError(format!(
-                "--video-geometry {id}=fit needs the video's size, and no {VIDEO_SIDECAR} gives it: \
-                 use {id}=affine:SX,SY,OX,OY"
-            ))),
-            (Some(g), v) => {
-                let m = g
-                    .map(v.unwrap_or(calibrated), calibrated)
-                    .map_err(|e| UsageError(format!("camera {id}: {e}")))?;
-                eprintln!(
-                    "camera {id}: video geometry {g}: x_cal = {:.6}·(x − {:.3}), y_cal = {:.6}·(y − {:.3})",
-                    m.scale[0], m.offset_px[0], m.scale[1], m.offset_px[1]
-                );
-                m
-            }
-        };
-        maps.push(map);
-    }
-    Ok(maps)
 }
 
 /// At most this many per-file warnings are printed (the rest are counted).
