@@ -6,7 +6,7 @@
 //! It lives beside [`crate::lock`] and [`crate::validate`] because it is their vocabulary: the binary
 //! reads the files, the keys and the clock, and prints these strings; nothing here does I/O.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use crate::config::TrajectoryClass;
 use crate::lock::{self, Approval, ApprovalsFile, LockFile, VerifyFailure};
@@ -257,6 +257,20 @@ pub enum Refused {
     },
 }
 
+impl Refused {
+    /// Refuses to `verb` (approve, withdraw) while the approvers' files are not trusted
+    /// (`trust_problem` says why): no entry could count.
+    pub fn unless_trusted(trust_problem: Option<&str>, verb: &'static str) -> Result<(), Refused> {
+        match trust_problem {
+            Some(why) => Err(Refused::ApproversNotTrusted {
+                why: why.to_owned(),
+                verb,
+            }),
+            None => Ok(()),
+        }
+    }
+}
+
 /// Refuses an entry whose time `verify` would refuse at `now_unix`, before it is written (it would
 /// otherwise be announced as recorded and then block the class until withdrawn).
 pub fn check_entry_time(entry: &Approval, now_unix: i64) -> Result<(), Refused> {
@@ -288,6 +302,47 @@ pub fn recorded_text(class: TrajectoryClass, entry: &Approval, path: &Path) -> S
             path.display()
         ),
     }
+}
+
+/// Why `approval-message` shows no entry of an approvals file.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum NoEntry {
+    /// The file has no entry `entry`.
+    #[error("{} has {count} entries; there is no entry {entry}", path.display())]
+    Missing {
+        path: PathBuf,
+        count: usize,
+        entry: usize,
+    },
+    /// The entry's fields are not well-formed.
+    #[error("{} entry {entry}: {cause}", path.display())]
+    Malformed {
+        path: PathBuf,
+        entry: usize,
+        cause: ApprovalError,
+    },
+}
+
+/// Entry `entry` (0-based) of the approvals file `file`, read from `path`, to show: only with
+/// well-formed fields ([`signing::check_claim`]), as they come from a file anyone may have edited.
+pub fn entry_to_show<'f>(
+    file: &'f ApprovalsFile,
+    entry: usize,
+    path: &Path,
+) -> Result<&'f Approval, NoEntry> {
+    let Some(approval) = file.approval.get(entry) else {
+        return Err(NoEntry::Missing {
+            path: path.to_owned(),
+            count: file.approval.len(),
+            entry,
+        });
+    };
+    signing::check_claim(&approval.claim()).map_err(|cause| NoEntry::Malformed {
+        path: path.to_owned(),
+        entry,
+        cause,
+    })?;
+    Ok(approval)
 }
 
 #[cfg(test)]
@@ -370,11 +425,34 @@ mod tests {
     }
 
     #[test]
+    fn only_an_existing_well_formed_entry_is_shown() {
+        let path = Path::new("approvals/c2.toml");
+        let mut file = ApprovalsFile::default();
+        let e = entry_to_show(&file, 0, path).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "approvals/c2.toml has 0 entries; there is no entry 0"
+        );
+        file.approval.push(entry(Action::Approve, ALICE));
+        file.approval.push(entry(Action::Withdraw, "bob\nc3: OK"));
+        assert_eq!(entry_to_show(&file, 0, path).unwrap().approved_by, ALICE);
+        let e = entry_to_show(&file, 1, path).unwrap_err();
+        assert!(matches!(e, NoEntry::Malformed { entry: 1, .. }), "{e}");
+        assert!(
+            e.to_string().starts_with("approvals/c2.toml entry 1: "),
+            "{e}"
+        );
+        assert!(matches!(
+            entry_to_show(&file, 2, path),
+            Err(NoEntry::Missing { count: 2, .. })
+        ));
+    }
+
+    #[test]
     fn refusals_say_what_was_refused_and_by_which_command() {
-        let untrusted = Refused::ApproversNotTrusted {
-            why: "approvers.sig is missing".to_owned(),
-            verb: "withdraw",
-        };
+        Refused::unless_trusted(None, "withdraw").unwrap();
+        let untrusted =
+            Refused::unless_trusted(Some("approvers.sig is missing"), "withdraw").unwrap_err();
         assert_eq!(
             untrusted.to_string(),
             "the approvers' files are not trusted: approvers.sig is missing\nrefusing to withdraw"

@@ -22,6 +22,8 @@
 //! - [`seeds`]: each experiment summarised over many seeds, with its goals judged seed by seed.
 //! - [`report`]: what `ergocell sim` prints and draws of each result, text and SVG figures as
 //!   strings (the binary writes them).
+//! - [`runs`]: `ergocell sim`'s runs from the inputs it read to what it writes: an experiment on one
+//!   seed or over seeds with a progress callback, the handover-RULA curves, the detector fit.
 //! - [`controller`]: the twin's robot side: a simulated joint trajectory controller and KUKA driver
 //!   with its faults as data, run under the cell's own execution watch ([`controller::TwinRobot`]).
 //! - [`demo`]: the demo's session as data (the operator's script at the cell's pace, a camera
@@ -80,6 +82,7 @@ pub mod experiments;
 pub mod faults;
 pub mod reach;
 pub mod report;
+pub mod runs;
 pub mod seeds;
 pub mod session;
 pub mod source;

@@ -9,8 +9,8 @@
 //!
 //! Each experiment prints a table (or, with `--json`, one JSON object on stdout) and writes
 //! `<experiment>.json` and its SVG figures into `--out-dir`. The same seed gives byte-identical JSON.
-//! The tables and figures are `ergocell_sim::report`'s; this module runs the experiments and writes
-//! what it returns.
+//! The runs, tables and figures are `ergocell_sim::runs`' and `ergocell_sim::report`'s; this module
+//! reads the inputs, shows the progress and writes what they return.
 //! The handover points come from `trajectories/c1..c3.toml` (station frame) placed in the world with
 //! `config/cell.toml`'s `[station]`. "Before adaptation" is one point for everyone, set for a 1.75 m
 //! operator: (0.410, −0.100, 1.055) m, the middle of the Grandjean band (upper arm 10–15°) for c2's
@@ -26,12 +26,10 @@ use ergocell_perception::detector_error::DetectorErrorReport;
 use ergocell_perception::CameraRig;
 use ergocell_robot::{CellConfig, TrajectoryClass, TrajectoryLayout, TrajectorySpec};
 use ergocell_sim::cameras::check_z_up;
-use ergocell_sim::detector_fit::{self, DetectorModel, FitSettings};
-use ergocell_sim::experiments::{
-    self, noise_sweep, operator_statures, Handovers, HeightOptions, Setup,
-};
+use ergocell_sim::detector_fit::{DetectorModel, FitSettings};
+use ergocell_sim::experiments::{Handovers, HeightOptions};
 use ergocell_sim::report::{self, Figure, Report};
-use ergocell_sim::seeds;
+use ergocell_sim::runs;
 use ergocell_sim::{ring_rig, DetectorNoise, RingRigConfig};
 use indicatif::{ProgressBar, ProgressStyle};
 
@@ -72,20 +70,6 @@ pub enum Experiment {
     FitDetector,
 }
 
-impl Experiment {
-    fn name(self) -> &'static str {
-        match self {
-            Experiment::Table1 => "table1",
-            Experiment::Adaptation => "adaptation",
-            Experiment::Height => "height",
-            Experiment::RulaAgreement => "rula_agreement",
-            Experiment::Warnings => "warnings",
-            Experiment::HandoverRula => "handover_rula",
-            Experiment::FitDetector => "detector_fit",
-        }
-    }
-}
-
 /// Whose bodies the adaptation experiment's operators have (`--bodies`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Bodies {
@@ -93,25 +77,12 @@ pub enum Bodies {
     Measured,
 }
 
-/// The people `--bodies` stands the adaptation's operators for: ANSUR II's reporting half for
-/// `measured`, nobody for `proportions`.
-fn adaptation_people(bodies: Bodies) -> anyhow::Result<Vec<ergocell_anthropometry::ansur::Person>> {
-    Ok(match bodies {
-        Bodies::Measured => ergocell_anthropometry::ansur::people()?
-            .into_iter()
-            .filter(|p| p.split() == ergocell_anthropometry::ansur::Split::Report)
-            .collect(),
-        Bodies::Proportions => Vec::new(),
-    })
-}
-
-fn adaptation_bodies(
-    bodies: Bodies,
-    people: &[ergocell_anthropometry::ansur::Person],
-) -> experiments::AdaptationBodies<'_> {
-    match bodies {
-        Bodies::Measured => experiments::AdaptationBodies::Measured(people),
-        Bodies::Proportions => experiments::AdaptationBodies::Proportions,
+impl From<Bodies> for runs::Bodies {
+    fn from(bodies: Bodies) -> Self {
+        match bodies {
+            Bodies::Proportions => runs::Bodies::Proportions,
+            Bodies::Measured => runs::Bodies::Measured,
+        }
     }
 }
 
@@ -279,52 +250,42 @@ fn read_real(c: &Common) -> anyhow::Result<(&Path, DetectorErrorReport)> {
     Ok((real_path.as_path(), real))
 }
 
-/// `sim fit-detector`: the twin's detector fitted to `--real` on `--cameras` (see
-/// `ergocell_sim::detector_fit`), reported on other seeds beside the default independent noise.
+/// `sim fit-detector`: the twin's detector fitted to `--real` on `--cameras`
+/// (`ergocell_sim::runs::DetectorFitRun`), reported on other seeds beside the independent noise.
 fn run_fit_detector(c: &Common) -> anyhow::Result<()> {
     let (real_path, real) = read_real(c)?;
     let rig = load_rig(&c.cameras)?;
-    let settings = FitSettings {
-        view_shift: !c.independent_offsets,
-        view_correlation_deg: c.view_correlation_deg,
-        ..FitSettings::default()
+    let fit = runs::DetectorFitRun {
+        real: &real,
+        real_path,
+        rig: &rig,
+        cameras: &c.cameras,
+        settings: FitSettings {
+            view_shift: !c.independent_offsets,
+            view_correlation_deg: c.view_correlation_deg,
+            ..FitSettings::default()
+        },
+        seed: c.seed,
+        report_seeds: c.seeds.as_ref().map(|s| s.0.as_slice()),
+        noise_px: c.noise_px,
     };
-    let report_seeds: Vec<u64> = c
-        .seeds
-        .as_ref()
-        .map_or_else(|| (101..=120).collect(), |s| s.0.clone());
     let pb = progress_bar("fit-detector");
-    let mut fit =
-        detector_fit::fit(&real, &rig, &settings, c.seed).map_err(|e| UsageError(e.to_string()))?;
-    let real_label = real_path.display().to_string();
-    fit.model.fitted_to =
-        detector_fit::fitted_to(&real_label, &real, &c.cameras, rig.len(), c.seed, &settings);
-    let independent = DetectorNoise {
-        pixel_sigma_px: c.noise_px,
-        ..DetectorNoise::default()
-    };
-    let evaluation = detector_fit::evaluate(
-        &real,
-        &rig,
-        &fit.model,
-        &settings,
-        &report_seeds,
-        &independent,
-    )?;
+    let fitted = fit.run().map_err(|e| -> anyhow::Error {
+        if e.is_bad_input() {
+            UsageError(e.to_string()).into()
+        } else {
+            e.into()
+        }
+    })?;
     pb.finish_and_clear();
     if !c.json {
-        let text = report::detector_fit_text(&real_label, &real, &evaluation, c.seed, c.noise_px);
-        print!("{text}");
+        print!("{}", fitted.text);
     }
-    std::fs::create_dir_all(&c.out_dir)
-        .with_context(|| format!("creating {}", c.out_dir.display()))?;
+    create_out_dir(c)?;
     let model_path = c.out_dir.join("detector.toml");
-    super::output::replace(&model_path, fit.model.to_toml()?.as_bytes())?;
-    let doc = serde_json::to_value(detector_fit::record(&fit, c.seed, &real, &evaluation))?;
-    let setup =
-        serde_json::json!({ "cameras": c.cameras, "real": real_path, "camera_count": rig.len() });
+    super::output::replace(&model_path, fitted.model_toml.as_bytes())?;
     println!("wrote {}", model_path.display());
-    write_result(c, "detector_fit", doc, setup, &[])
+    write_result(c, "detector_fit", fitted.record, fitted.setup, &[])
 }
 
 /// The unadapted cell's one handover point, station frame `forward,lateral,height` (metres): the
@@ -364,56 +325,30 @@ pub(super) fn load_handovers(common: &Common) -> anyhow::Result<Handovers> {
     Ok(Handovers::from_cell(&cell, &specs, common.before_handover))
 }
 
+/// The height experiment's options (`ergocell_sim::runs::height_options`), with the classes' curves
+/// as the cell reads them (the approvals crate's provider).
 fn height_options(c: &Common) -> anyhow::Result<HeightOptions> {
-    Ok(HeightOptions {
-        count: c.operators.unwrap_or(60),
-        idle_secs: 12.0,
-        calibration_sessions: c.calibration_sessions,
-        // The classes' curves as the cell reads them (the approvals crate's provider).
-        rula: ergocell::session::provider::on_disk(
-            &c.cell,
-            &c.trajectories,
-            &c.trajectories.join("approvals"),
-        )
-        .handover_rula()
-        .map_err(|e| UsageError(e.to_string()))?,
-        decision_sigmas: match c.decision_sigmas {
-            Some(k) if !(k.is_finite() && (1.0..=4.0).contains(&k)) => {
-                anyhow::bail!(UsageError(format!(
-                    "--decision-sigmas {k}: expected 1 to 4"
-                )))
-            }
-            k => k,
-        },
-    })
+    let rula = ergocell::session::provider::on_disk(
+        &c.cell,
+        &c.trajectories,
+        &c.trajectories.join("approvals"),
+    )
+    .handover_rula()
+    .map_err(|e| UsageError(e.to_string()))?;
+    runs::height_options(c.operators, c.calibration_sessions, rula, c.decision_sigmas)
+        .map_err(|e| UsageError(format!("--decision-sigmas {e}")).into())
 }
 
 /// `sim handover-rula`: each class's RULA curve over `--seeds` (default 1..4), written as
 /// `handover_rula.toml` (and its figure, unless `--json`) into `--out-dir`.
 fn run_handover_rula(c: &Common) -> anyhow::Result<()> {
-    let seeds = c
-        .seeds
-        .as_ref()
-        .map_or_else(|| vec![1, 2, 3, 4], |s| s.0.clone());
+    let seeds = c.seeds.as_ref().map(|s| s.0.as_slice());
     let rig = load_rig(&c.cameras)?;
     let handovers = load_handovers(c)?;
     let pb = progress_bar("handover_rula");
-    let statures = experiments::handover_rula_statures();
-    let rula = experiments::handover_rula(
-        &rig,
-        &handovers,
-        &statures,
-        c.cycles,
-        &seeds,
-        &mut |done, total| {
-            pb.set_length(total as u64);
-            pb.set_position(done as u64);
-        },
-    )?;
+    let (rula, text) = runs::handover_rula(&rig, &handovers, c.cycles, seeds, &mut tick(&pb))?;
     pb.finish_and_clear();
-    std::fs::create_dir_all(&c.out_dir)
-        .with_context(|| format!("creating {}", c.out_dir.display()))?;
-    let text = report::handover_rula_file(&rula, c.cycles, &seeds)?;
+    create_out_dir(c)?;
     let path = c.out_dir.join(HANDOVER_RULA_FILE);
     std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
     if !c.json {
@@ -422,6 +357,11 @@ fn run_handover_rula(c: &Common) -> anyhow::Result<()> {
         println!("wrote {}", plot.display());
     }
     Ok(())
+}
+
+/// `--out-dir`, made if it is not there.
+fn create_out_dir(c: &Common) -> anyhow::Result<()> {
+    std::fs::create_dir_all(&c.out_dir).with_context(|| format!("creating {}", c.out_dir.display()))
 }
 
 pub(super) fn progress_bar(what: &str) -> ProgressBar {
@@ -446,6 +386,14 @@ pub(super) fn seeds_bar(what: &str, n: usize) -> ProgressBar {
     pb
 }
 
+/// The progress callback that shows `(done, total)` on `pb`.
+fn tick(pb: &ProgressBar) -> impl FnMut(usize, usize) + '_ {
+    move |done, total| {
+        pb.set_length(total as u64);
+        pb.set_position(done as u64);
+    }
+}
+
 pub fn run(args: &Args) -> anyhow::Result<()> {
     check(args)?;
     let c = &args.common;
@@ -453,13 +401,19 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         Experiment::HandoverRula => run_handover_rula(c),
         Experiment::FitDetector => run_fit_detector(c),
         Experiment::Warnings => super::sim_warnings::run(c),
-        Experiment::Table1
-        | Experiment::Adaptation
-        | Experiment::Height
-        | Experiment::RulaAgreement => match &c.seeds {
-            Some(SeedRange(seeds)) => run_seeds(args, seeds),
-            None => run_one(args),
-        },
+        Experiment::Table1 => run_paper(c, |_| Ok(runs::Experiment::Table1)),
+        Experiment::Adaptation => run_paper(c, |c| {
+            Ok(runs::Experiment::Adaptation {
+                bodies: c.bodies.into(),
+            })
+        }),
+        Experiment::Height => run_paper(c, |c| Ok(runs::Experiment::Height(height_options(c)?))),
+        Experiment::RulaAgreement => run_paper(c, |c| {
+            Ok(runs::Experiment::RulaAgreement {
+                fixed_lag_s: c.fixed_lag_s,
+                detector_label: detector_label(c),
+            })
+        }),
     }
 }
 
@@ -505,148 +459,60 @@ fn check(args: &Args) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// What an experiment returns: its result (or its summary over seeds) as JSON, and its report.
-type Outcome = (serde_json::Value, Report);
-
-/// The experiment on `--seed`: its table and figures, `<experiment>.json`.
-fn run_one(args: &Args) -> anyhow::Result<()> {
-    let c = &args.common;
-    let setup = Setup {
-        rig: load_rig(&c.cameras)?,
-        noise: detector_noise(c)?,
-        seed: c.seed,
-    };
-    setup
-        .noise
-        .validate()
-        .map_err(|e| UsageError(e.to_string()))?;
+/// One of the paper's experiments (`ergocell_sim::runs`) on `--seed`, or on every seed of `--seeds`
+/// summarised: its table (unless `--json`), `<experiment>[_seeds].json` and its figures; with
+/// `--record-height`, that operator's two recordings.
+fn run_paper(
+    c: &Common,
+    experiment: impl FnOnce(&Common) -> anyhow::Result<runs::Experiment>,
+) -> anyhow::Result<()> {
+    let rig = load_rig(&c.cameras)?;
+    let noise = detector_noise(c)?;
+    noise.validate().map_err(|e| UsageError(e.to_string()))?;
     let handovers = load_handovers(c)?;
-    let name = args.experiment.name();
-    let pb = progress_bar(name);
-    let mut tick = |done: usize, total: usize| {
-        pb.set_length(total as u64);
-        pb.set_position(done as u64);
-    };
-    std::fs::create_dir_all(&c.out_dir)
-        .with_context(|| format!("creating {}", c.out_dir.display()))?;
-    let (value, report) = match args.experiment {
-        Experiment::HandoverRula => return run_handover_rula(c),
-        Experiment::FitDetector => return run_fit_detector(c),
-        Experiment::Warnings => return super::sim_warnings::run(c),
-        Experiment::Table1 => one_table1(c, &setup, &handovers, &mut tick, &pb)?,
-        Experiment::Adaptation => one_adaptation(c, &setup, &handovers, &mut tick, &pb)?,
-        Experiment::Height => one_height(c, &setup, &handovers, &mut tick, &pb)?,
-        Experiment::RulaAgreement => one_rula_agreement(c, &setup, &handovers, &mut tick, &pb)?,
-    };
-    let setup_json = serde_json::json!({
-        "seed": c.seed,
-        "cameras": c.cameras,
-        "camera_count": setup.rig.len(),
-        "noise": setup.noise,
-        "cycles": c.cycles,
-        "handovers_m": handovers,
-    });
-    let figures = show(c, &report)?;
-    write_result(c, name, value, setup_json, &figures)
-}
-
-/// Table 1 on one seed: the result and its table and figure.
-fn one_table1(
-    c: &Common,
-    setup: &Setup,
-    handovers: &Handovers,
-    tick: &mut dyn FnMut(usize, usize),
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let operators = operator_statures(c.operators.unwrap_or(5));
-    let r = experiments::table1(setup, handovers, &operators, c.cycles, tick)?;
-    pb.finish_and_clear();
-    let report = Report {
-        text: report::table1_text(&r),
-        figures: report::table1_figures(&r)?,
-    };
-    Ok((serde_json::to_value(&r)?, report))
-}
-
-/// The adaptation on one seed: the result and its table and figures; with `--record-height`, that
-/// operator's two recordings.
-fn one_adaptation(
-    c: &Common,
-    setup: &Setup,
-    handovers: &Handovers,
-    tick: &mut dyn FnMut(usize, usize),
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let people = adaptation_people(c.bodies)?;
-    let r = experiments::adaptation(
-        setup,
+    create_out_dir(c)?;
+    let run = runs::Run {
+        experiment: experiment(c)?,
+        rig,
+        noise,
         handovers,
-        &experiments::adaptation_heights(),
-        adaptation_bodies(c.bodies, &people),
-        c.cycles,
-        tick,
-    )?;
-    pb.finish_and_clear();
-    let report = Report {
-        text: report::adaptation_text(&r),
-        figures: report::adaptation_figures(&r)?,
+        cameras: c.cameras.clone(),
+        operators: c.operators,
+        cycles: c.cycles,
     };
-    if let Some(h) = c.record_height {
-        let [before, after] =
-            ergocell::sim_record::record_both(setup, handovers, h, c.cycles, &c.out_dir)?;
-        eprintln!(
-            "recorded {} and {}: ergocell report {} --compare {}",
-            before.display(),
-            after.display(),
-            before.display(),
-            after.display()
-        );
-    }
-    Ok((serde_json::to_value(&r)?, report))
+    let name = run.experiment.name();
+    let (outcome, file_stem) = if let Some(SeedRange(seeds)) = &c.seeds {
+        let pb = seeds_bar(name, seeds.len());
+        let outcome = run.over_seeds(seeds, &mut tick(&pb))?;
+        pb.finish_and_clear();
+        (outcome, format!("{name}_seeds"))
+    } else {
+        let pb = progress_bar(name);
+        let outcome = run.one(c.seed, &mut tick(&pb))?;
+        pb.finish_and_clear();
+        if let Some(height) = c.record_height {
+            record(&run, c, height)?;
+        }
+        (outcome, name.to_owned())
+    };
+    let figures = show(c, &outcome.report)?;
+    write_result(c, &file_stem, outcome.value, outcome.setup, &figures)
 }
 
-/// The height experiment on one seed: the result and its table and figure.
-fn one_height(
-    c: &Common,
-    setup: &Setup,
-    handovers: &Handovers,
-    tick: &mut dyn FnMut(usize, usize),
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let people = ergocell_anthropometry::ansur::people()?;
-    let r = experiments::height(setup, handovers, &people, &height_options(c)?, tick)?;
-    pb.finish_and_clear();
-    let report = Report {
-        text: report::height_text(&r),
-        figures: report::height_figures(&r)?,
-    };
-    Ok((serde_json::to_value(&r)?, report))
-}
-
-/// RULA agreement on one seed, and the same sessions at other pixel-noise levels (how agreement
-/// depends on the detector, `ergocell_sim::experiments::noise_sweep`): the result with its sweep,
-/// and the figures.
-fn one_rula_agreement(
-    c: &Common,
-    setup: &Setup,
-    handovers: &Handovers,
-    tick: &mut dyn FnMut(usize, usize),
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let operators = operator_statures(c.operators.unwrap_or(6));
-    let lag = c.fixed_lag_s;
-    let r = experiments::rula_agreement_with(setup, handovers, &operators, c.cycles, lag, tick)?;
-    let sweep = noise_sweep::sweep(setup, handovers, &operators, c.cycles, lag)?;
-    pb.finish_and_clear();
-    let text = report::agreement_text(&r) + &report::noise_sweep_text(&sweep);
-    let mut value = serde_json::to_value(&r)?;
-    if let Some(obj) = value.as_object_mut() {
-        let rows = serde_json::to_value(noise_sweep::rows(&sweep))?;
-        obj.insert("noise_sweep".into(), rows);
-    }
-    let mut figures = report::agreement_figures(&r)?;
-    figures.push(report::noise_sweep_figure(&sweep)?);
-    Ok((value, Report { text, figures }))
+/// `--record-height`: an operator of that stature recorded before and after adaptation
+/// (`ergocell::sim_record`), the two recordings named on standard error.
+fn record(run: &runs::Run, c: &Common, height: f64) -> anyhow::Result<()> {
+    let setup = run.setup(c.seed);
+    let [before, after] =
+        ergocell::sim_record::record_both(&setup, &run.handovers, height, c.cycles, &c.out_dir)?;
+    eprintln!(
+        "recorded {} and {}: ergocell report {} --compare {}",
+        before.display(),
+        after.display(),
+        before.display(),
+        after.display()
+    );
+    Ok(())
 }
 
 /// Adds `setup` to `doc`, writes `<file_stem>.json` into `--out-dir` and prints the JSON (`--json`)
@@ -699,144 +565,4 @@ pub(super) fn write_figure(dir: &Path, figure: &Figure) -> anyhow::Result<PathBu
     let path = dir.join(&figure.file_name);
     std::fs::write(&path, &figure.svg).with_context(|| format!("writing {}", path.display()))?;
     Ok(path)
-}
-
-/// One run per seed; each seed's sessions are independent of the others'.
-fn each<T>(
-    seeds: &[u64],
-    pb: &ProgressBar,
-    mut f: impl FnMut(u64) -> Result<T, ergocell_sim::SimError>,
-) -> anyhow::Result<Vec<T>> {
-    let mut out = Vec::with_capacity(seeds.len());
-    for &s in seeds {
-        out.push(f(s)?);
-        pb.inc(1);
-    }
-    Ok(out)
-}
-
-/// `--seeds`: the experiment once per seed, summarised (see `ergocell_sim::seeds`).
-fn run_seeds(args: &Args, seeds: &[u64]) -> anyhow::Result<()> {
-    let c = &args.common;
-    let rig = load_rig(&c.cameras)?;
-    let noise = detector_noise(c)?;
-    noise.validate().map_err(|e| UsageError(e.to_string()))?;
-    let handovers = load_handovers(c)?;
-    let name = args.experiment.name();
-    std::fs::create_dir_all(&c.out_dir)
-        .with_context(|| format!("creating {}", c.out_dir.display()))?;
-    let pb = seeds_bar(name, seeds.len());
-    let setup = |seed: u64| Setup {
-        rig: rig.clone(),
-        noise,
-        seed,
-    };
-    let (value, report) = match args.experiment {
-        Experiment::HandoverRula => return run_handover_rula(c),
-        Experiment::FitDetector => return run_fit_detector(c),
-        Experiment::Table1 => seeds_table1(c, seeds, &setup, &handovers, &pb)?,
-        Experiment::Adaptation => seeds_adaptation(c, seeds, &setup, &handovers, &pb)?,
-        Experiment::Height => seeds_height(c, seeds, &setup, &handovers, &pb)?,
-        Experiment::RulaAgreement => seeds_rula_agreement(c, seeds, &setup, &handovers, &pb)?,
-        Experiment::Warnings => return super::sim_warnings::run(c),
-    };
-    let setup_json = serde_json::json!({
-        "seeds": seeds,
-        "cameras": c.cameras,
-        "camera_count": rig.len(),
-        "noise": noise,
-        "cycles": c.cycles,
-        "handovers_m": handovers,
-    });
-    let figures = show(c, &report)?;
-    write_result(c, &format!("{name}_seeds"), value, setup_json, &figures)
-}
-
-/// Table 1 on every seed: the per-landmark RMSE summary and its figure.
-fn seeds_table1(
-    c: &Common,
-    seeds: &[u64],
-    setup: &dyn Fn(u64) -> Setup,
-    handovers: &Handovers,
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let operators = operator_statures(c.operators.unwrap_or(5));
-    let runs = each(seeds, pb, |s| {
-        experiments::table1(&setup(s), handovers, &operators, c.cycles, &mut |_, _| {})
-    })?;
-    pb.finish_and_clear();
-    let sum = seeds::table1(seeds, &runs);
-    let report = report::table1_seeds(seeds, &runs, &sum)?;
-    Ok((serde_json::to_value(&sum)?, report))
-}
-
-/// The adaptation experiment on every seed: the summary and its figure.
-fn seeds_adaptation(
-    c: &Common,
-    seeds: &[u64],
-    setup: &dyn Fn(u64) -> Setup,
-    handovers: &Handovers,
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let heights = experiments::adaptation_heights();
-    let people = adaptation_people(c.bodies)?;
-    let runs = each(seeds, pb, |s| {
-        experiments::adaptation(
-            &setup(s),
-            handovers,
-            &heights,
-            adaptation_bodies(c.bodies, &people),
-            c.cycles,
-            &mut |_, _| {},
-        )
-    })?;
-    pb.finish_and_clear();
-    let sum = seeds::adaptation(seeds, &runs);
-    let report = report::adaptation_seeds(seeds, &sum)?;
-    Ok((serde_json::to_value(&sum)?, report))
-}
-
-/// The height experiment on every seed: the summary and its two figures.
-fn seeds_height(
-    c: &Common,
-    seeds: &[u64],
-    setup: &dyn Fn(u64) -> Setup,
-    handovers: &Handovers,
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let people = ergocell_anthropometry::ansur::people()?;
-    let options = height_options(c)?;
-    let runs = each(seeds, pb, |s| {
-        experiments::height(&setup(s), handovers, &people, &options, &mut |_, _| {})
-    })?;
-    pb.finish_and_clear();
-    let sum = seeds::height(seeds, &runs);
-    let report = report::height_seeds(seeds, &sum)?;
-    Ok((serde_json::to_value(&sum)?, report))
-}
-
-/// RULA agreement on every seed: the summary and its figure.
-fn seeds_rula_agreement(
-    c: &Common,
-    seeds: &[u64],
-    setup: &dyn Fn(u64) -> Setup,
-    handovers: &Handovers,
-    pb: &ProgressBar,
-) -> anyhow::Result<Outcome> {
-    let operators = operator_statures(c.operators.unwrap_or(6));
-    let lag = c.fixed_lag_s;
-    let runs = each(seeds, pb, |s| {
-        experiments::rula_agreement_with(
-            &setup(s),
-            handovers,
-            &operators,
-            c.cycles,
-            lag,
-            &mut |_, _| {},
-        )
-    })?;
-    pb.finish_and_clear();
-    let sum = seeds::rula_agreement(seeds, &runs);
-    let report = report::rula_agreement_seeds(seeds, &sum, &detector_label(c))?;
-    Ok((serde_json::to_value(&sum)?, report))
 }

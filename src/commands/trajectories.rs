@@ -29,23 +29,26 @@
 //! The keys in `config/approvers/allowed_signers` count only under the signature of the site's
 //! approvers authority, whose public key is installed read-only outside the project
 //! ([`ergocell::trust_anchor`]): editing the project folder can stop the cell, never approve.
+//! The files are read, locked and written by `ergocell_host::review_files`; what they mean and the
+//! texts are `ergocell_robot::review`'s and `ergocell_approvals::review`'s.
 //!
 //! Paths default to `trajectories/` and `config/cell.toml` under the current directory. The lock is a
 //! software guarantee on top of the robot's own safety controller, not a replacement for it.
 
-use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context as _};
 use ergocell::trust_anchor;
 use ergocell_approvals::review::{untrusted_approvers_text, ApproversSigned, ClassCheck, Verdict};
+use ergocell_host::review_files::{
+    self, now_rfc3339, read_text as read, write_new, ApprovalsLock, ReviewCell, ReviewFileError,
+};
 use ergocell_robot::authority;
-use ergocell_robot::lock::{self, ApprovalsFile, LockFile, VerifyInputs};
+use ergocell_robot::lock::{self, ApprovalsFile, LockFile};
 use ergocell_robot::review::{self, ClassValidation, Refused, SignOff};
-use ergocell_robot::signing::{self, TrustedSigners};
+use ergocell_robot::signing;
 use ergocell_robot::{
-    plan_and_validate, CellConfig, InputHashes, PlanInputs, RobotModel, TrajectoryClass,
-    TrajectoryLayout, TrajectorySpec, TrustFiles, Validation,
+    plan_and_validate, InputHashes, TrajectoryClass, TrajectoryLayout, TrajectorySpec, Validation,
 };
 
 use super::UsageError;
@@ -225,66 +228,33 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         Sub::ApproversMessage => {
             print!(
                 "{}",
-                authority::approvers_message(&ctx.trust_texts.0, &ctx.trust_texts.1)
+                authority::approvers_message(&ctx.allowed_signers, &ctx.revoked_keys)
             );
             Ok(())
         }
     }
 }
 
-/// The cell, the robot and the paths, read once.
+/// The cell read for review (`review_files::ReviewCell`: its robot, the approvers' files and
+/// whether they are trusted) and the trajectories folder, read once.
 struct Context {
+    review: ReviewCell,
     layout: TrajectoryLayout,
-    cell: CellConfig,
-    urdf_text: String,
-    model: RobotModel,
-    /// The folder of the cell file (the approvers' files are in its `approvers/`).
-    cell_dir: PathBuf,
-    /// The trusted approvers' files' texts (allowed signers, revoked keys).
-    trust_texts: (String, String),
-    /// The approvers trusted under the site's authority; none when they are not (`trust_problem`).
-    trusted: TrustedSigners,
-    /// Why the approvers' files are not trusted, when they are not.
-    trust_problem: Option<String>,
+}
+
+impl std::ops::Deref for Context {
+    type Target = ReviewCell;
+
+    fn deref(&self) -> &ReviewCell {
+        &self.review
+    }
 }
 
 impl Context {
     fn load(args: &Args) -> anyhow::Result<Self> {
-        let cell_text = read(&args.cell)?;
-        let cell = CellConfig::from_toml_str(&cell_text)
-            .map_err(|e| UsageError(format!("{}: {e}", args.cell.display())))?;
-        let dir = args.cell.parent().unwrap_or_else(|| Path::new("."));
-        let urdf_path = dir.join(&cell.robot.urdf);
-        let urdf_text = read(&urdf_path)?;
-        let model =
-            RobotModel::from_urdf_str(&urdf_text, &cell.robot.base_link, &cell.robot.flange_link)
-                .map_err(|e| UsageError(format!("{}: {e}", urdf_path.display())))?;
-        let allowed_path = dir.join(signing::ALLOWED_SIGNERS);
-        let revoked_path = dir.join(signing::REVOKED_KEYS);
-        let allowed = read(&allowed_path)?;
-        let revoked = read(&revoked_path)?;
-        TrustedSigners::parse(&allowed, &revoked).map_err(|e| {
-            UsageError(format!(
-                "{} / {}: {e}",
-                allowed_path.display(),
-                revoked_path.display()
-            ))
-        })?;
-        let anchored =
-            trust_anchor::trusted_signers(dir, &allowed, &revoked, &trust_anchor::anchor_dir());
-        let (trusted, trust_problem) = match anchored {
-            Ok(t) => (t, None),
-            Err(why) => (TrustedSigners::default(), Some(why.to_string())),
-        };
         Ok(Self {
+            review: ReviewCell::load(&args.cell).map_err(bad_input)?,
             layout: TrajectoryLayout::new(&args.trajectories_dir),
-            cell,
-            urdf_text,
-            model,
-            cell_dir: dir.to_owned(),
-            trust_texts: (allowed, revoked),
-            trusted,
-            trust_problem,
         })
     }
 
@@ -299,95 +269,25 @@ impl Context {
         &self,
         class: TrajectoryClass,
     ) -> anyhow::Result<(TrajectorySpec, InputHashes, String)> {
-        let path = self.layout.spec(class);
-        let text = read(&path)?;
-        let spec = TrajectorySpec::from_toml_str(&text)
-            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
-        if spec.class != class {
-            return Err(UsageError(format!(
-                "{}: file declares class {}, expected {class}",
-                path.display(),
-                spec.class
-            ))
-            .into());
-        }
-        let hashes = InputHashes::new(
-            text.as_bytes(),
-            self.urdf_text.as_bytes(),
-            &self.cell,
-            TrustFiles {
-                allowed_signers: self.trust_texts.0.as_bytes(),
-                revoked_keys: self.trust_texts.1.as_bytes(),
-            },
-            env!("CARGO_PKG_VERSION"),
-        );
-        Ok((spec, hashes, text))
-    }
-
-    /// What planning `spec` needs: the robot, the cell and the inputs' hashes.
-    fn plan_inputs<'a>(
-        &'a self,
-        spec: &'a TrajectorySpec,
-        hashes: &'a InputHashes,
-    ) -> PlanInputs<'a> {
-        PlanInputs {
-            model: &self.model,
-            cell: &self.cell,
-            spec,
-            hashes,
-        }
-    }
-
-    /// What verifying the class's lock (and its approvals, if read) needs.
-    fn verify_inputs<'a>(
-        &'a self,
-        class: TrajectoryClass,
-        lock_toml: &'a str,
-        current_inputs: &'a InputHashes,
-        approvals_toml: Option<&'a str>,
-    ) -> VerifyInputs<'a> {
-        VerifyInputs {
-            class,
-            lock_toml,
-            current_inputs,
-            model: &self.model,
-            approvals_toml,
-            trusted: &self.trusted,
-        }
-    }
-
-    /// Refuses to `verb` (approve, withdraw) while the approvers' files are not trusted.
-    fn refuse_untrusted(&self, verb: &'static str) -> Result<(), Refused> {
-        match &self.trust_problem {
-            Some(why) => Err(Refused::ApproversNotTrusted {
-                why: why.clone(),
-                verb,
-            }),
-            None => Ok(()),
-        }
+        let version = env!("CARGO_PKG_VERSION");
+        self.review
+            .read_spec(&self.layout, class, version)
+            .map_err(bad_input)
     }
 }
 
-/// Reads a file of the cell or the trajectories folder. `trajectories` works on the files on disk
-/// only (it writes locks and approvals beside them), so a missing default says where it looked.
-fn read(path: &Path) -> anyhow::Result<String> {
-    ergocell::input::read_text(path, ergocell::input::Kind::Config).with_context(|| {
-        if path.is_relative() {
-            format!(
-                "cannot read {} (relative to {}: run from the cell's folder, or pass --cell and --trajectories-dir)",
-                path.display(),
-                ergocell::shipped::working_dir()
-            )
-        } else {
-            format!("cannot read {}", path.display())
-        }
-    })
+/// A review file's error as the exit code reads it: a malformed file is a usage error; an unreadable
+/// one keeps its `InputError` (bad input too).
+fn bad_input(e: ReviewFileError) -> anyhow::Error {
+    match e {
+        ReviewFileError::Malformed { .. } => UsageError(e.to_string()).into(),
+        other => other.into(),
+    }
 }
 
 /// An OpenSSH private key file (a usage error when it is not one).
 fn private_key(path: &Path) -> anyhow::Result<signing::PrivateKey> {
-    signing::private_key_from_openssh(&read(path)?)
-        .map_err(|e| anyhow::Error::from(UsageError(format!("{}: {e}", path.display()))))
+    review_files::read_private_key(path).map_err(bad_input)
 }
 
 fn validate(ctx: &Context, class: Option<TrajectoryClass>, json: bool) -> anyhow::Result<()> {
@@ -443,7 +343,7 @@ fn lock_classes(ctx: &Context, class: Option<TrajectoryClass>) -> anyhow::Result
     }
     for (class, lock) in locks {
         let path = ctx.layout.lock(class);
-        write(&path, &lock.to_toml()?)?;
+        review_files::replace(&path, &lock.to_toml()?)?;
         println!("{}", review::locked_text(&lock, &path));
     }
     if let Some(why) = &ctx.trust_problem {
@@ -484,7 +384,7 @@ impl<'a> ApproveHow<'a> {
                 signature: signing
                     .signature
                     .clone()
-                    .unwrap_or_else(|| with_suffix(message, ".sig")),
+                    .unwrap_or_else(|| review_files::signature_beside(message)),
             }),
             _ => Err(UsageError(
                 "needs one of --key <private key>, --message-out <file> or --signed <file>"
@@ -494,98 +394,32 @@ impl<'a> ApproveHow<'a> {
     }
 }
 
-/// The approvals folder's lock: held by `approve` and `withdraw` from reading the approvals file to
-/// recording in the witness, so two engineers approving at once both land, one after the other
-/// (each reads what the other wrote). A second command waits, and says it waits.
-struct ApprovalsLock {
-    _file: fs::File,
-}
-
-/// The lock file's name in the approvals folder.
-const APPROVALS_LOCK: &str = ".approvals.lock";
-
-impl ApprovalsLock {
-    /// The lock for a command that writes the approvals file; none for `--message-out`, which
-    /// only writes the message to sign.
-    fn for_writing(
-        ctx: &Context,
-        class: TrajectoryClass,
-        how: &ApproveHow<'_>,
-    ) -> anyhow::Result<Option<Self>> {
-        match how {
-            ApproveHow::MessageOut(_) => Ok(None),
-            _ => Self::take(ctx, class).map(Some),
-        }
+/// The approvals folder's lock (`review_files::ApprovalsLock`) for a command that writes the
+/// approvals file, so two engineers approving at once both land: a second command waits, and says
+/// it waits; the leftovers of writes that were stopped are removed under it, each said. None for
+/// `--message-out`, which only writes the message to sign.
+fn approvals_lock(ctx: &Context, how: &ApproveHow<'_>) -> anyhow::Result<Option<ApprovalsLock>> {
+    if matches!(how, ApproveHow::MessageOut(_)) {
+        return Ok(None);
     }
-
-    fn take(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<Self> {
-        let path = ctx.layout.approvals(class);
-        let dir = path.parent().unwrap_or_else(|| Path::new("."));
-        fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-        let lock_path = dir.join(APPROVALS_LOCK);
-        let file = fs::OpenOptions::new()
-            .create(true)
-            .truncate(false)
-            .write(true)
-            .open(&lock_path)
-            .with_context(|| format!("cannot open the lock {}", lock_path.display()))?;
-        match file.try_lock() {
-            Ok(()) => {}
-            Err(fs::TryLockError::WouldBlock) => {
-                eprintln!(
-                    "waiting: another approve or withdraw holds {} (it is writing the approvals)",
-                    lock_path.display()
-                );
-                file.lock()
-                    .with_context(|| format!("cannot lock {}", lock_path.display()))?;
-            }
-            Err(fs::TryLockError::Error(e)) => {
-                return Err(e).with_context(|| format!("cannot lock {}", lock_path.display()))
-            }
-        }
-        // Holding the lock, no other command is writing: a temporary file left beside the approvals
-        // is one a killed command left behind.
-        remove_stale_partials(dir);
-        Ok(Self { _file: file })
+    let (lock, leftovers) = ApprovalsLock::take(ctx.layout.approvals_dir(), |lock_path| {
+        eprintln!(
+            "waiting: another approve or withdraw holds {} (it is writing the approvals)",
+            lock_path.display()
+        );
+    })?;
+    for leftover in leftovers {
+        eprintln!("{leftover}");
     }
-}
-
-/// Removes the temporary files of approvals writes that never finished (`.<name>.partial-<pid>`,
-/// left by a command killed mid-write), saying each.
-fn remove_stale_partials(dir: &Path) {
-    let Ok(entries) = fs::read_dir(dir) else {
-        return;
-    };
-    for entry in entries.flatten() {
-        let name = entry.file_name();
-        let name = name.to_string_lossy();
-        if name.starts_with('.') && name.contains(".partial-") {
-            match fs::remove_file(entry.path()) {
-                Ok(()) => eprintln!(
-                    "note: removed {}, left by an approve or withdraw that was stopped mid-write",
-                    entry.path().display()
-                ),
-                Err(e) => eprintln!(
-                    "note: {} is left by a write that was stopped; cannot remove it: {e}",
-                    entry.path().display()
-                ),
-            }
-        }
-    }
+    Ok(Some(lock))
 }
 
 /// The class's approvals file (empty if there is none yet), its chain checked and checked against
 /// the cell's witness ([`ergocell::witness`]): a file cut back is refused before anything is added.
 fn load_approvals(ctx: &Context, class: TrajectoryClass) -> anyhow::Result<ApprovalsFile> {
     let path = ctx.layout.approvals(class);
-    let file = if path.exists() {
-        ApprovalsFile::from_toml_str(&read(&path)?)
-            .and_then(|f| f.check_chain().map(|()| f))
-            .map_err(|e| UsageError(format!("{}: {e}", path.display())))?
-    } else {
-        // A missing file is an empty chain: one the witness saw entries of was deleted.
-        ApprovalsFile::default()
-    };
+    // A missing file is an empty chain: one the witness saw entries of was deleted.
+    let file = review_files::read_approvals(&path).map_err(bad_input)?;
     witness(ctx, &path, class, &file)?;
     Ok(file)
 }
@@ -610,12 +444,6 @@ fn witness(
         .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
-fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
-    let mut s = path.as_os_str().to_owned();
-    s.push(suffix);
-    PathBuf::from(s)
-}
-
 /// Approves the class's lock, after checking its integrity and that it holds what validation
 /// produces now.
 fn approve(
@@ -624,7 +452,7 @@ fn approve(
     by: Option<&str>,
     how: ApproveHow<'_>,
 ) -> anyhow::Result<()> {
-    ctx.refuse_untrusted("approve")?;
+    Refused::unless_trusted(ctx.trust_problem.as_deref(), "approve")?;
     let (spec, current) = ctx.spec(class)?;
     let lock_text = read(&ctx.layout.lock(class))
         .with_context(|| format!("run `ergocell trajectories lock --class {class}` first"))?;
@@ -642,7 +470,7 @@ fn withdraw(
     by: Option<&str>,
     how: ApproveHow<'_>,
 ) -> anyhow::Result<()> {
-    ctx.refuse_untrusted("withdraw")?;
+    Refused::unless_trusted(ctx.trust_problem.as_deref(), "withdraw")?;
     let approvals_path = ctx.layout.approvals(class);
     if !approvals_path.exists() {
         return Err(UsageError(format!(
@@ -664,7 +492,7 @@ fn sign_off(
 ) -> anyhow::Result<()> {
     let class = what.class();
     let approvals_path = ctx.layout.approvals(class);
-    let _lock = ApprovalsLock::for_writing(ctx, class, &how)?;
+    let _lock = approvals_lock(ctx, &how)?;
     let mut file = load_approvals(ctx, class)?;
     let by = by.unwrap_or_default();
     let entry = match how {
@@ -686,7 +514,7 @@ fn sign_off(
         }
     };
     review::check_entry_time(&entry, trust_anchor::now_unix())?;
-    write(&approvals_path, &file.to_toml()?)?;
+    review_files::replace(&approvals_path, &file.to_toml()?)?;
     witness(ctx, &approvals_path, class, &file)?;
     println!("{}", review::recorded_text(class, &entry, &approvals_path));
     Ok(())
@@ -701,17 +529,7 @@ fn approval_message(
     let path = ctx.layout.approvals(class);
     let file = ApprovalsFile::from_toml_str(&read(&path)?)
         .map_err(|e| UsageError(format!("{}: {e}", path.display())))?;
-    let Some(a) = file.approval.get(entry) else {
-        return Err(UsageError(format!(
-            "{} has {} entries; there is no entry {entry}",
-            path.display(),
-            file.approval.len()
-        ))
-        .into());
-    };
-    // Only well-formed fields are shown (they come from a file anyone may have edited).
-    signing::check_claim(&a.claim())
-        .map_err(|e| UsageError(format!("{} entry {entry}: {e}", path.display())))?;
+    let a = review::entry_to_show(&file, entry, &path).map_err(|e| UsageError(e.to_string()))?;
     if let Some(out) = signature_out {
         write_new(out, &a.signature)?;
     }
@@ -780,7 +598,7 @@ fn verdict(
 /// authority is installed here the signature is checked against it before it is written; a
 /// signature it would refuse is never written.
 fn sign_approvers(ctx: &Context, key: Option<&Path>, signed: Option<&Path>) -> anyhow::Result<()> {
-    let (allowed, revoked) = &ctx.trust_texts;
+    let (allowed, revoked) = (&ctx.allowed_signers, &ctx.revoked_keys);
     let signature = match (key, signed) {
         (Some(key_path), None) => {
             authority::sign_approvers(allowed, revoked, &private_key(key_path)?)?
@@ -796,37 +614,7 @@ fn sign_approvers(ctx: &Context, key: Option<&Path>, signed: Option<&Path>) -> a
     let installed = trust_anchor::load_authority(&anchor);
     let checked = ApproversSigned::check(installed, &anchor, allowed, revoked, &signature)?;
     let path = ctx.cell_dir.join(authority::APPROVERS_SIGNATURE);
-    write(&path, &signature)?;
+    review_files::replace(&path, &signature)?;
     println!("{}", checked.text(&path));
     Ok(())
-}
-
-/// Writes a lock or an approvals file atomically (`output::replace`): a full disk or a kill leaves
-/// the previous file whole, never cut mid-signature.
-fn write(path: &Path, text: &str) -> anyhow::Result<()> {
-    if let Some(dir) = path.parent() {
-        fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    }
-    Ok(super::output::replace(path, text.as_bytes())?)
-}
-
-/// Writes `text` to a file that must not exist yet (never overwrites: the user's data is kept).
-fn write_new(path: &Path, text: &str) -> anyhow::Result<()> {
-    use std::io::Write as _;
-    let mut f = fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)
-        .with_context(|| format!("cannot create {} (it must not exist yet)", path.display()))?;
-    f.write_all(text.as_bytes())
-        .with_context(|| format!("cannot write {}", path.display()))
-}
-
-/// Current UTC time as RFC 3339 (the binary is the only place that reads the clock).
-#[allow(clippy::disallowed_methods)]
-fn now_rfc3339() -> anyhow::Result<String> {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    Ok(signing::rfc3339_utc(i64::try_from(secs)?)?)
 }
