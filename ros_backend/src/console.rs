@@ -32,6 +32,11 @@ fn sorted(values: &[f64]) -> Vec<f64> {
     v
 }
 
+/// Seconds from `start_nanos` to `t_nanos`, as the console says times into a session.
+pub fn elapsed_s(t_nanos: i64, start_nanos: i64) -> f64 {
+    t_nanos.saturating_sub(start_nanos) as f64 * 1e-9
+}
+
 /// The line said when the wall clock steps by `step_nanos` under a session.
 pub fn wall_step_line(step_nanos: i64) -> String {
     format!(

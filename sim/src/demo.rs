@@ -43,6 +43,16 @@ pub fn demo_script(
     script
 }
 
+/// Simulated time after the script's end for the robot's way home and the exit detection; a session
+/// still running then is stopped (robot held), and the demo says so.
+pub const MARGIN_SECS: f64 = 30.0;
+
+/// The demo session's time limit: the script, the tasks drawn between its handovers, then
+/// [`MARGIN_SECS`] for the robot's way home.
+pub fn time_limit_secs(script: &SessionScript, tasks: &[crate::tasks::TaskOccurrence]) -> f64 {
+    script.duration_secs() + crate::tasks::total_secs(tasks) + MARGIN_SECS
+}
+
 /// The frame period of `fps` frames a second, nanoseconds.
 pub fn frame_period_nanos(fps: f64) -> i64 {
     (1e9 / fps).round() as i64

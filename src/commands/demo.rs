@@ -64,10 +64,6 @@ use super::{output, UsageError};
 /// The default recording (with a number added when it exists: `ergocell-demo-2.mcap`, …).
 pub const DEFAULT_OUT: &str = "ergocell-demo.mcap";
 
-/// Simulated time after the script's end for the robot's way home and the exit detection; a session
-/// still running then is stopped (robot held), and the demo says so.
-pub const MARGIN_SECS: f64 = 30.0;
-
 /// Most handover cycles (about 48 hours of simulated session: several shifts, for `--soak-report`).
 pub const MAX_CYCLES: usize = 10_000;
 
@@ -190,10 +186,6 @@ fn instant() -> std::time::Instant {
     std::time::Instant::now()
 }
 
-fn secs(t: i64, start: i64) -> f64 {
-    (t - start) as f64 * 1e-9
-}
-
 /// The recording's path: `--out` (refused if it exists, unless `--force`) or the default, numbered
 /// when it exists (unless `--force`); and whether the default was moved on to a numbered name.
 fn output_path(args: &Args) -> anyhow::Result<(PathBuf, bool)> {
@@ -261,7 +253,7 @@ impl CellOutputs for DemoOutputs {
         machine: &SessionMachine,
         events: &[SessionEvent],
     ) -> Result<(), OutputError> {
-        for line in console::demo_event_lines(events, secs(now, self.start)) {
+        for line in console::demo_event_lines(events, console::elapsed_s(now, self.start)) {
             println!("{line}");
         }
         if let Some(d) = &self.display {
@@ -520,7 +512,7 @@ fn prepare(args: &Args, approvals_dir: &Path, start: i64) -> anyhow::Result<Prep
         None => Vec::new(),
     };
     let task_secs = ergocell_sim::tasks::total_secs(&tasks);
-    let limit_secs = script.duration_secs() + task_secs + MARGIN_SECS;
+    let limit_secs = demo::time_limit_secs(&script, &tasks);
     let floor_pick = script.floor_pick;
     let task_names = tasks.iter().map(|t| t.kind.name()).collect();
     let sim = Simulation::with_tasks(
@@ -679,7 +671,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     drop(demo_dir);
     print!(
         "{}",
-        console::demo_summary(&machine, args.stature_m, true_class, secs(now, start))
+        console::demo_summary(
+            &machine,
+            args.stature_m,
+            true_class,
+            console::elapsed_s(now, start)
+        )
     );
     println!(
         "  recording:      {} ({} messages, {}-compressed chunks; open in Foxglove or `ros2 bag info`)",
@@ -721,7 +718,7 @@ fn play(
         rula: "RULA -".to_owned(),
     };
     let mut cell = CellLoop::new(p.machine, p.robot, outputs)
-        .with_deadline(start + (p.limit_secs * 1e9).round() as i64, p.limit_secs)
+        .with_time_limit(start, p.limit_secs)
         .with_driver_state();
     if args.outcome.is_some() {
         cell = cell.with_command_log();
@@ -779,9 +776,10 @@ fn exit_of(status: ExitStatus, machine: &SessionMachine, out: &Path) -> anyhow::
             {
                 anyhow::bail!(
                     "the session did not end normally: the demo's time limit was reached: \
-                     {limit_s:.1} s of simulated time (the script's {:.1} s + {MARGIN_SECS:.0} s for \
+                     {limit_s:.1} s of simulated time (the script's {:.1} s + {:.0} s for \
                      the robot's way home)",
-                    limit_s - MARGIN_SECS
+                    limit_s - demo::MARGIN_SECS,
+                    demo::MARGIN_SECS
                 );
             }
             anyhow::bail!("the session did not end normally: {}", s.end_reason)

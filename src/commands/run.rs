@@ -436,8 +436,7 @@ async fn serve(
         cell = cell.with_command_log();
     }
     if let Some(limit) = args.max_secs {
-        let at = clock.now() + (limit * 1e9).round() as i64;
-        cell = cell.with_deadline(at, limit);
+        cell = cell.with_time_limit(clock.now(), limit);
     }
     println!("{}", console::start_text(ros, topics.cameras.len(), &scope));
     say(ergocell_bridge::scope::multicast_note(&scope));

@@ -224,6 +224,13 @@ impl<R: RobotSink, O: CellOutputs> CellLoop<R, O> {
         self
     }
 
+    /// [`Self::with_deadline`] `limit_s` seconds after `start_nanos`.
+    #[must_use]
+    pub fn with_time_limit(self, start_nanos: i64, limit_s: f64) -> Self {
+        let at = start_nanos.saturating_add((limit_s * 1e9).round() as i64);
+        self.with_deadline(at, limit_s)
+    }
+
     /// The robot may move only while the KUKA driver is configured and controlling (its
     /// `is_configured` and hardware events, [`RobotReport::DriverConfigured`] and
     /// [`RobotReport::DriverEvent`]): until it says so, the session holds.
