@@ -9,7 +9,7 @@
 //! * [`provider`]: [`FileTrajectories`], which re-reads and re-verifies a class's lock, its
 //!   approvals and their times on every call, on an injected clock.
 //! * [`review`]: `trajectories verify`'s verdict on a class (the same rules, with the lock re-planned
-//!   and every problem listed) and `sign-approvers`' check of the authority's signature, with
+//!   and the problems listed) and `sign-approvers`' check of the authority's signature, with
 //!   their texts.
 //!
 //! The lock file, the SSH signatures and the approvals chain themselves are

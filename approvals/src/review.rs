@@ -1,6 +1,7 @@
 //! What `ergocell trajectories verify` and `sign-approvers` decide and say: the verdict on one
 //! class's lock and approvals (integrity, the lock against what validation produces now, the
-//! approvals, their times and the witness's finding, all in one list), and how the site authority's
+//! approvals, their times and the witness's finding, listed together; a lock that no longer
+//! validates is said alone, its approvals not looked at), and how the site authority's
 //! signature over the approvers' files was checked before it is written.
 //!
 //! Here rather than in the binary because the same rules decide what the cell runs

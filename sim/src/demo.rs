@@ -4,7 +4,7 @@
 
 use nalgebra::{Isometry3, Point3};
 
-use crate::{CameraBump, FloorPick, SessionScript, SimError};
+use crate::{CameraBump, FloorPick, SessionScript};
 
 /// How long the simulated operator works on a part between handovers: the robot's way home and back
 /// (twice the locked leg of `leg_s`), its wait for the next part (`next_part_after_nanos`), and 3 s
@@ -53,9 +53,10 @@ pub fn time_limit_secs(script: &SessionScript, tasks: &[crate::tasks::TaskOccurr
     script.duration_secs() + crate::tasks::total_secs(tasks) + MARGIN_SECS
 }
 
-/// The frame period of `fps` frames a second, nanoseconds.
+/// The frame period of `fps` frames a second, nanoseconds; at least 1 (a rate that is not a
+/// positive finite number gives the 1 ns floor, never a clock that does not advance).
 pub fn frame_period_nanos(fps: f64) -> i64 {
-    (1e9 / fps).round() as i64
+    ((1e9 / fps).round() as i64).max(1)
 }
 
 /// The largest bump the demo plays, degrees.
@@ -63,32 +64,34 @@ pub const MAX_BUMP_DEG: f64 = 45.0;
 /// The latest bump, seconds into the session (a day).
 pub const MAX_BUMP_AT_S: f64 = 86_400.0;
 
+/// A camera bump the demo does not play.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum BadBump {
+    /// The angle is not finite, or beyond ±[`MAX_BUMP_DEG`].
+    #[error("expected a finite angle within ±45°")]
+    Angle { deg: f64 },
+    /// The time is outside 0..=[`MAX_BUMP_AT_S`].
+    #[error("expected 0..=86400 s")]
+    Time { at_s: f64 },
+}
+
 /// `camera` turned by `deg` degrees about its y axis, `at_s` seconds after `start_nanos`: a camera
-/// knocked out of calibration. Refused: an angle that is not finite or beyond ±[`MAX_BUMP_DEG`]
-/// (`name` "bump_deg"), a time outside 0..=[`MAX_BUMP_AT_S`] ("bump_at_s").
+/// knocked out of calibration.
 pub fn camera_bump(
     camera: usize,
     start_nanos: i64,
     at_s: f64,
     deg: f64,
-) -> Result<CameraBump, SimError> {
+) -> Result<CameraBump, BadBump> {
     if !(deg.is_finite() && deg.abs() <= MAX_BUMP_DEG) {
-        return Err(SimError::BadParameter {
-            name: "bump_deg",
-            value: deg,
-            why: "expected a finite angle within ±45°",
-        });
+        return Err(BadBump::Angle { deg });
     }
     if !(at_s.is_finite() && (0.0..=MAX_BUMP_AT_S).contains(&at_s)) {
-        return Err(SimError::BadParameter {
-            name: "bump_at_s",
-            value: at_s,
-            why: "expected 0..=86400 s",
-        });
+        return Err(BadBump::Time { at_s });
     }
     Ok(CameraBump {
         camera,
-        from_nanos: start_nanos + (at_s * 1e9) as i64,
+        from_nanos: start_nanos.saturating_add((at_s * 1e9) as i64),
         rotation_rad: [0.0, deg.to_radians(), 0.0],
     })
 }
@@ -129,10 +132,27 @@ mod tests {
         assert_eq!(b.camera, 2);
         assert_eq!(b.from_nanos, 1_000 + 1_500_000_000);
         assert!((b.rotation_rad[1] - 10f64.to_radians()).abs() < 1e-15);
-        assert!(camera_bump(0, 0, 1.0, 45.5).is_err());
-        assert!(camera_bump(0, 0, 1.0, f64::NAN).is_err());
-        assert!(camera_bump(0, 0, -1.0, 1.0).is_err());
-        assert!(camera_bump(0, 0, 86_401.0, 1.0).is_err());
+        assert_eq!(
+            camera_bump(0, 0, 1.0, 45.5).unwrap_err(),
+            BadBump::Angle { deg: 45.5 }
+        );
+        assert!(matches!(
+            camera_bump(0, 0, 1.0, f64::NAN),
+            Err(BadBump::Angle { .. })
+        ));
+        assert_eq!(
+            camera_bump(0, 0, -1.0, 1.0).unwrap_err(),
+            BadBump::Time { at_s: -1.0 }
+        );
+        assert_eq!(
+            camera_bump(0, 0, 86_401.0, 1.0).unwrap_err(),
+            BadBump::Time { at_s: 86_401.0 }
+        );
+        // a start near the end of time saturates, never wraps
+        assert_eq!(
+            camera_bump(0, i64::MAX - 1, 1.0, 1.0).unwrap().from_nanos,
+            i64::MAX
+        );
         assert_eq!(frame_period_nanos(30.0), 33_333_333);
     }
 }

@@ -154,7 +154,8 @@ pub struct Design<'a> {
     pub cell: &'a CellConfig,
     /// Spacing of the candidate points in the class's grasp band, metres.
     pub step_m: f64,
-    /// At most this many fitting people per class, evenly spread over the subject ids.
+    /// At most this many fitting people per class, evenly spread over the subject ids (0 takes
+    /// one).
     pub sample: usize,
     /// The unadapted cell's one handover point (station frame), which c1's and c3's points must
     /// improve on.
@@ -360,8 +361,8 @@ impl Design<'_> {
     }
 }
 
-/// The stride that takes at most `sample` of `n` items evenly (every item when `sample` is 0 or
-/// at least `n`).
+/// The stride that takes at most `sample` of `n` items evenly (every item when `sample` is at
+/// least `n`; one item when it is 0).
 fn spread(n: usize, sample: usize) -> usize {
     n.div_ceil(sample.max(1)).max(1)
 }

@@ -46,7 +46,7 @@ use ergocell_robot::{LockFile, TrajectoryClass};
 use ergocell_ros_backend::console;
 use ergocell_ros_backend::twin_recording;
 use ergocell_sim::controller::{SimController, TwinRobot};
-use ergocell_sim::demo;
+use ergocell_sim::demo::{self, BadBump};
 use ergocell_sim::faults::{FaultPlayer, FaultSchedule};
 use ergocell_sim::source::SimSource;
 use ergocell_sim::station::{
@@ -54,7 +54,7 @@ use ergocell_sim::station::{
     JOINT_STATE_TIMEOUT_S,
 };
 use ergocell_sim::{FloorPick, Operator, SimConfig, Simulation};
-use ergocell_web::display::DisplayThread;
+use ergocell_web::display::{DisplayStartError, DisplayThread};
 use nalgebra::Point3;
 use std::time::Duration;
 
@@ -455,7 +455,10 @@ fn sim_config(args: &Args, rig: &CameraRig, start: i64) -> anyhow::Result<SimCon
             UsageError(format!("--bump-camera {name}: no such camera in the rig"))
         })?;
         let bump = demo::camera_bump(camera, start, args.bump_at_s, args.bump_deg);
-        sim_config.bump = Some(bump.map_err(|e| UsageError(format!("--bump-camera {name}: {e}")))?);
+        sim_config.bump = Some(bump.map_err(|e| match e {
+            BadBump::Angle { deg } => UsageError(format!("--bump-deg {deg}: {e}")),
+            BadBump::Time { at_s } => UsageError(format!("--bump-at-s {at_s}: {e}")),
+        })?);
     }
     Ok(sim_config)
 }
@@ -634,8 +637,11 @@ fn start_display(addr: Option<std::net::SocketAddr>) -> anyhow::Result<Option<Di
     let Some(addr) = addr else {
         return Ok(None);
     };
-    let d = DisplayThread::start(addr)
-        .map_err(|e| UsageError(format!("--display: cannot listen on {addr}: {e}")))?;
+    let d = DisplayThread::start(addr).map_err(|e| match e {
+        // the address is the user's to change
+        DisplayStartError::Bind { .. } => UsageError(format!("--display: {e}")).into(),
+        e => anyhow::Error::new(e),
+    })?;
     println!(
         "  operator display: http://{}/ (the session runs in real time)",
         d.bound()

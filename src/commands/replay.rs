@@ -8,7 +8,7 @@ use ergocell_bridge::transport::RosConfig;
 use ergocell_ros_backend::recording;
 use ergocell_ros_backend::replay::publish_paced;
 
-use super::ros_node::{network_scope, runtime, say, StartedNode};
+use super::ros_node::{runtime, say, StartedNode};
 use super::UsageError;
 use ergocell_bridge::scope::multicast_note;
 
@@ -90,7 +90,7 @@ pub fn replay(args: &ReplayArgs) -> anyhow::Result<()> {
         args.keystore.as_deref(),
         "/ergocell/replay",
     )?;
-    say(multicast_note(&network_scope(&ros)?));
+    say(multicast_note(&node.scope));
     let result = node
         .runtime
         .block_on(publish_paced(&mut node.node, &ros, frames, args.speed));

@@ -19,18 +19,20 @@ pub fn runtime() -> anyhow::Result<tokio::runtime::Runtime> {
         .context("tokio runtime")
 }
 
-/// A started node: the runtime it spins on, the node and its DDS participant.
+/// A started node: the node, the runtime it spins on, its DDS participant and its network scope.
+/// Dropped without [`StartedNode::shut_down`] (an error before the sessions), its fields go in
+/// this order: the node, the runtime, the participant last.
 pub struct StartedNode {
-    pub runtime: tokio::runtime::Runtime,
     pub node: RosNode,
+    pub runtime: tokio::runtime::Runtime,
     participant: DomainParticipant,
+    pub scope: ergocell_bridge::scope::NetworkScope,
 }
 
 impl StartedNode {
     /// The node `name` of `ros`, in its network scope and SROS2 enclave (`keystore` from the command
     /// line, `[ros] keystore` relative to `config`'s folder, `default_enclave` unless overridden),
-    /// spinning on `runtime`; said on stdout (the security and, where discovery
-    /// cannot leave this machine, the multicast note).
+    /// spinning on `runtime`; whether DDS Security is on is said on stdout.
     pub fn start(
         runtime: tokio::runtime::Runtime,
         ros: &RosConfig,
@@ -51,9 +53,10 @@ impl StartedNode {
         let participant = node.participant();
         runtime.spawn(node.spinner()?);
         Ok(Self {
-            runtime,
             node,
+            runtime,
             participant,
+            scope,
         })
     }
 
@@ -65,6 +68,7 @@ impl StartedNode {
             runtime,
             node,
             participant,
+            ..
         } = self;
         drop(node);
         runtime.block_on(async { tokio::time::sleep(Duration::from_millis(100)).await });

@@ -29,7 +29,8 @@
 //! The keys in `config/approvers/allowed_signers` count only under the signature of the site's
 //! approvers authority, whose public key is installed read-only outside the project
 //! ([`ergocell::trust_anchor`]): editing the project folder can stop the cell, never approve.
-//! The files are read, locked and written by `ergocell_host::review_files`; what they mean and the
+//! The cell's files, class files, keys and the approvals folder's lock are read and written
+//! through `ergocell_host::review_files` (locks and approvals through `ergocell::input`); what they mean and the
 //! texts are `ergocell_robot::review`'s and `ergocell_approvals::review`'s.
 //!
 //! Paths default to `trajectories/` and `config/cell.toml` under the current directory. The lock is a

@@ -326,14 +326,34 @@ pub struct DisplayThread {
     thread: Option<std::thread::JoinHandle<()>>,
 }
 
+/// Why the display's thread did not start.
+#[derive(Debug, thiserror::Error)]
+pub enum DisplayStartError {
+    /// The address cannot be listened on (taken, not this machine's, not allowed).
+    #[error("cannot listen on {addr}: {error}")]
+    Bind {
+        addr: std::net::SocketAddr,
+        // Not `source`: the message says it, and `{:#}` would print it twice.
+        error: std::io::Error,
+    },
+    /// The display's runtime could not be built.
+    #[error("tokio runtime for the display")]
+    Runtime(#[source] std::io::Error),
+    /// The display's thread could not be spawned.
+    #[error("display thread")]
+    Thread(#[source] std::io::Error),
+}
+
 impl DisplayThread {
     /// Listens on `addr` and serves a new display there until dropped.
-    pub fn start(addr: std::net::SocketAddr) -> std::io::Result<Self> {
+    pub fn start(addr: std::net::SocketAddr) -> Result<Self, DisplayStartError> {
         let display = Display::new();
-        let (listener, bound) = bind(addr)?;
+        let (listener, bound) =
+            bind(addr).map_err(|error| DisplayStartError::Bind { addr, error })?;
         let runtime = tokio::runtime::Builder::new_current_thread()
             .enable_all()
-            .build()?;
+            .build()
+            .map_err(DisplayStartError::Runtime)?;
         let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
         let served = display.clone();
         let thread = std::thread::Builder::new()
@@ -345,7 +365,8 @@ impl DisplayThread {
                 if let Err(e) = result {
                     tracing::error!("operator display: {e}");
                 }
-            })?;
+            })
+            .map_err(DisplayStartError::Thread)?;
         Ok(Self {
             display,
             bound,

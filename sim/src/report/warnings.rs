@@ -150,7 +150,7 @@ pub fn confidence_fit_text(fit: &ConfidenceFit) -> String {
             region.name(),
             model.scale[i],
             model.floor_rad[i].to_degrees(),
-            fit.counts[i],
+            fit.counts.get(i).copied().unwrap_or(0),
             fit.read_error_rms_deg[i].map_or("—".to_owned(), |e| format!("{e:.2}°")),
             points.join(", ")
         );
