@@ -26,6 +26,17 @@ pub fn due(offset_secs: f64) -> Duration {
     Duration::try_from_secs_f64(offset_secs).unwrap_or(Duration::MAX)
 }
 
+/// Why a replay stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum ReplayError {
+    /// The speed factor is not a positive finite number.
+    #[error("speed {0:?}: must be a positive factor")]
+    BadSpeed(f64),
+    /// Publishing failed.
+    #[error(transparent)]
+    Bridge(#[from] BridgeError),
+}
+
 /// Publishes `frames` (log time, message; in log-time order) on the camera topics of `ros`, paced
 /// at `speed` and re-stamped with the capture time now, after [`DISCOVERY_WAIT`]. A message of a
 /// camera `[ros]` does not list is skipped. Returns how many were sent.
@@ -34,7 +45,10 @@ pub async fn publish_paced(
     ros: &RosConfig,
     frames: Vec<(u64, CameraLandmarks)>,
     speed: f64,
-) -> Result<usize, BridgeError> {
+) -> Result<usize, ReplayError> {
+    if !(speed.is_finite() && speed > 0.0) {
+        return Err(ReplayError::BadSpeed(speed));
+    }
     let mut publishers = BTreeMap::new();
     for id in &ros.cameras {
         let p =
