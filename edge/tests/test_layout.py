@@ -10,7 +10,7 @@ from ergocell_edge.landmarks import Landmarks, to_pixels
 from ergocell_edge.openpose import (KEYPOINTS_RE, is_ours, keypoints_document, keypoints_file_name,
                                     write_keypoints, write_sidecar)
 
-# What the Rust side (perception/src/import.rs) expects: <stem>_<12 digits>_keypoints.json
+# What the Rust side (formats/src/import.rs) expects: <stem>_<12 digits>_keypoints.json
 RUST_NAME = re.compile(r"^(?P<stem>.+)_(?P<frame>[0-9]{12})_keypoints\.json$")
 
 

@@ -1,8 +1,8 @@
 //! Figure: bone-length variation on caliscope's real 4-camera recording, per fusion method.
 //!
-//! `cargo run --release -p ergocell_perception --example caliscope_fusion -- [data dir] [out.svg]`
+//! `cargo run --release -p ergocell_formats --example caliscope_fusion -- [data dir] [out.svg]`
 //! (defaults: `../shared/data/caliscope-4cam`, `docs/fusion_bone_lengths.svg`). Prints the numbers
-//! it plots. The same comparison is asserted in `tests/caliscope.rs`.
+//! it plots. The same comparison is asserted in `formats/tests/caliscope.rs`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 

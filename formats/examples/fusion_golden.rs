@@ -1,8 +1,8 @@
 //! The fusion's answers, bit for bit, to compare two versions of the code.
 //!
-//! `cargo run --release -p ergocell_perception --example fusion_golden -- write OUT [data dir]`
+//! `cargo run --release -p ergocell_formats --example fusion_golden -- write OUT [data dir]`
 //! fuses (default and paper methods) synthetic sequences of the bench's 6-, 8- and 16-camera rigs
-//! (moving body, noise, missing keypoints, gross errors, absent cameras; `benches/rig.rs`) and
+//! (moving body, noise, missing keypoints, gross errors, absent cameras; `perception/benches/rig.rs`) and
 //! caliscope's real 4-camera recording, and writes every fused coordinate and count;
 //! `… -- compare A B` prints the largest change of any coordinate (metres), and any landmark present
 //! in one and absent in the other. Used to show that a speed-up changed no answer.

@@ -143,6 +143,12 @@ pub fn nonblocking_flag() -> i32 {
     i32::try_from(rustix::fs::OFlags::NONBLOCK.bits()).unwrap_or(0)
 }
 
+/// `O_NOFOLLOW`, for `OpenOptionsExt::custom_flags`: a symlink at the path is refused, not
+/// followed.
+pub fn nofollow_flag() -> i32 {
+    i32::try_from(rustix::fs::OFlags::NOFOLLOW.bits()).unwrap_or(0)
+}
+
 /// Clears `O_NONBLOCK` on a file opened with [`nonblocking_flag`], once its kind is checked.
 pub fn set_blocking(file: &fs::File) -> std::io::Result<()> {
     let flags = rustix::fs::fcntl_getfl(file)?;
@@ -183,8 +189,8 @@ pub fn read_text(path: &Path, kind: Kind) -> Result<String, InputError> {
     })
 }
 
-/// The images of `spec`: a folder (its .jpg/.jpeg/.png files), a pattern with `*`/`?` in the file
-/// name (`data/left*.jpg`, matched as a shell does), or one file; sorted by name. A spec that names
+/// The images of `spec`: a folder (its .jpg/.jpeg/.png files), a pattern with `*` (any run) and `?`
+/// (one character) in the file name (`data/left*.jpg`; brackets are literal), or one file; sorted by name. A spec that names
 /// nothing, no image, or has wildcards in its folder is an [`InputError::NoFiles`].
 pub fn list_images(spec: &str) -> Result<Vec<PathBuf>, InputError> {
     let path = Path::new(spec);
@@ -215,8 +221,18 @@ pub fn list_images(spec: &str) -> Result<Vec<PathBuf>, InputError> {
             return Err(none("wildcards are supported in the file name only"));
         }
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
-        let pattern = glob::Pattern::new(&name.unwrap_or_default())
-            .map_err(|_| none("not a valid wildcard pattern"))?;
+        // `*` and `?` only: brackets are literal, a run of stars is one star.
+        let mut literal = String::new();
+        for c in name.unwrap_or_default().chars() {
+            match c {
+                '[' => literal.push_str("[[]"),
+                ']' => literal.push_str("[]]"),
+                '*' if literal.ends_with('*') => {}
+                c => literal.push(c),
+            }
+        }
+        let pattern =
+            glob::Pattern::new(&literal).map_err(|_| none("not a valid wildcard pattern"))?;
         listing(dir)?
             .filter_map(|e| e.ok().map(|e| e.path()))
             .filter(|p| {
@@ -339,8 +355,17 @@ mod tests {
             ["left01.jpg"]
         );
         assert_eq!(
+            names(list_images(&spec("left**.jpg")).unwrap()),
+            ["left01.jpg"]
+        );
+        assert_eq!(
             names(list_images(&dir.display().to_string()).unwrap()),
             ["left01.jpg", "left02.png", "right01.jpg"]
+        );
+        fs::write(dir.join("img[1].png"), b"x").unwrap();
+        assert_eq!(
+            names(list_images(&spec("img[1]*")).unwrap()),
+            ["img[1].png"]
         );
         for (bad, why) in [
             ("left?.jpg", "no images found"),

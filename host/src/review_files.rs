@@ -267,15 +267,28 @@ impl ApprovalsLock {
         let fail = |what: String| move |source| LockError { what, source };
         fs::create_dir_all(dir).map_err(fail(format!("cannot create {}", dir.display())))?;
         let lock_path = dir.join(APPROVALS_LOCK);
-        let file = fs::OpenOptions::new()
-            .create(true)
-            .truncate(false)
-            .write(true)
-            .open(&lock_path)
-            .map_err(fail(format!(
+        // Non-blocking and not through a symlink: a pipe or a device put there is refused below,
+        // never waited on or written to.
+        let file = {
+            use std::os::unix::fs::OpenOptionsExt as _;
+            fs::OpenOptions::new()
+                .create(true)
+                .truncate(false)
+                .write(true)
+                .custom_flags(input::nonblocking_flag() | input::nofollow_flag())
+                .open(&lock_path)
+                .map_err(fail(format!(
+                    "cannot open the lock {}",
+                    lock_path.display()
+                )))?
+        };
+        let regular = file.metadata().is_ok_and(|m| m.is_file());
+        if !regular {
+            return Err(fail(format!(
                 "cannot open the lock {}",
                 lock_path.display()
-            )))?;
+            ))(std::io::Error::other("not a regular file")));
+        }
         let cannot_lock = || fail(format!("cannot lock {}", lock_path.display()));
         match file.try_lock() {
             Ok(()) => {}

@@ -14,7 +14,8 @@
 //!   detector per camera, two people in the cell).
 //! - [`temporal`]: time alignment of camera streams and a causal One-Euro filter;
 //!   [`fixed_lag`]: a centred moving mean (no lag, at the price of latency).
-//! - [`metrics`]: bone-length consistency;
+//! - [`metrics`]: bone-length consistency, the run's tallies; [`report_text`]: `triangulate`'s
+//!   summary and the detector-error tables as text;
 //!   [`detector_error`]: the real detector's error, each view judged by the others.
 //!
 //! No I/O and no file formats: the outside world's files (rig and calibration files, OpenPose,
