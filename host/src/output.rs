@@ -342,10 +342,9 @@ fn sync_parent(path: &Path) -> Result<()> {
         .map_err(|e| OutputError::io(format!("cannot sync the folder {}", dir.display()), e))
 }
 
-/// Creates the first free name of `default_name` in its folder — itself, then `<stem>-2.<ext>`, … —
-/// with `create_new`, so that two commands started together never take the same name (one that
-/// appears between the look and the creation is passed over): the file and its path.
-pub fn create_next_free(default_name: &Path) -> Result<(File, std::path::PathBuf)> {
+/// `default_name`'s stem and its extension with the dot (`ergocell-demo`, `.mcap`), for the
+/// numbered names `<stem>-2<ext>`, ….
+fn stem_and_ext(default_name: &Path) -> (String, String) {
     let stem = default_name
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
@@ -353,6 +352,14 @@ pub fn create_next_free(default_name: &Path) -> Result<(File, std::path::PathBuf
         .extension()
         .map(|e| format!(".{}", e.to_string_lossy()))
         .unwrap_or_default();
+    (stem, ext)
+}
+
+/// Creates the first free name of `default_name` in its folder — itself, then `<stem>-2.<ext>`, … —
+/// with `create_new`, so that two commands started together never take the same name (one that
+/// appears between the look and the creation is passed over): the file and its path.
+pub fn create_next_free(default_name: &Path) -> Result<(File, std::path::PathBuf)> {
+    let (stem, ext) = stem_and_ext(default_name);
     for n in 1..10_000 {
         let candidate = if n == 1 {
             default_name.to_owned()
@@ -386,13 +393,7 @@ pub fn next_free(default_name: &Path) -> Result<std::path::PathBuf> {
     if std::fs::symlink_metadata(default_name).is_err() {
         return Ok(default_name.to_owned());
     }
-    let stem = default_name
-        .file_stem()
-        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-    let ext = default_name
-        .extension()
-        .map(|e| format!(".{}", e.to_string_lossy()))
-        .unwrap_or_default();
+    let (stem, ext) = stem_and_ext(default_name);
     for n in 2..10_000 {
         let candidate = default_name.with_file_name(format!("{stem}-{n}{ext}"));
         if std::fs::symlink_metadata(&candidate).is_err() {

@@ -88,6 +88,16 @@ pub fn common_bone_variation_percent(recordings: &[&[Skeleton3]]) -> Option<(Vec
     Some((common, means))
 }
 
+/// The value at quantile `q` (0..=1) of `sorted` (ascending): the element at the rounded rank
+/// `(n − 1)·q`; NaN when empty.
+pub fn rank_quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let k = ((sorted.len() - 1) as f64 * q).round() as usize;
+    sorted[k.min(sorted.len() - 1)]
+}
+
 /// Median of a list (`None` when empty); NaNs are ignored.
 pub fn median(values: &[f64]) -> Option<f64> {
     let mut v: Vec<f64> = values.iter().copied().filter(|x| !x.is_nan()).collect();
@@ -501,6 +511,16 @@ mod tests {
             "{exact}"
         );
         assert_eq!(StreamingStats::default().median_reprojection_px(), None);
+    }
+
+    #[test]
+    fn rank_quantiles_round_the_rank_and_are_nan_when_empty() {
+        let v = [1.0, 2.0, 3.0, 4.0, 5.0];
+        assert_eq!(rank_quantile(&v, 0.0), 1.0);
+        assert_eq!(rank_quantile(&v, 0.5), 3.0);
+        assert_eq!(rank_quantile(&v, 0.99), 5.0);
+        assert_eq!(rank_quantile(&[10.0, 20.0, 30.0, 40.0], 0.5), 30.0);
+        assert!(rank_quantile(&[], 0.5).is_nan());
     }
 
     #[test]

@@ -18,13 +18,7 @@ use crate::monitor::MonitorStats;
 use crate::robot::{radians_list, RosRobot, TrajectoryTopic};
 
 /// The value at quantile `p` (0..=1) of `sorted` (ascending), the nearest rank; NaN when empty.
-pub fn percentile(sorted: &[f64], p: f64) -> f64 {
-    if sorted.is_empty() {
-        return f64::NAN;
-    }
-    let k = ((sorted.len() - 1) as f64 * p).round() as usize;
-    sorted[k.min(sorted.len() - 1)]
-}
+pub use ergocell_perception::metrics::rank_quantile as percentile;
 
 fn sorted(values: &[f64]) -> Vec<f64> {
     let mut v = values.to_vec();

@@ -936,13 +936,7 @@ pub struct HeightOptions {
     pub decision_sigmas: Option<f64>,
 }
 
-fn quantile(sorted: &[f64], q: f64) -> f64 {
-    if sorted.is_empty() {
-        return f64::NAN;
-    }
-    let i = ((sorted.len() - 1) as f64 * q).round() as usize;
-    sorted[i.min(sorted.len() - 1)]
-}
+use ergocell_perception::metrics::rank_quantile as quantile;
 
 /// Draws `k` distinct indices of `0..n` (a partial Fisher–Yates shuffle).
 fn draw(rng: &mut ChaCha8Rng, n: usize, k: usize) -> Vec<usize> {

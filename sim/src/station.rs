@@ -461,12 +461,7 @@ impl Soak {
     /// steps are then forgotten.
     fn line(&mut self, elapsed_h: f64, memory_mib: Option<f64>) -> String {
         self.steps_us.sort_by(f64::total_cmp);
-        let q = |p: f64| {
-            self.steps_us
-                .get(((self.steps_us.len() as f64 - 1.0) * p).round() as usize)
-                .copied()
-                .unwrap_or(f64::NAN)
-        };
+        let q = |p: f64| ergocell_perception::metrics::rank_quantile(&self.steps_us, p);
         let line = format!(
             "  soak: t={elapsed_h:6.2} h  RSS {} MiB  step p50 {:.0} µs  p99 {:.0} µs  max {:.0} µs  ({} steps)",
             memory_text(memory_mib),

@@ -137,7 +137,7 @@ fn security_enclave(
 
 /// The DDS participant's network scope from `[ros]` and the ROS 2 environment variables
 /// (`ROS_AUTOMATIC_DISCOVERY_RANGE`, `ROS_STATIC_PEERS`, `ROS_LOCALHOST_ONLY`).
-pub fn network_scope(ros: &RosConfig) -> anyhow::Result<ergocell_bridge::scope::NetworkScope> {
+fn network_scope(ros: &RosConfig) -> anyhow::Result<ergocell_bridge::scope::NetworkScope> {
     let var = |name: &str| std::env::var(name).ok();
     let env = ergocell_bridge::scope::ScopeEnv {
         automatic_discovery_range: var("ROS_AUTOMATIC_DISCOVERY_RANGE"),

@@ -18,6 +18,7 @@ use ergocell::session::{
     CellLoop, CellOutputs, Driver, ExitStatus, Interruption, Outcome, OutputError, SessionEvent,
     SessionMachine,
 };
+use ergocell_bridge::scope::NetworkScope;
 use ergocell_bridge::transport::{publish, CellTopics, RosConfig, RosNode};
 use ergocell_cell::CellSettings;
 use ergocell_formats::rig_file::parse_rig;
@@ -34,7 +35,7 @@ use ergocell_ros_backend::robot::{announce_driver, spawn_controller, RosRobot};
 use ergocell_ros_backend::station::{RosCellOutputs, RosStation, StationHooks, StationInputs};
 use ergocell_web::display::Display;
 
-use super::ros_node::{network_scope, runtime, say, StartedNode};
+use super::ros_node::{runtime, say, StartedNode};
 use super::signals::{Signal, StopFlag, Stopped};
 use super::{output, UsageError};
 
@@ -228,7 +229,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         args,
         &setup,
         machine,
-        &mut node.node,
+        (&mut node.node, &node.scope),
         &mut recording,
         display,
         &stop,
@@ -285,6 +286,9 @@ fn checked_setup(args: &Args) -> anyhow::Result<Setup> {
         output::check("--record", record, args.force, &flagged)?;
     }
     let setup = Setup::load(args)?;
+    if args.record.is_none() && args.outcome.is_none() {
+        return Ok(setup);
+    }
     let read = setup.provider().input_files();
     let read = read.iter().map(|p| ("a file the cell reads:", p.as_path()));
     if let Some(record) = &args.record {
@@ -402,13 +406,12 @@ async fn serve(
     args: &Args,
     setup: &Setup,
     machine: SessionMachine,
-    node: &mut RosNode,
+    (node, scope): (&mut RosNode, &NetworkScope),
     recording: &mut Option<Recording>,
     display: Option<Arc<Display>>,
     stop: &StopFlag,
 ) -> anyhow::Result<()> {
     let ros = &setup.ros;
-    let scope = network_scope(ros)?;
     let topics = CellTopics::new(node, ros)?;
     let (action, reports) = spawn_controller(node, ros)?;
     let robot = RosRobot::new(Arc::new(topics.joint_trajectory), action, ros.clone());
@@ -438,8 +441,8 @@ async fn serve(
     if let Some(limit) = args.max_secs {
         cell = cell.with_time_limit(clock.now(), limit);
     }
-    println!("{}", console::start_text(ros, topics.cameras.len(), &scope));
-    say(ergocell_bridge::scope::multicast_note(&scope));
+    println!("{}", console::start_text(ros, topics.cameras.len(), scope));
+    say(ergocell_bridge::scope::multicast_note(scope));
     if let Err(e) = announce_start(&mut cell, &clock).await {
         monitor.abort();
         let (_, _, outputs) = cell.into_parts();
